@@ -1,0 +1,102 @@
+"""JSON-in, JSON-out entry points for the web worker (one call per request).
+
+Errors never escape as exceptions: bad input comes back as
+``{"ok": false, "field": ..., "message": ...}``.
+
+Examples
+--------
+>>> import json
+>>> json.loads(run_json('{"motor": {}}'))["field"]
+'motor.rated_voltage_v'
+>>> json.loads(qcalc_json('{"value": 0.5, "format": "Q0.15"}'))["result"]["raw"]
+16384
+"""
+
+from __future__ import annotations
+
+import json
+
+from .errors import InputError
+from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
+from .report import report
+
+__all__ = ["run_json", "qcalc", "qcalc_json"]
+
+
+def _fail(e: InputError) -> str:
+    return json.dumps({"ok": False, "field": e.field, "message": e.message})
+
+
+def run_json(text: str) -> str:
+    """``report`` on a JSON string; returns ``{"ok": true, "report": {...}}`` or an error."""
+    try:
+        inp = json.loads(text)
+    except ValueError as e:
+        return _fail(InputError("input", f"not valid JSON: {e}"))
+    try:
+        return json.dumps({"ok": True, "report": report(inp)}, allow_nan=False)
+    except InputError as e:
+        return _fail(e)
+
+
+def qcalc(req: dict) -> dict:
+    """The standalone Q-format calculator.
+
+    Parameters
+    ----------
+    req : dict
+        ``format`` (``Qm.n``/``UQm.n``, or ``Qn`` with ``word_bits``), and either
+        ``value`` (a real number to encode, with ``rounding`` and ``overflow``)
+        or ``raw`` (an integer to decode).
+
+    Returns
+    -------
+    dict
+        ``format`` (name, word_bits, frac_bits, signed, min, max, resolution) and
+        ``result`` (raw, hex, value, error, flags).
+    """
+    if not isinstance(req, dict):
+        raise InputError("qcalc", "must be an object")
+    try:
+        fmt = parse_format(str(req.get("format", "")), req.get("word_bits"))
+    except (ValueError, TypeError) as e:
+        raise InputError("qcalc.format", str(e)) from None
+    rounding = req.get("rounding", "nearest")
+    overflow = req.get("overflow", "saturate")
+    if rounding not in ROUNDINGS:
+        raise InputError("qcalc.rounding", f"must be one of {', '.join(ROUNDINGS)}")
+    if overflow not in OVERFLOWS:
+        raise InputError("qcalc.overflow", f"must be one of {', '.join(OVERFLOWS)}")
+    if req.get("raw") is not None:
+        raw = req["raw"]
+        if isinstance(raw, bool) or not isinstance(raw, int):
+            raise InputError("qcalc.raw", "must be an integer")
+        if not fmt.raw_min <= raw <= fmt.raw_max:
+            raise InputError("qcalc.raw", f"must be {fmt.raw_min}..{fmt.raw_max} for {fmt.name}")
+        res = {"raw": raw, "value": decode(raw, fmt), "error": 0.0, "flags": []}
+    else:
+        x = req.get("value")
+        if isinstance(x, bool) or not isinstance(x, (int, float)) or x != x or \
+                x in (float("inf"), float("-inf")):
+            raise InputError("qcalc.value", "must be a finite number")
+        try:
+            e = encode(float(x), fmt, rounding, overflow)
+        except OverflowError as err:
+            raise InputError("qcalc.value", str(err)) from None
+        res = {"raw": e.raw, "value": e.value, "error": e.error, "flags": e.flags}
+    mask = (1 << fmt.word_bits) - 1
+    res["hex"] = f"0x{res['raw'] & mask:0{(fmt.word_bits + 3) // 4}X}"
+    return {"format": {"name": fmt.name, "word_bits": fmt.word_bits, "frac_bits": fmt.frac_bits,
+                       "signed": fmt.signed, "min": fmt.min_value, "max": fmt.max_value,
+                       "resolution": fmt.resolution},
+            "result": res}
+
+
+def qcalc_json(text: str) -> str:
+    """``qcalc`` on a JSON string; ``{"ok": true, ...}`` or an error naming the field."""
+    try:
+        return json.dumps({"ok": True, **qcalc(json.loads(text))})
+    except ValueError as e:
+        if isinstance(e, InputError):
+            return _fail(e)
+        return _fail(InputError("qcalc", f"not valid JSON: {e}"))

@@ -1,0 +1,171 @@
+"""Validation and defaults for the report input (docs/contract.md).
+
+Bad input never becomes a number: every problem raises
+:class:`pulab.errors.InputError` naming the JSON path of the field.
+
+Examples
+--------
+>>> inp = normalize({"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5,
+...     "rated_freq_hz": 220, "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4,
+...     "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 1e-4}})
+>>> inp["drive"]["base_freq_hz"], inp["conventions"]["base"], inp["current_loop"]["method"]
+(220.0, 'rms', 'bandwidth')
+>>> normalize({"motor": {}})
+Traceback (most recent call last):
+...
+pulab.errors.InputError: motor.rated_voltage_v: is required
+"""
+
+from __future__ import annotations
+
+import math
+
+from .errors import InputError
+from .vendor import RAW_FIELDS
+
+__all__ = ["normalize", "DEFAULT_CURRENT_BANDWIDTH_HZ", "DEFAULT_PLL_BANDWIDTH_HZ",
+           "DEFAULT_DAMPING", "SECTIONS"]
+
+DEFAULT_CURRENT_BANDWIDTH_HZ = 500.0
+DEFAULT_PLL_BANDWIDTH_HZ = 50.0
+DEFAULT_DAMPING = math.sqrt(0.5)
+
+#: Allowed keys of each section; a typo must not fall back to a default silently.
+SECTIONS = {
+    "motor": ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm", "ld_h",
+              "lq_h", "bemf_v", "pole_pairs"),
+    "drive": ("base_freq_hz", "udc_v", "ts_s"),
+    "conventions": ("base", "base_voltage_v", "base_current_a", "angle_base",
+                    "inductance_unit"),
+    "current_loop": ("method", "bandwidth_hz", "damping", "kp", "ki"),
+    "pll": ("bandwidth_hz", "damping"),
+    "raw": RAW_FIELDS,
+}
+_CHOICES = {
+    "conventions.base": ("rms", "peak", "custom"),
+    "conventions.angle_base": ("pi", "2pi"),
+    "conventions.inductance_unit": ("10uH", "uH"),
+    "current_loop.method": ("bandwidth", "damping", "manual"),
+}
+
+
+def _section(inp: dict, name: str) -> dict:
+    sec = inp.get(name)
+    if sec is None:
+        return {}
+    if not isinstance(sec, dict):
+        raise InputError(name, "must be an object")
+    for key in sec:
+        if key not in SECTIONS[name]:
+            raise InputError(f"{name}.{key}", f"unknown field (expected one of: "
+                             f"{', '.join(SECTIONS[name])})")
+    return {k: v for k, v in sec.items() if v is not None}
+
+
+def _number(sec: dict, section: str, key: str, default=None) -> float:
+    path = f"{section}.{key}"
+    if key not in sec:
+        if default is None:
+            raise InputError(path, "is required")
+        return float(default)
+    v = sec[key]
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise InputError(path, f"must be a number, got {v!r}")
+    v = float(v)
+    if not math.isfinite(v):
+        raise InputError(path, "must be finite")
+    if v <= 0:
+        raise InputError(path, f"must be > 0, got {v:g}")
+    return v
+
+
+def _choice(sec: dict, section: str, key: str, default: str) -> str:
+    path = f"{section}.{key}"
+    v = sec.get(key, default)
+    if v not in _CHOICES[path]:
+        raise InputError(path, f"must be one of {', '.join(_CHOICES[path])}, got {v!r}")
+    return v
+
+
+def _integer(v, path: str, lo: int, hi: int) -> int:
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or \
+            (isinstance(v, float) and not v.is_integer()):
+        raise InputError(path, f"must be an integer, got {v!r}")
+    v = int(v)
+    if not lo <= v <= hi:
+        raise InputError(path, f"must be {lo}..{hi}, got {v}")
+    return v
+
+
+def normalize(inp: dict) -> dict:
+    """Check the input and return it with every default filled in.
+
+    Parameters
+    ----------
+    inp : dict
+        The report input (contract "Input").
+
+    Returns
+    -------
+    dict
+        Same layout; every optional field present; numbers as float (pole
+        pairs and raw values as int); ``raw`` holds only the values given.
+    """
+    if not isinstance(inp, dict):
+        raise InputError("input", "must be a JSON object")
+    for key in inp:
+        if key not in SECTIONS and key != "sim":
+            raise InputError(key, f"unknown section (expected one of: "
+                             f"{', '.join(list(SECTIONS) + ['sim'])})")
+    m = _section(inp, "motor")
+    d = _section(inp, "drive")
+    c = _section(inp, "conventions")
+    cl = _section(inp, "current_loop")
+    p = _section(inp, "pll")
+    r = _section(inp, "raw")
+
+    motor = {k: _number(m, "motor", k) for k in SECTIONS["motor"] if k != "pole_pairs"}
+    if "pole_pairs" not in m:
+        raise InputError("motor.pole_pairs", "is required")
+    motor["pole_pairs"] = _integer(m["pole_pairs"], "motor.pole_pairs", 1, 1000)
+
+    drive = {"base_freq_hz": _number(d, "drive", "base_freq_hz", motor["rated_freq_hz"]),
+             "udc_v": _number(d, "drive", "udc_v"),
+             "ts_s": _number(d, "drive", "ts_s")}
+
+    conv = {"base": _choice(c, "conventions", "base", "rms"),
+            "angle_base": _choice(c, "conventions", "angle_base", "pi"),
+            "inductance_unit": _choice(c, "conventions", "inductance_unit", "10uH"),
+            "base_voltage_v": None, "base_current_a": None}
+    if conv["base"] == "custom":
+        conv["base_voltage_v"] = _number(c, "conventions", "base_voltage_v")
+        conv["base_current_a"] = _number(c, "conventions", "base_current_a")
+    else:
+        for k in ("base_voltage_v", "base_current_a"):
+            if k in c:
+                raise InputError(f"conventions.{k}", "is only used with base = custom")
+
+    method = _choice(cl, "current_loop", "method", "bandwidth")
+    loop = {"method": method,
+            "bandwidth_hz": _number(cl, "current_loop", "bandwidth_hz",
+                                    DEFAULT_CURRENT_BANDWIDTH_HZ),
+            "damping": _number(cl, "current_loop", "damping", DEFAULT_DAMPING),
+            "kp": None, "ki": None}
+    if method == "manual":
+        loop["kp"] = _number(cl, "current_loop", "kp")
+        loop["ki"] = _number(cl, "current_loop", "ki")
+    else:
+        for k in ("kp", "ki"):
+            if k in cl:
+                raise InputError(f"current_loop.{k}", "is only used with method = manual")
+
+    pll = {"bandwidth_hz": _number(p, "pll", "bandwidth_hz", DEFAULT_PLL_BANDWIDTH_HZ),
+           "damping": _number(p, "pll", "damping", DEFAULT_DAMPING)}
+
+    raw = {k: _integer(v, f"raw.{k}", 0, 0xFFFF) for k, v in r.items()}
+
+    out = {"motor": motor, "drive": drive, "conventions": conv, "current_loop": loop,
+           "pll": pll, "raw": raw}
+    if inp.get("sim") is not None:
+        out["sim"] = inp["sim"]
+    return out
