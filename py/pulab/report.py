@@ -6,7 +6,7 @@ Examples
 ...     "rated_freq_hz": 220, "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4,
 ...     "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 1e-4}})
 >>> r["vendor"]["Rpm"]["value"], r["vendor"]["LD"]["value"]
-(15022, 1037)
+(15022, 1045)
 """
 
 from __future__ import annotations
