@@ -17,7 +17,8 @@ from .bases import bases, flux_linkage, per_unit
 from .constants import magic_constants
 from .gains import current_pi, current_pi_si, pll_gains
 from .inputs import normalize
-from .vendor import RAW_FIELDS, RAW_SCALE, INDUCTANCE_SCALE, raw_from_si, vendor_results
+from .vendor import (INDUCTANCE_SCALE, RAW_FIELDS, RAW_SCALE, current_pi_step, raw_from_si,
+                     vendor_results)
 
 __all__ = ["report", "format_text"]
 
@@ -70,6 +71,15 @@ def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
     return w
 
 
+def _pi_example(g: dict, vendor: dict) -> dict:
+    """The first vendor PI update after a step of 10 % rated current in i_d (seed 2.2)."""
+    error = round(0.1 * 4096)
+    trace: list = []
+    current_pi_step(0, error, g["pm_kp"], g["pm_ki"], vendor["maxu"]["value"],
+                    vendor["pm_maxout_vol"]["value"], trace)
+    return {"error": error, "integral": 0, "trace": trace}
+
+
 def report(inp: dict) -> dict:
     """Compute the report for one motor and drive.
 
@@ -108,6 +118,7 @@ def report(inp: dict) -> dict:
         kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
                                cl["damping"], cl["kp"], cl["ki"])
         pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
+    pi["step_example"] = _pi_example(pi["d"], vendor)
     out = {
         "input": {k: v for k, v in n.items() if k != "sim"},
         "base": b,

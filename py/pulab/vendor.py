@@ -304,7 +304,7 @@ class PiStep(NamedTuple):
 
 
 def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
-                    maxout: int) -> PiStep:
+                    maxout: int, trace: list | None = None) -> PiStep:
     """One update of the vendor current PI (seed 2.2), all arithmetic in 32-bit long.
 
     Parameters
@@ -313,6 +313,8 @@ def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
     error : int, Q12 current error (per unit of rated current)
     kp : int, Q12 ; ki : int, Q16 (the "new" integral gain, Ts folded in)
     maxu : int, Q24 ; maxout : int, Q12
+    trace : list, optional
+        When given, one step per C statement is appended (as in vendor results).
 
     Returns
     -------
@@ -326,16 +328,24 @@ def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
     PiStep(integral=76875, out=118, flags=frozenset({'truncation'}))
     """
     e = CInt(error, INT32)
-    # pm_integral_d = pm_integral_d + (pm_error_id * pm_ki_d >> 4);  //Q24, 28-4
     s = CInt(integral, INT32) + ((e * CInt(ki, INT32)) >> 4)
-    flags = set(s.flags)
-    # pm_integral_d = __IQsat(pm_integral_d, maxu, minu);
     integ = iqsat(s.value, maxu, -maxu)
-    # data1 = (pm_integral_d + pm_error_id * pm_kp_d)>>12;
     d = (CInt(integ, INT32) + e * CInt(kp, INT32)) >> 12
-    flags |= d.flags
-    # data1 = __IQsat(data1, pm_maxout_vol, -pm_maxout_vol);
     out = iqsat(d.value, maxout, -maxout)
+    if trace is not None:
+        for code, value, flags, meaning in (
+                ("pm_integral_d = pm_integral_d + (pm_error_id * pm_ki_d >> 4); //Q24,28-4",
+                 s.value, s.flags, "integral + Δi·ki (Q12·Q16 = Q28, >>4 → Q24)"),
+                ("pm_integral_d = __IQsat(pm_integral_d, maxu, minu);", integ,
+                 {"saturate"} if integ != s.value else set(), "clamped to ±maxu (anti-windup)"),
+                ("data1 = (pm_integral_d + pm_error_id * pm_kp_d)>>12;", d.value, d.flags,
+                 "(Q24 + Q12·Q12) >> 12 → Q12 voltage"),
+                ("data1 = __IQsat(data1, pm_maxout_vol, -pm_maxout_vol);", out,
+                 {"saturate"} if out != d.value else set(), "clamped to ±pm_maxout_vol"),
+                ("pm_ud = data1;", out, set(), "u_d per unit of rated line voltage, Q12")):
+            trace.append({"code": code, "var": code.split(" =")[0], "type": "long",
+                          "value": value, "meaning": meaning, "flags": sorted(flags)})
+    flags = set(s.flags | d.flags)
     if integ != s.value or out != d.value:
         flags.add("saturate")
     return PiStep(integ, out, frozenset(flags))
