@@ -18,9 +18,10 @@ import json
 
 from .errors import InputError
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
+from .export import c_header, sim_csv
 from .report import report
 
-__all__ = ["run_json", "qcalc", "qcalc_json"]
+__all__ = ["run_json", "qcalc", "qcalc_json", "export_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -100,3 +101,25 @@ def qcalc_json(text: str) -> str:
         if isinstance(e, InputError):
             return _fail(e)
         return _fail(InputError("qcalc", f"not valid JSON: {e}"))
+
+
+def export_json(text: str) -> str:
+    """Exports for the page: ``{"input": {...}, "kind": "header"|"csv_current"|"csv_pll"}``.
+
+    Returns ``{"ok": true, "text": ...}`` or an error naming the field.
+    """
+    try:
+        req = json.loads(text)
+        r = report(req.get("input") if isinstance(req, dict) else None)
+        kind = req.get("kind")
+        if kind == "header":
+            return json.dumps({"ok": True, "text": c_header(r)})
+        if kind in ("csv_current", "csv_pll"):
+            if "sim" not in r or kind[4:] not in r["sim"]:
+                raise InputError("sim", f"the input asks for no {kind[4:]} simulation")
+            return json.dumps({"ok": True, "text": sim_csv(r, kind[4:])})
+        raise InputError("kind", "must be header, csv_current or csv_pll")
+    except InputError as e:
+        return _fail(e)
+    except ValueError as e:
+        return _fail(InputError("input", f"not valid JSON: {e}"))
