@@ -1,0 +1,47 @@
+// The worker protocol: every message in both directions is a member of a typed union
+// (in the spirit of stlite's types.ts). The worker only forwards JSON text to pulab.api.
+
+/** JSON value. */
+export type Json = null | boolean | number | string | Json[] | { [k: string]: Json };
+
+/** The Python entry points the worker calls: `pulab.api.<fn>(text: str) -> str`. */
+export const API_FUNCTIONS = {
+  report: 'run_json',
+  qcalc: 'qcalc_json',
+  export: 'export_json',
+} as const;
+export type ApiKind = keyof typeof API_FUNCTIONS;
+
+/** Main thread → worker. */
+export type MainToWorker =
+  | { type: 'init'; indexURL: string; timeoutMs?: number }
+  | {
+      type: 'call';
+      id: number;
+      kind: ApiKind;
+      /** JSON text handed to the Python function unchanged. */
+      payload: string;
+      /** Calls sharing a channel are coalesced: only the newest queued one is computed. */
+      channel?: string;
+    };
+
+export type BootStage = 'runtime' | 'files' | 'import' | 'ready';
+
+/** What pulab.api returns (parsed). */
+export type ApiOk = { ok: true; [k: string]: Json };
+export type ApiErr = { ok: false; field: string; message: string };
+export type ApiResult = ApiOk | ApiErr;
+
+/** Worker → main thread. */
+export type WorkerToMain =
+  | { type: 'progress'; stage: BootStage; fraction: number; ms: number }
+  | { type: 'ready'; bootMs: number; pyodideVersion: string }
+  | { type: 'fatal'; message: string }
+  | { type: 'result'; id: number; kind: ApiKind; result: ApiResult; ms: number }
+  | { type: 'superseded'; id: number };
+
+export function isWorkerToMain(x: unknown): x is WorkerToMain {
+  if (typeof x !== 'object' || x === null) return false;
+  const t = (x as { type?: unknown }).type;
+  return t === 'progress' || t === 'ready' || t === 'fatal' || t === 'result' || t === 'superseded';
+}

@@ -1,0 +1,94 @@
+// Main-thread client of the worker: typed calls returning promises, boot progress callbacks.
+import { isWorkerToMain, type ApiKind, type ApiResult, type BootStage, type MainToWorker } from './protocol';
+
+export interface CallResult {
+  result: ApiResult;
+  /** Time spent in Python, ms. */
+  ms: number;
+}
+
+export class Superseded extends Error {
+  constructor() {
+    super('superseded by a newer request');
+  }
+}
+
+export interface RpcEvents {
+  onProgress?(stage: BootStage, fraction: number): void;
+  onReady?(bootMs: number, version: string): void;
+  onFatal?(message: string): void;
+}
+
+export interface WorkerLike {
+  postMessage(m: MainToWorker): void;
+  onmessage: ((ev: MessageEvent) => void) | null;
+  onerror: ((ev: ErrorEvent) => void) | null;
+}
+
+export class PulabClient {
+  private next = 1;
+  private pending = new Map<number, { resolve(r: CallResult): void; reject(e: Error): void }>();
+  private fatal: string | null = null;
+  private watchdog: ReturnType<typeof setTimeout> | undefined;
+  ready = false;
+
+  constructor(private worker: WorkerLike, private events: RpcEvents = {}) {
+    worker.onmessage = (ev) => this.receive(ev.data);
+    worker.onerror = (ev) => this.fail(`the worker failed to start: ${ev.message || 'unknown error'}`);
+  }
+
+  /** Start the boot; `timeoutMs` bounds Pyodide's start-up, a watchdog here bounds the worker itself. */
+  init(indexURL: string, timeoutMs = 60_000): void {
+    this.worker.postMessage({ type: 'init', indexURL, timeoutMs });
+    this.watchdog = setTimeout(() => {
+      if (!this.ready) this.fail(`Python did not start within ${Math.round((timeoutMs + 5000) / 1000)} s`);
+    }, timeoutMs + 5000);
+  }
+
+  call(kind: ApiKind, payload: unknown, channel?: string): Promise<CallResult> {
+    if (this.fatal) return Promise.reject(new Error(this.fatal));
+    const id = this.next++;
+    return new Promise<CallResult>((resolve, reject) => {
+      this.pending.set(id, { resolve, reject });
+      this.worker.postMessage({ type: 'call', id, kind, payload: JSON.stringify(payload), channel });
+    });
+  }
+
+  private fail(message: string): void {
+    if (this.fatal) return;
+    this.fatal = message;
+    clearTimeout(this.watchdog);
+    for (const p of this.pending.values()) p.reject(new Error(message));
+    this.pending.clear();
+    this.events.onFatal?.(message);
+  }
+
+  private receive(m: unknown): void {
+    if (!isWorkerToMain(m)) return;
+    switch (m.type) {
+      case 'progress':
+        this.events.onProgress?.(m.stage, m.fraction);
+        break;
+      case 'ready':
+        this.ready = true;
+        clearTimeout(this.watchdog);
+        this.events.onReady?.(m.bootMs, m.pyodideVersion);
+        break;
+      case 'fatal':
+        this.fail(m.message);
+        break;
+      case 'result': {
+        const p = this.pending.get(m.id);
+        this.pending.delete(m.id);
+        p?.resolve({ result: m.result, ms: m.ms });
+        break;
+      }
+      case 'superseded': {
+        const p = this.pending.get(m.id);
+        this.pending.delete(m.id);
+        p?.reject(new Superseded());
+        break;
+      }
+    }
+  }
+}
