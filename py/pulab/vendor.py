@@ -107,10 +107,11 @@ class _Block:
     def __init__(self) -> None:
         self.trace: list[dict] = []
 
-    def let(self, code: str, var: str, ctype: CType, expr: CInt, meaning: str) -> CInt:
+    def let(self, code: str, var: str, ctype: CType, expr: CInt, meaning: str,
+            extra_flags: tuple = ()) -> CInt:
         """Assign ``expr`` to a variable of ``ctype``, as the C assignment converts it."""
         stored = expr.cast(ctype)
-        flags = set(expr.flags)
+        flags = set(expr.flags) | set(extra_flags)
         if stored.value != expr.value:
             # Conversion into the destination: for gMotorExtPer.* (Uint16) the
             # firmware silently keeps the value modulo 65536.
@@ -120,10 +121,9 @@ class _Block:
                            "flags": sorted(flags)})
         return stored.clean()
 
-    def result(self, q: int, ideal: float, si: float, unit: str,
-               extra_flags: tuple = ()) -> dict:
+    def result(self, q: int, ideal: float, si: float, unit: str) -> dict:
         last = self.trace[-1]
-        flags = sorted({f for s in self.trace for f in s["flags"]} | set(extra_flags))
+        flags = sorted({f for s in self.trace for f in s["flags"]})
         value = last["value"]
         return {"value": value, "ideal": ideal, "q": q, "type": last["type"], "si": si,
                 "unit": unit,
@@ -190,18 +190,21 @@ def inductance(raw: dict, axis: str, unit: str = "10uH") -> dict:
               UINT32, (_u16(raw, name).cast(UINT32) << 14) + (base >> 1),
               f"{name}·2^14 + m_BaseL/2 (rounds the next division)")
     if base.value == 0:
-        raise InputError("raw.Voltage", "the firmware divides by zero: m_BaseL = "
+        # Blame the divisor that made m_BaseL truncate to zero.
+        culprit = "Current" if b.trace[0]["value"] == 0 else "FullFreq01"
+        raise InputError(f"raw.{culprit}", "the firmware divides by zero: m_BaseL = "
                          "Voltage·3678/Current·5000/FullFreq01 truncates to 0")
     m = b.let("m_Ulong = m_Ulong / m_BaseL;", "m_Ulong", UINT32, m // base,
               "10·L_pu·2^13")
     b.let(f"gMotorExtPer.{name} = m_Ulong / 10; // Q13", f"gMotorExtPer.{name}", UINT16,
-          m // CInt(10, INT32).cast(UINT32), "L_pu·2^13 (Q13)")
+          m // CInt(10, INT32).cast(UINT32),
+          "10·L_pu·2^13: LD taken in µH, written for 0.01 mH" if unit == "uH"
+          else "L_pu·2^13 (Q13)", ("unit_uH",) if unit == "uH" else ())
     u_b, i_b, f_b = _bases(raw)
     l_b = u_b / (TWO_PI * f_b * i_b) if f_b * i_b else math.inf
     l_si = raw[name] * (1e-6 if unit == "uH" else 1e-5)
     ideal = l_si / l_b * 8192.0
-    return b.result(13, ideal, b.trace[-1]["value"] / 8192.0 * l_b, "H",
-                    ("unit_uH",) if unit == "uH" else ())
+    return b.result(13, ideal, b.trace[-1]["value"] / 8192.0 * l_b, "H")
 
 
 def freq_per(raw: dict) -> dict:
@@ -230,7 +233,7 @@ def flux_rotor(raw: dict, freq_per_value: int) -> dict:
     b.let("gMotorExtPer.FluxRotor = (m_Ulong << 15) / gMotorInfo.FreqPer; //Q12",
           "gMotorExtPer.FluxRotor", UINT16,
           _divide(m << 15, CInt(freq_per_value, UINT16), "FreqRated01",
-                  "FreqPer = 0 (FreqRated01·2^15 < FullFreq01)"),
+                  "FreqPer stored as 0 (FreqRated01·2^15 < FullFreq01, or a multiple of 65536)"),
           "ψ_r/ψ_b·2^12 (Q12, seed 1.4-25)")
     ideal = (raw["BemfVolt"] / 10.0) / raw["Voltage"] * raw["FullFreq01"] \
         / raw["FreqRated01"] * 4096.0
