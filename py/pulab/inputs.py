@@ -41,6 +41,9 @@ SECTIONS = {
     "pll": ("bandwidth_hz", "damping"),
     "raw": RAW_FIELDS,
 }
+#: Plausibility limits (SI) that also keep every derived number finite.
+_LIMITS = {"ts_s": (1e-9, 1.0), "damping": (1e-3, 100.0)}
+
 _CHOICES = {
     "conventions.base": ("rms", "peak", "custom"),
     "conventions.angle_base": ("pi", "2pi"),
@@ -76,6 +79,9 @@ def _number(sec: dict, section: str, key: str, default=None) -> float:
         raise InputError(path, "must be finite")
     if v <= 0:
         raise InputError(path, f"must be > 0, got {v:g}")
+    lo, hi = _LIMITS.get(key, (1e-9, 1e9))
+    if not lo <= v <= hi:
+        raise InputError(path, f"must be between {lo:g} and {hi:g}, got {v:g}")
     return v
 
 
