@@ -34,8 +34,10 @@ def bench(steps: int = 20000, repeat: int = 3) -> dict:
     Returns
     -------
     dict
-        ``steps``, seconds per variant (``si``, ``pu``, ``fixed``), ``total_s`` and
-        ``steps_per_s`` (steps of all three variants together per second).
+        ``steps``, ``total_s`` and ``steps_per_s`` (steps of all three variants
+        together per second, :func:`pulab.sim.current.run`), and single-variant
+        times ``float_variant_s``, ``fixed_variant_s``, ``fixed_no_memo_s`` (the
+        worst case, every step a call of :func:`pulab.vendor.current_pi_step`).
     """
     from .. import report
     from . import current, validate
@@ -65,6 +67,11 @@ def bench(steps: int = 20000, repeat: int = 3) -> dict:
                       pi["q"]["pm_kp"], pi["q"]["pm_ki"], vendor["maxu"]["value"],
                       vendor["pm_maxout_vol"]["value"], 2048, 0, 0, steps - 1, False)
     per["fixed_variant_s"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    current.run_fixed(z, b["I_b"], b["U_b"], pi["d"]["pm_kp"], pi["d"]["pm_ki"],
+                      pi["q"]["pm_kp"], pi["q"]["pm_ki"], vendor["maxu"]["value"],
+                      vendor["pm_maxout_vol"]["value"], 2048, 0, 0, steps - 1, False, memo=False)
+    per["fixed_no_memo_s"] = time.perf_counter() - t0
     return {"steps": r["n"] + 1, "total_s": best, "steps_per_s": (r["n"] + 1) / best, **per}
 
 
@@ -78,7 +85,8 @@ def main(argv: list | None = None) -> int:
     print(f"  total {r['total_s']:.3f} s  →  {r['steps_per_s']:.0f} steps/s "
           f"(all three variants per step; target < 0.5 s)")
     print(f"  one float variant {r['float_variant_s']:.3f} s, fixed variant "
-          f"{r['fixed_variant_s']:.3f} s")
+          f"{r['fixed_variant_s']:.3f} s (without the current_pi_step memo, i.e. every "
+          f"step a new integer state: {r['fixed_no_memo_s']:.3f} s)")
     return 0
 
 

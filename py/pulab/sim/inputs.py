@@ -14,7 +14,7 @@ field                    unit, range                              default
 current.axis             ``"d"`` or ``"q"``: the stepped reference ``"d"``
 current.step_a           A (dq scale of ``conventions.base``),    *motor*: 0.5·I_b
                          finite, ≠ 0, |step| < 8·I_b (Q12 int16)
-current.duration_s       s, > 0, at most 200 000 periods          *motor*: 15/ω_c,
+current.duration_s       s, > 0, at most 200 000 periods          *motor*: 30/ω_c,
                                                                   ≥ 200 periods
 current.speed_hz         electrical Hz, finite (0 = locked rotor) 0
 current.delay            bool: one-sample computation delay       false
