@@ -27,7 +27,8 @@ import math
 from .errors import InputError
 from .vendor import round_half_away
 
-__all__ = ["current_pi_si", "current_pi", "pll_gains", "INT32_MIN", "INT32_MAX"]
+__all__ = ["current_pi_si", "gains_from_integers", "current_pi", "pll_gains", "INT32_MIN",
+           "INT32_MAX"]
 
 INT32_MIN, INT32_MAX = -(1 << 31), (1 << 31) - 1
 
@@ -45,7 +46,8 @@ def current_pi_si(method: str, rs_ohm: float, l_h: float, bandwidth_hz: float,
         ``damping``: the PI zero is kept and the closed loop is a second-order
         system with natural frequency ω_0 = 2π·bandwidth_hz and damping ζ:
         kp = 2ζω_0·L − R_s, ki = ω_0²·L.
-        ``manual``: kp, ki as given.
+        ``manual``: kp, ki as given.  (Firmware integers as input: see
+        :func:`gains_from_integers`.)
     rs_ohm : float > 0, ohms ; l_h : float > 0, henries
     bandwidth_hz : float > 0, hertz ; damping : float > 0
     """
@@ -60,6 +62,19 @@ def current_pi_si(method: str, rs_ohm: float, l_h: float, bandwidth_hz: float,
                              f"too low for damping design: kp = 2ζω0·L − Rs = {k:.4g} Ω ≤ 0")
         return k, w * w * l_h
     return float(kp), float(ki)
+
+
+def gains_from_integers(pm_kp: int, pm_ki: int, u_b: float, i_b: float,
+                        ts_s: float) -> tuple[float, float]:
+    """SI gains (kp [Ω], ki [Ω/s]) that firmware integers pm_kp (Q12), pm_ki (Q16) stand for.
+
+    The inverse of seed 2.2-9: kp = pm_kp/2^12·U_b/I_b, ki = pm_ki/(2^16·Ts)·U_b/I_b.
+
+    >>> kp, ki = gains_from_integers(4096, 65536, 10.0, 1.0, 1e-4)
+    >>> kp, round(ki)
+    (10.0, 100000)
+    """
+    return pm_kp / 4096.0 * u_b / i_b, pm_ki / 65536.0 / ts_s * u_b / i_b
 
 
 def _int32(x: float, what: str) -> int:
@@ -93,9 +108,9 @@ def current_pi(kp: float, ki: float, l_h: float, u_b: float, i_b: float, ts_s: f
     kp_pu, ki_pu = kp * i_b / u_b, ki * i_b / u_b
     pm_kp = _int32(kp_pu * 4096.0, "pm_kp")
     pm_ki = _int32(ki_pu * ts_s * 65536.0, "pm_ki")
-    kp_back = pm_kp / 4096.0 * u_b / i_b
+    kp_back, ki_back = gains_from_integers(pm_kp, pm_ki, u_b, i_b, ts_s)
     return {"kp": kp, "ki": ki, "kp_pu": kp_pu, "ki_pu": ki_pu, "pm_kp": pm_kp, "pm_ki": pm_ki,
-            "from_integers": {"kp": kp_back, "ki": pm_ki / 65536.0 / ts_s * u_b / i_b,
+            "from_integers": {"kp": kp_back, "ki": ki_back,
                               "bandwidth_hz": kp_back / (2.0 * math.pi * l_h)}}
 
 

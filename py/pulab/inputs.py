@@ -37,7 +37,7 @@ SECTIONS = {
     "drive": ("base_freq_hz", "udc_v", "ts_s"),
     "conventions": ("base", "base_voltage_v", "base_current_a", "angle_base",
                     "inductance_unit"),
-    "current_loop": ("method", "bandwidth_hz", "damping", "kp", "ki"),
+    "current_loop": ("method", "bandwidth_hz", "damping", "kp", "ki", "pm_kp", "pm_ki"),
     "pll": ("bandwidth_hz", "damping"),
     "raw": RAW_FIELDS,
 }
@@ -48,7 +48,7 @@ _CHOICES = {
     "conventions.base": ("rms", "peak", "custom"),
     "conventions.angle_base": ("pi", "2pi"),
     "conventions.inductance_unit": ("10uH", "uH"),
-    "current_loop.method": ("bandwidth", "damping", "manual"),
+    "current_loop.method": ("bandwidth", "damping", "manual", "integers"),
 }
 
 
@@ -156,14 +156,20 @@ def normalize(inp: dict) -> dict:
             "bandwidth_hz": _number(cl, "current_loop", "bandwidth_hz",
                                     DEFAULT_CURRENT_BANDWIDTH_HZ),
             "damping": _number(cl, "current_loop", "damping", DEFAULT_DAMPING),
-            "kp": None, "ki": None}
-    if method == "manual":
-        loop["kp"] = _number(cl, "current_loop", "kp")
-        loop["ki"] = _number(cl, "current_loop", "ki")
-    else:
-        for k in ("kp", "ki"):
+            "kp": None, "ki": None, "pm_kp": None, "pm_ki": None}
+    # Gains given directly belong to one method each; elsewhere they would be ignored silently.
+    for k, owner in (("kp", "manual"), ("ki", "manual"), ("pm_kp", "integers"),
+                     ("pm_ki", "integers")):
+        path = f"current_loop.{k}"
+        if method != owner:
             if k in cl:
-                raise InputError(f"current_loop.{k}", "is only used with method = manual")
+                raise InputError(path, f"is only used with method = {owner}")
+        elif owner == "manual":
+            loop[k] = _number(cl, "current_loop", k)
+        elif k not in cl:
+            raise InputError(path, "is required")
+        else:
+            loop[k] = _integer(cl[k], path, 1, (1 << 31) - 1)
 
     pll = {"bandwidth_hz": _number(p, "pll", "bandwidth_hz", DEFAULT_PLL_BANDWIDTH_HZ),
            "damping": _number(p, "pll", "damping", DEFAULT_DAMPING)}

@@ -15,7 +15,7 @@ import math
 
 from .bases import bases, flux_linkage, per_unit
 from .constants import magic_constants
-from .gains import current_pi, current_pi_si, pll_gains
+from .gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .inputs import normalize
 from .vendor import (INDUCTANCE_SCALE, RAW_FIELDS, RAW_SCALE, current_pi_step, raw_from_si,
                      vendor_results)
@@ -63,7 +63,7 @@ def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
             w.append(f"current_pi.{axis}.pm_kp = {g['pm_kp']}: coarse, rounding changes kp by "
                      f"{100 * (g['from_integers']['kp'] - g['kp']) / g['kp']:+.1f} %")
     wc_ts = 2 * math.pi * inp["current_loop"]["bandwidth_hz"] * inp["drive"]["ts_s"]
-    if inp["current_loop"]["method"] != "manual" and wc_ts > 0.3:
+    if inp["current_loop"]["method"] in ("bandwidth", "damping") and wc_ts > 0.3:
         w.append(f"current-loop ω_c·Ts = {wc_ts:.2f}: the continuous-time design is far from "
                  f"the discrete loop's behaviour (keep ω_c·Ts ≲ 0.2)")
     if b["f_b"] < inp["motor"]["rated_freq_hz"]:
@@ -113,10 +113,13 @@ def report(inp: dict) -> dict:
     raw = raw_from_si(si, c["inductance_unit"], n["raw"])
     vendor = vendor_results(raw, c["inductance_unit"])
     pi = {"method": cl["method"],
-          "bandwidth_hz": None if cl["method"] == "manual" else cl["bandwidth_hz"]}
+          "bandwidth_hz": cl["bandwidth_hz"] if cl["method"] in ("bandwidth", "damping") else None}
     for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
-        kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
-                               cl["damping"], cl["kp"], cl["ki"])
+        if cl["method"] == "integers":
+            kp, ki = gains_from_integers(cl["pm_kp"], cl["pm_ki"], b["U_b"], b["I_b"], d["ts_s"])
+        else:
+            kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
+                                   cl["damping"], cl["kp"], cl["ki"])
         pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
     pi["step_example"] = _pi_example(pi["d"], vendor)
     out = {

@@ -128,3 +128,22 @@ def test_fuzzed_input_raises_only_input_error(section, key, value):
         assert e.field and "\n" not in e.message
         return
     json.dumps(r, allow_nan=False)  # never NaN/inf in a report
+
+
+@pytest.mark.parametrize("pm_kp, pm_ki", [(1180, 4720), (1, 1), (123456, 7)])
+def test_integers_method_returns_the_integers_and_their_si_gains(seed_input, pm_kp, pm_ki):
+    seed_input["current_loop"] = {"method": "integers", "pm_kp": pm_kp, "pm_ki": pm_ki}
+    r = report(seed_input)
+    z_b = r["base"]["Z_b"]
+    for axis in ("d", "q"):
+        g = r["current_pi"][axis]
+        assert (g["pm_kp"], g["pm_ki"]) == (pm_kp, pm_ki)
+        assert g["kp"] == pytest.approx(pm_kp / 4096 * z_b, rel=1e-15)
+        assert g["ki"] == pytest.approx(pm_ki / 65536 / 1e-4 * z_b, rel=1e-15)
+
+
+def test_integers_method_needs_both(seed_input):
+    seed_input["current_loop"] = {"method": "integers", "pm_kp": 10}
+    with pytest.raises(InputError) as e:
+        report(seed_input)
+    assert e.value.field == "current_loop.pm_ki"
