@@ -52,14 +52,14 @@ class CType:
     name: str
     bits: int
     signed: bool
+    min: int = field(init=False, compare=False)
+    max: int = field(init=False, compare=False)
 
-    @property
-    def min(self) -> int:
-        return -(1 << (self.bits - 1)) if self.signed else 0
-
-    @property
-    def max(self) -> int:
-        return (1 << (self.bits - 1)) - 1 if self.signed else (1 << self.bits) - 1
+    def __post_init__(self) -> None:
+        # Precomputed: range checks run in the simulation's inner loop.
+        object.__setattr__(self, "min", -(1 << (self.bits - 1)) if self.signed else 0)
+        object.__setattr__(self, "max", (1 << (self.bits - 1)) - 1 if self.signed
+                           else (1 << self.bits) - 1)
 
     def unsigned(self) -> "CType":
         return {16: UINT16, 32: UINT32, 64: UINT64}[self.bits]
@@ -112,9 +112,16 @@ def _common(a: CType, b: CType) -> CType:
     return s
 
 
-@dataclass(frozen=True)
+_NO_FLAGS = frozenset()
+_WRAP = frozenset({"wrap"})
+_TRUNC = frozenset({"truncation"})
+
+
 class CInt:
     """An integer value of a C type, with the flags its computation raised.
+
+    Immutable by convention; a plain ``__slots__`` class because the
+    simulation runs it in its inner loop (a frozen dataclass costs 3× more).
 
     Parameters
     ----------
@@ -124,73 +131,89 @@ class CInt:
     flags : frozenset of str
     """
 
-    value: int
-    ctype: CType
-    flags: frozenset = field(default_factory=frozenset)
+    __slots__ = ("value", "ctype", "flags")
 
-    def __post_init__(self) -> None:
-        if not fits(self.value, self.ctype):
-            raise ValueError(f"{self.value} does not fit {self.ctype.name}")
+    def __init__(self, value: int, ctype: CType, flags: frozenset = _NO_FLAGS) -> None:
+        if not ctype.min <= value <= ctype.max:
+            raise ValueError(f"{value} does not fit {ctype.name}")
+        self.value = value
+        self.ctype = ctype
+        self.flags = flags
+
+    def __repr__(self) -> str:
+        return f"CInt({self.value}, {self.ctype.name}, {sorted(self.flags)})"
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, CInt) and (self.value, self.ctype, self.flags) == \
+            (other.value, other.ctype, other.flags)
+
+    def __hash__(self) -> int:
+        return hash((self.value, self.ctype, self.flags))
 
     @classmethod
     def of(cls, value: int, ctype: CType) -> "CInt":
         """Convert an exact integer to ``ctype`` as a C cast does, flagging a changed value."""
         w = wrap_to(value, ctype)
-        return cls(w, ctype, frozenset({"wrap"}) if w != value else frozenset())
+        return cls(w, ctype, _WRAP if w != value else _NO_FLAGS)
 
     def cast(self, ctype: CType) -> "CInt":
         """``(ctype)self``: modulo conversion; a changed value is flagged ``wrap``."""
         w = wrap_to(self.value, ctype)
-        return CInt(w, ctype, self.flags | ({"wrap"} if w != self.value else set()))
+        return CInt(w, ctype, self.flags | _WRAP if w != self.value else self.flags)
 
-    def _binary(self, other: "CInt", exact: int, extra: set | None = None) -> "CInt":
-        t = _common(self.ctype, other.ctype)
-        w = wrap_to(exact, t)
-        flags = set(self.flags | other.flags) | (extra or set())
-        if w != exact:
-            flags.add("wrap")
-        return CInt(w, t, frozenset(flags))
-
-    def _operands(self, other: "CInt") -> tuple[int, int, CType]:
-        t = _common(self.ctype, other.ctype)
-        # Converting a negative signed operand to an unsigned common type is itself a wrap.
-        return wrap_to(self.value, t), wrap_to(other.value, t), t
+    def _arith(self, other: "CInt", op: str) -> "CInt":
+        t = self.ctype if self.ctype is other.ctype else _common(self.ctype, other.ctype)
+        a, b = self.value, other.value
+        if not (t.min <= a <= t.max and t.min <= b <= t.max):
+            # Converting a negative operand to an unsigned common type is itself a wrap.
+            a, b = wrap_to(a, t), wrap_to(b, t)
+        flags = self.flags | other.flags
+        if op == "*":
+            exact = a * b
+        elif op == "+":
+            exact = a + b
+        elif op == "-":
+            exact = a - b
+        else:
+            if b == 0:
+                raise CDivisionByZero("integer division by zero")
+            exact = trunc_div(a, b)
+            if exact * b != a:
+                flags = flags | _TRUNC
+        if not t.min <= exact <= t.max:
+            exact = wrap_to(exact, t)
+            flags = flags | _WRAP
+        return CInt(exact, t, flags)
 
     def __mul__(self, other: "CInt") -> "CInt":
-        a, b, _ = self._operands(other)
-        return self._binary(other, a * b)
+        return self._arith(other, "*")
 
     def __add__(self, other: "CInt") -> "CInt":
-        a, b, _ = self._operands(other)
-        return self._binary(other, a + b)
+        return self._arith(other, "+")
 
     def __sub__(self, other: "CInt") -> "CInt":
-        a, b, _ = self._operands(other)
-        return self._binary(other, a - b)
+        return self._arith(other, "-")
+
+    def __floordiv__(self, other: "CInt") -> "CInt":
+        """C ``/``: truncates toward zero (not Python's floor division)."""
+        return self._arith(other, "/")
 
     def __neg__(self) -> "CInt":
         n = CInt.of(-self.value, self.ctype)
         return CInt(n.value, n.ctype, self.flags | n.flags)
 
-    def __floordiv__(self, other: "CInt") -> "CInt":
-        """C ``/``: truncates toward zero (not Python's floor division)."""
-        a, b, _ = self._operands(other)
-        if b == 0:
-            raise CDivisionByZero("integer division by zero")
-        q = trunc_div(a, b)
-        return self._binary(other, q, {"truncation"} if q * b != a else None)
-
     def __lshift__(self, n: int) -> "CInt":
         """C ``<<``; a signed overflow (undefined in ISO C) wraps as C2000 does, flagged."""
         exact = self.value << n
-        w = wrap_to(exact, self.ctype)
-        return CInt(w, self.ctype, self.flags | ({"wrap"} if w != exact else set()))
+        t = self.ctype
+        if t.min <= exact <= t.max:
+            return CInt(exact, t, self.flags)
+        return CInt(wrap_to(exact, t), t, self.flags | _WRAP)
 
     def __rshift__(self, n: int) -> "CInt":
         """C ``>>``: arithmetic for signed types (C2000 ``ASR``), logical for unsigned."""
         lost = self.value & ((1 << n) - 1)
-        return CInt(self.value >> n, self.ctype,
-                    self.flags | ({"truncation"} if lost else set()))
+        return CInt(self.value >> n, self.ctype, self.flags | _TRUNC if lost else self.flags)
 
     def clean(self) -> "CInt":
         """The same value read back from a variable: flags belong to the statement that made it."""
