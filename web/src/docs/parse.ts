@@ -111,9 +111,13 @@ function scanMath(text: string): MathSpan[] {
 }
 
 export function parseChapter(md: string): Chapter {
-  const text = blankCode(md.replace(/\r\n/g, '\n'));
+  const src = md.replace(/\r\n/g, '\n');
+  const text = blankCode(src);
   const headings: Heading[] = [];
-  for (const line of text.split('\n')) {
+  let inFence = false;
+  for (const line of src.split('\n')) {
+    if (/^(```|~~~)/.test(line)) inFence = !inFence;
+    if (inFence) continue;
     const m = HEADING_RE.exec(line);
     if (m) headings.push({ level: m[1].length, text: m[2], anchor: m[3] ?? '' });
   }
