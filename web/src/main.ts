@@ -1,6 +1,7 @@
-import { PulabClient } from './rpc';
-const w = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module' });
-const c = new PulabClient(w as unknown as ConstructorParameters<typeof PulabClient>[0], {
-  onReady: (ms) => (document.getElementById('app')!.textContent = `ready ${ms}`),
-});
-c.init(new URL('pyodide/', document.baseURI).href);
+import { App } from './app';
+import type { WorkerLike } from './rpc';
+
+const app = new App(document.getElementById('app')!);
+const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: 'pulab' });
+app.start(worker as unknown as WorkerLike);
+(window as unknown as { pulab: App }).pulab = app;

@@ -1,0 +1,91 @@
+// Tiny DOM builder and the one way numbers from the report are rendered (data-key/data-value).
+import katex from 'katex';
+import { fmtHex, fmtNum, fmtPct } from './format';
+import { t, type Key } from './i18n';
+
+type Child = Node | string | number | null | undefined | false | Child[];
+type Attrs = Record<string, string | number | boolean | null | undefined | ((ev: Event) => void)>;
+
+export function h(tag: string, attrs: Attrs = {}, ...children: Child[]): HTMLElement {
+  const el = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) {
+    if (v === null || v === undefined || v === false) continue;
+    if (typeof v === 'function') el.addEventListener(k.replace(/^on/, ''), v as EventListener);
+    else if (k === 'class') el.className = String(v);
+    else if (v === true) el.setAttribute(k, '');
+    else el.setAttribute(k, String(v));
+  }
+  append(el, children);
+  return el;
+}
+
+function append(el: HTMLElement, children: Child[]): void {
+  for (const c of children) {
+    if (c === null || c === undefined || c === false) continue;
+    if (Array.isArray(c)) append(el, c);
+    else el.append(c instanceof Node ? c : String(c));
+  }
+}
+
+/**
+ * A number from the report: `data-key` = its JSON path, `data-value` = full precision (JSON
+ * number text), `title` = the same, text = short form. `alias` wraps it in an outer element with a
+ * second data-key (e.g. "vendor.Rpm" around "vendor.Rpm.value").
+ */
+export function num(
+  path: string,
+  value: unknown,
+  opts: { kind?: 'int' | 'float' | 'pct' | 'hex'; type?: string; alias?: string; sig?: number; unit?: string; text?: string } = {},
+): HTMLElement {
+  const v = typeof value === 'number' ? value : null;
+  let text: string;
+  if (v === null) text = '…';
+  else if (opts.text !== undefined) text = opts.text;
+  else if (opts.kind === 'pct') text = fmtPct(v);
+  else if (opts.kind === 'hex') text = fmtHex(v, opts.type ?? 'long');
+  else text = fmtNum(v, opts.sig ?? 6);
+  const cls = `num${opts.kind === 'int' || opts.kind === 'hex' ? ' int' : ''}${v === null ? ' pending' : ''}`;
+  // A hex rendering is a second view of a value: it names its source in data-hex-of, so that every
+  // data-key in the page is a real path of the report.
+  const keyAttr = opts.kind === 'hex' ? 'data-hex-of' : 'data-key';
+  const el = h('span', { class: cls, [keyAttr]: path, 'data-value': v === null ? null : JSON.stringify(v), title: v === null ? null : String(v) }, text);
+  const inner = opts.unit ? h('span', { class: 'withunit' }, el, h('span', { class: 'u' }, ` ${opts.unit}`)) : el;
+  return opts.alias ? h('span', { 'data-key': opts.alias, 'data-value': v === null ? null : JSON.stringify(v) }, inner) : inner;
+}
+
+/** Flags as coloured chips with a tooltip. */
+export function flagChips(flags: unknown): HTMLElement {
+  const list = Array.isArray(flags) ? (flags as string[]) : [];
+  return h(
+    'span',
+    { class: 'flags' },
+    list.length === 0
+      ? h('span', { class: 'flag none' }, '—')
+      : list.map((f) =>
+          h('span', { class: `flag flag-${f}`, title: t(`flagHelp_${f}` as Key) }, t(`flag_${f}` as Key)),
+        ),
+  );
+}
+
+const texCache = new Map<string, string>();
+/** KaTeX formula (display or inline), cached. */
+export function tex(src: string, display = false): HTMLElement {
+  const key = `${display ? 'D' : 'I'}${src}`;
+  let html = texCache.get(key);
+  if (html === undefined) {
+    html = katex.renderToString(src, { displayMode: display, throwOnError: false, output: 'html' });
+    texCache.set(key, html);
+  }
+  const el = h(display ? 'div' : 'span', { class: 'tex' });
+  el.innerHTML = html;
+  return el;
+}
+
+export function table(head: (string | Node)[], rows: (Child[] | HTMLElement)[], cls = ''): HTMLElement {
+  return h(
+    'table',
+    { class: `grid ${cls}` },
+    h('thead', {}, h('tr', {}, head.map((x) => h('th', {}, x)))),
+    h('tbody', {}, rows.map((r) => (r instanceof HTMLElement ? r : h('tr', {}, r.map((c) => h('td', {}, c)))))),
+  );
+}

@@ -1,0 +1,115 @@
+// The input form: one element per field of the CLI input, `name` = its JSON path.
+import type { UnitId } from './units';
+import type { Input } from './state';
+import type { Key } from './i18n';
+
+export interface FieldSpec {
+  path: string;
+  kind: 'number' | 'int' | 'select' | 'bool';
+  /** Unit shown when there is no choice. */
+  unit?: string;
+  /** Display-unit choices (first = default). */
+  units?: UnitId[];
+  options?: string[];
+  /** Report path whose value is the placeholder when the field is empty (derived/default). */
+  placeholderFrom?: string;
+  /** Optional: empty means "absent" (default or derived). */
+  optional?: boolean;
+  enabled?: (inp: Input) => boolean;
+}
+
+export interface SectionSpec {
+  id: string;
+  title: Key;
+  hint?: Key;
+  fields: FieldSpec[];
+  collapsed?: boolean;
+}
+
+const conv = (inp: Input, k: string): unknown => inp.conventions?.[k];
+const loop = (inp: Input): string => String(inp.current_loop?.method ?? 'bandwidth');
+
+export const RAW_NAMES = ['Voltage', 'Current', 'FullFreq01', 'FreqRated01', 'RsPm', 'LD', 'LQ', 'BemfVolt', 'uDCFilter'];
+const RAW_UNIT: Record<string, string> = {
+  Voltage: '1 V', Current: '0.01 A', FullFreq01: '0.01 Hz', FreqRated01: '0.01 Hz', RsPm: 'mΩ', LD: 'LSB', LQ: 'LSB', BemfVolt: '0.1 V', uDCFilter: '0.1 V',
+};
+
+export const SECTIONS: SectionSpec[] = [
+  {
+    id: 'motor', title: 'sec_motor', fields: [
+      { path: 'motor.rated_voltage_v', kind: 'number', unit: 'V' },
+      { path: 'motor.rated_current_a', kind: 'number', unit: 'A' },
+      { path: 'motor.rated_freq_hz', kind: 'number', unit: 'Hz' },
+      { path: 'motor.rs_ohm', kind: 'number', unit: 'Ω' },
+      { path: 'motor.ld_h', kind: 'number', units: ['µH', 'mH', 'H'] },
+      { path: 'motor.lq_h', kind: 'number', units: ['µH', 'mH', 'H'] },
+      { path: 'motor.bemf_v', kind: 'number', unit: 'V' },
+      { path: 'motor.pole_pairs', kind: 'int' },
+    ],
+  },
+  {
+    id: 'drive', title: 'sec_drive', fields: [
+      { path: 'drive.base_freq_hz', kind: 'number', unit: 'Hz', optional: true, placeholderFrom: 'base.f_b' },
+      { path: 'drive.udc_v', kind: 'number', unit: 'V' },
+      { path: 'drive.ts_s', kind: 'number', units: ['µs', 'kHz', 's'] },
+    ],
+  },
+  {
+    id: 'conventions', title: 'sec_conventions', fields: [
+      { path: 'conventions.base', kind: 'select', options: ['rms', 'peak', 'custom'] },
+      { path: 'conventions.base_voltage_v', kind: 'number', unit: 'V', optional: true, enabled: (i) => conv(i, 'base') === 'custom' },
+      { path: 'conventions.base_current_a', kind: 'number', unit: 'A', optional: true, enabled: (i) => conv(i, 'base') === 'custom' },
+      { path: 'conventions.angle_base', kind: 'select', options: ['pi', '2pi'] },
+      { path: 'conventions.inductance_unit', kind: 'select', options: ['10uH', 'uH'] },
+    ],
+  },
+  {
+    id: 'current_loop', title: 'sec_current_loop', fields: [
+      { path: 'current_loop.method', kind: 'select', options: ['bandwidth', 'damping', 'manual'] },
+      { path: 'current_loop.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true, enabled: (i) => loop(i) !== 'manual' },
+      { path: 'current_loop.damping', kind: 'number', optional: true, enabled: (i) => loop(i) === 'damping' },
+      { path: 'current_loop.kp', kind: 'number', unit: 'Ω', optional: true, enabled: (i) => loop(i) === 'manual', placeholderFrom: 'current_pi.d.kp' },
+      { path: 'current_loop.ki', kind: 'number', unit: 'Ω/s', optional: true, enabled: (i) => loop(i) === 'manual', placeholderFrom: 'current_pi.d.ki' },
+    ],
+  },
+  {
+    id: 'pll', title: 'sec_pll', fields: [
+      { path: 'pll.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true },
+      { path: 'pll.damping', kind: 'number', optional: true },
+    ],
+  },
+  {
+    id: 'raw', title: 'sec_raw', hint: 'rawHint', collapsed: true,
+    fields: RAW_NAMES.map((n) => ({ path: `raw.${n}`, kind: 'int' as const, unit: RAW_UNIT[n], optional: true, placeholderFrom: `vendor.raw.${n}` })),
+  },
+  {
+    id: 'sim.current', title: 'sec_sim_current', collapsed: true, fields: [
+      { path: 'sim.current.axis', kind: 'select', options: ['d', 'q'] },
+      { path: 'sim.current.step_a', kind: 'number', unit: 'A' },
+      { path: 'sim.current.duration_s', kind: 'number', units: ['ms', 's'] },
+      { path: 'sim.current.speed_hz', kind: 'number', unit: 'Hz', optional: true },
+      { path: 'sim.current.delay', kind: 'bool' },
+    ],
+  },
+  {
+    id: 'sim.pll', title: 'sec_sim_pll', collapsed: true, fields: [
+      { path: 'sim.pll.speed_hz', kind: 'number', unit: 'Hz' },
+      { path: 'sim.pll.angle_step_deg', kind: 'number', unit: '°', optional: true },
+      { path: 'sim.pll.duration_s', kind: 'number', units: ['ms', 's'] },
+    ],
+  },
+];
+
+export const ALL_FIELDS: FieldSpec[] = SECTIONS.flatMap((s) => s.fields);
+
+/** The input without the values of disabled fields (what is sent, shared and stored). */
+export function effectiveInput(inp: Input): Input {
+  const out = JSON.parse(JSON.stringify(inp)) as Input;
+  for (const f of ALL_FIELDS) {
+    if (f.enabled && !f.enabled(inp)) {
+      const [s, ...rest] = f.path.split('.');
+      if (rest.length === 1 && out[s]) delete out[s][rest[0]];
+    }
+  }
+  return out;
+}

@@ -1,0 +1,25 @@
+// Current-loop step response: SI, per-unit and fixed point, with the fixed − SI error below.
+import { t, type Key } from '../i18n';
+import type { SimCurrent } from '../report-types';
+import { COLORS, plot, type Trace } from './figure';
+
+export function renderCurrentStep(el: HTMLElement, sim: SimCurrent, axis: 'd' | 'q'): void {
+  const key = axis === 'q' ? 'iq' : 'id';
+  const traces: Trace[] = [];
+  const ms = sim.t.map((x) => x * 1e3);
+  for (const v of ['si', 'pu', 'fixed']) {
+    const s = sim.variants[v];
+    if (!s?.[key]) continue;
+    traces.push({ x: ms, y: s[key], name: `${t(`variant_${v}` as Key)} i_${axis}`, color: COLORS[v], dash: v === 'pu' ? 'dash' : 'solid', width: v === 'pu' ? 2.4 : 1.6 });
+  }
+  const ref = (sim as Record<string, unknown>)[`${key}_ref`] ?? (sim as Record<string, unknown>).ref;
+  if (Array.isArray(ref)) traces.push({ x: ms, y: ref as number[], name: 'ref', color: COLORS.ref, dash: 'dot', width: 1 });
+  const si = sim.variants.si?.[key];
+  const fx = sim.variants.fixed?.[key];
+  if (si && fx) {
+    // Difference of two series for display only (fixed − SI), in mA.
+    traces.push({ x: ms, y: fx.map((v, i) => (v - si[i]) * 1e3), name: `${t('error')} fixed − SI`, color: COLORS.fixed, yaxis: 'y2', width: 1.2 });
+  }
+  plot(el, traces, { xTitle: `${t('time')} [ms]`, yTitle: `i_${axis} [A]`, y2Title: 'Δ [mA]' });
+}
+

@@ -1,0 +1,53 @@
+// Shared by the figures: Plotly loaded lazily as its own chunk, one common look.
+import { h } from '../dom';
+import { t } from '../i18n';
+
+type PlotlyT = typeof import('plotly.js-basic-dist-min').default;
+let plotly: Promise<PlotlyT> | null = null;
+
+export function loadPlotly(): Promise<PlotlyT> {
+  plotly ??= import('plotly.js-basic-dist-min').then((m) => m.default);
+  return plotly;
+}
+
+export const COLORS: Record<string, string> = {
+  si: '#1f6feb', pu: '#2da44e', fixed: '#d4670f', q15: '#8250df', naive: '#cf222e', ref: '#57606a',
+};
+
+export interface Trace {
+  x: number[];
+  y: number[];
+  name: string;
+  color: string;
+  dash?: 'solid' | 'dash' | 'dot';
+  width?: number;
+  yaxis?: 'y' | 'y2';
+}
+
+/** A figure with a main plot and an error subplot below (y2). */
+export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number] }): void {
+  if (!el.querySelector('.plot-host')) el.replaceChildren(h('div', { class: 'plot-host' }, h('div', { class: 'plot-loading' }, t('plotLoading'))));
+  const host = el.querySelector('.plot-host') as HTMLElement;
+  void loadPlotly().then((P) => {
+    host.querySelector('.plot-loading')?.remove();
+    void P.react(
+      host,
+      traces.map((tr) => ({
+        type: 'scatter', mode: 'lines', x: tr.x, y: tr.y, name: tr.name, yaxis: tr.yaxis ?? 'y',
+        line: { color: tr.color, dash: tr.dash ?? 'solid', width: tr.width ?? 1.8 }, showlegend: tr.yaxis !== 'y2',
+      })),
+      {
+        height: 380,
+        margin: { l: 64, r: 16, t: 10, b: 44 },
+        font: { family: 'system-ui, sans-serif', size: 12, color: '#24292f' },
+        paper_bgcolor: 'rgba(0,0,0,0)', plot_bgcolor: '#fff',
+        legend: { orientation: 'h', y: 1.08, x: 0 },
+        grid: { rows: 2, columns: 1, roworder: 'top to bottom' },
+        xaxis: { title: { text: layout.xTitle }, gridcolor: '#eaeef2', anchor: 'y2' },
+        yaxis: { title: { text: layout.yTitle }, domain: [0.36, 1], gridcolor: '#eaeef2', range: layout.yRange },
+        yaxis2: { title: { text: layout.y2Title }, domain: [0, 0.26], gridcolor: '#eaeef2', zerolinecolor: '#aaa' },
+      },
+      { displaylogo: false, responsive: true, modeBarButtonsToRemove: ['lasso2d', 'select2d'] },
+    );
+  });
+}

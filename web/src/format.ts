@@ -1,0 +1,61 @@
+// Formatting of numbers for display and parsing of typed numbers. No formulas here.
+
+/** `x` with `sig` significant digits, trailing zeros dropped; exponent form outside [1e-4, 1e7). */
+export function fmtNum(x: number | null | undefined, sig = 6): string {
+  if (x === null || x === undefined || typeof x !== 'number') return '—';
+  if (!Number.isFinite(x)) return String(x);
+  if (x === 0) return '0';
+  const a = Math.abs(x);
+  if (Number.isInteger(x) && a < 1e15) return String(x);
+  if (a >= 1e7 || a < 1e-4) {
+    const [m, e] = x.toExponential(sig - 1).split('e');
+    return `${stripZeros(m)}e${Number(e)}`;
+  }
+  return stripZeros(x.toPrecision(sig));
+}
+
+function stripZeros(s: string): string {
+  return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
+}
+
+/** Percentage with sign, e.g. "+0.6398 %". */
+export function fmtPct(x: number | null | undefined, digits = 4): string {
+  if (x === null || x === undefined || !Number.isFinite(x)) return '—';
+  if (x === 0) return '0 %';
+  const s = Math.abs(x) < 1e-4 ? x.toExponential(2) : x.toFixed(digits);
+  return `${x > 0 ? '+' : ''}${s} %`;
+}
+
+/** Two's-complement hex of an integer in a C type: Uint16 → 4 digits, long/Ulong → 8 digits. */
+export function fmtHex(value: number, type: string): string {
+  const bits = /16/.test(type) ? 16 : /64/.test(type) ? 64 : 32;
+  const mod = 1n << BigInt(bits);
+  const v = ((BigInt(Math.trunc(value)) % mod) + mod) % mod;
+  return `0x${v.toString(16).toUpperCase().padStart(bits / 4, '0')}`;
+}
+
+export type ParseResult = { ok: true; value: number | null } | { ok: false; error: 'number' | 'integer' };
+
+/**
+ * Parse what a user typed into a number field. Empty → null (the field is absent: default or
+ * derived). Accepts a decimal comma, surrounding spaces, exponent notation; `integer` demands an
+ * integer literal.
+ */
+export function parseNumber(text: string, integer = false): ParseResult {
+  const s = text.trim().replace(/\s+/g, '');
+  if (s === '') return { ok: true, value: null };
+  const norm = /^[+-]?\d+,\d+$/.test(s) ? s.replace(',', '.') : s;
+  if (integer) {
+    if (!/^[+-]?\d+$/.test(norm)) return { ok: false, error: 'integer' };
+    return { ok: true, value: Number(norm) };
+  }
+  if (!/^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/.test(norm)) return { ok: false, error: 'number' };
+  const v = Number(norm);
+  return Number.isFinite(v) ? { ok: true, value: v } : { ok: false, error: 'number' };
+}
+
+/** A number as it should appear in an input box: at most 12 significant digits. */
+export function fmtInput(x: number | null | undefined): string {
+  if (x === null || x === undefined || !Number.isFinite(x)) return '';
+  return String(Number(x.toPrecision(12)));
+}

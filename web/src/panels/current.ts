@@ -1,0 +1,76 @@
+import { h, num, tex } from '../dom';
+import { getLang, t } from '../i18n';
+
+let fig: HTMLElement | null = null;
+let lastSim: unknown = null;
+let lastStamp = '';
+import type { PiAxis } from '../report-types';
+import { renderCurrentStep } from '../figures/current-step';
+import { metricsTable } from './metrics';
+import type { Panel } from './panel';
+import { traceTable } from './vendor';
+
+const DESIGN: Record<string, string> = {
+  bandwidth: 'k_p = \\omega_c L,\\quad k_i = \\omega_c R_s,\\quad \\omega_c = 2\\pi f_{bw}',
+  damping: 'k_p = 2\\zeta\\omega_0 L - R_s,\\quad k_i = \\omega_0^2 L',
+  manual: 'k_p,\\ k_i\\ \\text{given}',
+};
+
+function axisRow(a: 'd' | 'q', g: PiAxis | undefined): HTMLElement {
+  const p = `current_pi.${a}`;
+  return h(
+    'tr',
+    {},
+    h('th', {}, a),
+    h('td', { class: 'r' }, num(`${p}.kp`, g?.kp)),
+    h('td', { class: 'r' }, num(`${p}.ki`, g?.ki)),
+    h('td', { class: 'r sep' }, num(`${p}.kp_pu`, g?.kp_pu)),
+    h('td', { class: 'r' }, num(`${p}.ki_pu`, g?.ki_pu)),
+    h('td', { class: 'r sep' }, num(`${p}.pm_kp`, g?.pm_kp, { kind: 'int' }), h('br'), g ? num(`${p}.pm_kp`, g.pm_kp, { kind: 'hex', type: 'long' }) : ''),
+    h('td', { class: 'r' }, num(`${p}.pm_ki`, g?.pm_ki, { kind: 'int' }), h('br'), g ? num(`${p}.pm_ki`, g.pm_ki, { kind: 'hex', type: 'long' }) : ''),
+    h('td', { class: 'r sep' }, num(`${p}.from_integers.kp`, g?.from_integers.kp)),
+    h('td', { class: 'r' }, num(`${p}.from_integers.ki`, g?.from_integers.ki)),
+    h('td', { class: 'r' }, num(`${p}.from_integers.bandwidth_hz`, g?.from_integers.bandwidth_hz)),
+  );
+}
+
+export const currentPanel: Panel = {
+  id: 'current',
+  title: 'p_current',
+  render(el, { report, simReport, simError, input }) {
+    const pi = report?.current_pi;
+    const method = pi?.method ?? String(input.current_loop?.method ?? 'bandwidth');
+    const ex = pi?.step_example;
+    const sim = simReport?.sim?.current;
+    const axis = (String((input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd') as 'd' | 'q';
+    fig ??= h('div', { class: 'figure' });
+    const figEl = fig;
+    el.replaceChildren(...[
+      h('div', { class: 'formulas' },
+        tex(DESIGN[method] ?? DESIGN.manual, true),
+        tex('k_p^{pu} = k_p\\frac{I_b}{U_b},\\ k_i^{pu} = k_i\\frac{I_b}{U_b}\\ \\text{(2.1-4)}\\qquad \\text{pm\\_kp} = \\mathrm{round}(k_p^{pu}\\,2^{12}),\\ \\text{pm\\_ki} = \\mathrm{round}(k_i^{pu}\\,T_s\\,2^{16})\\ \\text{(2.2-9)}', true)),
+      h('table', { class: 'grid pi' },
+        h('thead', {},
+          h('tr', {}, h('th', {}), h('th', { colspan: 2 }, t('siGains')), h('th', { colspan: 2, class: 'sep' }, t('puGains')), h('th', { colspan: 2, class: 'sep' }, t('intGains')), h('th', { colspan: 3, class: 'sep' }, t('backGains'))),
+          h('tr', {}, h('th', {}, t('axis')), h('th', {}, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', { class: 'sep' }, 'kp_pu'), h('th', {}, 'ki_pu [1/s]'), h('th', { class: 'sep' }, 'pm_kp (Q12)'), h('th', {}, 'pm_ki (Q16·Ts)'), h('th', { class: 'sep' }, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', {}, `${t('impliedBw')} [Hz]`))),
+        h('tbody', {}, axisRow('d', pi?.d), axisRow('q', pi?.q))),
+      ex ? h('div', { class: 'step-example' }, h('h3', {}, t('stepExample', { e: ex.error })), traceTable('current_pi.step_example.trace', ex.trace)) : null,
+      h('h3', {}, t('plotCurrent')),
+      figEl,
+      sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu', 'fixed'], [
+        { key: 'rise_time_s', label: 'riseTime', unit: 'ms', scale: 1e3 },
+        { key: 'overshoot_pct', label: 'overshoot', unit: '%' },
+        { key: 'settling_time_s', label: 'settling', unit: 'ms', scale: 1e3 },
+        { key: 'steady_state_error_a', label: 'sse', unit: 'A' },
+      ]) : null,
+      sim ? h('p', { class: 'note' }, `${t('fixedVsSi')}: `,
+        num('sim.current.metrics.fixed_vs_si_max_abs_a', sim.metrics.fixed_vs_si_max_abs_a, { unit: 'A' }), ' = ',
+        num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' })) : null,
+    ].filter((x): x is HTMLElement => x !== null));
+    const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
+    if (sim && (sim !== lastSim || stamp !== lastStamp)) renderCurrentStep(figEl, sim, axis);
+    else if (!sim) figEl.replaceChildren(h('div', { class: 'plot-placeholder' }, simError ? t('simNotAvailable', { m: simError }) : t('simRunning')));
+    lastSim = sim;
+    lastStamp = stamp;
+  },
+};

@@ -1,0 +1,25 @@
+// The one small interface every panel and figure shares.
+import type { Report } from '../report-types';
+import type { Input } from '../state';
+import type { PulabClient } from '../rpc';
+
+export type PanelId = 'bases' | 'pu' | 'vendor' | 'constants' | 'current' | 'pll' | 'qcalc' | 'conventions' | 'docs';
+
+export interface PanelContext {
+  /** The last good report (null while Python boots). */
+  report: Report | null;
+  /** The report with the "sim" section, or null; `simError` when the simulation failed. */
+  simReport: Report | null;
+  simError: string | null;
+  input: Input;
+  client: PulabClient | null;
+  embed: boolean;
+}
+
+export interface Panel {
+  id: PanelId;
+  /** i18n key of the title. */
+  title: string;
+  /** Render into `el` (called on every new report and on a language switch). */
+  render(el: HTMLElement, ctx: PanelContext): void;
+}

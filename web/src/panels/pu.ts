@@ -1,0 +1,26 @@
+import { h, num, table, tex } from '../dom';
+import { t } from '../i18n';
+import type { Panel } from './panel';
+
+const ROWS: [string, string, string][] = [
+  ['Rs', 'R_s^* = R_s / Z_b', 'pu'],
+  ['Ld', 'L_d^* = L_d / L_b', 'pu'],
+  ['Lq', 'L_q^* = L_q / L_b', 'pu'],
+  ['psi_r', '\\psi_r^* = \\psi_r / \\psi_b', 'pu'],
+  ['Ts', 'T_s^* = T_s\\,\\omega_b', 'pu'],
+  ['psi_r_wb', '\\psi_r = \\dfrac{E_{LL}}{\\sqrt{3}\\cdot 2\\pi f_n}\\ (\\text{rms})', 'Wb'],
+];
+
+export const puPanel: Panel = {
+  id: 'pu',
+  title: 'p_pu',
+  render(el, { report }) {
+    el.replaceChildren(
+      h('p', { class: 'note' }, tex('u_d^* = R_s^* i_d^* + L_d^* \\frac{di_d^*}{dt^*} - \\omega_e^* L_q^* i_q^*'), ' ', h('span', { class: 'cite' }, '(seed 1.2-2)')),
+      table(
+        [t('quantity'), t('formula'), t('value'), t('unit')],
+        ROWS.map(([k, f, u]) => [h('code', {}, k), tex(f), num(`pu.${k}`, report?.pu[k], { sig: 8 }), u]),
+      ),
+    );
+  },
+};

@@ -1,0 +1,119 @@
+// Standalone Q-format calculator: every result comes from pulab.api.qcalc_json in the worker.
+import { h, num, table, flagChips } from '../dom';
+import { parseNumber } from '../format';
+import { t } from '../i18n';
+import type { Panel, PanelContext } from './panel';
+
+export interface QcalcState {
+  mode: 'encode' | 'decode';
+  format: string;
+  word_bits: string;
+  value: string;
+  raw: string;
+  rounding: string;
+  overflow: string;
+}
+
+export const qstate: QcalcState = { mode: 'encode', format: 'Q3.12', word_bits: '', value: '0.229242018648822', raw: '939', rounding: 'nearest', overflow: 'saturate' };
+
+type QResult = {
+  ok: boolean; field?: string; message?: string;
+  format?: { name: string; word_bits: number; frac_bits: number; signed: boolean; min: number; max: number; resolution: number };
+  result?: { raw: number; hex: string; value: number; error: number; flags: string[] };
+};
+
+let last: QResult | null = null;
+let seq = 0;
+
+/** The qcalc request (JSON of pulab.api.qcalc) for the current state, or a local parse error. */
+export function qcalcRequest(s: QcalcState): { ok: true; req: Record<string, unknown> } | { ok: false; field: string; error: 'number' | 'integer' } {
+  const req: Record<string, unknown> = { format: s.format.trim(), rounding: s.rounding, overflow: s.overflow };
+  const wb = parseNumber(s.word_bits, true);
+  if (!wb.ok) return { ok: false, field: 'qcalc.word_bits', error: wb.error };
+  if (wb.value !== null) req.word_bits = wb.value;
+  if (s.mode === 'decode') {
+    const r = parseNumber(s.raw, true);
+    if (!r.ok || r.value === null) return { ok: false, field: 'qcalc.raw', error: 'integer' };
+    req.raw = r.value;
+  } else {
+    const v = parseNumber(s.value);
+    if (!v.ok || v.value === null) return { ok: false, field: 'qcalc.value', error: 'number' };
+    req.value = v.value;
+  }
+  return { ok: true, req };
+}
+
+function field(label: string, control: HTMLElement, name: string, err?: string): HTMLElement {
+  return h('label', { class: 'field' }, h('span', { class: 'lbl' }, label), control, h('span', { class: 'err', 'data-err-for': name }, err ?? ''));
+}
+
+function compute(el: HTMLElement, ctx: PanelContext): void {
+  const r = qcalcRequest(qstate);
+  const id = ++seq;
+  if (!r.ok) {
+    last = { ok: false, field: r.field, message: t(r.error === 'integer' ? 'errInteger' : 'errNumber') };
+    qcalcPanel.render(el, ctx);
+    return;
+  }
+  if (!ctx.client) return;
+  void ctx.client.call('qcalc', r.req, 'qcalc').then(({ result }) => {
+    if (id !== seq) return;
+    last = result as unknown as QResult;
+    qcalcPanel.render(el, ctx);
+  }, () => undefined);
+}
+
+export const qcalcPanel: Panel = {
+  id: 'qcalc',
+  title: 'p_qcalc',
+  render(el, ctx) {
+    if (ctx.client && last === null) {
+      last = { ok: true };
+      compute(el, ctx);
+    }
+    const on = (k: keyof QcalcState) => (ev: Event) => {
+      (qstate as unknown as Record<string, string>)[k] = (ev.target as HTMLInputElement).value;
+      compute(el, ctx);
+    };
+    const sel = (k: keyof QcalcState, opts: [string, string][]) =>
+      h('select', { name: `qcalc.${k}`, onchange: on(k) }, opts.map(([v, l]) => h('option', { value: v, selected: qstate[k] === v }, l)));
+    const inp = (k: keyof QcalcState, ph = '') => h('input', { name: `qcalc.${k}`, value: qstate[k], placeholder: ph, inputmode: 'decimal', spellcheck: 'false', oninput: on(k) });
+    const errFor = (name: string) => (last && !last.ok && last.field === name ? last.message : undefined);
+    const f = last?.ok ? last.format : undefined;
+    const res = last?.ok ? last.result : undefined;
+    const otherErr = last && !last.ok && !['qcalc.value', 'qcalc.raw', 'qcalc.format', 'qcalc.word_bits'].includes(last.field ?? '') ? last.message : null;
+    const focused = document.activeElement instanceof HTMLInputElement && el.contains(document.activeElement) ? document.activeElement.name : null;
+    el.replaceChildren(
+      h('div', { class: 'qcalc' },
+        h('div', { class: 'qform' },
+          field(t('qMode'), sel('mode', [['encode', t('qEncode')], ['decode', t('qDecode')]]), 'qcalc.mode'),
+          field(t('qFormat'), inp('format', 'Q3.12'), 'qcalc.format', errFor('qcalc.format')),
+          field(t('qWordBits'), inp('word_bits', '16'), 'qcalc.word_bits', errFor('qcalc.word_bits')),
+          qstate.mode === 'encode'
+            ? field(t('qValue'), inp('value'), 'qcalc.value', errFor('qcalc.value'))
+            : field(t('qRaw'), inp('raw'), 'qcalc.raw', errFor('qcalc.raw')),
+          field(t('qRounding'), sel('rounding', [['nearest', 'nearest (ties away)'], ['convergent', 'convergent (ties even)'], ['floor', 'floor'], ['zero', 'toward zero']]), 'qcalc.rounding'),
+          field(t('qOverflow'), sel('overflow', [['saturate', 'saturate'], ['wrap', 'wrap'], ['error', 'error']]), 'qcalc.overflow'),
+          h('p', { class: 'hint' }, t('qFormatHint'))),
+        h('div', { class: 'qout' + (last && !last.ok ? ' stale' : '') },
+          otherErr ? h('p', { class: 'err' }, otherErr) : null,
+          table([t('quantity'), t('value')], [
+            [t('qFormat'), h('code', {}, f?.name ?? '…'), ],
+            [t('qRange'), h('span', {}, num('qcalc.format.min', f?.min, { sig: 10 }), ' … ', num('qcalc.format.max', f?.max, { sig: 10 }))],
+            [t('qResolution'), num('qcalc.format.resolution', f?.resolution, { sig: 10 })],
+            [t('qRaw'), h('span', {}, num('qcalc.result.raw', res?.raw, { kind: 'int' }), '  ', h('code', { class: 'int' }, res?.hex ?? ''))],
+            [t('qResult'), num('qcalc.result.value', res?.value, { sig: 12 })],
+            [t('qError'), num('qcalc.result.error', res?.error, { sig: 6 })],
+            [t('flags'), flagChips(res?.flags)],
+          ], 'qtable'))),
+    );
+    if (focused) {
+      const again = el.querySelector<HTMLInputElement>(`input[name="${focused}"]`);
+      if (again) {
+        again.focus();
+        const n = again.value.length;
+        again.setSelectionRange(n, n);
+      }
+    }
+  },
+};

@@ -1,0 +1,67 @@
+// The parts of the report (docs/contract.md) the page reads. Values are displayed, never computed.
+export interface TraceStep {
+  code: string;
+  var: string;
+  type: string;
+  value: number;
+  meaning: string;
+  flags: string[];
+}
+export interface VendorResult {
+  value: number;
+  ideal: number;
+  q: number;
+  type: string;
+  si: number;
+  unit: string;
+  error_pct: number;
+  flags: string[];
+  trace: TraceStep[];
+}
+export interface PiAxis {
+  kp: number;
+  ki: number;
+  kp_pu: number;
+  ki_pu: number;
+  pm_kp: number;
+  pm_ki: number;
+  from_integers: { kp: number; ki: number; bandwidth_hz: number };
+}
+export interface Constant {
+  value: number;
+  exact: number;
+  expression: string;
+  rel_error: number;
+  used_in: string;
+  derivation?: string;
+}
+export interface SimCurrent {
+  t: number[];
+  variants: Record<string, { id: number[]; iq: number[]; ud: number[]; uq: number[]; [k: string]: number[] }>;
+  metrics: Record<string, unknown>;
+  [k: string]: unknown;
+}
+export interface SimPll {
+  t: number[];
+  variants: Record<string, { theta: number[]; theta_hat: number[]; omega_hat: number[]; [k: string]: number[] }>;
+  metrics: Record<string, unknown>;
+  [k: string]: unknown;
+}
+export interface Report {
+  input: Record<string, Record<string, unknown>>;
+  base: Record<string, number>;
+  pu: Record<string, number>;
+  vendor: { raw: Record<string, number> } & Record<string, VendorResult>;
+  current_pi: {
+    method: string;
+    bandwidth_hz: number | null;
+    d: PiAxis;
+    q: PiAxis;
+    step_example?: { error: number; integral: number; trace: TraceStep[] };
+  };
+  pll: Record<string, number>;
+  constants: Record<string, Constant>;
+  warnings: string[];
+  sim?: { current?: SimCurrent; pll?: SimPll };
+}
+export const VENDOR_NAMES = ['Rpm', 'LD', 'LQ', 'FreqPer', 'FluxRotor', 'pm_maxout_vol', 'maxu'] as const;

@@ -1,0 +1,163 @@
+// The page state is the CLI input JSON (docs/contract.md) plus the "sim" section of issue 3.
+// It lives in the URL (#in=…), in localStorage, and in the form.
+import type { Json } from './protocol';
+
+export type Input = { [section: string]: { [k: string]: Json } };
+
+export const SEED_INPUT: Input = {
+  motor: { rated_voltage_v: 17, rated_current_a: 1.5, rated_freq_hz: 220, rs_ohm: 1.5, ld_h: 0.0006, lq_h: 0.0006, bemf_v: 12, pole_pairs: 4 },
+  drive: { udc_v: 24, ts_s: 0.0001 },
+  conventions: { base: 'rms', angle_base: 'pi', inductance_unit: '10uH' },
+  current_loop: { method: 'bandwidth', bandwidth_hz: 500, damping: 0.7071067811865476 },
+  pll: { bandwidth_hz: 50, damping: 0.7071067811865476 },
+  raw: {},
+  sim: {
+    current: { axis: 'd', step_a: 0.15, duration_s: 0.005, speed_hz: 0, delay: false },
+    pll: { speed_hz: 50, angle_step_deg: 30, duration_s: 0.2 },
+  },
+};
+
+/** Presets: typical motors (the seed's example first). */
+export interface Preset {
+  id: string;
+  label: { en: string; zh: string };
+  input: Input;
+}
+
+function motor(m: Record<string, number>, d: Record<string, number>, step: number): Input {
+  const inp = clone(SEED_INPUT);
+  inp.motor = { ...m };
+  inp.drive = { ...d };
+  (inp.sim.current as { [k: string]: Json }).step_a = step;
+  return inp;
+}
+
+export const PRESETS: Preset[] = [
+  { id: 'seed', label: { en: 'Seed example: 17 V, 1.5 A, 220 Hz', zh: '原文示例：17 V、1.5 A、220 Hz' }, input: clone(SEED_INPUT) },
+  {
+    id: 'ind380',
+    label: { en: 'Industrial 380 V, 15 A, 50 Hz (7.5 kW)', zh: '工业 380 V、15 A、50 Hz（7.5 kW）' },
+    input: motor(
+      { rated_voltage_v: 380, rated_current_a: 15, rated_freq_hz: 50, rs_ohm: 0.45, ld_h: 0.012, lq_h: 0.018, bemf_v: 340, pole_pairs: 2 },
+      { base_freq_hz: 100, udc_v: 540, ts_s: 0.000125 }, 1.5),
+  },
+  {
+    id: 'servo220',
+    label: { en: 'Servo 220 V, 4.5 A, 200 Hz', zh: '伺服 220 V、4.5 A、200 Hz' },
+    input: motor(
+      { rated_voltage_v: 220, rated_current_a: 4.5, rated_freq_hz: 200, rs_ohm: 1.1, ld_h: 0.0042, lq_h: 0.0048, bemf_v: 190, pole_pairs: 4 },
+      { base_freq_hz: 400, udc_v: 311, ts_s: 0.0000625 }, 0.45),
+  },
+  {
+    id: 'lv48',
+    label: { en: 'Low-voltage 48 V, 20 A, 200 Hz', zh: '低压 48 V、20 A、200 Hz' },
+    input: motor(
+      { rated_voltage_v: 34, rated_current_a: 20, rated_freq_hz: 200, rs_ohm: 0.05, ld_h: 0.00012, lq_h: 0.00015, bemf_v: 28, pole_pairs: 5 },
+      { base_freq_hz: 300, udc_v: 48, ts_s: 0.00005 }, 2),
+  },
+  {
+    id: 'hv690',
+    label: { en: 'Medium power 690 V, 100 A, 50 Hz', zh: '中功率 690 V、100 A、50 Hz' },
+    input: motor(
+      { rated_voltage_v: 690, rated_current_a: 100, rated_freq_hz: 50, rs_ohm: 0.02, ld_h: 0.0015, lq_h: 0.0022, bemf_v: 600, pole_pairs: 3 },
+      { base_freq_hz: 100, udc_v: 980, ts_s: 0.0002 }, 10),
+  },
+];
+
+export function clone<T>(x: T): T {
+  return JSON.parse(JSON.stringify(x)) as T;
+}
+
+/** Value at a dotted path ("motor.rs_ohm", "vendor.Rpm.trace.0.value"); undefined when absent. */
+export function getPath(obj: unknown, path: string): unknown {
+  let cur: unknown = obj;
+  for (const k of path.split('.')) {
+    if (cur === null || typeof cur !== 'object') return undefined;
+    cur = (cur as Record<string, unknown>)[k];
+  }
+  return cur;
+}
+
+/** Set (or with `null`/undefined, delete) the value at a dotted path, creating objects on the way. */
+export function setPath(obj: Record<string, unknown>, path: string, value: unknown): void {
+  const keys = path.split('.');
+  let cur: Record<string, unknown> = obj;
+  for (const k of keys.slice(0, -1)) {
+    if (cur[k] === null || typeof cur[k] !== 'object') cur[k] = {};
+    cur = cur[k] as Record<string, unknown>;
+  }
+  const last = keys[keys.length - 1];
+  if (value === null || value === undefined) delete cur[last];
+  else cur[last] = value;
+}
+
+/** The input for the plain report: no "sim", no empty sections. */
+export function reportInput(inp: Input): Input {
+  const out: Input = {};
+  for (const [k, v] of Object.entries(inp)) {
+    if (k === 'sim') continue;
+    if (v && typeof v === 'object' && Object.keys(v).length === 0) continue;
+    out[k] = v;
+  }
+  return out;
+}
+
+/** The input with the simulation section (the sim request). */
+export function simInput(inp: Input): Input {
+  const out = reportInput(inp);
+  if (inp.sim) out.sim = inp.sim;
+  return out;
+}
+
+export const HASH_KEY = 'in';
+
+/** "#in=" + encodeURIComponent(JSON). */
+export function encodeHash(inp: Input): string {
+  return `#${HASH_KEY}=${encodeURIComponent(JSON.stringify(inp))}`;
+}
+
+/** Parse a location hash; null when it holds no (valid) state. */
+export function decodeHash(hash: string): Input | null {
+  const m = /^#?(?:.*&)?in=([^&]*)/.exec(hash);
+  if (!m) return null;
+  try {
+    const v = JSON.parse(decodeURIComponent(m[1])) as unknown;
+    return isInput(v) ? v : null;
+  } catch {
+    return null;
+  }
+}
+
+export function isInput(v: unknown): v is Input {
+  return (
+    typeof v === 'object' && v !== null && !Array.isArray(v) &&
+    Object.values(v).every((s) => s === null || (typeof s === 'object' && !Array.isArray(s)))
+  );
+}
+
+/**
+ * The state to open with: the URL hash wins, then localStorage, then the seed example. Sections
+ * missing from a shared link are not filled in from defaults (the link is the whole state), except
+ * "sim", whose defaults are added so the plots have something to show.
+ */
+export function initialInput(hash: string, stored: string | null): { input: Input; source: 'url' | 'storage' | 'default' } {
+  const fromUrl = decodeHash(hash);
+  if (fromUrl) return { input: withSim(fromUrl), source: 'url' };
+  if (stored) {
+    try {
+      const v = JSON.parse(stored) as unknown;
+      if (isInput(v)) return { input: withSim(v), source: 'storage' };
+    } catch {
+      /* ignore a corrupt entry */
+    }
+  }
+  return { input: clone(SEED_INPUT), source: 'default' };
+}
+
+function withSim(v: Input): Input {
+  const out = clone(v);
+  if (!out.sim) out.sim = clone(SEED_INPUT.sim);
+  return out;
+}
+
+export const STORAGE_KEY = 'pulab.input.v1';
