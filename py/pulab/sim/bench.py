@@ -43,7 +43,8 @@ def bench(steps: int = 20000, repeat: int = 3) -> dict:
     from . import current, validate
 
     rep = report(SEED_INPUT)
-    cfg = validate({"current": {"speed_hz": 50.0, "duration_s": steps * 1e-4}})["current"]
+    # n periods give n + 1 samples (controller steps): ask for steps − 1 periods.
+    cfg = validate({"current": {"speed_hz": 50.0, "duration_s": (steps - 1) * 1e-4}})["current"]
     best = None
     for _ in range(repeat):
         t0 = time.perf_counter()
