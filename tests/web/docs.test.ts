@@ -84,7 +84,7 @@ describe('docs: formulas render', () => {
         expect(ch.math.length).toBeGreaterThan(0);
         for (const m of ch.math) {
           const tex = fillPlaceholders(m.tex, () => '-1234.5678');
-          expect(() => katex.renderToString(tex, { throwOnError: true, displayMode: m.display }), tex).not.toThrow();
+          expect(() => katex.renderToString(tex, { throwOnError: true, strict: 'error', displayMode: m.display }), tex).not.toThrow();
         }
       });
     }
