@@ -16,7 +16,7 @@ type Obj = { [k: string]: JVal };
 const asObj = (v: JVal): Obj => v as Obj;
 /** JSON text of a parsed value (bigints back to integer literals). */
 export const dump = (v: JVal): string =>
-  JSON.stringify(v, (_, x) => (typeof x === 'bigint' ? `\u0000${x}` : x)).replace(/"\u0000(-?\d+)"/g, '$1');
+  JSON.stringify(v, (_, x) => (typeof x === 'bigint' ? `@@int:${x}@@` : x)).replace(/"@@int:(-?\d+)@@"/g, '$1');
 
 let pulab: NodePulab;
 beforeAll(async () => {
