@@ -11,6 +11,7 @@ import subprocess
 import sys
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 import pulab
 from pulab import sim
@@ -431,11 +432,38 @@ def test_validate_errors(bad, field):
     ({"current": {"step_a": 13.0}}, "sim.current.step_a"),        # 8.7 pu > Q12 int16
     ({"current": {"duration_s": 100.0}}, "sim.current.duration_s"),
     ({"pll": {"duration_s": 1000.0}}, "sim.pll.duration_s"),
+    ({"current": {"speed_hz": 5000.0}}, "sim.current.speed_hz"),     # Nyquist at Ts = 100 µs
+    ({"pll": {"speed_hz": -5000.0}}, "sim.pll.speed_hz"),
+    ({"pll": {"speed_hz": 100.0, "ramp_hz_per_s": 1e5, "duration_s": 0.1}},
+     "sim.pll.ramp_hz_per_s"),
 ])
 def test_simulate_errors(cfg, field):
     with pytest.raises(InputError) as e:
         pulab.report(with_(SEED, sim=cfg))
     assert e.value.field == field
+
+
+_num = st.one_of(st.none(), st.booleans(), st.text(max_size=3),
+                 st.floats(allow_nan=True, allow_infinity=True),
+                 st.floats(min_value=-1e4, max_value=1e4), st.integers(-10 ** 6, 10 ** 6))
+
+
+@settings(max_examples=150, deadline=None)
+@given(cur=st.fixed_dictionaries({}, optional={
+           "axis": st.one_of(st.sampled_from(["d", "q", "x"]), _num),
+           "step_a": _num, "duration_s": st.one_of(_num, st.floats(1e-6, 0.02)),
+           "speed_hz": _num, "delay": st.one_of(st.booleans(), _num)}),
+       pll=st.fixed_dictionaries({}, optional={
+           "speed_hz": _num, "angle_step_deg": _num, "ramp_hz_per_s": _num,
+           "duration_s": st.one_of(_num, st.floats(1e-6, 0.05))}))
+def test_fuzzed_sim_input_gives_output_or_input_error(cur, pll):
+    """Nothing but InputError, and never NaN or infinity in the output."""
+    try:
+        rep = pulab.report(with_(SEED, sim={"current": cur, "pll": pll}))
+    except InputError as e:
+        assert e.field.startswith("sim.")
+        return
+    json.dumps(rep["sim"], allow_nan=False)
 
 
 def test_bench_runs():

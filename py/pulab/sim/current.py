@@ -258,7 +258,8 @@ def run(report: dict, cfg: dict) -> dict:
     ------
     InputError
         ``sim.current.duration_s`` for too many periods, ``sim.current.step_a``
-        for a reference outside the Q12 int16 range.
+        for a reference outside the Q12 int16 range, ``sim.current.speed_hz`` at or
+        above half the control frequency.
     """
     inp, b, pu, vendor, pi = (report["input"], report["base"], report["pu"], report["vendor"],
                               report["current_pi"])
@@ -278,6 +279,10 @@ def run(report: dict, cfg: dict) -> dict:
         raise InputError("sim.current.step_a", f"{step:g} A is {step / i_b:.3g} pu; the Q12 "
                          f"current (int16) holds less than ±8 pu (±{8 * i_b:.4g} A)")
     ref_d, ref_q = (step, 0.0) if axis == "d" else (0.0, step)
+    if abs(cfg["speed_hz"]) * ts >= 0.5:
+        # Beyond Nyquist the sampled dq model is meaningless (and ω_e·Ts is unbounded).
+        raise InputError("sim.current.speed_hz", f"|{cfg['speed_hz']:g}| Hz is not below half "
+                         f"the control frequency 1/(2·Ts) = {0.5 / ts:g} Hz")
     omega = 2.0 * math.pi * cfg["speed_hz"]
     maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
     umax_pu, imax_pu = maxout / 4096.0, maxu / 16777216.0

@@ -214,7 +214,9 @@ def run(report: dict, cfg: dict) -> dict:
     Raises
     ------
     InputError
-        ``sim.pll.duration_s`` for too many periods.
+        ``sim.pll.duration_s`` for too many periods; ``sim.pll.speed_hz`` or
+        ``sim.pll.ramp_hz_per_s`` when the input speed reaches half the control
+        frequency (the default speed, rated_freq_hz, included).
     """
     inp, b, g = report["input"], report["base"], report["pll"]
     ts = inp["drive"]["ts_s"]
@@ -226,6 +228,12 @@ def run(report: dict, cfg: dict) -> dict:
                          f"{duration:g} s is {n} control periods; at most {MAX_STEPS}")
     n = max(n, 1)
     speed = cfg["speed_hz"] if cfg["speed_hz"] is not None else inp["motor"]["rated_freq_hz"]
+    top = max(abs(speed), abs(speed + cfg["ramp_hz_per_s"] * n * ts))
+    if top * ts >= 0.5:
+        # An angle sampled at Ts cannot show a speed at or above Nyquist.
+        field = "sim.pll.ramp_hz_per_s" if abs(speed) * ts < 0.5 else "sim.pll.speed_hz"
+        raise InputError(field, f"the input speed reaches {top:g} Hz, not below half the "
+                         f"control frequency 1/(2·Ts) = {0.5 / ts:g} Hz")
     theta, omega = input_angle(n, ts, speed, cfg["ramp_hz_per_s"],
                                math.radians(cfg["angle_step_deg"]))
     v = {}
