@@ -21,9 +21,10 @@ import { currentPanel } from './panels/current';
 import { pllPanel } from './panels/pll';
 import { qcalcPanel } from './panels/qcalc';
 import { conventionsPanel } from './panels/conventions';
-import { docsPanel, docsAvailable } from './panels/docs';
+import { docTarget, docsAvailable, docsPanel, openChapter, setPanelRegistry } from './panels/docs';
 
 export const PANELS: Panel[] = [basesPanel, puPanel, vendorPanel, constantsPanel, currentPanel, pllPanel, qcalcPanel, conventionsPanel, docsPanel];
+setPanelRegistry(PANELS);
 
 const LANG_KEY = 'pulab.lang';
 const UNITS_KEY = 'pulab.units.v1';
@@ -65,6 +66,8 @@ export class App {
     const params = new URLSearchParams(location.search);
     const e = params.get('embed');
     this.embed = PANELS.some((p) => p.id === e) ? (e as PanelId) : null;
+    const chapter = params.get('chapter');
+    if (chapter) openChapter(chapter, params.get('anchor') ?? '');
     const langParam = params.get('lang');
     setLang(langParam === 'zh' || langParam === 'en' ? langParam : defaultLang(navigator.languages, load(LANG_KEY)));
     this.input = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY)).input;
@@ -84,7 +87,39 @@ export class App {
     });
   }
 
+  /** In-page links must not touch location.hash (it holds the state): handled here. */
+  private onClick(ev: MouseEvent): void {
+    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], nav.tabs a');
+    if (!a) return;
+    ev.preventDefault();
+    const go = (id: string) => document.getElementById(id)?.scrollIntoView({ block: 'start' });
+    if (a.dataset.why) {
+      const target = docTarget(a.dataset.why);
+      if (!target) return;
+      openChapter(target.chapter, target.anchor);
+      if (this.embed) {
+        window.open(`./?embed=docs&chapter=${target.chapter}&anchor=${target.anchor}${location.hash}`, '_blank', 'noopener');
+        return;
+      }
+      this.renderPanels(['docs']);
+      go('panel-docs');
+    } else if (a.dataset.panelLink) {
+      if (this.embed) {
+        window.open(`./${location.hash}`, '_blank', 'noopener');
+        return;
+      }
+      go(a.dataset.panelLink === 'inputs' ? 'app' : `panel-${a.dataset.panelLink}`);
+      if (a.dataset.panelLink === 'inputs') (this.root.querySelector('.inputs input') as HTMLElement | null)?.focus();
+    } else if (a.dataset.docLink) {
+      const el = this.root.querySelector(`[data-anchor="${CSS.escape(a.dataset.docLink)}"]`);
+      if (el) el.scrollIntoView({ block: 'start' });
+    } else if (a.dataset.nav) {
+      go(`panel-${a.dataset.nav}`);
+    }
+  }
+
   start(worker: ConstructorParameters<typeof PulabClient>[0]): void {
+    this.root.addEventListener('click', (ev) => this.onClick(ev));
     this.client = new PulabClient(worker, {
       onProgress: (stage, fraction) => {
         this.bootState = { stage: `boot_${stage}` as Key, fraction };
@@ -266,11 +301,12 @@ export class App {
         const v = getPath(this.report, f.placeholderFrom);
         if (typeof v === 'number') {
           const u = this.unitOf(f);
-          ph = `${fmtNum(u ? fromSI(v, u) : v, 8)} (${t('derived')})`;
+          ph = `= ${fmtNum(u ? fromSI(v, u) : v, 8)}`;
+          el.title = `${t('derived')}: ${fmtNum(u ? fromSI(v, u) : v, 12)}`;
         }
       } else if (f.optional && this.report) {
         const v = getPath(this.report.input, f.path);
-        if (typeof v === 'number') ph = `${fmtNum(v, 8)} (${t('defaultIs')})`;
+        if (typeof v === 'number') ph = `= ${fmtNum(v, 8)}`;
       }
       el.placeholder = ph;
     }
@@ -299,6 +335,11 @@ export class App {
       const cl = this.input.current_loop ?? (this.input.current_loop = {});
       cl.kp ??= this.report.current_pi.d.kp;
       cl.ki ??= this.report.current_pi.d.ki;
+    }
+    if (f.path === 'current_loop.method' && value === 'integers' && this.report) {
+      const cl = this.input.current_loop ?? (this.input.current_loop = {});
+      cl.pm_kp ??= this.report.current_pi.d.pm_kp;
+      cl.pm_ki ??= this.report.current_pi.d.pm_ki;
     }
     if (f.path === 'conventions.base' && value === 'custom' && this.report) {
       const c = this.input.conventions ?? (this.input.conventions = {});
@@ -422,11 +463,12 @@ export class App {
     document.title = `pu-lab — ${t('subtitle')}`;
     this.panelEls.clear();
     const panels = (this.embed ? PANELS.filter((p) => p.id === this.embed) : PANELS).filter((p) => p.id !== 'docs' || docsAvailable());
+    const pair = (a: PanelId, b: PanelId) => !this.embed && panels.some((p) => p.id === a) && panels.some((p) => p.id === b);
     const sections = panels.map((p) => {
       const body = h('div', { class: 'panel-body' });
       this.panelEls.set(p.id, body);
       return h('section', { class: `panel panel-${p.id}`, id: `panel-${p.id}`, 'data-panel': p.id },
-        h('h2', {}, t(p.title as Key), p.id !== 'docs' && docsAvailable() ? h('a', { class: 'why', href: `#doc-${p.id}`, 'data-why': p.id }, t('why')) : null), body);
+        h('h2', {}, t(p.title as Key), p.id !== 'docs' && docTarget(p.id) ? h('a', { class: 'why', href: `#panel-docs`, 'data-why': p.id }, t('why')) : null), body);
     });
     const lang = h('div', { class: 'lang', role: 'group' },
       (['zh', 'en'] as Lang[]).map((l) => h('button', { type: 'button', 'data-lang': l, class: getLang() === l ? 'on' : '', onclick: () => this.switchLang(l) }, l === 'zh' ? '中文' : 'English')));
@@ -456,8 +498,9 @@ export class App {
         h('div', { class: 'layout' },
           h('aside', { class: 'inputs' }),
           h('div', { class: 'content' },
-            h('nav', { class: 'tabs' }, panels.map((p) => h('a', { href: `#panel-${p.id}`, 'data-nav': p.id, onclick: (ev: Event) => { ev.preventDefault(); document.getElementById(`panel-${p.id}`)?.scrollIntoView({ behavior: 'smooth', block: 'start' }); } }, t(p.title as Key)))),
-            h('main', { class: 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), h('div', { class: 'warnings' }), ...sections))),
+            h('nav', { class: 'tabs' }, panels.map((p) => h('a', { href: `#panel-${p.id}`, 'data-nav': p.id }, t(p.title as Key)))),
+            h('main', { class: 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), h('div', { class: 'warnings' }),
+              ...(pair('bases', 'pu') ? [h('div', { class: 'pair' }, sections[0], sections[1]), ...sections.slice(2)] : sections)))),
         h('div', { class: 'toast' }),
       );
       this.renderForm();

@@ -65,11 +65,13 @@ export const SECTIONS: SectionSpec[] = [
   },
   {
     id: 'current_loop', title: 'sec_current_loop', fields: [
-      { path: 'current_loop.method', kind: 'select', options: ['bandwidth', 'damping', 'manual'] },
-      { path: 'current_loop.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true, enabled: (i) => loop(i) !== 'manual' },
+      { path: 'current_loop.method', kind: 'select', options: ['bandwidth', 'damping', 'manual', 'integers'] },
+      { path: 'current_loop.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true, enabled: (i) => loop(i) === 'bandwidth' || loop(i) === 'damping' },
       { path: 'current_loop.damping', kind: 'number', optional: true, enabled: (i) => loop(i) === 'damping' },
       { path: 'current_loop.kp', kind: 'number', unit: 'Ω', optional: true, enabled: (i) => loop(i) === 'manual', placeholderFrom: 'current_pi.d.kp' },
       { path: 'current_loop.ki', kind: 'number', unit: 'Ω/s', optional: true, enabled: (i) => loop(i) === 'manual', placeholderFrom: 'current_pi.d.ki' },
+      { path: 'current_loop.pm_kp', kind: 'int', unit: 'Q12', optional: true, enabled: (i) => loop(i) === 'integers', placeholderFrom: 'current_pi.d.pm_kp' },
+      { path: 'current_loop.pm_ki', kind: 'int', unit: 'Q16', optional: true, enabled: (i) => loop(i) === 'integers', placeholderFrom: 'current_pi.d.pm_ki' },
     ],
   },
   {
@@ -85,17 +87,18 @@ export const SECTIONS: SectionSpec[] = [
   {
     id: 'sim.current', title: 'sec_sim_current', collapsed: true, fields: [
       { path: 'sim.current.axis', kind: 'select', options: ['d', 'q'] },
-      { path: 'sim.current.step_a', kind: 'number', unit: 'A' },
-      { path: 'sim.current.duration_s', kind: 'number', units: ['ms', 's'] },
+      { path: 'sim.current.step_a', kind: 'number', unit: 'A', optional: true },
+      { path: 'sim.current.duration_s', kind: 'number', units: ['ms', 's'], optional: true },
       { path: 'sim.current.speed_hz', kind: 'number', unit: 'Hz', optional: true },
       { path: 'sim.current.delay', kind: 'bool' },
     ],
   },
   {
     id: 'sim.pll', title: 'sec_sim_pll', collapsed: true, fields: [
-      { path: 'sim.pll.speed_hz', kind: 'number', unit: 'Hz' },
+      { path: 'sim.pll.speed_hz', kind: 'number', unit: 'Hz', optional: true },
       { path: 'sim.pll.angle_step_deg', kind: 'number', unit: '°', optional: true },
-      { path: 'sim.pll.duration_s', kind: 'number', units: ['ms', 's'] },
+      { path: 'sim.pll.ramp_hz_per_s', kind: 'number', unit: 'Hz/s', optional: true },
+      { path: 'sim.pll.duration_s', kind: 'number', units: ['ms', 's'], optional: true },
     ],
   },
 ];
@@ -111,5 +114,6 @@ export function effectiveInput(inp: Input): Input {
       if (rest.length === 1 && out[s]) delete out[s][rest[0]];
     }
   }
+  for (const [k, v] of Object.entries(out)) if (k !== 'sim' && v && typeof v === 'object' && Object.keys(v).length === 0) delete out[k];
   return out;
 }

@@ -11,10 +11,8 @@ export const SEED_INPUT: Input = {
   current_loop: { method: 'bandwidth', bandwidth_hz: 500, damping: 0.7071067811865476 },
   pll: { bandwidth_hz: 50, damping: 0.7071067811865476 },
   raw: {},
-  sim: {
-    current: { axis: 'd', step_a: 0.15, duration_s: 0.005, speed_hz: 0, delay: false },
-    pll: { speed_hz: 50, angle_step_deg: 30, duration_s: 0.2 },
-  },
+  // Empty fields take pulab.sim's motor-dependent defaults (step 0.5·I_b, duration from ω_c, …).
+  sim: { current: { axis: 'd', delay: false }, pll: {} },
 };
 
 /** Presets: typical motors (the seed's example first). */
@@ -24,11 +22,10 @@ export interface Preset {
   input: Input;
 }
 
-function motor(m: Record<string, number>, d: Record<string, number>, step: number): Input {
+function motor(m: Record<string, number>, d: Record<string, number>): Input {
   const inp = clone(SEED_INPUT);
   inp.motor = { ...m };
   inp.drive = { ...d };
-  (inp.sim.current as { [k: string]: Json }).step_a = step;
   return inp;
 }
 
@@ -39,28 +36,28 @@ export const PRESETS: Preset[] = [
     label: { en: 'Industrial 380 V, 15 A, 50 Hz (7.5 kW)', zh: '工业 380 V、15 A、50 Hz（7.5 kW）' },
     input: motor(
       { rated_voltage_v: 380, rated_current_a: 15, rated_freq_hz: 50, rs_ohm: 0.45, ld_h: 0.012, lq_h: 0.018, bemf_v: 340, pole_pairs: 2 },
-      { base_freq_hz: 100, udc_v: 540, ts_s: 0.000125 }, 1.5),
+      { base_freq_hz: 100, udc_v: 540, ts_s: 0.000125 }),
   },
   {
     id: 'servo220',
     label: { en: 'Servo 220 V, 4.5 A, 200 Hz', zh: '伺服 220 V、4.5 A、200 Hz' },
     input: motor(
       { rated_voltage_v: 220, rated_current_a: 4.5, rated_freq_hz: 200, rs_ohm: 1.1, ld_h: 0.0042, lq_h: 0.0048, bemf_v: 190, pole_pairs: 4 },
-      { base_freq_hz: 400, udc_v: 311, ts_s: 0.0000625 }, 0.45),
+      { base_freq_hz: 400, udc_v: 311, ts_s: 0.0000625 }),
   },
   {
     id: 'lv48',
     label: { en: 'Low-voltage 48 V, 20 A, 200 Hz', zh: '低压 48 V、20 A、200 Hz' },
     input: motor(
       { rated_voltage_v: 34, rated_current_a: 20, rated_freq_hz: 200, rs_ohm: 0.05, ld_h: 0.00012, lq_h: 0.00015, bemf_v: 28, pole_pairs: 5 },
-      { base_freq_hz: 300, udc_v: 48, ts_s: 0.00005 }, 2),
+      { base_freq_hz: 300, udc_v: 48, ts_s: 0.00005 }),
   },
   {
     id: 'hv690',
     label: { en: 'Medium power 690 V, 100 A, 50 Hz', zh: '中功率 690 V、100 A、50 Hz' },
     input: motor(
       { rated_voltage_v: 690, rated_current_a: 100, rated_freq_hz: 50, rs_ohm: 0.02, ld_h: 0.0015, lq_h: 0.0022, bemf_v: 600, pole_pairs: 3 },
-      { base_freq_hz: 100, udc_v: 980, ts_s: 0.0002 }, 10),
+      { base_freq_hz: 100, udc_v: 980, ts_s: 0.0002 }),
   },
 ];
 

@@ -1,9 +1,8 @@
 import { h, num, tex } from '../dom';
 import { getLang, t } from '../i18n';
 
-let fig: HTMLElement | null = null;
-let lastSim: unknown = null;
-let lastStamp = '';
+/** Per host element: the figure element kept across renders, and what it shows. */
+const figs = new WeakMap<HTMLElement, { fig: HTMLElement; sim: unknown; stamp: string }>();
 import type { PiAxis } from '../report-types';
 import { renderCurrentStep } from '../figures/current-step';
 import { metricsTable } from './metrics';
@@ -14,6 +13,7 @@ const DESIGN: Record<string, string> = {
   bandwidth: 'k_p = \\omega_c L,\\quad k_i = \\omega_c R_s,\\quad \\omega_c = 2\\pi f_{bw}',
   damping: 'k_p = 2\\zeta\\omega_0 L - R_s,\\quad k_i = \\omega_0^2 L',
   manual: 'k_p,\\ k_i\\ \\text{given}',
+  integers: '\\text{pm\\_kp},\\ \\text{pm\\_ki}\\ \\text{given} \\Rightarrow k_p = \\frac{\\text{pm\\_kp}}{2^{12}}\\frac{U_b}{I_b},\\ k_i = \\frac{\\text{pm\\_ki}}{2^{16}T_s}\\frac{U_b}{I_b}',
 };
 
 function axisRow(a: 'd' | 'q', g: PiAxis | undefined): HTMLElement {
@@ -43,8 +43,9 @@ export const currentPanel: Panel = {
     const ex = pi?.step_example;
     const sim = simReport?.sim?.current;
     const axis = (String((input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd') as 'd' | 'q';
-    fig ??= h('div', { class: 'figure' });
-    const figEl = fig;
+    const f = figs.get(el) ?? { fig: h('div', { class: 'figure' }), sim: null, stamp: '' };
+    figs.set(el, f);
+    const figEl = f.fig;
     el.replaceChildren(...[
       h('div', { class: 'formulas' },
         tex(DESIGN[method] ?? DESIGN.manual, true),
@@ -68,9 +69,9 @@ export const currentPanel: Panel = {
         num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' })) : null,
     ].filter((x): x is HTMLElement => x !== null));
     const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
-    if (sim && (sim !== lastSim || stamp !== lastStamp)) renderCurrentStep(figEl, sim, axis);
+    if (sim && (sim !== f.sim || stamp !== f.stamp)) renderCurrentStep(figEl, sim, axis);
     else if (!sim) figEl.replaceChildren(h('div', { class: 'plot-placeholder' }, simError ? t('simNotAvailable', { m: simError }) : t('simRunning')));
-    lastSim = sim;
-    lastStamp = stamp;
+    f.sim = sim;
+    f.stamp = stamp;
   },
 };

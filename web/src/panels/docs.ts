@@ -1,19 +1,105 @@
-// Explainer chapters (docs/zh, docs/en) rendered with the current report. Filled in when the
-// chapters exist (issue 5); until then the panel is hidden.
+// Explainer chapters (docs/zh, docs/en, docs/index.json, issue 5) rendered with the current
+// report: {{path}} values, {{panel:NAME}} and {{plot:NAME}} embeds, links back to the panels.
 import { h } from '../dom';
-import { t } from '../i18n';
-import type { Panel } from './panel';
+import { getLang, t } from '../i18n';
+import { renderMarkdown } from '../docs/render';
+import { getPath } from '../state';
+import { renderCurrentStep } from '../figures/current-step';
+import { renderPllTrack } from '../figures/pll-track';
+import type { Panel, PanelContext } from './panel';
 
 const CHAPTERS = import.meta.glob('../../../docs/{zh,en}/*.md', { query: '?raw', import: 'default', eager: true }) as Record<string, string>;
+const INDEX = Object.values(import.meta.glob('../../../docs/index.json', { import: 'default', eager: true }))[0] as DocsIndex | undefined;
+
+export interface DocsIndex {
+  chapters: { id: string; file: string; title: { zh: string; en: string } }[];
+  panels: Record<string, string>;
+}
 
 export function docsAvailable(): boolean {
-  return Object.keys(CHAPTERS).length > 0;
+  return !!INDEX && INDEX.chapters.length > 0 && Object.keys(CHAPTERS).length > 0;
+}
+
+/** "01-per-unit#bases" for a panel, or null. */
+export function docTarget(panel: string): { chapter: string; anchor: string } | null {
+  const v = INDEX?.panels[panel];
+  if (!v) return null;
+  const [chapter, anchor = ''] = v.split('#');
+  return { chapter, anchor };
+}
+
+let registry: Panel[] = [];
+/** The panels that {{panel:NAME}} can embed (set by the app; avoids an import cycle). */
+export function setPanelRegistry(p: Panel[]): void {
+  registry = p;
+}
+
+const state = { chapter: INDEX?.chapters[0]?.id ?? '', anchor: '' };
+
+export function openChapter(chapter: string, anchor = ''): void {
+  if (INDEX?.chapters.some((c) => c.id === chapter)) state.chapter = chapter;
+  state.anchor = anchor;
+}
+
+function chapterText(id: string): string | null {
+  const file = INDEX?.chapters.find((c) => c.id === id)?.file;
+  if (!file) return null;
+  const key = Object.keys(CHAPTERS).find((k) => k.endsWith(`/docs/${getLang()}/${file}`))
+    ?? Object.keys(CHAPTERS).find((k) => k.endsWith(`/docs/en/${file}`));
+  return key ? CHAPTERS[key] : null;
+}
+
+const timers = new WeakMap<HTMLElement, ReturnType<typeof setTimeout>>();
+
+function fillEmbeds(body: HTMLElement, ctx: PanelContext): void {
+  for (const el of body.querySelectorAll<HTMLElement>('[data-embed-panel]')) {
+    const name = el.dataset.embedPanel ?? '';
+    const p = registry.find((x) => x.id === name && x.id !== 'docs');
+    const link = h('a', { href: `#panel-${name}`, 'data-panel-link': name, class: 'doc-embed-link' }, `↗ ${p ? t(p.title as never) : t('inputs')}`);
+    if (p) {
+      const inner = h('div', { class: 'panel-body' });
+      el.replaceChildren(link, inner);
+      p.render(inner, ctx);
+    } else el.replaceChildren(link);
+  }
+  for (const el of body.querySelectorAll<HTMLElement>('[data-embed-plot]')) {
+    const name = el.dataset.embedPlot;
+    const link = h('a', { href: `#panel-${name}`, 'data-panel-link': name ?? '', class: 'doc-embed-link' }, `↗ ${t(name === 'pll' ? 'plotPll' : 'plotCurrent')}`);
+    const fig = h('div', { class: 'figure' });
+    el.replaceChildren(link, fig);
+    const sim = ctx.simReport?.sim;
+    const axis = String((ctx.input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd';
+    if (name === 'current' && sim?.current) renderCurrentStep(fig, sim.current, axis);
+    else if (name === 'pll' && sim?.pll) renderPllTrack(fig, sim.pll);
+    else fig.replaceChildren(h('div', { class: 'plot-placeholder' }, ctx.simError ? t('simNotAvailable', { m: ctx.simError }) : t('simRunning')));
+  }
 }
 
 export const docsPanel: Panel = {
   id: 'docs',
   title: 'p_docs',
-  render(el) {
-    el.replaceChildren(h('p', {}, t('docsMissing')));
+  render(el, ctx) {
+    if (!docsAvailable() || !INDEX) {
+      el.replaceChildren(h('p', {}, t('docsMissing')));
+      return;
+    }
+    const lang = getLang();
+    const nav = h('nav', { class: 'doc-nav' }, INDEX.chapters.map((c, i) =>
+      h('button', { type: 'button', class: c.id === state.chapter ? 'on' : '', 'data-chapter': c.id, onclick: () => { openChapter(c.id); docsPanel.render(el, ctx); } }, `${i + 1}. ${c.title[lang]}`)));
+    const body = h('article', { class: 'doc', 'data-chapter': state.chapter });
+    if (!el.querySelector('article.doc')) body.append(h('p', { class: 'note' }, '…'));
+    else body.replaceChildren(...el.querySelector('article.doc')!.childNodes);
+    el.replaceChildren(nav, body);
+    // Chapters are long: rendered after the numbers of the other panels, not before.
+    clearTimeout(timers.get(el));
+    timers.set(el, setTimeout(() => {
+      const md = chapterText(state.chapter) ?? '';
+      body.innerHTML = renderMarkdown(md, { value: (p) => getPath(ctx.report, p) ?? getPath(ctx.simReport, p) });
+      fillEmbeds(body, ctx);
+      if (state.anchor) {
+        body.querySelector(`[data-anchor="${CSS.escape(state.anchor)}"]`)?.scrollIntoView({ block: 'start' });
+        state.anchor = '';
+      }
+    }, 0));
   },
 };

@@ -1,9 +1,8 @@
 import { h, num, table, tex } from '../dom';
 import { getLang, t } from '../i18n';
 
-let fig: HTMLElement | null = null;
-let lastSim: unknown = null;
-let lastStamp = '';
+/** Per host element: the figure element kept across renders, and what it shows. */
+const figs = new WeakMap<HTMLElement, { fig: HTMLElement; sim: unknown; stamp: string }>();
 import { renderPllTrack } from '../figures/pll-track';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
@@ -14,8 +13,9 @@ export const pllPanel: Panel = {
   render(el, { report, simReport, simError }) {
     const g = report?.pll ?? {};
     const sim = simReport?.sim?.pll;
-    fig ??= h('div', { class: 'figure' });
-    const figEl = fig;
+    const f = figs.get(el) ?? { fig: h('div', { class: 'figure' }), sim: null, stamp: '' };
+    figs.set(el, f);
+    const figEl = f.fig;
     el.replaceChildren(...[
       h('div', { class: 'formulas' },
         tex('k_p = 2\\zeta\\omega_n,\\ k_i = \\omega_n^2;\\qquad k_p^{pu} = k_p\\frac{\\theta_b}{\\omega_b},\\ k_i^{pu} = k_i\\frac{\\theta_b}{\\omega_b}\\ \\text{(3.1-6)};\\qquad \\frac{\\theta_{pu}}{\\omega_{pu}} = \\frac{\\omega_b}{\\theta_b}\\cdot\\frac{1}{s}\\ \\text{(3.2-5)}', true)),
@@ -41,9 +41,9 @@ export const pllPanel: Panel = {
       ]) : null,
     ].filter((x): x is HTMLElement => x !== null));
     const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
-    if (sim && (sim !== lastSim || stamp !== lastStamp)) renderPllTrack(figEl, sim);
+    if (sim && (sim !== f.sim || stamp !== f.stamp)) renderPllTrack(figEl, sim);
     else if (!sim) figEl.replaceChildren(h('div', { class: 'plot-placeholder' }, simError ? t('simNotAvailable', { m: simError }) : t('simRunning')));
-    lastSim = sim;
-    lastStamp = stamp;
+    f.sim = sim;
+    f.stamp = stamp;
   },
 };
