@@ -118,25 +118,29 @@ export class App {
     }
   }
 
-  start(worker: ConstructorParameters<typeof PulabClient>[0]): void {
+  /** Attach to a client that may already be booting (main.ts starts the worker first). */
+  start(client: PulabClient): void {
     this.root.addEventListener('click', (ev) => this.onClick(ev));
-    this.client = new PulabClient(worker, {
+    this.client = client;
+    const onReady = (ms: number): void => {
+      document.documentElement.dataset.bootMs = String(Math.round(ms));
+      this.renderPanels();
+      this.schedule(0);
+    };
+    client.events = {
       onProgress: (stage, fraction) => {
         this.bootState = { stage: `boot_${stage}` as Key, fraction };
         this.renderStatus();
       },
-      onReady: (ms) => {
-        document.documentElement.dataset.bootMs = String(Math.round(ms));
-        this.renderPanels();
-        this.schedule(0);
-      },
+      onReady,
       onFatal: (message) => {
         this.bootState = { ...this.bootState, failed: message };
         this.renderStatus();
       },
-    });
-    this.client.init(new URL('pyodide/', document.baseURI).href, 60_000);
+    };
+    this.bootState = { stage: `boot_${client.progress.stage}` as Key, fraction: client.progress.fraction, failed: client.fatalMessage ?? undefined };
     this.renderAll();
+    if (client.ready) onReady(client.bootMs);
   }
 
   // ---- computing -------------------------------------------------------------------------

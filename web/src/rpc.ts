@@ -31,8 +31,13 @@ export class PulabClient {
   private fatal: string | null = null;
   private watchdog: ReturnType<typeof setTimeout> | undefined;
   ready = false;
+  bootMs = 0;
+  version = '';
+  /** The last boot progress, for listeners that attach late. */
+  progress: { stage: BootStage; fraction: number } = { stage: 'runtime', fraction: 0 };
+  fatalMessage: string | null = null;
 
-  constructor(private worker: WorkerLike, private events: RpcEvents = {}) {
+  constructor(private worker: WorkerLike, public events: RpcEvents = {}) {
     worker.onmessage = (ev) => this.receive(ev.data);
     worker.onerror = (ev) => this.fail(`the worker failed to start: ${ev.message || 'unknown error'}`);
   }
@@ -57,6 +62,7 @@ export class PulabClient {
   private fail(message: string): void {
     if (this.fatal) return;
     this.fatal = message;
+    this.fatalMessage = message;
     clearTimeout(this.watchdog);
     for (const p of this.pending.values()) p.reject(new Error(message));
     this.pending.clear();
@@ -67,10 +73,13 @@ export class PulabClient {
     if (!isWorkerToMain(m)) return;
     switch (m.type) {
       case 'progress':
+        this.progress = { stage: m.stage, fraction: m.fraction };
         this.events.onProgress?.(m.stage, m.fraction);
         break;
       case 'ready':
         this.ready = true;
+        this.bootMs = m.bootMs;
+        this.version = m.pyodideVersion;
         clearTimeout(this.watchdog);
         this.events.onReady?.(m.bootMs, m.pyodideVersion);
         break;

@@ -1,0 +1,291 @@
+#!/usr/bin/env node
+// End-to-end: build, serve dist/ (at / and at a sub-path, with the CSP of issue 4), drive
+// /usr/bin/chromium through playwright-core, check the page against the golden vectors.
+// No Chromium: a loud SKIPPED line and exit 0 — unless CI is set, then failure.
+import { existsSync, mkdirSync, readFileSync, readdirSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { join } from 'node:path';
+import { serve } from './serve.mjs';
+
+const ROOT = fileURLToPath(new URL('../../', import.meta.url));
+const CHROMIUM = process.env.CHROMIUM ?? '/usr/bin/chromium';
+const SHOTS = join(ROOT, 'tests/e2e/screenshots');
+const GOLDEN = join(ROOT, 'tests/golden');
+
+if (!existsSync(CHROMIUM)) {
+  const line = `SKIPPED: e2e (no chromium at ${CHROMIUM}; apt-get install -y chromium)`;
+  console.log(`\n${'!'.repeat(line.length)}\n${line}\n${'!'.repeat(line.length)}\n`);
+  process.exit(process.env.CI ? 1 : 0);
+}
+const { chromium } = await import('playwright-core');
+
+// ---- tiny harness -------------------------------------------------------------------------
+const results = [];
+async function check(name, fn) {
+  const t0 = Date.now();
+  try {
+    await fn();
+    results.push({ name, ok: true });
+    console.log(`  ✓ ${name} (${Date.now() - t0} ms)`);
+  } catch (e) {
+    results.push({ name, ok: false, e });
+    console.log(`  ✗ ${name}\n      ${String(e?.stack ?? e).split('\n').slice(0, 4).join('\n      ')}`);
+  }
+}
+function assert(cond, msg) {
+  if (!cond) throw new Error(msg);
+}
+const close = (a, e) => Math.abs(a - e) <= Math.max(1e-12 * Math.abs(e), 1e-15);
+
+/** Leaves of `expected` as [path, value] (arrays by index). */
+function leaves(o, p = '', out = []) {
+  if (Array.isArray(o)) o.forEach((v, i) => leaves(v, `${p}.${i}`, out));
+  else if (o && typeof o === 'object') for (const [k, v] of Object.entries(o)) leaves(v, p ? `${p}.${k}` : k, out);
+  else out.push([p, o]);
+  return out;
+}
+const golden = (f) => JSON.parse(readFileSync(join(GOLDEN, f), 'utf8'));
+const cpython = (input) =>
+  JSON.parse(execFileSync('python3', ['-c', 'import json,sys; from pulab import report; print(json.dumps(report(json.load(sys.stdin))))'], {
+    cwd: ROOT, env: { ...process.env, PYTHONPATH: join(ROOT, 'py') }, input: JSON.stringify(input),
+  }).toString());
+
+/** Compare every number the page shows (data-key) that the expected report has. */
+async function compareShown(page, expected, scope = 'body') {
+  const shown = await page.$$eval(`${scope} [data-key][data-value]`, (els) => els.map((e) => [e.dataset.key, e.dataset.value]));
+  const want = new Map(leaves(expected).filter(([, v]) => typeof v === 'number'));
+  let n = 0;
+  const bad = [];
+  for (const [k, v] of shown) {
+    if (!want.has(k)) continue;
+    n++;
+    const e = want.get(k);
+    const a = JSON.parse(v);
+    if (!(Number.isInteger(e) ? a === e : close(a, e))) bad.push(`${k}: page ${a}, expected ${e}`);
+  }
+  assert(bad.length === 0, `mismatches:\n${bad.slice(0, 10).join('\n')}`);
+  return n;
+}
+
+// ---- build & serve -------------------------------------------------------------------------
+console.log('e2e: building…');
+execFileSync('npx', ['vite', 'build', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
+mkdirSync(SHOTS, { recursive: true });
+const SUB = '/tools/pu-lab/';
+const rootSrv = await serve(join(ROOT, 'dist'), '/');
+const subSrv = await serve(join(ROOT, 'dist'), SUB);
+const origins = new Set([new URL(rootSrv.url).origin, new URL(subSrv.url).origin]);
+
+const browser = await chromium.launch({
+  executablePath: CHROMIUM,
+  args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
+});
+const offOrigin = [];
+const consoleErrors = [];
+async function newPage(opts = {}) {
+  const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale: opts.locale ?? 'en-US' });
+  const page = await ctx.newPage();
+  page.on('request', (r) => {
+    const u = r.url();
+    if (u.startsWith('data:') || u.startsWith('blob:')) return;
+    if (!origins.has(new URL(u).origin)) offOrigin.push(u);
+  });
+  page.on('console', (m) => {
+    if (m.type() === 'error') consoleErrors.push(`${m.text()} @ ${page.url().slice(0, 80)}`);
+  });
+  page.on('pageerror', (e) => consoleErrors.push(`pageerror: ${e.message}`));
+  return page;
+}
+const ready = (page) => page.waitForSelector('[data-key="vendor.Rpm.value"][data-value]', { timeout: 60_000 });
+const valueOf = (page, key) => page.$eval(`[data-key="${key}"][data-value]`, (e) => JSON.parse(e.dataset.value));
+/** Wait until the number at `key` equals `want` (rel > 0: to that relative tolerance). No eval: CSP. */
+const waitValue = (page, key, want, rel = 0, timeout = 10_000) =>
+  page.waitForFunction(([k, w, r]) => {
+    const e = document.querySelector(`[data-key="${k}"][data-value]`);
+    if (!e) return false;
+    const v = JSON.parse(e.dataset.value);
+    return r ? Math.abs(v - w) <= r * Math.abs(w) : v === w;
+  }, [key, want, rel], { timeout });
+
+const seed = golden('01_seed_motor.json');
+const timings = {};
+
+console.log(`e2e: ${subSrv.url}`);
+const page = await newPage();
+await check('default page (served from a sub-path) shows the seed motor\'s golden numbers', async () => {
+  const t0 = Date.now();
+  await page.goto(subSrv.url);
+  await page.waitForSelector('.status', { timeout: 5000 });
+  timings.readable_ms = Date.now() - t0;
+  await ready(page);
+  timings.first_numbers_ms = Date.now() - t0;
+  const n = await compareShown(page, seed.expected);
+  assert(n >= 60, `only ${n} golden numbers found on the page`);
+  assert((await valueOf(page, 'vendor.Rpm.value')) === 15022, 'Rpm');
+  assert((await valueOf(page, 'vendor.Rpm')) === 15022, 'alias vendor.Rpm');
+  console.log(`      ${n} numbers equal tests/golden/01_seed_motor.json`);
+  await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 30_000 });
+  await page.screenshot({ path: join(SHOTS, '01-default.png') });
+  await page.$eval('#panel-vendor', (e) => e.scrollIntoView());
+  await page.screenshot({ path: join(SHOTS, '02-vendor.png') });
+  await page.$eval('#panel-current', (e) => e.scrollIntoView());
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: join(SHOTS, '03-current.png') });
+  await page.$eval('#panel-pll', (e) => e.scrollIntoView());
+  await page.waitForSelector('.panel-pll .plot-host .main-svg', { timeout: 30_000 });
+  await page.screenshot({ path: join(SHOTS, '04-pll.png') });
+  await page.$eval('#panel-qcalc', (e) => e.scrollIntoView());
+  await page.screenshot({ path: join(SHOTS, '05-qcalc-conventions.png') });
+});
+
+await check('typing changes the numbers (equal to CPython pulab)', async () => {
+  const input = { ...seed.input, motor: { ...seed.input.motor, rs_ohm: 3.3, ld_h: 0.00125 } };
+  const want = cpython(input);
+  await page.fill('input[name="motor.rs_ohm"]', '3.3');
+  await page.fill('input[name="motor.ld_h"]', '1250'); // µH
+  await waitValue(page, 'vendor.LD.value', want.vendor.LD.value);
+  await waitValue(page, 'vendor.Rpm.value', want.vendor.Rpm.value);
+  const n = await compareShown(page, want);
+  assert(n >= 60, `only ${n}`);
+  // latency: input event → all numbers updated
+  const lat = [];
+  for (let i = 0; i < 20; i++) {
+    const rs = (1 + i / 10).toFixed(2);
+    const w = cpython({ ...input, motor: { ...input.motor, rs_ohm: Number(rs) } });
+    const t0 = Date.now();
+    await page.fill('input[name="motor.rs_ohm"]', rs);
+    await waitValue(page, 'current_pi.d.ki', w.current_pi.d.ki, 1e-9);
+    lat.push(Date.now() - t0);
+  }
+  lat.sort((a, b) => a - b);
+  timings.update_p50_ms = lat[10];
+  timings.update_p95_ms = lat[18];
+  timings.python_report_ms = Number(await page.evaluate(() => document.documentElement.dataset.reportMs));
+});
+
+await check('invalid input: message at the field, results marked stale, then recovers', async () => {
+  await page.fill('input[name="motor.rs_ohm"]', 'abc');
+  await page.waitForSelector('[data-err-for="motor.rs_ohm"]:not(:empty)');
+  assert(await page.$eval('main.panels', (e) => e.classList.contains('stale')), 'not stale after a local error');
+  await page.fill('input[name="motor.rs_ohm"]', '-1');
+  await page.waitForFunction(() => /> 0/.test(document.querySelector('[data-err-for="motor.rs_ohm"]')?.textContent ?? ''), null, { timeout: 5000 });
+  assert(await page.$eval('main.panels', (e) => e.classList.contains('stale')), 'not stale after a Python error');
+  await page.$eval('#panel-bases', (e) => e.scrollIntoView());
+  await page.screenshot({ path: join(SHOTS, '06-invalid.png') });
+  await page.fill('input[name="motor.rs_ohm"]', '1.5');
+  await page.fill('input[name="motor.ld_h"]', '600');
+  await waitValue(page, 'vendor.Rpm.value', 15022);
+  await page.waitForFunction(() => !document.querySelector('main.panels').classList.contains('stale'));
+  assert((await page.$eval('[data-err-for="motor.rs_ohm"]', (e) => e.textContent)) === '', 'error not cleared');
+});
+
+await check('a share link reproduces a state (golden 04, industrial 380 V)', async () => {
+  const g = golden('04_ind380_7k5.json');
+  const link = `${subSrv.url}#in=${encodeURIComponent(JSON.stringify(g.input))}`;
+  const p2 = await newPage();
+  await p2.goto(link);
+  await ready(p2);
+  await waitValue(p2, 'vendor.Rpm.value', g.expected.vendor.Rpm.value);
+  const n = await compareShown(p2, g.expected);
+  assert(n >= 60, `only ${n}`);
+  assert((await p2.inputValue('input[name="motor.rated_voltage_v"]')) === '380', 'form not filled from the link');
+  await p2.context().close();
+});
+
+await check('copy-link button → the link opens the same state', async () => {
+  await page.fill('input[name="motor.rated_current_a"]', '2.5');
+  await waitValue(page, 'vendor.raw.Current', 250);
+  await page.click('button.copy-link');
+  const url = await page.waitForFunction(() => document.documentElement.dataset.shareLink).then((h) => h.jsonValue());
+  assert(url.startsWith(subSrv.url) && url.includes('#in='), `bad link ${url}`);
+  const rpm = await valueOf(page, 'vendor.Rpm.value');
+  const p2 = await newPage();
+  await p2.goto(url);
+  await ready(p2);
+  await waitValue(p2, 'vendor.Rpm.value', rpm);
+  await p2.context().close();
+  // localStorage: a fresh visit without a hash restores the last input
+  const p3 = await page.context().newPage();
+  await p3.goto(subSrv.url);
+  await ready(p3);
+  await waitValue(p3, 'vendor.raw.Current', 250);
+  await p3.close();
+  await page.fill('input[name="motor.rated_current_a"]', '1.5');
+  await waitValue(page, 'vendor.Rpm.value', 15022);
+});
+
+await check('language switch (zh ⇄ en), and zh default from the browser language', async () => {
+  await page.click('button[data-lang="zh"]');
+  await page.waitForFunction(() => document.documentElement.lang === 'zh-CN');
+  const txt = await page.textContent('header.top');
+  assert(/标幺/.test(txt), 'header not Chinese');
+  assert(/额定电压/.test(await page.textContent('aside.inputs')), 'labels not Chinese');
+  assert((await valueOf(page, 'vendor.Rpm.value')) === 15022, 'numbers lost');
+  await page.$eval('#panel-vendor', (e) => e.scrollIntoView());
+  await page.screenshot({ path: join(SHOTS, '07-zh.png') });
+  await page.click('button[data-lang="en"]');
+  await page.waitForFunction(() => document.documentElement.lang === 'en');
+  const zhPage = await newPage({ locale: 'zh-CN' });
+  await zhPage.goto(subSrv.url);
+  await zhPage.waitForFunction(() => document.documentElement.lang === 'zh-CN', null, { timeout: 10_000 });
+  await zhPage.context().close();
+});
+
+await check('embed mode ?embed=vendor: one panel, no chrome', async () => {
+  const p2 = await newPage();
+  await p2.setViewportSize({ width: 900, height: 600 });
+  await p2.goto(`${subSrv.url}?embed=vendor`);
+  await ready(p2);
+  assert((await p2.$$('section.panel')).length === 1, 'more than one panel');
+  assert((await p2.$('header.top')) === null, 'header shown');
+  assert(!(await p2.isVisible('aside.inputs')), 'inputs shown');
+  await compareShown(p2, seed.expected);
+  await p2.screenshot({ path: join(SHOTS, '08-embed-vendor.png') });
+  await p2.goto(`${subSrv.url}?embed=current#in=${encodeURIComponent(JSON.stringify(golden('04_ind380_7k5.json').input))}`);
+  await waitValue(p2, 'current_pi.d.pm_kp', golden('04_ind380_7k5.json').expected.current_pi.d.pm_kp, 0, 60_000);
+  await p2.context().close();
+});
+
+await check('explainer: why? opens the chapter with the reader\'s numbers', async () => {
+  const has = await page.$('#panel-vendor a.why');
+  if (!has) return console.log('      (no docs/index.json: skipped)');
+  await page.click('#panel-vendor a.why');
+  await page.waitForSelector('article.doc [data-key="vendor.raw.Voltage"][data-value]', { timeout: 10_000 });
+  assert((await page.$eval('article.doc [data-key="vendor.raw.Voltage"]', (e) => JSON.parse(e.dataset.value))) === 17, 'placeholder');
+  const katexErrors = await page.$$eval('article.doc .katex-error', (e) => e.length);
+  assert(katexErrors === 0, `${katexErrors} KaTeX errors`);
+  await page.waitForTimeout(300);
+  await page.screenshot({ path: join(SHOTS, '09-docs.png') });
+  assert(!page.url().includes('#doc-') && page.url().includes('#in='), 'the state hash was replaced');
+});
+
+await check('Q-format calculator answers from Python', async () => {
+  await page.$eval('#panel-qcalc', (e) => e.scrollIntoView());
+  await page.selectOption('select[name="qcalc.mode"]', 'encode');
+  await page.fill('input[name="qcalc.format"]', 'Q0.15');
+  await page.fill('input[name="qcalc.value"]', '0.5');
+  await waitValue(page, 'qcalc.result.raw', 16384);
+  await page.fill('input[name="qcalc.value"]', '1.5');
+  await waitValue(page, 'qcalc.result.raw', 32767);
+});
+
+await check('build served at the site root works too', async () => {
+  const p2 = await newPage();
+  await p2.goto(rootSrv.url);
+  await ready(p2);
+  await compareShown(p2, seed.expected);
+  await p2.context().close();
+});
+
+await check('zero off-origin requests', async () => assert(offOrigin.length === 0, offOrigin.join('\n')));
+await check('zero console errors', async () => assert(consoleErrors.length === 0, consoleErrors.join('\n')));
+
+await browser.close();
+rootSrv.server.close();
+subSrv.server.close();
+console.log(`e2e timings: ${JSON.stringify(timings)}`);
+console.log(`e2e screenshots: ${readdirSync(SHOTS).length} in tests/e2e/screenshots/`);
+const failed = results.filter((r) => !r.ok);
+console.log(`e2e: ${results.length - failed.length} passed, ${failed.length} failed`);
+process.exit(failed.length ? 1 : 0);
