@@ -53,6 +53,10 @@ export class App {
   remoteError: ApiErr | null = null;
   units: Record<string, UnitId> = {};
   client: PulabClient | null = null;
+  /** A second worker for simulations (started after the first report), so a running
+   * simulation never delays the numbers. */
+  simClient: PulabClient | null = null;
+  simWorkerFactory: (() => PulabClient) | null = null;
   embed: PanelId | null;
   lastMs = 0;
   private timer: ReturnType<typeof setTimeout> | undefined;
@@ -145,7 +149,7 @@ export class App {
 
   // ---- computing -------------------------------------------------------------------------
 
-  schedule(delay = 25): void {
+  schedule(delay = 10): void {
     clearTimeout(this.timer);
     this.timer = setTimeout(() => void this.compute(), delay);
   }
@@ -163,9 +167,13 @@ export class App {
       if (result.ok) {
         this.report = result.report as unknown as Report;
         this.remoteError = null;
+        const t1 = performance.now();
         this.renderPanels();
         this.showFieldErrors();
-        document.documentElement.dataset.reportMs = (performance.now() - t0).toFixed(1);
+        const t2 = performance.now();
+        document.documentElement.dataset.reportMs = (t1 - t0).toFixed(1);
+        document.documentElement.dataset.renderMs = (t2 - t1).toFixed(1);
+        if (this.inputAt) document.documentElement.dataset.updateMs = (t2 - this.inputAt).toFixed(1);
         clearTimeout(this.simTimer);
         this.simTimer = setTimeout(() => void this.computeSim(eff), 150);
       } else {
@@ -181,10 +189,16 @@ export class App {
     }
   }
 
+  private simWorker(): PulabClient | null {
+    if (!this.simClient && this.simWorkerFactory) this.simClient = this.simWorkerFactory();
+    return this.simClient ?? this.client;
+  }
+
   private async computeSim(eff: Input): Promise<void> {
-    if (!this.client?.ready || !eff.sim) return;
+    const sc = this.simWorker();
+    if (!sc || !eff.sim) return;
     try {
-      const { result } = await this.client.call('report', simInput(eff), 'sim');
+      const { result } = await sc.call('report', simInput(eff), 'sim');
       if (result.ok) {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
@@ -316,7 +330,11 @@ export class App {
     }
   }
 
+  /** Time of the last input event (for the input → numbers latency in dataset.updateMs). */
+  private inputAt = 0;
+
   private onNumber(f: FieldSpec, text: string): void {
+    this.inputAt = performance.now();
     const r = parseNumber(text, f.kind === 'int');
     if (!r.ok) {
       this.localErrors.set(f.path, t(r.error === 'integer' ? 'errInteger' : 'errNumber'));
@@ -434,7 +452,8 @@ export class App {
   private async exportPy(kind: 'header' | 'csv_current' | 'csv_pll'): Promise<void> {
     if (!this.client?.ready) return;
     const eff = effectiveInput(this.input);
-    const { result } = await this.client.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind });
+    const c = kind === 'header' ? this.client : this.simWorker() ?? this.client;
+    const { result } = await c.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind });
     if (result.ok) {
       const name = kind === 'header' ? 'pulab_params.h' : `pulab_${kind.slice(4)}.csv`;
       this.download(name, String(result.text), kind === 'header' ? 'text/x-c' : 'text/csv');

@@ -50,6 +50,34 @@ function chapterText(id: string): string | null {
 }
 
 const timers = new WeakMap<HTMLElement, ReturnType<typeof setTimeout>>();
+const pending = new WeakMap<HTMLElement, () => void>();
+const visible = new WeakSet<HTMLElement>();
+const observed = new WeakSet<HTMLElement>();
+let io: IntersectionObserver | null = null;
+
+function flush(el: HTMLElement): void {
+  clearTimeout(timers.get(el));
+  timers.set(el, setTimeout(() => {
+    const job = pending.get(el);
+    pending.delete(el);
+    job?.();
+  }, 30));
+}
+
+function observe(el: HTMLElement): void {
+  if (observed.has(el) || typeof IntersectionObserver === 'undefined') return;
+  io ??= new IntersectionObserver((entries) => {
+    for (const e of entries) {
+      const target = e.target as HTMLElement;
+      if (e.isIntersecting) {
+        visible.add(target);
+        if (pending.has(target)) flush(target);
+      } else visible.delete(target);
+    }
+  }, { rootMargin: '400px' });
+  io.observe(el);
+  observed.add(el);
+}
 
 function fillEmbeds(body: HTMLElement, ctx: PanelContext): void {
   for (const el of body.querySelectorAll<HTMLElement>('[data-embed-panel]')) {
@@ -90,9 +118,8 @@ export const docsPanel: Panel = {
     if (!el.querySelector('article.doc')) body.append(h('p', { class: 'note' }, '…'));
     else body.replaceChildren(...el.querySelector('article.doc')!.childNodes);
     el.replaceChildren(nav, body);
-    // Chapters are long: rendered after the numbers of the other panels, not before.
-    clearTimeout(timers.get(el));
-    timers.set(el, setTimeout(() => {
+    // Chapters are long: rendered only while visible, and after the numbers of the other panels.
+    pending.set(el, () => {
       const md = chapterText(state.chapter) ?? '';
       body.innerHTML = renderMarkdown(md, { value: (p) => getPath(ctx.report, p) ?? getPath(ctx.simReport, p) });
       fillEmbeds(body, ctx);
@@ -100,6 +127,8 @@ export const docsPanel: Panel = {
         body.querySelector(`[data-anchor="${CSS.escape(state.anchor)}"]`)?.scrollIntoView({ block: 'start' });
         state.anchor = '';
       }
-    }, 0));
+    });
+    observe(el);
+    if (visible.has(el) || state.anchor || ctx.embed) flush(el);
   },
 };

@@ -1,0 +1,29 @@
+import { describe, it, expect } from 'vitest';
+import { fromSI, toSI, type UnitId } from '../../web/src/units';
+
+describe('toSI: display unit → the SI value of the input JSON (exact for the usual values)', () => {
+  const cases: [number, UnitId, number][] = [
+    [600, 'µH', 0.0006],
+    [0.6, 'mH', 0.0006],
+    [8.5, 'mH', 0.0085],
+    [100, 'µs', 0.0001],
+    [62.5, 'µs', 0.0000625],
+    [10, 'kHz', 0.0001],
+    [16, 'kHz', 0.0000625],
+    [5, 'ms', 0.005],
+    [0.0006, 'H', 0.0006],
+  ];
+  for (const [v, u, want] of cases) it(`${v} ${u} → ${want}`, () => expect(toSI(v, u)).toBe(want));
+});
+
+describe('fromSI: SI → display unit (12 significant digits)', () => {
+  const cases: [number, UnitId, number][] = [
+    [0.0006, 'µH', 600],
+    [0.0006, 'mH', 0.6],
+    [0.0001, 'µs', 100],
+    [0.0001, 'kHz', 10],
+    [0.0000625, 'kHz', 16],
+    [0.2, 'ms', 200],
+  ];
+  for (const [v, u, want] of cases) it(`${v} → ${want} ${u}`, () => expect(fromSI(v, u)).toBe(want));
+});
