@@ -521,7 +521,7 @@ export class App {
         h('div', { class: 'layout' },
           h('aside', { class: 'inputs' }),
           h('div', { class: 'content' },
-            h('nav', { class: 'tabs' }, panels.map((p) => h('a', { href: `#panel-${p.id}`, 'data-nav': p.id }, t(p.title as Key)))),
+            h('nav', { class: 'tabs' }, panels.map((p) => h('a', { href: `#panel-${p.id}`, 'data-nav': p.id }, t(`nav_${p.id}` as Key)))),
             h('main', { class: 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), h('div', { class: 'warnings' }),
               ...(pair('bases', 'pu') ? [h('div', { class: 'pair' }, sections[0], sections[1]), ...sections.slice(2)] : sections)))),
         h('div', { class: 'toast' }),

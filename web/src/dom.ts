@@ -1,7 +1,7 @@
 // Tiny DOM builder and the one way numbers from the report are rendered (data-key/data-value).
 import katex from 'katex';
 import { fmtHex, fmtNum, fmtPct } from './format';
-import { t, type Key } from './i18n';
+import { has, t, type Key } from './i18n';
 
 type Child = Node | string | number | null | undefined | false | Child[];
 type Attrs = Record<string, string | number | boolean | null | undefined | ((ev: Event) => void)>;
@@ -62,7 +62,7 @@ export function flagChips(flags: unknown): HTMLElement {
     list.length === 0
       ? h('span', { class: 'flag none' }, '—')
       : list.map((f) =>
-          h('span', { class: `flag flag-${f}`, title: t(`flagHelp_${f}` as Key) }, t(`flag_${f}` as Key)),
+          h('span', { class: `flag flag-${f}`, title: has(`flagHelp_${f}`) ? t(`flagHelp_${f}` as Key) : f }, has(`flag_${f}`) ? t(`flag_${f}` as Key) : f),
         ),
   );
 }

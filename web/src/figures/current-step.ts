@@ -3,7 +3,7 @@ import { t, type Key } from '../i18n';
 import type { SimCurrent } from '../report-types';
 import { COLORS, plot, type Trace } from './figure';
 
-export function renderCurrentStep(el: HTMLElement, sim: SimCurrent, axis: 'd' | 'q'): void {
+export function renderCurrentStep(el: HTMLElement, sim: SimCurrent, axis: 'd' | 'q', ts?: number): void {
   const key = axis === 'q' ? 'iq' : 'id';
   const traces: Trace[] = [];
   const ms = sim.t.map((x) => x * 1e3);
@@ -20,6 +20,10 @@ export function renderCurrentStep(el: HTMLElement, sim: SimCurrent, axis: 'd' | 
     // Difference of two series for display only (fixed − SI), in mA.
     traces.push({ x: ms, y: fx.map((v, i) => (v - si[i]) * 1e3), name: `${t('error')} fixed − SI`, color: COLORS.fixed, yaxis: 'y2', width: 1.2 });
   }
-  plot(el, traces, { xTitle: `${t('time')} [ms]`, yTitle: `i_${axis} [A]`, y2Title: 'Δ [mA]' });
+  // Initial view: the transient (≈ 5 settling times, at least 20 periods); zoom out to see all.
+  const settle = (sim.metrics.si as Record<string, unknown> | undefined)?.settling_time_s;
+  const tEnd = sim.t[sim.t.length - 1] ?? 0;
+  const span = typeof settle === 'number' && settle > 0 ? Math.min(tEnd, Math.max(5 * settle, 20 * (ts ?? 0))) : tEnd;
+  plot(el, traces, { xTitle: `${t('time')} [ms]`, yTitle: `i_${axis} [A]`, y2Title: 'Δ [mA]', xRange: span < tEnd ? [0, span * 1e3] : undefined });
 }
 

@@ -22,10 +22,11 @@ export interface Trace {
   dash?: 'solid' | 'dash' | 'dot';
   width?: number;
   yaxis?: 'y' | 'y2';
+  opacity?: number;
 }
 
 /** A figure with a main plot and an error subplot below (y2). */
-export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number] }): void {
+export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number]; xRange?: [number, number] }): void {
   if (!el.querySelector('.plot-host')) el.replaceChildren(h('div', { class: 'plot-host' }, h('div', { class: 'plot-loading' }, t('plotLoading'))));
   const host = el.querySelector('.plot-host') as HTMLElement;
   void loadPlotly().then((P) => {
@@ -34,7 +35,7 @@ export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string;
       host,
       traces.map((tr) => ({
         type: 'scatter', mode: 'lines', x: tr.x, y: tr.y, name: tr.name, yaxis: tr.yaxis ?? 'y',
-        line: { color: tr.color, dash: tr.dash ?? 'solid', width: tr.width ?? 1.8 }, showlegend: tr.yaxis !== 'y2',
+        line: { color: tr.color, dash: tr.dash ?? 'solid', width: tr.width ?? 1.8 }, opacity: tr.opacity ?? 1, showlegend: tr.yaxis !== 'y2',
       })),
       {
         height: 380,
@@ -43,7 +44,7 @@ export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string;
         paper_bgcolor: 'rgba(0,0,0,0)', plot_bgcolor: '#fff',
         legend: { orientation: 'h', y: 1.08, x: 0 },
         grid: { rows: 2, columns: 1, roworder: 'top to bottom' },
-        xaxis: { title: { text: layout.xTitle }, gridcolor: '#eaeef2', anchor: 'y2' },
+        xaxis: { title: { text: layout.xTitle }, gridcolor: '#eaeef2', anchor: 'y2', range: layout.xRange },
         yaxis: { title: { text: layout.yTitle }, domain: [0.36, 1], gridcolor: '#eaeef2', range: layout.yRange },
         yaxis2: { title: { text: layout.y2Title }, domain: [0, 0.26], gridcolor: '#eaeef2', zerolinecolor: '#aaa' },
       },

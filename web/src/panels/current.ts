@@ -37,7 +37,8 @@ function axisRow(a: 'd' | 'q', g: PiAxis | undefined): HTMLElement {
 export const currentPanel: Panel = {
   id: 'current',
   title: 'p_current',
-  render(el, { report, simReport, simError, input }) {
+  render(el, ctx) {
+    const { report, simReport, simError, input } = ctx;
     const pi = report?.current_pi;
     const method = pi?.method ?? String(input.current_loop?.method ?? 'bandwidth');
     const ex = pi?.step_example;
@@ -55,7 +56,6 @@ export const currentPanel: Panel = {
           h('tr', {}, h('th', {}), h('th', { colspan: 2 }, t('siGains')), h('th', { colspan: 2, class: 'sep' }, t('puGains')), h('th', { colspan: 2, class: 'sep' }, t('intGains')), h('th', { colspan: 3, class: 'sep' }, t('backGains'))),
           h('tr', {}, h('th', {}, t('axis')), h('th', {}, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', { class: 'sep' }, 'kp_pu'), h('th', {}, 'ki_pu [1/s]'), h('th', { class: 'sep' }, 'pm_kp (Q12)'), h('th', {}, 'pm_ki (Q16·Ts)'), h('th', { class: 'sep' }, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', {}, `${t('impliedBw')} [Hz]`))),
         h('tbody', {}, axisRow('d', pi?.d), axisRow('q', pi?.q))),
-      ex ? h('div', { class: 'step-example' }, h('h3', {}, t('stepExample', { e: ex.error })), traceTable('current_pi.step_example.trace', ex.trace)) : null,
       h('h3', {}, t('plotCurrent')),
       figEl,
       sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu', 'fixed'], [
@@ -67,9 +67,10 @@ export const currentPanel: Panel = {
       sim ? h('p', { class: 'note' }, `${t('fixedVsSi')}: `,
         num('sim.current.metrics.fixed_vs_si_max_abs_a', sim.metrics.fixed_vs_si_max_abs_a, { unit: 'A' }), ' = ',
         num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' })) : null,
+      ex ? h('div', { class: 'step-example' }, h('h3', {}, t('stepExample', { e: ex.error })), traceTable('current_pi.step_example.trace', ex.trace)) : null,
     ].filter((x): x is HTMLElement => x !== null));
     const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
-    if (sim && (sim !== f.sim || stamp !== f.stamp)) renderCurrentStep(figEl, sim, axis);
+    if (sim && (sim !== f.sim || stamp !== f.stamp)) renderCurrentStep(figEl, sim, axis, ctx.report?.input.drive?.ts_s as number | undefined);
     else if (!sim) figEl.replaceChildren(h('div', { class: 'plot-placeholder' }, simError ? t('simNotAvailable', { m: simError }) : t('simRunning')));
     f.sim = sim;
     f.stamp = stamp;
