@@ -5,7 +5,7 @@ import { readdirSync, readFileSync, existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { join } from 'node:path';
 import { bootPulab, type NodePulab } from './pulab-node';
-import { compareGolden, parseJsonExact, type JVal } from './json-exact';
+import { compareGolden, dump, parseJsonExact, type JVal } from './json-exact';
 
 const GOLDEN = fileURLToPath(new URL('../golden/', import.meta.url));
 const files = existsSync(GOLDEN)
@@ -14,10 +14,6 @@ const files = existsSync(GOLDEN)
 
 type Obj = { [k: string]: JVal };
 const asObj = (v: JVal): Obj => v as Obj;
-/** JSON text of a parsed value (bigints back to integer literals). */
-export const dump = (v: JVal): string =>
-  JSON.stringify(v, (_, x) => (typeof x === 'bigint' ? `@@int:${x}@@` : x)).replace(/"@@int:(-?\d+)@@"/g, '$1');
-
 let pulab: NodePulab;
 beforeAll(async () => {
   pulab = await bootPulab();

@@ -110,3 +110,7 @@ export function compareGolden(
   } else if (expected !== actual) bad();
   return out;
 }
+
+/** JSON text of a parsed value (bigints back to integer literals). */
+export const dump = (v: JVal): string =>
+  JSON.stringify(v, (_, x) => (typeof x === 'bigint' ? `@@int:${x}@@` : x)).replace(/"@@int:(-?\d+)@@"/g, '$1');
