@@ -84,7 +84,7 @@ const browser = await chromium.launch({
 const offOrigin = [];
 const consoleErrors = [];
 async function newPage(opts = {}) {
-  const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale: opts.locale ?? 'en-US' });
+  const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale: opts.locale ?? 'en-US', acceptDownloads: true });
   const page = await ctx.newPage();
   page.on('request', (r) => {
     const u = r.url();
@@ -273,6 +273,42 @@ await check('Q-format calculator answers from Python', async () => {
   await waitValue(page, 'qcalc.result.raw', 16384);
   await page.fill('input[name="qcalc.value"]', '1.5');
   await waitValue(page, 'qcalc.result.raw', 32767);
+});
+
+await check('unit choices (mH/µH, Ts ↔ f_s), presets', async () => {
+  await page.$eval('aside.inputs', (e) => e.scrollTo(0, 0));
+  await page.selectOption('select[data-unit-for="motor.ld_h"]', 'mH');
+  assert((await page.inputValue('input[name="motor.ld_h"]')) === '0.6', 'Ld not shown in mH');
+  await page.fill('input[name="motor.ld_h"]', '1.2');
+  await waitValue(page, 'vendor.raw.LD', 120);
+  await page.fill('input[name="motor.ld_h"]', '0.6');
+  await waitValue(page, 'vendor.raw.LD', 60);
+  await page.selectOption('select[data-unit-for="drive.ts_s"]', 'kHz');
+  assert((await page.inputValue('input[name="drive.ts_s"]')) === '10', 'f_s not 10 kHz');
+  await page.fill('input[name="drive.ts_s"]', '16');
+  await waitValue(page, 'pu.Ts', 0.0000625 * (await valueOf(page, 'base.w_b')), 1e-12);
+  await page.fill('input[name="drive.ts_s"]', '10');
+  await page.selectOption('select[data-unit-for="drive.ts_s"]', 'µs');
+  await page.selectOption('select[data-unit-for="motor.ld_h"]', 'µH');
+  await page.selectOption('select[name="preset"]', 'ind380');
+  await waitValue(page, 'vendor.raw.Voltage', 380);
+  await page.selectOption('select[name="preset"]', 'seed');
+  await waitValue(page, 'vendor.Rpm.value', 15022);
+});
+
+await check('exports: report JSON, C header, CSV of the current step', async () => {
+  const grab = async (what) => {
+    await page.$eval('details.export', (d) => { d.open = true; });
+    const [dl] = await Promise.all([page.waitForEvent('download', { timeout: 15_000 }), page.click(`button[data-export="${what}"]`)]);
+    const path = await dl.path();
+    return { name: dl.suggestedFilename(), text: readFileSync(path, 'utf8') };
+  };
+  const j = await grab('json');
+  assert(j.name.endsWith('.json') && JSON.parse(j.text).vendor.Rpm.value === 15022, 'report JSON');
+  const hdr = await grab('header');
+  assert(/#define PULAB_RPM\s+15022/.test(hdr.text), `C header: ${hdr.text.slice(0, 200)}`);
+  const csv = await grab('csv_current');
+  assert(/^t_s,/.test(csv.text) && csv.text.split('\n').length > 10, 'CSV');
 });
 
 await check('build served at the site root works too', async () => {
