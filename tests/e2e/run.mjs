@@ -125,11 +125,11 @@ await check('default page (served from a sub-path) shows the seed motor\'s golde
   assert((await valueOf(page, 'vendor.Rpm.value')) === 15022, 'Rpm');
   assert((await valueOf(page, 'vendor.Rpm')) === 15022, 'alias vendor.Rpm');
   console.log(`      ${n} numbers equal tests/golden/01_seed_motor.json`);
-  await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 30_000 });
   await page.screenshot({ path: join(SHOTS, '01-default.png') });
   await page.$eval('#panel-vendor', (e) => e.scrollIntoView());
   await page.screenshot({ path: join(SHOTS, '02-vendor.png') });
   await page.$eval('#panel-current', (e) => e.scrollIntoView());
+  await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 30_000 }); // drawn when visible
   await page.waitForTimeout(300);
   await page.screenshot({ path: join(SHOTS, '03-current.png') });
   await page.$eval('#panel-pll', (e) => e.scrollIntoView());

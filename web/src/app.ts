@@ -175,7 +175,8 @@ export class App {
         document.documentElement.dataset.renderMs = (t2 - t1).toFixed(1);
         if (this.inputAt) document.documentElement.dataset.updateMs = (t2 - this.inputAt).toFixed(1);
         clearTimeout(this.simTimer);
-        this.simTimer = setTimeout(() => void this.computeSim(eff), 150);
+        // Simulations wait for a pause in typing (they are heavier and only feed the plots).
+        this.simTimer = setTimeout(() => void this.computeSim(eff), 400);
       } else {
         this.remoteError = result;
         this.showFieldErrors();

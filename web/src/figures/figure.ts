@@ -25,10 +25,41 @@ export interface Trace {
   opacity?: number;
 }
 
+// Plots are drawn only while (nearly) visible: Plotly costs tens of ms of main thread, which
+// must not delay the numbers while the user types.
+const pending = new WeakMap<HTMLElement, () => void>();
+const visible = new WeakSet<HTMLElement>();
+let io: IntersectionObserver | null = null;
+
+function whenVisible(el: HTMLElement, job: () => void): void {
+  if (typeof IntersectionObserver === 'undefined') return job();
+  io ??= new IntersectionObserver((entries) => {
+    for (const e of entries) {
+      const target = e.target as HTMLElement;
+      if (e.isIntersecting) {
+        visible.add(target);
+        const j = pending.get(target);
+        pending.delete(target);
+        j?.();
+      } else visible.delete(target);
+    }
+  }, { rootMargin: '300px' });
+  pending.set(el, job);
+  io.observe(el);
+  if (visible.has(el)) {
+    pending.delete(el);
+    job();
+  }
+}
+
 /** A figure with a main plot and an error subplot below (y2). */
 export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number]; xRange?: [number, number] }): void {
   if (!el.querySelector('.plot-host')) el.replaceChildren(h('div', { class: 'plot-host' }, h('div', { class: 'plot-loading' }, t('plotLoading'))));
   const host = el.querySelector('.plot-host') as HTMLElement;
+  whenVisible(host, () => draw(host, traces, layout));
+}
+
+function draw(host: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number]; xRange?: [number, number] }): void {
   void loadPlotly().then((P) => {
     host.querySelector('.plot-loading')?.remove();
     void P.react(
