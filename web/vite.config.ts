@@ -1,7 +1,7 @@
 // Vite config for the static site. Root is web/, output goes to /dist at the repo root.
 // base './' so the build works from any sub-path. Pyodide's runtime files are served by the
 // site itself (dev: middleware; build: emitted assets) — nothing is fetched from another origin.
-import { defineConfig, type Plugin } from 'vite';
+import { createLogger, defineConfig, type Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { dirname, resolve } from 'node:path';
@@ -35,7 +35,19 @@ function pyodideAssets(): Plugin {
   };
 }
 
+// pyodide.mjs imports node:* modules on its Node code path only; in the browser bundle they are
+// externalized on purpose. Silence exactly that notice, keep every other warning.
+const logger = createLogger();
+const quiet = (msg: string): boolean => /node:\w+.*externalized for browser compatibility.*pyodide/s.test(msg);
+const warn = logger.warn.bind(logger);
+const warnOnce = logger.warnOnce.bind(logger);
+const info = logger.info.bind(logger);
+logger.warn = (msg, opts) => (quiet(msg) ? undefined : warn(msg, opts));
+logger.warnOnce = (msg, opts) => (quiet(msg) ? undefined : warnOnce(msg, opts));
+logger.info = (msg, opts) => (quiet(msg) ? undefined : info(msg, opts));
+
 export default defineConfig({
+  customLogger: logger,
   root: here,
   base: './',
   publicDir: false,
