@@ -207,7 +207,7 @@ export class App {
         this.simError = `${result.field}: ${result.message}`;
         if (result.field.startsWith('sim')) this.showFieldErrors(result);
       }
-      this.renderPanels(['current', 'pll']);
+      this.renderPanels(['current', 'pll', 'docs']);
     } catch (e) {
       if (!(e instanceof Superseded)) throw e;
     }
