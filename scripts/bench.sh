@@ -1,7 +1,11 @@
 #!/usr/bin/env bash
-# npm run bench: report() (and the simulation, when present) in CPython and in Pyodide/Node.
-# Prints numbers; not a test. The page's own latencies are printed by `node tests/e2e/run.mjs`.
+# npm run bench: speed numbers (not tests). Core in CPython, then the same code in Pyodide/Node.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cpy=$(PYTHONPATH=py python3 scripts/bench-report.py)
-node scripts/bench-pyodide.mjs "$cpy"
+bash scripts/venv.sh
+out=$(mktemp)
+PYTHONPATH=py .venv/bin/python -m pulab.benchmark --json > "$out"
+PYTHONPATH=py .venv/bin/python -c "import json,sys; from pulab.benchmark import format_run; print(format_run(json.load(open(sys.argv[1]))))" "$out"
+BENCH_CPYTHON_JSON="$out" npx vitest run --config tests/bench/vitest.config.ts --reporter dot
+rm -f "$out"
+if [ -f tests/e2e/bench-page.mjs ]; then node tests/e2e/bench-page.mjs; fi
