@@ -1,7 +1,7 @@
 """JSON-in, JSON-out entry points for the web worker (one call per request).
 
 Errors never escape as exceptions: bad input comes back as
-``{"ok": false, "field": ..., "message": ...}``.
+``{"ok": false, "field": ..., "message": ..., "message_zh": ...}``.
 
 Examples
 --------
@@ -19,13 +19,15 @@ import json
 from .errors import InputError
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
+from .messages import to_zh
 from .report import report
 
 __all__ = ["run_json", "qcalc", "qcalc_json", "export_json"]
 
 
 def _fail(e: InputError) -> str:
-    return json.dumps({"ok": False, "field": e.field, "message": e.message})
+    return json.dumps({"ok": False, "field": e.field, "message": e.message,
+                       "message_zh": to_zh(e.message)})
 
 
 def run_json(text: str) -> str:
@@ -60,8 +62,9 @@ def qcalc(req: dict) -> dict:
         raise InputError("qcalc", "must be an object")
     try:
         fmt = parse_format(str(req.get("format", "")), req.get("word_bits"))
-    except (ValueError, TypeError) as e:
-        raise InputError("qcalc.format", str(e)) from None
+    except (ValueError, TypeError):
+        raise InputError("qcalc.format", f"not a Q format: {req.get('format')!r} "
+                         "(use Qm.n, UQm.n, or Qn with word_bits)") from None
     rounding = req.get("rounding", "nearest")
     overflow = req.get("overflow", "saturate")
     if rounding not in ROUNDINGS:
@@ -118,7 +121,7 @@ def export_json(text: str) -> str:
             if "sim" not in r or kind[4:] not in r["sim"]:
                 raise InputError("sim", f"the input asks for no {kind[4:]} simulation")
             return json.dumps({"ok": True, "text": sim_csv(r, kind[4:])})
-        raise InputError("kind", "must be header, csv_current or csv_pll")
+        raise InputError("kind", "must be one of header, csv_current, csv_pll")
     except InputError as e:
         return _fail(e)
     except ValueError as e:

@@ -17,6 +17,7 @@ from .bases import bases, flux_linkage, per_unit
 from .constants import magic_constants
 from .gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .inputs import normalize
+from .messages import to_zh
 from .vendor import (INDUCTANCE_SCALE, RAW_FIELDS, RAW_SCALE, current_pi_step, raw_from_si,
                      vendor_results)
 
@@ -133,6 +134,7 @@ def report(inp: dict) -> dict:
         "constants": magic_constants(),
         "warnings": _warnings(n, raw, vendor, pi, b),
     }
+    out["warnings_zh"] = [to_zh(w) for w in out["warnings"]]
     if sim_in is not None:
         out["sim"] = _sim.simulate(out, sim_in)
     return out

@@ -173,7 +173,7 @@ def _base_l_steps(b: _Block, raw: dict) -> CInt:
                  "m_BaseL", UINT32,
                  _divide(m * CInt(5000, INT32).cast(UINT32), _u16(raw, "FullFreq01"),
                          "FullFreq01", "FullFreq01 = 0"),
-                 "≈ 2·10^4·L_b[H] (3678 ≈ 2·10^4/(√3·π), seed 1.4-4)")
+                 "≈ 2·10^4·L_b[H]; 3678 ≈ 2·10^4/(√3·π)")
 
 
 def inductance(raw: dict, axis: str, unit: str = "10uH") -> dict:
@@ -188,17 +188,17 @@ def inductance(raw: dict, axis: str, unit: str = "10uH") -> dict:
     base = _base_l_steps(b, raw)
     m = b.let(f"m_Ulong = ((Ulong)gMotorExtInfo.{name} <<14) + (m_BaseL >>1);", "m_Ulong",
               UINT32, (_u16(raw, name).cast(UINT32) << 14) + (base >> 1),
-              f"{name}·2^14 + m_BaseL/2 (rounds the next division)")
+              f"{name}·2^14 + m_BaseL/2")
     if base.value == 0:
         # Blame the divisor that made m_BaseL truncate to zero.
         culprit = "Current" if b.trace[0]["value"] == 0 else "FullFreq01"
         raise InputError(f"raw.{culprit}", "the firmware divides by zero: m_BaseL = "
-                         "Voltage·3678/Current·5000/FullFreq01 truncates to 0")
+                         "Voltage·3678/Current·5000/FullFreq01 = 0")
     m = b.let("m_Ulong = m_Ulong / m_BaseL;", "m_Ulong", UINT32, m // base,
               "10·L_pu·2^13")
     b.let(f"gMotorExtPer.{name} = m_Ulong / 10; // Q13", f"gMotorExtPer.{name}", UINT16,
           m // CInt(10, INT32).cast(UINT32),
-          "10·L_pu·2^13: LD taken in µH, written for 0.01 mH" if unit == "uH"
+          "10·L_pu·2^13 (µH ≠ 0.01 mH)" if unit == "uH"
           else "L_pu·2^13 (Q13)", ("unit_uH",) if unit == "uH" else ())
     u_b, i_b, f_b = _bases(raw)
     l_b = u_b / (TWO_PI * f_b * i_b) if f_b * i_b else math.inf
@@ -228,13 +228,13 @@ def flux_rotor(raw: dict, freq_per_value: int) -> dict:
     m = b.let("m_Ulong = ((Long)gMotorExtInfo.BemfVolt <<12) / (gMotorInfo.Voltage *10); //Q12",
               "m_Ulong", UINT32,
               _divide(_u16(raw, "BemfVolt").cast(INT32) << 12, v10, "Voltage",
-                      "Voltage*10 is 0 in 16-bit arithmetic"),
-              "2π·f_n·ψ_r/U_b·2^12 (seed 1.4-23)")
+                      "Voltage*10 ≡ 0 (mod 2^16)"),
+              "2π·f_n·ψ_r/U_b·2^12")
     b.let("gMotorExtPer.FluxRotor = (m_Ulong << 15) / gMotorInfo.FreqPer; //Q12",
           "gMotorExtPer.FluxRotor", UINT16,
           _divide(m << 15, CInt(freq_per_value, UINT16), "FreqRated01",
-                  "FreqPer stored as 0 (FreqRated01·2^15 < FullFreq01, or a multiple of 65536)"),
-          "ψ_r/ψ_b·2^12 (Q12, seed 1.4-25)")
+                  "FreqPer = 0 (FreqRated01·2^15 < FullFreq01, or ≡ 0 mod 2^16)"),
+          "ψ_r/ψ_b·2^12 (Q12)")
     ideal = (raw["BemfVolt"] / 10.0) / raw["Voltage"] * raw["FullFreq01"] \
         / raw["FreqRated01"] * 4096.0
     u_b, _, f_b = _bases(raw)
@@ -340,12 +340,12 @@ def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
                 ("pm_integral_d = pm_integral_d + (pm_error_id * pm_ki_d >> 4); //Q24,28-4",
                  s.value, s.flags, "integral + Δi·ki (Q12·Q16 = Q28, >>4 → Q24)"),
                 ("pm_integral_d = __IQsat(pm_integral_d, maxu, minu);", integ,
-                 {"saturate"} if integ != s.value else set(), "clamped to ±maxu (anti-windup)"),
+                 {"saturate"} if integ != s.value else set(), "∈ [−maxu, maxu]"),
                 ("data1 = (pm_integral_d + pm_error_id * pm_kp_d)>>12;", d.value, d.flags,
-                 "(Q24 + Q12·Q12) >> 12 → Q12 voltage"),
+                 "(Q24 + Q12·Q12) >> 12 → Q12"),
                 ("data1 = __IQsat(data1, pm_maxout_vol, -pm_maxout_vol);", out,
-                 {"saturate"} if out != d.value else set(), "clamped to ±pm_maxout_vol"),
-                ("pm_ud = data1;", out, set(), "u_d per unit of rated line voltage, Q12")):
+                 {"saturate"} if out != d.value else set(), "∈ [−pm_maxout_vol, pm_maxout_vol]"),
+                ("pm_ud = data1;", out, set(), "u_d/U_LL·2^12 (Q12)")):
             trace.append({"code": code, "var": code.split(" =")[0], "type": "long",
                           "value": value, "meaning": meaning, "flags": sorted(flags)})
     flags = set(s.flags | d.flags)

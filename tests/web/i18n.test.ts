@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { DICTS, defaultLang, setLang, t } from '../../web/src/i18n';
+import { DICTS, defaultLang, errText, setLang, t } from '../../web/src/i18n';
 import { ALL_FIELDS, SECTIONS } from '../../web/src/fields';
 
 describe('defaultLang: stored choice, then navigator.languages', () => {
@@ -36,4 +36,21 @@ describe('every label exists in both languages', () => {
     setLang('en');
     expect(t('stepExample', { e: 410 })).toContain('error = 410');
   });
+});
+
+describe('errText: Python messages in the reader language', () => {
+  const e = { message: 'must be > 0, got -1', message_zh: '必须大于 0，当前为 -1' };
+  const cases: ['en' | 'zh', { message?: string; message_zh?: string }, string][] = [
+    ['en', e, 'must be > 0, got -1'],
+    ['zh', e, '必须大于 0，当前为 -1'],
+    ['zh', { message: 'only English' }, 'only English'],
+    ['en', {}, ''],
+  ];
+  for (const [lang, msg, want] of cases) {
+    it(`${lang}: ${JSON.stringify(msg)} → ${JSON.stringify(want)}`, () => {
+      setLang(lang);
+      expect(errText(msg)).toBe(want);
+      setLang('en');
+    });
+  }
 });

@@ -4,7 +4,7 @@ import './style.css';
 import { h } from './dom';
 import { fmtInput, fmtNum, parseNumber } from './format';
 import { ALL_FIELDS, SECTIONS, effectiveInput, type FieldSpec } from './fields';
-import { defaultLang, getLang, setLang, t, type Key, type Lang } from './i18n';
+import { defaultLang, errText, getLang, setLang, t, type Key, type Lang } from './i18n';
 import { PulabClient, Superseded } from './rpc';
 import type { ApiErr } from './protocol';
 import type { Report } from './report-types';
@@ -204,7 +204,7 @@ export class App {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
       } else {
-        this.simError = `${result.field}: ${result.message}`;
+        this.simError = `${result.field}: ${errText(result)}`;
         if (result.field.startsWith('sim')) this.showFieldErrors(result);
       }
       this.renderPanels(['current', 'pll', 'docs']);
@@ -225,7 +225,7 @@ export class App {
     const banner = this.root.querySelector('.stale-banner');
     if (banner) {
       const f = this.localErrors.size ? [...this.localErrors.keys()][0] : this.remoteError?.field ?? '';
-      const msg = this.localErrors.size ? this.localErrors.get(f) : this.remoteError?.message;
+      const msg = this.localErrors.size ? this.localErrors.get(f) : this.remoteError && errText(this.remoteError);
       banner.textContent = `${t('staleField')}${f ? `${f}: ` : ''}${msg ?? ''}`;
     }
   }
@@ -236,8 +236,8 @@ export class App {
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
       let msg = this.localErrors.get(f) ?? '';
-      if (!msg && this.remoteError?.field === f) msg = this.remoteError.message;
-      if (!msg && simErr?.field === f) msg = simErr.message;
+      if (!msg && this.remoteError?.field === f) msg = errText(this.remoteError);
+      if (!msg && simErr?.field === f) msg = errText(simErr);
       el.textContent = msg;
       el.closest('.field')?.classList.toggle('invalid', msg !== '');
     }
@@ -247,7 +247,7 @@ export class App {
     const global = this.root.querySelector('.global-error') as HTMLElement | null;
     if (global) {
       const hasField = re && this.root.querySelector(`.inputs [data-err-for="${CSS.escape(re.field)}"]`);
-      global.textContent = re && !hasField ? `${re.field}: ${re.message}` : '';
+      global.textContent = re && !hasField ? `${re.field}: ${errText(re)}` : '';
     }
     if (stale) this.markStale();
   }
@@ -415,7 +415,7 @@ export class App {
     }
     const w = this.root.querySelector('.warnings');
     if (w && (!only || only.length === 0)) {
-      const list = this.report?.warnings ?? [];
+      const list = (getLang() === 'zh' ? this.report?.warnings_zh : this.report?.warnings) ?? [];
       w.replaceChildren(...(list.length ? [h('strong', {}, `${t('warnings')}: `), h('ul', {}, list.map((x) => h('li', {}, x)))] : []));
     }
     if (!only) this.updatePlaceholders();
@@ -458,7 +458,7 @@ export class App {
     if (result.ok) {
       const name = kind === 'header' ? 'pulab_params.h' : `pulab_${kind.slice(4)}.csv`;
       this.download(name, String(result.text), kind === 'header' ? 'text/x-c' : 'text/csv');
-    } else this.toast(`${result.field}: ${result.message}`);
+    } else this.toast(`${result.field}: ${errText(result)}`);
   }
 
   private toast(msg: string, extra?: HTMLElement): void {

@@ -448,6 +448,11 @@ export function defaultLang(navLanguages: readonly string[] | undefined, stored:
 export function setLang(l: Lang): void {
   lang = l;
 }
+/** A pulab message in the reader's language (Python sends English and Chinese). */
+export function errText(e: { message?: string; message_zh?: string }): string {
+  return (lang === 'zh' && e.message_zh ? e.message_zh : e.message) ?? '';
+}
+
 export function getLang(): Lang {
   return lang;
 }

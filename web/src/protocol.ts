@@ -29,7 +29,7 @@ export type BootStage = 'runtime' | 'files' | 'import' | 'ready';
 
 /** What pulab.api returns (parsed). */
 export type ApiOk = { ok: true; [k: string]: Json };
-export type ApiErr = { ok: false; field: string; message: string };
+export type ApiErr = { ok: false; field: string; message: string; message_zh?: string };
 export type ApiResult = ApiOk | ApiErr;
 
 /** Worker → main thread. */

@@ -62,6 +62,7 @@ export interface Report {
   pll: Record<string, number>;
   constants: Record<string, Constant>;
   warnings: string[];
+  warnings_zh: string[];
   sim?: { current?: SimCurrent; pll?: SimPll };
 }
 export const VENDOR_NAMES = ['Rpm', 'LD', 'LQ', 'FreqPer', 'FluxRotor', 'pm_maxout_vol', 'maxu'] as const;

@@ -1,7 +1,7 @@
 // Standalone Q-format calculator: every result comes from pulab.api.qcalc_json in the worker.
 import { h, num, table, flagChips } from '../dom';
 import { parseNumber } from '../format';
-import { t } from '../i18n';
+import { errText, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
 
 export interface QcalcState {
@@ -17,7 +17,7 @@ export interface QcalcState {
 export const qstate: QcalcState = { mode: 'encode', format: 'Q3.12', word_bits: '', value: '0.229242018648822', raw: '939', rounding: 'nearest', overflow: 'saturate' };
 
 type QResult = {
-  ok: boolean; field?: string; message?: string;
+  ok: boolean; field?: string; message?: string; message_zh?: string;
   format?: { name: string; word_bits: number; frac_bits: number; signed: boolean; min: number; max: number; resolution: number };
   result?: { raw: number; hex: string; value: number; error: number; flags: string[] };
 };
@@ -78,10 +78,10 @@ export const qcalcPanel: Panel = {
     const sel = (k: keyof QcalcState, opts: [string, string][]) =>
       h('select', { name: `qcalc.${k}`, onchange: on(k) }, opts.map(([v, l]) => h('option', { value: v, selected: qstate[k] === v }, l)));
     const inp = (k: keyof QcalcState, ph = '') => h('input', { name: `qcalc.${k}`, value: qstate[k], placeholder: ph, inputmode: 'decimal', spellcheck: 'false', oninput: on(k) });
-    const errFor = (name: string) => (last && !last.ok && last.field === name ? last.message : undefined);
+    const errFor = (name: string) => (last && !last.ok && last.field === name ? errText(last) : undefined);
     const f = last?.ok ? last.format : undefined;
     const res = last?.ok ? last.result : undefined;
-    const otherErr = last && !last.ok && !['qcalc.value', 'qcalc.raw', 'qcalc.format', 'qcalc.word_bits'].includes(last.field ?? '') ? last.message : null;
+    const otherErr = last && !last.ok && !['qcalc.value', 'qcalc.raw', 'qcalc.format', 'qcalc.word_bits'].includes(last.field ?? '') ? errText(last) : null;
     const focused = document.activeElement instanceof HTMLInputElement && el.contains(document.activeElement) ? document.activeElement.name : null;
     el.replaceChildren(
       h('div', { class: 'qcalc' },

@@ -1,0 +1,100 @@
+"""Chinese text for every message pulab produces (errors and warnings).
+
+Messages are written once, in English, where they arise; this catalog turns
+each into Chinese by pattern, the way a gettext catalog would, so the page
+can show "every label, unit and message in both" without two code paths.
+A message with no pattern here comes back unchanged — the tests make sure
+every message the core can produce has one.
+
+Examples
+--------
+>>> to_zh("must be > 0, got -1")
+'必须大于 0，当前为 -1'
+>>> to_zh("raw.LD = 5: rounding motor.ld_h = 4.5e-05 to the firmware unit changes it by +11.11 %")
+'raw.LD = 5：把 motor.ld_h = 4.5e-05 取整到固件单位，改变了 +11.11 %'
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["to_zh", "CATALOG"]
+
+_SRC = {"given": "直接给定"}
+
+#: (English pattern, Chinese replacement); the first full match wins.
+CATALOG = [
+    # errors: input validation
+    (r"is required", "必填"),
+    (r"must be a JSON object", "必须是 JSON 对象"),
+    (r"must be an object", "必须是对象"),
+    (r"must be an object, got (.*)", r"必须是对象，当前为 \1"),
+    (r"not valid JSON: (.*)", r"不是合法的 JSON：\1"),
+    (r"unknown field \(expected one of: (.*)\)", r"未知字段（应为以下之一：\1）"),
+    (r"unknown section \(expected one of: (.*)\)", r"未知分节（应为以下之一：\1）"),
+    (r"must be a number, got (.*)", r"必须是数字，当前为 \1"),
+    (r"must be finite", "必须是有限数"),
+    (r"must be a finite number", "必须是有限数"),
+    (r"must be > 0, got (.*)", r"必须大于 0，当前为 \1"),
+    (r"must not be 0", "不能为 0"),
+    (r"must be between (\S+) and (\S+), got (.*)", r"必须在 \1 与 \2 之间，当前为 \3"),
+    (r"must be one of (.*), got (.*)", r"必须是以下之一：\1；当前为 \2"),
+    (r"must be one of (.*)", r"必须是以下之一：\1"),
+    (r"must be an integer, got (.*)", r"必须是整数，当前为 \1"),
+    (r"must be an integer", "必须是整数"),
+    (r"must be (\S+)\.\.(\S+), got (.*)", r"必须在 \1..\2 之间，当前为 \3"),
+    (r"must be (\S+)\.\.(\S+) for (\S+)", r"对 \3 必须在 \1..\2 之间"),
+    (r"must be true or false, got (.*)", r"必须是 true 或 false，当前为 \1"),
+    (r"is only used with (\w+) = (\w+)", r"仅在 \1 = \2 时使用"),
+    (r"not a Q format: (.*) \(use Qm\.n, UQm\.n, or Qn with word_bits\)",
+     r"不是 Q 格式：\1（请用 Qm.n、UQm.n，或 Qn 并给出 word_bits）"),
+    (r"(\S+) is outside (\S+) \[(\S+), (\S+)\]", r"\1 超出 \2 的范围 [\3, \4]"),
+    # errors: the firmware path and the gains
+    (r"(-?\d+) \((given|from \S+)\) is outside Uint16 0\.\.65535",
+     lambda m: f"{m[1]}（{_SRC.get(m[2], '由 ' + m[2][5:] + ' 换算')}）超出 Uint16 范围 0..65535"),
+    (r"the firmware divides by zero: (.*)", r"固件出现除以零：\1"),
+    (r"too low for damping design: kp = 2ζω0·L − Rs = (\S+) Ω ≤ 0",
+     r"对阻尼比设计而言过低：kp = 2ζω0·L − Rs = \1 Ω ≤ 0"),
+    (r"(\S+) = (\S+) does not fit a 32-bit long", r"\1 = \2 超出 32 位 long 的范围"),
+    (r"the input asks for no (\w+) simulation", r"输入中没有 \1 仿真"),
+    # errors: the simulation
+    (r"(\S+) s is (\d+) control periods; at most (\d+)", r"\1 s 等于 \2 个控制周期；最多 \3 个"),
+    (r"(\S+) A is (\S+) pu; the Q12 current \(int16\) holds less than ±8 pu \(±(\S+) A\)",
+     r"\1 A 即 \2 pu；Q12 电流（int16）只能表示 ±8 pu 以内（±\3 A）"),
+    (r"\|(\S+)\| Hz is not below half the control frequency 1/\(2·Ts\) = (\S+) Hz",
+     r"|\1| Hz 未低于控制频率的一半 1/(2·Ts) = \2 Hz"),
+    (r"the input speed reaches (\S+) Hz, not below half the control frequency "
+     r"1/\(2·Ts\) = (\S+) Hz", r"输入转速达到 \1 Hz，未低于控制频率的一半 1/(2·Ts) = \2 Hz"),
+    (r"q15 PLL gain (\S+) = (\S+) does not fit int32 \(Q24 allows per-unit gains below 128\)",
+     r"q15 锁相环增益 \1 = \2 超出 int32（Q24 只允许小于 128 的标幺增益）"),
+    # warnings
+    (r"LD/LQ taken in µH: .*", "原始 LD/LQ 按 µH 输入：汇川代码按 0.01 mH 编写，因此 "
+     "gMotorExtPer.LD/LQ 是 Q13 标幺电感的 10 倍（式 1.4-6 的“×10”之谜）"),
+    (r"custom bases: .*", "自定义基值：汇川整数（Rpm、LD 等）始终使用汇川 rms 基值 U_LL/√3 与 "
+     "I_rms；PI 整数使用自定义基值"),
+    (r"(\S+): an intermediate result wrapped around; the firmware value (\S+) is wrong "
+     r"\(ideal (\S+)\)", r"\1：中间结果发生回绕，固件值 \2 是错的（理想值 \3）"),
+    (r"(\S+): the store into Uint16 changed the value; the firmware value (\S+) is wrong "
+     r"\(ideal (\S+)\)", r"\1：存入 Uint16 时数值被改变，固件值 \2 是错的（理想值 \3）"),
+    (r"raw\.(\S+) = 0: (\S+) = (\S+) is below the firmware resolution",
+     r"raw.\1 = 0：\2 = \3 低于固件分辨率"),
+    (r"raw\.(\S+) = (\S+): rounding (\S+) = (\S+) to the firmware unit changes it by (\S+) %",
+     r"raw.\1 = \2：把 \3 = \4 取整到固件单位，改变了 \5 %"),
+    (r"current_pi\.(\w)\.pm_ki rounds to 0: .*",
+     r"current_pi.\1.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）"),
+    (r"current_pi\.(\w)\.(pm_k[pi]) = (\S+): coarse, rounding changes (k[pi]) by (\S+) %",
+     r"current_pi.\1.\2 = \3：分辨率粗，取整使 \4 改变 \5 %"),
+    (r"current-loop ω_c·Ts = (\S+): .*",
+     r"电流环 ω_c·Ts = \1：连续域设计与离散环路的实际行为相差较大（建议 ω_c·Ts ≲ 0.2）"),
+    (r"base frequency below rated frequency: .*", "基值频率低于额定频率：Q15 的 FreqPer > 1.0"),
+]
+_COMPILED = [(re.compile(p, re.S), r) for p, r in CATALOG]
+
+
+def to_zh(message: str) -> str:
+    """The Chinese text of a pulab message (unchanged when no pattern matches)."""
+    for pattern, repl in _COMPILED:
+        m = pattern.fullmatch(message)
+        if m:
+            return repl(m) if callable(repl) else m.expand(repl)
+    return message
