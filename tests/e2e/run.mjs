@@ -267,6 +267,8 @@ await check('explainer: why? opens the chapter with the reader\'s numbers', asyn
   await page.click('#panel-vendor a.why');
   await page.waitForSelector('article.doc [data-key="vendor.raw.Voltage"][data-value]', { timeout: 10_000 });
   assert((await page.$eval('article.doc [data-key="vendor.raw.Voltage"]', (e) => JSON.parse(e.dataset.value))) === 17, 'placeholder');
+  // {{panel:inputs}} in chapter 1: the reader's inputs as Python normalized them.
+  assert((await page.$eval('article.doc .doc-inputs [data-key="input.motor.rs_ohm"]', (e) => JSON.parse(e.dataset.value))) === 1.5, 'inputs embed');
   const katexErrors = await page.$$eval('article.doc .katex-error', (e) => e.length);
   assert(katexErrors === 0, `${katexErrors} KaTeX errors`);
   await page.waitForTimeout(300);

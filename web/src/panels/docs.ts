@@ -1,6 +1,9 @@
 // Explainer chapters (docs/zh, docs/en, docs/index.json, issue 5) rendered with the current
 // report: {{path}} values, {{panel:NAME}} and {{plot:NAME}} embeds, links back to the panels.
-import { h } from '../dom';
+import { h, num, table } from '../dom';
+import { SECTIONS } from '../fields';
+import { fmtNum } from '../format';
+import { fromSI } from '../units';
 import { getLang, t } from '../i18n';
 import { renderMarkdown } from '../docs/render';
 import { getPath } from '../state';
@@ -79,6 +82,23 @@ function observe(el: HTMLElement): void {
   observed.add(el);
 }
 
+/** The reader's inputs as Python normalized them (defaults filled in), for {{panel:inputs}}. */
+function inputsSummary(ctx: PanelContext): HTMLElement {
+  const inp = ctx.report?.input;
+  const rows = SECTIONS.filter((s) => ['motor', 'drive', 'conventions'].includes(s.id)).flatMap((s) =>
+    s.fields.flatMap((f) => {
+      const [sec, key] = f.path.split('.');
+      const v = inp?.[sec]?.[key];
+      if (v === null || v === undefined) return [];
+      // data-value stays SI; the text uses the form's default display unit (600 µH, 100 µs).
+      const u = f.units?.[0];
+      const shown = typeof v !== 'number' ? t(`o.${String(v)}` as never)
+        : num(`input.${f.path}`, v, u ? { unit: u, text: fmtNum(fromSI(v, u), 6) } : { unit: f.unit });
+      return [[t(`f.${f.path}` as never), shown]];
+    }));
+  return table([t('quantity'), t('value')], rows, 'doc-inputs');
+}
+
 function fillEmbeds(body: HTMLElement, ctx: PanelContext): void {
   for (const el of body.querySelectorAll<HTMLElement>('[data-embed-panel]')) {
     const name = el.dataset.embedPanel ?? '';
@@ -88,7 +108,7 @@ function fillEmbeds(body: HTMLElement, ctx: PanelContext): void {
       const inner = h('div', { class: 'panel-body' });
       el.replaceChildren(link, inner);
       p.render(inner, ctx);
-    } else el.replaceChildren(link);
+    } else el.replaceChildren(link, inputsSummary(ctx));
   }
   for (const el of body.querySelectorAll<HTMLElement>('[data-embed-plot]')) {
     const name = el.dataset.embedPlot;
