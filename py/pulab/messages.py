@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["to_zh", "CATALOG"]
+__all__ = ["to_zh", "has_chinese", "CATALOG"]
 
 _SRC = {"given": "直接给定"}
 
@@ -98,3 +98,13 @@ def to_zh(message: str) -> str:
         if m:
             return repl(m) if callable(repl) else m.expand(repl)
     return message
+
+
+def has_chinese(message: str) -> bool:
+    """True when the catalog turns ``message`` into text with Chinese characters.
+
+    >>> has_chinese("must be finite"), has_chinese("no such pattern")
+    (True, False)
+    """
+    zh = to_zh(message)
+    return zh != message and any("\u4e00" <= ch <= "\u9fff" for ch in zh)

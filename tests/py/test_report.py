@@ -10,6 +10,7 @@ from hypothesis import given, settings, strategies as st
 
 from conftest import ROOT, SEED_INPUT
 from pulab import InputError, report
+from pulab.messages import has_chinese
 
 
 def test_seed_bases_and_per_unit(seed_input):
@@ -113,21 +114,31 @@ json_values = st.recursive(
     | st.dictionaries(st.text(max_size=5), c, max_size=3), max_leaves=6)
 
 
-@settings(max_examples=300, deadline=None)
-@given(section=st.sampled_from(["motor", "drive", "conventions", "current_loop", "pll", "raw"]),
+sim_values = st.dictionaries(
+    st.sampled_from(["axis", "step_a", "speed_hz", "duration_s", "delay", "angle_step_deg", "x"]),
+    st.floats(-1e6, 1e6) | st.sampled_from(["d", "q", True]), max_size=3)
+
+
+@settings(max_examples=400, deadline=None)
+@given(section=st.sampled_from(["motor", "drive", "conventions", "current_loop", "pll", "raw",
+                                "sim"]),
        key=st.sampled_from(["rated_voltage_v", "rs_ohm", "ld_h", "pole_pairs", "udc_v", "ts_s",
-                            "base", "method", "kp", "bandwidth_hz", "Voltage", "LD",
-                            "FreqRated01", "base_freq_hz", "uDCFilter", "junk"]),
-       value=json_values | st.floats(1e-9, 1e9) | st.integers(0, 70000))
+                            "base", "method", "kp", "pm_ki", "bandwidth_hz", "Voltage", "LD",
+                            "FreqRated01", "base_freq_hz", "uDCFilter", "current", "pll",
+                            "junk"]),
+       value=json_values | st.floats(1e-9, 1e9) | st.integers(0, 70000) | sim_values)
 def test_fuzzed_input_raises_only_input_error(section, key, value):
+    """Only InputError, one line, with Chinese text; a report never holds NaN/inf."""
     inp = copy.deepcopy(SEED_INPUT)
     inp.setdefault(section, {})[key] = value
     try:
         r = report(inp)
     except InputError as e:
         assert e.field and "\n" not in e.message
+        assert has_chinese(e.message), e.message
         return
-    json.dumps(r, allow_nan=False)  # never NaN/inf in a report
+    json.dumps(r, allow_nan=False)
+    assert all(has_chinese(w) for w in r["warnings"]), r["warnings"]
 
 
 @pytest.mark.parametrize("pm_kp, pm_ki", [(1180, 4720), (1, 1), (123456, 7)])
