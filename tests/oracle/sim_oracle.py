@@ -195,8 +195,12 @@ def current_loop(R, cfg, inp):
 
 
 def decim(n):
-    stride = max(1, math.ceil((n - 1) / (MAX_POINTS - 1)))
-    idx = list(range(0, n, stride))
+    # The first half of the point budget at full rate (the transient), the rest evenly strided.
+    if n <= MAX_POINTS:
+        return np.arange(n)
+    head = MAX_POINTS // 2
+    stride = math.ceil((n - 1 - head) / (MAX_POINTS - head - 1))
+    idx = list(range(head)) + list(range(head - 1 + stride, n, stride))
     if idx[-1] != n - 1:
         idx.append(n - 1)
     return np.array(idx)

@@ -48,19 +48,34 @@ MAX_POINTS = 400
 
 
 def decimate_indices(n: int, max_points: int = MAX_POINTS) -> list:
-    """Indices 0..n−1 taken with a constant stride, always including the last one.
+    """Indices 0..n−1: the first half of the budget at full rate, the rest with a constant stride.
+
+    A step response happens at the start; a constant stride over a long run
+    would sample the transient too coarsely to draw it (one point per 50 ms in
+    a 20 s run), so the first ``max_points // 2`` samples are kept as they are.
 
     Parameters
     ----------
     n : int ≥ 1, samples in the full-rate series
-    max_points : int ≥ 2
+    max_points : int ≥ 4
 
     Returns
     -------
-    list of int, at most ``max_points`` long
+    list of int, increasing, at most ``max_points`` long, ending with n − 1
+
+    Examples
+    --------
+    >>> decimate_indices(5)
+    [0, 1, 2, 3, 4]
+    >>> idx = decimate_indices(200001)
+    >>> len(idx) <= 400, idx[:3], idx[199:201], idx[-1]
+    (True, [0, 1, 2], [199, 1204], 200000)
     """
-    stride = max(1, -(-(n - 1) // (max_points - 1)))
-    idx = list(range(0, n, stride))
+    if n <= max_points:
+        return list(range(n))
+    head = max_points // 2
+    stride = -(-(n - 1 - head) // (max_points - head - 1))
+    idx = list(range(head)) + list(range(head - 1 + stride, n, stride))
     if idx[-1] != n - 1:
         idx.append(n - 1)
     return idx
