@@ -15,6 +15,7 @@ Examples
 from __future__ import annotations
 
 import json
+import re
 
 from .errors import InputError
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
@@ -48,7 +49,7 @@ def qcalc(req: dict) -> dict:
     Parameters
     ----------
     req : dict
-        ``format`` (``Qm.n``/``UQm.n``, or ``Qn`` with ``word_bits``), and either
+        ``format`` (``Qm.n``/``UQm.n``, or ``Qn`` with ``word_bits``, default 16), and either
         ``value`` (a real number to encode, with ``rounding`` and ``overflow``)
         or ``raw`` (an integer to decode).
 
@@ -60,10 +61,19 @@ def qcalc(req: dict) -> dict:
     """
     if not isinstance(req, dict):
         raise InputError("qcalc", "must be an object")
+    name = str(req.get("format", "")).strip()
+    word_bits = req.get("word_bits")
+    if word_bits is not None and (isinstance(word_bits, bool) or not isinstance(word_bits, int)):
+        raise InputError("qcalc.word_bits", "must be an integer")
+    if word_bits is None and re.fullmatch(r"U?Q\d+", name, re.I):
+        word_bits = 16  # a short name like Q15 means a 16-bit word unless told otherwise
     try:
-        fmt = parse_format(str(req.get("format", "")), req.get("word_bits"))
+        fmt = parse_format(name, word_bits)
     except (ValueError, TypeError):
-        raise InputError("qcalc.format", f"not a Q format: {req.get('format')!r} "
+        if re.fullmatch(r"U?Q\d+(\.\d+)?", name, re.I):
+            raise InputError("qcalc.format", f"{name} does not fit {word_bits or 64} word "
+                             "bits") from None
+        raise InputError("qcalc.format", f"not a Q format: {name!r} "
                          "(use Qm.n, UQm.n, or Qn with word_bits)") from None
     rounding = req.get("rounding", "nearest")
     overflow = req.get("overflow", "saturate")

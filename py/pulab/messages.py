@@ -49,6 +49,7 @@ CATALOG = [
     (r"not a Q format: (.*) \(use Qm\.n, UQm\.n, or Qn with word_bits\)",
      r"不是 Q 格式：\1（请用 Qm.n、UQm.n，或 Qn 并给出 word_bits）"),
     (r"(\S+) is outside (\S+) \[(\S+), (\S+)\]", r"\1 超出 \2 的范围 [\3, \4]"),
+    (r"(\S+) does not fit (\d+) word bits", r"\1 放不进 \2 位字长"),
     # errors: the firmware path and the gains
     (r"(-?\d+) \((given|from \S+)\) is outside Uint16 0\.\.65535",
      lambda m: f"{m[1]}（{_SRC.get(m[2], '由 ' + m[2][5:] + ' 换算')}）超出 Uint16 范围 0..65535"),

@@ -10,6 +10,7 @@ from hypothesis import given, settings, strategies as st
 
 from conftest import ROOT, SEED_INPUT
 from pulab import InputError, report
+from pulab.api import qcalc_json
 from pulab.messages import has_chinese
 
 
@@ -158,3 +159,24 @@ def test_integers_method_needs_both(seed_input):
     with pytest.raises(InputError) as e:
         report(seed_input)
     assert e.value.field == "current_loop.pm_ki"
+
+
+@pytest.mark.parametrize("req, raw, name", [
+    ({"format": "Q15", "value": 0.5}, 16384, "Q0.15"),       # short name: 16-bit word by default
+    ({"format": "Q12", "value": 1.0}, 4096, "Q3.12"),
+    ({"format": "Q24", "word_bits": 32, "value": 1.0}, 1 << 24, "Q7.24"),
+    ({"format": "UQ0.16", "value": -0.1}, 0, "UQ0.16"),
+])
+def test_qcalc(req, raw, name):
+    out = json.loads(qcalc_json(json.dumps(req)))
+    assert (out["result"]["raw"], out["format"]["name"]) == (raw, name)
+
+
+@pytest.mark.parametrize("req, field, text", [
+    ({"format": "Q24", "value": 1.0}, "qcalc.format", "Q24 does not fit 16 word bits"),
+    ({"format": "Qx", "value": 1.0}, "qcalc.format", "not a Q format"),
+    ({"format": "Q15", "word_bits": 1.5, "value": 1.0}, "qcalc.word_bits", "must be an integer"),
+])
+def test_qcalc_errors(req, field, text):
+    out = json.loads(qcalc_json(json.dumps(req)))
+    assert out["ok"] is False and out["field"] == field and out["message"].startswith(text)

@@ -43,6 +43,8 @@ describe('parseNumber: what a user types', () => {
     ['17', false, { ok: true, value: 17 }],
     [' 1.5 ', false, { ok: true, value: 1.5 }],
     ['1,5', false, { ok: true, value: 1.5 }],
+    ['1,500', false, { ok: false, error: 'number' }],
+    ['0,0006', false, { ok: true, value: 0.0006 }],
     ['6e-4', false, { ok: true, value: 0.0006 }],
     ['.5', false, { ok: true, value: 0.5 }],
     ['-1', false, { ok: true, value: -1 }],

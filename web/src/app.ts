@@ -342,9 +342,16 @@ export class App {
       this.showFieldErrors();
       return;
     }
-    this.localErrors.delete(f.path);
     const unit = this.unitOf(f);
-    setPath(this.input as Record<string, unknown>, f.path, r.value === null ? null : unit ? toSI(r.value, unit) : r.value);
+    const si = r.value === null ? null : unit ? toSI(r.value, unit) : r.value;
+    if (si !== null && !Number.isFinite(si)) {
+      // f_s = 0 kHz has no period: JSON would turn Infinity into null ("is required").
+      this.localErrors.set(f.path, t('errPositive'));
+      this.showFieldErrors();
+      return;
+    }
+    this.localErrors.delete(f.path);
+    setPath(this.input as Record<string, unknown>, f.path, si);
     this.remoteError = null;
     this.showFieldErrors();
     this.syncPresetSelect();

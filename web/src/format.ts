@@ -44,6 +44,8 @@ export type ParseResult = { ok: true; value: number | null } | { ok: false; erro
 export function parseNumber(text: string, integer = false): ParseResult {
   const s = text.trim().replace(/\s+/g, '');
   if (s === '') return { ok: true, value: null };
+  // A decimal comma (1,5) is accepted; 1,500 could be a thousands separator (1500) — refuse it.
+  if (/^[+-]?\d+,\d{3}$/.test(s)) return { ok: false, error: integer ? 'integer' : 'number' };
   const norm = /^[+-]?\d+,\d+$/.test(s) ? s.replace(',', '.') : s;
   if (integer) {
     if (!/^[+-]?\d+$/.test(norm)) return { ok: false, error: 'integer' };

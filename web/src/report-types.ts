@@ -34,6 +34,7 @@ export interface Constant {
   rel_error: number;
   used_in: string;
   derivation?: string;
+  derivation_zh?: string;
 }
 export interface SimCurrent {
   t: number[];

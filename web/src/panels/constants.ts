@@ -1,5 +1,5 @@
 import { h, num, table } from '../dom';
-import { t } from '../i18n';
+import { getLang, t } from '../i18n';
 import { fmtPct } from '../format';
 import type { Panel } from './panel';
 
@@ -21,7 +21,7 @@ export const constantsPanel: Panel = {
             num(`${p}.exact`, c?.exact, { sig: 10 }),
             num(`${p}.rel_error`, c?.rel_error, { text: c ? fmtPct(c.rel_error * 100) : undefined }),
             c?.used_in ?? '',
-            h('span', { class: 'deriv' }, c?.derivation ?? ''),
+            h('span', { class: 'deriv' }, (getLang() === 'zh' ? c?.derivation_zh : c?.derivation) ?? ''),
           ];
         }),
         'constants',
