@@ -23,7 +23,7 @@ import math
 from .errors import InputError
 from .vendor import RAW_FIELDS
 
-__all__ = ["normalize", "DEFAULT_CURRENT_BANDWIDTH_HZ", "DEFAULT_PLL_BANDWIDTH_HZ",
+__all__ = ["normalize", "object_fields", "real", "DEFAULT_CURRENT_BANDWIDTH_HZ", "DEFAULT_PLL_BANDWIDTH_HZ",
            "DEFAULT_DAMPING", "SECTIONS"]
 
 DEFAULT_CURRENT_BANDWIDTH_HZ = 500.0
@@ -52,17 +52,34 @@ _CHOICES = {
 }
 
 
-def _section(inp: dict, name: str) -> dict:
-    sec = inp.get(name)
-    if sec is None:
+def object_fields(v, path: str, allowed) -> dict:
+    """A JSON object with only ``allowed`` keys, nulls dropped (absent = null).
+
+    Shared by every input section, here and in :mod:`pulab.sim.inputs`.
+    """
+    if v is None:
         return {}
-    if not isinstance(sec, dict):
-        raise InputError(name, "must be an object")
-    for key in sec:
-        if key not in SECTIONS[name]:
-            raise InputError(f"{name}.{key}", f"unknown field (expected one of: "
-                             f"{', '.join(SECTIONS[name])})")
-    return {k: v for k, v in sec.items() if v is not None}
+    if not isinstance(v, dict):
+        raise InputError(path, f"must be an object, got {v!r}")
+    for key in v:
+        if key not in allowed:
+            raise InputError(f"{path}.{key}", f"unknown field (expected one of: "
+                             f"{', '.join(allowed)})")
+    return {k: x for k, x in v.items() if x is not None}
+
+
+def real(v, path: str) -> float:
+    """A JSON number as a finite float; booleans are not numbers."""
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise InputError(path, f"must be a number, got {v!r}")
+    v = float(v)
+    if not math.isfinite(v):
+        raise InputError(path, "must be finite")
+    return v
+
+
+def _section(inp: dict, name: str) -> dict:
+    return object_fields(inp.get(name), name, SECTIONS[name])
 
 
 def _number(sec: dict, section: str, key: str, default=None) -> float:
@@ -71,12 +88,7 @@ def _number(sec: dict, section: str, key: str, default=None) -> float:
         if default is None:
             raise InputError(path, "is required")
         return float(default)
-    v = sec[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise InputError(path, f"must be a number, got {v!r}")
-    v = float(v)
-    if not math.isfinite(v):
-        raise InputError(path, "must be finite")
+    v = real(sec[key], path)
     if v <= 0:
         raise InputError(path, f"must be > 0, got {v:g}")
     lo, hi = _LIMITS.get(key, (1e-9, 1e9))

@@ -37,9 +37,9 @@ pulab.errors.InputError: sim.current.delay: must be true or false, got 1
 
 from __future__ import annotations
 
-import math
 
 from ..errors import InputError
+from ..inputs import object_fields, real
 
 __all__ = ["validate", "FIELDS"]
 
@@ -50,34 +50,16 @@ FIELDS = {
 }
 
 
-def _object(v, path: str) -> dict:
-    if v is None:
-        return {}
-    if not isinstance(v, dict):
-        raise InputError(path, f"must be an object, got {v!r}")
-    return v
-
-
 def _section(sim: dict, name: str) -> dict:
-    sec = _object(sim.get(name), f"sim.{name}")
-    for key in sec:
-        if key not in FIELDS[name]:
-            raise InputError(f"sim.{name}.{key}", f"unknown field (expected one of: "
-                             f"{', '.join(FIELDS[name])})")
-    return {k: v for k, v in sec.items() if v is not None}
+    return object_fields(sim.get(name), f"sim.{name}", FIELDS[name])
 
 
 def _num(sec: dict, path: str, key: str, default, positive: bool = False,
          nonzero: bool = False, lo: float | None = None, hi: float | None = None):
     if key not in sec:
         return default
-    v = sec[key]
     full = f"{path}.{key}"
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise InputError(full, f"must be a number, got {v!r}")
-    v = float(v)
-    if not math.isfinite(v):
-        raise InputError(full, "must be finite")
+    v = real(sec[key], full)
     if positive and v <= 0:
         raise InputError(full, f"must be > 0, got {v:g}")
     if nonzero and v == 0:
@@ -107,11 +89,7 @@ def validate(sim_input) -> dict:
     pulab.InputError
         Naming the JSON path of the first bad field.
     """
-    sim = _object(sim_input, "sim")
-    for key in sim:
-        if key not in FIELDS:
-            raise InputError(f"sim.{key}", f"unknown section (expected one of: "
-                             f"{', '.join(FIELDS)})")
+    sim = object_fields(sim_input, "sim", FIELDS)
     c = _section(sim, "current")
     p = _section(sim, "pll")
     axis = c.get("axis", "d")
