@@ -18,8 +18,7 @@ from .constants import magic_constants
 from .gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .inputs import normalize
 from .messages import to_zh
-from .vendor import (INDUCTANCE_SCALE, RAW_FIELDS, RAW_SCALE, current_pi_step, raw_from_si,
-                     vendor_results)
+from .vendor import RAW_FIELDS, current_pi_step, raw_from_si, raw_source, vendor_results
 
 __all__ = ["report", "format_text"]
 
@@ -41,11 +40,10 @@ def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
                 w.append(f"{name}: {text}; the firmware value {res['value']} is wrong "
                          f"(ideal {res['ideal']:.6g})")
     for name in RAW_FIELDS:
-        path, scale = RAW_SCALE[name]
         if name in inp["raw"]:
             continue
+        path, scale = raw_source(name, unit)
         si = inp[path.split(".")[0]][path.split(".")[1]]
-        scale = scale if scale is not None else INDUCTANCE_SCALE[unit]
         exact = si * scale
         if raw[name] == 0:
             w.append(f"raw.{name} = 0: {path} = {si:g} is below the firmware resolution")

@@ -39,7 +39,7 @@ from .errors import InputError
 from .qformat import iqsat
 
 __all__ = [
-    "RAW_FIELDS", "RAW_SCALE", "raw_from_si", "round_half_away",
+    "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_from_si", "round_half_away",
     "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
     "vendor_results", "current_pi_step", "PiStep", "to_si",
 ]
@@ -65,6 +65,12 @@ RAW_SCALE = {
 INDUCTANCE_SCALE = {"10uH": 1e5, "uH": 1e6}
 
 
+def raw_source(name: str, inductance_unit: str) -> tuple[str, float]:
+    """The SI input path a raw field comes from and the SI → raw scale factor."""
+    path, scale = RAW_SCALE[name]
+    return path, scale if scale is not None else INDUCTANCE_SCALE[inductance_unit]
+
+
 def round_half_away(x: float) -> int:
     """Round to nearest, ties away from zero (not Python's banker's ``round``)."""
     return int(math.copysign(math.floor(abs(x) + 0.5), x))
@@ -88,11 +94,10 @@ def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
     """
     raw = {}
     for name in RAW_FIELDS:
-        path, scale = RAW_SCALE[name]
+        path, scale = raw_source(name, inductance_unit)
         if name in given:
             v = given[name]
         else:
-            scale = scale if scale is not None else INDUCTANCE_SCALE[inductance_unit]
             v = round_half_away(float(si[path]) * scale)
         if not 0 <= v <= 0xFFFF:
             src = "given" if name in given else f"from {path}"
