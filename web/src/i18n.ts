@@ -215,6 +215,11 @@ const en = {
   bootSlow: 'Python is still loading…',
   fatalHelp: 'The calculator needs WebAssembly and Web Workers. If the page is served with a strict CSP, allow \'wasm-unsafe-eval\'.',
   latency: 'last report {ms} ms in Python',
+  // instant start (issue 8)
+  numbers_build: 'Numbers for the default motor, computed when the site was built; Python is starting',
+  numbers_cached: 'Numbers from your last visit; Python is starting',
+  numbers_waiting: 'Your input is kept and computed as soon as Python is ready',
+  boot_snapshot: 'Starting Python from its snapshot…',
 };
 
 export type Key = keyof typeof en;
@@ -432,6 +437,11 @@ const zh: Record<Key, string> = {
   bootSlow: 'Python 仍在加载…',
   fatalHelp: '计算器需要 WebAssembly 和 Web Worker。若页面使用严格的 CSP，请允许 \'wasm-unsafe-eval\'。',
   latency: '上次报告 Python 耗时 {ms} ms',
+  // instant start (issue 8)
+  numbers_build: '默认电机的数值（构建网站时算好）；Python 正在启动',
+  numbers_cached: '上次访问时的数值；Python 正在启动',
+  numbers_waiting: '您的输入已保留，Python 就绪后立即计算',
+  boot_snapshot: '正在从快照启动 Python…',
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };
