@@ -32,8 +32,13 @@ async function variant(file, acceptEncoding) {
   return { path: file, stat: s, encoding: null };
 }
 
-/** Serve `root` under `prefix` ('/' or '/a/b/'); resolves to {server, url}. Counts served bytes in `server.bytesSent`. */
-export function serve(root, prefix = '/', port = 0) {
+/**
+ * Serve `root` under `prefix` ('/' or '/a/b/'); resolves to {server, url}. Counts served bytes in
+ * `server.bytesSent`. Fault injection for tests: `faults.hold(rel)` may return a promise the
+ * response waits for; `faults.refuse` (RegExp) answers 404 for matching paths,
+ * `faults.corrupt` (RegExp) 4 KiB of junk.
+ */
+export function serve(root, prefix = '/', port = 0, faults = {}) {
   const server = createServer(async (req, res) => {
     const url = new URL(req.url, 'http://x');
     if (!url.pathname.startsWith(prefix)) {
@@ -42,6 +47,9 @@ export function serve(root, prefix = '/', port = 0) {
     }
     let rel = decodeURIComponent(url.pathname.slice(prefix.length)) || 'index.html';
     if (rel.endsWith('/')) rel += 'index.html';
+    await faults.hold?.(rel);
+    if (faults.refuse?.test(rel)) return res.writeHead(404, { 'Content-Type': 'text/plain' }).end('refused (test)');
+    if (faults.corrupt?.test(rel)) return res.writeHead(200, { 'Content-Type': 'application/octet-stream' }).end(Buffer.alloc(4096, 7));
     const file = normalize(join(root, rel));
     if (!file.startsWith(normalize(root))) return res.writeHead(403).end();
     try {
