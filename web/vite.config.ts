@@ -113,7 +113,7 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets(), pulabBuild(true), precompress()],
+  plugins: [pyodideAssets(), pulabBuild(true), precompress(resolve(repo, 'node_modules/.cache/pulab-compress'))],
   optimizeDeps: { exclude: ['pyodide'] },
   worker: { format: 'es', plugins: () => [pulabBuild(false)] },
   server: { fs: { allow: [repo] } },
