@@ -55,6 +55,7 @@ import math
 
 from ..errors import InputError
 from ..vendor import current_pi_step, round_half_away
+from .inputs import periods
 from .plant import zoh
 
 __all__ = ["run_float", "run_fixed", "run", "MAX_STEPS", "Q12_CURRENT_LIMIT_PU"]
@@ -269,11 +270,7 @@ def run(report: dict, cfg: dict) -> dict:
     axis = cfg["axis"]
     duration = cfg["duration_s"] if cfg["duration_s"] is not None else \
         default_duration(report, axis)
-    n = int(round(duration / ts))
-    if n > MAX_STEPS:
-        raise InputError("sim.current.duration_s",
-                         f"{duration:g} s is {n} control periods; at most {MAX_STEPS}")
-    n = max(n, 1)
+    n = periods(duration, ts, MAX_STEPS, "sim.current.duration_s")
     step = cfg["step_a"] if cfg["step_a"] is not None else 0.5 * i_b
     if abs(step / i_b) >= Q12_CURRENT_LIMIT_PU:
         raise InputError("sim.current.step_a", f"{step:g} A is {step / i_b:.3g} pu; the Q12 "

@@ -55,6 +55,7 @@ import math
 
 from ..errors import InputError
 from ..vendor import round_half_away
+from .inputs import periods
 
 __all__ = ["input_angle", "run_float", "run_q15", "run", "q15_gains", "MAX_STEPS"]
 
@@ -222,11 +223,7 @@ def run(report: dict, cfg: dict) -> dict:
     ts = inp["drive"]["ts_s"]
     w_b, theta_b, f_b = b["w_b"], b["theta_b"], b["f_b"]
     duration = cfg["duration_s"] if cfg["duration_s"] is not None else default_duration(report)
-    n = int(round(duration / ts))
-    if n > MAX_STEPS:
-        raise InputError("sim.pll.duration_s",
-                         f"{duration:g} s is {n} control periods; at most {MAX_STEPS}")
-    n = max(n, 1)
+    n = periods(duration, ts, MAX_STEPS, "sim.pll.duration_s")
     speed = cfg["speed_hz"] if cfg["speed_hz"] is not None else inp["motor"]["rated_freq_hz"]
     top = max(abs(speed), abs(speed + cfg["ramp_hz_per_s"] * n * ts))
     if top * ts >= 0.5:
