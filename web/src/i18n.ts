@@ -215,6 +215,21 @@ const en = {
   bootSlow: 'Python is still loading…',
   fatalHelp: 'The calculator needs WebAssembly and Web Workers. If the page is served with a strict CSP, allow \'wasm-unsafe-eval\'.',
   latency: 'last report {ms} ms in Python',
+  // issue 14: hostile or damaged state, faults
+  state_link_partly: 'The link you opened was partly broken: the fields below could not be used, everything else was kept.',
+  state_link_unusable: 'The link you opened holds no usable state, so the {shown} is shown instead.',
+  state_link_kept: 'Your link stays in the address bar until you change an input.',
+  state_storage_partly: 'The saved state was damaged: the fields below could not be used, everything else was kept.',
+  state_shown_url: 'link',
+  state_shown_storage: 'last saved state',
+  state_shown_default: 'seed example',
+  state_reason_json: 'not readable as a state (JSON object)',
+  state_reason_shape: 'must be an object, got {got}',
+  state_reason_type: 'wrong type for this field, got {got}',
+  state_reason_unknown: 'no such field, ignored',
+  state_note_url: 'From the link: {reason}; the default is used.',
+  state_note_storage: 'From the saved state: {reason}; the default is used.',
+  state_dismiss: 'Dismiss',
 };
 
 export type Key = keyof typeof en;
@@ -432,6 +447,21 @@ const zh: Record<Key, string> = {
   bootSlow: 'Python 仍在加载…',
   fatalHelp: '计算器需要 WebAssembly 和 Web Worker。若页面使用严格的 CSP，请允许 \'wasm-unsafe-eval\'。',
   latency: '上次报告 Python 耗时 {ms} ms',
+  // issue 14: hostile or damaged state, faults
+  state_link_partly: '您打开的链接部分损坏：下列字段无法使用，其余内容均已保留。',
+  state_link_unusable: '您打开的链接中没有可用的状态，因此显示{shown}。',
+  state_link_kept: '在您修改输入之前，地址栏中保留您的链接。',
+  state_storage_partly: '保存的状态已损坏：下列字段无法使用，其余内容均已保留。',
+  state_shown_url: '链接',
+  state_shown_storage: '上次保存的状态',
+  state_shown_default: '原文示例',
+  state_reason_json: '无法读取为状态（JSON 对象）',
+  state_reason_shape: '必须是对象，当前为 {got}',
+  state_reason_type: '该字段类型错误，当前为 {got}',
+  state_reason_unknown: '没有此字段，已忽略',
+  state_note_url: '来自链接：{reason}；改用默认值。',
+  state_note_storage: '来自保存的状态：{reason}；改用默认值。',
+  state_dismiss: '关闭',
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };
