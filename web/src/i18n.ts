@@ -230,6 +230,8 @@ const en = {
   state_note_url: 'From the link: {reason}; the default is used.',
   state_note_storage: 'From the saved state: {reason}; the default is used.',
   state_dismiss: 'Dismiss',
+  plotFailed: 'The plot library could not be loaded (offline or blocked?). The numbers are not affected; it is tried again when the network returns.',
+  retry: 'Retry',
 };
 
 export type Key = keyof typeof en;
@@ -462,6 +464,8 @@ const zh: Record<Key, string> = {
   state_note_url: '来自链接：{reason}；改用默认值。',
   state_note_storage: '来自保存的状态：{reason}；改用默认值。',
   state_dismiss: '关闭',
+  plotFailed: '无法加载绘图库（离线或被拦截？）。数值不受影响；网络恢复后会自动重试。',
+  retry: '重试',
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };
