@@ -5,6 +5,7 @@ import { createLogger, defineConfig, type Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { dirname, resolve } from 'node:path';
+import { offlineCache } from './offline/plugin';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const repo = resolve(here, '..');
@@ -51,7 +52,7 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets()],
+  plugins: [pyodideAssets(), offlineCache()],
   optimizeDeps: { exclude: ['pyodide'] },
   worker: { format: 'es' },
   server: { fs: { allow: [repo] } },
