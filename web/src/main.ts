@@ -13,5 +13,4 @@ void import('./app').then(({ App }) => {
   const app = new App(document.getElementById('app')!);
   app.session.simWorkerFactory = () => startWorker('pulab-sim');
   app.start(client);
-  (window as unknown as { pulab: unknown }).pulab = app;
 });

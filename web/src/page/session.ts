@@ -35,6 +35,10 @@ export class ComputeSession {
   localErrors = new Map<string, string>();
   /** The error Python returned for the input in the form. */
   remoteError: ApiErr | null = null;
+  /** Notes at fields whose linked or stored value could not be used (web/src/state-notice.ts). */
+  stateNotes = new Map<string, string>();
+  /** The opened link was broken: it stays in the address bar until the user changes an input. */
+  keepLink = false;
   /** Time in Python of the last report, ms. */
   lastMs = 0;
   client: PulabClient | null = null;
@@ -55,14 +59,19 @@ export class ComputeSession {
     return this.client?.ready === true;
   }
 
-  /** The form was edited (starts the input → numbers clock). */
-  touched(): void {
+  /** The form was edited at `path` (starts the input → numbers clock; the user's own state may
+   * now replace a broken link, and the note on that field no longer applies). */
+  touched(path: string): void {
     this.inputAt = performance.now();
+    this.keepLink = false;
+    if (this.stateNotes.delete(path)) this.events.errors();
   }
 
   /** Replace the whole input (preset, link): earlier errors no longer apply. */
   replaceInput(input: Input): void {
     this.input = input;
+    this.keepLink = false;
+    this.stateNotes.clear();
     this.localErrors.clear();
     this.remoteError = null;
     this.schedule(0);
@@ -158,7 +167,7 @@ export class ComputeSession {
   private persist(eff: Input): void {
     if (this.embed) return;
     const hash = encodeHash(eff);
-    if (location.hash !== hash) history.replaceState(null, '', hash);
+    if (location.hash !== hash && !this.keepLink) history.replaceState(null, '', hash);
     store(STORAGE_KEY, JSON.stringify(eff));
   }
 }
