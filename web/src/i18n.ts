@@ -232,6 +232,8 @@ const en = {
   state_dismiss: 'Dismiss',
   plotFailed: 'The plot library could not be loaded (offline or blocked?). The numbers are not affected; it is tried again when the network returns.',
   retry: 'Retry',
+  exportFailed: 'Export failed ({m}); try again',
+  simWorkerFailed: 'the simulation worker failed ({m}); check the connection, then retry',
 };
 
 export type Key = keyof typeof en;
@@ -466,6 +468,8 @@ const zh: Record<Key, string> = {
   state_dismiss: '关闭',
   plotFailed: '无法加载绘图库（离线或被拦截？）。数值不受影响；网络恢复后会自动重试。',
   retry: '重试',
+  exportFailed: '导出失败（{m}）；请重试',
+  simWorkerFailed: '仿真 worker 失败（{m}）；请检查网络连接后重试',
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

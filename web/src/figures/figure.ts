@@ -1,6 +1,7 @@
 // Shared by the figures: Plotly loaded lazily as its own chunk, one common look.
 import { h } from '../dom';
 import { t } from '../i18n';
+import type { PanelContext } from '../panels/panel';
 
 type PlotlyT = typeof import('plotly.js-basic-dist-min').default;
 let plotly: Promise<PlotlyT> | null = null;
@@ -106,4 +107,11 @@ function draw(host: HTMLElement, traces: Trace[], layout: { xTitle: string; yTit
     host.prepend(h('div', { class: 'plot-error', role: 'alert' }, t('plotFailed'), ' ',
       h('button', { type: 'button', class: 'plot-retry', onclick: again }, t('retry'))));
   });
+}
+
+/** What a plot shows while its simulation runs, or why it has none (with a retry when one helps). */
+export function simPlaceholder(ctx: PanelContext): HTMLElement {
+  if (!ctx.simError) return h('div', { class: 'plot-placeholder' }, t('simRunning'));
+  return h('div', { class: 'sim-error', role: 'alert' }, t('simNotAvailable', { m: ctx.simError }),
+    ctx.retrySim ? h('button', { type: 'button', class: 'sim-retry', onclick: ctx.retrySim }, t('retry')) : null);
 }

@@ -2,7 +2,7 @@
 // of report and simulation calls to the Python workers. Knows nothing of the DOM except the
 // timing attributes on <html> (reportMs, renderMs, updateMs: the benchmark reads them).
 import { effectiveInput } from '../fields';
-import { errText } from '../i18n';
+import { errText, t } from '../i18n';
 import { Superseded, type PulabClient } from '../rpc';
 import type { ApiErr } from '../protocol';
 import type { Report } from '../report-types';
@@ -29,6 +29,8 @@ export class ComputeSession {
   report: Report | null = null;
   simReport: Report | null = null;
   simError: string | null = null;
+  /** The simulation worker failed (not the input): a retry may help. */
+  simWorkerFailed = false;
   /** The field a failed simulation named (shown at that field until the next simulation). */
   simFieldError: ApiErr | null = null;
   /** Errors found in the page before Python sees the input (not a number, …), by field path. */
@@ -53,6 +55,19 @@ export class ComputeSession {
 
   constructor(input: Input, private embed: boolean, private events: SessionEvents) {
     this.input = input;
+    // A simulation that failed for want of a network is tried again when it returns.
+    window.addEventListener('online', () => {
+      if (this.simWorkerFailed) this.retrySim();
+    });
+  }
+
+  /** Run the simulation again, in a new worker if the old one died. */
+  retrySim(): void {
+    if (this.simClient?.fatalMessage) this.simClient = null;
+    this.simWorkerFailed = false;
+    this.simError = null;
+    this.events.sim();
+    void this.computeSim(effectiveInput(this.input));
   }
 
   get ready(): boolean {
@@ -130,7 +145,9 @@ export class ComputeSession {
         this.events.errors();
       }
     } catch (e) {
-      if (!(e instanceof Superseded)) throw e;
+      // Superseded: a newer input is on its way. Anything else is the worker failing, which the
+      // status line reports (PulabClient onFatal); never an unhandled rejection.
+      if (!(e instanceof Superseded)) console.warn('report call failed:', e);
     } finally {
       delete root.dataset.busy;
       this.events.busy();
@@ -152,6 +169,7 @@ export class ComputeSession {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
         this.simFieldError = null;
+        this.simWorkerFailed = false;
       } else {
         this.simError = `${result.field}: ${errText(result)}`;
         this.simFieldError = result.field.startsWith('sim') ? result : null;
@@ -159,7 +177,12 @@ export class ComputeSession {
       }
       this.events.sim();
     } catch (e) {
-      if (!(e instanceof Superseded)) throw e;
+      if (e instanceof Superseded) return;
+      // The simulation worker could not start or died: say so at the plots, with a retry.
+      this.simReport = null;
+      this.simWorkerFailed = true;
+      this.simError = t('simWorkerFailed', { m: e instanceof Error ? e.message : String(e) });
+      this.events.sim();
     }
   }
 
