@@ -139,3 +139,22 @@ def test_depth_cap(depth, ok):
 def test_other_api_functions_name_the_field(fn, text, field):
     out = _strict(fn(text))
     assert out["ok"] is False and out["field"] == field and _one_line(out["message"]), out
+
+
+def test_fuzzed_qcalc_and_export_requests_keep_the_contract():
+    """The other api functions: 1,000 seeded requests each, built from the same hostile values."""
+    import random
+    from adversarial import NASTY_TEXT, NUMBER_LITERALS, _value
+    rng = random.Random(15)
+    count = 0
+    plain = {k: v for k, v in BASE.items() if k != "sim"}
+    for _ in range(1000):
+        req = {"format": rng.choice(["Q0.15", "Q15", "UQ8.8", "Q3.12", *NASTY_TEXT[:8]]),
+               rng.choice(["value", "raw", "word_bits", "rounding", "overflow", "format"]): "@@x@@"}
+        text = json.dumps(req).replace('"@@x@@"', rng.choice(NUMBER_LITERALS) if rng.random() < 0.5
+                                       else json.dumps(_value(rng)))
+        for fn, body in ((qcalc_json, text), (export_json, json.dumps({"input": plain, "kind": _value(rng)}))):
+            out = _strict(fn(body))
+            assert out["ok"] is True or all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
+            count += 1
+    print(f"\nfuzzed qcalc/export requests: {count}")
