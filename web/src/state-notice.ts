@@ -1,18 +1,19 @@
 // What the page says about a linked or stored state it could not use as it was (state-check.ts):
 // a note at each named field, and a banner for the rest (the whole link, unknown keys). Text only.
 import { h } from './dom';
-import { ALL_FIELDS } from './fields';
+import { ALL_FIELDS, SECTIONS } from './fields';
 import { t } from './i18n';
 import type { Initial } from './state';
 import type { StateProblem } from './state-check';
 
-const FIELD_PATHS = new Set(ALL_FIELDS.map((f) => f.path));
+/** Paths with a message element of their own in the form: every field and every section. */
+const FIELD_PATHS = new Set([...ALL_FIELDS.map((f) => f.path), ...SECTIONS.map((s) => s.id)]);
 
 function reason(p: StateProblem): string {
   return t(`state_reason_${p.reason}`, { got: p.got });
 }
 
-/** Notes for fields of the form: path → "from the link: wrong type …; the default is used". */
+/** Notes for fields and sections of the form: path → "from the link: wrong type …; the default is used". */
 export function fieldNotes(init: Initial): Map<string, string> {
   const out = new Map<string, string>();
   for (const p of init.problems)
