@@ -14,7 +14,8 @@ export function offlineCache(): Plugin {
     apply: 'build',
     enforce: 'post',
     generateBundle(_options, bundle) {
-      const files = Object.keys(bundle).filter((f) => !f.endsWith('.map')).sort();
+      // Precompressed twins (.br/.gz) are the server's business: the browser asks for the plain name.
+      const files = Object.keys(bundle).filter((f) => !/\.(map|br|gz)$/.test(f)).sort();
       const hash = createHash('sha256');
       for (const f of files) {
         const item = bundle[f];

@@ -78,8 +78,12 @@ export default async function harden({ check, assert, browser, subSrv, ready, go
       const banner = await page.waitForSelector('.state-banner', { timeout: 30_000 }).then((e) => e.textContent());
       assert(banner.includes(named), `banner does not name ${named}: ${banner}`);
       if (kept) assert(JSON.parse(await page.$eval(`[name="${kept[0]}"]`, (e) => e.value)) === kept[1], `${kept[0]} not kept`);
-      const at = await page.$(`.inputs [data-err-for="${named}"]`);
-      if (at) await page.waitForFunction((f) => document.querySelector(`.inputs [data-err-for="${f}"]`)?.textContent !== '', named);
+      // A named field or section of the form carries a note (or pulab's error) of its own.
+      const noted = (f) => {
+        const e = [...document.querySelectorAll('.inputs [data-err-for]')].find((x) => x.dataset.errFor === f);
+        return e === undefined ? 'none' : e.textContent !== '';
+      };
+      if ((await page.evaluate(noted, named)) !== 'none') await page.waitForFunction(noted, named, { timeout: 10_000 });
       await page.waitForSelector('html[data-ready="1"]', { timeout: 60_000 });
       await page.waitForTimeout(600);
       assert(await page.evaluate(() => location.hash) === hash, 'the opened link was overwritten');
