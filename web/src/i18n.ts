@@ -213,7 +213,7 @@ const en = {
   docsMissing: 'The explainer chapters are not available in this build.',
   embedOpen: 'Open pu-lab',
   bootSlow: 'Python is still loading…',
-  fatalHelp: 'The calculator needs WebAssembly and Web Workers. If the page is served with a strict CSP, allow \'wasm-unsafe-eval\'.',
+  fatalHelp: 'Check the connection and reload: your input stays in the link. (The calculator needs WebAssembly and Web Workers; a strict CSP must allow \'wasm-unsafe-eval\'.)',
   latency: 'last report {ms} ms in Python',
   // issue 14: hostile or damaged state, faults
   state_link_partly: 'The link you opened was partly broken: the fields below could not be used, everything else was kept.',
@@ -232,6 +232,7 @@ const en = {
   state_dismiss: 'Dismiss',
   plotFailed: 'The plot library could not be loaded (offline or blocked?). The numbers are not affected; it is tried again when the network returns.',
   retry: 'Retry',
+  reload: 'Reload',
   exportFailed: 'Export failed ({m}); try again',
   simWorkerFailed: 'the simulation worker failed ({m}); check the connection, then retry',
 };
@@ -449,7 +450,7 @@ const zh: Record<Key, string> = {
   docsMissing: '本版本中没有讲解章节。',
   embedOpen: '打开 pu-lab',
   bootSlow: 'Python 仍在加载…',
-  fatalHelp: '计算器需要 WebAssembly 和 Web Worker。若页面使用严格的 CSP，请允许 \'wasm-unsafe-eval\'。',
+  fatalHelp: '请检查网络连接后重新加载：您的输入保留在链接中。（计算器需要 WebAssembly 和 Web Worker；严格的 CSP 须允许 \'wasm-unsafe-eval\'。）',
   latency: '上次报告 Python 耗时 {ms} ms',
   // issue 14: hostile or damaged state, faults
   state_link_partly: '您打开的链接部分损坏：下列字段无法使用，其余内容均已保留。',
@@ -468,6 +469,7 @@ const zh: Record<Key, string> = {
   state_dismiss: '关闭',
   plotFailed: '无法加载绘图库（离线或被拦截？）。数值不受影响；网络恢复后会自动重试。',
   retry: '重试',
+  reload: '重新加载',
   exportFailed: '导出失败（{m}）；请重试',
   simWorkerFailed: '仿真 worker 失败（{m}）；请检查网络连接后重试',
 };

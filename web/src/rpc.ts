@@ -39,7 +39,10 @@ export class PulabClient {
 
   constructor(private worker: WorkerLike, public events: RpcEvents = {}) {
     worker.onmessage = (ev) => this.receive(ev.data);
-    worker.onerror = (ev) => this.fail(`the worker failed to start: ${ev.message || 'unknown error'}`);
+    worker.onerror = (ev) => {
+      ev.preventDefault?.(); // handled here: reported in the status line, not as an uncaught error
+      this.fail(`the worker failed: ${ev.message || 'its script did not load'}`);
+    };
   }
 
   /** Start the boot; `timeoutMs` bounds Pyodide's start-up, a watchdog here bounds the worker itself. */

@@ -51,6 +51,29 @@ export async function withTimeout<T>(p: Promise<T>, ms: number, what: string): P
 type PyApi = Record<string, (text: string) => string>;
 type Call = Extract<MainToWorker, { type: 'call' }>;
 
+/**
+ * One readable line for anything thrown or rejected: an Error's message, an HTTP failure's status
+ * and URL, an event's type — never "[object Object]" (a missing runtime file must be named).
+ */
+export function describeError(e: unknown): string {
+  if (e instanceof Error) return e.message || e.name;
+  if (typeof e === 'string') return e;
+  if (e && typeof e === 'object') {
+    const o = e as { message?: unknown; status?: unknown; url?: unknown; type?: unknown; constructor?: { name?: string } };
+    if (typeof o.message === 'string' && o.message) return o.message;
+    if (typeof o.status === 'number') return `HTTP ${o.status}${typeof o.url === 'string' ? ` for ${o.url}` : ''}`;
+    if (typeof o.type === 'string') return `${o.type} event${typeof o.url === 'string' ? ` for ${o.url}` : ''}`;
+    try {
+      const json = JSON.stringify(e);
+      if (json && json !== '{}') return json.slice(0, 200);
+    } catch {
+      /* cyclic */
+    }
+    return o.constructor?.name ?? 'unknown error';
+  }
+  return String(e);
+}
+
 export interface WorkerLogic {
   onMessage(msg: MainToWorker): void;
   /** Resolves when booted (for tests); rejects on a boot failure. */
@@ -96,7 +119,7 @@ export function createWorkerLogic(
       resolveReady();
       schedule();
     } catch (e) {
-      const message = e instanceof Error ? e.message : String(e);
+      const message = describeError(e);
       post({ type: 'fatal', message });
       rejectReady(e);
     }

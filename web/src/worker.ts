@@ -1,6 +1,6 @@
 // The Web Worker: thin glue between postMessage, Pyodide and worker-logic.ts.
 import { loadPyodide } from 'pyodide';
-import { createWorkerLogic, type PyodideLike } from './worker-logic';
+import { createWorkerLogic, describeError, type PyodideLike } from './worker-logic';
 import { PULAB_FILES } from './pysources';
 import type { MainToWorker, WorkerToMain } from './protocol';
 
@@ -15,3 +15,9 @@ const logic = createWorkerLogic(
   PULAB_FILES,
 );
 scope.onmessage = (ev) => logic.onMessage(ev.data);
+// A rejection nobody awaited (Pyodide fetches some files on the side) ends the boot with a
+// message naming it, instead of an "Uncaught (in promise)" on the page.
+self.addEventListener('unhandledrejection', (ev) => {
+  ev.preventDefault();
+  scope.postMessage({ type: 'fatal', message: describeError(ev.reason) });
+});

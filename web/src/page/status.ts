@@ -39,7 +39,8 @@ export class StatusLine {
     const ready = this.client?.ready === true;
     document.documentElement.dataset.ready = ready ? '1' : '0';
     if (b.failed) {
-      el.replaceChildren(h('span', { class: 'status-fatal', role: 'alert' }, `${t('bootFailed')}: ${b.failed}. ${t('fatalHelp')}`));
+      el.replaceChildren(h('span', { class: 'status-fatal', role: 'alert' }, `${t('bootFailed')}: ${b.failed}. ${t('fatalHelp')}`),
+        h('button', { type: 'button', class: 'status-reload', onclick: () => location.reload() }, t('reload')));
     } else if (!ready) {
       el.replaceChildren(h('span', {}, t(b.stage)), h('progress', { max: 1, value: b.fraction }));
     } else {
