@@ -9,7 +9,7 @@ import type { PulabClient } from './rpc';
 import { STORAGE_KEY, initialInput, type Initial } from './state';
 import { fieldNotes, stateBanner } from './state-notice';
 import type { PanelContext, PanelId } from './panels/panel';
-import { panelById } from './panels/registry';
+import { PANELS, panelById } from './panels/registry';
 import { openChapter } from './panels/docs';
 import { ComputeSession } from './page/session';
 import { InputForm } from './page/form';
@@ -19,6 +19,10 @@ import { langSwitch, renderHeader } from './page/header';
 import { handleLinks } from './page/links';
 import { LANG_KEY, load, store } from './page/storage';
 import { registerOffline } from './offline';
+import { mark } from './page/marks';
+
+/** Panels that call Python themselves: rendered again when it becomes ready. */
+const PYTHON_PANELS = PANELS.filter((p) => p.needsPython).map((p) => p.id);
 
 export class App {
   readonly embed: PanelId | null;
@@ -30,6 +34,7 @@ export class App {
   private init: Initial;
 
   constructor(private root: HTMLElement) {
+    mark('app');
     const params = new URLSearchParams(location.search);
     this.embed = panelById(params.get('embed'))?.id ?? null;
     const chapter = params.get('chapter');
@@ -38,14 +43,15 @@ export class App {
     setLang(langParam === 'zh' || langParam === 'en' ? langParam : defaultLang(navigator.languages, load(LANG_KEY)));
     this.init = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY));
     this.session = new ComputeSession(this.init.input, this.embed !== null, {
-      report: () => this.renderPanels(),
+      report: (same) => (same ? this.renderPanels(PYTHON_PANELS) : this.renderPanels()),
       sim: () => this.renderPanels(['current', 'pll', 'docs']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     });
     this.form = new InputForm(root, this.session);
     this.layout = new Layout(root, this.embed);
-    this.status = new StatusLine(root, () => this.session.lastMs);
+    this.session.wantsSim = PANELS.some((p) => p.usesSim && (this.embed === null || p.id === this.embed));
+    this.status = new StatusLine(root, this.session);
     this.useInitial(this.init);
     window.addEventListener('hashchange', () => {
       const next = initialInput(location.hash, null);
@@ -81,7 +87,8 @@ export class App {
     const onReady = (ms: number): void => {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
       registerOffline();
-      this.renderPanels();
+      document.documentElement.dataset.pythonBoot = client.bootFrom;
+      this.renderPanels(PYTHON_PANELS);
       this.session.schedule(0);
     };
     this.status.follow(client, onReady);
@@ -120,6 +127,7 @@ export class App {
       : renderHeader(this.root, this.session, lang));
     if (!this.embed) this.form.render();
     this.renderPanels();
+    this.session.publish();
     this.status.render();
     this.showErrors();
     this.showStateBanner();

@@ -215,6 +215,11 @@ const en = {
   bootSlow: 'Python is still loading…',
   fatalHelp: 'Check the connection and reload: your input stays in the link. (The calculator needs WebAssembly and Web Workers; a strict CSP must allow \'wasm-unsafe-eval\'.)',
   latency: 'last report {ms} ms in Python',
+  // instant start (issue 8)
+  numbers_build: 'Numbers for the default motor, computed when the site was built; Python is starting',
+  numbers_cached: 'Numbers from your last visit; Python is starting',
+  numbers_waiting: 'Your input is kept and computed as soon as Python is ready',
+  boot_snapshot: 'Starting Python from its snapshot…',
   // issue 14: hostile or damaged state, faults
   state_link_partly: 'The link you opened was partly broken: the fields below could not be used, everything else was kept.',
   state_link_unusable: 'The link you opened holds no usable state, so the {shown} is shown instead.',
@@ -452,6 +457,11 @@ const zh: Record<Key, string> = {
   bootSlow: 'Python 仍在加载…',
   fatalHelp: '请检查网络连接后重新加载：您的输入保留在链接中。（计算器需要 WebAssembly 和 Web Worker；严格的 CSP 须允许 \'wasm-unsafe-eval\'。）',
   latency: '上次报告 Python 耗时 {ms} ms',
+  // instant start (issue 8)
+  numbers_build: '默认电机的数值（构建网站时算好）；Python 正在启动',
+  numbers_cached: '上次访问时的数值；Python 正在启动',
+  numbers_waiting: '您的输入已保留，Python 就绪后立即计算',
+  boot_snapshot: '正在从快照启动 Python…',
   // issue 14: hostile or damaged state, faults
   state_link_partly: '您打开的链接部分损坏：下列字段无法使用，其余内容均已保留。',
   state_link_unusable: '您打开的链接中没有可用的状态，因此显示{shown}。',

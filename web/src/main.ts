@@ -1,17 +1,18 @@
 // Start Python first (the worker boots Pyodide while the page's own code loads), then the page.
-import { PulabClient, type WorkerLike } from './rpc';
+import { startRuntime } from './runtime';
 
-function startWorker(name: string): PulabClient {
-  const worker = new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name });
-  const c = new PulabClient(worker as unknown as WorkerLike);
-  c.init(new URL('pyodide/', document.baseURI).href, 60_000);
-  return c;
-}
-const client = startWorker('pulab');
+const client = startRuntime('report');
+
+// A stylesheet that fails to load (blocked, offline) must not stop the page's code: Vite's preload
+// would reject the import below; without the CSS the form and the numbers still work.
+window.addEventListener('vite:preloadError', (ev) => {
+  const e = (ev as Event & { payload?: unknown }).payload;
+  if (e instanceof Error && /CSS/.test(e.message)) ev.preventDefault();
+});
 
 void import('./app').then(({ App }) => {
   const app = new App(document.getElementById('app')!);
-  app.session.simWorkerFactory = () => startWorker('pulab-sim');
+  app.session.simWorkerFactory = () => startRuntime('sim');
   app.start(client);
 }).catch((e: unknown) => {
   // The page's own code did not load (offline, blocked, removed by a new deployment): say so in

@@ -10,6 +10,7 @@ import type { Panel } from './panel';
 
 export const pllPanel: Panel = {
   id: 'pll',
+  usesSim: true,
   title: 'p_pll',
   render(el, ctx) {
     const { report, simReport } = ctx;
