@@ -45,6 +45,7 @@ from __future__ import annotations
 from .errors import InputError
 from .gains import pi_integer_ideals
 from .inputs import normalize
+from .messages import to_zh
 from .report import current_pi_section, input_bases, input_raw, report
 from .vendor import RAW_SCALE, VENDOR_RESULTS
 
@@ -79,13 +80,13 @@ def _state(value: int, ideal: float, flags) -> str:
 
 def _computed(value: int, ideal: float, error_pct: float, flags) -> dict:
     return {"status": _state(value, ideal, flags), "value": value, "ideal": ideal,
-            "error_pct": error_pct, "message": None}
+            "error_pct": error_pct, "message": None, "message_zh": None}
 
 
 def _failed(e: InputError) -> dict:
     status = "div0" if "divides by zero" in e.message else "invalid"
     return {"status": status, "value": None, "ideal": None, "error_pct": None,
-            "message": f"{e.field}: {e.message}"}
+            "message": f"{e.field}: {e.message}", "message_zh": f"{e.field}: {to_zh(e.message)}"}
 
 
 def _pi_integers(n: dict, out: dict, names) -> None:
@@ -160,8 +161,9 @@ def evaluate(inp: dict, profile: str | None = None, only=None) -> dict:
     Returns
     -------
     dict
-        ``integers``: {path: {status, value, ideal, error_pct, message}} (value, ideal and
-        error_pct are None for ``div0`` and ``invalid``; message is ``field: message`` then);
+        ``integers``: {path: {status, value, ideal, error_pct, message, message_zh}} (value,
+        ideal and error_pct are None for ``div0`` and ``invalid``; message is
+        ``field: message`` then, message_zh the same in Chinese);
         ``raw``: the raw firmware inputs; ``intermediates``: ``m_BaseL`` for inovance;
         ``inductance_unit``; ``raw_sources``: {raw field: the SI input path it was converted
         from} (fields given directly in ``raw`` are left out).

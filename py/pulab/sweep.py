@@ -42,6 +42,7 @@ from typing import NamedTuple
 
 from .errors import InputError
 from .inputs import _CHOICES, SECTIONS, real
+from .messages import to_zh
 from .integers import RAW_ONLY_NAMES, STATUSES, evaluate, integer_names, profile_name
 from .vendor import raw_value, round_half_away
 
@@ -175,6 +176,7 @@ class _Point(NamedTuple):
     raw: dict | None
     intermediates: dict
     error: str | None
+    error_zh: str | None
     unit: str | None = None
     raw_sources: dict = {}
 
@@ -185,10 +187,11 @@ def _evaluate(plan: Plan, inp: dict, only=None) -> _Point:
     except InputError as err:
         msg = f"{err.field}: {err.message}"
         failed = {"status": "invalid", "value": None, "ideal": None, "error_pct": None,
-                  "message": msg}
-        return _Point({name: failed for name in (only or plan.names)}, None, {}, msg)
-    return _Point(e["integers"], e["raw"], e["intermediates"], None, e["inductance_unit"],
-                  e["raw_sources"])
+                  "message": msg, "message_zh": f"{err.field}: {to_zh(err.message)}"}
+        return _Point({name: failed for name in (only or plan.names)}, None, {}, msg,
+                      failed["message_zh"])
+    return _Point(e["integers"], e["raw"], e["intermediates"], None, None,
+                  e["inductance_unit"], e["raw_sources"])
 
 
 def _changes(a: dict | None, b: dict | None) -> dict:
@@ -264,9 +267,9 @@ def _boundaries(plan: Plan, name: str, axis: str, a, pa: _Point, b, pb: _Point, 
                "from": status, "to": new, "before": before, "at": at, "index": index,
                "other": other, "raw": _changes(p0.raw, p1.raw),
                "intermediates": _changes(p0.intermediates, p1.intermediates)}
-        message = p1.states[name]["message"] or p0.states[name]["message"]
-        if message:
-            rec["message"] = message
+        failed = p1.states[name] if p1.states[name]["message"] else p0.states[name]
+        if failed["message"]:
+            rec["message"], rec["message_zh"] = failed["message"], failed["message_zh"]
         out.append(rec)
         if new == target or at == b:
             break
@@ -289,8 +292,8 @@ def chunk(plan: Plan, start: int = 0, count: int | None = None) -> dict:
     Returns
     -------
     dict
-        ``start``, ``count``, ``total``; ``points``: ``x``, ``y`` (2-D only) and ``error``
-        (``field: message`` or None) per point, ``integers`` {name: {value, error_pct,
+        ``start``, ``count``, ``total``; ``points``: ``x``, ``y`` (2-D only), ``error``
+        (``field: message`` or None) and ``error_zh`` per point, ``integers`` {name: {value, error_pct,
         status}} as columns, ``intermediates`` {name: column}; ``summary`` (see :func:`merge`).
     """
     total = plan.total
@@ -312,7 +315,7 @@ def chunk(plan: Plan, start: int = 0, count: int | None = None) -> dict:
     stop = start + count
     cols = {name: {"value": [], "error_pct": [], "status": []} for name in plan.names}
     inter_names: list = []
-    pts: dict = {"x": [], "error": [], "integers": cols, "intermediates": {}}
+    pts: dict = {"x": [], "error": [], "error_zh": [], "integers": cols, "intermediates": {}}
     if plan.y:
         pts["y"] = []
     boundaries: list = []
@@ -325,6 +328,7 @@ def chunk(plan: Plan, start: int = 0, count: int | None = None) -> dict:
         if plan.y:
             pts["y"].append(ys[j])
         pts["error"].append(p.error)
+        pts["error_zh"].append(p.error_zh)
         for key, v in p.intermediates.items():
             if key not in pts["intermediates"]:
                 inter_names.append(key)
@@ -374,7 +378,7 @@ def _worst_entry(plan: Plan, name: str, k: int, s: dict, nx: int) -> dict:
     xv, yv = plan.x.values[k % nx], ys[k // nx]
     return {"name": name, "index": k, "x": xv, "y": yv, "status": s["status"],
             "value": s["value"], "error_pct": s["error_pct"], "message": s["message"],
-            "input": _input_at(plan, xv, yv)}
+            "message_zh": s["message_zh"], "input": _input_at(plan, xv, yv)}
 
 
 def merge(plan: Plan, summaries: list) -> dict:
