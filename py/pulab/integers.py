@@ -47,7 +47,7 @@ from .gains import pi_integer_ideals
 from .inputs import normalize
 from .messages import to_zh
 from .report import current_pi_section, input_bases, input_raw, report
-from .vendor import RAW_SCALE, VENDOR_RESULTS
+from .vendor import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS
 
 __all__ = ["evaluate", "integer_names", "profile_name", "STATUSES", "DEFAULT_PROFILE",
            "INOVANCE_NAMES", "RAW_ONLY_NAMES"]
@@ -103,22 +103,46 @@ def _pi_integers(n: dict, out: dict, names) -> None:
         out[name] = _computed(g[key], ideal, 100.0 * (g[key] - ideal) / ideal, ())
 
 
+_MEMO: dict = {}
+_MEMO_SIZE = 20_000
+
+
+def _vendor(name: str, raw: dict, unit: str) -> tuple:
+    """(state, m_BaseL) of one vendor result, reused while the raw fields it reads repeat.
+
+    A sweep over one input changes few raw fields; the other results (FreqPer when the
+    current varies, …) are then computed once instead of at every point.
+    """
+    # LD and LQ run the same statements on their own raw field: one entry serves both.
+    key = ("L" if name in ("LD", "LQ") else name, unit) + tuple(raw[k] for k in VENDOR_READS[name])
+    hit = _MEMO.get(key)
+    if hit is not None:
+        return hit
+    try:
+        r = VENDOR_RESULTS[name](raw, unit)
+        state = _computed(r["value"], r["ideal"], r["error_pct"], r["flags"])
+        hit = state, r["trace"][1]["value"] if name in ("LD", "LQ") else None
+    except InputError as e:
+        hit = _failed(e), None
+    if len(_MEMO) >= _MEMO_SIZE:
+        _MEMO.clear()
+    _MEMO[key] = hit
+    return hit
+
+
 def _inovance(inp: dict, only) -> dict:
     n = normalize(inp)
     raw = input_raw(n)
     unit = n["conventions"]["inductance_unit"]
     names = INOVANCE_NAMES if only is None else only
     out: dict = {}
+    base_l = None
     for name in names:
         if name.startswith("vendor."):
-            try:
-                r = VENDOR_RESULTS[name[7:]](raw, unit)
-            except InputError as e:
-                out[name] = _failed(e)
-                continue
-            out[name] = _computed(r["value"], r["ideal"], r["error_pct"], r["flags"])
+            state, m_base_l = _vendor(name[7:], raw, unit)
+            out[name] = dict(state)  # the memo keeps its own
             if name == "vendor.LD":
-                base_l = r["trace"][1]["value"]
+                base_l = m_base_l
     pi_names = [name for name in names if name in _PI_NAMES]
     if pi_names:
         _pi_integers(n, out, pi_names)

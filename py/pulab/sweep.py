@@ -200,7 +200,8 @@ def _changes(a: dict | None, b: dict | None) -> dict:
     return {k: [a[k], b[k]] for k in a if k in b and a[k] != b[k]}
 
 
-def _bisect(plan: Plan, name: str, axis: str, lo, hi, other, lo_status: str) -> tuple:
+def _bisect(plan: Plan, name: str, axis: str, lo, lo_point: _Point, hi, hi_point: _Point,
+            other, lo_status: str) -> tuple:
     """The last value with ``lo_status`` and the first after it with another status."""
     ax = plan.x if axis == "x" else plan.y
     integer, path = ax.integer, ax.path
@@ -209,7 +210,6 @@ def _bisect(plan: Plan, name: str, axis: str, lo, hi, other, lo_status: str) -> 
         return _evaluate(plan, _input_at(plan, v, other) if axis == "x"
                          else _input_at(plan, other, v), (name,))
 
-    lo_point, hi_point = at(lo), at(hi)
     for _ in range(2100):  # ≤ 2098 halvings separate two doubles; ~55 in practice
         step = None if integer or name not in RAW_ONLY_NAMES else \
             _raw_step(lo_point, hi_point, path)
@@ -259,9 +259,9 @@ def _boundaries(plan: Plan, name: str, axis: str, a, pa: _Point, b, pb: _Point, 
     """Every status change of ``name`` between axis values a and b (a chain a→c→b too)."""
     out = []
     status, target = pa.states[name]["status"], pb.states[name]["status"]
-    lo = a
+    lo, plo = a, pa
     for _ in range(len(STATUSES)):
-        before, p0, at, p1 = _bisect(plan, name, axis, lo, b, other, status)
+        before, p0, at, p1 = _bisect(plan, name, axis, lo, plo, b, pb, other, status)
         new = p1.states[name]["status"]
         rec = {"name": name, "axis": axis, "path": (plan.x if axis == "x" else plan.y).path,
                "from": status, "to": new, "before": before, "at": at, "index": index,
@@ -273,7 +273,7 @@ def _boundaries(plan: Plan, name: str, axis: str, a, pa: _Point, b, pb: _Point, 
         out.append(rec)
         if new == target or at == b:
             break
-        status, lo = new, at
+        status, lo, plo = new, at, p1
     return out
 
 

@@ -41,7 +41,7 @@ from .qformat import iqsat
 __all__ = [
     "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_from_si", "round_half_away",
     "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
-    "vendor_results", "VENDOR_RESULTS", "current_pi_step", "PiStep", "to_si",
+    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "current_pi_step", "PiStep", "to_si",
 ]
 
 SQRT3 = math.sqrt(3.0)
@@ -283,6 +283,19 @@ VENDOR_RESULTS = {
     "FluxRotor": lambda raw, unit: flux_rotor(raw, freq_per(raw)["value"]),
     "pm_maxout_vol": lambda raw, unit: max_output_voltage(raw)[0],
     "maxu": lambda raw, unit: max_output_voltage(raw)[1],
+}
+
+
+#: The raw fields each vendor result reads (the C statements of its block and the blocks it
+#: reads), so a caller may reuse a result while these stay the same.
+VENDOR_READS = {
+    "Rpm": ("RsPm", "Current", "Voltage"),
+    "LD": ("Voltage", "Current", "FullFreq01", "LD"),
+    "LQ": ("Voltage", "Current", "FullFreq01", "LQ"),
+    "FreqPer": ("FreqRated01", "FullFreq01"),
+    "FluxRotor": ("BemfVolt", "Voltage", "FreqRated01", "FullFreq01"),
+    "pm_maxout_vol": ("uDCFilter", "Voltage"),
+    "maxu": ("uDCFilter", "Voltage"),
 }
 
 

@@ -251,3 +251,26 @@ def test_cli_sweep_text_and_csv(tmp_path):
                          capture_output=True, text=True, env=env)
     assert bad.returncode == 2 and bad.stderr.startswith("error: sweep.x: ")
     assert len(bad.stderr.strip().splitlines()) == 1
+
+
+def test_vendor_reads_lists_every_raw_field_a_result_depends_on():
+    # The sweep reuses a vendor result while the raw fields VENDOR_READS names repeat; changing
+    # any other field must leave the result as it is (value, flags and whole trace).
+    import random
+    from pulab.vendor import RAW_FIELDS, VENDOR_READS, VENDOR_RESULTS
+    rng = random.Random(3)
+    for _ in range(200):
+        raw = {k: rng.choice((1, 2, 7, 150, 1500, 22000, 65535, rng.randrange(65536)))
+               for k in RAW_FIELDS}
+        for name, f in VENDOR_RESULTS.items():
+            other = dict(raw)
+            for k in RAW_FIELDS:
+                if k not in VENDOR_READS[name]:
+                    other[k] = rng.randrange(65536)
+            try:
+                a = f(raw, "10uH")
+            except InputError as e:
+                with pytest.raises(InputError, match=e.message[:20]):
+                    f(other, "10uH")
+                continue
+            assert f(other, "10uH") == a, name
