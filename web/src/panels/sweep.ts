@@ -13,8 +13,8 @@ import type { Panel, PanelContext } from './panel';
 
 interface AxisForm { path: string; start: string; stop: string; n: string; scale: 'linear' | 'log' }
 
-/** Points per worker call: ≈ 50–100 ms in Pyodide, so reports typed meanwhile are not held up. */
-const CHUNK = 100;
+/** Points in the first worker call; later calls adapt (family/chunks.ts). */
+const CHUNK = 40;
 
 const st = {
   x: null as AxisForm | null,
