@@ -2,7 +2,7 @@
 // findings, computed by pulab.batch in the worker chunk by chunk (progress, cancel). The CSV
 // downloaded is the text Python wrote, the same as `pulab batch motors.csv`.
 import { h, num } from '../dom';
-import { errText, getLang, t } from '../i18n';
+import { errText, getLang, t, type Key } from '../i18n';
 import type { ApiErr } from '../protocol';
 import { runChunks, type ChunkJob } from '../family/chunks';
 import type { Panel, PanelContext } from './panel';
@@ -25,14 +25,15 @@ const st = {
   rows: [] as string[][],
   csv: [] as string[],
   error: null as ApiErr | null,
-  note: '',
+  /** The finished run's line, translated at render time. */
+  note: null as null | { key: Key; vars: Record<string, string | number> },
 };
 
 async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
   if (!ctx.client || !st.text) return;
   const client = ctx.client;
   const job: ChunkJob = { cancelled: false };
-  Object.assign(st, { job, done: 0, total: 0, columns: [], rows: [], csv: [], error: null, note: '' });
+  Object.assign(st, { job, done: 0, total: 0, columns: [], rows: [], csv: [], error: null, note: null });
   batchPanel.render(el, ctx);
   const first = await client.call('batch', { csv: st.text, start: 0, count: 0 });
   if (!first.result.ok) {
@@ -55,8 +56,8 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
   if (end !== 'done' && end !== 'cancelled') st.error = end;
   if (st.total === 0) st.csv = [first.result.csv as string];
   const bad = st.rows.filter((r) => r[st.columns.indexOf('error')]).length;
-  st.note = end === 'cancelled' ? t('swCancelled', { done: st.done, total: st.total })
-    : t('btDone', { n: st.total, bad, s: ((performance.now() - t0) / 1000).toFixed(2) });
+  st.note = end === 'cancelled' ? { key: 'swCancelled', vars: { done: st.done, total: st.total } }
+    : { key: 'btDone', vars: { n: st.total, bad, s: ((performance.now() - t0) / 1000).toFixed(2) } };
   st.job = null;
   document.documentElement.dataset.batchDone = String(st.done);
   batchPanel.render(el, ctx);
@@ -91,14 +92,14 @@ export const batchPanel: Panel = {
   id: 'batch',
   title: 'p_batch',
   render(el, ctx) {
-    const key = [getLang(), !!ctx.client, !!st.job, st.note, st.file, st.error?.message ?? ''].join('|');
+    const key = [getLang(), !!ctx.client, !!st.job, JSON.stringify(st.note), st.file, st.error?.message ?? ''].join('|');
     if (el.querySelector('.batch') && el.dataset.rendered === key) return;
     const running = st.job !== null;
     const pick = (ev: Event) => {
       const f = (ev.target as HTMLInputElement).files?.[0];
       if (!f) return;
       void f.text().then((text) => {
-        Object.assign(st, { file: f.name, text, rows: [], csv: [], columns: [], note: '', error: null, done: 0, total: 0 });
+        Object.assign(st, { file: f.name, text, rows: [], csv: [], columns: [], note: null, error: null, done: 0, total: 0 });
         void run(el, ctx);
       });
     };
@@ -110,7 +111,7 @@ export const batchPanel: Panel = {
         h('button', { type: 'button', class: 'cancel-batch', disabled: !running, onclick: () => { if (st.job) st.job.cancelled = true; } }, t('swCancel')),
         h('progress', { class: 'batch-progress', max: Math.max(1, st.total), value: st.done }),
         h('button', { type: 'button', class: 'download-batch', disabled: running || st.csv.length === 0, onclick: download }, t('btDownload')),
-        h('span', { class: 'hint batch-note' }, st.file ? `${st.file}: ${st.note}` : '')),
+        h('span', { class: 'hint batch-note' }, st.file ? `${st.file}: ${st.note ? t(st.note.key, st.note.vars) : ''}` : '')),
       st.error ? h('p', { class: 'err', 'data-err-for': st.error.field }, `${st.error.field}: ${errText(st.error)}`) : null,
       st.rows.length ? resultTable() : null,
       st.rows.length > SHOWN ? h('p', { class: 'hint' }, t('btMoreRows', { shown: SHOWN, n: st.rows.length })) : null));

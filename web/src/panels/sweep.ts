@@ -28,7 +28,8 @@ const st = {
   plan: null as Plan | null,
   points: null as Points | null,
   summary: null as Summary | null,
-  note: '' as string,
+  /** The finished run's line, translated at render time. */
+  note: null as null | { key: Key; vars: Record<string, string | number> },
 };
 
 /** Numeric inputs a sweep can vary (the form's number fields, without the simulation's). */
@@ -57,7 +58,7 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
   const client = ctx.client;
   const req = request(effectiveInput(ctx.input));
   const job: ChunkJob = { cancelled: false };
-  Object.assign(st, { job, done: 0, total: 0, error: null, plan: null, points: null, summary: null, note: '' });
+  Object.assign(st, { job, done: 0, total: 0, error: null, plan: null, points: null, summary: null, note: null });
   sweepPanel.render(el, ctx);
   const { result } = await client.call('sweep', { ...req, op: 'plan' });
   if (!result.ok) {
@@ -84,7 +85,7 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
     const m = await client.call('sweep', { ...req, op: 'merge', summaries });
     if (m.result.ok) st.summary = m.result.summary as unknown as Summary;
   }
-  st.note = end === 'cancelled' ? t('swCancelled', { done: st.done, total: st.total }) : t('swDone', { n: st.total, s: ((performance.now() - t0) / 1000).toFixed(2) });
+  st.note = end === 'cancelled' ? { key: 'swCancelled', vars: { done: st.done, total: st.total } } : { key: 'swDone', vars: { n: st.total, s: ((performance.now() - t0) / 1000).toFixed(2) } };
   st.job = null;
   document.documentElement.dataset.sweepDone = String(st.done);
   sweepPanel.render(el, ctx);
@@ -169,7 +170,7 @@ export const sweepPanel: Panel = {
     if (!st.y) st.y = { ...defaultAxis(ctx, 'motor.rated_voltage_v', 0.1, 10, 30) };
     // Typing in the motor re-renders every panel; the sweep's DOM (form, plots) is rebuilt only
     // when the sweep's own state or the language changed.
-    const key = [getLang(), !!ctx.client, !!st.job, st.note, st.twoD, st.error?.message ?? '', st.total].join('|');
+    const key = [getLang(), !!ctx.client, !!st.job, JSON.stringify(st.note), st.twoD, st.error?.message ?? '', st.total].join('|');
     if (el.querySelector('.sweep') && el.dataset.rendered === key) return;
     const paths = sweepPaths(ctx.input);
     const running = st.job !== null;
@@ -188,7 +189,7 @@ export const sweepPanel: Panel = {
         h('button', { type: 'button', class: 'cancel-sweep', disabled: !running, onclick: () => { if (st.job) st.job.cancelled = true; } }, t('swCancel')),
         h('progress', { class: 'sweep-progress', max: Math.max(1, st.total), value: st.done }),
         h('span', { class: 'sweep-count' }, st.total ? `${st.done} / ${st.total}` : ''),
-        h('span', { class: 'hint sweep-note' }, st.note)),
+        h('span', { class: 'hint sweep-note' }, st.note ? t(st.note.key, st.note.vars) : '')),
       otherErr ? h('p', { class: 'err' }, otherErr) : null,
       st.plan && st.points && st.summary ? results(st.plan, st.points, st.summary) : null));
     el.dataset.rendered = key;
