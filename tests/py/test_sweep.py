@@ -274,3 +274,28 @@ def test_vendor_reads_lists_every_raw_field_a_result_depends_on():
                     f(other, "10uH")
                 continue
             assert f(other, "10uH") == a, name
+
+
+def test_another_profile_is_swept_through_the_report(monkeypatch):
+    # Issue 12's profiles (report["profiles"][NAME]["constants"]) are not in this branch yet; a
+    # report wrapped with one synthetic profile checks the path a real one will take.
+    from pulab import integers
+    from pulab.report import report as real_report
+
+    def with_profile(inp):
+        r = real_report(inp)
+        rpm = r["vendor"]["Rpm"]
+        r["profiles"] = {"toy": {"constants": {"RS": {"value": rpm["value"], "ideal": rpm["ideal"],
+                                                     "error_pct": rpm["error_pct"],
+                                                     "flags": rpm["flags"]}}}}
+        return r
+
+    monkeypatch.setattr(integers, "report", with_profile)
+    s = sweep({"input": _seed(), "profile": "toy",
+               "x": {"path": "motor.rated_current_a", "start": 1, "stop": 30, "n": 30}})
+    assert s["names"] == ["profiles.toy.constants.RS"]
+    (a, b) = _bounds(s, "profiles.toy.constants.RS")
+    assert (a["from"], a["to"], b["to"]) == ("ok", "store", "wrap")
+    ref = sweep({"input": _seed(), "x": {"path": "motor.rated_current_a", "start": 1, "stop": 30,
+                                         "n": 30}})
+    assert [x["at"] for x in (a, b)] == [x["at"] for x in _bounds(ref, "vendor.Rpm")]

@@ -20,6 +20,7 @@ const st = {
   x: null as AxisForm | null,
   y: null as AxisForm | null,
   twoD: false,
+  profile: 'inovance',
   show: 'vendor.LD',
   job: null as ChunkJob | null,
   done: 0,
@@ -43,12 +44,18 @@ function defaultAxis(ctx: PanelContext, path: string, lo: number, hi: number, n:
   return { path, start: fmt(v * lo), stop: fmt(v * hi), n: String(n), scale: 'log' };
 }
 
+/** The seed's Inovance code, and every profile the report carries (issue 12: `profiles.NAME`). */
+function profiles(ctx: PanelContext): string[] {
+  const more = Object.keys((ctx.report as unknown as { profiles?: Record<string, unknown> } | null)?.profiles ?? {});
+  return ['inovance', ...more.filter((p) => p !== 'inovance')];
+}
+
 function axisReq(a: AxisForm): Record<string, unknown> {
   return { path: a.path, start: Number(a.start), stop: Number(a.stop), n: Number(a.n), scale: a.scale };
 }
 
 function request(input: Input): Record<string, unknown> {
-  const req: Record<string, unknown> = { input, x: axisReq(st.x as AxisForm), profile: 'inovance' };
+  const req: Record<string, unknown> = { input, x: axisReq(st.x as AxisForm), profile: st.profile };
   if (st.twoD && st.y) req.y = axisReq(st.y);
   return req;
 }
@@ -178,6 +185,9 @@ export const sweepPanel: Panel = {
     const otherErr = st.error && !st.error.field.startsWith('sweep.x.') && !st.error.field.startsWith('sweep.y.') ? `${st.error.field}: ${errText(st.error)}` : null;
     el.replaceChildren(h('div', { class: 'sweep' },
       h('p', { class: 'hint' }, t('swIntro')),
+      h('label', { class: 'field inline' }, h('span', { class: 'lbl' }, t('swProfile')),
+        h('select', { name: 'sweep.profile', onchange: (ev: Event) => { st.profile = (ev.target as HTMLSelectElement).value; } },
+          profiles(ctx).map((p) => h('option', { value: p, selected: p === st.profile }, p)))),
       axisControls('x', st.x, paths, () => undefined),
       h('label', { class: 'field inline' }, h('input', { type: 'checkbox', name: 'sweep.twoD', checked: st.twoD, onchange: (ev: Event) => {
         st.twoD = (ev.target as HTMLInputElement).checked;
