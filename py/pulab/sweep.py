@@ -161,9 +161,10 @@ def make_plan(req: dict) -> Plan:
 
 def _set(inp: dict, path: str, value) -> dict:
     section, _, key = path.partition(".")
-    out = dict(inp)
-    out[section] = {**(inp.get(section) or {}), key: value}
-    return out
+    sec = inp.get(section)
+    if sec is not None and not isinstance(sec, dict):
+        return inp  # normalize names the section that is not an object, at every point
+    return {**inp, section: {**(sec or {}), key: value}}
 
 
 def _input_at(plan: Plan, xv, yv) -> dict:

@@ -299,3 +299,15 @@ def test_another_profile_is_swept_through_the_report(monkeypatch):
     ref = sweep({"input": _seed(), "x": {"path": "motor.rated_current_a", "start": 1, "stop": 30,
                                          "n": 30}})
     assert [x["at"] for x in (a, b)] == [x["at"] for x in _bounds(ref, "vendor.Rpm")]
+
+
+@pytest.mark.parametrize("inp", [{"motor": 5}, {"motor": None}, {"raw": []}, {"drive": "x"},
+                                 {"motor": {"rated_current_a": "abc"}}, {"sim": 3}, {"x": {}}])
+def test_hostile_inputs_become_invalid_points_never_exceptions(inp):
+    for op in ("sweep", "chunk"):
+        out = json.loads(sweep_json(json.dumps({"input": inp, "op": op, "x": {
+            "path": "motor.rated_current_a", "start": 1, "stop": 2, "n": 3}})))
+        assert out["ok"] is True
+        pts = (out.get("sweep") or out["chunk"])["points"]
+        assert all(e for e in pts["error"]) and all(has_chinese(e.split(": ", 1)[1])
+                                                    for e in pts["error"]), pts["error"]
