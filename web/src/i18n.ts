@@ -262,6 +262,11 @@ const en = {
   btDownload: 'Download CSV',
   btDone: '{n} rows in {s} s, {bad} with errors',
   btMoreRows: 'The first {shown} of {n} rows are shown; the CSV has them all.',
+  // instant start (issue 8)
+  numbers_build: 'Numbers for the default motor, computed when the site was built; Python is starting',
+  numbers_cached: 'Numbers from your last visit; Python is starting',
+  numbers_waiting: 'Your input is kept and computed as soon as Python is ready',
+  boot_snapshot: 'Starting Python from its snapshot…',
 };
 
 export type Key = keyof typeof en;
@@ -526,6 +531,11 @@ const zh: Record<Key, string> = {
   btDownload: '下载 CSV',
   btDone: '{n} 行，用时 {s} s，其中 {bad} 行出错',
   btMoreRows: '显示前 {shown} 行，共 {n} 行；CSV 中包含全部。',
+  // instant start (issue 8)
+  numbers_build: '默认电机的数值（构建网站时算好）；Python 正在启动',
+  numbers_cached: '上次访问时的数值；Python 正在启动',
+  numbers_waiting: '您的输入已保留，Python 就绪后立即计算',
+  boot_snapshot: '正在从快照启动 Python…',
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };
