@@ -91,6 +91,7 @@ function resultTable(): HTMLElement {
 export const batchPanel: Panel = {
   id: 'batch',
   title: 'p_batch',
+  needsPython: true,
   render(el, ctx) {
     const key = [getLang(), !!ctx.client, !!st.job, JSON.stringify(st.note), st.file, st.error?.message ?? ''].join('|');
     if (el.querySelector('.batch') && el.dataset.rendered === key) return;

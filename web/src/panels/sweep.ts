@@ -172,6 +172,7 @@ function results(plan: Plan, pts: Points, sum: Summary): HTMLElement[] {
 export const sweepPanel: Panel = {
   id: 'sweep',
   title: 'p_sweep',
+  needsPython: true,
   render(el, ctx) {
     if (!st.x) st.x = defaultAxis(ctx, 'motor.rated_current_a', 0.1, 100, 400);
     if (!st.y) st.y = { ...defaultAxis(ctx, 'motor.rated_voltage_v', 0.1, 10, 30) };
