@@ -1,6 +1,8 @@
-"""Command line: ``python -m pulab report INPUT.json [--format json|text]``.
+"""Command line: ``python -m pulab report INPUT.json [--format json|text]``,
+``python -m pulab trace FILE.c --target c28x --set NAME=VALUE …``.
 
-Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr.
+Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
+(for code, ``error: code: LINE:COLUMN: MESSAGE``).
 """
 
 from __future__ import annotations
@@ -11,6 +13,7 @@ import sys
 
 from .errors import InputError
 from .report import format_text, report
+from .ctrace.cli import add_trace_parser, trace_main
 
 
 def main(argv: list | None = None) -> int:
@@ -20,7 +23,10 @@ def main(argv: list | None = None) -> int:
     rp = sub.add_parser("report", help="print the report for an input JSON file ('-' = stdin)")
     rp.add_argument("input")
     rp.add_argument("--format", choices=("json", "text"), default="json")
+    add_trace_parser(sub)
     args = p.parse_args(argv)
+    if args.command == "trace":
+        return trace_main(args)
     try:
         if args.input == "-":
             text = sys.stdin.read()
