@@ -89,11 +89,15 @@ class Evaluator:
         self.record = record
         self.terms: list = []
         self.steps: list = []
+        #: Undefined behaviour (ISO C) met: signed_overflow, division_overflow, shift_count.
+        self.undefined: set = set()
         self.int = checked.target.types["int"]
         self.long = checked.target.types["long"]
 
     # -- recording
     def term(self, node, value: int, flags: list, **extra) -> None:
+        if "signed_overflow" in flags or "shift_count" in flags:
+            self.undefined.update(f for f in flags if f in ("signed_overflow", "shift_count"))
         if self.record:
             t = node.ctype
             d = {"expr": self.source[node.start:node.end], "line": node.line,
@@ -213,6 +217,8 @@ class Evaluator:
             flags = []
             if "wrap" in r.flags:
                 flags.append(_overflow(t))
+                if op == "/" and t.signed:
+                    self.undefined.add("division_overflow")
             if "truncation" in r.flags:
                 flags.append("truncation")
             return r.value, flags
@@ -220,8 +226,10 @@ class Evaluator:
             if b == 0:
                 raise TraceError(node.line, node.column, "remainder by zero")
             # a % b overflows exactly when a / b does (C11 6.5.5p6).
-            return a - trunc_div(a, b) * b, (["signed_overflow"] if t.signed and a == t.min
-                                             and b == -1 else [])
+            if t.signed and a == t.min and b == -1:
+                self.undefined.add("division_overflow")
+                return 0, ["signed_overflow"]
+            return a - trunc_div(a, b) * b, []
         if op == "&":
             return a & b, []
         if op == "|":
@@ -230,8 +238,7 @@ class Evaluator:
             return a ^ b, []
         return self.shift(op, a, b, t)
 
-    @staticmethod
-    def shift(op: str, a: int, count: int, t) -> tuple:
+    def shift(self, op: str, a: int, count: int, t) -> tuple:
         if not 0 <= count < t.bits:
             return (-1 if op == ">>" and a < 0 else 0), ["shift_count"]
         r = CInt(a, t) << count if op == "<<" else CInt(a, t) >> count

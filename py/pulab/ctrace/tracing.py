@@ -65,12 +65,13 @@ def _meaning(note, value: int) -> dict:
 
 
 def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
-                record: bool = True) -> tuple:
-    """Run a compiled program; returns (values, steps). Inputs are validated here."""
+                record: bool = True) -> Evaluator:
+    """Run a compiled program (inputs are validated here); returns the finished
+    :class:`~pulab.ctrace.evaluate.Evaluator` (``values``, ``steps``, ``undefined``)."""
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     ev = Evaluator(checked, _input_values(checked, inputs or {}), gq, record)
-    steps = ev.run()
-    return ev.values, steps
+    ev.run()
+    return ev
 
 
 def trace(code: str, target: str = "c28x", inputs: dict | None = None,
@@ -113,7 +114,8 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
                                  or not 1 <= global_q <= 30):
         raise InputError("global_q", f"must be an integer 1..30, got {global_q!r}")
     inputs = inputs or {}
-    values, steps = run_checked(checked, inputs, global_q)
+    ev = run_checked(checked, inputs, global_q)
+    values, steps = ev.values, ev.steps
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     notes = checked.program.notes
     for s in steps:
