@@ -35,10 +35,12 @@ from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
            "Cast", "Assign", "IncDec", "Call", "Decl", "ExprStmt", "If", "Block",
-           "IQ_FUNCTIONS", "MAX_DEPTH", "ALL_TYPE_NAMES"]
+           "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
-#: Deeper nesting is refused (a recursion guard: pasted garbage must not crash).
-MAX_DEPTH = 200
+#: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
+#: expression trees taller than MAX_HEIGHT (recursion guards: pasted garbage must not crash).
+MAX_DEPTH = 100
+MAX_HEIGHT = 200
 
 #: Every type spelling of every target (a spelling one target lacks is refused by the checker).
 ALL_TYPE_NAMES = frozenset(n for t in TARGETS.values() for n in t.types)
@@ -50,8 +52,9 @@ _IQ_N = re.compile(r"_IQ([1-9]|[12][0-9]|30)mpy")
 #: The IQmath calls understood, with their argument counts.
 IQ_FUNCTIONS = {"_IQmpy": 2, "__IQmpy": 3, "_IQsat": 3, "__IQsat": 3}
 
-_BINARY_LEVELS = [("||",), ("&&",), ("|",), ("^",), ("&",), ("==", "!="),
-                  ("<", ">", "<=", ">="), ("<<", ">>"), ("+", "-"), ("*", "/", "%")]
+_PRECEDENCE = {op: level for level, ops in enumerate(
+    [("||",), ("&&",), ("|",), ("^",), ("&",), ("==", "!="), ("<", ">", "<=", ">="),
+     ("<<", ">>"), ("+", "-"), ("*", "/", "%")]) for op in ops}
 _ASSIGN_OPS = frozenset({"=", "+=", "-=", "*=", "/=", "%=", "<<=", ">>=", "&=", "^=", "|="})
 _SUFFIX = re.compile(r"(?i)(u?(l|ll)?|(l|ll)u)")
 _NOTE = re.compile(r"//\s*@q\s+(?P<name>[A-Za-z_][\w.]*)\s+(?P<q>Q(?:\d+\.)?\d+)"
@@ -62,11 +65,19 @@ _NOTE = re.compile(r"//\s*@q\s+(?P<name>[A-Za-z_][\w.]*)\s+(?P<q>Q(?:\d+\.)?\d+)
 class Node:
     """An expression: ``start``/``end`` are source offsets, ``ctype`` is set by the checker."""
 
-    __slots__ = ("line", "column", "start", "end", "ctype")
+    __slots__ = ("line", "column", "start", "end", "ctype", "height")
+    _kids: tuple = ()
 
     def at(self, first: Token, last: Token) -> "Node":
         self.line, self.column, self.start, self.end = first.line, first.column, first.start, \
             last.end
+        kids = [getattr(self, k) for k in self._kids]
+        if isinstance(self, Call):
+            kids = self.args
+        self.height = 1 + max((k.height for k in kids), default=0)
+        if self.height > MAX_HEIGHT:
+            raise TraceError(first.line, first.column,
+                             f"expression more than {MAX_HEIGHT} operators deep")
         return self
 
 
@@ -86,6 +97,7 @@ class Var(Node):
 
 class Unary(Node):
     __slots__ = ("op", "operand")
+    _kids = ("operand",)
 
     def __init__(self, op: str, operand: Node) -> None:
         self.op, self.operand = op, operand
@@ -93,6 +105,7 @@ class Unary(Node):
 
 class Binary(Node):
     __slots__ = ("op", "left", "right", "operand_type")
+    _kids = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -100,6 +113,7 @@ class Binary(Node):
 
 class Logical(Node):
     __slots__ = ("op", "left", "right")
+    _kids = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -107,6 +121,7 @@ class Logical(Node):
 
 class Cond(Node):
     __slots__ = ("test", "then", "other")
+    _kids = ("test", "then", "other")
 
     def __init__(self, test: Node, then: Node, other: Node) -> None:
         self.test, self.then, self.other = test, then, other
@@ -114,6 +129,7 @@ class Cond(Node):
 
 class Cast(Node):
     __slots__ = ("type_name", "operand")
+    _kids = ("operand",)
 
     def __init__(self, type_name: str, operand: Node) -> None:
         self.type_name, self.operand = type_name, operand
@@ -121,6 +137,7 @@ class Cast(Node):
 
 class Assign(Node):
     __slots__ = ("op", "target", "value", "operand_type")
+    _kids = ("target", "value")
 
     def __init__(self, op: str, target: Var, value: Node) -> None:
         self.op, self.target, self.value = op, target, value
@@ -128,6 +145,7 @@ class Assign(Node):
 
 class IncDec(Node):
     __slots__ = ("op", "prefix", "target", "operand_type")
+    _kids = ("target",)
 
     def __init__(self, op: str, prefix: bool, target: Var) -> None:
         self.op, self.prefix, self.target = op, prefix, target
@@ -493,18 +511,22 @@ class _Parser:
         self.depth -= 1
         return Cond(test, then, other).at(first, self.last())
 
-    def binary(self, level: int) -> Node:
-        if level == len(_BINARY_LEVELS):
-            return self.unary()
-        ops = _BINARY_LEVELS[level]
+    def binary(self, min_prec: int) -> Node:
+        """Precedence climbing: one call per operator precedence actually used."""
         first = self.peek()
-        left = self.binary(level + 1)
-        while self.peek().kind == "op" and self.peek().text in ops:
-            op = self.take().text
-            right = self.binary(level + 1)
-            node = Logical(op, left, right) if op in ("&&", "||") else Binary(op, left, right)
+        left = self.unary()
+        while True:
+            tok = self.peek()
+            prec = _PRECEDENCE.get(tok.text) if tok.kind == "op" else None
+            if prec is None or prec < min_prec:
+                return left
+            self.take()
+            self.deeper()
+            right = self.binary(prec + 1)
+            self.depth -= 1
+            node = Logical(tok.text, left, right) if tok.text in ("&&", "||") else \
+                Binary(tok.text, left, right)
             left = node.at(first, self.last())
-        return left
 
     def unary(self) -> Node:
         tok = self.peek()
@@ -516,7 +538,9 @@ class _Parser:
             return Unary(tok.text, operand).at(tok, self.last())
         if tok.kind == "op" and tok.text in ("++", "--"):
             self.take()
+            self.deeper()
             target = self.unary()
+            self.depth -= 1
             if not isinstance(target, Var):
                 raise _fail(tok, f"'{tok.text}' needs a variable")
             return IncDec(tok.text, True, target).at(tok, self.last())

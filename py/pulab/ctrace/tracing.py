@@ -29,7 +29,7 @@ def compile_code(code: str, target: str = "c28x") -> Checked:
     if target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
-    return check(parse(code, frozenset(t.types)), t)
+    return check(parse(code), t)
 
 
 def _input_values(checked: Checked, inputs: dict) -> dict:
