@@ -25,16 +25,20 @@ MAX_SOURCE_CHARS = 100_000
 _OPERATORS = sorted("""<<= >>= ... -> ++ -- << >> <= >= == != && || += -= *= /= %= &= ^= |=
     + - * / % & | ^ ~ ! < > = ? : ; , ( ) { } [ ] .""".split(), key=len, reverse=True)
 
+# Most frequent first; a directive is a '#' with only blanks before it on its line.
 _TOKEN = re.compile(r"""
-    (?P<space>[ \t\r\f\v]+)
-  | (?P<newline>\n)
+    (?P<name>[A-Za-z_][A-Za-z_0-9]*)
+  | (?P<space>[ \t\r\f\v]+)
+  | (?P<directive>\#(?:\\\n|[^\n])*)
+  | (?P<number>(?:0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?[A-Za-z_0-9]*)
   | (?P<annotation>//[ \t]*@q\b[^\n]*)
   | (?P<comment>//[^\n]*|/\*.*?\*/)
   | (?P<unclosed>/\*)
-  | (?P<number>(?:0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?[A-Za-z_0-9]*)
-  | (?P<name>[A-Za-z_][A-Za-z_0-9]*)
   | (?P<op>""" + "|".join(re.escape(o) for o in _OPERATORS) + r""")
+  | (?P<newline>\n)
+  | (?P<bad>.)
 """, re.S | re.X)
+_SKIP = frozenset({"space", "newline", "comment"})
 
 
 class Token(NamedTuple):
@@ -53,46 +57,31 @@ def tokenize(source: str) -> list:
     if len(source) > MAX_SOURCE_CHARS:
         raise TraceError(1, 1, f"code is longer than {MAX_SOURCE_CHARS} characters")
     tokens: list = []
-    pos, line, line_start = 0, 1, 0
-    at_line_start = True
-    n = len(source)
-    while pos < n:
-        col = pos - line_start + 1
-        if at_line_start and source[pos] == "#":
-            # A preprocessor line, continued by backslash-newline.
-            end = pos
-            while True:
-                nl = source.find("\n", end)
-                if nl < 0:
-                    nl = n
-                if nl > 0 and source[nl - 1] == "\\" and nl < n:
-                    end = nl + 1
-                    continue
-                break
-            text = source[pos:nl]
-            tokens.append(Token("directive", text, line, col, pos, nl))
-            line += text.count("\n")
-            if "\n" in text:
-                line_start = pos + text.rfind("\n") + 1
-            pos = nl
-            continue
-        m = _TOKEN.match(source, pos)
-        if m is None:
-            ch = source[pos]
-            raise TraceError(line, col, f"unexpected character {ch!r}")
+    line, line_start = 1, 0
+    append = tokens.append
+    for m in _TOKEN.finditer(source):
         kind = m.lastgroup
+        if kind == "space":
+            continue
+        pos = m.start()
+        if kind == "newline":
+            line += 1
+            line_start = pos + 1
+            continue
         text = m.group()
-        if kind == "unclosed":
-            raise TraceError(line, col, "comment not closed: */ missing")
-        if kind in ("newline", "comment", "space"):
+        if kind not in _SKIP:
+            if kind == "bad":
+                raise TraceError(line, pos - line_start + 1, f"unexpected character {text!r}")
+            if kind == "unclosed":
+                raise TraceError(line, pos - line_start + 1, "comment not closed: */ missing")
+            if kind == "directive" and source[line_start:pos].strip():
+                raise TraceError(line, pos - line_start + 1, "unexpected character '#'")
+            append(Token(kind, text, line, pos - line_start + 1, pos, m.end()))
+        if kind != "number" and kind != "name" and kind != "op":
             nls = text.count("\n")
             if nls:
                 line += nls
                 line_start = pos + text.rfind("\n") + 1
-                at_line_start = True
-        else:
-            tokens.append(Token(kind, text, line, col, pos, m.end()))
-            at_line_start = kind == "annotation"
-        pos = m.end()
-    tokens.append(Token("end", "", line, pos - line_start + 1, n, n))
+    n = len(source)
+    tokens.append(Token("end", "", line, n - line_start + 1, n, n))
     return tokens

@@ -65,19 +65,11 @@ _NOTE = re.compile(r"//\s*@q\s+(?P<name>[A-Za-z_][\w.]*)\s+(?P<q>Q(?:\d+\.)?\d+)
 class Node:
     """An expression: ``start``/``end`` are source offsets, ``ctype`` is set by the checker."""
 
-    __slots__ = ("line", "column", "start", "end", "ctype", "height")
-    _kids: tuple = ()
+    __slots__ = ("line", "column", "start", "end", "ctype")
 
     def at(self, first: Token, last: Token) -> "Node":
         self.line, self.column, self.start, self.end = first.line, first.column, first.start, \
             last.end
-        kids = [getattr(self, k) for k in self._kids]
-        if isinstance(self, Call):
-            kids = self.args
-        self.height = 1 + max((k.height for k in kids), default=0)
-        if self.height > MAX_HEIGHT:
-            raise TraceError(first.line, first.column,
-                             f"expression more than {MAX_HEIGHT} operators deep")
         return self
 
 
@@ -97,7 +89,6 @@ class Var(Node):
 
 class Unary(Node):
     __slots__ = ("op", "operand")
-    _kids = ("operand",)
 
     def __init__(self, op: str, operand: Node) -> None:
         self.op, self.operand = op, operand
@@ -105,7 +96,6 @@ class Unary(Node):
 
 class Binary(Node):
     __slots__ = ("op", "left", "right", "operand_type")
-    _kids = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -113,7 +103,6 @@ class Binary(Node):
 
 class Logical(Node):
     __slots__ = ("op", "left", "right")
-    _kids = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -121,7 +110,6 @@ class Logical(Node):
 
 class Cond(Node):
     __slots__ = ("test", "then", "other")
-    _kids = ("test", "then", "other")
 
     def __init__(self, test: Node, then: Node, other: Node) -> None:
         self.test, self.then, self.other = test, then, other
@@ -129,7 +117,6 @@ class Cond(Node):
 
 class Cast(Node):
     __slots__ = ("type_name", "operand")
-    _kids = ("operand",)
 
     def __init__(self, type_name: str, operand: Node) -> None:
         self.type_name, self.operand = type_name, operand
@@ -137,7 +124,6 @@ class Cast(Node):
 
 class Assign(Node):
     __slots__ = ("op", "target", "value", "operand_type")
-    _kids = ("target", "value")
 
     def __init__(self, op: str, target: Var, value: Node) -> None:
         self.op, self.target, self.value = op, target, value
@@ -145,7 +131,6 @@ class Assign(Node):
 
 class IncDec(Node):
     __slots__ = ("op", "prefix", "target", "operand_type")
-    _kids = ("target",)
 
     def __init__(self, op: str, prefix: bool, target: Var) -> None:
         self.op, self.prefix, self.target = op, prefix, target
@@ -292,7 +277,10 @@ def _preprocess(tokens: list) -> tuple:
             note = _note(tok)
             notes[note.name] = note
             continue
-        expand(tok, frozenset(), tok)
+        if tok.text in macros and tok.kind == "name":
+            expand(tok, frozenset(), tok)
+        else:
+            out.append(tok)
     return out, notes, global_q
 
 
@@ -334,11 +322,12 @@ class _Parser:
         self.tokens = tokens
         self.pos = 0
         self.depth = 0
+        self.height = 0  # the tree height on the current path: depth plus left-operand chains
         self.type_names: frozenset = frozenset()
 
     # -- token helpers
     def peek(self, k: int = 0) -> Token:
-        return self.tokens[min(self.pos + k, len(self.tokens) - 1)]
+        return self.tokens[self.pos + k]  # the list ends in two 'end' tokens: k <= 1
 
     def take(self) -> Token:
         tok = self.tokens[self.pos]
@@ -350,8 +339,8 @@ class _Parser:
         return self.tokens[self.pos - 1]
 
     def is_op(self, text: str, k: int = 0) -> bool:
-        t = self.peek(k)
-        return t.kind == "op" and t.text == text
+        # Only operator tokens have symbol text (names, numbers and directives cannot).
+        return self.tokens[self.pos + k].text == text
 
     def expect(self, text: str, what: str = "") -> Token:
         tok = self.peek()
@@ -361,9 +350,15 @@ class _Parser:
         raise _fail(tok, f"expected '{text}'{what}, got {got}")
 
     def deeper(self) -> None:
+        """One more level of recursion: bounds the parser's and the evaluator's stacks."""
         self.depth += 1
+        self.height += 1
         if self.depth > MAX_DEPTH:
             raise _fail(self.peek(), f"nested more than {MAX_DEPTH} deep")
+
+    def shallower(self) -> None:
+        self.depth -= 1
+        self.height -= 1
 
     # -- types
     def starts_type(self, k: int = 0) -> bool:
@@ -426,7 +421,7 @@ class _Parser:
                     raise _fail(self.peek(), f"'{{' at {tok.line}:{tok.column} is never closed")
                 body.append(self.statement())
             self.take()
-            self.depth -= 1
+            self.shallower()
             return Block(body).at(tok, self.last())
         if tok.kind == "name" and tok.text == "if":
             self.take()
@@ -439,7 +434,7 @@ class _Parser:
             if self.peek().kind == "name" and self.peek().text == "else":
                 self.take()
                 other = self.statement()
-            self.depth -= 1
+            self.shallower()
             return If(test, then, other).at(tok, self.last())
         if tok.kind == "name" and tok.text == "else":
             raise _fail(tok, "'else' without 'if'")
@@ -470,12 +465,14 @@ class _Parser:
         if tok.kind != "name" or tok.text in BASE_TYPE_WORDS or tok.text in _QUALIFIERS:
             got = "end of code" if tok.kind == "end" else repr(tok.text)
             raise _fail(tok, f"expected {what}, got {got}")
-        self.take()
+        tokens = self.tokens
+        pos = self.pos + 1
         name = tok.text
-        while (self.is_op(".") or self.is_op("->")) and self.peek(1).kind == "name":
-            sep = self.take().text
-            name += sep + self.take().text
-        return Var(name).at(tok, self.last())
+        while tokens[pos].text in (".", "->") and tokens[pos + 1].kind == "name":
+            name += tokens[pos].text + tokens[pos + 1].text
+            pos += 2
+        self.pos = pos
+        return Var(name).at(tok, tokens[pos - 1])
 
     # -- expressions
     def expression(self) -> Node:
@@ -495,7 +492,7 @@ class _Parser:
             self.take()
             value = self.assignment()
             left = Assign(tok.text, left, value).at(first, self.last())
-        self.depth -= 1
+        self.shallower()
         return left
 
     def conditional(self) -> Node:
@@ -508,56 +505,63 @@ class _Parser:
         then = self.expression()
         self.expect(":", " in '?:'")
         other = self.conditional()
-        self.depth -= 1
+        self.shallower()
         return Cond(test, then, other).at(first, self.last())
 
     def binary(self, min_prec: int) -> Node:
         """Precedence climbing: one call per operator precedence actually used."""
         first = self.peek()
         left = self.unary()
+        chain = 0
+        tokens = self.tokens
         while True:
-            tok = self.peek()
-            prec = _PRECEDENCE.get(tok.text) if tok.kind == "op" else None
+            tok = tokens[self.pos]
+            prec = _PRECEDENCE.get(tok.text)
             if prec is None or prec < min_prec:
+                self.height -= chain
                 return left
-            self.take()
+            self.pos += 1
+            chain += 1
+            self.height += 1
+            if self.height > MAX_HEIGHT:
+                raise _fail(tok, f"expression more than {MAX_HEIGHT} operators deep")
             self.deeper()
             right = self.binary(prec + 1)
-            self.depth -= 1
+            self.shallower()
             node = Logical(tok.text, left, right) if tok.text in ("&&", "||") else \
                 Binary(tok.text, left, right)
-            left = node.at(first, self.last())
+            left = node.at(first, tokens[self.pos - 1])
 
     def unary(self) -> Node:
-        tok = self.peek()
-        if tok.kind == "op" and tok.text in ("+", "-", "~", "!"):
+        tok = self.tokens[self.pos]
+        if tok.text in ("+", "-", "~", "!"):
             self.take()
             self.deeper()
             operand = self.unary()
-            self.depth -= 1
+            self.shallower()
             return Unary(tok.text, operand).at(tok, self.last())
-        if tok.kind == "op" and tok.text in ("++", "--"):
+        if tok.text in ("++", "--"):
             self.take()
             self.deeper()
             target = self.unary()
-            self.depth -= 1
+            self.shallower()
             if not isinstance(target, Var):
                 raise _fail(tok, f"'{tok.text}' needs a variable")
             return IncDec(tok.text, True, target).at(tok, self.last())
-        if tok.kind == "op" and tok.text == "(" and self.starts_type(1):
+        if tok.text == "(" and self.starts_type(1):
             self.take()
             type_name = self.type_spelling()
             self.expect(")", " to close the cast")
             self.deeper()
             operand = self.unary()
-            self.depth -= 1
+            self.shallower()
             return Cast(type_name, operand).at(tok, self.last())
         return self.postfix()
 
     def postfix(self) -> Node:
         first = self.peek()
         node = self.primary()
-        while self.peek().kind == "op" and self.peek().text in ("++", "--"):
+        while self.tokens[self.pos].text in ("++", "--"):
             op = self.take()
             if not isinstance(node, Var):
                 raise _fail(op, f"'{op.text}' needs a variable")
@@ -577,7 +581,7 @@ class _Parser:
             self.deeper()
             e = self.expression()
             self.expect(")", f" to close '(' at {tok.line}:{tok.column}")
-            self.depth -= 1
+            self.shallower()
             # Keep the parentheses in the shown text.
             e.start, e.end = tok.start, self.last().end
             e.line, e.column = tok.line, tok.column
@@ -612,7 +616,7 @@ class _Parser:
                     break
                 self.take()
         self.expect(")", f" to close {name}(")
-        self.depth -= 1
+        self.shallower()
         if len(args) != nargs:
             raise _fail(tok, f"{name}() takes {nargs} arguments, got {len(args)}")
         if name == "__IQmpy":
@@ -635,6 +639,6 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES) -> Program:
     if not isinstance(source, str):
         raise TraceError(1, 1, "code must be text")
     tokens, notes, global_q = _preprocess(tokenize(source))
-    p = _Parser(source, tokens)
+    p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names
     return Program(source, p.program(), notes, global_q)
