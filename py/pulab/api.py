@@ -23,7 +23,8 @@ from .export import c_header, sim_csv
 from .messages import to_zh
 from .report import report
 
-__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "trace_json"]
+__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "trace_json",
+           "trace_examples_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -176,3 +177,16 @@ def trace_json(text: str) -> str:
         if checked is not None:
             reply["inputs"] = checked.inputs
         return json.dumps(reply)
+
+
+def trace_examples_json(text: str = "") -> str:
+    """The tracer's example code and targets for the page: ``{"ok": true, "examples": [...],
+    "targets": [...]}``; each example has ``id``, ``title``, ``title_zh`` and ``code``.
+
+    >>> [e["id"] for e in json.loads(trace_examples_json())["examples"]][:2]
+    ['rpm', 'ld']
+    """
+    from .ctrace import TARGETS
+    from .ctrace.examples import EXAMPLES
+    return json.dumps({"ok": True, "targets": list(TARGETS),
+                       "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]})

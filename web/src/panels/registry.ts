@@ -8,6 +8,7 @@ import { constantsPanel } from './constants';
 import { currentPanel } from './current';
 import { pllPanel } from './pll';
 import { qcalcPanel } from './qcalc';
+import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
 import { docsPanel, setPanelRegistry } from './docs';
 
@@ -19,6 +20,7 @@ export const PANELS: Panel[] = [
   currentPanel,
   pllPanel,
   qcalcPanel,
+  codePanel,
   conventionsPanel,
   docsPanel, // last: the explainer chapters
 ];
