@@ -154,13 +154,12 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
 
 function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
   const diff = new Set(differingVars(a.vars, b?.vars));
-  const zh = getLang() === 'zh';
   const rows = Object.entries(a.vars).map(([name, v]) => {
     const o = b?.vars[name];
     const d = diff.has(name);
     const meaning = v.real !== undefined ? `${v.real.toPrecision(6)}${v.si !== undefined ? ` → ${v.si.toPrecision(6)} ${v.unit ?? ''}` : ''} (Q${v.q})` : '';
     return h('tr', { class: d ? 'differs' : '' },
-      h('td', {}, h('code', {}, name), v.input ? h('span', { class: 'hint' }, zh ? ' 输入' : ' input') : null),
+      h('td', {}, h('code', {}, name), v.input ? h('span', { class: 'hint' }, ` ${t('codeInputMark')}`) : null),
       h('td', { title: v.c_type }, `${v.type}`, h('div', { class: 'ctype' }, `${v.c_type}, ${v.bits} bit`)),
       h('td', { class: 'r' }, intCell(`code.${a.target}.vars.${name}.value`, v.value, v.hex, d)),
       b ? h('td', { class: 'r' }, o ? [intCell(`code.${b.target}.vars.${name}.value`, o.value, o.hex, d), h('div', { class: 'ctype' }, `${o.c_type}, ${o.bits} bit`)] : '—') : null,
