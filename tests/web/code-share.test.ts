@@ -23,21 +23,30 @@ describe('codeSearch round-trips through codeStateFromSearch', () => {
   });
 });
 
-describe('prefill: raw integers by the last part of the name', () => {
-  const raw = { Voltage: 17, Current: 150, LD: 60 };
-  const cases: [string[], Record<string, number>][] = [
-    [['gMotorInfo.Voltage', 'gMotorExtInfo.LD', 'm_x'], { 'gMotorInfo.Voltage': 17, 'gMotorExtInfo.LD': 60 }],
-    [['Current', 'p->Voltage'], { Current: 150, 'p->Voltage': 17 }],
-    [['toString', 'constructor'], {}],
+describe('prefill: firmware names, then raw inputs by the last name part', () => {
+  const report = {
+    vendor: { raw: { Voltage: 17, Current: 150, LD: 60 }, LD: { value: 1045 }, maxu: { value: 15790080 } },
+    current_pi: { d: { pm_kp: 1180, pm_ki: 4720 }, step_example: { error: 410, integral: 0 } },
+  };
+  const cases: [string[], Record<string, [number, string]>][] = [
+    [['gMotorInfo.Voltage', 'gMotorExtInfo.LD', 'm_x'], { 'gMotorInfo.Voltage': [17, 'vendor.raw.Voltage'], 'gMotorExtInfo.LD': [60, 'vendor.raw.LD'] }],
+    [['gMotorExtPer.LD', 'maxu', 'pm_kp_d', 'pm_error_id'], { 'gMotorExtPer.LD': [1045, 'vendor.LD.value'], maxu: [15790080, 'vendor.maxu.value'], pm_kp_d: [1180, 'current_pi.d.pm_kp'], pm_error_id: [410, 'current_pi.step_example.error'] }],
+    [['Current', 'p->Voltage'], { Current: [150, 'vendor.raw.Current'], 'p->Voltage': [17, 'vendor.raw.Voltage'] }],
+    [['toString', 'constructor', 'pm_kp_q'], {}],
   ];
-  for (const [names, want] of cases) it(`${names.join(', ')} → ${JSON.stringify(want)}`, () => expect(prefill(names, raw)).toEqual(want));
-  it('no report → nothing', () => expect(prefill(['Voltage'], undefined)).toEqual({}));
+  for (const [names, want] of cases) {
+    it(`${names.join(', ')} → ${JSON.stringify(want)}`, () => {
+      const got = Object.fromEntries(Object.entries(prefill(names, report)).map(([k, v]) => [k, [v.value, v.source]]));
+      expect(got).toEqual(want);
+    });
+  }
+  it('no report → nothing', () => expect(prefill(['Voltage'], null)).toEqual({}));
 });
 
 describe('traceRequest: typed values win over the report', () => {
   const s: CodeState = { code: 'c', target: 'c28x', vs: 'arm', set: { 'g.Voltage': ' 6554 ', 'g.Current': '' } };
   it('typed, report, absent', () => {
-    expect(traceRequest(s, 'arm', ['g.Voltage', 'g.Current', 'g.Other'], { Voltage: 17, Current: 150 }))
+    expect(traceRequest(s, 'arm', ['g.Voltage', 'g.Current', 'g.Other'], { vendor: { raw: { Voltage: 17, Current: 150 } } }))
       .toEqual({ code: 'c', target: 'arm', set: { 'g.Voltage': '6554', 'g.Current': 150 } });
   });
 });

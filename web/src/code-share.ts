@@ -1,6 +1,6 @@
 // The "Your code" panel's state without DOM: reading and writing it in the URL's query
 // (?code=…&target=…&vs=…&set.NAME=…, beside #in= which keeps the motor), the trace request,
-// and the inputs prefilled from the report's raw integers.
+// and the inputs prefilled from the report's integers.
 
 export interface CodeState {
   code: string;
@@ -35,25 +35,52 @@ export function codeSearch(s: CodeState, embed = false): string {
   return `?${p.toString()}`;
 }
 
-/** The report's raw integer for each input whose last name part matches (gMotorInfo.Voltage → Voltage). */
-export function prefill(inputs: string[], raw: Record<string, number> | undefined): Record<string, number> {
-  const out: Record<string, number> = {};
-  if (!raw) return out;
+/** Firmware variable names (seed 1.4, 2.2) → their integer in the report. */
+export const FIRMWARE_NAMES: Record<string, string> = {
+  'gMotorExtPer.Rpm': 'vendor.Rpm.value', 'gMotorExtPer.LD': 'vendor.LD.value', 'gMotorExtPer.LQ': 'vendor.LQ.value',
+  'gMotorInfo.FreqPer': 'vendor.FreqPer.value', 'gMotorExtPer.FluxRotor': 'vendor.FluxRotor.value',
+  pm_maxout_vol: 'vendor.pm_maxout_vol.value', maxu: 'vendor.maxu.value',
+  pm_kp_d: 'current_pi.d.pm_kp', pm_ki_d: 'current_pi.d.pm_ki', pm_kp_q: 'current_pi.q.pm_kp', pm_ki_q: 'current_pi.q.pm_ki',
+  pm_error_id: 'current_pi.step_example.error', pm_integral_d: 'current_pi.step_example.integral',
+};
+
+function at(report: unknown, path: string): number | undefined {
+  let v: unknown = report;
+  for (const k of path.split('.')) {
+    if (v === null || typeof v !== 'object' || !Object.prototype.hasOwnProperty.call(v, k)) return undefined;
+    v = (v as Record<string, unknown>)[k];
+  }
+  return typeof v === 'number' && Number.isInteger(v) ? v : undefined;
+}
+
+/**
+ * The report's integer for each input, with its JSON path: a firmware name of FIRMWARE_NAMES,
+ * else a raw input by the name's last part (gMotorInfo.Voltage, p->Voltage → raw.Voltage).
+ */
+export function prefill(inputs: string[], report: unknown): Record<string, { value: number; source: string }> {
+  const out: Record<string, { value: number; source: string }> = {};
   for (const name of inputs) {
-    const last = name.split(/\.|->/).pop() ?? name;
-    if (Object.prototype.hasOwnProperty.call(raw, last) && typeof raw[last] === 'number') out[name] = raw[last];
+    const own = Object.prototype.hasOwnProperty.call(FIRMWARE_NAMES, name) ? FIRMWARE_NAMES[name] : undefined;
+    const paths = [own, `vendor.raw.${name.split(/\.|->/).pop() ?? name}`];
+    for (const source of paths) {
+      const value = source ? at(report, source) : undefined;
+      if (value !== undefined) {
+        out[name] = { value, source };
+        break;
+      }
+    }
   }
   return out;
 }
 
 /** The request for pulab.api.trace_json: typed values win over the report's. */
-export function traceRequest(s: CodeState, target: string, inputs: string[], raw: Record<string, number> | undefined): { code: string; target: string; set: Record<string, string | number> } {
+export function traceRequest(s: CodeState, target: string, inputs: string[], report: unknown): { code: string; target: string; set: Record<string, string | number> } {
   const set: Record<string, string | number> = {};
-  const fromReport = prefill(inputs, raw);
+  const fromReport = prefill(inputs, report);
   for (const name of inputs) {
     const typed = s.set[name];
     if (typed !== undefined && typed.trim() !== '') set[name] = typed.trim();
-    else if (name in fromReport) set[name] = fromReport[name];
+    else if (name in fromReport) set[name] = fromReport[name].value;
   }
   return { code: s.code, target, set };
 }

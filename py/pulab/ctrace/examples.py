@@ -68,8 +68,9 @@ maxu = (long)pm_maxout_vol<<12;
 
 _PI = """\
 // seed 2.2: one current-PI update (error Q12, kp Q12, ki Q16, integral Q24)
-long pm_integral_d, pm_error_id, pm_kp_d, pm_ki_d, maxu, minu, pm_maxout_vol;
-long data1, pm_ud;
+long pm_integral_d, pm_error_id, pm_kp_d, pm_ki_d, maxu, pm_maxout_vol;
+long minu, data1, pm_ud;
+minu = -maxu;                   // the integral's lower limit
 pm_integral_d = pm_integral_d + (pm_error_id * pm_ki_d >> 4); //Q24,28-4
 pm_integral_d = __IQsat(pm_integral_d, maxu, minu);
 data1 = (pm_integral_d + pm_error_id * pm_kp_d)>>12;

@@ -56,13 +56,13 @@ function compute(ctx: PanelContext, delay = 0): void {
 function run(ctx: PanelContext): void {
   const s = st();
   if (!ctx.client || !s.code) return;
-  const raw = ctx.report?.vendor?.raw;
-  const key = JSON.stringify([s, raw ?? null, inputs]);
+  const report = ctx.report;
+  const key = JSON.stringify([s, report ? prefill(inputs, report) : null, inputs]);
   if (key === lastKey) return;
   lastKey = key;
   const id = ++seq;
   const one = (target: string, channel: string) =>
-    ctx.client!.call('trace', traceRequest(s, target, inputs, raw), channel).then(({ result }) => result as unknown as Reply);
+    ctx.client!.call('trace', traceRequest(s, target, inputs, report), channel).then(({ result }) => result as unknown as Reply);
   const calls = [one(s.target, 'trace'), s.vs && s.vs !== s.target ? one(s.vs, 'trace-vs') : Promise.resolve(null)];
   void Promise.all(calls).then(([a, b]) => {
     if (id !== seq) return;
@@ -91,15 +91,15 @@ function caret(code: string, r: Reply | null): HTMLElement | null {
 
 function renderInputs(box: HTMLElement, ctx: PanelContext): void {
   const s = st();
-  const fromReport = prefill(inputs, ctx.report?.vendor?.raw);
+  const fromReport = prefill(inputs, ctx.report);
   box.replaceChildren(
     ...(inputs.length === 0 ? [h('p', { class: 'hint' }, t('codeNoInputs'))] : inputs.map((name) => {
       const report = fromReport[name];
       const field = `set.${name}`;
       return h('label', { class: 'field code-input' },
-        h('span', { class: 'lbl' }, h('code', {}, name), report !== undefined ? h('span', { class: 'hint' }, ` ${t('codeFromReport', { name: name.split('.').pop() ?? name })}`) : null),
+        h('span', { class: 'lbl' }, h('code', {}, name), report ? h('span', { class: 'hint' }, ` ${t('codeFromReport', { name: report.source })}`) : null),
         h('input', {
-          type: 'text', name: field, value: s.set[name] ?? '', placeholder: report !== undefined ? String(report) : '', spellcheck: 'false', inputmode: 'numeric',
+          type: 'text', name: field, value: s.set[name] ?? '', placeholder: report ? String(report.value) : '', spellcheck: 'false', inputmode: 'numeric',
           oninput: (ev: Event) => {
             s.set[name] = (ev.target as HTMLInputElement).value;
             compute(ctx, 120);
@@ -172,8 +172,9 @@ function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
 function update(el: HTMLElement, ctx: PanelContext): void {
   const s = st();
   const box = el.querySelector<HTMLElement>('.code-inputs');
-  if (box && box.dataset.key !== JSON.stringify([inputs, ctx.report?.vendor?.raw ?? null, getLang()])) {
-    box.dataset.key = JSON.stringify([inputs, ctx.report?.vendor?.raw ?? null, getLang()]);
+  const boxKey = JSON.stringify([inputs, ctx.report ? prefill(inputs, ctx.report) : null, getLang()]);
+  if (box && box.dataset.key !== boxKey) {
+    box.dataset.key = boxKey;
     renderInputs(box, ctx);
   }
   el.querySelectorAll<HTMLElement>('[data-err-for]').forEach((e) => (e.textContent = errorFor(e.dataset.errFor ?? '')));
