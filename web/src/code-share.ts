@@ -61,9 +61,9 @@ export function prefill(inputs: string[], report: unknown): Record<string, { val
   const out: Record<string, { value: number; source: string }> = {};
   for (const name of inputs) {
     const own = Object.prototype.hasOwnProperty.call(FIRMWARE_NAMES, name) ? FIRMWARE_NAMES[name] : undefined;
-    const paths = [own, `vendor.raw.${name.split(/\.|->/).pop() ?? name}`];
+    const paths = [own, `vendor.raw.${name.split(/\.|->/).pop() ?? name}`].filter((p): p is string => p !== undefined);
     for (const source of paths) {
-      const value = source ? at(report, source) : undefined;
+      const value = at(report, source);
       if (value !== undefined) {
         out[name] = { value, source };
         break;
