@@ -52,6 +52,13 @@ export default async function code(ctx) {
     await page.screenshot({ path: join(SHOTS, 'code-1366-en-steps.png') });
   });
 
+  await check('code: the PI example with the report\'s gains and step example gives the report\'s vendor PI output', async () => {
+    await page.selectOption('select[name="example"]', 'pi');
+    const want = ctx.cpython(ctx.golden('01_seed_motor.json').input).current_pi.step_example.trace.at(-1).value;
+    await waitValue(page, 'code.c28x.vars.pm_ud.value', want, 0, 15_000);
+    assert((await page.$eval('input[name="set.pm_kp_d"]', (e) => e.placeholder)) !== '', 'pm_kp_d prefilled from current_pi.d.pm_kp');
+  });
+
   await check('code: bad code is named by line:column at the field, no crash', async () => {
     await page.fill('textarea[name="code"]', 'long a = 1;\nlong b = a +;\n');
     await page.waitForFunction(() => (document.querySelector('[data-err-for="code"]')?.textContent ?? '').includes('2:13'), null, { timeout: 10_000 });

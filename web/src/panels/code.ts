@@ -145,7 +145,7 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
       const head = [t('codeExpr'), `${t('codeType')} (${a.target})`, a.target, t('flags'), ...(b ? [`${t('codeType')} (${b.target})`, b.target, t('flags')] : [])];
       const open = s.flags.length > 0 || rows[rows.length - 1].classList.contains('differs');
       rows.push(h('tr', { class: 'terms' }, h('td', {}), h('td', { colspan: b ? 6 : 4 },
-        h('details', { open }, h('summary', {}, `${s.terms.length} ${t('codeExpr')}`), table(head, terms, 'code-terms')))));
+        h('details', { open }, h('summary', {}, t('codeTerms', { n: s.terms.length })), table(head, terms, 'code-terms')))));
     }
   });
   const head = ['L:C', t('codeSource'), t('codeVariable'), a.target, t('flags'), ...(b ? [b.target, t('flags')] : [])];
@@ -183,6 +183,7 @@ function update(el: HTMLElement, ctx: PanelContext): void {
   caretBox?.replaceChildren(caret(s.code, main && !main.ok && main.field === 'code' ? main : other) ?? '');
   const out = el.querySelector<HTMLElement>('.code-out');
   if (!out) return;
+  el.querySelector('.code-trace')?.classList.toggle('stale', !(main?.ok));
   const a = main?.ok ? main : null;
   const b = other?.ok ? other : null;
   const other_err = [main, other].find((r) => r && !r.ok && r.field !== 'code' && !r.field.startsWith('set.')) as TraceErr | undefined;
@@ -199,6 +200,8 @@ function update(el: HTMLElement, ctx: PanelContext): void {
       diff.length ? t('codeDiffCount', { n: diff.length, m: Object.keys(a.vars).length, a: a.target, b: b.target }) : t('codeSame', { a: a.target, b: b.target })) : '',
     h('h3', {}, t('codeVars')),
     varsTable(a, b),
+  );
+  el.querySelector<HTMLElement>('.code-trace')?.replaceChildren(
     h('h3', {}, t('codeSteps')),
     stepsTable(a, b),
     h('p', { class: 'hint' }, t('codeCheck')),
@@ -287,7 +290,8 @@ export const codePanel: Panel = {
             h('div', { class: 'code-caret-box' }),
             h('h3', {}, t('codeInputs')),
             h('div', { class: 'code-inputs fields' })),
-          h('div', { class: 'code-out' }))),
+          h('div', { class: 'code-out' })),
+        h('div', { class: 'code-trace' })),
     );
     const ta = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');
     if (ta) {
