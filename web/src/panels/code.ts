@@ -303,6 +303,7 @@ export const codePanel: Panel = {
     }
     update(el, ctx);
     if (focused) el.querySelector<HTMLElement>(`[name="${CSS.escape(focused)}"]`)?.focus();
-    compute(ctx);
+    // Before the first report, wait a little: the report goes first, and it fills the inputs.
+    compute(ctx, ctx.report ? 0 : 400);
   },
 };
