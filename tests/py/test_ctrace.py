@@ -245,3 +245,17 @@ def test_cli_bad_input_exits_2_with_one_line(args, stdin, prefix):
     p = _cli(*args, stdin=stdin)
     assert p.returncode == 2 and p.stdout == ""
     assert p.stderr.startswith(prefix) and p.stderr.count("\n") == 1, p.stderr
+
+
+def test_fuzzed_api_requests_give_only_error_replies():
+    rng = random.Random(11)
+    values = [None, True, 0, -1, 2**70, 1.5, "", "c28x", "arm", "0x10", [], {}, [1], {"a": 1},
+              "long a = 1;", "Uint16 v; long x = v * 10;"]
+    for _ in range(2000):
+        req = {k: rng.choice(values) for k in rng.sample(["code", "target", "set", "global_q",
+                                                          "extra"], rng.randrange(0, 5))}
+        if rng.random() < 0.3:
+            req["set"] = {rng.choice(["v", "a", "x"]): rng.choice(values)}
+        text = json.dumps(req) if rng.random() < 0.9 else rng.choice(["", "[", "nul", "1"])
+        r = json.loads(trace_json(text))
+        assert r["ok"] is True or (r["field"] and has_chinese(r["message"])), (req, r)

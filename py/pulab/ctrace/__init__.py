@@ -11,7 +11,8 @@ Modules: :mod:`~pulab.ctrace.lexer` (tokens), :mod:`~pulab.ctrace.parser`
 (the subset, ``#define``, ``// @q`` annotations), :mod:`~pulab.ctrace.types`
 (targets, type names, conversions), :mod:`~pulab.ctrace.check` (static types),
 :mod:`~pulab.ctrace.evaluate` (values and flags, on :mod:`pulab.cint`),
-:mod:`~pulab.ctrace.tracing` (the entry point).
+:mod:`~pulab.ctrace.tracing` (the entry point), :mod:`~pulab.ctrace.cli`
+(``python -m pulab trace``), :mod:`~pulab.ctrace.examples` (the seed's blocks).
 
 Examples
 --------

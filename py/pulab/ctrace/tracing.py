@@ -26,7 +26,7 @@ DEFAULT_GLOBAL_Q = 24
 
 def compile_code(code: str, target: str = "c28x") -> Checked:
     """Parse and type ``code`` for ``target`` (reusable for many input vectors)."""
-    if target not in TARGETS:
+    if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
     return check(parse(code), t)
