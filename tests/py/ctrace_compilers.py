@@ -72,9 +72,21 @@ _PROGRAM_CASES = 40
 
 
 def available(target: str) -> list:
-    """The missing tools for ``target`` (empty when it can run)."""
+    """The missing tools for ``target`` (empty when it can run): the programs, and a compile
+    of an empty program (avr-libc's headers; gcc-multilib's 32-bit libraries)."""
     tools = ["avr-gcc", "simavr"] if target == "avr" else ["gcc"]
-    return [t for t in tools if shutil.which(t) is None]
+    missing = [t for t in tools if shutil.which(t) is None]
+    if missing:
+        return missing
+    with tempfile.TemporaryDirectory() as d:
+        src = os.path.join(d, "t.c")
+        with open(src, "w") as f:
+            f.write("#include <stdint.h>\n" + ("#include <avr/io.h>\n" if target == "avr" else "")
+                    + "int main(void) { return 0; }\n")
+        cmd = ["avr-gcc", "-mmcu=atmega2560"] if target == "avr" else ["gcc", "-m32"]
+        if subprocess.run(cmd + [src, "-o", os.path.join(d, "t")], capture_output=True).returncode:
+            return ["avr-libc" if target == "avr" else "gcc-multilib"]
+    return []
 
 
 def _declare(decls: list) -> str:
