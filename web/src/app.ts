@@ -8,7 +8,7 @@ import { defaultLang, getLang, setLang, t, type Lang } from './i18n';
 import type { PulabClient } from './rpc';
 import { STORAGE_KEY, initialInput } from './state';
 import type { PanelContext, PanelId } from './panels/panel';
-import { panelById } from './panels/registry';
+import { PANELS, panelById } from './panels/registry';
 import { openChapter } from './panels/docs';
 import { ComputeSession } from './page/session';
 import { InputForm } from './page/form';
@@ -17,6 +17,10 @@ import { StatusLine } from './page/status';
 import { langSwitch, renderHeader } from './page/header';
 import { handleLinks } from './page/links';
 import { LANG_KEY, load, store } from './page/storage';
+import { mark } from './page/marks';
+
+/** Panels that call Python themselves: rendered again when it becomes ready. */
+const PYTHON_PANELS = PANELS.filter((p) => p.needsPython).map((p) => p.id);
 
 export class App {
   readonly embed: PanelId | null;
@@ -26,6 +30,7 @@ export class App {
   private status: StatusLine;
 
   constructor(private root: HTMLElement) {
+    mark('app');
     const params = new URLSearchParams(location.search);
     this.embed = panelById(params.get('embed'))?.id ?? null;
     const chapter = params.get('chapter');
@@ -34,14 +39,15 @@ export class App {
     setLang(langParam === 'zh' || langParam === 'en' ? langParam : defaultLang(navigator.languages, load(LANG_KEY)));
     const input = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY)).input;
     this.session = new ComputeSession(input, this.embed !== null, {
-      report: () => this.renderPanels(),
+      report: (same) => (same ? this.renderPanels(PYTHON_PANELS) : this.renderPanels()),
       sim: () => this.renderPanels(['current', 'pll', 'docs']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     });
     this.form = new InputForm(root, this.session);
     this.layout = new Layout(root, this.embed);
-    this.status = new StatusLine(root, () => this.session.lastMs);
+    this.session.wantsSim = PANELS.some((p) => p.usesSim && (this.embed === null || p.id === this.embed));
+    this.status = new StatusLine(root, this.session);
     window.addEventListener('hashchange', () => {
       const next = initialInput(location.hash, null);
       if (next.source === 'url' && JSON.stringify(effectiveInput(next.input)) !== JSON.stringify(effectiveInput(this.session.input))) {
@@ -57,7 +63,8 @@ export class App {
     this.session.client = client;
     const onReady = (ms: number): void => {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
-      this.renderPanels();
+      document.documentElement.dataset.pythonBoot = client.bootFrom;
+      this.renderPanels(PYTHON_PANELS);
       this.session.schedule(0);
     };
     this.status.follow(client, onReady);
@@ -96,6 +103,7 @@ export class App {
       : renderHeader(this.root, this.session, lang));
     if (!this.embed) this.form.render();
     this.renderPanels();
+    this.session.publish();
     this.status.render();
     this.showErrors();
   }

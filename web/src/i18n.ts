@@ -249,6 +249,11 @@ const en = {
   flagHelp_unsigned_wrap: 'an unsigned result was reduced modulo 2^bits',
   flagHelp_conversion: 'a conversion (assignment, cast, argument, operand to an unsigned type) changed the value',
   flagHelp_shift_count: 'shift count negative or ≥ the width: undefined behaviour; CPUs differ',
+  // instant start (issue 8)
+  numbers_build: 'Numbers for the default motor, computed when the site was built; Python is starting',
+  numbers_cached: 'Numbers from your last visit; Python is starting',
+  numbers_waiting: 'Your input is kept and computed as soon as Python is ready',
+  boot_snapshot: 'Starting Python from its snapshot…',
 };
 
 export type Key = keyof typeof en;
@@ -500,6 +505,11 @@ const zh: Record<Key, string> = {
   flagHelp_unsigned_wrap: '无符号结果按 2^位数 取模',
   flagHelp_conversion: '类型转换（赋值、强制转换、参数、转为无符号类型的操作数）改变了数值',
   flagHelp_shift_count: '移位位数为负或不小于位宽：未定义行为；不同 CPU 结果不同',
+  // instant start (issue 8)
+  numbers_build: '默认电机的数值（构建网站时算好）；Python 正在启动',
+  numbers_cached: '上次访问时的数值；Python 正在启动',
+  numbers_waiting: '您的输入已保留，Python 就绪后立即计算',
+  boot_snapshot: '正在从快照启动 Python…',
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

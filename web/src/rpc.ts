@@ -1,5 +1,5 @@
 // Main-thread client of the worker: typed calls returning promises, boot progress callbacks.
-import { isWorkerToMain, type ApiKind, type ApiResult, type BootStage, type MainToWorker } from './protocol';
+import { isWorkerToMain, type ApiKind, type BootFrom, type ApiResult, type BootStage, type MainToWorker } from './protocol';
 
 export interface CallResult {
   result: ApiResult;
@@ -33,6 +33,10 @@ export class PulabClient {
   ready = false;
   bootMs = 0;
   version = '';
+  /** Whether the runtime came from the build's memory snapshot or a full boot. */
+  bootFrom: BootFrom = 'full';
+  /** When each boot stage was first reported (performance.now()), for listeners that attach late. */
+  stageAt: Partial<Record<BootStage, number>> = {};
   /** The last boot progress, for listeners that attach late. */
   progress: { stage: BootStage; fraction: number } = { stage: 'runtime', fraction: 0 };
   fatalMessage: string | null = null;
@@ -42,12 +46,22 @@ export class PulabClient {
     worker.onerror = (ev) => this.fail(`the worker failed to start: ${ev.message || 'unknown error'}`);
   }
 
-  /** Start the boot; `timeoutMs` bounds Pyodide's start-up, a watchdog here bounds the worker itself. */
+  /**
+   * Start the boot. `timeoutMs` bounds the time without progress (the worker applies it to
+   * Pyodide's start-up); a watchdog here, restarted by every progress message, bounds the worker itself.
+   */
   init(indexURL: string, timeoutMs = 60_000): void {
     this.worker.postMessage({ type: 'init', indexURL, timeoutMs });
+    this.idleMs = timeoutMs + 5000;
+    this.armWatchdog();
+  }
+
+  private idleMs = 65_000;
+  private armWatchdog(): void {
+    clearTimeout(this.watchdog);
     this.watchdog = setTimeout(() => {
-      if (!this.ready) this.fail(`Python did not start within ${Math.round((timeoutMs + 5000) / 1000)} s`);
-    }, timeoutMs + 5000);
+      if (!this.ready) this.fail(`Python made no progress for ${Math.round(this.idleMs / 1000)} s`);
+    }, this.idleMs);
   }
 
   call(kind: ApiKind, payload: unknown, channel?: string): Promise<CallResult> {
@@ -74,12 +88,15 @@ export class PulabClient {
     switch (m.type) {
       case 'progress':
         this.progress = { stage: m.stage, fraction: m.fraction };
+        this.stageAt[m.stage] ??= performance.now();
+        if (!this.ready) this.armWatchdog();
         this.events.onProgress?.(m.stage, m.fraction);
         break;
       case 'ready':
         this.ready = true;
         this.bootMs = m.bootMs;
         this.version = m.pyodideVersion;
+        this.bootFrom = m.from ?? 'full';
         clearTimeout(this.watchdog);
         this.events.onReady?.(m.bootMs, m.pyodideVersion);
         break;

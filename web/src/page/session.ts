@@ -8,11 +8,14 @@ import type { ApiErr } from '../protocol';
 import type { Report } from '../report-types';
 import { STORAGE_KEY, encodeHash, reportInput, simInput, type Input } from '../state';
 import { store } from './storage';
+import { mark } from './marks';
+import { keepReport, knownReport, reportKey, showSource, type NumbersSource } from './numbers';
 
 /** What the page does when the session's state changes. */
 export interface SessionEvents {
-  /** A new report for the input in the form (render every panel). */
-  report(): void;
+  /** A new report for the input in the form (render every panel); `same`: equal to the one shown
+   * (the same input: pulab is deterministic), only what depends on Python being ready changes. */
+  report(same?: boolean): void;
   /** A new simulation result or simulation error (render the plots). */
   sim(): void;
   /** Field errors or staleness changed. */
@@ -35,6 +38,9 @@ export class ComputeSession {
   localErrors = new Map<string, string>();
   /** The error Python returned for the input in the form. */
   remoteError: ApiErr | null = null;
+  /** Where `report` comes from, and the input it is for (its reportKey). */
+  source: NumbersSource = 'none';
+  private reportFor: string | null = null;
   /** Time in Python of the last report, ms. */
   lastMs = 0;
   client: PulabClient | null = null;
@@ -49,6 +55,31 @@ export class ComputeSession {
 
   constructor(input: Input, private embed: boolean, private events: SessionEvents) {
     this.input = input;
+    this.paintKnown(reportKey(input));
+  }
+
+  /** Publish <html data-numbers> (once the page has rendered what the session holds). */
+  publish(): void {
+    this.updateSource();
+  }
+
+  /** Numbers without Python: the build's seed report or a cached one, if one is for `key`. */
+  private paintKnown(key: string): boolean {
+    const known = knownReport(key);
+    if (!known) return false;
+    this.report = known.report;
+    this.reportFor = key;
+    this.source = known.source;
+    return true;
+  }
+
+  /** <html data-numbers>: the source while the numbers are of the input in the form, else stale. */
+  private updateSource(): void {
+    const current = !this.localErrors.size && this.reportFor === reportKey(this.input);
+    const source = this.report === null ? 'none' : current ? this.source : 'stale';
+    showSource(source);
+    if (source !== 'none' && source !== 'stale') mark('numbers');
+    if (source === 'live') mark('live');
   }
 
   get ready(): boolean {
@@ -84,11 +115,14 @@ export class ComputeSession {
     this.remoteError = null;
   }
 
+  /** The panels are shown stale: an error, or (before Python is ready) numbers of another input. */
   get stale(): boolean {
-    return this.localErrors.size > 0 || this.remoteError !== null;
+    const behind = !this.ready && this.report !== null && this.reportFor !== reportKey(this.input);
+    return this.localErrors.size > 0 || this.remoteError !== null || behind;
   }
 
   schedule(delay = 10): void {
+    this.updateSource();
     clearTimeout(this.timer);
     this.timer = setTimeout(() => void this.compute(), delay);
   }
@@ -97,19 +131,32 @@ export class ComputeSession {
     if (this.localErrors.size) return this.events.errors();
     const eff = effectiveInput(this.input);
     this.persist(eff);
-    if (!this.client?.ready) return;
+    const key = JSON.stringify(reportInput(eff));
+    if (!this.client?.ready) {
+      // Typing before Python is ready: kept (computed once it is), and painted at once if known.
+      if (key !== this.reportFor && this.paintKnown(key)) this.events.report();
+      this.updateSource();
+      this.events.busy();
+      return this.events.errors();
+    }
     const root = document.documentElement;
     root.dataset.busy = '1';
     try {
       const t0 = performance.now();
-      const { result, ms } = await this.client.call('report', reportInput(eff), 'report');
+      const { result, ms } = await this.client.call('report', JSON.parse(key), 'report');
       this.lastMs = ms;
       if (result.ok) {
+        const same = this.reportFor === key && this.source !== 'live';
         this.report = result.report as unknown as Report;
         this.remoteError = null;
+        // Another input may have been typed while Python computed this one.
+        this.reportFor = key;
+        this.source = 'live';
+        keepReport(key, this.report);
         const t1 = performance.now();
-        this.events.report();
+        this.events.report(same);
         this.events.errors();
+        this.updateSource();
         const t2 = performance.now();
         root.dataset.reportMs = (t1 - t0).toFixed(1);
         root.dataset.renderMs = (t2 - t1).toFixed(1);
@@ -118,6 +165,7 @@ export class ComputeSession {
         this.simTimer = setTimeout(() => void this.computeSim(eff), SIM_PAUSE_MS);
       } else {
         this.remoteError = result;
+        this.updateSource();
         this.events.errors();
       }
     } catch (e) {
@@ -128,6 +176,9 @@ export class ComputeSession {
     }
   }
 
+  /** Whether simulations are computed (a shown panel draws them). */
+  wantsSim = true;
+
   /** The worker for simulations and CSV exports (started on first use). */
   simWorker(): PulabClient | null {
     if (!this.simClient && this.simWorkerFactory) this.simClient = this.simWorkerFactory();
@@ -135,8 +186,9 @@ export class ComputeSession {
   }
 
   private async computeSim(eff: Input): Promise<void> {
+    if (!this.wantsSim || !eff.sim) return;
     const sc = this.simWorker();
-    if (!sc || !eff.sim) return;
+    if (!sc) return;
     try {
       const { result } = await sc.call('report', simInput(eff), 'sim');
       if (result.ok) {

@@ -238,6 +238,7 @@ function loadExamples(ctx: PanelContext): void {
 export const codePanel: Panel = {
   id: 'code',
   title: 'p_code',
+  needsPython: true,
   render(el, ctx) {
     lastCtx = ctx;
     const s = st();

@@ -36,6 +36,7 @@ function axisRow(a: 'd' | 'q', g: PiAxis | undefined): HTMLElement {
 
 export const currentPanel: Panel = {
   id: 'current',
+  usesSim: true,
   title: 'p_current',
   render(el, ctx) {
     const { report, simReport, simError, input } = ctx;

@@ -125,6 +125,8 @@ function fillEmbeds(body: HTMLElement, ctx: PanelContext): void {
 
 export const docsPanel: Panel = {
   id: 'docs',
+  usesSim: true,
+  needsPython: true,
   title: 'p_docs',
   render(el, ctx) {
     if (!docsAvailable() || !INDEX) {

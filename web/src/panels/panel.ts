@@ -21,6 +21,10 @@ export interface Panel {
   id: PanelId;
   /** i18n key of the title. */
   title: string;
+  /** Calls Python itself (ctx.client): rendered again once Python is ready. */
+  needsPython?: boolean;
+  /** Shows simulation results: the simulation runtime starts only if a shown panel has this. */
+  usesSim?: boolean;
   /** Render into `el` (called on every new report and on a language switch). */
   render(el: HTMLElement, ctx: PanelContext): void;
 }

@@ -9,6 +9,7 @@ import type { Panel } from './panel';
 
 export const pllPanel: Panel = {
   id: 'pll',
+  usesSim: true,
   title: 'p_pll',
   render(el, { report, simReport, simError }) {
     const g = report?.pll ?? {};
