@@ -85,8 +85,9 @@ TRACE_INPUTS = {"gMotorExtInfo.RsPm": 1500, "gMotorInfo.Current": 150, "gMotorIn
                 "gUDC.uDCFilter": 240}
 
 
-def trace_timing(n: int = 100) -> dict:
-    """Median and p95 milliseconds to parse, type and trace :data:`TRACE_SNIPPET` (c28x)."""
+def trace_timing(n: int = 200) -> dict:
+    """Median, p95 and minimum milliseconds to parse, type and trace :data:`TRACE_SNIPPET`
+    (c28x); the minimum is what the code costs when no other process takes the CPU."""
     from .ctrace import trace
     trace(TRACE_SNIPPET, "c28x", TRACE_INPUTS)  # warm-up: imports
     times = []
@@ -96,7 +97,7 @@ def trace_timing(n: int = 100) -> dict:
         times.append((time.perf_counter() - t0) * 1e3)
     times.sort()
     return {"lines": TRACE_SNIPPET.count("\n"), "median_ms": times[n // 2],
-            "p95_ms": times[int(n * 0.95)]}
+            "p95_ms": times[int(n * 0.95)], "min_ms": times[0]}
 
 
 def run(sim_steps: int = 20000) -> dict:
@@ -119,8 +120,8 @@ def format_run(r: dict) -> str:
     if "trace" in r:
         t = r["trace"]
         lines.append(f"  trace(): {t['lines']}-line snippet parsed and traced in "
-                     f"{t['median_ms']:.2f} ms median, {t['p95_ms']:.2f} ms p95 "
-                     "(target ≤ 5 ms in Pyodide)")
+                     f"{t['median_ms']:.2f} ms median, {t['p95_ms']:.2f} ms p95, "
+                     f"{t.get('min_ms', float('nan')):.2f} ms min (target ≤ 5 ms in Pyodide)")
     return "\n".join(lines)
 
 
