@@ -50,8 +50,9 @@ def _require(target: str, capsys) -> None:
 
 
 def _vectors(checked, rng, case, target: str, n: int) -> tuple:
-    """Up to n input vectors without excluded UB, their traced values, and the exclusions."""
-    vectors, expected, excluded = [], [], 0
+    """Up to n input vectors without excluded UB, their traced values, the exclusions, and how
+    many kept vectors overflow a signed type (compared as the -fwrapv wrap)."""
+    vectors, expected, excluded, wraps = [], [], 0, 0
     for _ in range(n):
         for _attempt in range(6):
             vec = random_vector(rng, case, target)
@@ -65,8 +66,9 @@ def _vectors(checked, rng, case, target: str, n: int) -> tuple:
                 continue
             vectors.append(vec)
             expected.append(dict(ev.values))
+            wraps += "signed_overflow" in ev.undefined
             break
-    return vectors, expected, excluded
+    return vectors, expected, excluded, wraps
 
 
 def _compare(cases: list, expected: list, results: list) -> tuple:
@@ -84,12 +86,13 @@ def _compare(cases: list, expected: list, results: list) -> tuple:
 def test_random_snippets_match_the_compiler(target, capsys):
     _require(target, capsys)
     rng = random.Random(f"{SEED}-{target}")
-    cases, expected, excluded = [], [], 0
+    cases, expected, excluded, wraps = [], [], 0, 0
     for i in range(SNIPPETS):
         case = generate_case(rng, i)
         checked = compile_code(case.code(), TARGETS[target])
-        vectors, exp, ex = _vectors(checked, rng, case, target, VECTORS_PER_SNIPPET)
+        vectors, exp, ex, w = _vectors(checked, rng, case, target, VECTORS_PER_SNIPPET)
         excluded += ex
+        wraps += w
         cases.append((case, vectors))
         expected.append(exp)
     results, programs = run_cases(cases, target)
@@ -97,7 +100,8 @@ def test_random_snippets_match_the_compiler(target, capsys):
     with capsys.disabled():
         print(f"\nctrace vs {'avr-gcc+simavr' if target == 'avr' else 'gcc -m32'} "
               f"(seed {SEED}): {SNIPPETS} snippets, {pairs} snippet-vector pairs, "
-              f"{len(mismatches)} mismatches, {excluded} vectors excluded as UB or ÷0, "
+              f"{len(mismatches)} mismatches ({wraps} pairs with a signed overflow, compared "
+              f"as the -fwrapv wrap), {excluded} vectors excluded as UB or ÷0, "
               f"{programs} programs")
     assert not mismatches, "first mismatches:\n" + "\n".join(
         f"{code}inputs {vec}: tracer vs compiler {bad}" for code, vec, bad in mismatches[:5])
