@@ -1,6 +1,8 @@
-"""Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``.
+"""Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``,
+``python -m pulab trace FILE.c --target c28x --set NAME=VALUE …``.
 
-Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr.
+Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
+(for code, ``error: code: LINE:COLUMN: MESSAGE``).
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ import sys
 from .errors import InputError
 from .commands import add_family_commands, read_json
 from .report import format_text, report
+from .ctrace.cli import add_trace_parser, trace_main
 
 
 def main(argv: list | None = None) -> int:
@@ -22,7 +25,10 @@ def main(argv: list | None = None) -> int:
     rp.add_argument("input")
     rp.add_argument("--format", choices=("json", "text"), default="json")
     add_family_commands(sub)
+    add_trace_parser(sub)
     args = p.parse_args(argv)
+    if args.command == "trace":
+        return trace_main(args)
     if hasattr(args, "run"):
         return args.run(args)
     try:

@@ -8,6 +8,7 @@ import { constantsPanel } from './constants';
 import { currentPanel } from './current';
 import { pllPanel } from './pll';
 import { qcalcPanel } from './qcalc';
+import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
 import { sweepPanel } from './sweep';
 import { batchPanel } from './batch';
@@ -21,6 +22,7 @@ export const PANELS: Panel[] = [
   currentPanel,
   pllPanel,
   qcalcPanel,
+  codePanel,
   conventionsPanel,
   sweepPanel,
   batchPanel,
