@@ -5,6 +5,7 @@ import { createLogger, defineConfig, type Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { dirname, resolve } from 'node:path';
+import { offlineCache } from './offline/plugin';
 import { createHash } from 'node:crypto';
 import { runJsonCPython, seedKey } from './build/prerender';
 import { SNAPSHOT_PYODIDE_VERSION, makeSnapshot, pulabFiles } from './build/snapshot';
@@ -113,7 +114,7 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets(), pulabBuild(true), precompress(resolve(repo, 'node_modules/.cache/pulab-compress'))],
+  plugins: [pyodideAssets(), pulabBuild(true), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
   optimizeDeps: { exclude: ['pyodide'] },
   worker: { format: 'es', plugins: () => [pulabBuild(false)] },
   server: { fs: { allow: [repo] } },

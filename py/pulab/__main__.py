@@ -1,6 +1,8 @@
-"""Command line: ``python -m pulab report INPUT.json [--format json|text]``.
+"""Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``,
+``python -m pulab trace FILE.c --target c28x --set NAME=VALUE …``.
 
-Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr.
+Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
+(for code, ``error: code: LINE:COLUMN: MESSAGE``).
 """
 
 from __future__ import annotations
@@ -10,7 +12,9 @@ import json
 import sys
 
 from .errors import InputError
+from .commands import add_family_commands, read_json
 from .report import format_text, report
+from .ctrace.cli import add_trace_parser, trace_main
 
 
 def main(argv: list | None = None) -> int:
@@ -20,23 +24,15 @@ def main(argv: list | None = None) -> int:
     rp = sub.add_parser("report", help="print the report for an input JSON file ('-' = stdin)")
     rp.add_argument("input")
     rp.add_argument("--format", choices=("json", "text"), default="json")
+    add_family_commands(sub)
+    add_trace_parser(sub)
     args = p.parse_args(argv)
+    if args.command == "trace":
+        return trace_main(args)
+    if hasattr(args, "run"):
+        return args.run(args)
     try:
-        if args.input == "-":
-            text = sys.stdin.read()
-        else:
-            with open(args.input, encoding="utf-8") as f:
-                text = f.read()
-    except OSError as e:
-        print(f"error: input: cannot read {args.input}: {e.strerror}", file=sys.stderr)
-        return 2
-    try:
-        inp = json.loads(text)
-    except ValueError as e:
-        print(f"error: input: not valid JSON: {e}", file=sys.stderr)
-        return 2
-    try:
-        r = report(inp)
+        r = report(read_json(args.input))
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2

@@ -91,6 +91,29 @@ type PyApi = Record<string, (text: string) => string>;
 type Call = Extract<MainToWorker, { type: 'call' }>;
 type Post = (msg: WorkerToMain) => void;
 
+/**
+ * One readable line for anything thrown or rejected: an Error's message, an HTTP failure's status
+ * and URL, an event's type — never "[object Object]" (a missing runtime file must be named).
+ */
+export function describeError(e: unknown): string {
+  if (e instanceof Error) return e.message || e.name;
+  if (typeof e === 'string') return e;
+  if (e && typeof e === 'object') {
+    const o = e as { message?: unknown; status?: unknown; url?: unknown; type?: unknown; constructor?: { name?: string } };
+    if (typeof o.message === 'string' && o.message) return o.message;
+    if (typeof o.status === 'number') return `HTTP ${o.status}${typeof o.url === 'string' ? ` for ${o.url}` : ''}`;
+    if (typeof o.type === 'string') return `${o.type} event${typeof o.url === 'string' ? ` for ${o.url}` : ''}`;
+    try {
+      const json = JSON.stringify(e);
+      if (json && json !== '{}') return json.slice(0, 200);
+    } catch {
+      /* cyclic */
+    }
+    return o.constructor?.name ?? 'unknown error';
+  }
+  return String(e);
+}
+
 export interface WorkerLogic {
   onMessage(msg: MainToWorker): void;
   /** Resolves when booted (for tests); rejects on a boot failure. */
@@ -161,7 +184,7 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
       schedule();
     } catch (e) {
       watchdog.stop();
-      const message = e instanceof Error ? e.message : String(e);
+      const message = describeError(e);
       state = 'failed';
       broadcast({ type: 'fatal', message });
       rejectReady(e);

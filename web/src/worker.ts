@@ -3,7 +3,7 @@
 // Thin glue between ports, Pyodide and worker-logic.ts.
 import { loadPyodide, version } from 'pyodide';
 import { SNAPSHOT } from 'virtual:pulab-build';
-import { createRuntimeHost, fastOrFull, type BootProgress, type PyodideLike } from './worker-logic';
+import { createRuntimeHost, describeError, fastOrFull, type BootProgress, type PyodideLike } from './worker-logic';
 import { PULAB_FILES } from './pysources';
 import type { MainToWorker, WorkerToMain } from './protocol';
 
@@ -58,3 +58,9 @@ function serve(port: Port): void {
 const scope = self as unknown as Port & { onconnect?: ((ev: MessageEvent) => void) | null };
 if ('onconnect' in scope) scope.onconnect = (ev) => serve(ev.ports[0] as unknown as Port);
 else serve(scope);
+// Pyodide fetches some files on the side; when one fails, the boot fails with its own message
+// (above) and the side promise's rejection must not surface as an uncaught error on the page.
+self.addEventListener('unhandledrejection', (ev) => {
+  ev.preventDefault();
+  console.warn('pulab worker:', describeError(ev.reason));
+});

@@ -2,7 +2,7 @@
 // of report and simulation calls to the Python workers. Knows nothing of the DOM except the
 // timing attributes on <html> (reportMs, renderMs, updateMs: the benchmark reads them).
 import { effectiveInput } from '../fields';
-import { errText } from '../i18n';
+import { errText, t } from '../i18n';
 import { Superseded, type PulabClient } from '../rpc';
 import type { ApiErr } from '../protocol';
 import type { Report } from '../report-types';
@@ -32,12 +32,18 @@ export class ComputeSession {
   report: Report | null = null;
   simReport: Report | null = null;
   simError: string | null = null;
+  /** The simulation worker failed (not the input): a retry may help. */
+  simWorkerFailed = false;
   /** The field a failed simulation named (shown at that field until the next simulation). */
   simFieldError: ApiErr | null = null;
   /** Errors found in the page before Python sees the input (not a number, …), by field path. */
   localErrors = new Map<string, string>();
   /** The error Python returned for the input in the form. */
   remoteError: ApiErr | null = null;
+  /** Notes at fields whose linked or stored value could not be used (web/src/state-notice.ts). */
+  stateNotes = new Map<string, string>();
+  /** The opened link was broken: it stays in the address bar until the user changes an input. */
+  keepLink = false;
   /** Where `report` comes from, and the input it is for (its reportKey). */
   source: NumbersSource = 'none';
   private reportFor: string | null = null;
@@ -56,6 +62,19 @@ export class ComputeSession {
   constructor(input: Input, private embed: boolean, private events: SessionEvents) {
     this.input = input;
     this.paintKnown(reportKey(input));
+    // A simulation that failed for want of a network is tried again when it returns.
+    window.addEventListener('online', () => {
+      if (this.simWorkerFailed) this.retrySim();
+    });
+  }
+
+  /** Run the simulation again, in a new worker if the old one died. */
+  retrySim(): void {
+    if (this.simClient?.fatalMessage) this.simClient = null;
+    this.simWorkerFailed = false;
+    this.simError = null;
+    this.events.sim();
+    void this.computeSim(effectiveInput(this.input));
   }
 
   /** Publish <html data-numbers> (once the page has rendered what the session holds). */
@@ -86,14 +105,19 @@ export class ComputeSession {
     return this.client?.ready === true;
   }
 
-  /** The form was edited (starts the input → numbers clock). */
-  touched(): void {
+  /** The form was edited at `path` (starts the input → numbers clock; the user's own state may
+   * now replace a broken link, and the note on that field no longer applies). */
+  touched(path: string): void {
     this.inputAt = performance.now();
+    this.keepLink = false;
+    if (this.stateNotes.delete(path)) this.events.errors();
   }
 
   /** Replace the whole input (preset, link): earlier errors no longer apply. */
   replaceInput(input: Input): void {
     this.input = input;
+    this.keepLink = false;
+    this.stateNotes.clear();
     this.localErrors.clear();
     this.remoteError = null;
     this.schedule(0);
@@ -169,7 +193,9 @@ export class ComputeSession {
         this.events.errors();
       }
     } catch (e) {
-      if (!(e instanceof Superseded)) throw e;
+      // Superseded: a newer input is on its way. Anything else is the worker failing, which the
+      // status line reports (PulabClient onFatal); never an unhandled rejection.
+      if (!(e instanceof Superseded)) console.warn('report call failed:', e);
     } finally {
       delete root.dataset.busy;
       this.events.busy();
@@ -206,6 +232,7 @@ export class ComputeSession {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
         this.simFieldError = null;
+        this.simWorkerFailed = false;
       } else {
         this.simError = `${result.field}: ${errText(result)}`;
         this.simFieldError = result.field.startsWith('sim') ? result : null;
@@ -213,7 +240,12 @@ export class ComputeSession {
       }
       this.events.sim();
     } catch (e) {
-      if (!(e instanceof Superseded)) throw e;
+      if (e instanceof Superseded) return;
+      // The simulation worker could not start or died: say so at the plots, with a retry.
+      this.simReport = null;
+      this.simWorkerFailed = true;
+      this.simError = t('simWorkerFailed', { m: e instanceof Error ? e.message : String(e) });
+      this.events.sim();
     }
   }
 
@@ -221,7 +253,7 @@ export class ComputeSession {
   private persist(eff: Input): void {
     if (this.embed) return;
     const hash = encodeHash(eff);
-    if (location.hash !== hash) history.replaceState(null, '', hash);
+    if (location.hash !== hash && !this.keepLink) history.replaceState(null, '', hash);
     store(STORAGE_KEY, JSON.stringify(eff));
   }
 }

@@ -8,6 +8,8 @@ export interface BootState {
   stage: Key;
   fraction: number;
   failed?: string;
+  /** A failed boot about to be tried again. */
+  retry?: { message: string; attempt: number; of: number; seconds: number };
 }
 
 export class StatusLine {
@@ -31,7 +33,11 @@ export class StatusLine {
         onReady(ms);
       },
       onFatal: (message) => {
-        this.boot = { ...this.boot, failed: message };
+        this.boot = { ...this.boot, failed: message, retry: undefined };
+        this.render();
+      },
+      onRetry: (message, attempt, of, delayMs) => {
+        this.boot = { ...this.boot, retry: { message, attempt, of, seconds: Math.round(delayMs / 1000) } };
         this.render();
       },
     };
@@ -45,7 +51,10 @@ export class StatusLine {
     const ready = this.client?.ready === true;
     document.documentElement.dataset.ready = ready ? '1' : '0';
     if (b.failed) {
-      el.replaceChildren(h('span', { class: 'status-fatal', role: 'alert' }, `${t('bootFailed')}: ${b.failed}. ${t('fatalHelp')}`));
+      el.replaceChildren(h('span', { class: 'status-fatal', role: 'alert' }, `${t('bootFailed')}: ${b.failed}. ${t('fatalHelp')}`),
+        h('button', { type: 'button', class: 'status-reload', onclick: () => location.reload() }, t('reload')));
+    } else if (!ready && b.retry) {
+      el.replaceChildren(h('span', { class: 'status-retry', role: 'status' }, t('bootRetry', { m: b.retry.message, s: b.retry.seconds, n: b.retry.attempt, of: b.retry.of })));
     } else if (!ready) {
       // Numbers already on screen say where they come from (<html data-numbers>).
       const shown = document.documentElement.dataset.numbers;

@@ -12,6 +12,8 @@ export interface PanelContext {
   /** The report with the "sim" section, or null; `simError` when the simulation failed. */
   simReport: Report | null;
   simError: string | null;
+  /** Present when the simulation failed for a reason a retry may cure (its worker died). */
+  retrySim?: () => void;
   input: Input;
   client: PulabClient | null;
   embed: boolean;

@@ -8,7 +8,10 @@ import { constantsPanel } from './constants';
 import { currentPanel } from './current';
 import { pllPanel } from './pll';
 import { qcalcPanel } from './qcalc';
+import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
+import { sweepPanel } from './sweep';
+import { batchPanel } from './batch';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -19,7 +22,10 @@ export const PANELS: Panel[] = [
   currentPanel,
   pllPanel,
   qcalcPanel,
+  codePanel,
   conventionsPanel,
+  sweepPanel,
+  batchPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
