@@ -10,6 +10,22 @@ function gate() {
   const opened = new Promise((r) => (open = r));
   return { hold: (rel) => (rel.startsWith('pyodide/') ? opened : undefined), open: () => open() };
 }
+/**
+ * Python runtimes (shared or dedicated workers) created in `page`'s browser context from now on
+ * (other suites' contexts may still run workers). Returns {kinds, stop()}.
+ */
+async function watchWorkers(browser, page) {
+  const own = await page.context().newCDPSession(page);
+  const { targetInfo } = await own.send('Target.getTargetInfo');
+  await own.detach();
+  const cdp = await browser.newBrowserCDPSession();
+  const kinds = [];
+  cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
+    if ((t.type === 'shared_worker' || t.type === 'worker') && t.browserContextId === targetInfo.browserContextId) kinds.push(t.type);
+  });
+  await cdp.send('Target.setDiscoverTargets', { discover: true });
+  return { kinds, stop: async () => { await cdp.send('Target.setDiscoverTargets', { discover: false }); await cdp.detach(); } };
+}
 const numbersIs = (page, v, timeout = 60_000) =>
   page.waitForFunction((want) => document.documentElement.dataset.numbers === want, v, { timeout, polling: 20 });
 
@@ -97,43 +113,31 @@ export default async function instantStart(ctx) {
     const page = await newPage();
     const host = `<!doctype html><meta charset="utf-8"><title>host</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="800" height="300"></iframe>`).join('')}`;
     await page.route(`${ctx.subSrv.url}host.html`, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
-    const cdp = await browser.newBrowserCDPSession();
-    const kinds = [];
-    cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
-      if (t.type === 'shared_worker' || t.type === 'worker') kinds.push(t.type);
-    });
-    await cdp.send('Target.setDiscoverTargets', { discover: true });
-    const before = kinds.length;
+    const w = await watchWorkers(browser, page);
     await page.goto(`${ctx.subSrv.url}host.html`);
     while (page.frames().length < 1 + panels.length) await page.waitForTimeout(20);
     const frames = page.frames().filter((f) => f !== page.mainFrame());
     await Promise.all(frames.map((f) => f.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 90_000, polling: 50 })));
     await page.waitForTimeout(2000); // the simulation runtime of the plot panels
-    const started = kinds.slice(before);
-    await cdp.send('Target.setDiscoverTargets', { discover: false });
-    await cdp.detach();
+    const started = w.kinds;
+    await w.stop();
     assert(started.filter((k) => k === 'worker').length === 0, `dedicated workers: ${started.join(',')}`);
-    assert(started.filter((k) => k === 'shared_worker').length <= 2, `runtimes: ${started.join(',')}`);
+    const shared = started.filter((k) => k === 'shared_worker').length;
+    assert(shared >= 1 && shared <= 2, `runtimes: ${started.join(',') || 'none seen'}`);
     for (const f of frames) assert((await f.$$('section.panel')).length === 1, 'one panel per embed');
     await page.context().close();
   });
 
   await check('the simulation runtime starts only when a plot comes near the viewport (1 runtime at the top of the page, 2 at the plots)', async () => {
     const page = await newPage();
-    const cdp = await browser.newBrowserCDPSession();
-    const kinds = [];
-    cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
-      if (t.type === 'shared_worker' || t.type === 'worker') kinds.push(t.type);
-    });
-    await cdp.send('Target.setDiscoverTargets', { discover: true });
+    const { kinds, stop } = await watchWorkers(browser, page);
     await page.goto(ctx.subSrv.url);
     await numbersIs(page, 'live', 60_000);
     await page.waitForTimeout(1500); // a simulation would have been asked for 400 ms after the report
     const atTop = kinds.length;
     await page.$eval('#panel-current', (e) => e.scrollIntoView());
     await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 60_000 });
-    await cdp.send('Target.setDiscoverTargets', { discover: false });
-    await cdp.detach();
+    await stop();
     assert(atTop === 1, `runtimes started before scrolling to a plot: ${atTop}`);
     assert(kinds.length === 2, `runtimes after scrolling to the plots: ${kinds.length}`);
     await page.context().close();
