@@ -88,6 +88,12 @@ CATALOG = [
     (r"current-loop ω_c·Ts = (\S+): .*",
      r"电流环 ω_c·Ts = \1：连续域设计与离散环路的实际行为相差较大（建议 ω_c·Ts ≲ 0.2）"),
     (r"base frequency below rated frequency: .*", "基值频率低于额定频率：Q15 的 FreqPer > 1.0"),
+    # vendor profiles, headers and the translator
+    (r"must be a power of two, got (.*)", r"必须是 2 的幂，当前为 \1"),
+    (r"profiles\.(\S+): (\S+) does not fit (.+); stored (\S+)",
+     r"profiles.\1：\2 超出 \3 的范围；实际存储 \4"),
+    (r"profiles\.(\S+): rounds to 0 in (.+) \(ideal (\S+)\)",
+     r"profiles.\1：在 \2 中取整为 0（理想值 \3）"),
 ]
 _COMPILED = [(re.compile(p, re.S), r) for p, r in CATALOG]
 

@@ -70,6 +70,20 @@ def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
     return w
 
 
+def _profile_warnings(prof: dict) -> list:
+    """One warning per profile constant the firmware could not store as intended."""
+    w = []
+    for name, p in prof.items():
+        for k, c in p["constants"].items():
+            if "out_of_range" in c["flags"] or "saturate" in c["flags"]:
+                w.append(f"profiles.{name}.{k}: {c['ideal']:.6g} does not fit {c['format']}; "
+                         f"stored {c['value']}")
+            elif c["value"] == 0 and c["ideal"] != 0:
+                w.append(f"profiles.{name}.{k}: rounds to 0 in {c['format']} "
+                         f"(ideal {c['ideal']:.6g})")
+    return w
+
+
 def _pi_example(g: dict, vendor: dict) -> dict:
     """The first vendor PI update after a step of 10 % rated current in i_d (seed 2.2)."""
     error = round(0.1 * 4096)
@@ -121,6 +135,12 @@ def report(inp: dict) -> dict:
                                    cl["damping"], cl["kp"], cl["ki"])
         pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
     pi["step_example"] = _pi_example(pi["d"], vendor)
+    prof = None
+    if "profiles" in n:  # only when asked: the five profiles cost more than the rest
+        from . import profiles as _profiles
+        ctx = _profiles.context(n, raw, vendor, pi)
+        n["profiles"] = _profiles.options(n["profiles"], ctx)
+        prof = _profiles.profiles(ctx, n["profiles"])
     out = {
         "input": {k: v for k, v in n.items() if k != "sim"},
         "base": b,
@@ -132,6 +152,9 @@ def report(inp: dict) -> dict:
         "constants": magic_constants(),
         "warnings": _warnings(n, raw, vendor, pi, b),
     }
+    if prof is not None:
+        out["profiles"] = prof
+        out["warnings"] += _profile_warnings(prof)
     out["warnings_zh"] = [to_zh(w) for w in out["warnings"]]
     if sim_in is not None:
         out["sim"] = _sim.simulate(out, sim_in)

@@ -1,0 +1,141 @@
+"""Vendor profiles: the same motor and drive in five vendors' scaling (docs/contract.md).
+
+One module per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.vendor`),
+:mod:`.ti`, :mod:`.nxp`, :mod:`.st`, :mod:`.microchip` — each with the same small
+interface: ``OPTIONS`` (its hardware inputs and their defaults), ``CONVENTIONS``
+(its base choices, in words), ``profile(ctx, opt)`` (its constants),
+``gain_fields``/``gain_range``/``gains_to_ints``/``ints_to_gains`` (its current-loop
+integers, for the translator) and, except Inovance, ``header(p, ctx)``.
+
+Profiles are computed only when the input has a ``profiles`` section (``{}`` asks for
+all five with defaults), so a plain report stays as fast as before.
+
+Examples
+--------
+>>> from pulab import report
+>>> r = report({"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5,
+...     "rated_freq_hz": 220, "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4,
+...     "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 1e-4},
+...     "profiles": {}})
+>>> sorted(r["profiles"])
+['inovance', 'microchip', 'nxp', 'st', 'ti']
+>>> r["profiles"]["microchip"]["constants"]["KIP"]["format"]
+'Q15'
+"""
+
+from __future__ import annotations
+
+from ..bases import flux_linkage
+from ..errors import InputError
+from ..inputs import object_fields, real
+from . import inovance, microchip, nxp, st, ti
+from .common import SQRT2, SQRT3, TWO_PI
+
+__all__ = ["NAMES", "MODULES", "context", "options", "profiles", "bases_table"]
+
+NAMES = ("inovance", "ti", "nxp", "st", "microchip")
+MODULES = {"inovance": inovance, "ti": ti, "nxp": nxp, "st": st, "microchip": microchip}
+
+_INTEGERS = {"global_q": (1, 30), "f1": (1, 32767), "tf_kpdiv": (1, 32768),
+             "tf_kidiv": (1, 32768)}
+_BOOLEANS = {"trapezoidal"}
+
+
+def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
+    """Everything a profile needs from the normalized input and the report, in SI.
+
+    Parameters
+    ----------
+    n : dict
+        The normalized input (:func:`pulab.inputs.normalize`).
+    raw, vendor : dict
+        The Inovance raw integers and results (:mod:`pulab.vendor`).
+    pi : dict
+        The report's ``current_pi``; its SI kp [V/A], ki [V/(A·s)] per axis are the
+        gains every profile stores (a V/A ratio is the same in peak and RMS).
+    """
+    m, d = n["motor"], n["drive"]
+    return {"rs": m["rs_ohm"], "ld": m["ld_h"], "lq": m["lq_h"], "pp": m["pole_pairs"],
+            "i_rated": m["rated_current_a"], "u_rated": m["rated_voltage_v"],
+            "f_rated": m["rated_freq_hz"], "bemf_v": m["bemf_v"], "f_base": d["base_freq_hz"],
+            "udc": d["udc_v"], "ts": d["ts_s"], "i_fs": 2.0 * SQRT2 * m["rated_current_a"],
+            "psi_peak": flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
+            "psi_rms": flux_linkage("rms", m["bemf_v"], m["rated_freq_hz"]),
+            "u_limit": d["udc_v"] / SQRT2,
+            "gains": {a: (pi[a]["kp"], pi[a]["ki"]) for a in ("d", "q")},
+            "vendor": vendor, "raw": raw, "inductance_unit": n["conventions"]["inductance_unit"]}
+
+
+def _option(name: str, key: str, v):
+    path = f"profiles.{name}.{key}"
+    if key in _BOOLEANS:
+        if not isinstance(v, bool):
+            raise InputError(path, f"must be true or false, got {v!r}")
+        return v
+    if key in _INTEGERS:
+        lo, hi = _INTEGERS[key]
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or \
+                (isinstance(v, float) and not v.is_integer()):
+            raise InputError(path, f"must be an integer, got {v!r}")
+        v = int(v)
+        if not lo <= v <= hi:
+            raise InputError(path, f"must be {lo}..{hi}, got {v}")
+        if key.startswith("tf_") and v & (v - 1):
+            raise InputError(path, f"must be a power of two, got {v}")
+        return v
+    x = real(v, path)
+    if x <= 0:
+        raise InputError(path, f"must be > 0, got {x:g}")
+    if not 1e-9 <= x <= 1e9:
+        raise InputError(path, f"must be between 1e-09 and 1e+09, got {x:g}")
+    return x
+
+
+def options(section, ctx: dict) -> dict:
+    """The ``profiles`` input section checked, every vendor's defaults filled in.
+
+    Raises
+    ------
+    InputError
+        Naming ``profiles.NAME.KEY`` for an unknown or bad value.
+    """
+    given = object_fields(section, "profiles", NAMES)
+    out = {}
+    for name in NAMES:
+        spec = MODULES[name].OPTIONS
+        sec = object_fields(given.get(name), f"profiles.{name}", [k for k, _, _ in spec])
+        out[name] = {k: _option(name, k, sec[k]) if k in sec else default(ctx)
+                     for k, default, _ in spec}
+    return out
+
+
+def bases_table(name: str, ctx: dict, p: dict) -> dict:
+    """The conventions of one profile side by side: words and the numeric bases (SI)."""
+    o = p["inputs"]
+    if name == "inovance":
+        u, i = ctx["u_rated"] / SQRT3, ctx["i_rated"]
+        l_b = u / i / (TWO_PI * ctx["f_base"])
+    elif name == "ti":
+        u, i = o["full_scale_voltage_v"], o["full_scale_current_a"]
+        l_b = u / i * ctx["ts"]
+    elif name == "nxp":
+        u, i = o["u_max_v"], o["i_max_a"]
+        l_b = u / i * ctx["ts"]
+    elif name == "st":
+        u, i = ctx["udc"] / SQRT3, o["max_current_a"]
+        l_b = None
+    else:
+        u, i = o["voltage_base_v"], o["current_base_a"]
+        l_b = u / i * ctx["ts"]
+    return {**MODULES[name].CONVENTIONS, "U_b": u, "I_b": i, "Z_b": u / i, "L_b": l_b,
+            "kp_per_unit_of_1_ohm": i / u}
+
+
+def profiles(ctx: dict, opts: dict) -> dict:
+    """Every profile: ``inputs`` (options used), ``constants``, ``bases``."""
+    out = {}
+    for name in NAMES:
+        p = MODULES[name].profile(ctx, opts[name])
+        p["bases"] = bases_table(name, ctx, p)
+        out[name] = p
+    return out
