@@ -31,14 +31,15 @@ from ..inputs import object_fields, real
 from . import inovance, microchip, nxp, st, ti
 from .common import SQRT2, SQRT3, TWO_PI
 
-__all__ = ["NAMES", "MODULES", "context", "options", "profiles", "bases_table"]
+__all__ = ["NAMES", "MODULES", "context", "context_of", "options", "profiles", "bases_table",
+           "header"]
 
 NAMES = ("inovance", "ti", "nxp", "st", "microchip")
 MODULES = {"inovance": inovance, "ti": ti, "nxp": nxp, "st": st, "microchip": microchip}
 
 _INTEGERS = {"global_q": (1, 30), "f1": (1, 32767), "tf_kpdiv": (1, 32768),
              "tf_kidiv": (1, 32768)}
-_BOOLEANS = {"trapezoidal"}
+_BOOLEANS = {"trapezoidal", "round_u_max"}
 
 
 def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
@@ -139,3 +140,27 @@ def profiles(ctx: dict, opts: dict) -> dict:
         p["bases"] = bases_table(name, ctx, p)
         out[name] = p
     return out
+
+
+def context_of(r: dict) -> dict:
+    """:func:`context` rebuilt from a finished report (which carries every piece of it)."""
+    return context(r["input"], r["vendor"]["raw"],
+                   {k: v for k, v in r["vendor"].items() if k != "raw"}, r["current_pi"])
+
+
+def header(r: dict, name: str) -> str:
+    """The C header of one profile, in that vendor's naming and layout.
+
+    Parameters
+    ----------
+    r : dict
+        A report computed with a ``profiles`` section.
+    name : {'inovance', 'ti', 'nxp', 'st', 'microchip'}
+        Inovance's header is the report's own (:func:`pulab.export.c_header`).
+    """
+    if name not in NAMES:
+        raise InputError("profile", f"must be one of {', '.join(NAMES)}, got {name!r}")
+    if name == "inovance":
+        from ..export import c_header
+        return c_header(r)
+    return MODULES[name].header(r["profiles"][name], context_of(r))

@@ -133,6 +133,9 @@ SOURCES = {
     "nxp_bemf": "Masmiseim36/nxpSDK : middleware/motor_control/freemaster/pmsm_frac/mcat/src/"
                 "JS_functions/inner_PoSpeBemfDQ.js",
     "nxp_types": "NXP RTCESL mlib_types.h ACC32(x)/FRAC16(x) macros (public copies)",
+    "nxp_appconfig": "NXP MCAT-generated m1_pmsm_appconfig.h, 'FILE NAME: pmsm_frac/mcat/"
+                     "m1_pmsm_appconfig.h, DATE: Mon Nov 27 2023' (motor 'linix'; public copy "
+                     "found by exact-string search, repository not named by the search tool)",
     "st_conv": "dronectl/g431-mcsdk : Inc/parameters_conversion.h",
     "st_motor": "dronectl/g431-mcsdk : Inc/pmsm_motor_parameters.h",
     "st_drive": "dronectl/g431-mcsdk : Inc/drive_parameters.h",

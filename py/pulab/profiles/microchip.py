@@ -25,7 +25,7 @@ from __future__ import annotations
 from .common import SOURCES, TWO_PI, fixed
 from .headers import define, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "gain_fields", "gain_range", "gains_to_ints",
+__all__ = ["OPTIONS", "CONVENTIONS", "gain_q", "gain_fields", "gain_range", "gains_to_ints",
            "ints_to_gains", "profile", "header"]
 
 OPTIONS = (
@@ -63,19 +63,36 @@ def _q(name, x, n, scale, unit, expr, source):
     return fixed(name, x, 16, n, scale, unit, expr, source, fmt=f"Q{n}")
 
 
+def gain_q(x: float) -> int:
+    """KIP_Q/KII_Q: 15, or fewer fractional bits when |x| ≥ 1 (the PI then shifts by
+    DKNP = 15 − KIP_Q, foc_params.h); pulab takes the largest Q that fits int16.
+
+    >>> gain_q(0.155), gain_q(2.5)
+    (15, 13)
+    """
+    q = 15
+    while q > 0 and round(abs(x) * 2 ** q) > 32767:
+        q -= 1
+    return q
+
+
 def gains_to_ints(kp: float, ki: float, ctx: dict, opt: dict, axis: str) -> dict:
-    """KIP, KII (Q15) for SI gains kp [V/A], ki [V/(A·s)]."""
+    """KIP, KII (Q15, or Q(KIP_Q) when the gain exceeds 1) for SI kp [V/A], ki [V/(A·s)]."""
     v, i, _, dt = _bases(ctx, opt)
     z = v / i
-    return {"KIP": _q("KIP", kp / z, 15, z, "V/A", "kp/(V_b/I_b)", SOURCES["mchp_foc"]),
-            "KII": _q("KII", ki * dt / z, 15, z / dt, "V/(A·s)", "ki/(V_b/(I_b·Δt))",
+    kp_n, ki_n = kp / z, ki * dt / z
+    return {"KIP": _q("KIP", kp_n, gain_q(kp_n), z, "V/A", "kp/(V_b/I_b)", SOURCES["mchp_foc"]),
+            "KII": _q("KII", ki_n, gain_q(ki_n), z / dt, "V/(A·s)", "ki/(V_b/(I_b·Δt))",
                       SOURCES["mchp_foc"])}
 
 
 def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> tuple:
-    """SI kp, ki of stored KIP, KII."""
+    """SI kp, ki of stored KIP, KII; their Q (KIP_Q, KII_Q) is the one
+    :func:`gain_q` picks for the report's own gains on that axis."""
     v, i, _, dt = _bases(ctx, opt)
-    return kp_int / 32768.0 * v / i, ki_int / 32768.0 * v / i / dt
+    z = v / i
+    kp, ki = ctx["gains"][axis]
+    return (kp_int / 2.0 ** gain_q(kp / z) * z, ki_int / 2.0 ** gain_q(ki * dt / z) * z / dt)
 
 
 def profile(ctx: dict, opt: dict) -> dict:

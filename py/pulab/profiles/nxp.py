@@ -2,7 +2,12 @@
 
 Scales (inner_CLoop.js, clickCalculateCloop)::
 
-    U_max = round(U_DCB,max / UmaxCoeff, 0.1 V)        (the tool rounds to 0.1 V)
+    U_max = U_DCB,max / UmaxCoeff
+
+That JavaScript MCAT rounds U_max to 0.1 V; the 2023 MCAT-generated
+m1_pmsm_appconfig.h (motor "linix": M1_U_MAX 35.1029 = 60.8/√3) does not, and its
+scales follow the unrounded value — so rounding is an option (``round_u_max``), off
+by default.
     Kp = (2·ξ·ω0·L − R_s)·I_max/U_max                  (its own design; pulab stores the
     Ki = ω0²·L·T_s/k · I_max/U_max                      report's kp, ki the same way)
 
@@ -38,6 +43,8 @@ OPTIONS = (
     ("u_max_coeff", lambda c: SQRT3, "UmaxCoeff: U_max = U_DCB_MAX/UmaxCoeff; default √3"),
     ("e_max_v", lambda c: None, "E_MAX, back-EMF scale; default U_max"),
     ("trapezoidal", lambda c: False, "discretization: true halves Ki (k = 2); default false"),
+    ("round_u_max", lambda c: False, "round U_max to 0.1 V as the JavaScript MCAT does; "
+     "default false"),
 )
 CONVENTIONS = {
     "voltage_base": "U_max = U_DCB_MAX/UmaxCoeff (hardware)",
@@ -49,13 +56,14 @@ CONVENTIONS = {
 }
 
 
-def u_max(udcb_max_v: float, coeff: float) -> float:
-    """U_max as MCAT computes it: JavaScript ``Math.round(U/coeff·10)/10``."""
-    return math.floor(udcb_max_v / coeff * 10.0 + 0.5) / 10.0
+def u_max(udcb_max_v: float, coeff: float, rounded: bool = True) -> float:
+    """U_max = U_DCB,max/coeff; ``rounded``: JavaScript ``Math.round(U/coeff·10)/10``."""
+    u = udcb_max_v / coeff
+    return math.floor(u * 10.0 + 0.5) / 10.0 if rounded else u
 
 
 def _scales(opt: dict) -> tuple[float, float]:
-    return u_max(opt["udcb_max_v"], opt["u_max_coeff"]), opt["i_max_a"]
+    return u_max(opt["udcb_max_v"], opt["u_max_coeff"], opt["round_u_max"]), opt["i_max_a"]
 
 
 def gain_fields(axis: str) -> tuple[str, str]:
@@ -124,7 +132,7 @@ def header(p: dict, ctx: dict) -> str:
     body = ["/* Application scales */",
             define_float("M1_I_MAX", o["i_max_a"], "A"),
             define_float("M1_U_DCB_MAX", o["udcb_max_v"], "V"),
-            define_float("M1_U_MAX", o["u_max_v"], "V, rounded to 0.1 V as MCAT does"),
+            define_float("M1_U_MAX", o["u_max_v"], "V = U_DCB_MAX/UmaxCoeff"),
             define_float("M1_E_MAX", o["e_max_v"], "V"),
             define_float("M1_W_MAX", o["w_max_rad_s"], "rad/s electrical"),
             "", "/* Current loop (parallel PI) and back-EMF observer, ACC32 = Q16.15 */"]
