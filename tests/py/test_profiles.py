@@ -357,3 +357,39 @@ def test_translate_errors_name_the_field(seed_input, values, field, message):
     if message:
         assert e.value.message == message
     assert has_chinese(e.value.message)
+
+
+# ---------------------------------------------------------------------------------------
+# Golden vectors from the independent oracle (tests/oracle/profiles_oracle.py)
+
+PROFILE_GOLDEN = sorted((ROOT / "tests/golden/profiles").glob("*.json"))
+
+
+@pytest.mark.parametrize("path", PROFILE_GOLDEN, ids=lambda p: p.stem)
+def test_profiles_match_the_oracle(path):
+    case = json.loads(path.read_text())
+    inp = copy.deepcopy(case["input"])
+    inp.setdefault("profiles", {})
+    got = report(inp)["profiles"]
+    problems = []
+    for name, consts in case["expected"].items():
+        for k, exp in consts.items():
+            c = got[name]["constants"].get(k)
+            if c is None:
+                problems.append(f"{name}.{k}: missing")
+                continue
+            if c["value"] != exp["value"] or type(c["value"]) is not int:
+                problems.append(f"{name}.{k}: value {c['value']!r} != {exp['value']}")
+            for key in ("ideal", "si"):  # float formulas in another order: 1e-9 relative
+                if c[key] != pytest.approx(exp[key], rel=1e-9, abs=1e-300):
+                    problems.append(f"{name}.{k}.{key}: {c[key]!r} != {exp[key]!r}")
+            if "shift" in exp and c["shift"] != exp["shift"]:
+                problems.append(f"{name}.{k}.shift")
+        assert sorted(got[name]["constants"]) == sorted(consts), name
+    assert not problems, "\n".join(problems)
+
+
+def test_profile_golden_files_are_fresh():
+    p = subprocess.run([sys.executable, str(ROOT / "tests/oracle/profiles_oracle.py"), "--check"],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stdout + p.stderr

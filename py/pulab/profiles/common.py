@@ -114,7 +114,7 @@ def pow2_divisor(k: float, limit: int = 32767, largest: int = 16384) -> int:
     (1024, 16384)
     """
     d = largest
-    while d > 1 and round(abs(k) * d) > limit:
+    while d > 1 and math.floor(abs(k) * d + 0.5) > limit:  # nearest, ties away
         d //= 2
     return d
 

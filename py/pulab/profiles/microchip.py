@@ -22,6 +22,8 @@ Examples
 
 from __future__ import annotations
 
+import math
+
 from .common import SOURCES, TWO_PI, fixed
 from .headers import define, guard
 
@@ -71,7 +73,7 @@ def gain_q(x: float) -> int:
     (15, 13)
     """
     q = 15
-    while q > 0 and round(abs(x) * 2 ** q) > 32767:
+    while q > 0 and math.floor(abs(x) * 2 ** q + 0.5) > 32767:  # nearest, ties away
         q -= 1
     return q
 
