@@ -23,7 +23,7 @@ from .export import c_header, sim_csv
 from .messages import to_zh
 from .report import report
 
-__all__ = ["run_json", "qcalc", "qcalc_json", "export_json"]
+__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "vendors_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -132,6 +132,46 @@ def export_json(text: str) -> str:
                 raise InputError("sim", f"the input asks for no {kind[4:]} simulation")
             return json.dumps({"ok": True, "text": sim_csv(r, kind[4:])})
         raise InputError("kind", "must be one of header, csv_current, csv_pll")
+    except InputError as e:
+        return _fail(e)
+    except ValueError as e:
+        return _fail(InputError("input", f"not valid JSON: {e}"))
+
+
+def vendors_json(text: str) -> str:
+    """Vendor profiles for the page (docs/contract.md, "Vendor profiles").
+
+    ``{"input": {...}, "action": "header", "profile": NAME}`` → ``{"ok": true, "text": ...}``;
+    ``{"input": {...}, "action": "translate", "from": NAME, "axis": "d"|"q",
+    "values": {FIELD: int, FIELD: int}}`` → ``{"ok": true, "translation": {...}}``;
+    bad input → an error naming the field.
+
+    >>> import json
+    >>> req = {"input": {"motor": {}}, "action": "header", "profile": "ti"}
+    >>> json.loads(vendors_json(json.dumps(req)))["field"]
+    'motor.rated_voltage_v'
+    """
+    from . import profiles
+    from .profiles.translate import translate
+    try:
+        req = json.loads(text)
+        if not isinstance(req, dict):
+            raise InputError("request", "must be a JSON object")
+        inp = req.get("input")
+        if not isinstance(inp, dict):
+            raise InputError("input", "must be a JSON object")
+        action = req.get("action")
+        if action == "header":
+            name = req.get("profile")
+            if name not in profiles.NAMES:
+                raise InputError("profile", f"must be one of {', '.join(profiles.NAMES)}, "
+                                 f"got {name!r}")
+            r = report({**inp, "profiles": inp.get("profiles") or {}})
+            return json.dumps({"ok": True, "text": profiles.header(r, name)})
+        if action == "translate":
+            t = translate(inp, req.get("from"), req.get("axis", "q"), req.get("values"))
+            return json.dumps({"ok": True, "translation": t}, allow_nan=False)
+        raise InputError("action", "must be one of header, translate")
     except InputError as e:
         return _fail(e)
     except ValueError as e:

@@ -328,6 +328,29 @@ def test_round_trip_inovance_ti_nxp_st_microchip_inovance(motor, axis):
     assert abs(t["round_trip"]["delta"]["pm_kp"]) <= 1 and abs(t["round_trip"]["delta"]["pm_ki"]) <= 1
 
 
+@pytest.mark.parametrize("motor", MOTORS)
+@pytest.mark.parametrize("source", NAMES)
+def test_round_trip_from_every_profile_stays_within_the_chain_budget(motor, source):
+    """Back at the source, the integers move by no more than the summed per-step LSBs."""
+    inp = MOTORS[motor]
+    r = report(_with_profiles(inp))
+    from pulab.profiles import MODULES
+    kp_name, ki_name = MODULES[source].gain_fields("q")
+    key = (lambda k: f"{k}_q") if source == "inovance" else (lambda k: k)
+    consts = r["profiles"][source]["constants"]
+    given = {kp_name: consts[key(kp_name)]["value"], ki_name: consts[key(ki_name)]["value"]}
+    t = translate(inp, source, "q", given)
+    prev, budget = t["si"], {"kp": 0.0, "ki": 0.0}
+    for step in t["chain"]:
+        budget["kp"] += abs(step["si"]["kp"] - prev["kp"])
+        budget["ki"] += abs(step["si"]["ki"] - prev["ki"])
+        prev = step["si"]
+    last = t["chain"][-1]
+    assert last["profile"] == source
+    for k, f in (("kp", kp_name), ("ki", ki_name)):
+        assert abs(t["round_trip"]["delta"][f]) <= 0.5 + budget[k] / last["lsb"][k] + 1e-9
+
+
 @pytest.mark.parametrize("source", NAMES)
 def test_translate_from_every_profile_reproduces_its_own_integers(source, seed_input):
     r = report(_with_profiles(seed_input))
