@@ -416,3 +416,42 @@ def test_profile_golden_files_are_fresh():
     p = subprocess.run([sys.executable, str(ROOT / "tests/oracle/profiles_oracle.py"), "--check"],
                        capture_output=True, text=True)
     assert p.returncode == 0, p.stdout + p.stderr
+
+
+# ---------------------------------------------------------------------------------------
+# Warnings and fuzzing: every message in Chinese, only InputError
+
+def test_out_of_range_and_zero_constants_warn_in_both_languages(seed_input):
+    inp = _with_profiles(seed_input, {"ti": {"full_scale_current_a": 5000.0, "global_q": 28},
+                                      "microchip": {"current_base_a": 1e-6}})
+    r = report(inp)
+    ti = r["profiles"]["ti"]["constants"]["Kp_Iq"]
+    assert "out_of_range" in ti["flags"] and ti["value"] == 2 ** 31 - 1
+    hits = [w for w in r["warnings"] if w.startswith("profiles.")]
+    assert any(w.startswith("profiles.ti.Kp_Iq: ") for w in hits)
+    assert any("rounds to 0" in w for w in hits)
+    for w in hits:
+        assert has_chinese(w), w
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+_VALUES = st.one_of(st.none(), st.booleans(), st.integers(-5, 70000),
+                    st.floats(allow_nan=True, allow_infinity=True), st.text(max_size=3))
+_KEYS = {"ti": ["full_scale_voltage_v", "full_scale_current_a", "global_q", "max_current_a"],
+         "nxp": ["udcb_max_v", "i_max_a", "trapezoidal", "round_u_max", "u_max_coeff"],
+         "st": ["rshunt_ohm", "tf_kpdiv", "tf_kidiv", "f1", "amplification_gain"],
+         "microchip": ["voltage_base_v", "current_base_a", "velocity_base_hz"]}
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.dictionaries(st.sampled_from(sorted(_KEYS)),
+                       st.dictionaries(st.sampled_from(sum(_KEYS.values(), [])), _VALUES,
+                                       max_size=3), max_size=3))
+def test_fuzzed_profile_inputs_give_a_report_or_a_chinese_error(section):
+    out = json.loads(run_json(json.dumps({**SEED_INPUT, "profiles": section})))
+    if out["ok"]:
+        for w in out["report"]["warnings"]:
+            assert has_chinese(w), w
+    else:
+        assert out["field"].startswith("profiles") and has_chinese(out["message"]), out
