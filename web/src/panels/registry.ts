@@ -9,6 +9,7 @@ import { currentPanel } from './current';
 import { pllPanel } from './pll';
 import { qcalcPanel } from './qcalc';
 import { conventionsPanel } from './conventions';
+import { vendorsPanel } from './vendors';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -20,6 +21,7 @@ export const PANELS: Panel[] = [
   pllPanel,
   qcalcPanel,
   conventionsPanel,
+  vendorsPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
