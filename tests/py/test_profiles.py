@@ -455,3 +455,12 @@ def test_fuzzed_profile_inputs_give_a_report_or_a_chinese_error(section):
             assert has_chinese(w), w
     else:
         assert out["field"].startswith("profiles") and has_chinese(out["message"]), out
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_conventions_in_both_languages(name):
+    from pulab.profiles import MODULES
+    en, zh = MODULES[name].CONVENTIONS, MODULES[name].CONVENTIONS_ZH
+    assert list(en) == list(zh)
+    assert all(any("\u4e00" <= ch <= "\u9fff" for ch in zh[k]) for k in zh
+               if k not in ("clarke_k", "inductance_base")), zh

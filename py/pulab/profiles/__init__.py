@@ -2,8 +2,8 @@
 
 One module per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.vendor`),
 :mod:`.ti`, :mod:`.nxp`, :mod:`.st`, :mod:`.microchip` — each with the same small
-interface: ``OPTIONS`` (its hardware inputs and their defaults), ``CONVENTIONS``
-(its base choices, in words), ``profile(ctx, opt)`` (its constants),
+interface: ``OPTIONS`` (its hardware inputs and their defaults), ``CONVENTIONS`` and
+``CONVENTIONS_ZH`` (its base choices, in words, English and Chinese), ``profile(ctx, opt)`` (its constants),
 ``gain_fields``/``gain_range``/``gains_to_ints``/``ints_to_gains`` (its current-loop
 integers, for the translator) and, except Inovance, ``header(p, ctx)``.
 
@@ -128,8 +128,8 @@ def bases_table(name: str, ctx: dict, p: dict) -> dict:
     else:
         u, i = o["voltage_base_v"], o["current_base_a"]
         l_b = u / i * ctx["ts"]
-    return {**MODULES[name].CONVENTIONS, "U_b": u, "I_b": i, "Z_b": u / i, "L_b": l_b,
-            "kp_per_unit_of_1_ohm": i / u}
+    return {**MODULES[name].CONVENTIONS, "zh": MODULES[name].CONVENTIONS_ZH, "U_b": u, "I_b": i,
+            "Z_b": u / i, "L_b": l_b, "kp_per_unit_of_1_ohm": i / u}
 
 
 def profiles(ctx: dict, opts: dict) -> dict:

@@ -23,7 +23,7 @@ from ..gains import current_pi, gains_from_integers
 from ..vendor import to_si
 from .common import SOURCES, SQRT3, fixed
 
-__all__ = ["OPTIONS", "CONVENTIONS", "gain_fields", "gain_range", "gains_to_ints",
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "gain_fields", "gain_range", "gains_to_ints",
            "ints_to_gains", "profile"]
 
 OPTIONS: tuple = ()
@@ -32,6 +32,12 @@ CONVENTIONS = {
     "line_or_phase": "phase", "rms_or_peak": "RMS", "clarke_k": "√2/3",
     "inductance_base": "L_b = U_b/(I_b·2π·f_b)", "pi_form": "parallel, ki·Ts folded in (Q16)",
     "rounding": "C2000 integer statements (truncating /, >>)",
+}
+CONVENTIONS_ZH = {
+    "voltage_base": "U_LL/√3（额定，相有效值）", "current_base": "I_rated（有效值）",
+    "line_or_phase": "相", "rms_or_peak": "有效值", "clarke_k": "√2/3",
+    "inductance_base": "L_b = U_b/(I_b·2π·f_b)", "pi_form": "并联，ki·Ts 合并（Q16）",
+    "rounding": "C2000 整数语句（/ 与 >> 截断）",
 }
 _VENDOR = {  # report vendor result -> (SI input it stands for, unit, what the integer is)
     "Rpm": ("rs", "R_s/Z_b·2^16"), "LD": ("ld", "L_d/L_b·2^13"), "LQ": ("lq", "L_q/L_b·2^13"),

@@ -27,7 +27,7 @@ import math
 from .common import SOURCES, TWO_PI, fixed
 from .headers import define, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "gain_q", "gain_fields", "gain_range", "gains_to_ints",
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "gain_q", "gain_fields", "gain_range", "gains_to_ints",
            "ints_to_gains", "profile", "header"]
 
 OPTIONS = (
@@ -43,6 +43,14 @@ CONVENTIONS = {
     "inductance_base": "two: V_b·Δt/I_b (Q13) and V_b/(I_b·ω_b) (Q15)",
     "pi_form": "parallel, Ki·Δt folded in (scale V_b/(I_b·Δt))",
     "rounding": "nearest (motorBench)",
+}
+CONVENTIONS_ZH = {
+    "voltage_base": "V_b = 直流母线满量程（硬件）",
+    "current_base": "I_b = 电流满量程（硬件）", "line_or_phase": "相",
+    "rms_or_peak": "峰值（线-中性点 0-峰值）", "clarke_k": "2/3",
+    "inductance_base": "两种：V_b·Δt/I_b（Q13）与 V_b/(I_b·ω_b)（Q15）",
+    "pi_form": "并联，Ki·Δt 合并（比例 V_b/(I_b·Δt)）",
+    "rounding": "最近（motorBench）",
 }
 
 

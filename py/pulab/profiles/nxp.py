@@ -34,7 +34,7 @@ import math
 from .common import SOURCES, SQRT3, TWO_PI, fixed, mantissa_shift
 from .headers import define, define_float, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "u_max", "gain_fields", "gain_range", "gains_to_ints",
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "u_max", "gain_fields", "gain_range", "gains_to_ints",
            "ints_to_gains", "profile", "header"]
 
 OPTIONS = (
@@ -53,6 +53,14 @@ CONVENTIONS = {
     "inductance_base": "none: L enters through Kp·I_max/U_max and the observer scales",
     "pi_form": "parallel, Ki·T_s folded in (÷2 trapezoidal)",
     "rounding": "ACC32()/FRAC16() macros: toward zero, saturating",
+}
+CONVENTIONS_ZH = {
+    "voltage_base": "U_max = U_DCB_MAX/UmaxCoeff（硬件）",
+    "current_base": "I_MAX（硬件）", "line_or_phase": "相", "rms_or_peak": "峰值",
+    "clarke_k": "2/3（GMCLIB Clarke；此处未在公开文件中读到）",
+    "inductance_base": "无：L 经 Kp·I_max/U_max 与观测器比例进入",
+    "pi_form": "并联，Ki·T_s 合并（梯形离散时 ÷2）",
+    "rounding": "ACC32()/FRAC16() 宏：向零，饱和",
 }
 
 

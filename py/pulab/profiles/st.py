@@ -32,7 +32,7 @@ import math
 from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor
 from .headers import define, define_float, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "max_current", "gain_fields", "gain_range",
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "max_current", "gain_fields", "gain_range",
            "gains_to_ints", "ints_to_gains", "profile", "header"]
 
 _GAIN = 8.0
@@ -55,6 +55,15 @@ CONVENTIONS = {
     "inductance_base": "none: LS in H (float) enters C1..C5",
     "pi_form": "parallel, int16 gain / power-of-two divisor, Ki·T folded in",
     "rounding": "C casts (uint16_t)/(int16_t)/(int32_t): toward zero",
+}
+CONVENTIONS_ZH = {
+    "voltage_base": "U_dc/√3 对应 32768 数字量（假设，满调制）",
+    "current_base": "MAX_CURRENT = V_ref/(2·R_shunt·G) 对应 32768 数字量（硬件）",
+    "line_or_phase": "相", "rms_or_peak": "峰值（0-峰值数字量）",
+    "clarke_k": "2/3（幅值不变，假设）",
+    "inductance_base": "无：LS 以 H 存（浮点），进入 C1..C5",
+    "pi_form": "并联，int16 增益 / 2 的幂除数，Ki·T 合并",
+    "rounding": "C 强制转换 (uint16_t)/(int16_t)/(int32_t)：向零",
 }
 
 

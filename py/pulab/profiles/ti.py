@@ -29,7 +29,7 @@ from __future__ import annotations
 from .common import SOURCES, SQRT2, derived, fixed
 from .headers import define, define_float, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "gain_fields", "gain_range", "gains_to_ints",
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "gain_fields", "gain_range", "gains_to_ints",
            "ints_to_gains", "profile", "header"]
 
 #: (input name, default from the motor and drive, meaning)
@@ -49,6 +49,14 @@ CONVENTIONS = {
     "clarke_k": "2/3 (CTRL_setupClarke_I: 1/3, 1/√3 scale factors)",
     "inductance_base": "none: L stays in H (float); Kp_pu = 0.25·L·I_FS/(T·V_FS)",
     "pi_form": "series: Ui += Ki·(Kp·e)", "rounding": "_IQ(): (long) cast, toward zero",
+}
+CONVENTIONS_ZH = {
+    "voltage_base": "USER_IQ_FULL_SCALE_VOLTAGE_V（硬件）",
+    "current_base": "USER_IQ_FULL_SCALE_CURRENT_A（硬件）",
+    "line_or_phase": "相", "rms_or_peak": "峰值",
+    "clarke_k": "2/3（CTRL_setupClarke_I：比例系数 1/3、1/√3）",
+    "inductance_base": "无：L 以 H 存（浮点）；Kp_pu = 0.25·L·I_FS/(T·V_FS)",
+    "pi_form": "串联：Ui += Ki·(Kp·e)", "rounding": "_IQ()：(long) 强制转换，向零",
 }
 
 

@@ -60,6 +60,9 @@ export default async function vendors({ check, assert, newPage, subSrv, ready, w
         await page.$eval('#panel-vendors', (e) => e.scrollIntoView());
         await page.waitForTimeout(200);
         await page.screenshot({ path: join(SHOTS, `vendors-${lang}-${w}.png`) });
+        await page.$eval('#panel-vendors .vendors-translate', (e) => e.scrollIntoView());
+        await page.waitForTimeout(100);
+        await page.screenshot({ path: join(SHOTS, `vendors-translate-${lang}-${w}.png`) });
       }
     }
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);

@@ -4,7 +4,7 @@
 import { flagChips, h, num, table } from '../dom';
 import { effectiveInput } from '../fields';
 import { parseNumber } from '../format';
-import { errText, t, type Key } from '../i18n';
+import { errText, getLang, t, type Key } from '../i18n';
 import { reportInput, type Input } from '../state';
 import type { Panel, PanelContext } from './panel';
 
@@ -41,7 +41,7 @@ const BASE_ROWS = ['voltage_base', 'current_base', 'line_or_phase', 'rms_or_peak
 const BASE_NUMS: [string, string][] = [['U_b', 'V'], ['I_b', 'A'], ['Z_b', 'Ω'], ['L_b', 'H']];
 
 type Constant = { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string };
-type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null> };
+type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>> };
 type Fail = { ok: false; field: string; message: string; message_zh?: string };
 type Step = { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: Vendor; drift_pct?: { kp: number; ki: number } };
 type Translation = { si: { kp: number; ki: number }; profiles: Record<Vendor, Step>; chain: Step[]; round_trip: { values: Record<string, number>; delta: Record<string, number> } };
@@ -183,7 +183,12 @@ function hwForm(ctx: PanelContext): HTMLElement {
 function basesTable(): HTMLElement {
   const rows: HTMLElement[] = [];
   for (const k of BASE_ROWS) {
-    rows.push(h('tr', {}, h('td', {}, t(`vb_${k}` as Key)), VENDORS.map((v) => h('td', {}, String(profiles?.[v]?.bases?.[k] ?? '…')))));
+    const words = (v: Vendor) => {
+      const b = profiles?.[v]?.bases;
+      const zh = getLang() === 'zh' ? (b?.zh as unknown as Record<string, string> | undefined)?.[k] : undefined;
+      return zh ?? String(b?.[k] ?? '…');
+    };
+    rows.push(h('tr', {}, h('td', {}, t(`vb_${k}` as Key)), VENDORS.map((v) => h('td', {}, words(v)))));
   }
   for (const [k, unit] of BASE_NUMS) {
     rows.push(h('tr', {}, h('td', {}, h('code', {}, k)), VENDORS.map((v) => {
