@@ -139,6 +139,8 @@ SOURCES = {
     "st_conv": "dronectl/g431-mcsdk : Inc/parameters_conversion.h",
     "st_motor": "dronectl/g431-mcsdk : Inc/pmsm_motor_parameters.h",
     "st_drive": "dronectl/g431-mcsdk : Inc/drive_parameters.h",
+    "st_pid": "ST MCSDK pid_regulator.c PI_Controller and mc_math.c MCM_Clarke (public copies "
+              "found by exact-string search; path not pinned)",
     "mchp_motor": "microchip-pic-avr-solutions/motorbench-release-collateral : "
                   "zsmt-reference-actblf02-lvmc.X/mcc_generated_files/motorBench/parameters/"
                   "motor_params.h",

@@ -11,7 +11,9 @@ Hardware scaling (parameters_conversion.h)::
 LS is L_q (pmsm_motor_parameters.h: "For I-PMSM it is equal to Lq"); NOMINAL_CURRENT
 is I_peak·32767·R_shunt·G/(V_ref/2) (the formula in that file's comment).
 
-Current PI: ``out = Kp·e/KPDIV + ΣKi·e/KIDIV`` in digits. The voltage digit is taken
+Current PI (pid_regulator.c ``PI_Controller``): ``out = (Kp·e >> log2 KPDIV) +
+(ΣKi·e >> log2 KIDIV)`` in digits; the FULL_MISRA_C_COMPLIANCY build divides instead, which
+rounds negative values toward zero rather than down (one LSB apart). The voltage digit is taken
 as (U_dc/√3)/32768 (full SVPWM modulation, phase peak) — an assumption, not read in
 a public file; the Workbench's own Kp/Ki rule is not public either, so pulab stores
 the report's kp, ki::
@@ -51,7 +53,7 @@ CONVENTIONS = {
     "voltage_base": "U_dc/√3 at 32768 digits (assumed, full modulation)",
     "current_base": "MAX_CURRENT = V_ref/(2·R_shunt·G) at 32768 digits (hardware)",
     "line_or_phase": "phase", "rms_or_peak": "peak (0-to-peak digits)",
-    "clarke_k": "2/3 (amplitude-invariant, assumed)",
+    "clarke_k": "2/3 (MCM_Clarke: α = a, β = −(a + 2b)/√3, mc_math.c)",
     "inductance_base": "none: LS in H (float) enters C1..C5",
     "pi_form": "parallel, int16 gain / power-of-two divisor, Ki·T folded in",
     "rounding": "C casts (uint16_t)/(int16_t)/(int32_t): toward zero",
@@ -60,7 +62,7 @@ CONVENTIONS_ZH = {
     "voltage_base": "U_dc/√3 对应 32768 数字量（假设，满调制）",
     "current_base": "MAX_CURRENT = V_ref/(2·R_shunt·G) 对应 32768 数字量（硬件）",
     "line_or_phase": "相", "rms_or_peak": "峰值（0-峰值数字量）",
-    "clarke_k": "2/3（幅值不变，假设）",
+    "clarke_k": "2/3（MCM_Clarke：α = a，β = −(a + 2b)/√3，mc_math.c）",
     "inductance_base": "无：LS 以 H 存（浮点），进入 C1..C5",
     "pi_form": "并联，int16 增益 / 2 的幂除数，Ki·T 合并",
     "rounding": "C 强制转换 (uint16_t)/(int16_t)/(int32_t)：向零",
