@@ -104,7 +104,8 @@ def gains_to_ints(kp: float, ki: float, ctx: dict, opt: dict, axis: str) -> dict
     kpdiv = opt["tf_kpdiv"] or pow2_divisor(kp / r)
     kidiv = opt["tf_kidiv"] or pow2_divisor(ki * t / r)
     kp_name, ki_name = gain_fields(axis)
-    src = derived("kp·MAX_CURRENT/(U_dc/√3); the Workbench rule is not public")
+    src = (derived("kp·MAX_CURRENT/(U_dc/√3); the Workbench rule is not public")
+           + "; PI form: " + SOURCES["st_pid"])
     return {kp_name: fixed(kp_name, kp / r, 16, int(math.log2(kpdiv)), r, "V/A",
                            "kp·MAX_CURRENT/(U_dc/√3)", src, fmt=f"int16 / {kpdiv}"),
             ki_name: fixed(ki_name, ki * t / r, 16, int(math.log2(kidiv)), r / t, "V/(A·s)",
