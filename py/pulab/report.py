@@ -195,6 +195,11 @@ def format_text(r: dict) -> str:
     lines += _table("Magic constants", [(k, f"exact {c['exact']:.6f} = {c['expression']}, "
                                             f"rel. error {100 * c['rel_error']:+.4f} %")
                                         for k, c in r["constants"].items()])
+    for name, prof in r.get("profiles", {}).items():
+        lines += _table(f"Profile {name}", [
+            (k, f"{c['value']:>11d}  {c['format']:<16} err {c['error_pct']:+.4f} %  = "
+                f"{c['si']:.6g} {c['unit']}  {' '.join(c['flags'])}")
+            for k, c in prof["constants"].items()])
     if r["warnings"]:
         lines += ["Warnings", "--------"] + [f"  ! {w}" for w in r["warnings"]]
     return "\n".join(lines).rstrip() + "\n"

@@ -464,3 +464,27 @@ def test_conventions_in_both_languages(name):
     assert list(en) == list(zh)
     assert all(any("\u4e00" <= ch <= "\u9fff" for ch in zh[k]) for k in zh
                if k not in ("clarke_k", "inductance_base")), zh
+
+
+@pytest.mark.skipif(GCC is None, reason="gcc not installed")
+@pytest.mark.parametrize("motor", MOTORS)
+def test_st_pi_example_shift_and_misra_builds_by_gcc(tmp_path, motor):
+    """pid_regulator.c's output line in both builds, compiled: >> floors, / truncates."""
+    st_p = report(_with_profiles(MOTORS[motor]))["profiles"]["st"]
+    body = "int32_t e;\n"
+    for ex in st_p["pi_example"]:
+        body += (f"e = {ex['error']};\n"
+                 "printf(\"%ld %ld\\n\", (long)(((int32_t)PID_TORQUE_KP_DEFAULT * e >> TF_KPDIV_LOG)"
+                 " + ((int32_t)PID_TORQUE_KI_DEFAULT * e >> TF_KIDIV_LOG)),"
+                 " (long)(((int32_t)PID_TORQUE_KP_DEFAULT * e / (int32_t)TF_KPDIV)"
+                 " + ((int32_t)PID_TORQUE_KI_DEFAULT * e / (int32_t)TF_KIDIV)));\n")
+    out = _compile_and_run(tmp_path, header(report(_with_profiles(MOTORS[motor])), "st"), body)
+    got = [tuple(map(int, line.split())) for line in out.splitlines()]
+    assert got == [(ex["shift"], ex["misra"]) for ex in st_p["pi_example"]]
+
+
+def test_cli_text_format_lists_profiles(tmp_path):
+    path = tmp_path / "in.json"
+    path.write_text(json.dumps(_with_profiles(SEED_INPUT)))
+    p = _cli("report", "--format", "text", str(path))
+    assert p.returncode == 0 and "Profile microchip" in p.stdout and "KIP" in p.stdout

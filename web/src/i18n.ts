@@ -228,6 +228,7 @@ const en = {
   vd_translator: 'Translator', vd_from: 'From', vd_axis: 'Axis', vd_translate_hint: 'Integers of the chosen vendor; every other vendor\'s integers follow through SI.',
   vd_si_gains: 'In SI:', vd_profile: 'Profile', vd_loss: 'Rounding loss kp / ki', vd_chain: 'Chain: through every vendor (Inovance → TI → NXP → ST → Microchip, from the source on) and back to the source',
   vd_step: 'Step', vd_drift: 'Drift kp / ki', vd_roundtrip: 'Back at the source:',
+  vd_pi_example: 'Torque PI, first output (digits) for a ±0.1 % current error, shifting build (>>) vs FULL_MISRA_C_COMPLIANCY build (/):',
   vb_voltage_base: 'Voltage base', vb_current_base: 'Current base', vb_line_or_phase: 'Line or phase', vb_rms_or_peak: 'RMS or peak',
   vb_clarke_k: 'Clarke k', vb_inductance_base: 'Inductance base', vb_pi_form: 'PI form', vb_rounding: 'Rounding',
 };
@@ -460,6 +461,7 @@ const zh: Record<Key, string> = {
   vd_translator: '翻译器', vd_from: '来源', vd_axis: '轴', vd_translate_hint: '输入所选厂商的整数；其他厂商的整数经国际单位制换算得到。',
   vd_si_gains: '国际单位制：', vd_profile: '配置', vd_loss: '取整损失 kp / ki', vd_chain: '链条：从来源出发依次经过每家厂商（汇川 → TI → NXP → ST → Microchip），回到来源',
   vd_step: '步骤', vd_drift: '漂移 kp / ki', vd_roundtrip: '回到起点：',
+  vd_pi_example: '转矩 PI 对 ±0.1 % 电流误差的首个输出（数字量）：移位版本（>>）与 FULL_MISRA_C_COMPLIANCY 版本（/）：',
   vb_voltage_base: '电压基值', vb_current_base: '电流基值', vb_line_or_phase: '线或相', vb_rms_or_peak: '有效值或峰值',
   vb_clarke_k: 'Clarke 系数 k', vb_inductance_base: '电感基值', vb_pi_form: 'PI 形式', vb_rounding: '取整方式',
 };

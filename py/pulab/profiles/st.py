@@ -31,11 +31,12 @@ from __future__ import annotations
 
 import math
 
+from ..cint import trunc_div
 from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor
 from .headers import define, define_float, guard
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "max_current", "gain_fields", "gain_range",
-           "gains_to_ints", "ints_to_gains", "profile", "header"]
+           "gains_to_ints", "ints_to_gains", "pi_first_output", "profile", "header"]
 
 _GAIN = 8.0
 OPTIONS = (
@@ -119,6 +120,23 @@ def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> 
     return kp_int / kpdiv * r, ki_int / kidiv * r / t
 
 
+def pi_first_output(kp: int, kpdiv: int, ki: int, kidiv: int, error: int, misra: bool) -> int:
+    """The first output of ``PI_Controller`` from a zero integral (pid_regulator.c), digits.
+
+    The default build shifts (an arithmetic shift floors), the FULL_MISRA_C_COMPLIANCY build
+    divides (C division truncates toward zero): a negative term differs by one LSB.
+
+    >>> pi_first_output(9456, 16384, 2364, 16384, -33, False)
+    -25
+    >>> pi_first_output(9456, 16384, 2364, 16384, -33, True)
+    -23
+    """
+    p, i = kp * error, ki * error
+    if misra:
+        return trunc_div(p, kpdiv) + trunc_div(i, kidiv)
+    return (p >> (kpdiv.bit_length() - 1)) + (i >> (kidiv.bit_length() - 1))
+
+
 def _c_trunc(x: float) -> int:
     return math.trunc(x)
 
@@ -165,7 +183,15 @@ def profile(ctx: dict, opt: dict) -> dict:
                       fmt="int32_t", value=_c_trunc(f1 * out["MAX_VOLTAGE"]["value"] / den))
     o.update(max_current_a=imax, pwm_frequency_hz=f_reg, max_application_speed_rpm=max_rpm,
              motor_voltage_constant=ke)
-    return {"inputs": o, "constants": out}
+    # A ±0.1 % current error through the torque PI: the shift and the MISRA build disagree
+    # on the negative side (rounding down vs toward zero).
+    e = max(1, round(0.001 * 32768))
+    kp_i, ki_i = out["PID_TORQUE_KP_DEFAULT"]["value"], out["PID_TORQUE_KI_DEFAULT"]["value"]
+    example = [{"error": err,
+                "shift": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, False),
+                "misra": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, True)}
+               for err in (e, -e)]
+    return {"inputs": o, "constants": out, "pi_example": example}
 
 
 def header(p: dict, ctx: dict) -> str:

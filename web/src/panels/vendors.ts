@@ -41,7 +41,7 @@ const BASE_ROWS = ['voltage_base', 'current_base', 'line_or_phase', 'rms_or_peak
 const BASE_NUMS: [string, string][] = [['U_b', 'V'], ['I_b', 'A'], ['Z_b', 'Ω'], ['L_b', 'H']];
 
 type Constant = { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string };
-type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>> };
+type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[] };
 type Fail = { ok: false; field: string; message: string; message_zh?: string };
 type Step = { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: Vendor; drift_pct?: { kp: number; ki: number } };
 type Translation = { si: { kp: number; ki: number }; profiles: Record<Vendor, Step>; chain: Step[]; round_trip: { values: Record<string, number>; delta: Record<string, number> } };
@@ -218,7 +218,18 @@ function constantsBlock(ctx: PanelContext, v: Vendor, el: HTMLElement): HTMLElem
     h('summary', {}, t(`vd_${v}` as Key), ' ',
       h('button', { type: 'button', 'data-header': v, onclick: (ev: Event) => { ev.preventDefault(); void downloadHeader(ctx, v, el); } }, t('vd_header')),
       h('span', { class: 'err', 'data-err-for': `header.${v}` })),
-    table([t('vd_const'), t('value'), t('vd_format'), t('vd_ideal'), t('vd_error'), t('vd_si'), t('flags'), t('vd_source')], rows, 'vendors-constants'));
+    table([t('vd_const'), t('value'), t('vd_format'), t('vd_ideal'), t('vd_error'), t('vd_si'), t('flags'), t('vd_source')], rows, 'vendors-constants'),
+    piExample(v));
+}
+
+/** ST only: the torque PI's first output in the shifting and the MISRA (dividing) build. */
+function piExample(v: Vendor): HTMLElement | null {
+  const ex = profiles?.[v]?.pi_example;
+  if (!ex) return null;
+  return h('p', { class: 'hint' }, t('vd_pi_example'), ' ', ex.map((x, i) => {
+    const p = `profiles.${v}.pi_example.${i}`;
+    return h('span', { class: 'rt' + (x.shift !== x.misra ? ' bad' : '') }, 'e = ', num(`${p}.error`, x.error, { kind: 'int' }), ': >> ', num(`${p}.shift`, x.shift, { kind: 'int' }), ', / ', num(`${p}.misra`, x.misra, { kind: 'int' }));
+  }));
 }
 
 function translator(ctx: PanelContext): HTMLElement {
