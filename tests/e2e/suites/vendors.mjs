@@ -30,7 +30,7 @@ export default async function vendors({ check, assert, newPage, subSrv, ready, w
   });
 
   await check('vendors: translator round-trips Inovance → … → Inovance; bad integers at the field', async () => {
-    await page.waitForSelector(key('translation.round_trip.delta.pm_kp'), { timeout: 20_000 });
+    await page.waitForSelector(key('translation.round_trip.delta.pm_kp'), { timeout: 60_000 });
     assert(Math.abs(await valueOf(page, 'translation.round_trip.delta.pm_kp')) <= 1, 'pm_kp round trip');
     assert(Math.abs(await valueOf(page, 'translation.round_trip.delta.pm_ki')) <= 1, 'pm_ki round trip');
     await page.selectOption('select[name="translate.from"]', 'ti');

@@ -79,6 +79,25 @@ function baseInput(ctx: PanelContext, section: Record<string, unknown>): Input {
   return { ...reportInput(effectiveInput(ctx.input)), profiles: section as Input[string] };
 }
 
+// Computed only while (nearly) visible: five profiles cost ~0.5 ms of Python per report, which
+// must not queue behind every keystroke while the reader looks at another panel.
+let visibleNow = typeof IntersectionObserver === 'undefined';
+let io: IntersectionObserver | null = null;
+let watched: HTMLElement | null = null;
+function watch(el: HTMLElement): void {
+  if (el === watched || typeof IntersectionObserver === 'undefined') return;
+  io ??= new IntersectionObserver((entries) => {
+    for (const e of entries) if (e.target === watched) visibleNow = e.isIntersecting;
+    if (visibleNow && lastCtx) {
+      refresh(lastCtx.ctx);
+      rerender();
+    }
+  }, { rootMargin: '400px' });
+  if (watched) io.unobserve(watched); // the layout rebuilt the panel: follow the new element
+  watched = el;
+  io.observe(el);
+}
+
 function rerender(): void {
   if (lastCtx) vendorsPanel.render(lastCtx.el, lastCtx.ctx);
 }
@@ -283,7 +302,8 @@ export const vendorsPanel: Panel = {
   title: 'p_vendors',
   render(el, ctx) {
     lastCtx = { el, ctx };
-    refresh(ctx);
+    watch(el);
+    if (visibleNow) refresh(ctx);
     const focused = document.activeElement instanceof HTMLInputElement && el.contains(document.activeElement) ? document.activeElement.name : null;
     const other = profErr && !profErr.field.startsWith('profiles.') ? h('p', { class: 'err' }, `${profErr.field}: ${errText(profErr)}`) : null;
     el.replaceChildren(h('div', { class: 'vendors' },
