@@ -92,6 +92,8 @@ CATALOG = [
     (r"must be a power of two, got (.*)", r"必须是 2 的幂，当前为 \1"),
     (r"profiles\.(\S+): (\S+) does not fit (.+); stored (\S+)",
      r"profiles.\1：\2 超出 \3 的范围；实际存储 \4"),
+    (r"profiles\.ti: USER_checkForErrors would set (\S+) \((.+)\)",
+     r"profiles.ti：USER_checkForErrors 会置位 \1（\2）"),
     (r"profiles\.(\S+): rounds to 0 in (.+) \(ideal (\S+)\)",
      r"profiles.\1：在 \2 中取整为 0（理想值 \3）"),
 ]

@@ -72,7 +72,8 @@ def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
 
 def _profile_warnings(prof: dict) -> list:
     """One warning per profile constant the firmware could not store as intended."""
-    w = []
+    w = [f"profiles.ti: USER_checkForErrors would set {code} ({why})"
+         for code, why in prof["ti"]["checks"]]
     for name, p in prof.items():
         for k, c in p["constants"].items():
             if "out_of_range" in c["flags"] or "saturate" in c["flags"]:

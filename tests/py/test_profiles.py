@@ -488,3 +488,19 @@ def test_cli_text_format_lists_profiles(tmp_path):
     path.write_text(json.dumps(_with_profiles(SEED_INPUT)))
     p = _cli("report", "--format", "text", str(path))
     assert p.returncode == 0 and "Profile microchip" in p.stdout and "KIP" in p.stdout
+
+
+@pytest.mark.parametrize("ti,codes", [
+    ({}, []),
+    ({"full_scale_current_a": 1.0}, ["USER_ErrorCode_iqFullScaleCurrent_A_Low"]),
+    ({"full_scale_freq_hz": 40.0}, ["USER_ErrorCode_iqFullScaleFreq_Hz_Low"]),
+    ({"full_scale_freq_hz": 9000.0}, ["USER_ErrorCode_iqFullScaleFreq_Hz_High"]),
+])
+def test_ti_user_check_for_errors(seed_input, ti, codes):
+    """user.c USER_checkForErrors conditions (gdgly/EV_28069M): seed motor, 4 pole pairs,
+    I_FS = 2·√2·1.5 A, I_max = √2·1.5 A; 9000 Hz ≥ 128·4·1000/60 = 8533 Hz."""
+    r = report(_with_profiles(seed_input, {"ti": ti}))
+    assert sorted({c for c, _ in r["profiles"]["ti"]["checks"]}) == codes
+    ws = [w for w in r["warnings"] if "USER_checkForErrors" in w]
+    assert len(ws) == len(r["profiles"]["ti"]["checks"])
+    assert all(has_chinese(w) for w in ws)

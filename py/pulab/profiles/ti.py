@@ -30,7 +30,7 @@ from .common import SOURCES, SQRT2, derived, fixed
 from .headers import define, define_float, guard
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "gain_fields", "gain_range", "gains_to_ints",
-           "ints_to_gains", "profile", "header"]
+           "ints_to_gains", "check_for_errors", "profile", "header"]
 
 #: (input name, default from the motor and drive, meaning)
 OPTIONS = (
@@ -93,6 +93,35 @@ def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> 
     return kp, kp * ki_int / 2.0 ** q / ctx["ts"]
 
 
+def check_for_errors(ctx: dict, opt: dict) -> list:
+    """The conditions of MotorWare's ``USER_checkForErrors`` (user.c) that these inputs decide.
+
+    Each is ``[error code, condition]`` — the firmware would stop with that code. The checks
+    keep the speed gains and frequencies inside IQ24's ±128 (the 128 in each condition).
+
+    >>> check_for_errors({"ts": 1e-4, "pp": 4}, {"full_scale_voltage_v": 24.0,
+    ...     "full_scale_current_a": 1.0, "full_scale_freq_hz": 20.0, "max_current_a": 2.0})
+    [['USER_ErrorCode_iqFullScaleCurrent_A_Low', 'I_FS < USER_MOTOR_MAX_CURRENT'], ['USER_ErrorCode_iqFullScaleFreq_Hz_Low', 'F_FS < 50 Hz']]
+    """
+    i, f, imax, t = (opt["full_scale_current_a"], opt["full_scale_freq_hz"],
+                     opt["max_current_a"], ctx["ts"])
+    rules = (
+        ("USER_ErrorCode_iqFullScaleCurrent_A_Low",
+         i <= 0.02 * imax * f / 128.0, "I_FS <= 0.02·I_max·F_FS/128"),
+        ("USER_ErrorCode_iqFullScaleCurrent_A_Low",
+         i <= 2.0 * imax * f * t / 128.0, "I_FS <= 2·I_max·F_FS·T/128"),
+        ("USER_ErrorCode_iqFullScaleCurrent_A_Low", i < imax, "I_FS < USER_MOTOR_MAX_CURRENT"),
+        ("USER_ErrorCode_iqFullScaleFreq_Hz_High",
+         f >= 128.0 * i / (0.02 * imax), "F_FS >= 128·I_FS/(0.02·I_max)"),
+        ("USER_ErrorCode_iqFullScaleFreq_Hz_High",
+         f >= 128.0 * i / (2.0 * imax * t), "F_FS >= 128·I_FS/(2·I_max·T)"),
+        ("USER_ErrorCode_iqFullScaleFreq_Hz_High",
+         f >= 128.0 * ctx["pp"] * 1000.0 / 60.0, "F_FS >= 128·p·1000/60"),
+        ("USER_ErrorCode_iqFullScaleFreq_Hz_Low", f < 50.0, "F_FS < 50 Hz"),
+    )
+    return [[code, why] for code, hit, why in rules if hit]
+
+
 def profile(ctx: dict, opt: dict) -> dict:
     """TI constants for this motor: the user's current PI, MotorWare's defaults, Rs_pu."""
     v, i, f, t = (opt["full_scale_voltage_v"], opt["full_scale_current_a"],
@@ -114,7 +143,7 @@ def profile(ctx: dict, opt: dict) -> dict:
                                 "2·I_max·F_FS·T/I_FS (series)", SOURCES["ti_ctrl"])
     out["Rs_pu"] = _iq("Rs_pu", ctx["rs"] * i / v, opt, v / i, "Ω", "R_s·I_FS/V_FS",
                        derived("TI per unit of V_FS/I_FS; MotorWare keeps USER_MOTOR_Rs in Ω"))
-    return {"inputs": opt, "constants": out}
+    return {"inputs": opt, "constants": out, "checks": check_for_errors(ctx, opt)}
 
 
 def header(p: dict, ctx: dict) -> str:

@@ -41,7 +41,7 @@ const BASE_ROWS = ['voltage_base', 'current_base', 'line_or_phase', 'rms_or_peak
 const BASE_NUMS: [string, string][] = [['U_b', 'V'], ['I_b', 'A'], ['Z_b', 'Ω'], ['L_b', 'H']];
 
 type Constant = { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string };
-type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[] };
+type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[]; checks?: [string, string][] };
 type Fail = { ok: false; field: string; message: string; message_zh?: string };
 type Step = { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: Vendor; drift_pct?: { kp: number; ki: number } };
 type Translation = { si: { kp: number; ki: number }; profiles: Record<Vendor, Step>; chain: Step[]; round_trip: { values: Record<string, number>; delta: Record<string, number> } };
@@ -241,8 +241,13 @@ function constantsBlock(ctx: PanelContext, v: Vendor, el: HTMLElement): HTMLElem
     piExample(v));
 }
 
-/** ST only: the torque PI's first output in the shifting and the MISRA (dividing) build. */
+/** TI: the USER_checkForErrors codes the firmware would set; ST: the PI example below. */
 function piExample(v: Vendor): HTMLElement | null {
+  const checks = profiles?.[v]?.checks;
+  if (checks) {
+    return checks.length === 0 ? h('p', { class: 'hint' }, t('vd_checks_ok'))
+      : h('ul', { class: 'err vendors-checks' }, checks.map(([code, why]) => h('li', {}, h('code', {}, code), ` (${why})`)));
+  }
   const ex = profiles?.[v]?.pi_example;
   if (!ex) return null;
   return h('p', { class: 'hint' }, t('vd_pi_example'), ' ', ex.map((x, i) => {
