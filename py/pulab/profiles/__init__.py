@@ -3,7 +3,8 @@
 One module per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.vendor`),
 :mod:`.ti`, :mod:`.nxp`, :mod:`.st`, :mod:`.microchip` — each with the same small
 interface: ``OPTIONS`` (its hardware inputs and their defaults), ``CONVENTIONS`` and
-``CONVENTIONS_ZH`` (its base choices, in words, English and Chinese), ``profile(ctx, opt)`` (its constants),
+``CONVENTIONS_ZH`` (its base choices, in words, English and Chinese), ``bases(ctx, opt)``
+(its voltage, current and inductance bases in SI), ``profile(ctx, opt)`` (its constants),
 ``gain_fields``/``gain_range``/``gains_to_ints``/``ints_to_gains`` (its current-loop
 integers, for the translator) and, except Inovance, ``header(p, ctx)``.
 
@@ -27,9 +28,9 @@ from __future__ import annotations
 
 from ..bases import flux_linkage
 from ..errors import InputError
-from ..inputs import object_fields, real
+from ..inputs import _integer, object_fields, real  # the report's own checks
 from . import inovance, microchip, nxp, st, ti
-from .common import SQRT2, SQRT3, TWO_PI
+from .common import SQRT2
 
 __all__ = ["NAMES", "MODULES", "context", "context_of", "options", "profiles", "bases_table",
            "header"]
@@ -74,13 +75,7 @@ def _option(name: str, key: str, v):
             raise InputError(path, f"must be true or false, got {v!r}")
         return v
     if key in _INTEGERS:
-        lo, hi = _INTEGERS[key]
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or \
-                (isinstance(v, float) and not v.is_integer()):
-            raise InputError(path, f"must be an integer, got {v!r}")
-        v = int(v)
-        if not lo <= v <= hi:
-            raise InputError(path, f"must be {lo}..{hi}, got {v}")
+        v = _integer(v, path, *_INTEGERS[key])
         if key.startswith("tf_") and v & (v - 1):
             raise InputError(path, f"must be a power of two, got {v}")
         return v
@@ -112,22 +107,7 @@ def options(section, ctx: dict) -> dict:
 
 def bases_table(name: str, ctx: dict, p: dict) -> dict:
     """The conventions of one profile side by side: words and the numeric bases (SI)."""
-    o = p["inputs"]
-    if name == "inovance":
-        u, i = ctx["u_rated"] / SQRT3, ctx["i_rated"]
-        l_b = u / i / (TWO_PI * ctx["f_base"])
-    elif name == "ti":
-        u, i = o["full_scale_voltage_v"], o["full_scale_current_a"]
-        l_b = u / i * ctx["ts"]
-    elif name == "nxp":
-        u, i = o["u_max_v"], o["i_max_a"]
-        l_b = u / i * ctx["ts"]
-    elif name == "st":
-        u, i = ctx["udc"] / SQRT3, o["max_current_a"]
-        l_b = None
-    else:
-        u, i = o["voltage_base_v"], o["current_base_a"]
-        l_b = u / i * ctx["ts"]
+    u, i, l_b = MODULES[name].bases(ctx, p["inputs"])
     return {**MODULES[name].CONVENTIONS, "zh": MODULES[name].CONVENTIONS_ZH, "U_b": u, "I_b": i,
             "Z_b": u / i, "L_b": l_b, "kp_per_unit_of_1_ohm": i / u}
 
@@ -138,6 +118,7 @@ def profiles(ctx: dict, opts: dict) -> dict:
     for name in NAMES:
         p = MODULES[name].profile(ctx, opts[name])
         p["bases"] = bases_table(name, ctx, p)
+        p["files"] = MODULES[name].FILES
         out[name] = p
     return out
 

@@ -29,8 +29,8 @@ from fractions import Fraction
 
 from ..qformat import QFormat, encode
 
-__all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "from_int",
-           "SOURCES", "derived"]
+__all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "SOURCES",
+           "derived"]
 
 SQRT2 = math.sqrt(2.0)
 SQRT3 = math.sqrt(3.0)
@@ -80,11 +80,6 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
             "si": si, "si_ideal": ideal * 2.0 ** shift * si_per_unit, "unit": unit,
             "scale": 2.0 ** shift * si_per_unit,
             "expression": expression, "source": source, "flags": flags}
-
-
-def from_int(value: int, frac_bits: int, si_per_unit: float, shift: int = 0) -> float:
-    """SI meaning of a stored integer (the inverse of :func:`fixed`'s scaling)."""
-    return value / 2.0 ** frac_bits * 2.0 ** shift * si_per_unit
 
 
 def mantissa_shift(k: float) -> tuple[float, int]:

@@ -21,10 +21,10 @@ from __future__ import annotations
 
 from ..gains import current_pi, gains_from_integers
 from ..vendor import to_si
-from .common import SOURCES, SQRT3, fixed
+from .common import SOURCES, SQRT3, TWO_PI, fixed
 
-__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "gain_fields", "gain_range", "gains_to_ints",
-           "ints_to_gains", "profile"]
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile"]
 
 OPTIONS: tuple = ()
 CONVENTIONS = {
@@ -39,6 +39,8 @@ CONVENTIONS_ZH = {
     "inductance_base": "L_b = U_b/(I_b·2π·f_b)", "pi_form": "并联，ki·Ts 合并（Q16）",
     "rounding": "C2000 整数语句（/ 与 >> 截断）",
 }
+#: Where the rounding rule was read; files whose printed numbers the tests reproduce.
+FILES = {"rounding": SOURCES["seed"], "worked_numbers": [SOURCES["seed"]]}
 _VENDOR = {  # report vendor result -> (SI input it stands for, unit, what the integer is)
     "Rpm": ("rs", "R_s/Z_b·2^16"), "LD": ("ld", "L_d/L_b·2^13"), "LQ": ("lq", "L_q/L_b·2^13"),
     "FreqPer": ("f_rated", "f_n/f_b·2^15"), "FluxRotor": ("psi_rms", "ψ_r/ψ_b·2^12"),
@@ -49,6 +51,12 @@ _VENDOR = {  # report vendor result -> (SI input it stands for, unit, what the i
 
 def _bases(ctx: dict) -> tuple[float, float]:
     return ctx["u_rated"] / SQRT3, ctx["i_rated"]
+
+
+def bases(ctx: dict, opt: dict) -> tuple:
+    """U_b = U_LL/√3, I_b = I_rms, L_b = U_b/(I_b·2π·f_b) (seed 1.4-13)."""
+    u, i = _bases(ctx)
+    return u, i, u / i / (TWO_PI * ctx["f_base"])
 
 
 def gain_fields(axis: str) -> tuple[str, str]:

@@ -27,12 +27,13 @@ import math
 from .common import SOURCES, TWO_PI, fixed
 from .headers import define, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "gain_q", "gain_fields", "gain_range", "gains_to_ints",
-           "ints_to_gains", "profile", "header"]
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_q", "gain_fields",
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "header"]
 
 OPTIONS = (
     ("voltage_base_v", lambda c: c["udc"], "V_b, the DC-link voltage full scale; default U_dc"),
-    ("current_base_a", lambda c: c["i_fs"], "I_b, the current full scale; default 2·√2·I_rated"),
+    ("current_base_a", lambda c: c["i_fs"],
+     "I_b, the current full scale; default 2·√2·I_rated"),
     ("velocity_base_hz", lambda c: c["f_base"],
      "ω_b/2π, electrical velocity base; default f_b"),
 )
@@ -52,11 +53,20 @@ CONVENTIONS_ZH = {
     "pi_form": "并联，Ki·Δt 合并（比例 V_b/(I_b·Δt)）",
     "rounding": "最近（motorBench）",
 }
+#: Where the rounding rule was read; files whose printed numbers the tests reproduce.
+FILES = {"rounding": SOURCES["mchp_motor"],
+         "worked_numbers": [SOURCES["mchp_motor"], SOURCES["mchp_foc"]]}
 
 
 def _bases(ctx: dict, opt: dict) -> tuple[float, float, float, float]:
     v, i = opt["voltage_base_v"], opt["current_base_a"]
     return v, i, TWO_PI * opt["velocity_base_hz"], ctx["ts"]
+
+
+def bases(ctx: dict, opt: dict) -> tuple:
+    """V_b, I_b and the Δt inductance base V_b·Δt/I_b (the ω_b one is V_b/(I_b·ω_b))."""
+    v, i, _, dt = _bases(ctx, opt)
+    return v, i, v / i * dt
 
 
 def gain_fields(axis: str) -> tuple[str, str]:

@@ -34,8 +34,8 @@ import math
 from .common import SOURCES, SQRT3, TWO_PI, fixed, mantissa_shift
 from .headers import define, define_float, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "u_max", "gain_fields", "gain_range", "gains_to_ints",
-           "ints_to_gains", "profile", "header"]
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "u_max", "gain_fields",
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "header"]
 
 OPTIONS = (
     ("udcb_max_v", lambda c: c["udc"], "U_DCB_MAX, DC-bus full scale; default U_dc"),
@@ -62,6 +62,8 @@ CONVENTIONS_ZH = {
     "pi_form": "并联，Ki·T_s 合并（梯形离散时 ÷2）",
     "rounding": "ACC32()/FRAC16() 宏：向零，饱和",
 }
+#: Where the rounding rule was read; files whose printed numbers the tests reproduce.
+FILES = {"rounding": SOURCES["nxp_types"], "worked_numbers": [SOURCES["nxp_appconfig"]]}
 
 
 def u_max(udcb_max_v: float, coeff: float, rounded: bool = True) -> float:
@@ -72,6 +74,12 @@ def u_max(udcb_max_v: float, coeff: float, rounded: bool = True) -> float:
 
 def _scales(opt: dict) -> tuple[float, float]:
     return u_max(opt["udcb_max_v"], opt["u_max_coeff"], opt["round_u_max"]), opt["i_max_a"]
+
+
+def bases(ctx: dict, opt: dict) -> tuple:
+    """U_max, I_max; L enters the observer scales per T_s: effective base U_max·T_s/I_max."""
+    um, im = _scales(opt)
+    return um, im, um / im * ctx["ts"]
 
 
 def gain_fields(axis: str) -> tuple[str, str]:

@@ -29,8 +29,8 @@ from __future__ import annotations
 from .common import SOURCES, SQRT2, derived, fixed
 from .headers import define, define_float, guard
 
-__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "gain_fields", "gain_range", "gains_to_ints",
-           "ints_to_gains", "check_for_errors", "profile", "header"]
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
+           "gain_range", "gains_to_ints", "ints_to_gains", "check_for_errors", "profile", "header"]
 
 #: (input name, default from the motor and drive, meaning)
 OPTIONS = (
@@ -58,6 +58,14 @@ CONVENTIONS_ZH = {
     "inductance_base": "无：L 以 H 存（浮点）；Kp_pu = 0.25·L·I_FS/(T·V_FS)",
     "pi_form": "串联：Ui += Ki·(Kp·e)", "rounding": "_IQ()：(long) 强制转换，向零",
 }
+#: Where the rounding rule was read; files whose printed numbers the tests reproduce.
+FILES = {"rounding": SOURCES["ti_iqmath"], "checks": SOURCES["ti_user"], "worked_numbers": []}
+
+
+def bases(ctx: dict, opt: dict) -> tuple:
+    """V_FS, I_FS; L enters Kp_pu as L·I_FS/(T·V_FS), so its effective base is V_FS·T/I_FS."""
+    v, i = opt["full_scale_voltage_v"], opt["full_scale_current_a"]
+    return v, i, v / i * ctx["ts"]
 
 
 def gain_fields(axis: str) -> tuple[str, str]:
@@ -99,9 +107,10 @@ def check_for_errors(ctx: dict, opt: dict) -> list:
     Each is ``[error code, condition]`` — the firmware would stop with that code. The checks
     keep the speed gains and frequencies inside IQ24's ±128 (the 128 in each condition).
 
-    >>> check_for_errors({"ts": 1e-4, "pp": 4}, {"full_scale_voltage_v": 24.0,
+    >>> hits = check_for_errors({"ts": 1e-4, "pp": 4}, {"full_scale_voltage_v": 24.0,
     ...     "full_scale_current_a": 1.0, "full_scale_freq_hz": 20.0, "max_current_a": 2.0})
-    [['USER_ErrorCode_iqFullScaleCurrent_A_Low', 'I_FS < USER_MOTOR_MAX_CURRENT'], ['USER_ErrorCode_iqFullScaleFreq_Hz_Low', 'F_FS < 50 Hz']]
+    >>> [why for _, why in hits]
+    ['I_FS < USER_MOTOR_MAX_CURRENT', 'F_FS < 50 Hz']
     """
     i, f, imax, t = (opt["full_scale_current_a"], opt["full_scale_freq_hz"],
                      opt["max_current_a"], ctx["ts"])

@@ -31,21 +31,11 @@ Examples
 from __future__ import annotations
 
 from ..errors import InputError
-from ..inputs import object_fields
+from ..inputs import _integer, object_fields  # the report's own integer check
 from ..report import report
 from . import MODULES, NAMES, context_of
 
 __all__ = ["translate"]
-
-
-def _integer(v, path: str, lo: int, hi: int) -> int:
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or \
-            (isinstance(v, float) and not v.is_integer()):
-        raise InputError(path, f"must be an integer, got {v!r}")
-    v = int(v)
-    if not lo <= v <= hi:
-        raise InputError(path, f"must be {lo}..{hi}, got {v}")
-    return v
 
 
 def _encode(name: str, kp: float, ki: float, ctx: dict, opts: dict, axis: str) -> dict:
