@@ -41,7 +41,7 @@ const BASE_ROWS = ['voltage_base', 'current_base', 'line_or_phase', 'rms_or_peak
 const BASE_NUMS: [string, string][] = [['U_b', 'V'], ['I_b', 'A'], ['Z_b', 'Ω'], ['L_b', 'H']];
 
 type Constant = { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string };
-type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[]; checks?: [string, string][] };
+type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[]; checks?: [string, string][]; files?: { rounding: string; worked_numbers: string[] } };
 type Fail = { ok: false; field: string; message: string; message_zh?: string };
 type Step = { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: Vendor; drift_pct?: { kp: number; ki: number } };
 type Translation = { si: { kp: number; ki: number }; profiles: Record<Vendor, Step>; chain: Step[]; round_trip: { values: Record<string, number>; delta: Record<string, number> } };
@@ -238,7 +238,9 @@ function constantsBlock(ctx: PanelContext, v: Vendor, el: HTMLElement): HTMLElem
       h('button', { type: 'button', 'data-header': v, onclick: (ev: Event) => { ev.preventDefault(); void downloadHeader(ctx, v, el); } }, t('vd_header')),
       h('span', { class: 'err', 'data-err-for': `header.${v}` })),
     table([t('vd_const'), t('value'), t('vd_format'), t('vd_ideal'), t('vd_error'), t('vd_si'), t('flags'), t('vd_source')], rows, 'vendors-constants'),
-    piExample(v));
+    piExample(v),
+    profiles?.[v]?.files ? h('p', { class: 'hint' }, t('vd_rounding_read'), ' ', profiles[v].files?.rounding ?? '', '. ',
+      profiles[v].files?.worked_numbers.length ? [t('vd_worked'), ' ', profiles[v].files?.worked_numbers.join('; ')] : t('vd_no_worked')) : null);
 }
 
 /** TI: the USER_checkForErrors codes the firmware would set; ST: the PI example below. */
