@@ -72,7 +72,8 @@ CONVENTIONS_ZH = {
     "rounding": "C 强制转换 (uint16_t)/(int16_t)/(int32_t)：向零",
 }
 #: Where the rounding rule was read; files whose printed numbers the tests reproduce.
-FILES = {"rounding": SOURCES["st_conv"], "worked_numbers": [SOURCES["st_drive"]]}
+FILES = {"rounding": SOURCES["st_conv"], "pi": SOURCES["st_pid"],
+         "worked_numbers": [SOURCES["st_drive"]]}
 
 
 def max_current(opt: dict) -> float:
@@ -115,8 +116,8 @@ def gains_to_ints(kp: float, ki: float, ctx: dict, opt: dict, axis: str) -> dict
     kpdiv = opt["tf_kpdiv"] or pow2_divisor(kp / r)
     kidiv = opt["tf_kidiv"] or pow2_divisor(ki * t / r)
     kp_name, ki_name = gain_fields(axis)
-    src = (derived("kp·MAX_CURRENT/(U_dc/√3); the Workbench rule is not public")
-           + "; PI form: " + SOURCES["st_pid"])
+    src = derived("kp·MAX_CURRENT/(U_dc/√3), the Workbench rule is not public; the PI form "
+                  "(int16 gain >> log2 divisor) is MCSDK pid_regulator.c")
     return {kp_name: fixed(kp_name, kp / r, 16, int(math.log2(kpdiv)), r, "V/A",
                            "kp·MAX_CURRENT/(U_dc/√3)", src, fmt=f"int16 / {kpdiv}"),
             ki_name: fixed(ki_name, ki * t / r, 16, int(math.log2(kidiv)), r / t, "V/(A·s)",
