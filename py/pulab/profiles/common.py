@@ -67,9 +67,10 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
     e = encode(ideal, q, rounding, "saturate")
     exact = ideal * 2.0 ** frac_bits
     raw = e.raw if value is None else value
+    inexact = "rounded" in e.flags if value is None else \
+        Fraction(raw) != Fraction(ideal) * (1 << frac_bits)
     flags = []
-    if rounding != "nearest" and Fraction(raw) != Fraction(ideal) * (1 << frac_bits) \
-            and "saturate" not in e.flags:
+    if rounding != "nearest" and inexact and "saturate" not in e.flags:
         flags.append("truncation")
     if "saturate" in e.flags:
         flags.append("saturate" if clamps else "out_of_range")

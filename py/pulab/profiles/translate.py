@@ -33,7 +33,7 @@ from __future__ import annotations
 from ..errors import InputError
 from ..inputs import _integer, object_fields  # the report's own integer check
 from ..report import report
-from . import MODULES, NAMES, context_of
+from . import MODULES, NAMES, context_of, options
 
 __all__ = ["translate"]
 
@@ -82,8 +82,11 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
         ints[k] = _integer(given[k], f"translate.values.{k}", lo, hi)
     if ints[kp_name] == 0:
         raise InputError(f"translate.values.{kp_name}", "must not be 0")
-    r = report({**inp, "profiles": inp.get("profiles") or {}})
-    ctx, opts = context_of(r), r["input"]["profiles"]
+    # The report without profiles gives the SI context; only the options are needed here,
+    # not the five profiles' constants (which cost ten times the rest in Pyodide).
+    r = report({k: v for k, v in inp.items() if k != "profiles"})
+    ctx = context_of(r)
+    opts = options(inp.get("profiles"), ctx)
     kp, ki = mod.ints_to_gains(ints[kp_name], ints[ki_name], ctx, opts[source], axis)
     out = {"from": source, "axis": axis, "given": ints, "si": {"kp": kp, "ki": ki},
            "profiles": {name: _encode(name, kp, ki, ctx, opts, axis) for name in NAMES}}
