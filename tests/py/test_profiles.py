@@ -504,3 +504,23 @@ def test_ti_user_check_for_errors(seed_input, ti, codes):
     ws = [w for w in r["warnings"] if "USER_checkForErrors" in w]
     assert len(ws) == len(r["profiles"]["ti"]["checks"])
     assert all(has_chinese(w) for w in ws)
+
+
+AVR_GCC = shutil.which("avr-gcc")
+
+
+@pytest.mark.skipif(AVR_GCC is None, reason="avr-gcc not installed")
+@pytest.mark.parametrize("name", NAMES)
+def test_header_compiles_where_int_is_16_bits(tmp_path, name):
+    """C2000 and dsPIC have a 16-bit int, like AVR: every constant still fits its C type."""
+    r = report(_with_profiles(SERVO))
+    text = header(r, name)
+    (tmp_path / "profile.h").write_text(text)
+    names = _defines(text)
+    uses = "".join(f"  ({n}),\n" for n in names)
+    (tmp_path / "use.c").write_text('#include <stdint.h>\n#include "profile.h"\n'
+                                    "const double used[] = {\n" + uses + "};\n")
+    p = subprocess.run([AVR_GCC, "-mmcu=atmega328p", "-std=c99", "-Wall", "-Wextra", "-Werror",
+                        "-Woverflow", "-c", "-o", str(tmp_path / "use.o"), str(tmp_path / "use.c")],
+                       capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr

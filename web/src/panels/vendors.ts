@@ -15,10 +15,10 @@ export type Vendor = (typeof VENDORS)[number];
 export const HW_FIELDS: [Vendor, string][] = [
   ['ti', 'full_scale_voltage_v'], ['ti', 'full_scale_current_a'], ['ti', 'global_q'],
   ['nxp', 'udcb_max_v'], ['nxp', 'i_max_a'],
-  ['st', 'rshunt_ohm'], ['st', 'amplification_gain'], ['st', 'adc_reference_v'],
+  ['st', 'rshunt_ohm'], ['st', 'amplification_gain'], ['st', 'adc_reference_v'], ['st', 'tf_kpdiv'], ['st', 'tf_kidiv'],
   ['microchip', 'voltage_base_v'], ['microchip', 'current_base_a'], ['microchip', 'velocity_base_hz'],
 ];
-const INTEGER_KEYS = new Set(['global_q']);
+const INTEGER_KEYS = new Set(['global_q', 'tf_kpdiv', 'tf_kidiv']);
 
 /** The vendor's names of the current-loop integers (pulab.profiles.*.gain_fields). */
 export function gainFields(v: Vendor, axis: 'd' | 'q'): [string, string] {
