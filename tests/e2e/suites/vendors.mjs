@@ -68,5 +68,12 @@ export default async function vendors({ check, assert, newPage, subSrv, ready, w
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
     assert(overflow <= 1, `page scrolls sideways by ${overflow} px`);
   });
+  await check('vendors: ?embed=vendors shows the panel alone with its numbers', async () => {
+    const p2 = await newPage();
+    await p2.goto(`${subSrv.url}?embed=vendors`);
+    await p2.waitForSelector('[data-key="profiles.nxp.constants.M1_Q_KP_GAIN.value"][data-value]', { timeout: 60_000 });
+    assert((await p2.$$('section.panel')).length === 1, 'one panel');
+    await p2.context().close();
+  });
   await page.context().close();
 }
