@@ -15,6 +15,8 @@ import re
 import sys
 
 from .errors import InputError
+from .inputs import shown
+from .jsontext import parse
 from .report import format_text, report
 
 
@@ -37,19 +39,15 @@ def main(argv: list | None = None) -> int:
     args = p.parse_args(argv)
     try:
         if args.input == "-":
-            text = sys.stdin.read()
+            data = sys.stdin.buffer.read()
         else:
-            with open(args.input, encoding="utf-8") as f:
-                text = f.read()
+            with open(args.input, "rb") as f:
+                data = f.read()
     except OSError as e:
-        print(f"error: input: cannot read {args.input}: {e.strerror}", file=sys.stderr)
+        print(f"error: input: cannot read {args.input!a}: {e.strerror}", file=sys.stderr)
         return 2
     try:
-        inp = json.loads(text)
-    except ValueError as e:
-        print(f"error: input: not valid JSON: {e}", file=sys.stderr)
-        return 2
-    try:
+        inp = parse(data.decode("utf-8"))
         if args.command == "header":
             sys.stdout.write(_header(inp, args.profile))
             return 0
@@ -59,6 +57,9 @@ def main(argv: list | None = None) -> int:
             sys.stdout.write("\n")
             return 0
         r = report(inp)
+    except UnicodeDecodeError as e:
+        print(f"error: input: not UTF-8 text (byte {e.start})", file=sys.stderr)
+        return 2
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
@@ -75,7 +76,8 @@ def _header(inp, name: str | None) -> str:
     if name is None:
         raise InputError("profile", "is required")
     if name not in profiles.NAMES:  # before the report: a typo should not cost a report
-        raise InputError("profile", f"must be one of {', '.join(profiles.NAMES)}, got {name!r}")
+        raise InputError("profile",
+                         f"must be one of {', '.join(profiles.NAMES)}, got {shown(name)}")
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     return profiles.header(report({**inp, "profiles": inp.get("profiles") or {}}), name)
@@ -88,7 +90,7 @@ def _translate(inp, args) -> dict:
         raise InputError("translate.from", "is required")
     if args.source not in NAMES:
         raise InputError("translate.from", f"must be one of {', '.join(NAMES)}, "
-                         f"got {args.source!r}")
+                         f"got {shown(args.source)}")
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     names = MODULES[args.source].gain_fields(args.axis) if args.axis in ("d", "q") else ("", "")

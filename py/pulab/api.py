@@ -18,6 +18,8 @@ import json
 import re
 
 from .errors import InputError
+from .inputs import real, shown
+from .jsontext import parse
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
 from .messages import to_zh
@@ -34,11 +36,7 @@ def _fail(e: InputError) -> str:
 def run_json(text: str) -> str:
     """``report`` on a JSON string; returns ``{"ok": true, "report": {...}}`` or an error."""
     try:
-        inp = json.loads(text)
-    except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))
-    try:
-        return json.dumps({"ok": True, "report": report(inp)}, allow_nan=False)
+        return json.dumps({"ok": True, "report": report(parse(text))}, allow_nan=False)
     except InputError as e:
         return _fail(e)
 
@@ -61,7 +59,10 @@ def qcalc(req: dict) -> dict:
     """
     if not isinstance(req, dict):
         raise InputError("qcalc", "must be an object")
-    name = str(req.get("format", "")).strip()
+    name = req.get("format", "")
+    if not isinstance(name, str):
+        raise InputError("qcalc.format", f"must be a string, got {shown(name)}")
+    name = name.strip()
     word_bits = req.get("word_bits")
     if word_bits is not None and (isinstance(word_bits, bool) or not isinstance(word_bits, int)):
         raise InputError("qcalc.word_bits", "must be an integer")
@@ -73,7 +74,7 @@ def qcalc(req: dict) -> dict:
         if re.fullmatch(r"U?Q\d+(\.\d+)?", name, re.I):
             raise InputError("qcalc.format", f"{name} does not fit {word_bits or 64} word "
                              "bits") from None
-        raise InputError("qcalc.format", f"not a Q format: {name!r} "
+        raise InputError("qcalc.format", f"not a Q format: {shown(name)} "
                          "(use Qm.n, UQm.n, or Qn with word_bits)") from None
     rounding = req.get("rounding", "nearest")
     overflow = req.get("overflow", "saturate")
@@ -90,11 +91,11 @@ def qcalc(req: dict) -> dict:
         res = {"raw": raw, "value": decode(raw, fmt), "error": 0.0, "flags": []}
     else:
         x = req.get("value")
-        if isinstance(x, bool) or not isinstance(x, (int, float)) or x != x or \
-                x in (float("inf"), float("-inf")):
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
             raise InputError("qcalc.value", "must be a finite number")
+        x = real(x, "qcalc.value")
         try:
-            e = encode(float(x), fmt, rounding, overflow)
+            e = encode(x, fmt, rounding, overflow)
         except OverflowError as err:
             raise InputError("qcalc.value", str(err)) from None
         res = {"raw": e.raw, "value": e.value, "error": e.error, "flags": e.flags}
@@ -109,11 +110,9 @@ def qcalc(req: dict) -> dict:
 def qcalc_json(text: str) -> str:
     """``qcalc`` on a JSON string; ``{"ok": true, ...}`` or an error naming the field."""
     try:
-        return json.dumps({"ok": True, **qcalc(json.loads(text))})
-    except ValueError as e:
-        if isinstance(e, InputError):
-            return _fail(e)
-        return _fail(InputError("qcalc", f"not valid JSON: {e}"))
+        return json.dumps({"ok": True, **qcalc(parse(text, "qcalc"))})
+    except InputError as e:
+        return _fail(e)
 
 
 def export_json(text: str) -> str:
@@ -122,7 +121,7 @@ def export_json(text: str) -> str:
     Returns ``{"ok": true, "text": ...}`` or an error naming the field.
     """
     try:
-        req = json.loads(text)
+        req = parse(text)
         r = report(req.get("input") if isinstance(req, dict) else None)
         kind = req.get("kind")
         if kind == "header":
@@ -134,8 +133,6 @@ def export_json(text: str) -> str:
         raise InputError("kind", "must be one of header, csv_current, csv_pll")
     except InputError as e:
         return _fail(e)
-    except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))
 
 
 def vendors_json(text: str) -> str:
@@ -154,7 +151,7 @@ def vendors_json(text: str) -> str:
     from . import profiles
     from .profiles.translate import translate
     try:
-        req = json.loads(text)
+        req = parse(text)
         if not isinstance(req, dict):
             raise InputError("request", "must be a JSON object")
         inp = req.get("input")
@@ -165,7 +162,7 @@ def vendors_json(text: str) -> str:
             name = req.get("profile")
             if name not in profiles.NAMES:
                 raise InputError("profile", f"must be one of {', '.join(profiles.NAMES)}, "
-                                 f"got {name!r}")
+                                 f"got {shown(name)}")
             r = report({**inp, "profiles": inp.get("profiles") or {}})
             return json.dumps({"ok": True, "text": profiles.header(r, name)})
         if action == "translate":
@@ -174,5 +171,3 @@ def vendors_json(text: str) -> str:
         raise InputError("action", "must be one of header, translate")
     except InputError as e:
         return _fail(e)
-    except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))

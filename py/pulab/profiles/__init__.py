@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from ..bases import flux_linkage
 from ..errors import InputError
-from ..inputs import _integer, object_fields, real  # the report's own checks
+from ..inputs import _integer, object_fields, real, shown  # the report's own checks
 from . import inovance, microchip, nxp, st, ti
 from .common import SQRT2
 
@@ -72,7 +72,7 @@ def _option(name: str, key: str, v):
     path = f"profiles.{name}.{key}"
     if key in _BOOLEANS:
         if not isinstance(v, bool):
-            raise InputError(path, f"must be true or false, got {v!r}")
+            raise InputError(path, f"must be true or false, got {shown(v)}")
         return v
     if key in _INTEGERS:
         v = _integer(v, path, *_INTEGERS[key])
@@ -140,7 +140,7 @@ def header(r: dict, name: str) -> str:
         Inovance's header is the report's own (:func:`pulab.export.c_header`).
     """
     if name not in NAMES:
-        raise InputError("profile", f"must be one of {', '.join(NAMES)}, got {name!r}")
+        raise InputError("profile", f"must be one of {', '.join(NAMES)}, got {shown(name)}")
     if name == "inovance":
         from ..export import c_header
         return c_header(r)

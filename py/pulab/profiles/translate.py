@@ -31,7 +31,7 @@ Examples
 from __future__ import annotations
 
 from ..errors import InputError
-from ..inputs import _integer, object_fields  # the report's own integer check
+from ..inputs import _integer, object_fields, shown  # the report's own checks
 from ..report import report
 from . import MODULES, NAMES, context_of, options
 
@@ -68,9 +68,10 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
         Naming ``translate.from``, ``translate.axis`` or ``translate.values.NAME``.
     """
     if source not in NAMES:
-        raise InputError("translate.from", f"must be one of {', '.join(NAMES)}, got {source!r}")
+        raise InputError("translate.from",
+                         f"must be one of {', '.join(NAMES)}, got {shown(source)}")
     if axis not in ("d", "q"):
-        raise InputError("translate.axis", f"must be one of d, q, got {axis!r}")
+        raise InputError("translate.axis", f"must be one of d, q, got {shown(axis)}")
     mod = MODULES[source]
     kp_name, ki_name = mod.gain_fields(axis)
     given = object_fields(values, "translate.values", (kp_name, ki_name))
