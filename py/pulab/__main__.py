@@ -1,10 +1,11 @@
-"""Command line: ``python -m pulab report INPUT.json [--format json|text]``.
-
-Also ``python -m pulab header --profile NAME INPUT.json`` (one vendor's C header) and
+"""Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``,
+``python -m pulab trace FILE.c --target c28x --set NAME=VALUE …``,
+``python -m pulab header --profile NAME INPUT.json`` (one vendor's C header) and
 ``python -m pulab translate --from NAME [--axis d|q] --kp INT --ki INT INPUT.json``
 (docs/contract.md, "Vendor profiles").
 
-Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr.
+Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
+(for code, ``error: code: LINE:COLUMN: MESSAGE``).
 """
 
 from __future__ import annotations
@@ -15,9 +16,10 @@ import re
 import sys
 
 from .errors import InputError
+from .commands import add_family_commands, read_json
 from .inputs import shown
-from .jsontext import parse
 from .report import format_text, report
+from .ctrace.cli import add_trace_parser, trace_main
 
 
 def main(argv: list | None = None) -> int:
@@ -27,39 +29,16 @@ def main(argv: list | None = None) -> int:
     rp = sub.add_parser("report", help="print the report for an input JSON file ('-' = stdin)")
     rp.add_argument("input")
     rp.add_argument("--format", choices=("json", "text"), default="json")
-    hp = sub.add_parser("header", help="print one vendor profile's C header")
-    hp.add_argument("--profile", default=None, help="inovance, ti, nxp, st or microchip")
-    hp.add_argument("input")
-    tp = sub.add_parser("translate", help="one profile's current-loop integers in every profile")
-    tp.add_argument("--from", dest="source", default=None)
-    tp.add_argument("--axis", default="q")
-    tp.add_argument("--kp", default=None)
-    tp.add_argument("--ki", default=None)
-    tp.add_argument("input")
+    add_family_commands(sub)
+    add_trace_parser(sub)
+    _add_vendor_commands(sub)
     args = p.parse_args(argv)
+    if args.command == "trace":
+        return trace_main(args)
+    if hasattr(args, "run"):
+        return args.run(args)
     try:
-        if args.input == "-":
-            data = sys.stdin.buffer.read()
-        else:
-            with open(args.input, "rb") as f:
-                data = f.read()
-    except OSError as e:
-        print(f"error: input: cannot read {args.input!a}: {e.strerror}", file=sys.stderr)
-        return 2
-    try:
-        inp = parse(data.decode("utf-8"))
-        if args.command == "header":
-            sys.stdout.write(_header(inp, args.profile))
-            return 0
-        if args.command == "translate":
-            json.dump(_translate(inp, args), sys.stdout, indent=1, ensure_ascii=False,
-                      allow_nan=False)
-            sys.stdout.write("\n")
-            return 0
-        r = report(inp)
-    except UnicodeDecodeError as e:
-        print(f"error: input: not UTF-8 text (byte {e.start})", file=sys.stderr)
-        return 2
+        r = report(read_json(args.input))
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
@@ -68,6 +47,35 @@ def main(argv: list | None = None) -> int:
     else:
         json.dump(r, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
         sys.stdout.write("\n")
+    return 0
+
+
+def _add_vendor_commands(sub) -> None:
+    hp = sub.add_parser("header", help="print one vendor profile's C header")
+    hp.add_argument("--profile", default=None, help="inovance, ti, nxp, st or microchip")
+    hp.add_argument("input")
+    hp.set_defaults(run=_run_vendor)
+    tp = sub.add_parser("translate", help="one profile's current-loop integers in every profile")
+    tp.add_argument("--from", dest="source", default=None)
+    tp.add_argument("--axis", default="q")
+    tp.add_argument("--kp", default=None)
+    tp.add_argument("--ki", default=None)
+    tp.add_argument("input")
+    tp.set_defaults(run=_run_vendor)
+
+
+def _run_vendor(args) -> int:
+    try:
+        inp = read_json(args.input)
+        if args.command == "header":
+            sys.stdout.write(_header(inp, args.profile))
+        else:
+            json.dump(_translate(inp, args), sys.stdout, indent=1, ensure_ascii=False,
+                      allow_nan=False)
+            sys.stdout.write("\n")
+    except InputError as e:
+        print(f"error: {e.field}: {e.message}", file=sys.stderr)
+        return 2
     return 0
 
 

@@ -524,3 +524,14 @@ def test_header_compiles_where_int_is_16_bits(tmp_path, name):
                         "-Woverflow", "-c", "-o", str(tmp_path / "use.o"), str(tmp_path / "use.c")],
                        capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
+
+
+@pytest.mark.parametrize("name", ["ti", "nxp", "st", "microchip"])
+def test_the_family_sweep_reads_each_profile(seed_input, name):
+    """pulab.integers (issue 13) looks integers up in profiles.NAME.constants."""
+    from pulab.integers import evaluate
+    e = evaluate(seed_input, name)
+    consts = report(_with_profiles(seed_input))["profiles"][name]["constants"]
+    assert sorted(e["integers"]) == sorted(f"profiles.{name}.constants.{k}" for k in consts)
+    for k, c in consts.items():
+        assert e["integers"][f"profiles.{name}.constants.{k}"]["value"] == c["value"]

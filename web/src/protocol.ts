@@ -10,6 +10,9 @@ export const API_FUNCTIONS = {
   qcalc: 'qcalc_json',
   export: 'export_json',
   vendors: 'vendors_json',
+  sweep: 'sweep_json', batch: 'batch_json',
+  trace: 'trace_json',
+  traceExamples: 'trace_examples_json',
 } as const;
 export type ApiKind = keyof typeof API_FUNCTIONS;
 
