@@ -26,7 +26,7 @@ from .messages import to_zh
 from .report import report
 
 __all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
-           "trace_json", "trace_examples_json"]
+           "trace_json", "trace_examples_json", "vendors_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -262,3 +262,41 @@ def trace_examples_json(text: str = "") -> str:
     from .ctrace.examples import EXAMPLES
     return json.dumps({"ok": True, "targets": list(TARGETS),
                        "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]})
+
+
+def vendors_json(text: str) -> str:
+    """Vendor profiles for the page (docs/contract.md, "Vendor profiles").
+
+    ``{"input": {...}, "action": "header", "profile": NAME}`` → ``{"ok": true, "text": ...}``;
+    ``{"input": {...}, "action": "translate", "from": NAME, "axis": "d"|"q",
+    "values": {FIELD: int, FIELD: int}}`` → ``{"ok": true, "translation": {...}}``;
+    bad input → an error naming the field.
+
+    >>> import json
+    >>> req = {"input": {"motor": {}}, "action": "header", "profile": "ti"}
+    >>> json.loads(vendors_json(json.dumps(req)))["field"]
+    'motor.rated_voltage_v'
+    """
+    from . import profiles
+    from .profiles.translate import translate
+    try:
+        req = parse(text)
+        if not isinstance(req, dict):
+            raise InputError("request", "must be a JSON object")
+        inp = req.get("input")
+        if not isinstance(inp, dict):
+            raise InputError("input", "must be a JSON object")
+        action = req.get("action")
+        if action == "header":
+            name = req.get("profile")
+            if name not in profiles.NAMES:
+                raise InputError("profile", f"must be one of {', '.join(profiles.NAMES)}, "
+                                 f"got {shown(name)}")
+            r = report({**inp, "profiles": inp.get("profiles") or {}})
+            return json.dumps({"ok": True, "text": profiles.header(r, name)})
+        if action == "translate":
+            t = translate(inp, req.get("from"), req.get("axis", "q"), req.get("values"))
+            return json.dumps({"ok": True, "translation": t}, allow_nan=False)
+        raise InputError("action", "must be one of header, translate")
+    except InputError as e:
+        return _fail(e)

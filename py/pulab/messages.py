@@ -89,6 +89,17 @@ CATALOG = [
     (r"current-loop ω_c·Ts = (\S+): .*",
      r"电流环 ω_c·Ts = \1：连续域设计与离散环路的实际行为相差较大（建议 ω_c·Ts ≲ 0.2）"),
     (r"base frequency below rated frequency: .*", "基值频率低于额定频率：Q15 的 FreqPer > 1.0"),
+    # two hardening messages that had no Chinese yet (CLI input bytes, qcalc.format type)
+    (r"not UTF-8 text \(byte (\d+)\)", r"不是 UTF-8 文本（第 \1 字节）"),
+    (r"must be a string, got (.*)", r"必须是字符串，当前为 \1"),
+    # vendor profiles, headers and the translator
+    (r"must be a power of two, got (.*)", r"必须是 2 的幂，当前为 \1"),
+    (r"profiles\.(\S+): (\S+) does not fit (.+); stored (\S+)",
+     r"profiles.\1：\2 超出 \3 的范围；实际存储 \4"),
+    (r"profiles\.ti: USER_checkForErrors would set (\S+) \((.+)\)",
+     r"profiles.ti：USER_checkForErrors 会置位 \1（\2）"),
+    (r"profiles\.(\S+): rounds to 0 in (.+) \(ideal (\S+)\)",
+     r"profiles.\1：在 \2 中取整为 0（理想值 \3）"),
     # errors: the family sweep and the batch (issue 13)
     (r"not a numeric input path: (.*)", r"不是数值输入路径：\1"),
     (r"must be > 0 for a log scale, got (.*)", r"对数刻度要求大于 0，当前为 \1"),

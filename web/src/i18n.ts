@@ -322,6 +322,24 @@ const en = {
   reload: 'Reload',
   exportFailed: 'Export failed ({m}); try again',
   simWorkerFailed: 'the simulation worker failed ({m}); check the connection, then retry',
+  // vendor profiles panel (issue 12)
+  p_vendors: 'Vendor profiles: TI, NXP, ST, Microchip and the translator',
+  nav_vendors: 'Vendors',
+  vd_inovance: 'Inovance', vd_ti: 'TI', vd_nxp: 'NXP', vd_st: 'ST', vd_microchip: 'Microchip',
+  vdf_full_scale_voltage_v: 'full-scale voltage, V', vdf_full_scale_current_a: 'full-scale current, A', vdf_global_q: 'GLOBAL_Q',
+  vdf_udcb_max_v: 'U_DCB max, V', vdf_i_max_a: 'I max, A', vdf_rshunt_ohm: 'shunt, Ω', vdf_amplification_gain: 'amplifier gain',
+  vdf_adc_reference_v: 'ADC reference, V', vdf_tf_kpdiv: 'TF_KPDIV', vdf_tf_kidiv: 'TF_KIDIV', vdf_voltage_base_v: 'voltage base, V', vdf_current_base_a: 'current base, A', vdf_velocity_base_hz: 'velocity base, Hz',
+  vd_hw: 'Hardware inputs', vd_hw_hint: 'Empty fields take the default shown (derived from the drive: full-scale current 2·√2·I rated, voltages from U_dc).',
+  vd_bases: 'Conventions side by side', vd_constants: 'Constants as each vendor stores them', vd_header: 'Download header',
+  vd_const: 'Constant', vd_format: 'Format', vd_ideal: 'Ideal', vd_error: 'Error', vd_si: 'Means (SI)', vd_source: 'Public source',
+  vd_translator: 'Translator', vd_from: 'From', vd_axis: 'Axis', vd_translate_hint: 'Integers of the chosen vendor; every other vendor\'s integers follow through SI.',
+  vd_si_gains: 'In SI:', vd_profile: 'Profile', vd_loss: 'Rounding loss kp / ki', vd_chain: 'Chain: through every vendor (Inovance → TI → NXP → ST → Microchip, from the source on) and back to the source',
+  vd_step: 'Step', vd_drift: 'Drift kp / ki', vd_roundtrip: 'Back at the source:',
+  vd_rounding_read: 'Rounding rule read in:', vd_worked: 'Printed numbers reproduced by the tests:', vd_no_worked: 'No public file with printed integers found for this vendor.',
+  vd_checks_ok: 'USER_checkForErrors (user.c): no full-scale error for these inputs.',
+  vd_pi_example: 'Torque PI, first output (digits) for a ±0.1 % current error, shifting build (>>) vs FULL_MISRA_C_COMPLIANCY build (/):',
+  vb_voltage_base: 'Voltage base', vb_current_base: 'Current base', vb_line_or_phase: 'Line or phase', vb_rms_or_peak: 'RMS or peak',
+  vb_clarke_k: 'Clarke k', vb_inductance_base: 'Inductance base', vb_pi_form: 'PI form', vb_rounding: 'Rounding',
 };
 
 export type Key = keyof typeof en;
@@ -646,6 +664,24 @@ const zh: Record<Key, string> = {
   reload: '重新加载',
   exportFailed: '导出失败（{m}）；请重试',
   simWorkerFailed: '仿真 worker 失败（{m}）；请检查网络连接后重试',
+  // vendor profiles panel (issue 12)
+  p_vendors: '厂商配置：TI、NXP、ST、Microchip 与翻译器',
+  nav_vendors: '厂商',
+  vd_inovance: '汇川', vd_ti: 'TI', vd_nxp: 'NXP', vd_st: 'ST', vd_microchip: 'Microchip',
+  vdf_full_scale_voltage_v: '满量程电压，V', vdf_full_scale_current_a: '满量程电流，A', vdf_global_q: 'GLOBAL_Q',
+  vdf_udcb_max_v: '母线电压满量程 U_DCB，V', vdf_i_max_a: '电流满量程 I max，A', vdf_rshunt_ohm: '采样电阻，Ω', vdf_amplification_gain: '放大倍数',
+  vdf_adc_reference_v: 'ADC 参考电压，V', vdf_tf_kpdiv: 'TF_KPDIV', vdf_tf_kidiv: 'TF_KIDIV', vdf_voltage_base_v: '电压基值，V', vdf_current_base_a: '电流基值，A', vdf_velocity_base_hz: '速度基值，Hz',
+  vd_hw: '硬件输入', vd_hw_hint: '留空即取所示默认值（由驱动器推出：满量程电流 2·√2·额定电流，电压取 U_dc）。',
+  vd_bases: '各家约定对照', vd_constants: '各厂商存储的常量', vd_header: '下载头文件',
+  vd_const: '常量', vd_format: '格式', vd_ideal: '理想值', vd_error: '误差', vd_si: '含义（国际单位）', vd_source: '公开出处',
+  vd_translator: '翻译器', vd_from: '来源', vd_axis: '轴', vd_translate_hint: '输入所选厂商的整数；其他厂商的整数经国际单位制换算得到。',
+  vd_si_gains: '国际单位制：', vd_profile: '配置', vd_loss: '取整损失 kp / ki', vd_chain: '链条：从来源出发依次经过每家厂商（汇川 → TI → NXP → ST → Microchip），回到来源',
+  vd_step: '步骤', vd_drift: '漂移 kp / ki', vd_roundtrip: '回到起点：',
+  vd_rounding_read: '取整规则出处：', vd_worked: '测试复现了其中印出数值的文件：', vd_no_worked: '未找到印有整数的该厂商公开文件。',
+  vd_checks_ok: 'USER_checkForErrors（user.c）：这些输入不触发满量程错误。',
+  vd_pi_example: '转矩 PI 对 ±0.1 % 电流误差的首个输出（数字量）：移位版本（>>）与 FULL_MISRA_C_COMPLIANCY 版本（/）：',
+  vb_voltage_base: '电压基值', vb_current_base: '电流基值', vb_line_or_phase: '线或相', vb_rms_or_peak: '有效值或峰值',
+  vb_clarke_k: 'Clarke 系数 k', vb_inductance_base: '电感基值', vb_pi_form: 'PI 形式', vb_rounding: '取整方式',
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

@@ -12,6 +12,7 @@ import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
 import { sweepPanel } from './sweep';
 import { batchPanel } from './batch';
+import { vendorsPanel } from './vendors';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -26,6 +27,7 @@ export const PANELS: Panel[] = [
   conventionsPanel,
   sweepPanel,
   batchPanel,
+  vendorsPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
