@@ -307,6 +307,7 @@ function translator(ctx: PanelContext): HTMLElement {
 export const vendorsPanel: Panel = {
   id: 'vendors',
   title: 'p_vendors',
+  needsPython: true,
   render(el, ctx) {
     lastCtx = { el, ctx };
     watch(el);
