@@ -132,9 +132,9 @@ def normalize(inp: dict) -> dict:
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     for key in inp:
-        if key not in SECTIONS and key != "sim":
+        if key not in SECTIONS and key not in ("sim", "analysis"):
             raise InputError(key, f"unknown section (expected one of: "
-                             f"{', '.join(list(SECTIONS) + ['sim'])})")
+                             f"{', '.join(list(SECTIONS) + ['sim', 'analysis'])})")
     m = _section(inp, "motor")
     d = _section(inp, "drive")
     c = _section(inp, "conventions")
@@ -192,4 +192,5 @@ def normalize(inp: dict) -> dict:
            "pll": pll, "raw": raw}
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
+    out["analysis"] = inp.get("analysis")
     return out

@@ -122,7 +122,7 @@ def report(inp: dict) -> dict:
         pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
     pi["step_example"] = _pi_example(pi["d"], vendor)
     out = {
-        "input": {k: v for k, v in n.items() if k != "sim"},
+        "input": {k: v for k, v in n.items() if k not in ("sim", "analysis")},
         "base": b,
         "pu": pu,
         "vendor": {"raw": raw, **vendor},
@@ -132,6 +132,10 @@ def report(inp: dict) -> dict:
         "constants": magic_constants(),
         "warnings": _warnings(n, raw, vendor, pi, b),
     }
+    from . import loop as _loop  # issue 11: margins of the loops as the firmware runs them
+    out["loop"] = _loop.analyze(out, n["analysis"])
+    out["input"]["analysis"] = _loop.validate(n["analysis"])
+    out["warnings"] += _loop.warnings(out["loop"])
     out["warnings_zh"] = [to_zh(w) for w in out["warnings"]]
     if sim_in is not None:
         out["sim"] = _sim.simulate(out, sim_in)
