@@ -25,9 +25,7 @@ CASES = sorted(GOLDEN.glob("*.json"))
 REL = 1e-6
 SEED = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
                   "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
-        "drive": {"udc_v": 24, "ts_s": 1e-4}}
-MARGIN_KEYS = ("phase_margin_deg", "gain_margin_db", "crossover_hz", "phase_crossover_hz",
-               "bandwidth_hz", "stable")
+        "drive": {"udc_v": 24, "ts_s": 1e-4}, "analysis": {}}
 
 
 def _close(a, e) -> bool:
@@ -161,6 +159,12 @@ def test_design_meets_bandwidth(delay):
     assert abs(current.axis_loop(1.5, 6e-4, 1e-4, kp, ki, delay)["bandwidth_hz"] - 400) < 1e-6
 
 
+def test_loop_only_when_asked():
+    plain = {k: v for k, v in SEED.items() if k != "analysis"}
+    assert "loop" not in pulab.report(plain)
+    assert pulab.report(SEED)["loop"]["delay"] == "computation_pwm"
+
+
 def test_more_delay_less_margin():
     pms = [current.axis_loop(1.5, 6e-4, 1e-4, 1.885, 4712.4, d)["phase_margin_deg"]
            for d in current.DELAYS]
@@ -200,6 +204,22 @@ def test_speed_loop_units():
         pytest.approx(r["pu"]["psi_r"], rel=1e-12)
     assert sp["pm_kp"] == round(sp["kp_pu"] * 4096)
     assert sp["stable"] and sp["firmware"]["stable"]
+    res = sp["response"]
+    for name in ("float", "fixed"):
+        rpm = res["variants"][name]["speed_rpm"]
+        assert abs(rpm[-1] - res["reference_rpm"]) < 0.01 * res["reference_rpm"]
+        assert res["metrics"][name]["load_dip_rpm"] > 0
+    # the fixed point differs from float by quantization only: within 1 % of the step
+    assert res["fixed_vs_float_max_rpm"] < 0.01 * res["reference_rpm"]
+
+
+@pytest.mark.parametrize("delay", current.DELAYS)
+def test_speed_response_delay_costs_overshoot(delay):
+    inp = copy.deepcopy(SEED)
+    inp["analysis"] = {"delay": delay, "speed": {"inertia_kg_m2": 1e-5, "response": True,
+                                                 "load_pu": 0}}
+    m = pulab.report(inp)["loop"]["speed"]["response"]["metrics"]
+    assert m["float"]["overshoot_pct"] == pytest.approx(m["fixed"]["overshoot_pct"], abs=0.5)
 
 
 @pytest.mark.parametrize("analysis, field", [

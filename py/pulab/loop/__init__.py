@@ -1,9 +1,9 @@
 """Loop design as firmware runs it: discrete margins, delays, PLL, speed loop (issue 11).
 
-Pure standard library (runs in a bare Pyodide).  :func:`pulab.report` calls
-:func:`validate` on the input's ``"analysis"`` and :func:`analyze` on the
-finished report; the output is the report's ``"loop"`` section
-(docs/contract.md, "Loop analysis").
+Pure standard library (runs in a bare Pyodide).  When the input has an
+``"analysis"`` object (``{}`` = every default), :func:`pulab.report` calls
+:func:`analyze` on the finished report; the output is the report's ``"loop"``
+section (docs/contract.md, "Loop analysis").
 
 Modules, one concept each:
 
@@ -21,7 +21,8 @@ Examples
 >>> from pulab import report
 >>> r = report({"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5,
 ...     "rated_freq_hz": 220, "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4,
-...     "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 1e-4}})
+...     "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 1e-4},
+...     "analysis": {}})
 >>> round(r["loop"]["current"]["d"]["phase_margin_deg"], 2)
 55.15
 >>> r["loop"]["pll"]["naive"]["gain_margin_db"] < 0

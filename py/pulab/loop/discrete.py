@@ -5,16 +5,19 @@ deg N ≤ deg D = m, sampled at T_s.  Every figure is computed exactly, from
 polynomials, not by scanning a grid (z = e^{jθ}, θ = ω·T_s ∈ (0, π]; on the
 unit circle 1/z = z̄):
 
-- gain crossover, |L| = 1 ⇔ P(z) = z^m·[N(z)N(1/z) − D(z)D(1/z)] = 0;
-- phase crossover, Im L = 0 ⇔ Q(z) = z^m·[N(z)D(1/z) − N(1/z)D(z)] = 0,
-  kept where Re L < 0 (θ = π, z = −1, is checked directly);
+- gain crossover, |L| = 1 ⇔ N(z)N(1/z) − D(z)D(1/z) = 0;
+- phase crossover, Im L = 0 ⇔ Im N(z)D(1/z) = 0, kept where Re L < 0
+  (θ = π, z = −1, is checked directly);
 - closed loop T = L/(1 + L): poles are the roots of D + N; the −3 dB
-  bandwidth is the lowest θ with |T|² = |T(1)|²/2, i.e. a root of
-  2·N(z)N(1/z) − |T(1)|²·(D+N)(z)(D+N)(1/z) times z^m.
+  bandwidth is the lowest θ with 2·|N|² − |T(1)|²·|D + N|² = 0.
 
-Roots on the unit circle (||z| − 1| < 1e-7) are then polished by Newton's
-method on the real function of θ they solve, so the frequencies are exact to
-rounding.  Margins as python-control's ``stability_margins`` defines them:
+On the circle a(z)·b(1/z) = Σ c_k·e^{jkθ} (c_k the correlation of the
+coefficients), so each condition is a cosine series Σ α_k·cos kθ or a sine
+series sin θ·Σ β_k·U_{k−1}(cos θ): with c = cos θ and Chebyshev polynomials
+it becomes a real polynomial of degree m (half the degree of the z-domain
+form) whose real roots in [−1, 1] are the crossings.  Each is then polished by
+Newton's method on the real function of θ it solves, so the frequencies are
+exact to rounding.  Margins as python-control's ``stability_margins`` defines them:
 
 - phase margin PM = (arg L(e^{jθ_c}) mod 360°) − 180°, in [−180°, 180°), at
   the gain crossover with the smallest |PM| when there are several;
@@ -39,11 +42,12 @@ from __future__ import annotations
 import cmath
 import math
 
-from .polynomial import add, evaluate, multiply, pad, reverse, roots, scale
+from .polynomial import add, evaluate, pad, roots
 
 __all__ = ["margins", "response", "bode", "log_frequencies", "closed_loop"]
 
-_ON_CIRCLE = 1e-7
+#: A root c of the cos θ polynomial counts as real below this imaginary part (then polished).
+_REAL = 1e-6
 
 
 def response(num: list, den: list, theta: float) -> complex:
@@ -58,20 +62,70 @@ def closed_loop(num: list, den: list) -> tuple:
     return pad(num, n), add(den, num)
 
 
-def _circle_angles(poly: list) -> list:
-    """Angles θ ∈ (0, π] of the roots of ``poly`` on the unit circle."""
+def _correlation(a: list, b: list) -> list:
+    """c_k, k = −m..m (index k + m), of a(z)·b(1/z) = Σ c_k·z^k; a, b of m+1 coefficients."""
+    m = len(a) - 1
+    lo, hi = a[::-1], b[::-1]                      # ascending powers
+    return [math.fsum(lo[j + k] * hi[j] for j in range(max(0, -k), min(m, m - k) + 1))
+            for k in range(-m, m + 1)]
+
+
+def _chebyshev(kind: int, count: int) -> list:
+    """T_0..T_{count−1} (kind 1) or U_0..U_{count−1} (kind 2), ascending coefficient lists."""
+    out = [[1.0], [0.0, float(kind)]]
+    while len(out) < count:
+        a, b = out[-1], out[-2]
+        nxt = [0.0] + [2.0 * x for x in a]
+        for i, x in enumerate(b):
+            nxt[i] -= x
+        out.append(nxt)
+    return out[:count]
+
+
+def _cosine_roots(alpha: list) -> list:
+    """θ ∈ (0, π] where Σ_k alpha_k·cos(kθ) = 0 (via c = cos θ and T_k(c))."""
+    poly = [0.0] * len(alpha)
+    for a, t in zip(alpha, _chebyshev(1, len(alpha))):
+        for i, x in enumerate(t):
+            poly[i] += a * x
+    return _angles(poly)
+
+
+def _sine_roots(beta: list) -> list:
+    """θ ∈ (0, π) where Σ_{k≥1} beta_k·sin(kθ) = sin θ·Σ beta_k·U_{k−1}(cos θ) = 0."""
+    poly = [0.0] * max(len(beta) - 1, 1)
+    for b, u in zip(beta[1:], _chebyshev(2, len(beta) - 1)):
+        for i, x in enumerate(u):
+            poly[i] += b * x
+    return [t for t in _angles(poly) if t < math.pi]
+
+
+def _angles(ascending: list) -> list:
+    """acos of the real roots in [−1, 1] of a polynomial in c (ascending coefficients)."""
     out = []
-    for r in roots(poly):
-        if abs(abs(r) - 1.0) < _ON_CIRCLE:
-            t = abs(cmath.phase(r))
-            if t > 1e-12:
+    for r in roots(ascending[::-1]):
+        if abs(r.imag) < _REAL and -1.0 - _REAL <= r.real <= 1.0 + _REAL:
+            t = math.acos(max(-1.0, min(1.0, r.real)))
+            if t > 0.0:
                 out.append(t)
     return out
 
 
+def _cosine_series(pairs: list) -> list:
+    """alpha_k of Σ w·a(z)a(1/z) on the unit circle, for (w, a) pairs of equal length."""
+    m = len(pairs[0][1]) - 1
+    alpha = [0.0] * (m + 1)
+    for w, a in pairs:
+        c = _correlation(a, a)
+        alpha[0] += w * c[m]
+        for k in range(1, m + 1):
+            alpha[k] += w * (c[m + k] + c[m - k])
+    return alpha
+
+
 def _polish(f, theta: float) -> float:
-    """Newton (numeric slope) on a smooth real f(θ), kept inside (0, π]."""
-    for _ in range(6):
+    """Newton (central-difference slope) on a smooth real f(θ), kept inside (0, π]."""
+    for _ in range(4):
         h = 1e-7 * max(theta, 1e-6)
         fx = f(theta)
         slope = (f(theta + h) - f(theta - h)) / (2.0 * h)
@@ -80,10 +134,10 @@ def _polish(f, theta: float) -> float:
         new = theta - fx / slope
         if not 0.0 < new <= math.pi or abs(new - theta) > 1e-3 * theta:
             break
-        if abs(new - theta) <= 4e-16 * theta:
-            theta = new
-            break
+        done = abs(new - theta) <= 1e-13 * theta    # quadratic: the next step is below rounding
         theta = new
+        if done:
+            break
     return theta
 
 
@@ -117,20 +171,21 @@ def margins(num: list, den: list, ts: float) -> dict:
     n_p = pad(num, m + 1)
     to_hz = 1.0 / (2.0 * math.pi * ts)
 
-    # gain crossovers: |L| = 1
-    p = add(multiply(n_p, reverse(n_p)), scale(multiply(den, reverse(den)), -1.0))
+    # gain crossovers: |N|² − |D|² = 0
     mag = lambda t: math.log(abs(response(num, den, t)))  # noqa: E731 - local root function
-    crossings = _unique([_polish(mag, t) for t in _circle_angles(p)])
+    crossings = _unique([_polish(mag, t)
+                         for t in _cosine_roots(_cosine_series([(1.0, n_p), (-1.0, den)]))])
     pm, wc = None, None
     for t in crossings:
         value = (math.degrees(cmath.phase(response(num, den, t))) % 360.0) - 180.0
         if pm is None or abs(value) < abs(pm):
             pm, wc = value, t
 
-    # phase crossovers: Im L = 0 with Re L < 0
-    q = add(multiply(n_p, reverse(den)), scale(multiply(reverse(n_p), den), -1.0))
+    # phase crossovers: Im N(z)·D(1/z) = 0 with Re L < 0
+    c = _correlation(n_p, den)
     imag = lambda t: response(num, den, t).imag  # noqa: E731
-    candidates = [_polish(imag, t) for t in _circle_angles(q) if t < math.pi - 1e-9]
+    candidates = [_polish(imag, t) for t in _sine_roots([0.0] + [c[m + k] - c[m - k]
+                                                                 for k in range(1, m + 1)])]
     candidates.append(math.pi)
     gm, w180 = None, None
     for t in _unique(candidates):
@@ -148,9 +203,9 @@ def margins(num: list, den: list, ts: float) -> dict:
     bandwidth = None
     if radius < 1.0 and dc > 0 and evaluate(cn, 1.0) != 0:
         t0 = abs(evaluate(cn, 1.0) / evaluate(cd, 1.0))
-        b = add(scale(multiply(cn, reverse(cn)), 2.0), scale(multiply(cd, reverse(cd)), -t0 * t0))
         drop = lambda t: math.log(abs(response(cn, cd, t)) / t0) + 0.5 * math.log(2.0)  # noqa: E731
-        found = [_polish(drop, t) for t in _circle_angles(b)]
+        found = [_polish(drop, t) for t in
+                 _cosine_roots(_cosine_series([(2.0, cn), (-t0 * t0, cd)]))]
         if found:
             bandwidth = min(found) * to_hz
     return {"phase_margin_deg": pm,

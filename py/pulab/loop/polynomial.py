@@ -105,6 +105,8 @@ def roots(coefficients: list, max_sweeps: int = 200) -> list:
     monic = [x / c[0] for x in c]
     if n == 1:
         return found + [complex(-monic[1], 0.0)]
+    if n == 2:
+        return found + _quadratic(monic[1], monic[2])
     # Fujiwara bound: every root has |z| ≤ 2·max |a_k|^(1/k) (a_n/2 for the last).
     radius = max(abs(monic[k]) ** (1.0 / k) if k < n else (abs(monic[n]) / 2.0) ** (1.0 / n)
                  for k in range(1, n + 1))
@@ -144,6 +146,16 @@ def roots(coefficients: list, max_sweeps: int = 200) -> list:
             r = complex(r.real, 0.0)
         out.append(r)
     return found + _conjugate_pairs(out)
+
+
+def _quadratic(b: float, c: float) -> list:
+    """Roots of z² + b·z + c without cancellation (the larger root first, then c/it)."""
+    disc = b * b - 4.0 * c
+    if disc >= 0:
+        big = -0.5 * (b + math.copysign(math.sqrt(disc), b))
+        return [complex(big, 0.0), complex(c / big if big != 0 else 0.0, 0.0)]
+    re, im = -0.5 * b, 0.5 * math.sqrt(-disc)
+    return [complex(re, im), complex(re, -im)]
 
 
 def _conjugate_pairs(rs: list) -> list:
