@@ -38,7 +38,7 @@ from ..gains import current_pi
 from . import current as _current
 from . import pll as _pll
 from . import speed as _speed
-from .discrete import bode, closed_loop, log_frequencies
+from .discrete import bode, curve, log_frequencies, unit_circle, values
 from .inputs import validate
 
 __all__ = ["validate", "analyze", "warnings", "BODE_POINTS"]
@@ -132,9 +132,9 @@ def _grid(ts: float, crossovers: list) -> list:
     return log_frequencies(low, nyquist, BODE_POINTS)
 
 
-def _bode_pair(num: list, den: list, ts: float, f: list) -> tuple:
-    cn, cd = closed_loop(num, den)
-    return bode(num, den, ts, f), bode(cn, cd, ts, f)
+def _open_closed(samples: list) -> tuple:
+    """Bode curves of L and of T = L/(1 + L) from the same samples of L."""
+    return curve(samples), curve([v / (1.0 + v) for v in samples])
 
 
 def _bode(report: dict, cfg: dict, out: dict) -> dict:
@@ -142,11 +142,16 @@ def _bode(report: dict, cfg: dict, out: dict) -> dict:
     cur = out["current"]
     f = _grid(ts, [cur[a]["crossover_hz"] for a in ("d", "q")] +
               [cur["design"][a]["crossover_hz"] for a in ("d", "q")])
+    z = unit_circle(ts, f)
+    # L = C·P: the plant is evaluated once per axis, the PI per gain set
+    integrator = [1.0 / (x - 1.0) for x in z]
     current = {"f_hz": f, "open": {}, "closed": {}}
     for a, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
+        plant = values(*_current.plant(m["rs_ohm"], l_h, ts, cfg["delay"]), z)
         for name, g in ((a, cur[a]), (f"{a}_design", cur["design"][a])):
-            num, den = _current.loop(g["kp"], g["ki"], m["rs_ohm"], l_h, ts, cfg["delay"])
-            current["open"][name], current["closed"][name] = _bode_pair(num, den, ts, f)
+            kp, kits = g["kp"], g["ki"] * ts
+            samples = [((kp + kits) * x - kp) * i * p for x, i, p in zip(z, integrator, plant)]
+            current["open"][name], current["closed"][name] = _open_closed(samples)
     p = report["pll"]
     g = report["base"]["w_b"] / report["base"]["theta_b"]
     fp = _grid(ts, [out["pll"]["correct"]["crossover_hz"]])
@@ -160,7 +165,7 @@ def _bode(report: dict, cfg: dict, out: dict) -> dict:
         num, den = _speed.loop(sp["kp"], sp["ki"], sp["bases"]["kt_nm_per_a"],
                                s["inertia_kg_m2"], s["friction_nm_s"], sp["filter_hz"],
                                sp["ts_s"])
-        o, c = _bode_pair(num, den, sp["ts_s"], fs)
+        o, c = _open_closed(values(num, den, unit_circle(sp["ts_s"], fs)))
         result["speed"] = {"f_hz": fs, "open": o, "closed": c}
     return result
 

@@ -44,7 +44,8 @@ import math
 
 from .polynomial import add, evaluate, pad, roots
 
-__all__ = ["margins", "response", "bode", "log_frequencies", "closed_loop"]
+__all__ = ["margins", "response", "bode", "curve", "values", "unit_circle", "log_frequencies",
+           "closed_loop"]
 
 #: A root c of the cos θ polynomial counts as real below this imaginary part (then polished).
 _REAL = 1e-6
@@ -228,21 +229,40 @@ def log_frequencies(f_low: float, f_high: float, count: int) -> list:
     return [f_low * math.exp(ratio * k / (count - 1)) for k in range(count)]
 
 
-def bode(num: list, den: list, ts: float, frequencies: list) -> dict:
-    """Magnitude (dB) and unwrapped phase (deg) of L(e^{jωT_s}) at the given Hz.
-
-    The phase starts in (−180°, 180°] at the first frequency and is unwrapped
-    from there, so it is continuous along the plot.
-    """
-    mags, phases = [], []
+def unit_circle(ts: float, frequencies: list) -> list:
+    """z = e^{j·2π·f·T_s} for each frequency f (Hz)."""
     w = 2.0 * math.pi * ts
-    prev = None
-    for f in frequencies:
-        v = response(num, den, w * f)
-        mags.append(20.0 * math.log10(abs(v)))
-        ph = math.degrees(cmath.phase(v))
-        if prev is not None:
-            ph -= 360.0 * round((ph - prev) / 360.0)
-        phases.append(ph)
+    return [cmath.exp(1j * w * f) for f in frequencies]
+
+
+def values(num: list, den: list, points: list) -> list:
+    """num(z)/den(z) at each z."""
+    return [evaluate(num, z) / evaluate(den, z) for z in points]
+
+
+def curve(samples: list) -> dict:
+    """Magnitude (dB) and unwrapped phase (deg) of complex samples along a frequency axis.
+
+    The phase starts in (−180°, 180°] at the first sample and is unwrapped from
+    there, so it is continuous along the plot.
+    """
+    log10, atan2 = math.log10, math.atan2
+    mags = [10.0 * log10(v.real * v.real + v.imag * v.imag) for v in samples]
+    raw = [atan2(v.imag, v.real) for v in samples]
+    phases = []
+    offset, prev = 0.0, raw[0] if raw else 0.0
+    two_pi, to_deg = 2.0 * math.pi, 180.0 / math.pi
+    for ph in raw:
+        step = ph - prev
+        if step > math.pi:
+            offset -= two_pi
+        elif step < -math.pi:
+            offset += two_pi
         prev = ph
+        phases.append((ph + offset) * to_deg)
     return {"magnitude_db": mags, "phase_deg": phases}
+
+
+def bode(num: list, den: list, ts: float, frequencies: list) -> dict:
+    """:func:`curve` of L(e^{jωT_s}) = num/den at the given frequencies (Hz)."""
+    return curve(values(num, den, unit_circle(ts, frequencies)))

@@ -112,17 +112,24 @@ def roots(coefficients: list, max_sweeps: int = 200) -> list:
                  for k in range(1, n + 1))
     radius = radius if radius > 0 else 1.0
     z = [radius * cmath.exp(1j * (2.0 * math.pi * k / n + 0.4)) for k in range(n)]
-    magnitudes = [abs(x) for x in monic]
     done = [False] * n
+    remaining = n
     for _ in range(max_sweeps):
         for i in range(n):
             if done[i]:
                 continue
             zi = z[i]
-            p, dp = _value_and_slope(monic, zi)
-            # Backward-error test: |p| at the rounding level of evaluating p at |z|.
-            if abs(p) <= 8e-16 * evaluate(magnitudes, abs(zi)):
+            # p, p' and the rounding-error bound Σ|a_k|·|z|^k in one Horner pass
+            p = dp = 0j
+            bound = 0.0
+            r = abs(zi)
+            for c in monic:
+                dp = dp * zi + p
+                p = p * zi + c
+                bound = bound * r + abs(c)
+            if abs(p) <= 8e-16 * bound:                # backward error at rounding level
                 done[i] = True
+                remaining -= 1
                 continue
             repel = 0j
             for j in range(n):
@@ -133,7 +140,8 @@ def roots(coefficients: list, max_sweeps: int = 200) -> list:
             z[i] = zi - step
             if abs(step) <= 1e-15 * abs(z[i]):
                 done[i] = True
-        if all(done):
+                remaining -= 1
+        if remaining == 0:
             break
     out = []
     for r in z:
