@@ -7,6 +7,7 @@ import { vendorPanel } from './vendor';
 import { constantsPanel } from './constants';
 import { currentPanel } from './current';
 import { pllPanel } from './pll';
+import { loopPanel } from './loop';
 import { qcalcPanel } from './qcalc';
 import { conventionsPanel } from './conventions';
 import { docsPanel, setPanelRegistry } from './docs';
@@ -18,6 +19,7 @@ export const PANELS: Panel[] = [
   constantsPanel,
   currentPanel,
   pllPanel,
+  loopPanel,
   qcalcPanel,
   conventionsPanel,
   docsPanel, // last: the explainer chapters
