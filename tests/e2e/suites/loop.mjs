@@ -81,6 +81,12 @@ export default async function loop(ctx) {
       }
     }
     await page.click('button[data-lang="en"]');
+    await page.setViewportSize({ width: 1366, height: 900 });
+    for (const f of ['bode-current', 'bode-pll', 'speed-step', 'bode-speed']) {
+      await page.$eval(`#panel-loop [data-figure="${f}"]`, (e) => e.scrollIntoView({ block: 'center' }));
+      await page.waitForTimeout(600);
+      await page.screenshot({ path: join(SHOTS, `loop-${f}.png`) });
+    }
     await page.setViewportSize({ width: 1366, height: 768 });
   });
 

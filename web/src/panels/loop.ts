@@ -137,10 +137,10 @@ function drawFigures(el: HTMLElement, loop: LoopReport): void {
   const cur = bode.current;
   if (figs['bode-current']) {
     renderBode(figs['bode-current'], cur.f_hz, [
-      { curve: cur.open.d, name: `L d (${t('loopYours')})`, color: COLORS.si },
-      { curve: cur.closed.d, name: `T d (${t('loopYours')})`, color: COLORS.si, dash: 'dot' },
-      { curve: cur.open.d_design, name: `L d (${t('loopDesigned')})`, color: COLORS.pu },
-      { curve: cur.closed.d_design, name: `T d (${t('loopDesigned')})`, color: COLORS.pu, dash: 'dot' },
+      { curve: cur.open.d, name: `L_d ${t('loopYoursShort')}`, color: COLORS.si },
+      { curve: cur.closed.d, name: `T_d ${t('loopYoursShort')}`, color: COLORS.si, dash: 'dot' },
+      { curve: cur.open.d_design, name: `L_d ${t('loopDesignedShort')}`, color: COLORS.pu },
+      { curve: cur.closed.d_design, name: `T_d ${t('loopDesignedShort')}`, color: COLORS.pu, dash: 'dot' },
     ]);
   }
   if (figs['bode-pll']) {
