@@ -16,7 +16,7 @@ import pytest
 
 import pulab
 from pulab.errors import InputError
-from pulab.loop import current, discrete, pll, polynomial, speed
+from pulab.loop import current, discrete, pll, polynomial
 from pulab.messages import has_chinese
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]

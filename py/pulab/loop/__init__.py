@@ -106,7 +106,7 @@ def _speed_config(report: dict, s: dict) -> dict:
     return s
 
 
-def _speed_section(report: dict, s: dict, delay: str) -> dict:
+def _speed_section(report: dict, s: dict, delay: str, current_bandwidth_hz: float | None) -> dict:
     b, m = report["base"], report["input"]["motor"]
     mech = _speed.mechanical_bases(m["pole_pairs"], b["w_b"], b["P_b"], b["U_b"], b["I_b"],
                                    report["pu"]["psi_r_wb"], s["inertia_kg_m2"])
@@ -115,11 +115,9 @@ def _speed_section(report: dict, s: dict, delay: str) -> dict:
            "ts_s": s["ts_s"], "ratio": s["ratio"], "filter_hz": s["filter_hz"],
            "current_limit_a": s["current_limit_a"],
            **_speed.analyze(s, mech["kt_nm_per_a"], mech["w_mb"], b["I_b"])}
-    if out["crossover_hz"] is not None:
-        cur = report["loop_current_bandwidth_hz"]
-        out["inner_bandwidth_ratio"] = None if cur is None else cur / out["crossover_hz"]
-    else:
-        out["inner_bandwidth_ratio"] = None
+    out["inner_bandwidth_ratio"] = None
+    if out["crossover_hz"] is not None and current_bandwidth_hz is not None:
+        out["inner_bandwidth_ratio"] = current_bandwidth_hz / out["crossover_hz"]
     if s["response"]:
         from . import speed_response
         out["response"] = speed_response.run(report, s, out, mech, delay)
@@ -213,9 +211,8 @@ def analyze(report: dict, analysis) -> dict:
     if cfg["speed"] is not None:
         speed_cfg = _speed_config(report, cfg["speed"])
         cfg["speed"] = speed_cfg
-        out["speed"] = _speed_section({**report, "loop_current_bandwidth_hz":
-                                       out["current"]["q"]["bandwidth_hz"]}, speed_cfg,
-                                      cfg["delay"])
+        out["speed"] = _speed_section(report, speed_cfg, cfg["delay"],
+                                      out["current"]["q"]["bandwidth_hz"])
     if cfg["bode"]:
         out["bode"] = _bode(report, cfg, out)
     return out

@@ -178,13 +178,12 @@ def design(rs: float, l_h: float, ts: float, delay: str, by: str, target: float)
         raise InputError("analysis.target_phase_margin_deg",
                          f"{target:g}° is not reached below the Nyquist frequency "
                          f"(the loop keeps more phase margin)")
-    pm_high = _phase_margin_at(s, high, pm_low)
     for _ in range(60):
         mid = 0.5 * (low + high)
         pm_mid = _phase_margin_at(s, mid, pm_low)
         if pm_mid > target:
             low, pm_low = mid, pm_mid
         else:
-            high, pm_high = mid, pm_mid
+            high = mid
     kp = 1.0 / abs(s(0.5 * (low + high)))
     return kp, kp * (1.0 / a - 1.0) / ts
