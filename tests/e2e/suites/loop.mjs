@@ -94,7 +94,7 @@ export default async function loop(ctx) {
     for (const lang of ['zh', 'en']) {
       await page.click(`button[data-lang="${lang}"]`);
       await page.click('#panel-loop a.why');
-      await page.waitForSelector('article.doc[data-chapter="08-loop-design"] [data-key="pll.integrator_gain"][data-value]', { state: 'attached', timeout: 60_000 });
+      await page.waitForSelector('article.doc[data-chapter="08-loop-design"] [data-key="current_pi.d.pm_kp"][data-value]', { state: 'attached', timeout: 60_000 });
       await page.waitForSelector('article.doc [data-key="loop.current.d.phase_margin_deg"][data-value]', { state: 'attached', timeout: 60_000 });
       const errors = await page.$$eval('article.doc .katex-error', (e) => e.length);
       assert(errors === 0, `${lang}: ${errors} KaTeX errors`);
