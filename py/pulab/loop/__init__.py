@@ -38,7 +38,7 @@ from ..gains import current_pi
 from . import current as _current
 from . import pll as _pll
 from . import speed as _speed
-from .discrete import bode, curve, log_frequencies, unit_circle, values
+from .discrete import bode, curve, forget, log_frequencies, unit_circle, values
 from .inputs import validate
 
 __all__ = ["validate", "analyze", "warnings", "BODE_POINTS"]
@@ -191,6 +191,7 @@ def analyze(report: dict, analysis) -> dict:
         Naming an ``analysis.*`` field.
     """
     cfg = validate(analysis)
+    forget()
     m = report["input"]["motor"]
     out = {"delay": cfg["delay"], "current": {}}
     for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):

@@ -44,7 +44,7 @@ import math
 
 from .polynomial import add, evaluate, pad, roots
 
-__all__ = ["margins", "response", "bode", "curve", "values", "unit_circle", "log_frequencies",
+__all__ = ["margins", "loop_margins", "forget", "response", "bode", "curve", "values", "unit_circle", "log_frequencies",
            "closed_loop"]
 
 #: A root c of the cos θ polynomial counts as real below this imaginary part (then polished).
@@ -150,7 +150,25 @@ def _unique(values: list) -> list:
     return out
 
 
+_MEMO: dict = {}
+
+
+def forget() -> None:
+    """Empty the memo of :func:`margins` (:func:`pulab.loop.analyze` does, once per report,
+    so that it only joins identical loops within one report, never across reports)."""
+    _MEMO.clear()
+
+
 def margins(num: list, den: list, ts: float) -> dict:
+    """:func:`loop_margins`, memoized: the d and q loops of a motor with L_d = L_q are one loop."""
+    key = (tuple(num), tuple(den), ts)
+    hit = _MEMO.get(key)
+    if hit is None:
+        hit = _MEMO[key] = loop_margins(num, den, ts)
+    return {**hit, "poles": [list(p) for p in hit["poles"]]}
+
+
+def loop_margins(num: list, den: list, ts: float) -> dict:
     """Stability margins, crossovers, bandwidth and poles of L(z) = num/den in unity feedback.
 
     Parameters
@@ -246,9 +264,10 @@ def curve(samples: list) -> dict:
     The phase starts in (−180°, 180°] at the first sample and is unwrapped from
     there, so it is continuous along the plot.
     """
-    log10, atan2 = math.log10, math.atan2
-    mags = [10.0 * log10(v.real * v.real + v.imag * v.imag) for v in samples]
-    raw = [atan2(v.imag, v.real) for v in samples]
+    reals = [v.real for v in samples]
+    imags = [v.imag for v in samples]
+    mags = [10.0 * x for x in map(math.log10, [a * a + b * b for a, b in zip(reals, imags)])]
+    raw = list(map(math.atan2, imags, reals))
     phases = []
     offset, prev = 0.0, raw[0] if raw else 0.0
     two_pi, to_deg = 2.0 * math.pi, 180.0 / math.pi
