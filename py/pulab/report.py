@@ -149,6 +149,21 @@ def _table(title: str, rows: list) -> list:
     return [title, "-" * len(title)] + [f"  {k.ljust(width)}  {v}" for k, v in rows] + [""]
 
 
+def _loop_rows(loop: dict) -> list:
+    """PM/GM/crossover/bandwidth lines of the loop section (issue 11), 'none' where absent."""
+    def fmt(x, unit):
+        return "none" if x is None else f"{x:.4g} {unit}"
+    cases = [(f"current {a}", loop["current"][a]) for a in ("d", "q")]
+    cases += [(f"current {a} integers", loop["current"][a]["firmware"]) for a in ("d", "q")]
+    cases += [(f"current {a} designed", loop["current"]["design"][a]) for a in ("d", "q")]
+    cases += [("PLL scaled", loop["pll"]["correct"]), ("PLL naive", loop["pll"]["naive"])]
+    if loop["speed"] is not None:
+        cases.append(("speed", loop["speed"]))
+    return [(name, f"PM {fmt(m['phase_margin_deg'], '°')}  GM {fmt(m['gain_margin_db'], 'dB')}  "
+                   f"f_c {fmt(m['crossover_hz'], 'Hz')}  f_-3dB {fmt(m['bandwidth_hz'], 'Hz')}  "
+                   f"{'stable' if m['stable'] else 'UNSTABLE'}") for name, m in cases]
+
+
 def format_text(r: dict) -> str:
     """Readable tables of a report, for the terminal (``--format text``)."""
     b, pu = r["base"], r["pu"]
@@ -178,6 +193,8 @@ def format_text(r: dict) -> str:
     lines += _table("Magic constants", [(k, f"exact {c['exact']:.6f} = {c['expression']}, "
                                             f"rel. error {100 * c['rel_error']:+.4f} %")
                                         for k, c in r["constants"].items()])
+    if "loop" in r:
+        lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
     if r["warnings"]:
         lines += ["Warnings", "--------"] + [f"  ! {w}" for w in r["warnings"]]
     return "\n".join(lines).rstrip() + "\n"

@@ -256,3 +256,10 @@ def test_warnings_have_chinese():
     loop_warnings = [w for w in r["warnings"] if w.startswith("loop.")]
     assert loop_warnings
     assert all(has_chinese(w) for w in loop_warnings)
+
+
+def test_text_format_lists_the_margins():
+    from pulab.report import format_text
+    text = format_text(pulab.report(SEED))
+    assert "Loop margins (delay computation_pwm)" in text
+    assert "PLL naive           PM none" in text and "UNSTABLE" in text
