@@ -144,12 +144,18 @@ def _bode(report: dict, cfg: dict, out: dict) -> dict:
     # L = C·P: the plant is evaluated once per axis, the PI per gain set
     integrator = [1.0 / (x - 1.0) for x in z]
     current = {"f_hz": f, "open": {}, "closed": {}}
+    done: dict = {}     # L_d = L_q: the q curves are the d curves (same numbers, computed once)
     for a, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
-        plant = values(*_current.plant(m["rs_ohm"], l_h, ts, cfg["delay"]), z)
+        plant = None
         for name, g in ((a, cur[a]), (f"{a}_design", cur["design"][a])):
             kp, kits = g["kp"], g["ki"] * ts
-            samples = [((kp + kits) * x - kp) * i * p for x, i, p in zip(z, integrator, plant)]
-            current["open"][name], current["closed"][name] = _open_closed(samples)
+            key = (l_h, kp, kits)
+            if key not in done:
+                if plant is None:
+                    plant = values(*_current.plant(m["rs_ohm"], l_h, ts, cfg["delay"]), z)
+                samples = [((kp + kits) * x - kp) * i * p for x, i, p in zip(z, integrator, plant)]
+                done[key] = _open_closed(samples)
+            current["open"][name], current["closed"][name] = done[key]
     p = report["pll"]
     g = report["base"]["w_b"] / report["base"]["theta_b"]
     fp = _grid(ts, [out["pll"]["correct"]["crossover_hz"]])

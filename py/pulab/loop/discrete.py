@@ -15,7 +15,8 @@ On the circle a(z)·b(1/z) = Σ c_k·e^{jkθ} (c_k the correlation of the
 coefficients), so each condition is a cosine series Σ α_k·cos kθ or a sine
 series sin θ·Σ β_k·U_{k−1}(cos θ): with c = cos θ and Chebyshev polynomials
 it becomes a real polynomial of degree m (half the degree of the z-domain
-form) whose real roots in [−1, 1] are the crossings.  Each is then polished by
+form) whose real roots in [−1, 1] are the crossings (found in real arithmetic,
+:func:`pulab.loop.polynomial.real_roots`).  Each is then polished by
 Newton's method on the real function of θ it solves, so the frequencies are
 exact to rounding.  Margins as python-control's ``stability_margins`` defines them:
 
@@ -41,14 +42,13 @@ from __future__ import annotations
 
 import cmath
 import math
+from functools import lru_cache
 
-from .polynomial import add, evaluate, pad, roots
+from .polynomial import add, evaluate, pad, real_roots, roots
 
 __all__ = ["margins", "loop_margins", "forget", "response", "bode", "curve", "values", "unit_circle", "log_frequencies",
            "closed_loop"]
 
-#: A root c of the cos θ polynomial counts as real below this imaginary part (then polished).
-_REAL = 1e-6
 
 
 def response(num: list, den: list, theta: float) -> complex:
@@ -71,7 +71,8 @@ def _correlation(a: list, b: list) -> list:
             for k in range(-m, m + 1)]
 
 
-def _chebyshev(kind: int, count: int) -> list:
+@lru_cache(maxsize=32)
+def _chebyshev(kind: int, count: int) -> tuple:
     """T_0..T_{count−1} (kind 1) or U_0..U_{count−1} (kind 2), ascending coefficient lists."""
     out = [[1.0], [0.0, float(kind)]]
     while len(out) < count:
@@ -80,7 +81,7 @@ def _chebyshev(kind: int, count: int) -> list:
         for i, x in enumerate(b):
             nxt[i] -= x
         out.append(nxt)
-    return out[:count]
+    return tuple(out[:count])
 
 
 def _cosine_roots(alpha: list) -> list:
@@ -103,13 +104,7 @@ def _sine_roots(beta: list) -> list:
 
 def _angles(ascending: list) -> list:
     """acos of the real roots in [−1, 1] of a polynomial in c (ascending coefficients)."""
-    out = []
-    for r in roots(ascending[::-1]):
-        if abs(r.imag) < _REAL and -1.0 - _REAL <= r.real <= 1.0 + _REAL:
-            t = math.acos(max(-1.0, min(1.0, r.real)))
-            if t > 0.0:
-                out.append(t)
-    return out
+    return [math.acos(c) for c in real_roots(ascending[::-1], -1.0, 1.0) if c < 1.0]
 
 
 def _cosine_series(pairs: list) -> list:
@@ -125,20 +120,26 @@ def _cosine_series(pairs: list) -> list:
 
 
 def _polish(f, theta: float) -> float:
-    """Newton (central-difference slope) on a smooth real f(θ), kept inside (0, π]."""
-    for _ in range(4):
+    """Newton (forward-difference slope) on a smooth real f(θ), kept inside (0, π].
+
+    The roots come from the cos θ polynomial already close (1e-10 or better), so one or
+    two steps reach rounding level."""
+    fx = f(theta)
+    for _ in range(3):
         h = 1e-7 * max(theta, 1e-6)
-        fx = f(theta)
-        slope = (f(theta + h) - f(theta - h)) / (2.0 * h)
-        if slope == 0 or fx == 0:
+        if fx == 0:
+            break
+        slope = (f(theta + h) - fx) / h
+        if slope == 0:
             break
         new = theta - fx / slope
         if not 0.0 < new <= math.pi or abs(new - theta) > 1e-3 * theta:
             break
-        done = abs(new - theta) <= 1e-13 * theta    # quadratic: the next step is below rounding
+        done = abs(new - theta) <= 1e-12 * theta    # quadratic: the next step is below rounding
         theta = new
         if done:
             break
+        fx = f(theta)
     return theta
 
 

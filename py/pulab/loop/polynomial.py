@@ -27,7 +27,7 @@ from __future__ import annotations
 import cmath
 import math
 
-__all__ = ["multiply", "add", "scale", "reverse", "pad", "evaluate", "roots"]
+__all__ = ["multiply", "add", "scale", "reverse", "pad", "evaluate", "roots", "real_roots"]
 
 
 def multiply(a: list, b: list) -> list:
@@ -114,6 +114,7 @@ def roots(coefficients: list, max_sweeps: int = 200) -> list:
     z = [radius * cmath.exp(1j * (2.0 * math.pi * k / n + 0.4)) for k in range(n)]
     done = [False] * n
     remaining = n
+    pairs = list(zip(monic, [abs(c) for c in monic]))
     for _ in range(max_sweeps):
         for i in range(n):
             if done[i]:
@@ -123,10 +124,10 @@ def roots(coefficients: list, max_sweeps: int = 200) -> list:
             p = dp = 0j
             bound = 0.0
             r = abs(zi)
-            for c in monic:
+            for c, m in pairs:
                 dp = dp * zi + p
                 p = p * zi + c
-                bound = bound * r + abs(c)
+                bound = bound * r + m
             if abs(p) <= 8e-16 * bound:                # backward error at rounding level
                 done[i] = True
                 remaining -= 1
@@ -180,3 +181,79 @@ def _conjugate_pairs(rs: list) -> list:
         re, im = 0.5 * (r.real + mate.real), 0.5 * (r.imag - mate.imag)
         out += [complex(re, im), complex(re, -im)]
     return out + lower
+
+
+def _derivative(c: list) -> list:
+    n = len(c) - 1
+    return [x * (n - k) for k, x in enumerate(c[:-1])]
+
+
+def _bracketed(c: list, d: list, a: float, b: float, fa: float) -> float:
+    """The root of c in [a, b] (sign change), Newton kept inside the bracket, else bisection."""
+    x = 0.5 * (a + b)
+    for _ in range(100):
+        fx = evaluate(c, x)
+        if fx == 0.0:
+            return x
+        if (fx < 0) == (fa < 0):
+            a, fa = x, fx
+        else:
+            b = x
+        slope = evaluate(d, x)
+        new = x - fx / slope if slope != 0 else a - 1.0
+        if not a < new < b:
+            new = 0.5 * (a + b)
+        # Newton converges quadratically: a step this small leaves only rounding behind.
+        if abs(new - x) <= 1e-15 * max(abs(new), 1.0) or b - a <= 4e-16 * max(abs(a), abs(b)):
+            return new
+        x = new
+    return x
+
+
+def real_roots(coefficients: list, low: float, high: float) -> list:
+    """The real roots of a real polynomial in [low, high], sorted, in real arithmetic only.
+
+    The roots of the derivative (found the same way, down to the quadratic formula)
+    split the interval into pieces on which the polynomial is monotone; each piece whose
+    ends differ in sign holds exactly one root, found by bracketed Newton.  A root of
+    even multiplicity (the polynomial touches zero without crossing) is not reported:
+    for a loop, a curve that only touches |L| = 1 does not cross over.
+
+    Parameters
+    ----------
+    coefficients : list of float, highest power first
+    low, high : float, low < high — the interval (ends included)
+
+    Examples
+    --------
+    >>> [round(r, 12) for r in real_roots([1.0, 0.0, -2.0, 0.0], -1.0, 2.0)]   # z³ − 2z
+    [0.0, 1.414213562373]
+    """
+    c = [float(x) for x in coefficients]
+    while c and c[0] == 0.0:
+        c.pop(0)
+    n = len(c) - 1
+    if n <= 0:
+        return []
+    if n == 1:
+        r = -c[1] / c[0]
+        return [r] if low <= r <= high else []
+    if n == 2:
+        disc = c[1] * c[1] - 4.0 * c[0] * c[2]
+        if disc <= 0:
+            return []
+        return sorted(r.real for r in _quadratic(c[1] / c[0], c[2] / c[0]) if low <= r.real <= high)
+    d = _derivative(c)
+    ends = [low] + real_roots(d, low, high) + [high]
+    out = []
+    f_prev = evaluate(c, low)
+    if f_prev == 0.0:
+        out.append(low)
+    for a, b in zip(ends, ends[1:]):
+        f_b = evaluate(c, b)
+        if f_b == 0.0:
+            out.append(b)
+        elif f_prev != 0.0 and (f_prev < 0) != (f_b < 0):
+            out.append(_bracketed(c, d, a, b, f_prev))
+        f_prev = f_b
+    return sorted(set(out))
