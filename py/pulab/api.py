@@ -18,12 +18,14 @@ import json
 import re
 
 from .errors import InputError
+from .inputs import real, shown
+from .jsontext import parse
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
 from .messages import to_zh
 from .report import report
 
-__all__ = ["run_json", "qcalc", "qcalc_json", "export_json"]
+__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -34,11 +36,7 @@ def _fail(e: InputError) -> str:
 def run_json(text: str) -> str:
     """``report`` on a JSON string; returns ``{"ok": true, "report": {...}}`` or an error."""
     try:
-        inp = json.loads(text)
-    except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))
-    try:
-        return json.dumps({"ok": True, "report": report(inp)}, allow_nan=False)
+        return json.dumps({"ok": True, "report": report(parse(text))}, allow_nan=False)
     except InputError as e:
         return _fail(e)
 
@@ -61,7 +59,10 @@ def qcalc(req: dict) -> dict:
     """
     if not isinstance(req, dict):
         raise InputError("qcalc", "must be an object")
-    name = str(req.get("format", "")).strip()
+    name = req.get("format", "")
+    if not isinstance(name, str):
+        raise InputError("qcalc.format", f"must be a string, got {shown(name)}")
+    name = name.strip()
     word_bits = req.get("word_bits")
     if word_bits is not None and (isinstance(word_bits, bool) or not isinstance(word_bits, int)):
         raise InputError("qcalc.word_bits", "must be an integer")
@@ -73,7 +74,7 @@ def qcalc(req: dict) -> dict:
         if re.fullmatch(r"U?Q\d+(\.\d+)?", name, re.I):
             raise InputError("qcalc.format", f"{name} does not fit {word_bits or 64} word "
                              "bits") from None
-        raise InputError("qcalc.format", f"not a Q format: {name!r} "
+        raise InputError("qcalc.format", f"not a Q format: {shown(name)} "
                          "(use Qm.n, UQm.n, or Qn with word_bits)") from None
     rounding = req.get("rounding", "nearest")
     overflow = req.get("overflow", "saturate")
@@ -90,11 +91,11 @@ def qcalc(req: dict) -> dict:
         res = {"raw": raw, "value": decode(raw, fmt), "error": 0.0, "flags": []}
     else:
         x = req.get("value")
-        if isinstance(x, bool) or not isinstance(x, (int, float)) or x != x or \
-                x in (float("inf"), float("-inf")):
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
             raise InputError("qcalc.value", "must be a finite number")
+        x = real(x, "qcalc.value")
         try:
-            e = encode(float(x), fmt, rounding, overflow)
+            e = encode(x, fmt, rounding, overflow)
         except OverflowError as err:
             raise InputError("qcalc.value", str(err)) from None
         res = {"raw": e.raw, "value": e.value, "error": e.error, "flags": e.flags}
@@ -109,11 +110,9 @@ def qcalc(req: dict) -> dict:
 def qcalc_json(text: str) -> str:
     """``qcalc`` on a JSON string; ``{"ok": true, ...}`` or an error naming the field."""
     try:
-        return json.dumps({"ok": True, **qcalc(json.loads(text))})
-    except ValueError as e:
-        if isinstance(e, InputError):
-            return _fail(e)
-        return _fail(InputError("qcalc", f"not valid JSON: {e}"))
+        return json.dumps({"ok": True, **qcalc(parse(text, "qcalc"))})
+    except InputError as e:
+        return _fail(e)
 
 
 def export_json(text: str) -> str:
@@ -122,7 +121,7 @@ def export_json(text: str) -> str:
     Returns ``{"ok": true, "text": ...}`` or an error naming the field.
     """
     try:
-        req = json.loads(text)
+        req = parse(text)
         r = report(req.get("input") if isinstance(req, dict) else None)
         kind = req.get("kind")
         if kind == "header":
@@ -134,5 +133,76 @@ def export_json(text: str) -> str:
         raise InputError("kind", "must be one of header, csv_current, csv_pll")
     except InputError as e:
         return _fail(e)
-    except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))
+
+
+def sweep_json(text: str) -> str:
+    """A family sweep (:mod:`pulab.sweep`) on a JSON string, whole or in chunks.
+
+    The request is a sweep request (``input``, ``x``, optional ``y`` and ``profile``) with
+    ``op``: ``"sweep"`` (default: everything at once), ``"plan"`` (the axes and the number
+    of points, nothing computed), ``"chunk"`` with ``start`` and ``count`` (those points and
+    their summary; a page computes a sweep chunk by chunk to show progress and cancel), or
+    ``"merge"`` with ``summaries`` (the chunks' summaries → the sweep's summary).
+
+    Returns ``{"ok": true, ...}`` with ``plan``, ``chunk`` or ``summary``, or an error
+    naming the field.
+
+    >>> import json
+    >>> req = {"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3}}
+    >>> json.loads(sweep_json(json.dumps({**req, "op": "plan"})))["plan"]["x"]["values"]
+    [1.0, 1.5, 2.0]
+    >>> json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": 0, "count": 2})))[
+    ...     "chunk"]["points"]["error"][0]
+    'motor.rated_voltage_v: is required'
+    """
+    from . import sweep as sw  # imported on first use: report-only pages stay lean
+    try:
+        req = parse(text, "sweep")
+        op = req.get("op", "sweep") if isinstance(req, dict) else None
+        if op == "sweep":
+            out = {"sweep": sw.sweep(req)}
+        else:
+            plan = sw.make_plan(req)
+            if op == "plan":
+                out = {"plan": sw.describe(plan)}
+            elif op == "chunk":
+                out = {"chunk": sw.chunk(plan, req.get("start", 0), req.get("count"))}
+            elif op == "merge":
+                summaries = req.get("summaries")
+                if not isinstance(summaries, list):
+                    raise InputError("sweep.summaries", "must be a list of chunk summaries")
+                out = {"summary": sw.merge(plan, summaries)}
+            else:
+                raise InputError("sweep.op", "must be one of sweep, plan, chunk, merge")
+        return json.dumps({"ok": True, **out}, allow_nan=False)
+    except InputError as e:
+        return _fail(e)
+
+
+def batch_json(text: str) -> str:
+    """A batch (:mod:`pulab.batch`) on ``{"csv": text, "start": int, "count": int}``.
+
+    Returns ``{"ok": true, "total": rows, "columns": [...], "rows": [[cell, ...]], "csv":
+    text}`` for data rows ``start`` … ``start+count−1`` (``csv`` has the header when
+    ``start`` is 0, so the chunks' texts joined are the CLI's output), or an error naming
+    the field when the file as a whole is unreadable.  Bad rows come back in their
+    ``error`` cell.
+    """
+    from . import batch as bt  # imported on first use: report-only pages stay lean
+    try:
+        req = parse(text, "batch")
+        if not isinstance(req, dict):
+            raise InputError("batch", "must be an object")
+        columns, rows = bt.read_table(req.get("csv"))
+        start, count = req.get("start", 0), req.get("count", len(rows))
+        for name, v, hi in (("start", start, len(rows)), ("count", count, None)):
+            if isinstance(v, bool) or not isinstance(v, int) or v < 0 or (hi is not None and v > hi):
+                raise InputError(f"batch.{name}", f"must be 0..{hi if hi is not None else 'N'}, "
+                                 f"got {v!r}")
+        names = bt.output_columns(columns)
+        out = bt.batch_rows(req["csv"], start, count)
+        return json.dumps({"ok": True, "total": len(rows), "columns": names,
+                           "rows": [[r.get(n, "") for n in names] for r in out],
+                           "csv": bt.to_csv(names, out, start == 0)})
+    except InputError as e:
+        return _fail(e)

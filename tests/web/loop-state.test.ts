@@ -4,7 +4,7 @@ import { SEED_INPUT, initialInput, reportInput, simInput, type Input } from '../
 import { effectiveInput } from '../../web/src/fields';
 
 describe('analysis: reportInput drops it, simInput asks for Bode data and the speed response', () => {
-  const cases: [string, Input, Input | undefined][] = [
+  const cases: [string, Input, unknown][] = [
     ['no analysis → none added', { motor: { rs_ohm: 1 }, sim: {} }, undefined],
     ['delay only → bode', { analysis: { delay: 'none' } }, { delay: 'none', bode: true }],
     ['speed → response', { analysis: { speed: { inertia_kg_m2: 0.001 } } }, { bode: true, speed: { inertia_kg_m2: 0.001, response: true } }],

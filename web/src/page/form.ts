@@ -8,17 +8,14 @@ import { PRESETS, clone, getPath, setPath, type Input } from '../state';
 import { fromSI, toSI, type UnitId } from '../units';
 import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
+import { checkUnits } from '../state-check';
 
 export class InputForm {
   /** The display unit chosen for each field (kept in localStorage). */
   private units: Record<string, UnitId> = {};
 
   constructor(private root: HTMLElement, private session: ComputeSession) {
-    try {
-      this.units = JSON.parse(load(UNITS_KEY) ?? '{}') as Record<string, UnitId>;
-    } catch {
-      this.units = {};
-    }
+    this.units = checkUnits(load(UNITS_KEY));
   }
 
   private get host(): HTMLElement | null {
@@ -82,14 +79,17 @@ export class InputForm {
 
   /** The message at each field: the page's own check first, then Python's, then the simulation's. */
   showErrors(): void {
-    const { localErrors, remoteError, simFieldError } = this.session;
+    const { localErrors, remoteError, simFieldError, stateNotes } = this.session;
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
       let msg = localErrors.get(f) ?? '';
       if (!msg && remoteError?.field === f) msg = errText(remoteError);
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
-      el.textContent = msg;
+      // A value from the link that could not be used: a note, not an error (the default is used).
+      const note = msg ? '' : stateNotes.get(f) ?? '';
+      el.textContent = msg || note;
       el.closest('.field')?.classList.toggle('invalid', msg !== '');
+      el.closest('.field')?.classList.toggle('noted', note !== '');
     }
   }
 
@@ -126,7 +126,7 @@ export class InputForm {
 
   private onNumber(f: FieldSpec, text: string): void {
     const s = this.session;
-    s.touched();
+    s.touched(f.path);
     const r = parseNumber(text, f.kind === 'int');
     if (!r.ok) return s.setLocalError(f.path, t(r.error === 'integer' ? 'errInteger' : 'errNumber'));
     const unit = this.unitOf(f);
@@ -142,6 +142,7 @@ export class InputForm {
 
   private onSelect(f: FieldSpec, value: string): void {
     const { input, report } = this.session;
+    this.session.touched(f.path);
     setPath(input as Record<string, unknown>, f.path, value);
     if (f.path === 'current_loop.method' && value === 'manual' && report) {
       // Start manual tuning from the current design.
@@ -165,6 +166,7 @@ export class InputForm {
   }
 
   private onBool(f: FieldSpec, v: boolean): void {
+    this.session.touched(f.path);
     setPath(this.session.input as Record<string, unknown>, f.path, v);
     this.session.schedule();
   }

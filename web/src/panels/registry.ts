@@ -10,6 +10,8 @@ import { pllPanel } from './pll';
 import { loopPanel } from './loop';
 import { qcalcPanel } from './qcalc';
 import { conventionsPanel } from './conventions';
+import { sweepPanel } from './sweep';
+import { batchPanel } from './batch';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -22,6 +24,8 @@ export const PANELS: Panel[] = [
   loopPanel,
   qcalcPanel,
   conventionsPanel,
+  sweepPanel,
+  batchPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
