@@ -5,7 +5,7 @@ import { h, num, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
 import type { LoopReport, Margins } from '../report-types';
 import { renderBode } from '../figures/bode';
-import { COLORS } from '../figures/figure';
+import { COLORS, simPlaceholder } from '../figures/figure';
 import { renderSpeedStep } from '../figures/speed-step';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
@@ -162,10 +162,10 @@ function drawFigures(el: HTMLElement, loop: LoopReport): void {
 export const loopPanel: Panel = {
   id: 'loop',
   title: 'p_loop',
-  render(el, { simReport, simError }) {
-    const loop = simReport?.loop;
+  render(el, ctx) {
+    const loop = ctx.simReport?.loop;
     if (!loop) {
-      el.replaceChildren(h('div', { class: 'plot-placeholder' }, simError ? t('simNotAvailable', { m: simError }) : t('loopWaiting')));
+      el.replaceChildren(ctx.simError ? simPlaceholder(ctx) : h('div', { class: 'plot-placeholder' }, t('loopWaiting')));
       return;
     }
     el.replaceChildren(...currentSection(el, loop), ...pllSection(el, loop), ...speedSection(el, loop));
