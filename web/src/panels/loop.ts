@@ -162,6 +162,7 @@ function drawFigures(el: HTMLElement, loop: LoopReport): void {
 export const loopPanel: Panel = {
   id: 'loop',
   title: 'p_loop',
+  usesSim: true,
   render(el, ctx) {
     const loop = ctx.simReport?.loop;
     if (!loop) {

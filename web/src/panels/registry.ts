@@ -9,9 +9,11 @@ import { currentPanel } from './current';
 import { pllPanel } from './pll';
 import { loopPanel } from './loop';
 import { qcalcPanel } from './qcalc';
+import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
 import { sweepPanel } from './sweep';
 import { batchPanel } from './batch';
+import { vendorsPanel } from './vendors';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -23,9 +25,11 @@ export const PANELS: Panel[] = [
   pllPanel,
   loopPanel,
   qcalcPanel,
+  codePanel,
   conventionsPanel,
   sweepPanel,
   batchPanel,
+  vendorsPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
