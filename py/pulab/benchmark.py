@@ -14,8 +14,8 @@ import json
 import sys
 import time
 
-__all__ = ["run", "report_timing", "trace_timing", "format_run", "MOTORS", "TRACE_SNIPPET",
-           "TRACE_INPUTS"]
+__all__ = ["run", "report_timing", "loop_timing", "trace_timing", "format_run", "MOTORS",
+           "TRACE_SNIPPET", "TRACE_INPUTS"]
 
 #: Motors of different sizes; timing differs little, but one motor would hide outliers.
 MOTORS = {
@@ -42,6 +42,27 @@ def report_timing(n: int = 200) -> dict:
         for _ in range(n):
             report(inp)
         out[name] = (time.perf_counter() - t0) / n * 1e3
+    return out
+
+
+def loop_timing(n: int = 30) -> dict:
+    """Median milliseconds of the full report with the loop analysis and Bode data (issue 11).
+
+    ``"analysis": {"bode": true}`` on every motor: margins, poles, bandwidth of the current
+    loop (design gains, firmware integers, delay-aware design and the continuous design),
+    both PLLs, and 400 points per Bode curve (12 curves).  Target: ≤ 20 ms in Pyodide.
+    """
+    from .report import report
+    out = {}
+    for name, inp in MOTORS.items():
+        inp = {**inp, "analysis": {"bode": True}}
+        report(inp)
+        times = []
+        for _ in range(n):
+            t0 = time.perf_counter()
+            report(inp)
+            times.append((time.perf_counter() - t0) * 1e3)
+        out[name] = sorted(times)[n // 2]
     return out
 
 
@@ -101,11 +122,12 @@ def trace_timing(n: int = 200) -> dict:
 
 
 def run(sim_steps: int = 20000) -> dict:
-    """All core benchmarks: ``report_ms`` per motor, ``sim`` (see pulab.sim.bench), ``trace``."""
+    """All core benchmarks: ``report_ms`` per motor, ``loop_ms``, ``sim`` (see pulab.sim.bench),
+    ``trace``."""
     from .sim.bench import bench
     return {"python": f"{sys.implementation.name} {sys.version.split()[0]}",
-            "platform": sys.platform, "report_ms": report_timing(), "sim": bench(sim_steps),
-            "trace": trace_timing()}
+            "platform": sys.platform, "report_ms": report_timing(), "loop_ms": loop_timing(),
+            "sim": bench(sim_steps), "trace": trace_timing()}
 
 
 def format_run(r: dict) -> str:
@@ -113,6 +135,9 @@ def format_run(r: dict) -> str:
     lines = [f"pulab core benchmark in {r['python']} ({r['platform']}):"]
     for name, ms in r["report_ms"].items():
         lines.append(f"  report(), {name:<13} {ms:7.3f} ms per call  (target < 5 ms in Pyodide)")
+    for name, ms in r.get("loop_ms", {}).items():
+        lines.append(f"  report() + loop analysis + Bode, {name:<13} {ms:7.3f} ms median  "
+                     f"(target ≤ 20 ms in Pyodide)")
     s = r["sim"]
     lines.append(f"  sim: {s['steps']} steps × 3 variants in {s['total_s']:.3f} s = "
                  f"{s['steps_per_s']:.0f} steps/s (target < 0.5 s CPython, < 1 s Pyodide); "

@@ -183,9 +183,9 @@ def normalize(inp: dict) -> dict:
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     for key in inp:
-        if key not in SECTIONS and key not in ("sim", "profiles"):
+        if key not in SECTIONS and key not in ("sim", "profiles", "analysis"):
             raise InputError(key_path("", key), f"unknown section (expected one of: "
-                             f"{', '.join(list(SECTIONS) + ['sim', 'profiles'])})")
+                             f"{', '.join(list(SECTIONS) + ['sim', 'profiles', 'analysis'])})")
     m = _section(inp, "motor")
     d = _section(inp, "drive")
     c = _section(inp, "conventions")
@@ -245,4 +245,5 @@ def normalize(inp: dict) -> dict:
         out["sim"] = inp["sim"]
     if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor
         out["profiles"] = inp["profiles"]
+    out["analysis"] = inp.get("analysis")
     return out

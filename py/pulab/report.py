@@ -134,7 +134,7 @@ def report(inp: dict) -> dict:
     -------
     dict
         ``input`` (normalized), ``base``, ``pu``, ``vendor``, ``current_pi``, ``pll``,
-        ``constants``, ``warnings`` and, when asked, ``sim``.
+        ``constants``, ``warnings`` and, when asked, ``sim`` and ``loop``.
 
     Raises
     ------
@@ -161,7 +161,7 @@ def report(inp: dict) -> dict:
         n["profiles"] = _profiles.options(n["profiles"], ctx)
         prof = _profiles.profiles(ctx, n["profiles"])
     out = {
-        "input": {k: v for k, v in n.items() if k != "sim"},
+        "input": {k: v for k, v in n.items() if k not in ("sim", "analysis")},
         "base": b,
         "pu": pu,
         "vendor": {"raw": raw, **vendor},
@@ -174,6 +174,12 @@ def report(inp: dict) -> dict:
     if prof is not None:
         out["profiles"] = prof
         out["warnings"] += _profile_warnings(prof)
+    if n["analysis"] is not None:
+        # issue 11, only when asked (like "sim"): plain reports stay within their time budget
+        from . import loop as _loop
+        out["loop"] = _loop.analyze(out, n["analysis"])
+        out["input"]["analysis"] = _loop.validate(n["analysis"])
+        out["warnings"] += _loop.warnings(out["loop"])
     out["warnings_zh"] = [to_zh(w) for w in out["warnings"]]
     if sim_in is not None:
         out["sim"] = _sim.simulate(out, sim_in)
@@ -183,6 +189,21 @@ def report(inp: dict) -> dict:
 def _table(title: str, rows: list) -> list:
     width = max(len(r[0]) for r in rows)
     return [title, "-" * len(title)] + [f"  {k.ljust(width)}  {v}" for k, v in rows] + [""]
+
+
+def _loop_rows(loop: dict) -> list:
+    """PM/GM/crossover/bandwidth lines of the loop section (issue 11), 'none' where absent."""
+    def fmt(x, unit):
+        return "none" if x is None else f"{x:.4g} {unit}"
+    cases = [(f"current {a}", loop["current"][a]) for a in ("d", "q")]
+    cases += [(f"current {a} integers", loop["current"][a]["firmware"]) for a in ("d", "q")]
+    cases += [(f"current {a} designed", loop["current"]["design"][a]) for a in ("d", "q")]
+    cases += [("PLL scaled", loop["pll"]["correct"]), ("PLL naive", loop["pll"]["naive"])]
+    if loop["speed"] is not None:
+        cases.append(("speed", loop["speed"]))
+    return [(name, f"PM {fmt(m['phase_margin_deg'], '°')}  GM {fmt(m['gain_margin_db'], 'dB')}  "
+                   f"f_c {fmt(m['crossover_hz'], 'Hz')}  f_-3dB {fmt(m['bandwidth_hz'], 'Hz')}  "
+                   f"{'stable' if m['stable'] else 'UNSTABLE'}") for name, m in cases]
 
 
 def format_text(r: dict) -> str:
@@ -219,6 +240,8 @@ def format_text(r: dict) -> str:
             (k, f"{c['value']:>11d}  {c['format']:<16} err {c['error_pct']:+.4f} %  = "
                 f"{c['si']:.6g} {c['unit']}  {' '.join(c['flags'])}")
             for k, c in prof["constants"].items()])
+    if "loop" in r:
+        lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
     if r["warnings"]:
         lines += ["Warnings", "--------"] + [f"  ! {w}" for w in r["warnings"]]
     return "\n".join(lines).rstrip() + "\n"

@@ -28,6 +28,7 @@ export interface SectionSpec {
 
 const conv = (inp: Input, k: string): unknown => inp.conventions?.[k];
 const loop = (inp: Input): string => String(inp.current_loop?.method ?? 'bandwidth');
+const design = (inp: Input): string => String(inp.analysis?.design ?? 'phase_margin');
 
 export const RAW_NAMES = ['Voltage', 'Current', 'FullFreq01', 'FreqRated01', 'RsPm', 'LD', 'LQ', 'BemfVolt', 'uDCFilter'];
 const RAW_UNIT: Record<string, string> = {
@@ -99,6 +100,27 @@ export const SECTIONS: SectionSpec[] = [
       { path: 'sim.pll.angle_step_deg', kind: 'number', unit: '°', optional: true },
       { path: 'sim.pll.ramp_hz_per_s', kind: 'number', unit: 'Hz/s', optional: true },
       { path: 'sim.pll.duration_s', kind: 'number', units: ['ms', 's'], optional: true },
+    ],
+  },
+  {
+    id: 'analysis', title: 'sec_analysis', collapsed: true, fields: [
+      { path: 'analysis.delay', kind: 'select', options: ['computation_pwm', 'computation', 'none'] },
+      { path: 'analysis.design', kind: 'select', options: ['phase_margin', 'bandwidth'] },
+      { path: 'analysis.target_phase_margin_deg', kind: 'number', unit: '°', optional: true, enabled: (i) => design(i) === 'phase_margin' },
+      { path: 'analysis.target_bandwidth_hz', kind: 'number', unit: 'Hz', optional: true, enabled: (i) => design(i) === 'bandwidth', placeholderFrom: 'current_pi.bandwidth_hz' },
+    ],
+  },
+  {
+    id: 'analysis.speed', title: 'sec_speed', collapsed: true, fields: [
+      { path: 'analysis.speed.inertia_kg_m2', kind: 'number', unit: 'kg·m²' },
+      { path: 'analysis.speed.friction_nm_s', kind: 'number', unit: 'N·m·s/rad', optional: true },
+      { path: 'analysis.speed.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true },
+      { path: 'analysis.speed.damping', kind: 'number', optional: true },
+      { path: 'analysis.speed.filter_hz', kind: 'number', unit: 'Hz', optional: true },
+      { path: 'analysis.speed.ts_s', kind: 'number', units: ['µs', 'kHz', 's'], optional: true },
+      { path: 'analysis.speed.current_limit_a', kind: 'number', unit: 'A', optional: true },
+      { path: 'analysis.speed.step_pu', kind: 'number', unit: 'pu', optional: true },
+      { path: 'analysis.speed.load_pu', kind: 'number', unit: 'pu', optional: true },
     ],
   },
 ];

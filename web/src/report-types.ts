@@ -65,5 +65,55 @@ export interface Report {
   warnings: string[];
   warnings_zh: string[];
   sim?: { current?: SimCurrent; pll?: SimPll };
+  loop?: LoopReport;
+}
+
+/** Margins of one discrete loop (docs/contract.md, "Loop analysis"); null = does not exist. */
+export interface Margins {
+  phase_margin_deg: number | null;
+  gain_margin_db: number | null;
+  crossover_hz: number | null;
+  phase_crossover_hz: number | null;
+  bandwidth_hz: number | null;
+  poles: [number, number][];
+  spectral_radius: number;
+  stable: boolean;
+  [k: string]: unknown;
+}
+export interface BodeCurve {
+  magnitude_db: number[];
+  phase_deg: number[];
+}
+export interface LoopReport {
+  delay: string;
+  current: {
+    d: Margins & { firmware: Margins };
+    q: Margins & { firmware: Margins };
+    design: {
+      by: string;
+      target: number;
+      dead_time_s: number;
+      d: Margins & { firmware: Margins; continuous: Margins };
+      q: Margins & { firmware: Margins; continuous: Margins };
+    };
+  };
+  pll: { correct: Margins; naive: Margins; boundary_kp_ts_gain: number };
+  speed: null | (Margins & {
+    firmware: Margins;
+    bases: Record<string, number>;
+    response?: {
+      t: number[];
+      t_load_s: number;
+      reference_rpm: number;
+      variants: Record<string, { speed_rpm: number[]; iq_a: number[]; iq_ref_a: number[] }>;
+      metrics: Record<string, unknown>;
+      fixed_vs_float_max_rpm: number;
+    };
+  });
+  bode?: {
+    current: { f_hz: number[]; open: Record<string, BodeCurve>; closed: Record<string, BodeCurve> };
+    pll: { f_hz: number[]; open: Record<string, BodeCurve> };
+    speed?: { f_hz: number[]; open: BodeCurve; closed: BodeCurve };
+  };
 }
 export const VENDOR_NAMES = ['Rpm', 'LD', 'LQ', 'FreqPer', 'FluxRotor', 'pm_maxout_vol', 'maxu'] as const;

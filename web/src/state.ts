@@ -14,6 +14,9 @@ export const SEED_INPUT: Input = {
   raw: {},
   // Empty fields take pulab.sim's motor-dependent defaults (step 0.5·I_b, duration from ω_c, …).
   sim: { current: { axis: 'd', delay: false }, pll: {} },
+  // Loop analysis (issue 11): sent with the simulation request only (Bode data and the speed
+  // response are heavy); J is a placeholder inertia for a small servo, to be replaced.
+  analysis: { delay: 'computation_pwm', design: 'phase_margin', target_phase_margin_deg: 60, speed: { inertia_kg_m2: 0.00001 } },
 };
 
 /** Presets: typical motors (the seed's example first). */
@@ -89,21 +92,27 @@ export function setPath(obj: Record<string, unknown>, path: string, value: unkno
   else cur[last] = value;
 }
 
-/** The input for the plain report: no "sim", no empty sections. */
+/** The input for the plain report: no "sim", no "analysis", no empty sections. */
 export function reportInput(inp: Input): Input {
   const out: Input = {};
   for (const [k, v] of Object.entries(inp)) {
-    if (k === 'sim') continue;
+    if (k === 'sim' || k === 'analysis') continue;
     if (v && typeof v === 'object' && Object.keys(v).length === 0) continue;
     out[k] = v;
   }
   return out;
 }
 
-/** The input with the simulation section (the sim request). */
+/** The input with the simulation section (the sim request), and the loop analysis with its
+ * Bode data and speed response when the input has "analysis". */
 export function simInput(inp: Input): Input {
   const out = reportInput(inp);
   if (inp.sim) out.sim = inp.sim;
+  if (inp.analysis) {
+    const speed = inp.analysis.speed;
+    out.analysis = { ...inp.analysis, bode: true };
+    if (speed && typeof speed === 'object' && !Array.isArray(speed)) out.analysis.speed = { ...speed, response: true };
+  }
   return out;
 }
 
@@ -157,8 +166,8 @@ export interface Initial {
 /**
  * The state to open with: the URL hash wins, then localStorage, then the seed example. Sections
  * missing from a shared link are not filled in from defaults (the link is the whole state), except
- * "sim", whose defaults are added so the plots have something to show. Every value is checked
- * against its field first: what does not fit is dropped and named in `problems`.
+ * "sim" and "analysis", whose defaults are added so the plots have something to show. Every
+ * value is checked against its field first: what does not fit is dropped and named in `problems`.
  */
 export function initialInput(hash: string, stored: string | null): Initial {
   const problems: Initial['problems'] = [];
@@ -180,6 +189,7 @@ export function initialInput(hash: string, stored: string | null): Initial {
 function withSim(v: Input): Input {
   const out = clone(v);
   if (!out.sim) out.sim = clone(SEED_INPUT.sim);
+  if (!out.analysis) out.analysis = clone(SEED_INPUT.analysis);
   return out;
 }
 

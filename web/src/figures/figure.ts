@@ -65,14 +65,27 @@ function whenVisible(el: HTMLElement, job: () => void): void {
   }
 }
 
-/** A figure with a main plot and an error subplot below (y2). */
-export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number]; xRange?: [number, number] }): void {
+export interface PlotLayout {
+  xTitle: string;
+  yTitle: string;
+  y2Title: string;
+  yRange?: [number, number];
+  xRange?: [number, number];
+  /** Logarithmic x axis (Bode plots). */
+  xLog?: boolean;
+  /** Share of the height for the lower subplot (default 0.26: an error trace; Bode: the phase). */
+  lower?: number;
+}
+
+/** A figure with a main plot and a subplot below (y2). */
+export function plot(el: HTMLElement, traces: Trace[], layout: PlotLayout): void {
   if (!el.querySelector('.plot-host')) el.replaceChildren(h('div', { class: 'plot-host' }, h('div', { class: 'plot-loading' }, t('plotLoading'))));
   const host = el.querySelector('.plot-host') as HTMLElement;
   whenVisible(host, () => draw(host, traces, layout));
 }
 
-function draw(host: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number]; xRange?: [number, number] }): void {
+function draw(host: HTMLElement, traces: Trace[], layout: PlotLayout): void {
+  const lower = layout.lower ?? 0.26;
   failed.delete(host);
   loadPlotly().then((P) => {
     host.querySelector('.plot-loading, .plot-error')?.remove();
@@ -89,9 +102,9 @@ function draw(host: HTMLElement, traces: Trace[], layout: { xTitle: string; yTit
         paper_bgcolor: 'rgba(0,0,0,0)', plot_bgcolor: '#fff',
         legend: { orientation: 'h', y: 1.08, x: 0 },
         grid: { rows: 2, columns: 1, roworder: 'top to bottom' },
-        xaxis: { title: { text: layout.xTitle }, gridcolor: '#eaeef2', anchor: 'y2', range: layout.xRange },
-        yaxis: { title: { text: layout.yTitle }, domain: [0.36, 1], gridcolor: '#eaeef2', range: layout.yRange },
-        yaxis2: { title: { text: layout.y2Title }, domain: [0, 0.26], gridcolor: '#eaeef2', zerolinecolor: '#aaa' },
+        xaxis: { title: { text: layout.xTitle }, gridcolor: '#eaeef2', anchor: 'y2', range: layout.xRange, type: layout.xLog ? 'log' : 'linear' },
+        yaxis: { title: { text: layout.yTitle }, domain: [lower + 0.1, 1], gridcolor: '#eaeef2', range: layout.yRange },
+        yaxis2: { title: { text: layout.y2Title }, domain: [0, lower], gridcolor: '#eaeef2', zerolinecolor: '#aaa' },
       },
       { displaylogo: false, responsive: true, modeBarButtonsToRemove: ['lasso2d', 'select2d'] },
     );

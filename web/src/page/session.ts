@@ -235,7 +235,7 @@ export class ComputeSession {
         this.simWorkerFailed = false;
       } else {
         this.simError = `${result.field}: ${errText(result)}`;
-        this.simFieldError = result.field.startsWith('sim') ? result : null;
+        this.simFieldError = /^(sim|analysis)\b/.test(result.field) ? result : null;
         if (this.simFieldError) this.events.errors();
       }
       this.events.sim();

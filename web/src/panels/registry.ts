@@ -7,6 +7,7 @@ import { vendorPanel } from './vendor';
 import { constantsPanel } from './constants';
 import { currentPanel } from './current';
 import { pllPanel } from './pll';
+import { loopPanel } from './loop';
 import { qcalcPanel } from './qcalc';
 import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
@@ -22,6 +23,7 @@ export const PANELS: Panel[] = [
   constantsPanel,
   currentPanel,
   pllPanel,
+  loopPanel,
   qcalcPanel,
   codePanel,
   conventionsPanel,

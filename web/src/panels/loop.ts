@@ -1,0 +1,181 @@
+// Loop design as firmware runs it (issue 11): margins with the delay, the delay-aware design
+// beside the continuous one, Bode plots, the PLL's scaled vs naive margins, the speed loop.
+// Everything shown comes from the report's "loop" section (sent with the simulation request).
+import { h, num, table } from '../dom';
+import { getLang, t, type Key } from '../i18n';
+import type { LoopReport, Margins } from '../report-types';
+import { renderBode } from '../figures/bode';
+import { COLORS, simPlaceholder } from '../figures/figure';
+import { renderSpeedStep } from '../figures/speed-step';
+import { metricsTable } from './metrics';
+import type { Panel } from './panel';
+
+/** Per host element: figure elements kept across renders, and the loop section they show. */
+const kept = new WeakMap<HTMLElement, { figs: Record<string, HTMLElement>; loop: unknown; stamp: string }>();
+
+const MARGIN_COLS: [keyof Margins, Key, string][] = [
+  ['phase_margin_deg', 'pm', '°'],
+  ['gain_margin_db', 'gm', 'dB'],
+  ['crossover_hz', 'crossover', 'Hz'],
+  ['phase_crossover_hz', 'phaseCrossover', 'Hz'],
+  ['bandwidth_hz', 'bwCl', 'Hz'],
+  ['spectral_radius', 'maxPole', ''],
+];
+
+/** One row of margins: every number with data-key = its path; a missing margin says "none". */
+function marginCells(path: string, m: Margins | undefined): HTMLElement[] {
+  const cells = MARGIN_COLS.map(([k]) => {
+    const v = m?.[k];
+    if (m && v === null) return h('span', { class: 'num', 'data-key': `${path}.${k}`, 'data-value': 'null' }, t('noValue'));
+    return num(`${path}.${k}`, v, { sig: 4 });
+  });
+  const ok = m?.stable;
+  cells.push(h('span', { class: ok ? 'ok' : 'bad-text', 'data-key': `${path}.stable`, 'data-value': JSON.stringify(ok ?? null) }, ok === undefined ? '…' : ok ? `✔ ${t('yes')}` : `✘ ${t('no')}`));
+  return cells;
+}
+
+function marginsTable(rows: [string, string, Margins | undefined][], cls: string): HTMLElement {
+  return table(
+    [t('loopCase'), ...MARGIN_COLS.map(([, label, unit]) => `${t(label)}${unit ? ` [${unit}]` : ''}`), t('stable')],
+    rows.map(([label, path, m]) => [label, ...marginCells(path, m)]),
+    `margins ${cls}`,
+  );
+}
+
+function figure(el: HTMLElement, name: string): HTMLElement {
+  const k = kept.get(el) ?? { figs: {}, loop: null, stamp: '' };
+  kept.set(el, k);
+  k.figs[name] ??= h('div', { class: 'figure', 'data-figure': name });
+  return k.figs[name];
+}
+
+function currentSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
+  const c = loop.current;
+  const rows: [string, string, Margins | undefined][] = [];
+  for (const a of ['d', 'q'] as const) {
+    rows.push([`${a}: ${t('loopYours')}`, `loop.current.${a}`, c[a]]);
+    rows.push([`${a}: ${t('loopFirmware')}`, `loop.current.${a}.firmware`, c[a].firmware]);
+    rows.push([`${a}: ${t('loopDesigned')}`, `loop.current.design.${a}`, c.design[a]]);
+    rows.push([`${a}: ${t('loopDesignedFw')}`, `loop.current.design.${a}.firmware`, c.design[a].firmware]);
+    rows.push([`${a}: ${t('loopContinuous')}`, `loop.current.design.${a}.continuous`, c.design[a].continuous]);
+  }
+  const d = c.design.d;
+  const byPm = c.design.by === 'phase_margin';
+  const cont = d.continuous as Margins & { phase_margin_error_deg: number | null; bandwidth_error_pct: number | null };
+  const err = byPm
+    ? num('loop.current.design.d.continuous.phase_margin_error_deg', cont.phase_margin_error_deg, { sig: 3, unit: '°' })
+    : num('loop.current.design.d.continuous.bandwidth_error_pct', cont.bandwidth_error_pct, { sig: 3, unit: '%' });
+  const note = h('p', { class: 'note design-note' },
+    t('designNote', { what: byPm ? `${t('pm')} ${c.design.target}°` : `${t('bwCl')} ${c.design.target} Hz`, kp: '{kp}', ki: '{ki}', err: '{err}' })
+      .split(/(\{kp\}|\{ki\}|\{err\})/)
+      .map((part) => part === '{kp}' ? num('loop.current.design.d.kp', d.kp, { sig: 5 })
+        : part === '{ki}' ? num('loop.current.design.d.ki', d.ki, { sig: 5 })
+          : part === '{err}' ? err : part));
+  return [
+    h('h3', {}, t('loopCurrentTitle', { d: t(`o.${loop.delay}` as Key) })),
+    marginsTable(rows, 'current'),
+    note,
+    h('h3', {}, t('bodeCurrent')),
+    figure(el, 'bode-current'),
+  ];
+}
+
+function pllSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
+  const p = loop.pll;
+  return [
+    h('h3', {}, t('pllMarginsTitle')),
+    marginsTable([[t('pllCorrect'), 'loop.pll.correct', p.correct], [t('pllNaive'), 'loop.pll.naive', p.naive]], 'pll'),
+    h('p', { class: 'note' },
+      `${t('kpTsG')}: `, num('loop.pll.correct.kp_ts_gain', p.correct.kp_ts_gain, { sig: 4 }), ` (${t('pllCorrect')}), `,
+      num('loop.pll.naive.kp_ts_gain', p.naive.kp_ts_gain, { sig: 4 }), ` (${t('pllNaive')}); `,
+      t('boundary', { b: '' }), num('loop.pll.boundary_kp_ts_gain', p.boundary_kp_ts_gain, { sig: 6 })),
+    h('h3', {}, t('bodePll')),
+    figure(el, 'bode-pll'),
+  ];
+}
+
+function speedSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
+  const s = loop.speed;
+  if (!s) return [];
+  const b = s.bases;
+  const g = s as unknown as Record<string, number>;
+  const r = s.response;
+  return [
+    h('h3', {}, t('speedTitle')),
+    table([t('mechBases'), t('value'), t('unit')], [
+      ['ω_mb = ω_b/p', num('loop.speed.bases.w_mb', b.w_mb), 'rad/s'],
+      ['n_mb', num('loop.speed.bases.n_mb_rpm', b.n_mb_rpm), 'r/min'],
+      ['T_mb = P_b/ω_mb', num('loop.speed.bases.torque_nm', b.torque_nm), 'N·m'],
+      ['K_t', num('loop.speed.bases.kt_nm_per_a', b.kt_nm_per_a), 'N·m/A'],
+      ['H = J·ω_mb²/(2·P_b)', num('loop.speed.bases.inertia_constant_s', b.inertia_constant_s), 's'],
+    ], 'speed-bases'),
+    table([t('speedGains'), 'kp', 'ki'], [
+      ['SI', h('span', {}, num('loop.speed.kp', g.kp), ' A·s/rad'), h('span', {}, num('loop.speed.ki', g.ki), ' A/rad')],
+      ['pu', num('loop.speed.kp_pu', g.kp_pu), h('span', {}, num('loop.speed.ki_pu', g.ki_pu), ' 1/s')],
+      ['Q12 / Q16·T_sp', num('loop.speed.pm_kp', g.pm_kp, { kind: 'int' }), num('loop.speed.pm_ki', g.pm_ki, { kind: 'int' })],
+    ], 'speed-gains'),
+    h('p', { class: 'note' }, t('speedFormats')),
+    marginsTable([[t('loopYours'), 'loop.speed', s], [t('loopFirmware'), 'loop.speed.firmware', s.firmware]], 'speed'),
+    h('h3', {}, t('speedResponse')),
+    figure(el, 'speed-step'),
+    r ? metricsTable('loop.speed.response.metrics', r.metrics, ['float', 'fixed'], [
+      { key: 'rise_time_s', label: 'riseTime', unit: 'ms', scale: 1e3 },
+      { key: 'overshoot_pct', label: 'overshoot', unit: '%' },
+      { key: 'settling_time_s', label: 'settling', unit: 'ms', scale: 1e3 },
+      { key: 'load_dip_rpm', label: 'loadDip', unit: 'r/min' },
+    ]) : h('span'),
+    r ? h('p', { class: 'note' }, `${t('fixedVsFloat')}: `, num('loop.speed.response.fixed_vs_float_max_rpm', r.fixed_vs_float_max_rpm, { unit: 'r/min', sig: 4 })) : h('span'),
+    h('h3', {}, t('bodeSpeed')),
+    figure(el, 'bode-speed'),
+  ];
+}
+
+function drawFigures(el: HTMLElement, loop: LoopReport): void {
+  const figs = kept.get(el)?.figs ?? {};
+  const bode = loop.bode;
+  if (!bode) return;
+  const cur = bode.current;
+  if (figs['bode-current']) {
+    renderBode(figs['bode-current'], cur.f_hz, [
+      { curve: cur.open.d, name: `L_d ${t('loopYoursShort')}`, color: COLORS.si },
+      { curve: cur.closed.d, name: `T_d ${t('loopYoursShort')}`, color: COLORS.si, dash: 'dot' },
+      { curve: cur.open.d_design, name: `L_d ${t('loopDesignedShort')}`, color: COLORS.pu },
+      { curve: cur.closed.d_design, name: `T_d ${t('loopDesignedShort')}`, color: COLORS.pu, dash: 'dot' },
+    ]);
+  }
+  if (figs['bode-pll']) {
+    renderBode(figs['bode-pll'], bode.pll.f_hz, [
+      { curve: bode.pll.open.correct, name: t('pllCorrect'), color: COLORS.si },
+      { curve: bode.pll.open.naive, name: t('pllNaive'), color: COLORS.naive, dash: 'dash' },
+    ]);
+  }
+  if (figs['bode-speed'] && bode.speed) {
+    renderBode(figs['bode-speed'], bode.speed.f_hz, [
+      { curve: bode.speed.open, name: 'L', color: COLORS.si },
+      { curve: bode.speed.closed, name: 'T', color: COLORS.si, dash: 'dot' },
+    ]);
+  }
+  const r = loop.speed?.response;
+  if (figs['speed-step'] && r) renderSpeedStep(figs['speed-step'], r);
+}
+
+export const loopPanel: Panel = {
+  id: 'loop',
+  title: 'p_loop',
+  usesSim: true,
+  render(el, ctx) {
+    const loop = ctx.simReport?.loop;
+    if (!loop) {
+      el.replaceChildren(ctx.simError ? simPlaceholder(ctx) : h('div', { class: 'plot-placeholder' }, t('loopWaiting')));
+      return;
+    }
+    el.replaceChildren(...currentSection(el, loop), ...pllSection(el, loop), ...speedSection(el, loop));
+    const k = kept.get(el);
+    const stamp = getLang();
+    if (k && (k.loop !== loop || k.stamp !== stamp)) {
+      drawFigures(el, loop);
+      k.loop = loop;
+      k.stamp = stamp;
+    }
+  },
+};
