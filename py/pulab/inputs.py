@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 
+from . import datasheet as _datasheet
 from .errors import InputError
 from .vendor import RAW_FIELDS
 
@@ -128,15 +129,18 @@ def normalize(inp: dict) -> dict:
     dict
         Same layout; every optional field present; numbers as float (pole
         pairs and raw values as int); ``raw`` holds only the values given.
+        ``motor`` holds the values derived from a ``datasheet`` section, and
+        ``datasheet`` (when given) its values and conversions
+        (:func:`pulab.datasheet.apply`).
     """
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     for key in inp:
-        if key not in SECTIONS and key != "sim":
+        if key not in SECTIONS and key not in ("sim", "datasheet"):
             raise InputError(key, f"unknown section (expected one of: "
-                             f"{', '.join(list(SECTIONS) + ['sim'])})")
-    m = _section(inp, "motor")
-    d = _section(inp, "drive")
+                             f"{', '.join(list(SECTIONS) + ['datasheet', 'sim'])})")
+    ds = object_fields(inp.get("datasheet"), "datasheet", _datasheet.FIELDS)
+    m, conversions, d = _datasheet.apply(ds, _section(inp, "motor"), _section(inp, "drive"))
     c = _section(inp, "conventions")
     cl = _section(inp, "current_loop")
     p = _section(inp, "pll")
@@ -190,6 +194,9 @@ def normalize(inp: dict) -> dict:
 
     out = {"motor": motor, "drive": drive, "conventions": conv, "current_loop": loop,
            "pll": pll, "raw": raw}
+    if ds:
+        # Not part of the echoed input (report.input.motor already holds the derived values).
+        out["datasheet"] = {"given": ds, "conversions": conversions}
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
     return out
