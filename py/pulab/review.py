@@ -44,6 +44,8 @@ THRESHOLDS = {
     # ω_c·Ts of the current loop (dimensionless)
     "wc_ts": {"warning": 0.2, "error": 1.0},
     # needed / available voltage (line RMS)
+    # needed / available voltage (line RMS): a warning at the rated point or when the
+    # back-EMF alone exceeds the limit below the rated frequency, a note above it
     "voltage_ratio": {"warning": 1.0},
     # PLL angle error after lock, degrees
     "pll_steady_deg": {"note": 0.5, "warning": 2.0},
@@ -214,14 +216,17 @@ def _base_frequency(f: list, raw: dict) -> None:
 def _voltage(f: list, h: dict, n: dict) -> None:
     lim = h["limit_v"]
     f_b = n["drive"]["base_freq_hz"]
-    if h["need_rated_fn_v"] > lim:
+    if h["need_rated_fn_v"] / lim > THRESHOLDS["voltage_ratio"]["warning"]:
         _finding(f, "warning", "voltage_rated", "review.headroom.need_rated_fn_v", "drive.udc_v",
                  h["need_rated_fn_v"] / lim,
                  f"at rated current and rated frequency the motor needs "
                  f"{h['need_rated_fn_v']:.4g} V (line RMS), above the voltage limit "
                  f"{lim:.4g} V; raise drive.udc_v")
     if h["field_weakening_from_hz"] is not None:
-        _finding(f, "warning", "voltage_bemf", "review.headroom.bemf_fb_v", "drive.base_freq_hz",
+        # Above the rated frequency, field weakening is the usual constant-power range;
+        # below it the motor cannot reach its rated speed without it.
+        below_rated = h["field_weakening_from_hz"] < n["motor"]["rated_freq_hz"]
+        _finding(f, "warning" if below_rated else "note", "voltage_bemf", "review.headroom.bemf_fb_v", "drive.base_freq_hz",
                  h["bemf_fb_v"] / lim,
                  f"back-EMF at f_b = {f_b:g} Hz is {h['bemf_fb_v']:.4g} V (line RMS), above "
                  f"the voltage limit {lim:.4g} V: field weakening needed above "
