@@ -32,9 +32,10 @@ export function qcalcRequest(s: QcalcState): { ok: true; req: Record<string, unk
   if (!wb.ok) return { ok: false, field: 'qcalc.word_bits', error: wb.error };
   if (wb.value !== null) req.word_bits = wb.value;
   if (s.mode === 'decode') {
+    // Sent as typed: pulab reads decimal, 0x… hex, 0b… binary and full-width digits.
     const r = parseNumber(s.raw, true);
-    if (!r.ok || r.value === null) return { ok: false, field: 'qcalc.raw', error: 'integer' };
-    req.raw = r.value;
+    if (r.ok && r.value === null) return { ok: false, field: 'qcalc.raw', error: 'integer' };
+    req.raw = r.ok ? r.value : s.raw.trim();
   } else {
     const v = parseNumber(s.value);
     if (!v.ok || v.value === null) return { ok: false, field: 'qcalc.value', error: 'number' };
