@@ -1,5 +1,6 @@
-import { describe, it, expect } from 'vitest';
-import { SEED_INPUT, decodeHash, encodeHash, getPath, initialInput, reportInput, setPath, simInput, type Input } from '../../web/src/state';
+import { describe, it, expect, beforeAll } from 'vitest';
+import { bootPulab, type NodePulab } from './pulab-node';
+import { PRESETS, SEED_INPUT, decodeHash, encodeHash, getPath, initialInput, reportInput, setPath, simInput, type Input } from '../../web/src/state';
 import { effectiveInput } from '../../web/src/fields';
 
 describe('URL state: #in= + encodeURIComponent(JSON)', () => {
@@ -72,4 +73,18 @@ describe('what is sent', () => {
       { conventions: { base: 'custom', base_voltage_v: 10, base_current_a: 1 } }],
   ];
   for (const [name, inp, want] of eff) it(`effectiveInput, ${name}`, () => expect(effectiveInput(inp)).toEqual(want));
+});
+
+describe('presets: current-loop bandwidth suited to Ts (no ω_c·Ts finding from pulab.review)', () => {
+  let p: NodePulab;
+  beforeAll(async () => {
+    p = await bootPulab();
+  });
+  for (const preset of PRESETS)
+    it(`${preset.id}: bandwidth ${String(preset.input.current_loop.bandwidth_hz)} Hz at Ts ${String(preset.input.drive.ts_s)} s → no wc_ts finding`, async () => {
+      const { result } = await p.call('report', JSON.stringify(reportInput(preset.input)));
+      expect(result.ok).toBe(true);
+      const findings = (result as unknown as { report: { review: { findings: { code: string }[] } } }).report.review.findings;
+      expect(findings.filter((f) => f.code === 'wc_ts')).toEqual([]);
+    });
 });
