@@ -146,7 +146,19 @@ def normalize(inp: dict) -> dict:
     p = _section(inp, "pll")
     r = _section(inp, "raw")
 
-    motor = {k: _number(m, "motor", k) for k in SECTIONS["motor"] if k != "pole_pairs"}
+    derived = {c["field"]: c["from"][0] for c in conversions}
+    motor = {}
+    for k in SECTIONS["motor"]:
+        if k == "pole_pairs":
+            continue
+        try:
+            motor[k] = _number(m, "motor", k)
+        except InputError as e:
+            if f"motor.{k}" not in derived:
+                raise
+            # The value came from the datasheet: the error belongs at what the user typed.
+            raise InputError(derived[f"motor.{k}"], f"gives motor.{k} = {m[k]:g}, which "
+                             f"{e.message}") from None
     if "pole_pairs" not in m:
         raise InputError("motor.pole_pairs", "is required")
     motor["pole_pairs"] = _integer(m["pole_pairs"], "motor.pole_pairs", 1, 1000)

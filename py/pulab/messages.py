@@ -118,6 +118,7 @@ CATALOG = [
     # errors: the datasheet section (pulab.datasheet)
     (r"and (\S+) both given; give one of them", r"与 \1 不能同时给出；请只给其中一个"),
     (r"and (\S+) both give the back-EMF; give one of them", r"与 \1 都给出反电势；请只给其中一个"),
+    (r"gives (\S+) = (\S+), which (.*)", lambda m: f"得到 {m[1]} = {m[2]}，{to_zh(m[3])}"),
     (r"is required \(one of (.*)\)", r"必填（以下之一：\1）"),
     (r"is required to convert (\S+) \(or give (\S+)\)", r"换算 \1 时必填（或给出 \2）"),
     (r"is only used with (\S+) or (\S+)", r"仅与 \1 或 \2 一起使用"),

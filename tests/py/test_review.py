@@ -185,6 +185,8 @@ def _without(*keys, **extra):
     (_without(rpm=3000), "datasheet.rpm"),
     (_without(ld_line_h=1e-3), "datasheet.ld_line_h"),
     (_without("speed_rpm"), "datasheet.speed_rpm"),
+    # a derived value out of range is reported at the datasheet value it came from
+    (_without(speed_rpm=1e-8), "datasheet.speed_rpm"),
 ])
 def test_datasheet_errors_name_the_field(ds, field):
     inp = _seed()
