@@ -93,8 +93,8 @@ export const qcalcPanel: Panel = {
           qstate.mode === 'encode'
             ? field(t('qValue'), inp('value'), 'qcalc.value', errFor('qcalc.value'))
             : field(t('qRaw'), inp('raw'), 'qcalc.raw', errFor('qcalc.raw')),
-          field(t('qRounding'), sel('rounding', [['nearest', 'nearest (ties away)'], ['convergent', 'convergent (ties even)'], ['floor', 'floor'], ['zero', 'toward zero']]), 'qcalc.rounding'),
-          field(t('qOverflow'), sel('overflow', [['saturate', 'saturate'], ['wrap', 'wrap'], ['error', 'error']]), 'qcalc.overflow'),
+          field(t('qRounding'), sel('rounding', [['nearest', t('qr_nearest')], ['convergent', t('qr_convergent')], ['floor', t('qr_floor')], ['zero', t('qr_zero')]]), 'qcalc.rounding'),
+          field(t('qOverflow'), sel('overflow', [['saturate', t('qo_saturate')], ['wrap', t('qo_wrap')], ['error', t('qo_error')]]), 'qcalc.overflow'),
           h('p', { class: 'hint' }, t('qFormatHint'))),
         h('div', { class: 'qout' + (last && !last.ok ? ' stale' : '') },
           otherErr ? h('p', { class: 'err' }, otherErr) : null,
