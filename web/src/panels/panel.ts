@@ -3,7 +3,7 @@ import type { Report } from '../report-types';
 import type { Input } from '../state';
 import type { PulabClient } from '../rpc';
 
-export type PanelId = 'bases' | 'pu' | 'vendor' | 'constants' | 'current' | 'pll' | 'qcalc' | 'conventions' | 'docs';
+export type PanelId = 'review' | 'datasheet' | 'bases' | 'pu' | 'vendor' | 'constants' | 'current' | 'pll' | 'qcalc' | 'conventions' | 'docs';
 
 export interface PanelContext {
   /** The last good report (null while Python boots). */
