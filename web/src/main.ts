@@ -11,7 +11,7 @@ const client = startWorker('pulab');
 
 void import('./app').then(({ App }) => {
   const app = new App(document.getElementById('app')!);
-  app.simWorkerFactory = () => startWorker('pulab-sim');
+  app.session.simWorkerFactory = () => startWorker('pulab-sim');
   app.start(client);
   (window as unknown as { pulab: unknown }).pulab = app;
 });

@@ -3,7 +3,8 @@ import type { Report } from '../report-types';
 import type { Input } from '../state';
 import type { PulabClient } from '../rpc';
 
-export type PanelId = 'review' | 'datasheet' | 'bases' | 'pu' | 'vendor' | 'constants' | 'current' | 'pll' | 'qcalc' | 'conventions' | 'docs';
+/** A panel's id: its `?embed=` value, `#panel-<id>` anchor and `nav_<id>` i18n key (registry.ts lists them). */
+export type PanelId = string;
 
 export interface PanelContext {
   /** The last good report (null while Python boots). */

@@ -1,0 +1,189 @@
+// The input form: one field per FieldSpec (name = JSON path), display units, presets, and the
+// error message at each field. Edits go into the compute session's input.
+import { h } from '../dom';
+import { fmtInput, fmtNum, parseNumber } from '../format';
+import { ALL_FIELDS, SECTIONS, effectiveInput, type FieldSpec } from '../fields';
+import { errText, getLang, t, type Key } from '../i18n';
+import { PRESETS, clone, getPath, setPath, type Input } from '../state';
+import { fromSI, toSI, type UnitId } from '../units';
+import type { ComputeSession } from './session';
+import { UNITS_KEY, load, store } from './storage';
+
+export class InputForm {
+  /** The display unit chosen for each field (kept in localStorage). */
+  private units: Record<string, UnitId> = {};
+
+  constructor(private root: HTMLElement, private session: ComputeSession) {
+    try {
+      this.units = JSON.parse(load(UNITS_KEY) ?? '{}') as Record<string, UnitId>;
+    } catch {
+      this.units = {};
+    }
+  }
+
+  private get host(): HTMLElement | null {
+    return this.root.querySelector<HTMLElement>('.inputs');
+  }
+
+  private unitOf(f: FieldSpec): UnitId | undefined {
+    if (!f.units) return undefined;
+    const u = this.units[f.path];
+    return u && f.units.includes(u) ? u : f.units[0];
+  }
+
+  private fieldEl(f: FieldSpec): HTMLElement {
+    const input = this.session.input;
+    const v = getPath(input, f.path);
+    const enabled = f.enabled ? f.enabled(input) : true;
+    const label = h('span', { class: 'lbl' }, t(`f.${f.path}` as Key));
+    let control: HTMLElement;
+    if (f.kind === 'select') {
+      control = h('select', { name: f.path, disabled: !enabled, onchange: (ev: Event) => this.onSelect(f, (ev.target as HTMLSelectElement).value) },
+        (f.options ?? []).map((o) => h('option', { value: o, selected: String(v ?? f.options?.[0]) === o }, t(`o.${o}` as Key))));
+    } else if (f.kind === 'bool') {
+      control = h('input', { type: 'checkbox', name: f.path, checked: v === true, onchange: (ev: Event) => this.onBool(f, (ev.target as HTMLInputElement).checked) });
+    } else {
+      const unit = this.unitOf(f);
+      const shown = typeof v === 'number' ? (unit ? fromSI(v, unit) : v) : null;
+      control = h('input', {
+        name: f.path, type: 'text', inputmode: 'decimal', autocomplete: 'off', spellcheck: 'false',
+        value: fmtInput(shown), disabled: !enabled, 'data-unit': unit ?? f.unit ?? '',
+        oninput: (ev: Event) => this.onNumber(f, (ev.target as HTMLInputElement).value),
+      });
+    }
+    const unitEl = f.units
+      ? h('select', { class: 'unit', 'data-unit-for': f.path, 'aria-label': t('unit'), disabled: !enabled, onchange: (ev: Event) => this.onUnit(f, (ev.target as HTMLSelectElement).value as UnitId) },
+          f.units.map((u) => h('option', { value: u, selected: this.unitOf(f) === u }, u === 'kHz' ? 'kHz (f_s)' : u)))
+      : f.unit ? h('span', { class: 'unit' }, f.unit) : null;
+    return h('label', { class: `field kind-${f.kind}${enabled ? '' : ' disabled'}` },
+      label, h('span', { class: 'ctl' }, control, unitEl), h('span', { class: 'err', 'data-err-for': f.path }));
+  }
+
+  /** (Re)build the form from the session's input, keeping which sections are open. */
+  render(): void {
+    const host = this.host;
+    if (!host) return;
+    const open = new Set([...host.querySelectorAll<HTMLDetailsElement>('details[open]')].map((d) => d.dataset.section));
+    const first = !host.childElementCount;
+    host.replaceChildren(
+      h('div', { class: 'inputs-head' }, h('h2', {}, t('inputs')),
+        h('label', { class: 'preset' }, h('span', {}, t('preset')),
+          h('select', { name: 'preset', onchange: (ev: Event) => this.onPreset((ev.target as HTMLSelectElement).value) },
+            h('option', { value: '' }, t('presetCustom')),
+            PRESETS.map((p) => h('option', { value: p.id, selected: this.matchesPreset(p.input) }, p.label[getLang()]))))),
+      ...SECTIONS.map((s) => h('details', { class: 'section', 'data-section': s.id, open: first ? !s.collapsed : open.has(s.id) },
+        h('summary', {}, t(s.title), h('span', { class: 'err', 'data-err-for': s.id })),
+        s.hint ? h('p', { class: 'hint' }, t(s.hint)) : null,
+        h('div', { class: 'fields' }, s.fields.map((f) => this.fieldEl(f))))),
+    );
+    this.updatePlaceholders();
+    this.session.errorsChanged();
+  }
+
+  /** The message at each field: the page's own check first, then Python's, then the simulation's. */
+  showErrors(): void {
+    const { localErrors, remoteError, simFieldError } = this.session;
+    for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
+      const f = el.dataset.errFor ?? '';
+      let msg = localErrors.get(f) ?? '';
+      if (!msg && remoteError?.field === f) msg = errText(remoteError);
+      if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
+      el.textContent = msg;
+      el.closest('.field')?.classList.toggle('invalid', msg !== '');
+    }
+  }
+
+  /** Whether an error on `field` has an element of its own in the form. */
+  hasField(field: string): boolean {
+    return this.root.querySelector(`.inputs [data-err-for="${CSS.escape(field)}"]`) !== null;
+  }
+
+  private matchesPreset(p: Input): boolean {
+    return JSON.stringify(effectiveInput(p)) === JSON.stringify(effectiveInput(this.session.input));
+  }
+
+  /** Derived and optional fields show the value Python used ("= 1.23") as placeholder. */
+  updatePlaceholders(): void {
+    const report = this.session.report;
+    for (const f of ALL_FIELDS) {
+      const el = this.root.querySelector<HTMLInputElement>(`.inputs input[name="${f.path}"]`);
+      if (!el || f.kind === 'bool') continue;
+      let ph = '';
+      if (f.placeholderFrom && report) {
+        const v = getPath(report, f.placeholderFrom);
+        if (typeof v === 'number') {
+          const u = this.unitOf(f);
+          ph = `= ${fmtNum(u ? fromSI(v, u) : v, 8)}`;
+          el.title = `${t('derived')}: ${fmtNum(u ? fromSI(v, u) : v, 12)}`;
+        }
+      } else if (f.optional && report) {
+        const v = getPath(report.input, f.path);
+        if (typeof v === 'number') ph = `= ${fmtNum(v, 8)}`;
+      }
+      el.placeholder = ph;
+    }
+  }
+
+  private onNumber(f: FieldSpec, text: string): void {
+    const s = this.session;
+    s.touched();
+    const r = parseNumber(text, f.kind === 'int');
+    if (!r.ok) return s.setLocalError(f.path, t(r.error === 'integer' ? 'errInteger' : 'errNumber'));
+    const unit = this.unitOf(f);
+    const si = r.value === null ? null : unit ? toSI(r.value, unit) : r.value;
+    // f_s = 0 kHz has no period: JSON would turn Infinity into null ("is required").
+    if (si !== null && !Number.isFinite(si)) return s.setLocalError(f.path, t('errPositive'));
+    setPath(s.input as Record<string, unknown>, f.path, si);
+    s.clearRemoteError();
+    s.setLocalError(f.path, null);
+    this.syncPresetSelect();
+    s.schedule();
+  }
+
+  private onSelect(f: FieldSpec, value: string): void {
+    const { input, report } = this.session;
+    setPath(input as Record<string, unknown>, f.path, value);
+    if (f.path === 'current_loop.method' && value === 'manual' && report) {
+      // Start manual tuning from the current design.
+      const cl = input.current_loop ?? (input.current_loop = {});
+      cl.kp ??= report.current_pi.d.kp;
+      cl.ki ??= report.current_pi.d.ki;
+    }
+    if (f.path === 'current_loop.method' && value === 'integers' && report) {
+      const cl = input.current_loop ?? (input.current_loop = {});
+      cl.pm_kp ??= report.current_pi.d.pm_kp;
+      cl.pm_ki ??= report.current_pi.d.pm_ki;
+    }
+    if (f.path === 'conventions.base' && value === 'custom' && report) {
+      const c = input.conventions ?? (input.conventions = {});
+      c.base_voltage_v ??= report.base.U_b;
+      c.base_current_a ??= report.base.I_b;
+    }
+    this.session.clearRemoteError();
+    this.render();
+    this.session.schedule();
+  }
+
+  private onBool(f: FieldSpec, v: boolean): void {
+    setPath(this.session.input as Record<string, unknown>, f.path, v);
+    this.session.schedule();
+  }
+
+  private onUnit(f: FieldSpec, u: UnitId): void {
+    this.units[f.path] = u;
+    store(UNITS_KEY, JSON.stringify(this.units));
+    this.render();
+  }
+
+  private onPreset(id: string): void {
+    const p = PRESETS.find((x) => x.id === id);
+    if (!p) return;
+    this.session.replaceInput(clone(p.input));
+    this.render();
+  }
+
+  private syncPresetSelect(): void {
+    const sel = this.root.querySelector<HTMLSelectElement>('select[name="preset"]');
+    if (sel) sel.value = PRESETS.find((p) => this.matchesPreset(p.input))?.id ?? '';
+  }
+}

@@ -1,0 +1,67 @@
+// The page header: title, status slot, share link, exports (report JSON, C header, CSV) and the
+// language switch (also used by the embed bar).
+import { h } from '../dom';
+import { effectiveInput } from '../fields';
+import { errText, getLang, t, type Lang } from '../i18n';
+import { encodeHash, reportInput, simInput } from '../state';
+import type { ComputeSession } from './session';
+import { toast } from './toast';
+
+export function langSwitch(onSwitch: (l: Lang) => void): HTMLElement {
+  return h('div', { class: 'lang', role: 'group' },
+    (['zh', 'en'] as Lang[]).map((l) => h('button', { type: 'button', 'data-lang': l, class: getLang() === l ? 'on' : '', onclick: () => onSwitch(l) }, l === 'zh' ? '中文' : 'English')));
+}
+
+function download(name: string, text: string, type: string): void {
+  const url = URL.createObjectURL(new Blob([text], { type }));
+  const a = h('a', { href: url, download: name }) as HTMLAnchorElement;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 5000);
+}
+
+type PyExport = 'header' | 'csv_current' | 'csv_pll';
+
+/** Files made by Python (pulab.api.export_json): the C header from the report worker, CSVs from the simulation worker. */
+async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExport): Promise<void> {
+  if (!session.client?.ready) return;
+  const eff = effectiveInput(session.input);
+  const c = kind === 'header' ? session.client : session.simWorker() ?? session.client;
+  const { result } = await c.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind });
+  if (result.ok) {
+    const name = kind === 'header' ? 'pulab_params.h' : `pulab_${kind.slice(4)}.csv`;
+    download(name, String(result.text), kind === 'header' ? 'text/x-c' : 'text/csv');
+  } else toast(root, `${result.field}: ${errText(result)}`);
+}
+
+/** Copy the share link (#in=…); where the clipboard is refused, show it selected in a box. */
+async function copyLink(root: HTMLElement, session: ComputeSession): Promise<void> {
+  const url = location.href.split('#')[0] + encodeHash(effectiveInput(session.input));
+  try {
+    await navigator.clipboard.writeText(url);
+    toast(root, t('linkCopied'));
+  } catch {
+    const box = h('input', { class: 'linkbox', value: url, readonly: true }) as HTMLInputElement;
+    toast(root, t('linkCopyFailed'), box);
+    box.select();
+  }
+  document.documentElement.dataset.shareLink = url;
+}
+
+export function renderHeader(root: HTMLElement, session: ComputeSession, lang: HTMLElement): HTMLElement {
+  const exportButton = (kind: PyExport, label: Parameters<typeof t>[0]) =>
+    h('button', { type: 'button', 'data-export': kind, onclick: () => void exportPy(root, session, kind) }, t(label));
+  return h('header', { class: 'top' },
+    h('div', { class: 'brand' }, h('strong', {}, 'pu-lab'), h('span', { class: 'sub' }, t('subtitle'))),
+    h('div', { class: 'status' }),
+    h('div', { class: 'actions' },
+      h('button', { type: 'button', class: 'copy-link', onclick: () => void copyLink(root, session) }, t('copyLink')),
+      h('details', { class: 'export' }, h('summary', {}, t('export')),
+        h('div', { class: 'menu' },
+          h('button', { type: 'button', 'data-export': 'json', onclick: () => session.report && download('pulab_report.json', JSON.stringify(session.report, null, 2), 'application/json') }, t('exportJson')),
+          exportButton('header', 'exportHeader'),
+          exportButton('csv_current', 'exportCsvCurrent'),
+          exportButton('csv_pll', 'exportCsvPll'))),
+      lang));
+}

@@ -1,0 +1,36 @@
+// In-page links (why?, panel links, chapter anchors, the nav): handled here because
+// location.hash holds the input state and must not change. In an embed, they open the full page.
+import { docTarget, openChapter } from '../panels/docs';
+import type { PanelId } from '../panels/panel';
+
+export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: () => void): void {
+  root.addEventListener('click', (ev) => {
+    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], nav.tabs a');
+    if (!a) return;
+    ev.preventDefault();
+    const go = (id: string) => document.getElementById(id)?.scrollIntoView({ block: 'start' });
+    if (a.dataset.why) {
+      const target = docTarget(a.dataset.why);
+      if (!target) return;
+      openChapter(target.chapter, target.anchor);
+      if (embed) {
+        window.open(`./?embed=docs&chapter=${target.chapter}&anchor=${target.anchor}${location.hash}`, '_blank', 'noopener');
+        return;
+      }
+      showDocs();
+      go('panel-docs');
+    } else if (a.dataset.panelLink) {
+      if (embed) {
+        window.open(`./${location.hash}`, '_blank', 'noopener');
+        return;
+      }
+      go(a.dataset.panelLink === 'inputs' ? 'app' : `panel-${a.dataset.panelLink}`);
+      if (a.dataset.panelLink === 'inputs') (root.querySelector('.inputs input') as HTMLElement | null)?.focus();
+    } else if (a.dataset.docLink) {
+      const el = root.querySelector(`[data-anchor="${CSS.escape(a.dataset.docLink)}"]`);
+      if (el) el.scrollIntoView({ block: 'start' });
+    } else if (a.dataset.nav) {
+      go(`panel-${a.dataset.nav}`);
+    }
+  });
+}

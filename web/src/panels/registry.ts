@@ -1,0 +1,29 @@
+// The panels of the page, in display order. To add a panel: one file in this folder behind the
+// `Panel` interface (panel.ts), one line here, its `nav_<id>` and title keys in i18n.ts.
+import type { Panel } from './panel';
+import { basesPanel } from './bases';
+import { puPanel } from './pu';
+import { vendorPanel } from './vendor';
+import { constantsPanel } from './constants';
+import { currentPanel } from './current';
+import { pllPanel } from './pll';
+import { qcalcPanel } from './qcalc';
+import { conventionsPanel } from './conventions';
+import { docsPanel, setPanelRegistry } from './docs';
+
+export const PANELS: Panel[] = [
+  basesPanel,
+  puPanel,
+  vendorPanel,
+  constantsPanel,
+  currentPanel,
+  pllPanel,
+  qcalcPanel,
+  conventionsPanel,
+  docsPanel, // last: the explainer chapters
+];
+setPanelRegistry(PANELS);
+
+export function panelById(id: string | null): Panel | undefined {
+  return PANELS.find((p) => p.id === id);
+}
