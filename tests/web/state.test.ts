@@ -1,6 +1,6 @@
 import { describe, it, expect, beforeAll } from 'vitest';
 import { bootPulab, type NodePulab } from './pulab-node';
-import { PRESETS, SEED_INPUT, decodeHash, encodeHash, getPath, initialInput, reportInput, setPath, simInput, type Input } from '../../web/src/state';
+import { PRESETS, SEED_INPUT, decodeHash, decodeUnits, encodeHash, getPath, initialInput, reportInput, setPath, simInput, type Input } from '../../web/src/state';
 import { effectiveInput } from '../../web/src/fields';
 
 describe('URL state: #in= + encodeURIComponent(JSON)', () => {
@@ -87,4 +87,19 @@ describe('presets: current-loop bandwidth suited to Ts (no ω_c·Ts finding from
       const findings = (result as unknown as { report: { review: { findings: { code: string }[] } } }).report.review.findings;
       expect(findings.filter((f) => f.code === 'wc_ts')).toEqual([]);
     });
+});
+
+describe('share links keep display units and shortest decimals', () => {
+  const inp: Input = { motor: { ld_h: 0.0042 }, drive: { ts_s: 0.0000625 } };
+  it('encodeHash → decodeHash round trip, 0.0042 printed as 0.0042', () => {
+    const hash = encodeHash(inp, { 'motor.ld_h': 'mH', 'drive.ts_s': 'kHz' });
+    expect(decodeURIComponent(hash)).toContain('"ld_h":0.0042}');
+    expect(decodeHash(hash)).toEqual(inp);
+    expect(decodeUnits(hash)).toEqual({ 'motor.ld_h': 'mH', 'drive.ts_s': 'kHz' });
+  });
+  it('no units → no u= part; a bad u= is ignored', () => {
+    expect(encodeHash(inp)).not.toContain('&u=');
+    expect(decodeUnits(encodeHash(inp))).toBeNull();
+    expect(decodeUnits('#in=%7B%7D&u=%5B1%5D')).toBeNull();
+  });
 });

@@ -111,9 +111,23 @@ export function simInput(inp: Input): Input {
 
 export const HASH_KEY = 'in';
 
-/** "#in=" + encodeURIComponent(JSON). */
-export function encodeHash(inp: Input): string {
-  return `#${HASH_KEY}=${encodeURIComponent(JSON.stringify(inp))}`;
+/** "#in=" + encodeURIComponent(JSON), and "&u=" with the display units chosen (field path → unit). */
+export function encodeHash(inp: Input, units: Record<string, string> = {}): string {
+  const u = Object.keys(units).length ? `&u=${encodeURIComponent(JSON.stringify(units))}` : '';
+  return `#${HASH_KEY}=${encodeURIComponent(JSON.stringify(inp))}${u}`;
+}
+
+/** The display units a link carries ("&u="), or null. */
+export function decodeUnits(hash: string): Record<string, string> | null {
+  const m = /[#&]u=([^&]*)/.exec(hash);
+  if (!m) return null;
+  try {
+    const v = JSON.parse(decodeURIComponent(m[1])) as unknown;
+    if (typeof v !== 'object' || v === null || Array.isArray(v)) return null;
+    return Object.fromEntries(Object.entries(v).filter(([, x]) => typeof x === 'string')) as Record<string, string>;
+  } catch {
+    return null;
+  }
 }
 
 /** Parse a location hash; null when it holds no (valid) state. */

@@ -124,7 +124,6 @@ export default async function core(ctx) {
     assert(/标幺/.test(txt), 'header not Chinese');
     assert(/额定电压/.test(await page.textContent('aside.inputs')), 'labels not Chinese');
     assert((await valueOf(page, 'vendor.Rpm.value')) === 15022, 'numbers lost');
-    // Python's own messages too: the seed motor's ω_c·Ts warning (report.warnings_zh).
     // the seed motor's review (24 V bus truncates pm_maxout_vol; report.warnings_zh)
     assert(/相差 .* %；请修改/.test(await page.textContent('.warnings')), 'warning not Chinese');
     await page.$eval('#panel-vendor', (e) => e.scrollIntoView());

@@ -4,21 +4,28 @@ import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
 import { ALL_FIELDS, SECTIONS, effectiveInput, type FieldSpec } from '../fields';
 import { errText, getLang, t, type Key } from '../i18n';
-import { PRESETS, clone, getPath, setPath, type Input } from '../state';
+import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
 import { fromSI, toSI, type UnitId } from '../units';
 import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
 
 export class InputForm {
-  /** The display unit chosen for each field (kept in localStorage). */
-  private units: Record<string, UnitId> = {};
-
   constructor(private root: HTMLElement, private session: ComputeSession) {
-    try {
-      this.units = JSON.parse(load(UNITS_KEY) ?? '{}') as Record<string, UnitId>;
-    } catch {
-      this.units = {};
+    // A shared link's units win over the ones this browser chose last.
+    let units = decodeUnits(location.hash);
+    if (!units) {
+      try {
+        units = JSON.parse(load(UNITS_KEY) ?? '{}') as Record<string, string>;
+      } catch {
+        units = {};
+      }
     }
+    session.units = units;
+  }
+
+  /** The display unit chosen for each field (the session keeps it for links). */
+  private get units(): Record<string, UnitId> {
+    return this.session.units as Record<string, UnitId>;
   }
 
   private get host(): HTMLElement | null {
@@ -173,6 +180,7 @@ export class InputForm {
     this.units[f.path] = u;
     store(UNITS_KEY, JSON.stringify(this.units));
     this.render();
+    this.session.schedule(); // the link (#in=…&u=…) carries the units too
   }
 
   private onPreset(id: string): void {

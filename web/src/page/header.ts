@@ -37,7 +37,7 @@ async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExpo
 
 /** Copy the share link (#in=…); where the clipboard is refused, show it selected in a box. */
 async function copyLink(root: HTMLElement, session: ComputeSession): Promise<void> {
-  const url = location.href.split('#')[0] + encodeHash(effectiveInput(session.input));
+  const url = location.href.split('#')[0] + encodeHash(effectiveInput(session.input), session.units);
   try {
     await navigator.clipboard.writeText(url);
     toast(root, t('linkCopied'));

@@ -26,6 +26,8 @@ const SIM_PAUSE_MS = 400;
 
 export class ComputeSession {
   input: Input;
+  /** Display unit chosen per field path (the form's; kept in links and localStorage). */
+  units: Record<string, string> = {};
   report: Report | null = null;
   simReport: Report | null = null;
   simError: string | null = null;
@@ -157,7 +159,7 @@ export class ComputeSession {
   /** The input goes into the URL (#in=) and localStorage; embeds leave both to their host page. */
   private persist(eff: Input): void {
     if (this.embed) return;
-    const hash = encodeHash(eff);
+    const hash = encodeHash(eff, this.units);
     if (location.hash !== hash) history.replaceState(null, '', hash);
     store(STORAGE_KEY, JSON.stringify(eff));
   }
