@@ -35,7 +35,7 @@ export class App {
     const input = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY)).input;
     this.session = new ComputeSession(input, this.embed !== null, {
       report: () => this.renderPanels(),
-      sim: () => this.renderPanels(['current', 'pll', 'docs']),
+      sim: () => this.renderPanels(['current', 'pll', 'docs', 'review']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     });

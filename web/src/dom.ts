@@ -90,3 +90,17 @@ export function table(head: (string | Node)[], rows: (Child[] | HTMLElement)[], 
     h('tbody', {}, rows.map((r) => (r instanceof HTMLElement ? r : h('tr', {}, r.map((c) => h('td', {}, c)))))),
   );
 }
+
+/**
+ * Scroll `el` to the top of this document's view. In an iframe (an embed), scrollIntoView would
+ * scroll the host page too; there only this document scrolls.
+ */
+export function scrollToEl(el: Element | null | undefined): void {
+  if (!el) return;
+  if (window.parent === window) {
+    el.scrollIntoView({ block: 'start' });
+    return;
+  }
+  const margin = parseFloat(getComputedStyle(el).scrollMarginTop) || 0;
+  window.scrollTo({ top: el.getBoundingClientRect().top + window.scrollY - margin });
+}

@@ -3,11 +3,17 @@
 import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
 import { ALL_FIELDS, SECTIONS, effectiveInput, type FieldSpec } from '../fields';
-import { errText, getLang, t, type Key } from '../i18n';
+import { errText, getLang, has, t, type Key } from '../i18n';
+import type { ApiErr } from '../protocol';
 import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
 import { fromSI, toSI, type UnitId } from '../units';
 import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
+
+/** The SI field a raw firmware value was converted from, as Python's message names it. */
+export function sourceField(e: ApiErr): string | null {
+  return e.field.startsWith('raw.') ? /\(from ([\w.]+)\)/.exec(e.message)?.[1] ?? null : null;
+}
 
 export class InputForm {
   constructor(private root: HTMLElement, private session: ComputeSession) {
@@ -46,7 +52,7 @@ export class InputForm {
     let control: HTMLElement;
     if (f.kind === 'select') {
       control = h('select', { name: f.path, disabled: !enabled, onchange: (ev: Event) => this.onSelect(f, (ev.target as HTMLSelectElement).value) },
-        (f.options ?? []).map((o) => h('option', { value: o, selected: String(v ?? f.options?.[0]) === o }, t(`o.${o}` as Key))));
+        (f.options ?? []).map((o) => h('option', { value: o, selected: String(v ?? f.options?.[0]) === o }, t((has(`o.${f.path}.${o}`) ? `o.${f.path}.${o}` : `o.${o}`) as Key))));
     } else if (f.kind === 'bool') {
       control = h('input', { type: 'checkbox', name: f.path, checked: v === true, onchange: (ev: Event) => this.onBool(f, (ev.target as HTMLInputElement).checked) });
     } else {
@@ -87,16 +93,25 @@ export class InputForm {
     this.session.errorsChanged();
   }
 
-  /** The message at each field: the page's own check first, then Python's, then the simulation's. */
+  /**
+   * The message at each field: the page's own check first, then Python's, then the simulation's.
+   * A raw firmware value converted from an SI field ("70000 (from motor.rated_voltage_v) is
+   * outside Uint16") is shown at that SI field too, where it was typed; a collapsed section with
+   * an error opens.
+   */
   showErrors(): void {
     const { localErrors, remoteError, simFieldError } = this.session;
+    const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f);
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
       let msg = localErrors.get(f) ?? '';
-      if (!msg && remoteError?.field === f) msg = errText(remoteError);
+      if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
       el.textContent = msg;
-      el.closest('.field')?.classList.toggle('invalid', msg !== '');
+      const field = el.closest('.field');
+      field?.classList.toggle('invalid', msg !== '');
+      const sec = el.closest<HTMLDetailsElement>('details.section');
+      if (msg && sec && !sec.open) sec.open = true;
     }
   }
 
@@ -149,7 +164,8 @@ export class InputForm {
 
   private onSelect(f: FieldSpec, value: string): void {
     const { input, report } = this.session;
-    setPath(input as Record<string, unknown>, f.path, value);
+    // The empty choice ("—") is an absent field (pulab's default, or "not given").
+    setPath(input as Record<string, unknown>, f.path, value === '' ? null : value);
     if (f.path === 'current_loop.method' && value === 'manual' && report) {
       // Start manual tuning from the current design.
       const cl = input.current_loop ?? (input.current_loop = {});

@@ -90,6 +90,14 @@ export class ComputeSession {
     return this.localErrors.size > 0 || this.remoteError !== null;
   }
 
+  /** The report input the shown numbers were computed from. */
+  private reportFor = '';
+
+  /** The numbers on the page are from another input than the form's (a computation is due). */
+  get outdated(): boolean {
+    return this.report !== null && this.reportFor !== JSON.stringify(reportInput(effectiveInput(this.input)));
+  }
+
   schedule(delay = 10): void {
     clearTimeout(this.timer);
     this.timer = setTimeout(() => void this.compute(), delay);
@@ -104,10 +112,12 @@ export class ComputeSession {
     root.dataset.busy = '1';
     try {
       const t0 = performance.now();
-      const { result, ms } = await this.client.call('report', reportInput(eff), 'report');
+      const asked = reportInput(eff);
+      const { result, ms } = await this.client.call('report', asked, 'report');
       this.lastMs = ms;
       if (result.ok) {
         this.report = result.report as unknown as Report;
+        this.reportFor = JSON.stringify(asked);
         this.remoteError = null;
         const t1 = performance.now();
         this.events.report();

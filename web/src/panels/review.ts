@@ -2,8 +2,8 @@
 // marks it leaves at the value each finding concerns. Every number comes from the report.
 import { h, num, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
-import type { Finding, Report } from '../report-types';
-import type { Panel } from './panel';
+import type { Finding } from '../report-types';
+import type { Panel, PanelContext } from './panel';
 
 const HEADROOM = ['limit_v', 'udc_limit_v', 'bemf_fb_v', 'need_rated_fn_v', 'need_rated_fb_v', 'field_weakening_from_hz'] as const;
 
@@ -20,22 +20,33 @@ export function findingItem(f: Finding): HTMLElement {
     h('a', { class: 'change', href: `#field-${f.field}`, 'data-field': f.field }, `${t('reviewChange')}: `, h('code', {}, f.field)));
 }
 
+/**
+ * The findings for the page: the report's, plus the PLL findings of the simulation report (only
+ * that one has simulated the PLL), most severe first.
+ */
+export function allFindings(ctx: Pick<PanelContext, 'report' | 'simReport'>): Finding[] {
+  const main = ctx.report?.review?.findings ?? [];
+  const sim = ctx.simReport?.review?.findings.filter((f) => f.code.startsWith('pll_')) ?? [];
+  const order = ['error', 'warning', 'note'];
+  return [...main, ...sim].sort((a, b) => order.indexOf(a.severity) - order.indexOf(b.severity));
+}
+
 /** The counts line: "1 errors, 2 warnings, 3 notes". */
-export function reviewCounts(r: Report): string {
-  const c = r.review.counts;
-  return t('reviewCounts', { e: c.error, w: c.warning, n: c.note });
+export function reviewCounts(findings: Finding[]): string {
+  const n = (s: string) => findings.filter((f) => f.severity === s).length;
+  return t('reviewCounts', { e: n('error'), w: n('warning'), n: n('note') });
 }
 
 /**
  * Mark every rendered value a finding concerns (its data-key): a class by severity and the message
  * as a tooltip. Called after the panels render; a value without a finding loses its old mark.
  */
-export function markFindings(root: ParentNode, r: Report | null): void {
+export function markFindings(root: ParentNode, findings: Finding[]): void {
   for (const el of Array.from(root.querySelectorAll<HTMLElement>('[data-finding-sev]'))) {
     el.removeAttribute('data-finding-sev');
     el.removeAttribute('data-finding-msg');
   }
-  for (const f of r?.review.findings ?? []) {
+  for (const f of findings) {
     for (const el of Array.from(root.querySelectorAll<HTMLElement>(`[data-key="${f.key}"]`))) {
       if (el.closest('.review')) continue;
       // The most severe finding wins (findings arrive most severe first).
@@ -50,18 +61,20 @@ export function markFindings(root: ParentNode, r: Report | null): void {
 export const reviewPanel: Panel = {
   id: 'review',
   title: 'p_review',
-  render(el, { report }) {
+  render(el, ctx) {
+    const report = ctx.report;
     if (!report?.review) {
       el.replaceChildren(h('p', { class: 'note' }, '…'));
       return;
     }
     const rv = report.review;
+    const findings = allFindings(ctx);
     const hr = rv.headroom;
     const thr = rv.thresholds;
     el.replaceChildren(h('div', { class: 'review' },
-      h('p', { class: 'counts' }, reviewCounts(report)),
-      rv.findings.length
-        ? h('ul', { class: 'findings' }, rv.findings.map(findingItem))
+      h('p', { class: 'counts' }, reviewCounts(findings)),
+      findings.length
+        ? h('ul', { class: 'findings' }, findings.map(findingItem))
         : h('p', { class: 'ok' }, t('reviewQuiet')),
       h('h3', {}, t('headroomTitle')),
       table([t('quantity'), t('value'), t('unit')], HEADROOM.map((k) => [
