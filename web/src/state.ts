@@ -56,6 +56,19 @@ export const PRESETS: Preset[] = [
       { base_freq_hz: 300, udc_v: 48, ts_s: 0.00005 }, 600),
   },
   {
+    // A motor entered as its datasheet prints it (pulab.datasheet): HEIDENHAIN SRP 5000, DC 48 V,
+    // 20 poles, Ke 0.397 V_rms/(rad/s), R20 9.06 Ω and L1 2.42 mH terminal to terminal, 300 rpm.
+    id: 'srp5000',
+    label: { en: 'Datasheet: HEIDENHAIN SRP 5000 (48 V DC, 300 rpm)', zh: '样本参数：HEIDENHAIN SRP 5000（直流 48 V，300 rpm）' },
+    input: {
+      ...clone(SEED_INPUT),
+      datasheet: { speed_rpm: 300, ke_v_s_per_rad: 0.397, ke_measure: 'rms', rs_line_ohm: 9.06, l_line_h: 0.00242, dc_bus_v: 48 },
+      motor: { rated_current_a: 0.688, pole_pairs: 10 },
+      drive: { ts_s: 0.0000625 },
+      current_loop: { method: 'bandwidth', bandwidth_hz: 500, damping: 0.7071067811865476 },
+    },
+  },
+  {
     id: 'hv690',
     label: { en: 'Medium power 690 V, 100 A, 50 Hz', zh: '中功率 690 V、100 A、50 Hz' },
     input: motor(

@@ -90,7 +90,7 @@ export default async function review(ctx) {
   await check('review: JSON export holds the simulation metrics; CSV headers carry units', async () => {
     await page.goto(subSrv.url);
     await ready(page);
-    await page.waitForSelector('[data-key="sim.pll.metrics.q15.steady_angle_error_deg"][data-value]', { timeout: 60_000 });
+    await page.waitForSelector('[data-key="sim.pll.metrics.q15.steady_angle_error_deg"][data-value]', { timeout: 60_000, state: 'attached' });
     const grab = async (kind) => {
       await page.click('.export > summary');
       const [dl] = await Promise.all([page.waitForEvent('download'), page.click(`button[data-export="${kind}"]`)]);
@@ -147,7 +147,13 @@ export default async function review(ctx) {
         assert(!m.overlap, 'header items overlap');
         assert(m.codeW >= 150, `C trace column only ${m.codeW} px wide`);
         await p.selectOption('select[data-unit-for="drive.ts_s"]', 'kHz');
-        const fits = await p.$eval('select[data-unit-for="drive.ts_s"]', (u) => u.scrollWidth <= u.clientWidth + 1 && u.getBoundingClientRect().width >= 60);
+        // the selected option's text, measured in the select's font, fits beside the arrow
+        const fits = await p.$eval('select[data-unit-for="drive.ts_s"]', (u) => {
+          const c = document.createElement('canvas').getContext('2d');
+          const cs = getComputedStyle(u);
+          c.font = `${cs.fontSize} ${cs.fontFamily}`;
+          return c.measureText(u.selectedOptions[0].textContent).width <= u.clientWidth - 20;
+        });
         assert(fits, 'Ts unit choice cut');
         await p.screenshot({ path: join(SHOTS, `review-${width}-${lang}-top.png`) });
         await p.$eval('#panel-vendor', (e) => e.scrollIntoView());

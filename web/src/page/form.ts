@@ -66,7 +66,9 @@ export class InputForm {
     }
     const unitEl = f.units
       ? h('select', { class: 'unit', 'data-unit-for': f.path, 'aria-label': t('unit'), disabled: !enabled, onchange: (ev: Event) => this.onUnit(f, (ev.target as HTMLSelectElement).value as UnitId) },
-          f.units.map((u) => h('option', { value: u, selected: this.unitOf(f) === u }, u === 'kHz' ? 'kHz (f_s)' : u)))
+          // "kHz" on a period field is the control frequency f_s = 1/Ts (said in the tooltip: a
+          // longer label is cut in the 64 px unit box).
+          f.units.map((u) => h('option', { value: u, selected: this.unitOf(f) === u, title: u === 'kHz' ? 'f_s = 1/Ts' : null }, u)))
       : f.unit ? h('span', { class: 'unit' }, f.unit) : null;
     return h('label', { class: `field kind-${f.kind}${enabled ? '' : ' disabled'}` },
       label, h('span', { class: 'ctl' }, control, unitEl), h('span', { class: 'err', 'data-err-for': f.path }));
@@ -84,7 +86,8 @@ export class InputForm {
           h('select', { name: 'preset', onchange: (ev: Event) => this.onPreset((ev.target as HTMLSelectElement).value) },
             h('option', { value: '' }, t('presetCustom')),
             PRESETS.map((p) => h('option', { value: p.id, selected: this.matchesPreset(p.input) }, p.label[getLang()]))))),
-      ...SECTIONS.map((s) => h('details', { class: 'section', 'data-section': s.id, open: first ? !s.collapsed : open.has(s.id) },
+      // The datasheet and raw sections start collapsed, but open when the input uses them.
+      ...SECTIONS.map((s) => h('details', { class: 'section', 'data-section': s.id, open: (first ? !s.collapsed : open.has(s.id)) || ((s.id === 'datasheet' || s.id === 'raw') && Object.keys(this.session.input[s.id] ?? {}).length > 0) },
         h('summary', {}, t(s.title), h('span', { class: 'err', 'data-err-for': s.id })),
         s.hint ? h('p', { class: 'hint' }, t(s.hint)) : null,
         h('div', { class: 'fields' }, s.fields.map((f) => this.fieldEl(f))))),

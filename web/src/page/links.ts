@@ -6,7 +6,7 @@ import type { PanelId } from '../panels/panel';
 
 export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: () => void): void {
   root.addEventListener('click', (ev) => {
-    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], nav.tabs a');
+    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], [data-field], nav.tabs a');
     if (!a) return;
     ev.preventDefault();
     const go = (id: string) => scrollToEl(document.getElementById(id));
@@ -30,6 +30,17 @@ export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: 
     } else if (a.dataset.docLink) {
       const el = root.querySelector(`[data-anchor="${CSS.escape(a.dataset.docLink)}"]`);
       scrollToEl(el);
+    } else if (a.dataset.field) {
+      // A review finding's "→ field": the input to change (its section opened), focused.
+      const input = root.querySelector<HTMLElement>(`.inputs [name="${CSS.escape(a.dataset.field)}"]`);
+      if (embed || !input) {
+        if (embed) window.open(`./${location.hash}`, '_blank', 'noopener');
+        return;
+      }
+      const sec = input.closest<HTMLDetailsElement>('details.section');
+      if (sec) sec.open = true;
+      scrollToEl(input.closest('.field'));
+      input.focus();
     } else if (a.dataset.nav) {
       go(`panel-${a.dataset.nav}`);
     }

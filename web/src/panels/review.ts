@@ -17,7 +17,7 @@ export function findingItem(f: Finding): HTMLElement {
   return h('li', { class: `finding sev-${f.severity}`, 'data-finding': f.key },
     h('span', { class: `sev sev-${f.severity}` }, t(`sev_${f.severity}` as Key)), ' ',
     h('span', { class: 'msg' }, findingText(f)), ' ',
-    h('a', { class: 'change', href: `#field-${f.field}`, 'data-field': f.field }, `${t('reviewChange')}: `, h('code', {}, f.field)));
+    h('a', { class: 'change', href: '#app', 'data-field': f.field, title: `${t('reviewChange')}: ${f.field}` }, '→ ', h('code', {}, f.field)));
 }
 
 /**
@@ -78,7 +78,7 @@ export const reviewPanel: Panel = {
         : h('p', { class: 'ok' }, t('reviewQuiet')),
       h('h3', {}, t('headroomTitle')),
       table([t('quantity'), t('value'), t('unit')], HEADROOM.map((k) => [
-        t(`hr_${k}` as Key), num(`review.headroom.${k}`, hr[k], { sig: 6 }), k === 'field_weakening_from_hz' ? 'Hz' : 'V']), 'headroom'),
+        t(`hr_${k}` as Key), hr[k] === null ? '—' : num(`review.headroom.${k}`, hr[k], { sig: 6 }), k === 'field_weakening_from_hz' ? 'Hz' : 'V']), 'headroom'),
       h('details', { class: 'thresholds' }, h('summary', {}, t('reviewThresholds')),
         table([t('quantity'), t('sev_note'), t('sev_warning'), t('sev_error')], Object.keys(thr).map((k) => [
           t(`thr_${k}` as Key),
