@@ -92,7 +92,7 @@ export default async function review(ctx) {
     await ready(page);
     await page.waitForSelector('[data-key="sim.pll.metrics.q15.steady_angle_error_deg"][data-value]', { timeout: 60_000, state: 'attached' });
     const grab = async (kind) => {
-      await page.click('.export > summary');
+      if (!(await page.$eval('details.export', (e) => e.open))) await page.click('.export > summary');
       const [dl] = await Promise.all([page.waitForEvent('download'), page.click(`button[data-export="${kind}"]`)]);
       return readFileSync(await dl.path(), 'utf8');
     };
