@@ -215,7 +215,7 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
         if "udc_v" not in drive:
             drive["udc_v"] = u
             conv.append(_step("drive.udc_v", "DC bus (drive.udc_v not given)",
-                              "直流母线（未给出 drive.udc_v）", f"U_dc = {_g(u)}", u, "V",
+                              "直流母线（未给出 drive.udc_v）", "U_dc = datasheet.dc_bus_v", u, "V",
                               ["datasheet.dc_bus_v"]))
     return motor, conv, drive
 
