@@ -8,8 +8,10 @@ export const SEED_INPUT: Input = {
   motor: { rated_voltage_v: 17, rated_current_a: 1.5, rated_freq_hz: 220, rs_ohm: 1.5, ld_h: 0.0006, lq_h: 0.0006, bemf_v: 12, pole_pairs: 4 },
   drive: { udc_v: 24, ts_s: 0.0001 },
   conventions: { base: 'rms', angle_base: 'pi', inductance_unit: '10uH' },
-  // ω_c·Ts = 2π·300 Hz·100 µs = 0.19, inside the review's 0.2 (pulab.review THRESHOLDS.wc_ts).
-  current_loop: { method: 'bandwidth', bandwidth_hz: 300, damping: 0.7071067811865476 },
+  // 500 Hz at Ts = 100 µs is ω_c·Ts = 0.31: the review warns (> 0.2) on purpose — the default
+  // page is the seed's worked motor of tests/golden/01_seed_motor.json, and it shows the warning.
+  // Every other preset's bandwidth suits its Ts.
+  current_loop: { method: 'bandwidth', bandwidth_hz: 500, damping: 0.7071067811865476 },
   pll: { bandwidth_hz: 50, damping: 0.7071067811865476 },
   raw: {},
   // Empty fields take pulab.sim's motor-dependent defaults (step 0.5·I_b, duration from ω_c, …).
