@@ -5,6 +5,11 @@ import { createLogger, defineConfig, type Plugin } from 'vite';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { dirname, resolve } from 'node:path';
+import { offlineCache } from './offline/plugin';
+import { createHash } from 'node:crypto';
+import { runJsonCPython, seedKey } from './build/prerender';
+import { SNAPSHOT_PYODIDE_VERSION, makeSnapshot, pulabFiles } from './build/snapshot';
+import { precompress } from './build/compress';
 
 const here = dirname(fileURLToPath(import.meta.url));
 const repo = resolve(here, '..');
@@ -35,6 +40,64 @@ function pyodideAssets(): Plugin {
   };
 }
 
+const sha = (b: string | Uint8Array): string => createHash('sha256').update(b).digest('hex');
+
+interface SnapshotInfo {
+  file: string;
+  size: number;
+  pyodideVersion: string;
+}
+/** Made once per build and shared by the page's and the worker's plugin instances. */
+let snapshotJob: Promise<{ info: SnapshotInfo; bytes: Uint8Array } | null> | null = null;
+
+function buildSnapshot(warn: (m: string) => void): Promise<{ info: SnapshotInfo; bytes: Uint8Array } | null> {
+  snapshotJob ??= (async () => {
+    if (process.env.PULAB_SNAPSHOT === '0') return null;
+    const key = seedKey();
+    const r = await makeSnapshot(pyodideDir + '/', pulabFiles(repo), key, runJsonCPython(key));
+    if (!r.ok) {
+      warn(`no Python memory snapshot (${r.reason}); pages boot Python normally`);
+      return null;
+    }
+    return { bytes: r.bytes, info: { file: `snapshot-${sha(r.bytes).slice(0, 12)}.bin`, size: r.bytes.length, pyodideVersion: SNAPSHOT_PYODIDE_VERSION } };
+  })();
+  return snapshotJob;
+}
+
+/**
+ * `virtual:pulab-build`: what the build knows that the page and worker need at once — the seed
+ * report prerendered by CPython, a hash of the pulab sources (the key of cached reports), and the
+ * memory snapshot's file name and size (null: boot normally). The snapshot is made only by
+ * `vite build` (PULAB_SNAPSHOT=0 skips it); the dev server boots normally. `emit`: the page's
+ * instance writes the snapshot file, the worker's only reads its name.
+ */
+function pulabBuild(emit: boolean): Plugin {
+  const id = 'virtual:pulab-build';
+  let build = false;
+  return {
+    name: 'pulab-build',
+    configResolved(c) {
+      build = c.command === 'build';
+    },
+    resolveId: (s) => (s === id ? `\0${id}` : null),
+    async load(s) {
+      if (s !== `\0${id}`) return null;
+      const snap = build ? await buildSnapshot((m) => this.warn(m)) : null;
+      const key = seedKey();
+      return [
+        `export const PULAB_HASH = ${JSON.stringify(sha(JSON.stringify(pulabFiles(repo))).slice(0, 16))};`,
+        `export const SEED_KEY = ${JSON.stringify(key)};`,
+        `export const SEED_RESULT = ${JSON.stringify(runJsonCPython(key))};`,
+        `export const SNAPSHOT = ${JSON.stringify(snap?.info ?? null)};`,
+      ].join('\n');
+    },
+    async generateBundle() {
+      const snap = emit && build ? await buildSnapshot((m) => this.warn(m)) : null;
+      if (snap) this.emitFile({ type: 'asset', fileName: `pyodide/${snap.info.file}`, source: snap.bytes });
+    },
+  };
+}
+
 // pyodide.mjs imports node:* modules on its Node code path only; in the browser bundle they are
 // externalized on purpose. Silence exactly that notice, keep every other warning.
 const logger = createLogger();
@@ -51,9 +114,9 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets()],
+  plugins: [pyodideAssets(), pulabBuild(true), precompress(), offlineCache()],
   optimizeDeps: { exclude: ['pyodide'] },
-  worker: { format: 'es' },
+  worker: { format: 'es', plugins: () => [pulabBuild(false)] },
   server: { fs: { allow: [repo] } },
   build: {
     outDir: resolve(repo, 'dist'),

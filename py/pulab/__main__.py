@@ -10,6 +10,7 @@ import json
 import sys
 
 from .errors import InputError
+from .jsontext import parse
 from .report import format_text, report
 
 
@@ -23,20 +24,18 @@ def main(argv: list | None = None) -> int:
     args = p.parse_args(argv)
     try:
         if args.input == "-":
-            text = sys.stdin.read()
+            data = sys.stdin.buffer.read()
         else:
-            with open(args.input, encoding="utf-8") as f:
-                text = f.read()
+            with open(args.input, "rb") as f:
+                data = f.read()
     except OSError as e:
-        print(f"error: input: cannot read {args.input}: {e.strerror}", file=sys.stderr)
+        print(f"error: input: cannot read {args.input!a}: {e.strerror}", file=sys.stderr)
         return 2
     try:
-        inp = json.loads(text)
-    except ValueError as e:
-        print(f"error: input: not valid JSON: {e}", file=sys.stderr)
+        r = report(parse(data.decode("utf-8")))
+    except UnicodeDecodeError as e:
+        print(f"error: input: not UTF-8 text (byte {e.start})", file=sys.stderr)
         return 2
-    try:
-        r = report(inp)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2

@@ -18,6 +18,8 @@ import json
 import re
 
 from .errors import InputError
+from .inputs import shown
+from .jsontext import parse
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
 from .messages import to_zh
@@ -35,11 +37,7 @@ def _fail(e: InputError) -> str:
 def run_json(text: str) -> str:
     """``report`` on a JSON string; returns ``{"ok": true, "report": {...}}`` or an error."""
     try:
-        inp = json.loads(text)
-    except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))
-    try:
-        return json.dumps({"ok": True, "report": report(inp)}, allow_nan=False)
+        return json.dumps({"ok": True, "report": report(parse(text))}, allow_nan=False)
     except InputError as e:
         return _fail(e)
 
@@ -66,7 +64,10 @@ def qcalc(req: dict) -> dict:
     """
     if not isinstance(req, dict):
         raise InputError("qcalc", "must be an object")
-    name = ascii_text(str(req.get("format", "")))
+    name = req.get("format", "")
+    if not isinstance(name, str):
+        raise InputError("qcalc.format", f"must be a string, got {shown(name)}")
+    name = ascii_text(name)
     word_bits = req.get("word_bits")
     if word_bits is not None and (isinstance(word_bits, bool) or not isinstance(word_bits, int)):
         raise InputError("qcalc.word_bits", "must be an integer")
@@ -83,7 +84,7 @@ def qcalc(req: dict) -> dict:
         if re.fullmatch(r"U?Q\d+(\.\d+)?", name, re.I):
             raise InputError("qcalc.format", f"{name} does not fit {word_bits or 64} word "
                              "bits") from None
-        raise InputError("qcalc.format", f"not a Q format: {req.get('format', '')!r} "
+        raise InputError("qcalc.format", f"not a Q format: {shown(req.get('format', ''))} "
                          "(use Qm.n, UQm.n, or Qn with word_bits)") from None
     rounding = req.get("rounding", "nearest")
     overflow = req.get("overflow", "saturate")
@@ -120,11 +121,9 @@ def qcalc(req: dict) -> dict:
 def qcalc_json(text: str) -> str:
     """``qcalc`` on a JSON string; ``{"ok": true, ...}`` or an error naming the field."""
     try:
-        return json.dumps({"ok": True, **qcalc(json.loads(text))})
-    except ValueError as e:
-        if isinstance(e, InputError):
-            return _fail(e)
-        return _fail(InputError("qcalc", f"not valid JSON: {e}"))
+        return json.dumps({"ok": True, **qcalc(parse(text, "qcalc"))})
+    except InputError as e:
+        return _fail(e)
 
 
 def export_json(text: str) -> str:
@@ -133,7 +132,7 @@ def export_json(text: str) -> str:
     Returns ``{"ok": true, "text": ...}`` or an error naming the field.
     """
     try:
-        req = json.loads(text)
+        req = parse(text)
         r = report(req.get("input") if isinstance(req, dict) else None)
         kind = req.get("kind")
         if kind == "header":
@@ -145,5 +144,3 @@ def export_json(text: str) -> str:
         raise InputError("kind", "must be one of header, csv_current, csv_pll")
     except InputError as e:
         return _fail(e)
-    except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))

@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 
+from . import inputs as _inputs  # module, not names: inputs imports this module
 from .errors import InputError
 
 __all__ = ["FIELDS", "KE_FIELDS", "apply", "mechanical"]
@@ -58,7 +59,7 @@ _SETS = {"speed_rpm": ("rated_freq_hz",), "ke_v_per_krpm": ("bemf_v",),
 def _positive(ds: dict, key: str) -> float:
     v = ds[key]
     if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise InputError(f"datasheet.{key}", f"must be a number, got {v!r}")
+        raise InputError(f"datasheet.{key}", f"must be a number, got {_inputs.shown(v)}")
     v = float(v)
     if not math.isfinite(v):
         raise InputError(f"datasheet.{key}", "must be finite")
@@ -75,7 +76,7 @@ def _choice(ds: dict, key: str, default: str | None) -> str:
         raise InputError(f"datasheet.{key}", f"is required (one of {', '.join(_CHOICES[key])})")
     if v not in _CHOICES[key]:
         raise InputError(f"datasheet.{key}", f"must be one of {', '.join(_CHOICES[key])}, "
-                         f"got {v!r}")
+                         f"got {_inputs.shown(v)}")
     return v
 
 
@@ -135,7 +136,7 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
             raise InputError("motor.pole_pairs", "is required")
         if isinstance(p, bool) or not isinstance(p, (int, float)) or \
                 (isinstance(p, float) and not p.is_integer()) or not 1 <= p <= 1000:
-            raise InputError("motor.pole_pairs", f"must be 1..1000, got {p!r}")
+            raise InputError("motor.pole_pairs", f"must be 1..1000, got {_inputs.shown(p)}")
         p = int(p)
     if "speed_rpm" in ds:
         n = _positive(ds, "speed_rpm")
@@ -150,7 +151,7 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
         f_n = motor["rated_freq_hz"]
         if isinstance(f_n, bool) or not isinstance(f_n, (int, float)) or not \
                 (math.isfinite(f_n) and f_n > 0):
-            raise InputError("motor.rated_freq_hz", f"must be > 0, got {f_n!r}")
+            raise InputError("motor.rated_freq_hz", f"must be > 0, got {_inputs.shown(f_n)}")
         n = 60.0 * f_n / p  # rpm at rated frequency
         w_m = 2.0 * math.pi * n / 60.0
         src = sources[0]

@@ -19,12 +19,13 @@ pulab.errors.InputError: motor.rated_voltage_v: is required
 from __future__ import annotations
 
 import math
+import sys
 
 from . import datasheet as _datasheet
 from .errors import InputError
 from .vendor import RAW_FIELDS
 
-__all__ = ["normalize", "object_fields", "real", "DEFAULT_CURRENT_BANDWIDTH_HZ", "DEFAULT_PLL_BANDWIDTH_HZ",
+__all__ = ["normalize", "object_fields", "real", "shown", "key_path", "DEFAULT_CURRENT_BANDWIDTH_HZ", "DEFAULT_PLL_BANDWIDTH_HZ",
            "DEFAULT_DAMPING", "SECTIONS"]
 
 DEFAULT_CURRENT_BANDWIDTH_HZ = 500.0
@@ -45,12 +46,59 @@ SECTIONS = {
 #: Plausibility limits (SI) that also keep every derived number finite.
 _LIMITS = {"ts_s": (1e-9, 1.0), "damping": (1e-3, 100.0)}
 
+#: The largest integer a float holds (anything above rounds to inf or raises).
+_FLOAT_MAX_INT = int(sys.float_info.max)
+
 _CHOICES = {
     "conventions.base": ("rms", "peak", "custom"),
     "conventions.angle_base": ("pi", "2pi"),
     "conventions.inductance_unit": ("10uH", "uH"),
     "current_loop.method": ("bandwidth", "damping", "manual", "integers"),
 }
+
+
+#: Longest text of a user's value or key quoted in a message (messages stay one short line).
+_SHOWN_CHARS = 40
+
+
+def shown(v) -> str:
+    r"""A user's value as quoted in a message: short, one line, never raising.
+
+    ``repr`` escapes newlines, NUL, U+2028 and other unprintable characters; a
+    container is named, not printed (its ``repr`` could be huge or recurse), and
+    an integer too long to print is given by its size.
+
+    Examples
+    --------
+    >>> shown("a\u2028b"), shown([1, [2]]), shown({"k": 1}), shown(10 ** 400)
+    ("'a\\u2028b'", 'a list', 'an object', 'an integer of 1329 bits')
+    """
+    if isinstance(v, dict):
+        return "an object"
+    if isinstance(v, list):
+        return "a list"
+    if isinstance(v, int) and not isinstance(v, bool) and v.bit_length() > 64:
+        return f"an integer of {v.bit_length()} bits"
+    text = repr(v)
+    return text if len(text) <= _SHOWN_CHARS else text[:_SHOWN_CHARS - 1] + "…"
+
+
+def key_path(path: str, key) -> str:
+    r"""The JSON path of ``key`` inside ``path``, printable on one line.
+
+    A plain key is joined with a dot; an empty key, one with a dot or any
+    unprintable character (newline, NUL, U+2028…) is quoted and escaped.
+
+    Examples
+    --------
+    >>> key_path("motor", "rs_ohm"), key_path("motor", "a\nb"), key_path("", "")
+    ('motor.rs_ohm', "motor['a\\nb']", "['']")
+    """
+    plain = isinstance(key, str) and key.isprintable() and key.strip() and "." not in key and \
+        "[" not in key and len(key) <= _SHOWN_CHARS
+    if plain:
+        return f"{path}.{key}" if path else key
+    return f"{path}[{shown(key)}]"
 
 
 def object_fields(v, path: str, allowed) -> dict:
@@ -61,10 +109,10 @@ def object_fields(v, path: str, allowed) -> dict:
     if v is None:
         return {}
     if not isinstance(v, dict):
-        raise InputError(path, f"must be an object, got {v!r}")
+        raise InputError(path, f"must be an object, got {shown(v)}")
     for key in v:
         if key not in allowed:
-            raise InputError(f"{path}.{key}", f"unknown field (expected one of: "
+            raise InputError(key_path(path, key), f"unknown field (expected one of: "
                              f"{', '.join(allowed)})")
     return {k: x for k, x in v.items() if x is not None}
 
@@ -72,7 +120,10 @@ def object_fields(v, path: str, allowed) -> dict:
 def real(v, path: str) -> float:
     """A JSON number as a finite float; booleans are not numbers."""
     if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise InputError(path, f"must be a number, got {v!r}")
+        raise InputError(path, f"must be a number, got {shown(v)}")
+    # A JSON integer literal can exceed the float range (309 digits); it is no finite number.
+    if isinstance(v, int) and abs(v) > _FLOAT_MAX_INT:
+        raise InputError(path, "must be finite")
     v = float(v)
     if not math.isfinite(v):
         raise InputError(path, "must be finite")
@@ -102,17 +153,17 @@ def _choice(sec: dict, section: str, key: str, default: str) -> str:
     path = f"{section}.{key}"
     v = sec.get(key, default)
     if v not in _CHOICES[path]:
-        raise InputError(path, f"must be one of {', '.join(_CHOICES[path])}, got {v!r}")
+        raise InputError(path, f"must be one of {', '.join(_CHOICES[path])}, got {shown(v)}")
     return v
 
 
 def _integer(v, path: str, lo: int, hi: int) -> int:
     if isinstance(v, bool) or not isinstance(v, (int, float)) or \
             (isinstance(v, float) and not v.is_integer()):
-        raise InputError(path, f"must be an integer, got {v!r}")
+        raise InputError(path, f"must be an integer, got {shown(v)}")
     v = int(v)
     if not lo <= v <= hi:
-        raise InputError(path, f"must be {lo}..{hi}, got {v}")
+        raise InputError(path, f"must be {lo}..{hi}, got {shown(v)}")
     return v
 
 
@@ -137,7 +188,7 @@ def normalize(inp: dict) -> dict:
         raise InputError("input", "must be a JSON object")
     for key in inp:
         if key not in SECTIONS and key not in ("sim", "datasheet"):
-            raise InputError(key, f"unknown section (expected one of: "
+            raise InputError(key_path("", key), f"unknown section (expected one of: "
                              f"{', '.join(list(SECTIONS) + ['datasheet', 'sim'])})")
     ds = object_fields(inp.get("datasheet"), "datasheet", _datasheet.FIELDS)
     m, conversions, d = _datasheet.apply(ds, _section(inp, "motor"), _section(inp, "drive"))

@@ -30,6 +30,7 @@ CATALOG = [
     (r"must be an object", "必须是对象"),
     (r"must be an object, got (.*)", r"必须是对象，当前为 \1"),
     (r"not valid JSON: (.*)", r"不是合法的 JSON：\1"),
+    (r"nested deeper than (\d+) levels", r"嵌套超过 \1 层"),
     (r"unknown field \(expected one of: (.*)\)", r"未知字段（应为以下之一：\1）"),
     (r"unknown section \(expected one of: (.*)\)", r"未知分节（应为以下之一：\1）"),
     (r"must be a number, got (.*) \(ambiguous: a decimal comma or a thousands separator\?\)",
@@ -63,7 +64,7 @@ CATALOG = [
     (r"(\S+) = (\S+) does not fit a 32-bit long", r"\1 = \2 超出 32 位 long 的范围"),
     (r"the input asks for no (\w+) simulation", r"输入中没有 \1 仿真"),
     # errors: the simulation
-    (r"(\S+) s is (\d+) control periods; at most (\d+)", r"\1 s 等于 \2 个控制周期；最多 \3 个"),
+    (r"(\S+) s is (\S+) control periods; at most (\d+)", r"\1 s 等于 \2 个控制周期；最多 \3 个"),
     (r"(\S+) A is (\S+) pu; the Q12 current \(int16\) holds less than ±8 pu \(±(\S+) A\)",
      r"\1 A 即 \2 pu；Q12 电流（int16）只能表示 ±8 pu 以内（±\3 A）"),
     (r"\|(\S+)\| Hz is not below half the control frequency 1/\(2·Ts\) = (\S+) Hz",

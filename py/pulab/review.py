@@ -216,9 +216,14 @@ def _base_frequency(f: list, raw: dict) -> None:
 def _voltage(f: list, h: dict, n: dict) -> None:
     lim = h["limit_v"]
     f_b = n["drive"]["base_freq_hz"]
-    if h["need_rated_fn_v"] / lim > THRESHOLDS["voltage_ratio"]["warning"]:
+
+    def ratio(need: float) -> float | None:
+        # A zero limit (U_dc below the firmware's resolution) exceeds any need: no finite ratio.
+        return need / lim if lim > 0 else None
+
+    if lim <= 0 or ratio(h["need_rated_fn_v"]) > THRESHOLDS["voltage_ratio"]["warning"]:
         _finding(f, "warning", "voltage_rated", "review.headroom.need_rated_fn_v", "drive.udc_v",
-                 h["need_rated_fn_v"] / lim,
+                 ratio(h["need_rated_fn_v"]),
                  f"at rated current and rated frequency the motor needs "
                  f"{h['need_rated_fn_v']:.4g} V (line RMS), above the voltage limit "
                  f"{lim:.4g} V; raise drive.udc_v")
@@ -227,14 +232,14 @@ def _voltage(f: list, h: dict, n: dict) -> None:
         # below it the motor cannot reach its rated speed without it.
         below_rated = h["field_weakening_from_hz"] < n["motor"]["rated_freq_hz"]
         _finding(f, "warning" if below_rated else "note", "voltage_bemf", "review.headroom.bemf_fb_v", "drive.base_freq_hz",
-                 h["bemf_fb_v"] / lim,
+                 ratio(h["bemf_fb_v"]),
                  f"back-EMF at f_b = {f_b:g} Hz is {h['bemf_fb_v']:.4g} V (line RMS), above "
                  f"the voltage limit {lim:.4g} V: field weakening needed above "
                  f"{h['field_weakening_from_hz']:.4g} Hz; raise drive.udc_v or lower "
                  f"drive.base_freq_hz")
     elif h["field_weakening"]:
         _finding(f, "note", "voltage_fb", "review.headroom.need_rated_fb_v", "drive.base_freq_hz",
-                 h["need_rated_fb_v"] / lim,
+                 ratio(h["need_rated_fb_v"]),
                  f"at rated current and f_b = {f_b:g} Hz the motor needs "
                  f"{h['need_rated_fb_v']:.4g} V (line RMS), above the voltage limit "
                  f"{lim:.4g} V: full current up to f_b needs field weakening")

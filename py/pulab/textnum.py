@@ -20,11 +20,11 @@ pulab.errors.InputError: x: must be a number, got '1,500' (ambiguous: a decimal 
 
 from __future__ import annotations
 
-import math
 import re
 import unicodedata
 
 from .errors import InputError
+from .inputs import real, shown
 
 __all__ = ["ascii_text", "parse_real", "parse_int"]
 
@@ -38,38 +38,36 @@ def ascii_text(text: str) -> str:
 
 def parse_real(v, path: str) -> float:
     """A finite float from a JSON number or a typed string (see the module docstring)."""
-    if isinstance(v, bool):
-        raise InputError(path, f"must be a number, got {v!r}")
-    if isinstance(v, (int, float)):
-        x = float(v)
-    elif isinstance(v, str):
+    if isinstance(v, bool) or isinstance(v, (int, float)):
+        return real(v, path)
+    if isinstance(v, str):
         s = ascii_text(v)
+        if len(s) > 400:
+            raise InputError(path, f"must be a number, got {shown(v)}")
         if re.fullmatch(r"[+-]?\d+,\d{3}", s):
-            raise InputError(path, f"must be a number, got {v!r} (ambiguous: a decimal comma "
+            raise InputError(path, f"must be a number, got {shown(v)} (ambiguous: a decimal comma "
                              "or a thousands separator?)")
         if re.fullmatch(r"[+-]?\d+,\d+", s):
             s = s.replace(",", ".")
         if not re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?", s):
-            raise InputError(path, f"must be a number, got {v!r}")
-        x = float(s)
-    else:
-        raise InputError(path, f"must be a number, got {v!r}")
-    if not math.isfinite(x):
-        raise InputError(path, "must be finite")
-    return x
+            raise InputError(path, f"must be a number, got {shown(v)}")
+        return real(float(s), path)
+    raise InputError(path, f"must be a number, got {shown(v)}")
 
 
 def parse_int(v, path: str) -> int:
     """An integer from a JSON integer or a typed string: decimal, ``0x…`` hex, ``0b…`` binary."""
     if isinstance(v, bool):
-        raise InputError(path, f"must be an integer, got {v!r}")
+        raise InputError(path, f"must be an integer, got {shown(v)}")
     if isinstance(v, int):
         return v
     if isinstance(v, float) and v.is_integer():
         return int(v)
     if isinstance(v, str):
         s = ascii_text(v).lower()
-        m = re.fullmatch(r"([+-]?)(0x[0-9a-f]+|0b[01]+|\d+)", s)
+        # No register is wider than 64 bits: a longer text is no reading (and int() of thousands
+        # of digits would raise).
+        m = len(s) <= 80 and re.fullmatch(r"([+-]?)(0x[0-9a-f]+|0b[01]+|\d+)", s)
         if m:
             return int(m[1] + m[2], 0)
-    raise InputError(path, f"must be an integer (decimal, 0x… hex or 0b… binary), got {v!r}")
+    raise InputError(path, f"must be an integer (decimal, 0x… hex or 0b… binary), got {shown(v)}")

@@ -10,7 +10,8 @@
 //
 // A suite is `export default async function (ctx)`; ctx holds the harness below: check, assert,
 // newPage, compareShown, golden, cpython, cpythonMany, ready, valueOf, waitValue, leaves, close,
-// rootSrv/subSrv ({url, server}), SUB, origins, browser, ROOT, SHOTS, GOLDEN, CSP, timings.
+// rootSrv/subSrv ({url, server}), serve(prefix, faults) for another server, SUB, origins, browser,
+// ROOT, SHOTS, GOLDEN, CSP, timings.
 import { existsSync, mkdirSync, readFileSync, readdirSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath, pathToFileURL } from 'node:url';
@@ -123,9 +124,17 @@ const waitValue = (page, key, want, rel = 0, timeout = 10_000) =>
   }, [key, want, rel], { timeout });
 
 const timings = {};
+const extraServers = [];
 const ctx = {
   check, assert, close, leaves, golden, cpython, cpythonMany, compareShown, newPage, ready, valueOf, waitValue,
   browser, rootSrv, subSrv, SUB, origins, ROOT, SHOTS, GOLDEN, CSP, timings,
+  /** Another server of dist/ (same origin rules are checked for it): `serve(prefix, faults)`, see serve.mjs. */
+  serve: async (prefix, faults) => {
+    const s = await serve(join(ROOT, 'dist'), prefix, 0, faults);
+    origins.add(new URL(s.url).origin);
+    extraServers.push(s.server);
+    return s;
+  },
 };
 
 // ---- suites --------------------------------------------------------------------------------
@@ -147,6 +156,7 @@ await check('zero console errors', async () => assert(consoleErrors.length === 0
 await browser.close();
 rootSrv.server.close();
 subSrv.server.close();
+for (const s of extraServers) s.close();
 console.log(`e2e timings: ${JSON.stringify(timings)}`);
 console.log(`e2e screenshots: ${readdirSync(SHOTS).length} in tests/e2e/screenshots/`);
 const failed = results.filter((r) => !r.ok);

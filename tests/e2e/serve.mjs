@@ -1,5 +1,7 @@
-// A tiny static server for dist/: correct MIME types, the CSP of issue 4 as an HTTP header,
-// and the site mounted at any sub-path prefix (e.g. /tools/pu-lab/).
+// A tiny static server for dist/ that behaves like a well-configured production server (README,
+// "Serving"): correct MIME types, the CSP of issue 4 as an HTTP header, the site mounted at any
+// sub-path prefix (e.g. /tools/pu-lab/), the build's precompressed twins (.br, .gz) sent by
+// Accept-Encoding, validators (ETag, Last-Modified → 304), and long caching of hashed files only.
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
 import { extname, join, normalize } from 'node:path';
@@ -11,10 +13,32 @@ const MIME = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript',
   '.css': 'text/css', '.json': 'application/json', '.wasm': 'application/wasm', '.zip': 'application/zip',
   '.woff2': 'font/woff2', '.woff': 'font/woff', '.ttf': 'font/ttf', '.svg': 'image/svg+xml', '.png': 'image/png',
+  '.bin': 'application/octet-stream',
 };
 
-/** Serve `root` under `prefix` ('/' or '/a/b/'); resolves to {server, url}. */
-export function serve(root, prefix = '/', port = 0) {
+/** Files whose name carries a content hash (Vite's assets/, the snapshot) never change under that name. */
+export const HASHED = /(^|\/)(assets\/.*-[\w-]{8,}\.\w+|pyodide\/snapshot-[0-9a-f]{12}\.bin)$/;
+
+/** Which stored variant to send: brotli, then gzip, then the file itself. */
+async function variant(file, acceptEncoding) {
+  const accepts = (enc) => new RegExp(`(^|[,\\s])${enc}(;q=(?!0(\\.0*)?(,|$))[\\d.]+)?(,|$|\\s)`).test(acceptEncoding ?? '');
+  for (const [enc, ext] of [['br', '.br'], ['gzip', '.gz']]) {
+    if (!accepts(enc)) continue;
+    const s = await stat(file + ext).catch(() => null);
+    if (s?.isFile()) return { path: file + ext, stat: s, encoding: enc };
+  }
+  const s = await stat(file);
+  if (!s.isFile()) throw new Error('not a file');
+  return { path: file, stat: s, encoding: null };
+}
+
+/**
+ * Serve `root` under `prefix` ('/' or '/a/b/'); resolves to {server, url}. Counts served bytes in
+ * `server.bytesSent`. Fault injection for tests: `faults.hold(rel)` may return a promise the
+ * response waits for; `faults.refuse` (RegExp) answers 404 for matching paths,
+ * `faults.corrupt` (RegExp) 4 KiB of junk.
+ */
+export function serve(root, prefix = '/', port = 0, faults = {}) {
   const server = createServer(async (req, res) => {
     const url = new URL(req.url, 'http://x');
     if (!url.pathname.startsWith(prefix)) {
@@ -23,17 +47,34 @@ export function serve(root, prefix = '/', port = 0) {
     }
     let rel = decodeURIComponent(url.pathname.slice(prefix.length)) || 'index.html';
     if (rel.endsWith('/')) rel += 'index.html';
+    await faults.hold?.(rel);
+    if (faults.refuse?.test(rel)) return res.writeHead(404, { 'Content-Type': 'text/plain' }).end('refused (test)');
+    if (faults.corrupt?.test(rel)) return res.writeHead(200, { 'Content-Type': 'application/octet-stream' }).end(Buffer.alloc(4096, 7));
     const file = normalize(join(root, rel));
     if (!file.startsWith(normalize(root))) return res.writeHead(403).end();
     try {
-      if (!(await stat(file)).isFile()) throw new Error('not a file');
-      const body = await readFile(file);
-      res.writeHead(200, {
+      const v = await variant(file, req.headers['accept-encoding']);
+      const etag = `"${v.stat.size.toString(36)}-${Math.floor(v.stat.mtimeMs).toString(36)}${v.encoding ? `-${v.encoding}` : ''}"`;
+      const headers = {
         'Content-Type': MIME[extname(file)] ?? 'application/octet-stream',
         'Content-Security-Policy': CSP,
-        'Cache-Control': 'no-cache',
-      });
-      res.end(body);
+        'Cache-Control': HASHED.test(rel) ? 'public, max-age=31536000, immutable' : 'no-cache',
+        ETag: etag,
+        'Last-Modified': v.stat.mtime.toUTCString(),
+        Vary: 'Accept-Encoding',
+        ...(v.encoding ? { 'Content-Encoding': v.encoding } : {}),
+      };
+      const inm = req.headers['if-none-match'];
+      const ims = req.headers['if-modified-since'];
+      const fresh = inm ? inm.split(',').some((t) => t.trim() === etag) : ims ? Math.floor(v.stat.mtimeMs / 1000) <= Math.floor(Date.parse(ims) / 1000) : false;
+      if (fresh) {
+        res.writeHead(304, headers).end();
+        return;
+      }
+      const body = await readFile(v.path);
+      server.bytesSent = (server.bytesSent ?? 0) + body.length;
+      res.writeHead(200, { ...headers, 'Content-Length': body.length });
+      res.end(req.method === 'HEAD' ? undefined : body);
     } catch {
       res.writeHead(404, { 'Content-Type': 'text/plain' }).end('not found');
     }

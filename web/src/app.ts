@@ -6,9 +6,10 @@ import { h } from './dom';
 import { effectiveInput } from './fields';
 import { defaultLang, getLang, setLang, t, type Lang } from './i18n';
 import type { PulabClient } from './rpc';
-import { STORAGE_KEY, initialInput } from './state';
+import { STORAGE_KEY, initialInput, type Initial } from './state';
+import { fieldNotes, stateBanner } from './state-notice';
 import type { PanelContext, PanelId } from './panels/panel';
-import { panelById } from './panels/registry';
+import { PANELS, panelById } from './panels/registry';
 import { openChapter } from './panels/docs';
 import { ComputeSession } from './page/session';
 import { InputForm } from './page/form';
@@ -17,6 +18,11 @@ import { StatusLine } from './page/status';
 import { langSwitch, renderHeader } from './page/header';
 import { handleLinks } from './page/links';
 import { LANG_KEY, load, store } from './page/storage';
+import { registerOffline } from './offline';
+import { mark } from './page/marks';
+
+/** Panels that call Python themselves: rendered again when it becomes ready. */
+const PYTHON_PANELS = PANELS.filter((p) => p.needsPython).map((p) => p.id);
 
 export class App {
   readonly embed: PanelId | null;
@@ -24,31 +30,54 @@ export class App {
   private form: InputForm;
   private layout: Layout;
   private status: StatusLine;
+  /** How the opening state was read: its problems are shown until dismissed or replaced. */
+  private init: Initial;
 
   constructor(private root: HTMLElement) {
+    mark('app');
     const params = new URLSearchParams(location.search);
     this.embed = panelById(params.get('embed'))?.id ?? null;
     const chapter = params.get('chapter');
     if (chapter) openChapter(chapter, params.get('anchor') ?? '');
     const langParam = params.get('lang');
     setLang(langParam === 'zh' || langParam === 'en' ? langParam : defaultLang(navigator.languages, load(LANG_KEY)));
-    const input = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY)).input;
-    this.session = new ComputeSession(input, this.embed !== null, {
-      report: () => this.renderPanels(),
+    this.init = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY));
+    this.session = new ComputeSession(this.init.input, this.embed !== null, {
+      report: (same) => (same ? this.renderPanels(PYTHON_PANELS) : this.renderPanels()),
       sim: () => this.renderPanels(['current', 'pll', 'docs', 'review']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     });
     this.form = new InputForm(root, this.session);
     this.layout = new Layout(root, this.embed);
-    this.status = new StatusLine(root, () => this.session.lastMs);
+    this.session.wantsSim = PANELS.some((p) => p.usesSim && (this.embed === null || p.id === this.embed));
+    this.status = new StatusLine(root, this.session);
+    this.useInitial(this.init);
     window.addEventListener('hashchange', () => {
       const next = initialInput(location.hash, null);
       if (next.source === 'url' && JSON.stringify(effectiveInput(next.input)) !== JSON.stringify(effectiveInput(this.session.input))) {
         this.session.replaceInput(next.input);
+        this.init = next;
+        this.useInitial(next);
         this.form.render();
+        this.showStateBanner();
       }
     });
+  }
+
+  /** Problems of the opened state: notes at their fields, and the link kept while it is broken. */
+  private useInitial(init: Initial): void {
+    this.session.keepLink = init.linkBroken;
+    this.session.stateNotes = fieldNotes(init);
+  }
+
+  private showStateBanner(): void {
+    this.root.querySelector('.state-banner')?.remove();
+    const banner = stateBanner(this.init, () => {
+      this.init = { ...this.init, problems: [] };
+      this.root.querySelector('.state-banner')?.remove();
+    });
+    if (banner) this.root.querySelector('main.panels')?.prepend(banner);
   }
 
   /** Attach to a client that may already be booting (main.ts starts the worker first). */
@@ -57,7 +86,9 @@ export class App {
     this.session.client = client;
     const onReady = (ms: number): void => {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
-      this.renderPanels();
+      registerOffline();
+      document.documentElement.dataset.pythonBoot = client.bootFrom;
+      this.renderPanels(PYTHON_PANELS);
       this.session.schedule(0);
     };
     this.status.follow(client, onReady);
@@ -67,7 +98,7 @@ export class App {
 
   private ctx(): PanelContext {
     const s = this.session;
-    return { report: s.report, simReport: s.simReport, simError: s.simError, input: s.input, client: s.ready ? s.client : null, embed: this.embed !== null };
+    return { report: s.report, simReport: s.simReport, simError: s.simError, retrySim: s.simWorkerFailed ? () => s.retrySim() : undefined, input: s.input, client: s.ready ? s.client : null, embed: this.embed !== null };
   }
 
   renderPanels(only?: PanelId[]): void {
@@ -96,7 +127,9 @@ export class App {
       : renderHeader(this.root, this.session, lang));
     if (!this.embed) this.form.render();
     this.renderPanels();
+    this.session.publish();
     this.status.render();
     this.showErrors();
+    this.showStateBanner();
   }
 }

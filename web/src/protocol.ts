@@ -25,7 +25,9 @@ export type MainToWorker =
       channel?: string;
     };
 
-export type BootStage = 'runtime' | 'files' | 'import' | 'ready';
+export type BootStage = 'runtime' | 'snapshot' | 'files' | 'import' | 'ready';
+/** Where a runtime came from: the build's memory snapshot, or a full boot of Pyodide. */
+export type BootFrom = 'snapshot' | 'full';
 
 /** What pulab.api returns (parsed). */
 export type ApiOk = { ok: true; [k: string]: Json };
@@ -35,7 +37,7 @@ export type ApiResult = ApiOk | ApiErr;
 /** Worker → main thread. */
 export type WorkerToMain =
   | { type: 'progress'; stage: BootStage; fraction: number; ms: number }
-  | { type: 'ready'; bootMs: number; pyodideVersion: string }
+  | { type: 'ready'; bootMs: number; pyodideVersion: string; from?: BootFrom; note?: string }
   | { type: 'fatal'; message: string }
   | { type: 'result'; id: number; kind: ApiKind; result: ApiResult; ms: number }
   | { type: 'superseded'; id: number };

@@ -1,5 +1,5 @@
 // Main-thread client of the worker: typed calls returning promises, boot progress callbacks.
-import { isWorkerToMain, type ApiKind, type ApiResult, type BootStage, type MainToWorker } from './protocol';
+import { isWorkerToMain, type ApiKind, type BootFrom, type ApiResult, type BootStage, type MainToWorker } from './protocol';
 
 export interface CallResult {
   result: ApiResult;
@@ -17,7 +17,12 @@ export interface RpcEvents {
   onProgress?(stage: BootStage, fraction: number): void;
   onReady?(bootMs: number, version: string): void;
   onFatal?(message: string): void;
+  /** The boot failed and is tried again in `delayMs` (attempt `attempt` of `of`). */
+  onRetry?(message: string, attempt: number, of: number, delayMs: number): void;
 }
+
+/** Waits before each new boot attempt after a failed one (a network hiccup, a server restart). */
+export const BOOT_RETRY_MS = [1000, 4000, 12000];
 
 export interface WorkerLike {
   postMessage(m: MainToWorker): void;
@@ -33,21 +38,60 @@ export class PulabClient {
   ready = false;
   bootMs = 0;
   version = '';
+  /** Whether the runtime came from the build's memory snapshot or a full boot. */
+  bootFrom: BootFrom = 'full';
+  /** When each boot stage was first reported (performance.now()), for listeners that attach late. */
+  stageAt: Partial<Record<BootStage, number>> = {};
   /** The last boot progress, for listeners that attach late. */
   progress: { stage: BootStage; fraction: number } = { stage: 'runtime', fraction: 0 };
   fatalMessage: string | null = null;
 
   constructor(private worker: WorkerLike, public events: RpcEvents = {}) {
     worker.onmessage = (ev) => this.receive(ev.data);
-    worker.onerror = (ev) => this.fail(`the worker failed to start: ${ev.message || 'unknown error'}`);
+    worker.onerror = (ev) => {
+      ev.preventDefault?.(); // handled here: reported in the status line, not as an uncaught error
+      this.fail(`the worker failed: ${ev.message || 'its script did not load'}`);
+    };
   }
 
-  /** Start the boot; `timeoutMs` bounds Pyodide's start-up, a watchdog here bounds the worker itself. */
+  /**
+   * Start the boot. `timeoutMs` bounds the time without progress (the worker applies it to
+   * Pyodide's start-up); a watchdog here, restarted by every progress message, bounds the worker itself.
+   */
   init(indexURL: string, timeoutMs = 60_000): void {
-    this.worker.postMessage({ type: 'init', indexURL, timeoutMs });
+    this.boot = { type: 'init', indexURL, timeoutMs };
+    this.worker.postMessage(this.boot);
+    this.idleMs = timeoutMs + 5000;
+    this.armWatchdog();
+  }
+
+  private boot: MainToWorker | null = null;
+  private attempts = 0;
+  private retryTimer: ReturnType<typeof setTimeout> | undefined;
+
+  /**
+   * A failed boot (a file that did not load, no progress for too long) is tried again with
+   * backoff before it counts as fatal; the runtime boots again when asked again. Calls wait.
+   */
+  private bootFailed(message: string): void {
+    const delay = BOOT_RETRY_MS[this.attempts];
+    if (delay === undefined || !this.boot || this.ready) return this.fail(message);
+    this.attempts++;
+    clearTimeout(this.watchdog);
+    this.events.onRetry?.(message, this.attempts, BOOT_RETRY_MS.length, delay);
+    this.retryTimer = setTimeout(() => {
+      if (this.fatal || this.ready || !this.boot) return;
+      this.worker.postMessage(this.boot);
+      this.armWatchdog();
+    }, delay);
+  }
+
+  private idleMs = 65_000;
+  private armWatchdog(): void {
+    clearTimeout(this.watchdog);
     this.watchdog = setTimeout(() => {
-      if (!this.ready) this.fail(`Python did not start within ${Math.round((timeoutMs + 5000) / 1000)} s`);
-    }, timeoutMs + 5000);
+      if (!this.ready) this.bootFailed(`Python made no progress for ${Math.round(this.idleMs / 1000)} s`);
+    }, this.idleMs);
   }
 
   call(kind: ApiKind, payload: unknown, channel?: string): Promise<CallResult> {
@@ -64,6 +108,7 @@ export class PulabClient {
     this.fatal = message;
     this.fatalMessage = message;
     clearTimeout(this.watchdog);
+    clearTimeout(this.retryTimer);
     for (const p of this.pending.values()) p.reject(new Error(message));
     this.pending.clear();
     this.events.onFatal?.(message);
@@ -74,17 +119,21 @@ export class PulabClient {
     switch (m.type) {
       case 'progress':
         this.progress = { stage: m.stage, fraction: m.fraction };
+        this.stageAt[m.stage] ??= performance.now();
+        if (!this.ready) this.armWatchdog();
         this.events.onProgress?.(m.stage, m.fraction);
         break;
       case 'ready':
         this.ready = true;
         this.bootMs = m.bootMs;
         this.version = m.pyodideVersion;
+        this.bootFrom = m.from ?? 'full';
         clearTimeout(this.watchdog);
         this.events.onReady?.(m.bootMs, m.pyodideVersion);
         break;
       case 'fatal':
-        this.fail(m.message);
+        if (this.ready) this.fail(m.message);
+        else this.bootFailed(m.message);
         break;
       case 'result': {
         const p = this.pending.get(m.id);

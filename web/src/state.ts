@@ -1,6 +1,7 @@
 // The page state is the CLI input JSON (docs/contract.md) plus the "sim" section of issue 3.
 // It lives in the URL (#in=…), in localStorage, and in the form.
 import type { Json } from './protocol';
+import { checkInputText, type StateProblem } from './state-check';
 
 export type Input = { [section: string]: { [k: string]: Json } };
 
@@ -147,10 +148,10 @@ export function decodeUnits(hash: string): Record<string, string> | null {
 
 /** Parse a location hash; null when it holds no (valid) state. */
 export function decodeHash(hash: string): Input | null {
-  const m = /^#?(?:.*&)?in=([^&]*)/.exec(hash);
-  if (!m) return null;
+  const text = hashText(hash);
+  if (text === null) return null;
   try {
-    const v = JSON.parse(decodeURIComponent(m[1])) as unknown;
+    const v = JSON.parse(text) as unknown;
     return isInput(v) ? v : null;
   } catch {
     return null;
@@ -164,23 +165,48 @@ export function isInput(v: unknown): v is Input {
   );
 }
 
+/** The text after "in=" in a location hash, URI-decoded; null when the hash holds no state. */
+export function hashText(hash: string): string | null {
+  const m = /^#?(?:.*&)?in=([^&]*)/.exec(hash);
+  if (!m) return null;
+  try {
+    return decodeURIComponent(m[1]);
+  } catch {
+    return m[1]; // a malformed %-escape: left as it is, the JSON check names it
+  }
+}
+
+/** Where the opening state came from, and what of it could not be used (web/src/state-check.ts). */
+export interface Initial {
+  input: Input;
+  source: 'url' | 'storage' | 'default';
+  /** Problems of the link ('url') or of the stored entry ('storage'), each naming its field. */
+  problems: (StateProblem & { origin: 'url' | 'storage' })[];
+  /** The link was there but not usable as it was: the page must not overwrite it unasked. */
+  linkBroken: boolean;
+}
+
 /**
  * The state to open with: the URL hash wins, then localStorage, then the seed example. Sections
  * missing from a shared link are not filled in from defaults (the link is the whole state), except
- * "sim", whose defaults are added so the plots have something to show.
+ * "sim", whose defaults are added so the plots have something to show. Every value is checked
+ * against its field first: what does not fit is dropped and named in `problems`.
  */
-export function initialInput(hash: string, stored: string | null): { input: Input; source: 'url' | 'storage' | 'default' } {
-  const fromUrl = decodeHash(hash);
-  if (fromUrl) return { input: withSim(fromUrl), source: 'url' };
-  if (stored) {
-    try {
-      const v = JSON.parse(stored) as unknown;
-      if (isInput(v)) return { input: withSim(v), source: 'storage' };
-    } catch {
-      /* ignore a corrupt entry */
-    }
+export function initialInput(hash: string, stored: string | null): Initial {
+  const problems: Initial['problems'] = [];
+  const linked = hashText(hash);
+  if (linked !== null) {
+    const r = checkInputText(linked, '#in');
+    problems.push(...r.problems.map((p) => ({ ...p, origin: 'url' as const })));
+    // A link that is not an object at all keeps nothing: fall back, but say so.
+    if (!r.problems.some((p) => p.path === '#in')) return { input: withSim(r.input), source: 'url', problems, linkBroken: problems.length > 0 };
   }
-  return { input: clone(SEED_INPUT), source: 'default' };
+  if (stored) {
+    const r = checkInputText(stored, 'localStorage');
+    problems.push(...r.problems.map((p) => ({ ...p, origin: 'storage' as const })));
+    if (!r.problems.some((p) => p.path === 'localStorage')) return { input: withSim(r.input), source: 'storage', problems, linkBroken: linked !== null };
+  }
+  return { input: clone(SEED_INPUT), source: 'default', problems, linkBroken: linked !== null };
 }
 
 function withSim(v: Input): Input {

@@ -1,6 +1,8 @@
-// Worker logic, independent of the browser: it gets a `post` function and a Pyodide loader,
-// so vitest runs exactly this code on real Pyodide in Node.
-import { API_FUNCTIONS, type ApiKind, type ApiResult, type MainToWorker, type WorkerToMain } from './protocol';
+// Worker logic, independent of the browser: one Python runtime serving any number of clients
+// (the tabs and iframes connected to a SharedWorker, or the one page of a dedicated Worker). It
+// gets a `post` function per client and a Pyodide loader, so vitest runs exactly this code on
+// real Pyodide in Node.
+import { API_FUNCTIONS, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type WorkerToMain } from './protocol';
 
 /** The part of the Pyodide API the worker uses. */
 export interface PyodideLike {
@@ -10,7 +12,10 @@ export interface PyodideLike {
   pyimport(name: string): unknown;
 }
 
-export type PyodideLoader = (indexURL: string) => Promise<PyodideLike>;
+/** Progress of a boot (a download, a step); every call also tells the boot watchdog it is alive. */
+export type BootProgress = (stage: BootStage, fraction: number) => void;
+/** A loader returns the runtime, or the runtime and where it came from (a snapshot or a full boot). */
+export type PyodideLoader = (indexURL: string, progress: BootProgress) => Promise<PyodideLike | { py: PyodideLike; from: BootFrom; note?: string }>;
 
 export const PY_ROOT = '/home/pyodide/pulab_src';
 
@@ -37,19 +42,77 @@ export function writePulab(py: PyodideLike, files: Record<string, string>, root 
 
 /** Boot Pyodide with `load`, with a timeout (loadPyodide can hang instead of rejecting). */
 export async function withTimeout<T>(p: Promise<T>, ms: number, what: string): Promise<T> {
-  let timer: ReturnType<typeof setTimeout> | undefined;
-  const t = new Promise<never>((_, reject) => {
-    timer = setTimeout(() => reject(new Error(`${what} did not finish within ${Math.round(ms / 1000)} s`)), ms);
-  });
+  const w = idleTimeout(ms, what);
   try {
-    return await Promise.race([p, t]);
+    return await Promise.race([p, w.expired]);
   } finally {
-    clearTimeout(timer);
+    w.stop();
   }
+}
+
+/**
+ * A timeout that `kick()` restarts: a slow download that keeps making progress is not a failure,
+ * only `ms` without any progress is.
+ */
+export function idleTimeout(ms: number, what: string): { expired: Promise<never>; kick(): void; stop(): void } {
+  let timer: ReturnType<typeof setTimeout> | undefined;
+  let reject!: (e: Error) => void;
+  const expired = new Promise<never>((_, rej) => {
+    reject = rej;
+  });
+  expired.catch(() => undefined);
+  const arm = (): void => {
+    clearTimeout(timer);
+    timer = setTimeout(() => reject(new Error(`${what} made no progress for ${Math.round(ms / 1000)} s`)), ms);
+  };
+  arm();
+  return { expired, kick: arm, stop: () => clearTimeout(timer) };
+}
+
+/**
+ * Boot from `fast` (the memory snapshot); if it is refused in any way, boot normally with `full`
+ * and say why in `note`.
+ */
+export async function fastOrFull(
+  fast: (() => Promise<PyodideLike>) | null,
+  full: () => Promise<PyodideLike>,
+): Promise<{ py: PyodideLike; from: BootFrom; note?: string }> {
+  if (fast) {
+    try {
+      return { py: await fast(), from: 'snapshot' };
+    } catch (e) {
+      return { py: await full(), from: 'full', note: `snapshot refused: ${e instanceof Error ? e.message : String(e)}` };
+    }
+  }
+  return { py: await full(), from: 'full' };
 }
 
 type PyApi = Record<string, (text: string) => string>;
 type Call = Extract<MainToWorker, { type: 'call' }>;
+type Post = (msg: WorkerToMain) => void;
+
+/**
+ * One readable line for anything thrown or rejected: an Error's message, an HTTP failure's status
+ * and URL, an event's type — never "[object Object]" (a missing runtime file must be named).
+ */
+export function describeError(e: unknown): string {
+  if (e instanceof Error) return e.message || e.name;
+  if (typeof e === 'string') return e;
+  if (e && typeof e === 'object') {
+    const o = e as { message?: unknown; status?: unknown; url?: unknown; type?: unknown; constructor?: { name?: string } };
+    if (typeof o.message === 'string' && o.message) return o.message;
+    if (typeof o.status === 'number') return `HTTP ${o.status}${typeof o.url === 'string' ? ` for ${o.url}` : ''}`;
+    if (typeof o.type === 'string') return `${o.type} event${typeof o.url === 'string' ? ` for ${o.url}` : ''}`;
+    try {
+      const json = JSON.stringify(e);
+      if (json && json !== '{}') return json.slice(0, 200);
+    } catch {
+      /* cyclic */
+    }
+    return o.constructor?.name ?? 'unknown error';
+  }
+  return String(e);
+}
 
 export interface WorkerLogic {
   onMessage(msg: MainToWorker): void;
@@ -57,13 +120,16 @@ export interface WorkerLogic {
   ready: Promise<void>;
 }
 
+export interface RuntimeHost {
+  /** A new client (a page or an iframe): `post` reaches it; returns the handler of its messages. */
+  connect(post: Post): (msg: MainToWorker) => void;
+  /** Resolves when booted (for tests); rejects on a boot failure. */
+  ready: Promise<void>;
+}
+
 const now = (): number => (typeof performance !== 'undefined' ? performance.now() : Date.now());
 
-export function createWorkerLogic(
-  post: (msg: WorkerToMain) => void,
-  load: PyodideLoader,
-  files: Record<string, string>,
-): WorkerLogic {
+export function createRuntimeHost(load: PyodideLoader, files: Record<string, string>): RuntimeHost {
   let api: PyApi | null = null;
   let resolveReady!: () => void;
   let rejectReady!: (e: unknown) => void;
@@ -72,17 +138,36 @@ export function createWorkerLogic(
     rejectReady = rej;
   });
   ready.catch(() => undefined);
-  const queue: Call[] = [];
+  const clients = new Set<Post>();
+  /** What a client connecting late is told at once. */
+  let state: 'idle' | 'booting' | 'ready' | 'failed' = 'idle';
+  let lastProgress: WorkerToMain | null = null;
+  let readyMsg: WorkerToMain | null = null;
+  const queue: { call: Call; post: Post; client: number }[] = [];
+  const clientIds = new Map<Post, number>();
   let scheduled = false;
 
+  const broadcast = (m: WorkerToMain): void => {
+    for (const post of clients) post(m);
+  };
+
   async function boot(indexURL: string, timeoutMs: number): Promise<void> {
+    state = 'booting';
     const t0 = now();
+    const watchdog = idleTimeout(timeoutMs, 'Loading the Python runtime (Pyodide)');
+    const progress: BootProgress = (stage, fraction) => {
+      watchdog.kick();
+      lastProgress = { type: 'progress', stage, fraction, ms: now() - t0 };
+      broadcast(lastProgress);
+    };
     try {
-      post({ type: 'progress', stage: 'runtime', fraction: 0.05, ms: 0 });
-      const py = await withTimeout(load(indexURL), timeoutMs, 'Loading the Python runtime (Pyodide)');
-      post({ type: 'progress', stage: 'files', fraction: 0.8, ms: now() - t0 });
+      progress('runtime', 0.05);
+      const loaded = await Promise.race([load(indexURL, progress), watchdog.expired]);
+      watchdog.stop();
+      const { py, from, note } = 'py' in loaded ? loaded : { py: loaded, from: undefined, note: undefined };
+      progress('files', 0.8);
       writePulab(py, files);
-      post({ type: 'progress', stage: 'import', fraction: 0.9, ms: now() - t0 });
+      progress('import', 0.9);
       const mod = py.pyimport('pulab.api') as Record<string, unknown>;
       const fns: PyApi = {};
       for (const name of Object.values(API_FUNCTIONS)) {
@@ -91,13 +176,17 @@ export function createWorkerLogic(
       }
       if (!fns.run_json) throw new Error('pulab.api.run_json is missing');
       api = fns;
-      post({ type: 'progress', stage: 'ready', fraction: 1, ms: now() - t0 });
-      post({ type: 'ready', bootMs: now() - t0, pyodideVersion: py.version });
+      progress('ready', 1);
+      readyMsg = { type: 'ready', bootMs: now() - t0, pyodideVersion: py.version, ...(from ? { from } : {}), ...(note ? { note } : {}) };
+      state = 'ready';
+      broadcast(readyMsg);
       resolveReady();
       schedule();
     } catch (e) {
-      const message = e instanceof Error ? e.message : String(e);
-      post({ type: 'fatal', message });
+      watchdog.stop();
+      const message = describeError(e);
+      state = 'failed';
+      broadcast({ type: 'fatal', message });
       rejectReady(e);
     }
   }
@@ -118,20 +207,20 @@ export function createWorkerLogic(
   function drain(): void {
     scheduled = false;
     if (!api) return;
-    // Coalesce: for each channel only the newest queued call is computed.
+    // Coalesce: for each client's channel only the newest queued call is computed.
     const newest = new Map<string, number>();
     queue.forEach((c, i) => {
-      if (c.channel) newest.set(c.channel, i);
+      if (c.call.channel) newest.set(`${c.client}:${c.call.channel}`, i);
     });
     const batch = queue.splice(0, queue.length);
     batch.forEach((c, i) => {
-      if (c.channel && newest.get(c.channel) !== i) {
-        post({ type: 'superseded', id: c.id });
+      if (c.call.channel && newest.get(`${c.client}:${c.call.channel}`) !== i) {
+        c.post({ type: 'superseded', id: c.call.id });
         return;
       }
       const t0 = now();
-      const result = run(c.kind, c.payload);
-      post({ type: 'result', id: c.id, kind: c.kind, result, ms: now() - t0 });
+      const result = run(c.call.kind, c.call.payload);
+      c.post({ type: 'result', id: c.call.id, kind: c.call.kind, result, ms: now() - t0 });
     });
   }
 
@@ -144,13 +233,27 @@ export function createWorkerLogic(
 
   return {
     ready,
-    onMessage(msg: MainToWorker): void {
-      if (msg.type === 'init') {
-        void boot(msg.indexURL, msg.timeoutMs ?? 60_000);
-      } else if (msg.type === 'call') {
-        queue.push(msg);
-        schedule();
-      }
+    connect(post) {
+      clients.add(post);
+      const client = clientIds.size + 1;
+      clientIds.set(post, client);
+      return (msg) => {
+        if (msg.type === 'init') {
+          // A failed boot is tried again when a client asks again (a reload, a retry).
+          if (state === 'idle' || state === 'failed') void boot(msg.indexURL, msg.timeoutMs ?? 60_000);
+          else if (state === 'booting' && lastProgress) post(lastProgress);
+          else if (state === 'ready' && readyMsg) post(readyMsg);
+        } else if (msg.type === 'call') {
+          queue.push({ call: msg, post, client });
+          schedule();
+        }
+      };
     },
   };
+}
+
+/** One runtime, one client (a dedicated Worker; the vitest suites). */
+export function createWorkerLogic(post: Post, load: PyodideLoader, files: Record<string, string>): WorkerLogic {
+  const host = createRuntimeHost(load, files);
+  return { ready: host.ready, onMessage: host.connect(post) };
 }

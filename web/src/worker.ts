@@ -1,17 +1,66 @@
-// The Web Worker: thin glue between postMessage, Pyodide and worker-logic.ts.
-import { loadPyodide } from 'pyodide';
-import { createWorkerLogic, type PyodideLike } from './worker-logic';
+// The worker script, run as a SharedWorker (one Python runtime for every tab and iframe of the
+// origin) or, where there is none (Chrome for Android), as a dedicated Worker of one page.
+// Thin glue between ports, Pyodide and worker-logic.ts.
+import { loadPyodide, version } from 'pyodide';
+import { SNAPSHOT } from 'virtual:pulab-build';
+import { createRuntimeHost, describeError, fastOrFull, type BootProgress, type PyodideLike } from './worker-logic';
 import { PULAB_FILES } from './pysources';
 import type { MainToWorker, WorkerToMain } from './protocol';
 
-const scope = self as unknown as {
-  postMessage(m: WorkerToMain): void;
-  onmessage: ((ev: MessageEvent<MainToWorker>) => void) | null;
-};
+/** The snapshot's bytes, with download progress (a slow download that progresses is not a failure). */
+async function fetchSnapshot(url: string, size: number, progress: BootProgress): Promise<Uint8Array> {
+  const res = await fetch(url);
+  if (!res.ok || !res.body) throw new Error(`${url}: HTTP ${res.status}`);
+  const out = new Uint8Array(size);
+  const reader = res.body.getReader();
+  let at = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    if (at + value.length > size) throw new Error(`${url}: larger than the ${size} bytes built`);
+    out.set(value, at);
+    at += value.length;
+    progress('runtime', 0.05 + 0.6 * (at / size));
+  }
+  if (at !== size) throw new Error(`${url}: ${at} bytes, not the ${size} built`);
+  return out;
+}
 
-const logic = createWorkerLogic(
-  (m) => scope.postMessage(m),
-  async (indexURL) => (await loadPyodide({ indexURL, packages: [] })) as unknown as PyodideLike,
-  PULAB_FILES,
-);
-scope.onmessage = (ev) => logic.onMessage(ev.data);
+async function load(indexURL: string, progress: BootProgress) {
+  const full = async () => (await loadPyodide({ indexURL, packages: [] })) as unknown as PyodideLike;
+  const snap = SNAPSHOT;
+  const fast = snap && snap.pyodideVersion === version
+    ? async () => {
+        // The promise, not the bytes: Pyodide fetches and compiles its wasm while the snapshot downloads.
+        const bytes = fetchSnapshot(`${indexURL}${snap.file}`, snap.size, progress).then((b) => {
+          progress('snapshot', 0.7);
+          return b;
+        });
+        bytes.catch(() => undefined); // a refused download rejects loadPyodide below, which falls back
+        const py = await loadPyodide({ indexURL, packages: [], _loadSnapshot: bytes });
+        // Pyodide keeps its config, and with it the 30 MB snapshot, for the runtime's lifetime.
+        const config = (py as unknown as { _api?: { config?: { _loadSnapshot?: unknown } } })._api?.config;
+        if (config) delete config._loadSnapshot;
+        return py as unknown as PyodideLike;
+      }
+    : null;
+  return fastOrFull(fast, full);
+}
+
+const host = createRuntimeHost(load, PULAB_FILES);
+
+type Port = { postMessage(m: WorkerToMain): void; onmessage: ((ev: MessageEvent<MainToWorker>) => void) | null };
+function serve(port: Port): void {
+  const onMessage = host.connect((m) => port.postMessage(m));
+  port.onmessage = (ev) => onMessage(ev.data);
+}
+
+const scope = self as unknown as Port & { onconnect?: ((ev: MessageEvent) => void) | null };
+if ('onconnect' in scope) scope.onconnect = (ev) => serve(ev.ports[0] as unknown as Port);
+else serve(scope);
+// Pyodide fetches some files on the side; when one fails, the boot fails with its own message
+// (above) and the side promise's rejection must not surface as an uncaught error on the page.
+self.addEventListener('unhandledrejection', (ev) => {
+  ev.preventDefault();
+  console.warn('pulab worker:', describeError(ev.reason));
+});

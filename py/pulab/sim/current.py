@@ -52,9 +52,11 @@ back-EMF start-up transient.  The reference steps at t = 0.
 from __future__ import annotations
 
 import math
+from array import array
 
 from ..errors import InputError
 from ..vendor import current_pi_step, round_half_away
+from .inputs import periods
 from .plant import zoh
 
 __all__ = ["run_float", "run_fixed", "run", "MAX_STEPS", "Q12_CURRENT_LIMIT_PU"]
@@ -87,8 +89,9 @@ def run_float(z, kp_d: float, ki_ts_d: float, kp_q: float, ki_ts_q: float, umax:
     Returns
     -------
     dict
-        ``id, iq, ud, uq`` (lists of n+1 floats: current at t_k, voltage applied
-        from t_k) and ``sat`` (list of bool: an output was at its limit at t_k).
+        ``id, iq, ud, uq`` (arrays of n+1 floats: current at t_k, voltage applied
+        from t_k) and ``sat`` (array of 0/1: an output was at its limit at t_k).
+        Arrays, not lists: 8 bytes a sample instead of 32 at the 200 000-period cap.
     """
     p0, p1, p2, p3 = z.phi
     g0, g1, g2, g3 = z.gamma
@@ -97,7 +100,7 @@ def run_float(z, kp_d: float, ki_ts_d: float, kp_q: float, ki_ts_q: float, umax:
     integ_d = 0.0
     integ_q = max(-imax, min(imax, integ_q0))
     prev_d, prev_q = 0.0, max(-umax, min(umax, integ_q))
-    ids, iqs, uds, uqs, sats = [], [], [], [], []
+    ids, iqs, uds, uqs, sats = array("d"), array("d"), array("d"), array("d"), array("b")
     for _ in range(n + 1):
         ids.append(xd)
         iqs.append(xq)
@@ -170,7 +173,8 @@ def run_fixed(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp_q: in
     integ_d = 0
     integ_q = max(-maxu, min(maxu, integ_q0))
     prev_d, prev_q = 0.0, max(-maxout, min(maxout, integ_q >> 12)) * to_volt
-    ids, iqs, uds, uqs, sats, fbd, fbq = [], [], [], [], [], [], []
+    ids, iqs, uds, uqs, sats = array("d"), array("d"), array("d"), array("d"), array("b")
+    fbd, fbq = array("l"), array("l")
     # current_pi_step is a pure function of its integer arguments; within one run
     # only (integral, error) change, and in steady state the same pairs recur
     # (limit cycles of one LSB), so a memo saves most of its CInt bookkeeping
@@ -269,11 +273,7 @@ def run(report: dict, cfg: dict) -> dict:
     axis = cfg["axis"]
     duration = cfg["duration_s"] if cfg["duration_s"] is not None else \
         default_duration(report, axis)
-    n = int(round(duration / ts))
-    if n > MAX_STEPS:
-        raise InputError("sim.current.duration_s",
-                         f"{duration:g} s is {n} control periods; at most {MAX_STEPS}")
-    n = max(n, 1)
+    n = periods(duration, ts, MAX_STEPS, "sim.current.duration_s")
     step = cfg["step_a"] if cfg["step_a"] is not None else 0.5 * i_b
     if abs(step / i_b) >= Q12_CURRENT_LIMIT_PU:
         raise InputError("sim.current.step_a", f"{step:g} A is {step / i_b:.3g} pu; the Q12 "
@@ -303,5 +303,5 @@ def run(report: dict, cfg: dict) -> dict:
                    maxout, round_half_away(ref_d / i_b * 4096.0),
                    round_half_away(ref_q / i_b * 4096.0),
                    round_half_away(z_pu.bemf * 16777216.0), n, cfg["delay"])
-    return {"t": [k * ts for k in range(n + 1)], "ts": ts, "n": n, "axis": axis,
+    return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "axis": axis,
             "ref_a": step, "variants": {"si": si, "pu": p, "fixed": fx}}

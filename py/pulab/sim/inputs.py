@@ -39,9 +39,9 @@ from __future__ import annotations
 
 
 from ..errors import InputError
-from ..inputs import object_fields, real
+from ..inputs import object_fields, real, shown
 
-__all__ = ["validate", "FIELDS"]
+__all__ = ["validate", "periods", "FIELDS"]
 
 #: Allowed keys per subsection.
 FIELDS = {
@@ -69,6 +69,34 @@ def _num(sec: dict, path: str, key: str, default, positive: bool = False,
     return v
 
 
+def periods(duration: float, ts: float, cap: int, field: str) -> int:
+    """Control periods in ``duration``: ``round(duration/ts)``, 1..cap.
+
+    Checked against the cap before anything is rounded or allocated: a
+    finite duration over a tiny ``ts`` can exceed the float range.
+
+    Parameters
+    ----------
+    duration : float > 0, seconds ; ts : float > 0, seconds
+    cap : int, even (so ``q ≤ cap + ½`` is exactly ``round(q) ≤ cap``)
+    field : str, the JSON path named when the run is too long
+
+    Examples
+    --------
+    >>> periods(0.02, 1e-4, 200_000, "sim.current.duration_s")
+    200
+    >>> periods(1e300, 1e-9, 200_000, "sim.current.duration_s")
+    Traceback (most recent call last):
+    ...
+    pulab.errors.InputError: sim.current.duration_s: 1e+300 s is >1.8e308 control periods; at most 200000
+    """
+    q = duration / ts
+    if not q <= cap + 0.5:  # also catches q = inf
+        count = f"{q:.4g}" if q < float("inf") else ">1.8e308"
+        raise InputError(field, f"{duration:g} s is {count} control periods; at most {cap}")
+    return max(int(round(q)), 1)
+
+
 def validate(sim_input) -> dict:
     """Check the ``"sim"`` input section and fill in the defaults.
 
@@ -94,10 +122,10 @@ def validate(sim_input) -> dict:
     p = _section(sim, "pll")
     axis = c.get("axis", "d")
     if axis not in ("d", "q"):
-        raise InputError("sim.current.axis", f"must be one of d, q, got {axis!r}")
+        raise InputError("sim.current.axis", f"must be one of d, q, got {shown(axis)}")
     delay = c.get("delay", False)
     if not isinstance(delay, bool):
-        raise InputError("sim.current.delay", f"must be true or false, got {delay!r}")
+        raise InputError("sim.current.delay", f"must be true or false, got {shown(delay)}")
     cur = {"axis": axis,
            "step_a": _num(c, "sim.current", "step_a", None, nonzero=True),
            "duration_s": _num(c, "sim.current", "duration_s", None, positive=True),

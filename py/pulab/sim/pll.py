@@ -52,9 +52,11 @@ t = 0) and the loop must acquire both phase and speed.
 from __future__ import annotations
 
 import math
+from array import array
 
 from ..errors import InputError
 from ..vendor import round_half_away
+from .inputs import periods
 
 __all__ = ["input_angle", "run_float", "run_q15", "run", "q15_gains", "MAX_STEPS"]
 
@@ -82,12 +84,13 @@ def input_angle(n: int, ts: float, speed_hz: float, ramp_hz_s: float,
 
     Returns
     -------
-    (theta, omega) : lists of n+1 floats, rad wrapped into [−π, π] and rad/s
+    (theta, omega) : arrays of n+1 floats, rad wrapped into [−π, π] and rad/s
     """
     w0 = _TWO_PI * speed_hz
     a = math.pi * ramp_hz_s
-    theta = [_wrap(step_rad + w0 * (k * ts) + a * (k * ts) ** 2) for k in range(n + 1)]
-    omega = [w0 + 2.0 * a * (k * ts) for k in range(n + 1)]
+    # Arrays, not lists: 8 bytes a sample instead of 32, at 500 000 samples (the cap) per series.
+    theta = array("d", (_wrap(step_rad + w0 * (k * ts) + a * (k * ts) ** 2) for k in range(n + 1)))
+    omega = array("d", (w0 + 2.0 * a * (k * ts) for k in range(n + 1)))
     return theta, omega
 
 
@@ -105,7 +108,7 @@ def run_float(theta: list, ts: float, kp: float, ki: float, angle_base: float,
 
     Returns
     -------
-    (theta_hat, omega_hat) : lists, rad wrapped into [−π, π] and the PI output
+    (theta_hat, omega_hat) : arrays of float, rad wrapped into [−π, π] and the PI output
     in its own unit (rad/s for SI, pu for pu and naive).
     """
     th = 0.0
@@ -114,7 +117,7 @@ def run_float(theta: list, ts: float, kp: float, ki: float, angle_base: float,
     gts = gain * ts
     period = _TWO_PI / angle_base
     inv_base = 1.0 / angle_base
-    out_th, out_w = [], []
+    out_th, out_w = array("d"), array("d")
     for x in theta:
         out_th.append(th * angle_base)
         e = math.remainder(x * inv_base - th, period)
@@ -165,13 +168,13 @@ def run_q15(theta: list, gains: dict) -> tuple:
 
     Returns
     -------
-    (theta_in, theta_hat, omega_hat) : lists of int — int16 input angle, int16
+    (theta_in, theta_hat, omega_hat) : arrays of int — int16 input angle, int16
     θ̂ (Q15 of π), int32 ω̂ (Q24 of ω_b)
     """
     kp, ki, g = gains["kp"], gains["ki"], gains["g"]
     acc = 0
     integ = 0
-    th_in, th_hat, w_hat = [], [], []
+    th_in, th_hat, w_hat = array("q"), array("q"), array("q")
     scale = 32768.0 / math.pi
     for x in theta:
         q = round_half_away(x * scale)
@@ -222,11 +225,7 @@ def run(report: dict, cfg: dict) -> dict:
     ts = inp["drive"]["ts_s"]
     w_b, theta_b, f_b = b["w_b"], b["theta_b"], b["f_b"]
     duration = cfg["duration_s"] if cfg["duration_s"] is not None else default_duration(report)
-    n = int(round(duration / ts))
-    if n > MAX_STEPS:
-        raise InputError("sim.pll.duration_s",
-                         f"{duration:g} s is {n} control periods; at most {MAX_STEPS}")
-    n = max(n, 1)
+    n = periods(duration, ts, MAX_STEPS, "sim.pll.duration_s")
     speed = cfg["speed_hz"] if cfg["speed_hz"] is not None else inp["motor"]["rated_freq_hz"]
     top = max(abs(speed), abs(speed + cfg["ramp_hz_per_s"] * n * ts))
     if top * ts >= 0.5:
@@ -240,11 +239,11 @@ def run(report: dict, cfg: dict) -> dict:
     th, w = run_float(theta, ts, g["kp"], g["ki"], 1.0, 1.0)
     v["si"] = {"theta_hat": th, "omega_hat": w}
     th, w = run_float(theta, ts, g["kp_pu"], g["ki_pu"], theta_b, w_b / theta_b)
-    v["pu"] = {"theta_hat": th, "omega_hat": [x * w_b for x in w]}
+    v["pu"] = {"theta_hat": th, "omega_hat": array("d", (x * w_b for x in w))}
     _, th, w = run_q15(theta, q15_gains(g["kp"], g["ki"], w_b, f_b, ts))
-    v["q15"] = {"theta_hat": [x * (math.pi / 32768.0) for x in th],
-                "omega_hat": [x * (w_b / 16777216.0) for x in w]}
+    v["q15"] = {"theta_hat": array("d", (x * (math.pi / 32768.0) for x in th)),
+                "omega_hat": array("d", (x * (w_b / 16777216.0) for x in w))}
     th, w = run_float(theta, ts, g["kp"], g["ki"], theta_b, w_b / theta_b)
-    v["naive"] = {"theta_hat": th, "omega_hat": [x * w_b for x in w]}
-    return {"t": [k * ts for k in range(n + 1)], "ts": ts, "n": n, "theta": theta,
+    v["naive"] = {"theta_hat": th, "omega_hat": array("d", (x * w_b for x in w))}
+    return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "theta": theta,
             "omega": omega, "variants": v}

@@ -22,6 +22,34 @@ export function valueText(v: unknown): string {
   return '…';
 }
 
+const TEX_SPECIAL: Record<string, string> = {
+  '\\': '\\textbackslash{}', '{': '\\{', '}': '\\}', $: '\\$', '&': '\\&', '#': '\\#',
+  '^': '\\textasciicircum{}', _: '\\_', '%': '\\%', '~': '\\textasciitilde{}',
+};
+
+/**
+ * A report value inside TeX: a number as digits; anything else as escaped `\text{…}`, so a
+ * string can never become TeX commands (a report value is data, not markup).
+ */
+export function texValue(v: unknown): string {
+  if (typeof v === 'number') return valueText(v);
+  return `\\text{${valueText(v).replace(/[\\{}$&#^_%~]/g, (c) => TEX_SPECIAL[c])}}`;
+}
+
+/**
+ * The href of a chapter link, or null when it is neither a same-page anchor nor https (a chapter
+ * is data: a `javascript:` or `data:` link must not become clickable).
+ */
+export function safeHref(href: string): string | null {
+  if (/^#[A-Za-z0-9_=-]+$/.test(href)) return href;
+  try {
+    const u = new URL(href);
+    return u.protocol === 'https:' && href.startsWith('https://') ? href : null;
+  } catch {
+    return null;
+  }
+}
+
 export function renderMarkdown(md: string, opts: RenderOpts): string {
   const tokens: string[] = [];
   const keep = (html: string): string => `\u0002${tokens.push(html) - 1}\u0003`;
@@ -33,7 +61,7 @@ export function renderMarkdown(md: string, opts: RenderOpts): string {
   src = src.replace(/(`+)([^`\n][\s\S]*?)\1/g, (_, _t, code: string) => keep(`<code>${esc(code)}</code>`));
   // 2. math (placeholders inside become plain numbers)
   const math = (tex: string, display: boolean): string => {
-    const filled = fillPlaceholders(tex, (p) => valueText(opts.value(p)));
+    const filled = fillPlaceholders(tex, (p) => texValue(opts.value(p)));
     const key = `${display ? 'D' : 'I'}${filled}`;
     let html = KATEX_CACHE.get(key);
     if (html === undefined) {
@@ -62,11 +90,14 @@ function inline(s: string): string {
   let out = esc(s);
   out = out.replace(/\*\*([^*]+)\*\*/g, '<strong>$1</strong>');
   out = out.replace(/(^|[^*\w])\*([^*\s][^*]*?)\*(?!\w)/g, '$1<em>$2</em>');
-  out = out.replace(/\[([^\]]+)\]\(([^)\s]+)\)/g, (_, text: string, href: string) => {
+  out = out.replace(/\[([^\]]+)\]\(([^)\s]+)\)/g, (all: string, text: string, raw: string) => {
+    // `out` is escaped already: `raw` holds &amp; etc., checked as the text it stands for.
+    const href = safeHref(raw.replace(/&amp;/g, '&').replace(/&quot;/g, '"').replace(/&lt;/g, '<').replace(/&gt;/g, '>'));
+    if (href === null) return all;
     const panel = /^#panel=([\w-]+)$/.exec(href);
     if (panel) return `<a href="#panel-${panel[1]}" data-panel-link="${panel[1]}">${text}</a>`;
     if (href.startsWith('#')) return `<a href="${href.replace(/^#/, '#doc-')}" data-doc-link="${href.slice(1)}">${text}</a>`;
-    return `<a href="${href}" rel="noopener" target="_blank">${text}</a>`;
+    return `<a href="${esc(href)}" rel="noopener" target="_blank">${text}</a>`;
   });
   return out;
 }

@@ -1,14 +1,27 @@
 // Shared by the figures: Plotly loaded lazily as its own chunk, one common look.
 import { h } from '../dom';
 import { t } from '../i18n';
+import type { PanelContext } from '../panels/panel';
 
 type PlotlyT = typeof import('plotly.js-basic-dist-min').default;
 let plotly: Promise<PlotlyT> | null = null;
 
+/** Plotly, loaded once; a failed load is forgotten so the next call tries again. */
 export function loadPlotly(): Promise<PlotlyT> {
-  plotly ??= import('plotly.js-basic-dist-min').then((m) => m.default);
+  plotly ??= import('plotly.js-basic-dist-min').then((m) => m.default, (e: unknown) => {
+    plotly = null;
+    throw e;
+  });
   return plotly;
 }
+
+// Plots whose library failed to load: drawn again when the browser comes back online.
+const failed = new Map<HTMLElement, () => void>();
+if (typeof window !== 'undefined') window.addEventListener('online', () => {
+  const jobs = [...failed.values()];
+  failed.clear();
+  for (const job of jobs) job();
+});
 
 export const COLORS: Record<string, string> = {
   si: '#1f6feb', pu: '#2da44e', fixed: '#d4670f', q15: '#8250df', naive: '#cf222e', ref: '#57606a',
@@ -60,9 +73,10 @@ export function plot(el: HTMLElement, traces: Trace[], layout: { xTitle: string;
 }
 
 function draw(host: HTMLElement, traces: Trace[], layout: { xTitle: string; yTitle: string; y2Title: string; yRange?: [number, number]; xRange?: [number, number] }): void {
-  void loadPlotly().then((P) => {
-    host.querySelector('.plot-loading')?.remove();
-    void P.react(
+  failed.delete(host);
+  loadPlotly().then((P) => {
+    host.querySelector('.plot-loading, .plot-error')?.remove();
+    return P.react(
       host,
       traces.map((tr) => ({
         type: 'scatter', mode: 'lines', x: tr.x, y: tr.y, name: tr.name, yaxis: tr.yaxis ?? 'y',
@@ -81,5 +95,23 @@ function draw(host: HTMLElement, traces: Trace[], layout: { xTitle: string; yTit
       },
       { displaylogo: false, responsive: true, modeBarButtonsToRemove: ['lasso2d', 'select2d'] },
     );
+  }).catch(() => {
+    // The chunk did not load (offline, blocked, a new deployment removed it): say so at the plot,
+    // offer a retry, and retry by itself when the network returns. The numbers are unaffected.
+    const again = (): void => {
+      host.querySelector('.plot-error')?.replaceWith(h('div', { class: 'plot-loading' }, t('plotLoading')));
+      draw(host, traces, layout);
+    };
+    failed.set(host, again);
+    host.querySelector('.plot-loading, .plot-error')?.remove();
+    host.prepend(h('div', { class: 'plot-error', role: 'alert' }, t('plotFailed'), ' ',
+      h('button', { type: 'button', class: 'plot-retry', onclick: again }, t('retry'))));
   });
+}
+
+/** What a plot shows while its simulation runs, or why it has none (with a retry when one helps). */
+export function simPlaceholder(ctx: PanelContext): HTMLElement {
+  if (!ctx.simError) return h('div', { class: 'plot-placeholder' }, t('simRunning'));
+  return h('div', { class: 'sim-error', role: 'alert' }, t('simNotAvailable', { m: ctx.simError }),
+    ctx.retrySim ? h('button', { type: 'button', class: 'sim-retry', onclick: ctx.retrySim }, t('retry')) : null);
 }

@@ -9,6 +9,7 @@ import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../st
 import { fromSI, toSI, type UnitId } from '../units';
 import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
+import { checkUnits } from '../state-check';
 
 /** The SI field a raw firmware value was converted from, as Python's message names it. */
 export function sourceField(e: ApiErr): string | null {
@@ -17,16 +18,9 @@ export function sourceField(e: ApiErr): string | null {
 
 export class InputForm {
   constructor(private root: HTMLElement, private session: ComputeSession) {
-    // A shared link's units win over the ones this browser chose last.
-    let units = decodeUnits(location.hash);
-    if (!units) {
-      try {
-        units = JSON.parse(load(UNITS_KEY) ?? '{}') as Record<string, string>;
-      } catch {
-        units = {};
-      }
-    }
-    session.units = units;
+    // A shared link's units (&u=) win over the ones this browser chose last; both checked.
+    const fromLink = decodeUnits(location.hash);
+    session.units = checkUnits(fromLink ? JSON.stringify(fromLink) : load(UNITS_KEY));
   }
 
   /** The display unit chosen for each field (the session keeps it for links). */
@@ -103,16 +97,18 @@ export class InputForm {
    * an error opens.
    */
   showErrors(): void {
-    const { localErrors, remoteError, simFieldError } = this.session;
+    const { localErrors, remoteError, simFieldError, stateNotes } = this.session;
     const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f);
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
       let msg = localErrors.get(f) ?? '';
       if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
-      el.textContent = msg;
-      const field = el.closest('.field');
-      field?.classList.toggle('invalid', msg !== '');
+      // A value from the link that could not be used: a note, not an error (the default is used).
+      const note = msg ? '' : stateNotes.get(f) ?? '';
+      el.textContent = msg || note;
+      el.closest('.field')?.classList.toggle('invalid', msg !== '');
+      el.closest('.field')?.classList.toggle('noted', note !== '');
       const sec = el.closest<HTMLDetailsElement>('details.section');
       if (msg && sec && !sec.open) sec.open = true;
     }
@@ -151,7 +147,7 @@ export class InputForm {
 
   private onNumber(f: FieldSpec, text: string): void {
     const s = this.session;
-    s.touched();
+    s.touched(f.path);
     const r = parseNumber(text, f.kind === 'int');
     if (!r.ok) return s.setLocalError(f.path, t(r.error === 'integer' ? 'errInteger' : 'errNumber'));
     const unit = this.unitOf(f);
@@ -167,6 +163,7 @@ export class InputForm {
 
   private onSelect(f: FieldSpec, value: string): void {
     const { input, report } = this.session;
+    this.session.touched(f.path);
     // The empty choice ("—") is an absent field (pulab's default, or "not given").
     setPath(input as Record<string, unknown>, f.path, value === '' ? null : value);
     if (f.path === 'current_loop.method' && value === 'manual' && report) {
@@ -191,6 +188,7 @@ export class InputForm {
   }
 
   private onBool(f: FieldSpec, v: boolean): void {
+    this.session.touched(f.path);
     setPath(this.session.input as Record<string, unknown>, f.path, v);
     this.session.schedule();
   }

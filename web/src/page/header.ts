@@ -28,7 +28,13 @@ async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExpo
   if (!session.client?.ready) return;
   const eff = effectiveInput(session.input);
   const c = kind === 'header' ? session.client : session.simWorker() ?? session.client;
-  const { result } = await c.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind });
+  let result;
+  try {
+    ({ result } = await c.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind }));
+  } catch (e) {
+    // The worker died or a newer call replaced this one: say so, never an unhandled rejection.
+    return toast(root, t('exportFailed', { m: e instanceof Error ? e.message : String(e) }));
+  }
   if (result.ok) {
     const name = kind === 'header' ? 'pulab_params.h' : `pulab_${kind.slice(4)}.csv`;
     download(name, String(result.text), kind === 'header' ? 'text/x-c' : 'text/csv');

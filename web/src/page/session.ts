@@ -2,17 +2,20 @@
 // of report and simulation calls to the Python workers. Knows nothing of the DOM except the
 // timing attributes on <html> (reportMs, renderMs, updateMs: the benchmark reads them).
 import { effectiveInput } from '../fields';
-import { errText } from '../i18n';
+import { errText, t } from '../i18n';
 import { Superseded, type PulabClient } from '../rpc';
 import type { ApiErr } from '../protocol';
 import type { Report } from '../report-types';
 import { STORAGE_KEY, encodeHash, reportInput, simInput, type Input } from '../state';
 import { store } from './storage';
+import { mark } from './marks';
+import { keepReport, knownReport, reportKey, showSource, type NumbersSource } from './numbers';
 
 /** What the page does when the session's state changes. */
 export interface SessionEvents {
-  /** A new report for the input in the form (render every panel). */
-  report(): void;
+  /** A new report for the input in the form (render every panel); `same`: equal to the one shown
+   * (the same input: pulab is deterministic), only what depends on Python being ready changes. */
+  report(same?: boolean): void;
   /** A new simulation result or simulation error (render the plots). */
   sim(): void;
   /** Field errors or staleness changed. */
@@ -31,12 +34,21 @@ export class ComputeSession {
   report: Report | null = null;
   simReport: Report | null = null;
   simError: string | null = null;
+  /** The simulation worker failed (not the input): a retry may help. */
+  simWorkerFailed = false;
   /** The field a failed simulation named (shown at that field until the next simulation). */
   simFieldError: ApiErr | null = null;
   /** Errors found in the page before Python sees the input (not a number, …), by field path. */
   localErrors = new Map<string, string>();
   /** The error Python returned for the input in the form. */
   remoteError: ApiErr | null = null;
+  /** Notes at fields whose linked or stored value could not be used (web/src/state-notice.ts). */
+  stateNotes = new Map<string, string>();
+  /** The opened link was broken: it stays in the address bar until the user changes an input. */
+  keepLink = false;
+  /** Where `report` comes from, and the input it is for (its reportKey). */
+  source: NumbersSource = 'none';
+  private reportFor: string | null = null;
   /** Time in Python of the last report, ms. */
   lastMs = 0;
   client: PulabClient | null = null;
@@ -51,20 +63,63 @@ export class ComputeSession {
 
   constructor(input: Input, private embed: boolean, private events: SessionEvents) {
     this.input = input;
+    this.paintKnown(reportKey(input));
+    // A simulation that failed for want of a network is tried again when it returns.
+    window.addEventListener('online', () => {
+      if (this.simWorkerFailed) this.retrySim();
+    });
+  }
+
+  /** Run the simulation again, in a new worker if the old one died. */
+  retrySim(): void {
+    if (this.simClient?.fatalMessage) this.simClient = null;
+    this.simWorkerFailed = false;
+    this.simError = null;
+    this.events.sim();
+    void this.computeSim(effectiveInput(this.input));
+  }
+
+  /** Publish <html data-numbers> (once the page has rendered what the session holds). */
+  publish(): void {
+    this.updateSource();
+  }
+
+  /** Numbers without Python: the build's seed report or a cached one, if one is for `key`. */
+  private paintKnown(key: string): boolean {
+    const known = knownReport(key);
+    if (!known) return false;
+    this.report = known.report;
+    this.reportFor = key;
+    this.source = known.source;
+    return true;
+  }
+
+  /** <html data-numbers>: the source while the numbers are of the input in the form, else stale. */
+  private updateSource(): void {
+    const current = !this.localErrors.size && this.reportFor === reportKey(this.input);
+    const source = this.report === null ? 'none' : current ? this.source : 'stale';
+    showSource(source);
+    if (source !== 'none' && source !== 'stale') mark('numbers');
+    if (source === 'live') mark('live');
   }
 
   get ready(): boolean {
     return this.client?.ready === true;
   }
 
-  /** The form was edited (starts the input → numbers clock). */
-  touched(): void {
+  /** The form was edited at `path` (starts the input → numbers clock; the user's own state may
+   * now replace a broken link, and the note on that field no longer applies). */
+  touched(path: string): void {
     this.inputAt = performance.now();
+    this.keepLink = false;
+    if (this.stateNotes.delete(path)) this.events.errors();
   }
 
   /** Replace the whole input (preset, link): earlier errors no longer apply. */
   replaceInput(input: Input): void {
     this.input = input;
+    this.keepLink = false;
+    this.stateNotes.clear();
     this.localErrors.clear();
     this.remoteError = null;
     this.schedule(0);
@@ -86,19 +141,19 @@ export class ComputeSession {
     this.remoteError = null;
   }
 
+  /** The panels are shown stale: an error, or (before Python is ready) numbers of another input. */
   get stale(): boolean {
-    return this.localErrors.size > 0 || this.remoteError !== null;
+    const behind = !this.ready && this.report !== null && this.reportFor !== reportKey(this.input);
+    return this.localErrors.size > 0 || this.remoteError !== null || behind;
   }
-
-  /** The report input the shown numbers were computed from. */
-  private reportFor = '';
 
   /** The numbers on the page are from another input than the form's (a computation is due). */
   get outdated(): boolean {
-    return this.report !== null && this.reportFor !== JSON.stringify(reportInput(effectiveInput(this.input)));
+    return this.report !== null && this.reportFor !== reportKey(this.input);
   }
 
   schedule(delay = 10): void {
+    this.updateSource();
     clearTimeout(this.timer);
     this.timer = setTimeout(() => void this.compute(), delay);
   }
@@ -107,21 +162,32 @@ export class ComputeSession {
     if (this.localErrors.size) return this.events.errors();
     const eff = effectiveInput(this.input);
     this.persist(eff);
-    if (!this.client?.ready) return;
+    const key = JSON.stringify(reportInput(eff));
+    if (!this.client?.ready) {
+      // Typing before Python is ready: kept (computed once it is), and painted at once if known.
+      if (key !== this.reportFor && this.paintKnown(key)) this.events.report();
+      this.updateSource();
+      this.events.busy();
+      return this.events.errors();
+    }
     const root = document.documentElement;
     root.dataset.busy = '1';
     try {
       const t0 = performance.now();
-      const asked = reportInput(eff);
-      const { result, ms } = await this.client.call('report', asked, 'report');
+      const { result, ms } = await this.client.call('report', JSON.parse(key), 'report');
       this.lastMs = ms;
       if (result.ok) {
+        const same = this.reportFor === key && this.source !== 'live';
         this.report = result.report as unknown as Report;
-        this.reportFor = JSON.stringify(asked);
         this.remoteError = null;
+        // Another input may have been typed while Python computed this one.
+        this.reportFor = key;
+        this.source = 'live';
+        keepReport(key, this.report);
         const t1 = performance.now();
-        this.events.report();
+        this.events.report(same);
         this.events.errors();
+        this.updateSource();
         const t2 = performance.now();
         root.dataset.reportMs = (t1 - t0).toFixed(1);
         root.dataset.renderMs = (t2 - t1).toFixed(1);
@@ -130,15 +196,21 @@ export class ComputeSession {
         this.simTimer = setTimeout(() => void this.computeSim(eff), SIM_PAUSE_MS);
       } else {
         this.remoteError = result;
+        this.updateSource();
         this.events.errors();
       }
     } catch (e) {
-      if (!(e instanceof Superseded)) throw e;
+      // Superseded: a newer input is on its way. Anything else is the worker failing, which the
+      // status line reports (PulabClient onFatal); never an unhandled rejection.
+      if (!(e instanceof Superseded)) console.warn('report call failed:', e);
     } finally {
       delete root.dataset.busy;
       this.events.busy();
     }
   }
+
+  /** Whether simulations are computed (a shown panel draws them). */
+  wantsSim = true;
 
   /** The worker for simulations and CSV exports (started on first use). */
   simWorker(): PulabClient | null {
@@ -147,14 +219,16 @@ export class ComputeSession {
   }
 
   private async computeSim(eff: Input): Promise<void> {
+    if (!this.wantsSim || !eff.sim) return;
     const sc = this.simWorker();
-    if (!sc || !eff.sim) return;
+    if (!sc) return;
     try {
       const { result } = await sc.call('report', simInput(eff), 'sim');
       if (result.ok) {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
         this.simFieldError = null;
+        this.simWorkerFailed = false;
       } else {
         this.simError = `${result.field}: ${errText(result)}`;
         this.simFieldError = result.field.startsWith('sim') ? result : null;
@@ -162,7 +236,12 @@ export class ComputeSession {
       }
       this.events.sim();
     } catch (e) {
-      if (!(e instanceof Superseded)) throw e;
+      if (e instanceof Superseded) return;
+      // The simulation worker could not start or died: say so at the plots, with a retry.
+      this.simReport = null;
+      this.simWorkerFailed = true;
+      this.simError = t('simWorkerFailed', { m: e instanceof Error ? e.message : String(e) });
+      this.events.sim();
     }
   }
 
@@ -170,7 +249,7 @@ export class ComputeSession {
   private persist(eff: Input): void {
     if (this.embed) return;
     const hash = encodeHash(eff, this.units);
-    if (location.hash !== hash) history.replaceState(null, '', hash);
+    if (location.hash !== hash && !this.keepLink) history.replaceState(null, '', hash);
     store(STORAGE_KEY, JSON.stringify(eff));
   }
 }

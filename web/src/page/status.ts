@@ -2,30 +2,42 @@
 import { h } from '../dom';
 import { t, type Key } from '../i18n';
 import type { PulabClient } from '../rpc';
+import { mark } from './marks';
 
 export interface BootState {
   stage: Key;
   fraction: number;
   failed?: string;
+  /** A failed boot about to be tried again. */
+  retry?: { message: string; attempt: number; of: number; seconds: number };
 }
 
 export class StatusLine {
   boot: BootState = { stage: 'boot_runtime', fraction: 0 };
   private client: PulabClient | null = null;
 
-  constructor(private root: HTMLElement, private lastMs: () => number) {}
+  constructor(private root: HTMLElement, private session: { lastMs: number }) {}
 
   /** Follow a client that may already be booting; `onReady` runs once it is (or now, if it is). */
   follow(client: PulabClient, onReady: (bootMs: number) => void): void {
     this.client = client;
+    for (const [stage, at] of Object.entries(client.stageAt)) mark(`boot-${stage}`, at);
     client.events = {
       onProgress: (stage, fraction) => {
+        mark(`boot-${stage}`);
         this.boot = { stage: `boot_${stage}` as Key, fraction };
         this.render();
       },
-      onReady,
+      onReady: (ms) => {
+        mark('boot-ready');
+        onReady(ms);
+      },
       onFatal: (message) => {
-        this.boot = { ...this.boot, failed: message };
+        this.boot = { ...this.boot, failed: message, retry: undefined };
+        this.render();
+      },
+      onRetry: (message, attempt, of, delayMs) => {
+        this.boot = { ...this.boot, retry: { message, attempt, of, seconds: Math.round(delayMs / 1000) } };
         this.render();
       },
     };
@@ -39,11 +51,17 @@ export class StatusLine {
     const ready = this.client?.ready === true;
     document.documentElement.dataset.ready = ready ? '1' : '0';
     if (b.failed) {
-      el.replaceChildren(h('span', { class: 'status-fatal', role: 'alert' }, `${t('bootFailed')}: ${b.failed}. ${t('fatalHelp')}`));
+      el.replaceChildren(h('span', { class: 'status-fatal', role: 'alert' }, `${t('bootFailed')}: ${b.failed}. ${t('fatalHelp')}`),
+        h('button', { type: 'button', class: 'status-reload', onclick: () => location.reload() }, t('reload')));
+    } else if (!ready && b.retry) {
+      el.replaceChildren(h('span', { class: 'status-retry', role: 'status' }, t('bootRetry', { m: b.retry.message, s: b.retry.seconds, n: b.retry.attempt, of: b.retry.of })));
     } else if (!ready) {
-      el.replaceChildren(h('span', {}, t(b.stage)), h('progress', { max: 1, value: b.fraction }));
+      // Numbers already on screen say where they come from (<html data-numbers>).
+      const shown = document.documentElement.dataset.numbers;
+      const note = shown === 'build' ? t('numbers_build') : shown === 'cached' ? t('numbers_cached') : shown === 'stale' ? t('numbers_waiting') : t(b.stage);
+      el.replaceChildren(h('span', { class: shown === 'none' ? '' : 'prelive' }, note), h('progress', { max: 1, value: b.fraction }));
     } else {
-      const ms = this.lastMs();
+      const ms = this.session.lastMs;
       el.replaceChildren(h('span', { class: 'ok' }, `● ${t('boot_ready')}`), h('span', { class: 'lat' }, ms ? ` · ${t('latency', { ms: ms.toFixed(1) })}` : ''));
     }
   }

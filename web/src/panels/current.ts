@@ -5,6 +5,7 @@ import { getLang, t } from '../i18n';
 const figs = new WeakMap<HTMLElement, { fig: HTMLElement; sim: unknown; stamp: string }>();
 import type { PiAxis } from '../report-types';
 import { renderCurrentStep } from '../figures/current-step';
+import { simPlaceholder } from '../figures/figure';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
 import { traceTable } from './vendor';
@@ -36,9 +37,10 @@ function axisRow(a: 'd' | 'q', g: PiAxis | undefined): HTMLElement {
 
 export const currentPanel: Panel = {
   id: 'current',
+  usesSim: true,
   title: 'p_current',
   render(el, ctx) {
-    const { report, simReport, simError, input } = ctx;
+    const { report, simReport, input } = ctx;
     const pi = report?.current_pi;
     const method = pi?.method ?? String(input.current_loop?.method ?? 'bandwidth');
     const ex = pi?.step_example;
@@ -71,7 +73,7 @@ export const currentPanel: Panel = {
     ].filter((x): x is HTMLElement => x !== null));
     const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
     if (sim && (sim !== f.sim || stamp !== f.stamp)) renderCurrentStep(figEl, sim, axis, ctx.report?.input.drive?.ts_s as number | undefined);
-    else if (!sim) figEl.replaceChildren(h('div', { class: 'plot-placeholder' }, simError ? t('simNotAvailable', { m: simError }) : t('simRunning')));
+    else if (!sim) figEl.replaceChildren(simPlaceholder(ctx));
     f.sim = sim;
     f.stamp = stamp;
   },

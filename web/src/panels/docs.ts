@@ -9,6 +9,7 @@ import { renderMarkdown } from '../docs/render';
 import { getPath } from '../state';
 import { renderCurrentStep } from '../figures/current-step';
 import { renderPllTrack } from '../figures/pll-track';
+import { simPlaceholder } from '../figures/figure';
 import type { Panel, PanelContext } from './panel';
 
 const CHAPTERS = import.meta.glob('../../../docs/{zh,en}/*.md', { query: '?raw', import: 'default', eager: true }) as Record<string, string>;
@@ -119,12 +120,14 @@ function fillEmbeds(body: HTMLElement, ctx: PanelContext): void {
     const axis = String((ctx.input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd';
     if (name === 'current' && sim?.current) renderCurrentStep(fig, sim.current, axis);
     else if (name === 'pll' && sim?.pll) renderPllTrack(fig, sim.pll);
-    else fig.replaceChildren(h('div', { class: 'plot-placeholder' }, ctx.simError ? t('simNotAvailable', { m: ctx.simError }) : t('simRunning')));
+    else fig.replaceChildren(simPlaceholder(ctx));
   }
 }
 
 export const docsPanel: Panel = {
   id: 'docs',
+  usesSim: true,
+  needsPython: true,
   title: 'p_docs',
   render(el, ctx) {
     if (!docsAvailable() || !INDEX) {

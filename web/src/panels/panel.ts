@@ -12,6 +12,8 @@ export interface PanelContext {
   /** The report with the "sim" section, or null; `simError` when the simulation failed. */
   simReport: Report | null;
   simError: string | null;
+  /** Present when the simulation failed for a reason a retry may cure (its worker died). */
+  retrySim?: () => void;
   input: Input;
   client: PulabClient | null;
   embed: boolean;
@@ -21,6 +23,10 @@ export interface Panel {
   id: PanelId;
   /** i18n key of the title. */
   title: string;
+  /** Calls Python itself (ctx.client): rendered again once Python is ready. */
+  needsPython?: boolean;
+  /** Shows simulation results: the simulation runtime starts only if a shown panel has this. */
+  usesSim?: boolean;
   /** Render into `el` (called on every new report and on a language switch). */
   render(el: HTMLElement, ctx: PanelContext): void;
 }

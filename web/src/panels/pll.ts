@@ -4,13 +4,16 @@ import { getLang, t } from '../i18n';
 /** Per host element: the figure element kept across renders, and what it shows. */
 const figs = new WeakMap<HTMLElement, { fig: HTMLElement; sim: unknown; stamp: string }>();
 import { renderPllTrack } from '../figures/pll-track';
+import { simPlaceholder } from '../figures/figure';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
 
 export const pllPanel: Panel = {
   id: 'pll',
+  usesSim: true,
   title: 'p_pll',
-  render(el, { report, simReport, simError }) {
+  render(el, ctx) {
+    const { report, simReport } = ctx;
     const g = report?.pll ?? {};
     const sim = simReport?.sim?.pll;
     const f = figs.get(el) ?? { fig: h('div', { class: 'figure' }), sim: null, stamp: '' };
@@ -43,7 +46,7 @@ export const pllPanel: Panel = {
     ].filter((x): x is HTMLElement => x !== null));
     const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
     if (sim && (sim !== f.sim || stamp !== f.stamp)) renderPllTrack(figEl, sim);
-    else if (!sim) figEl.replaceChildren(h('div', { class: 'plot-placeholder' }, simError ? t('simNotAvailable', { m: simError }) : t('simRunning')));
+    else if (!sim) figEl.replaceChildren(simPlaceholder(ctx));
     f.sim = sim;
     f.stamp = stamp;
   },

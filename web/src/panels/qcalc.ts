@@ -66,6 +66,7 @@ function compute(el: HTMLElement, ctx: PanelContext): void {
 
 export const qcalcPanel: Panel = {
   id: 'qcalc',
+  needsPython: true,
   title: 'p_qcalc',
   render(el, ctx) {
     if (ctx.client && last === null) {

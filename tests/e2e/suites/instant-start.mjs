@@ -1,0 +1,142 @@
+// Issue 8, instant start: <html data-numbers> (build → live, cached → live, stale while typing
+// before Python is ready), the snapshot refused → full boot, no SharedWorker → dedicated Worker,
+// embeds sharing one runtime per kind, and the server's compression and validators.
+import { readdirSync, statSync } from 'node:fs';
+import { join } from 'node:path';
+
+/** A gate for the Python runtime's files: requests under pyodide/ wait until open() is called. */
+function gate() {
+  let open;
+  const opened = new Promise((r) => (open = r));
+  return { hold: (rel) => (rel.startsWith('pyodide/') ? opened : undefined), open: () => open() };
+}
+const numbersIs = (page, v, timeout = 60_000) =>
+  page.waitForFunction((want) => document.documentElement.dataset.numbers === want, v, { timeout, polling: 20 });
+
+export default async function instantStart(ctx) {
+  const { check, assert, newPage, compareShown, golden, cpython, serve, browser, ROOT, SHOTS, valueOf } = ctx;
+  const seed = golden('01_seed_motor.json');
+
+  await check('data-numbers: "build" before Python (seed numbers, marked), typing kept and computed once ready, then "live"', async () => {
+    const g = gate();
+    const srv = await serve('/held/', { hold: g.hold });
+    const page = await newPage();
+    await page.goto(srv.url);
+    await numbersIs(page, 'build', 15_000);
+    const n = await compareShown(page, seed.expected);
+    assert(n >= 60, `only ${n} prerendered numbers`);
+    assert((await page.$eval('section.panel', (e) => getComputedStyle(e).borderTopStyle)) === 'dashed', 'build numbers not marked');
+    assert((await page.$$('.status .prelive')).length === 1, 'status does not say where the numbers come from');
+    await page.screenshot({ path: join(SHOTS, '10-build-numbers.png') });
+    await page.fill('input[name="motor.rs_ohm"]', '3.3');
+    await numbersIs(page, 'stale', 5000);
+    assert(await page.$eval('main.panels', (e) => e.classList.contains('stale')), 'panels not marked stale');
+    const want = cpython({ ...seed.input, motor: { ...seed.input.motor, rs_ohm: 3.3 } });
+    g.open();
+    await numbersIs(page, 'live');
+    assert((await page.inputValue('input[name="motor.rs_ohm"]')) === '3.3', 'typed value lost');
+    assert(await compareShown(page, want) >= 60, 'live numbers');
+    assert((await valueOf(page, 'vendor.Rpm.value')) === want.vendor.Rpm.value, 'Rpm of the typed input');
+
+    // A returning visitor: the last report, kept locally, paints before Python ("cached").
+    await page.waitForTimeout(1500); // the cache is written after a pause
+    const state = await page.context().storageState();
+    await page.context().close();
+    const g2 = gate();
+    const srv2 = await serve('/held/', { hold: g2.hold }); // same path, new origin (port): copy the storage over
+    const origin = new URL(srv.url).origin;
+    const st = { cookies: [], origins: state.origins.filter((o) => o.origin === origin).map((o) => ({ ...o, origin: new URL(srv2.url).origin })) };
+    const c2 = await browser.newContext({ viewport: { width: 1366, height: 768 }, storageState: st });
+    const p2 = await c2.newPage();
+    p2.on('pageerror', (e) => { throw e; });
+    await p2.goto(srv2.url);
+    await numbersIs(p2, 'cached', 15_000);
+    assert(await compareShown(p2, want) >= 60, 'cached numbers');
+    g2.open();
+    await numbersIs(p2, 'live');
+    await c2.close();
+  });
+
+  await check('snapshot refused (404, or a wrong size) → Python boots in full, same golden numbers', async () => {
+    for (const [prefix, faults] of [['/nosnap/', { refuse: /snapshot-.*\.bin/ }], ['/badsnap/', { corrupt: /snapshot-.*\.bin/ }]]) {
+      const srv = await serve(prefix, faults);
+      const page = await newPage();
+      await page.goto(srv.url);
+      await numbersIs(page, 'live', 90_000);
+      const d = await page.evaluate(() => ({ ...document.documentElement.dataset }));
+      assert(d.pythonBoot === 'full', `boot from ${d.pythonBoot}`);
+      assert(await compareShown(page, seed.expected) >= 60, 'numbers');
+      await page.context().close();
+    }
+    const dist = readdirSync(join(ROOT, 'dist/pyodide'));
+    assert(dist.some((f) => /^snapshot-[0-9a-f]{12}\.bin$/.test(f)), 'the build made no snapshot (so the fast path was not tested)');
+  });
+
+  await check('the snapshot is used when served (data-python-boot="snapshot")', async () => {
+    const page = await newPage();
+    await page.goto(ctx.subSrv.url);
+    await numbersIs(page, 'live', 60_000);
+    assert((await page.evaluate(() => document.documentElement.dataset.pythonBoot)) === 'snapshot', 'not from the snapshot');
+    await page.context().close();
+  });
+
+  await check('no SharedWorker (Chrome for Android) → a dedicated Worker, live golden numbers', async () => {
+    const page = await newPage();
+    await page.addInitScript(() => {
+      delete window.SharedWorker;
+    });
+    await page.goto(`${ctx.subSrv.url}#in=${encodeURIComponent(JSON.stringify(golden('04_ind380_7k5.json').input))}`);
+    await numbersIs(page, 'live', 60_000);
+    assert((await page.evaluate(() => document.documentElement.dataset.runtime)) === 'dedicated', 'not dedicated');
+    assert(await compareShown(page, golden('04_ind380_7k5.json').expected) >= 60, 'numbers');
+    await page.context().close();
+  });
+
+  await check('embeds share one runtime per kind: 4 iframes → ≤ 2 shared workers, 0 dedicated, every frame "live"', async () => {
+    const panels = ['bases', 'vendor', 'current', 'pll'];
+    const page = await newPage();
+    const host = `<!doctype html><meta charset="utf-8"><title>host</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="800" height="300"></iframe>`).join('')}`;
+    await page.route(`${ctx.subSrv.url}host.html`, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
+    const cdp = await browser.newBrowserCDPSession();
+    const kinds = [];
+    cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
+      if (t.type === 'shared_worker' || t.type === 'worker') kinds.push(t.type);
+    });
+    await cdp.send('Target.setDiscoverTargets', { discover: true });
+    const before = kinds.length;
+    await page.goto(`${ctx.subSrv.url}host.html`);
+    while (page.frames().length < 1 + panels.length) await page.waitForTimeout(20);
+    const frames = page.frames().filter((f) => f !== page.mainFrame());
+    await Promise.all(frames.map((f) => f.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 90_000, polling: 50 })));
+    await page.waitForTimeout(2000); // the simulation runtime of the plot panels
+    const started = kinds.slice(before);
+    await cdp.send('Target.setDiscoverTargets', { discover: false });
+    await cdp.detach();
+    assert(started.filter((k) => k === 'worker').length === 0, `dedicated workers: ${started.join(',')}`);
+    assert(started.filter((k) => k === 'shared_worker').length <= 2, `runtimes: ${started.join(',')}`);
+    for (const f of frames) assert((await f.$$('section.panel')).length === 1, 'one panel per embed');
+    await page.context().close();
+  });
+
+  await check('server: precompressed brotli/gzip by Accept-Encoding, ETag/Last-Modified → 304, hashed files immutable', async () => {
+    const base = ctx.subSrv.url;
+    const html = await fetch(base, { headers: { 'accept-encoding': 'identity' } });
+    assert(html.headers.get('etag') && html.headers.get('last-modified'), 'no validators');
+    assert(html.headers.get('content-security-policy') === ctx.CSP, 'CSP header');
+    const again = await fetch(base, { headers: { 'if-none-match': html.headers.get('etag') } });
+    assert(again.status === 304, `If-None-Match → ${again.status}`);
+    const since = await fetch(base, { headers: { 'if-modified-since': html.headers.get('last-modified') } });
+    assert(since.status === 304, `If-Modified-Since → ${since.status}`);
+    const wasm = await fetch(`${base}pyodide/pyodide.asm.wasm`, { headers: { 'accept-encoding': 'gzip, br' } });
+    assert(wasm.headers.get('content-encoding') === 'br' && wasm.headers.get('content-type') === 'application/wasm', 'wasm not brotli');
+    const gz = await fetch(`${base}pyodide/pyodide.asm.wasm`, { headers: { 'accept-encoding': 'gzip' } });
+    assert(gz.headers.get('content-encoding') === 'gzip', 'no gzip');
+    const snap = readdirSync(join(ROOT, 'dist/pyodide')).find((f) => /^snapshot-.*\.bin$/.test(f));
+    const s = await fetch(`${base}pyodide/${snap}`, { method: 'HEAD', headers: { 'accept-encoding': 'br' } });
+    assert(/immutable/.test(s.headers.get('cache-control') ?? ''), 'hashed snapshot not immutable');
+    assert(/no-cache/.test(html.headers.get('cache-control') ?? ''), 'index.html must revalidate');
+    const assets = readdirSync(join(ROOT, 'dist/assets'));
+    const missing = assets.filter((f) => /\.(js|css)$/.test(f) && statSync(join(ROOT, 'dist/assets', f)).size >= 1024 && !assets.includes(`${f}.br`));
+    assert(missing.length === 0, `no .br for ${missing.join(', ')}`);
+  });
+}

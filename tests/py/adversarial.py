@@ -1,0 +1,174 @@
+"""Seeded generator of adversarial report inputs (issue 14), as JSON text or raw bytes.
+
+Each case starts from a valid input (the seed motor, with a short simulation so
+valid cases stay fast) and applies one or two mutations from four families:
+structural (wrong shapes, deep nesting, missing and unknown sections), type (a
+field replaced by a value of another JSON type), numeric edge (signed zero,
+subnormals, the float range's ends, integer literals of 309+ digits, NaN and
+Infinity literals, the period caps of the simulations) and unicode (keys and
+strings with newline, NUL, U+2028, lone surrogates, the empty key). A few cases
+are text-level: truncated, bracket bombs, invalid UTF-8 (bytes, CLI only).
+"""
+from __future__ import annotations
+
+import copy
+import json
+import random
+
+from conftest import SEED_INPUT
+
+__all__ = ["cases", "FIELDS"]
+
+BASE = copy.deepcopy(SEED_INPUT)
+# A short run keeps valid cases cheap; mutations of these two reach the caps.
+BASE["sim"] = {"current": {"duration_s": 2e-3}, "pll": {"duration_s": 2e-3}}
+
+#: Every field path of the contract's input (docs/contract.md), the sim section included.
+FIELDS = [
+    *(("motor", k) for k in ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm",
+                             "ld_h", "lq_h", "bemf_v", "pole_pairs")),
+    *(("drive", k) for k in ("base_freq_hz", "udc_v", "ts_s")),
+    *(("conventions", k) for k in ("base", "base_voltage_v", "base_current_a", "angle_base",
+                                   "inductance_unit")),
+    *(("current_loop", k) for k in ("method", "bandwidth_hz", "damping", "kp", "ki", "pm_kp",
+                                    "pm_ki")),
+    *(("pll", k) for k in ("bandwidth_hz", "damping")),
+    *(("raw", k) for k in ("Rpm", "LD", "LQ", "BEMF", "UDC")),
+    *(("sim", "current", k) for k in ("axis", "step_a", "duration_s", "speed_hz", "delay")),
+    *(("sim", "pll", k) for k in ("speed_hz", "angle_step_deg", "ramp_hz_per_s", "duration_s")),
+]
+
+NASTY_TEXT = ["", " ", "\n", "a\nb", "\r", "\x00", "\u2028", "\u2029", "\ud800", "\udfff",
+              "\u202e", "\ufeff", "😀", "电机", "'", '"', "\\", "motor.rs_ohm", "[0]", "toString",
+              "__proto__", "constructor", "x" * 5000, "\t", "\x1b[31m", "NaN", "1e999", "rms ",
+              "d", "q", "custom", "integers"]
+
+# Literal JSON number texts: the parser sees these exactly as written.
+NUMBER_LITERALS = ["0", "-0", "-0.0", "1e-324", "5e-324", "2.2250738585072014e-308",
+                   "1.7976931348623157e308", "-1.7976931348623157e308", "1e308", "1e309",
+                   "-1e309", "1" + "0" * 308, "9" * 309, "-" + "9" * 309, "9" * 4000,
+                   "1" + "0" * 4400, "NaN", "Infinity", "-Infinity", "2147483647",
+                   "2147483648", "-2147483648", "9223372036854775808", "18446744073709551616",
+                   "1e-9", "9.99e-10", "1", "1.0", "1.5", "-1", "65535", "65536", "1e9",
+                   "1000000001", "1e-3", "1e3", "0.5", "100", "200000", "500000", "1e300",
+                   "4.9e-324", "123456789012345678901234567890"]
+
+
+def _value(rng: random.Random, depth: int = 0):
+    """A random JSON value (as a Python object) of any type."""
+    kind = rng.randrange(9 if depth < 3 else 6)
+    if kind == 0:
+        return None
+    if kind == 1:
+        return rng.choice([True, False])
+    if kind == 2:
+        return rng.choice([0, -1, 1, 2 ** 31 - 1, 2 ** 31, -2 ** 63, 2 ** 64, 10 ** 20])
+    if kind == 3:
+        return rng.choice([0.0, -0.0, 1e-300, 1e300, -1e308, 5e-324, 0.1, 1e9, 1.0000001e9])
+    if kind in (4, 5):
+        return rng.choice(NASTY_TEXT)
+    if kind == 6:
+        return [_value(rng, depth + 1) for _ in range(rng.randrange(3))]
+    if kind == 7:
+        return {rng.choice(NASTY_TEXT): _value(rng, depth + 1) for _ in range(rng.randrange(3))}
+    return {"toString": 1} if rng.random() < 0.5 else {"valueOf": [1]}
+
+
+def _get_parent(inp: dict, path: tuple) -> dict:
+    node = inp
+    for k in path[:-1]:
+        if not isinstance(node.get(k), dict):
+            node[k] = {}
+        node = node[k]
+    return node
+
+
+def _mutate(rng: random.Random, inp: dict) -> tuple:
+    """Apply one mutation; returns (object, literal substitutions {marker: text})."""
+    lits = {}
+    family = rng.randrange(5)
+    path = rng.choice(FIELDS)
+    if family == 0:  # structural
+        choice = rng.randrange(8)
+        if choice == 0:
+            return _value(rng), lits
+        if choice == 1:
+            inp.pop(rng.choice(list(inp)), None)
+        elif choice == 2:
+            inp[rng.choice(NASTY_TEXT)] = _value(rng)
+        elif choice == 3:
+            _get_parent(inp, path)[rng.choice(NASTY_TEXT)] = _value(rng)
+        elif choice == 4:
+            # Written as text: json.dumps itself would recurse too deep.
+            depth = rng.choice([10, 28, 29, 30, 31, 100, 1000, 5000])
+            marker = f"@@{rng.randrange(10 ** 9)}@@"
+            lits[marker] = ("[" * depth + "1" + "]" * depth if rng.random() < 0.5 else
+                            '{"k":' * depth + "1" + "}" * depth)
+            _get_parent(inp, path)[path[-1]] = marker
+        elif choice == 5:
+            sec = path[0]
+            inp[sec] = _value(rng)
+        elif choice == 6:
+            _get_parent(inp, path).pop(path[-1], None)
+        else:
+            inp["sim"] = rng.choice([None, {}, [], {"current": None}, {"pll": []}, "sim"])
+    elif family == 1:  # type
+        _get_parent(inp, path)[path[-1]] = _value(rng)
+    elif family == 2:  # numeric edge, written as a literal
+        marker = f"@@{rng.randrange(10 ** 9)}@@"
+        lits[marker] = rng.choice(NUMBER_LITERALS)
+        _get_parent(inp, path)[path[-1]] = marker
+    elif family == 3:  # coherent combinations that reach deeper code
+        marker, other = f"@@{rng.randrange(10 ** 9)}@@", f"@@{rng.randrange(10 ** 9)}@@"
+        lits[marker], lits[other] = rng.choice(NUMBER_LITERALS), rng.choice(NUMBER_LITERALS)
+        section, value = rng.choice([
+            ("current_loop", {"method": "integers", "pm_kp": marker, "pm_ki": other}),
+            ("current_loop", {"method": "manual", "kp": marker, "ki": other}),
+            ("conventions", {"base": "custom", "base_voltage_v": marker, "base_current_a": other}),
+            ("sim", {"current": {"duration_s": marker, "step_a": other}, "pll": {"duration_s": marker}}),
+            ("sim", {"pll": {"duration_s": 1e-3, "ramp_hz_per_s": marker, "speed_hz": other}}),
+            ("drive", {"udc_v": marker, "ts_s": other}),
+        ])
+        inp[section] = value
+    else:  # unicode in keys and strings
+        if rng.random() < 0.5:
+            _get_parent(inp, path)[rng.choice(NASTY_TEXT)] = rng.choice([1, "x", None])
+        else:
+            _get_parent(inp, path)[path[-1]] = rng.choice(NASTY_TEXT)
+    return inp, lits
+
+
+def _text(obj, lits: dict, ascii_only: bool) -> str:
+    text = json.dumps(obj, ensure_ascii=ascii_only)
+    for marker, literal in lits.items():
+        text = text.replace(json.dumps(marker), literal)
+    return text
+
+
+def cases(n: int, seed: int = 14):
+    """``n`` adversarial inputs: yields ``bytes`` (UTF-8 unless deliberately not)."""
+    rng = random.Random(seed)
+    for i in range(n):
+        r = rng.random()
+        if r < 0.02:  # text-level: broken JSON, bracket bombs, bad encodings
+            yield rng.choice([b"", b"{", b"[" * 100000, b"{\"motor\":" * 50000, b"\xff\xfe{}",
+                              b"{\"motor\": \xc3}", b"\"\\ud800\"", b"nul", b"{} {}",
+                              b"{\"a\":1,}", b"\x00", json.dumps(BASE).encode()[:rng.randrange(200)]])
+            continue
+        inp = copy.deepcopy(BASE)
+        if rng.random() < 0.2:  # no simulation asked for
+            inp.pop("sim")
+        lits = {}
+        for _ in range(1 + (rng.random() < 0.3)):
+            obj, more = _mutate(rng, inp)
+            lits.update(more)
+            if not isinstance(obj, dict):
+                inp = obj
+                break
+        # An untouched simulation costs time and tests nothing new: keep it in one of twenty.
+        if isinstance(inp, dict) and inp.get("sim") == BASE["sim"] and rng.random() < 0.95:
+            del inp["sim"]
+        try:
+            yield _text(inp, lits, rng.random() < 0.5).encode("utf-8", "surrogatepass")
+        except ValueError:
+            yield json.dumps(inp).encode()

@@ -1,0 +1,160 @@
+"""The CLI and pulab.api keep their contract for every input (issue 14).
+
+Contract (docs/contract.md): exit 0 with strict JSON on stdout, or exit 2 with
+exactly one stderr line ``error: FIELD: MESSAGE``; the api returns
+``{"ok": false, "field", "message", "message_zh"}``, each one printable line.
+The fuzz run sends 10,000 seeded adversarial inputs (tests/py/adversarial.py)
+through both ``run_json`` and the CLI entry ``main`` in-process, checks that
+both name the same field, and prints the count; a handful go through real
+subprocesses too.
+"""
+import contextlib
+import io
+import json
+import subprocess
+import sys
+from collections import Counter
+
+import pytest
+
+from adversarial import BASE, cases
+from conftest import ROOT
+from pulab.__main__ import main
+from pulab.api import export_json, qcalc_json, run_json
+from pulab.jsontext import MAX_DEPTH, parse
+
+FUZZ_CASES = 10_000
+
+
+def _strict(text: str):
+    def refuse(name):
+        raise AssertionError(f"non-strict JSON constant {name}")
+    return json.loads(text, parse_constant=refuse)
+
+
+def _one_line(s) -> bool:
+    return isinstance(s, str) and s != "" and s.isprintable()
+
+
+def _api(text: str) -> tuple:
+    out = _strict(run_json(text))
+    if out["ok"]:
+        assert set(out) == {"ok", "report"} and isinstance(out["report"], dict)
+        return "ok", None
+    assert set(out) == {"ok", "field", "message", "message_zh"}, out
+    assert all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
+    assert out["message_zh"] != out["message"] or out["message"].isascii() is False, out
+    return "error", out["field"]
+
+
+def _cli(data: bytes) -> tuple:
+    stdin = io.TextIOWrapper(io.BytesIO(data), encoding="utf-8")
+    out, err = io.StringIO(), io.StringIO()
+    saved = sys.stdin
+    sys.stdin = stdin
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = main(["report", "-"])
+    finally:
+        sys.stdin = saved
+    return code, out.getvalue(), err.getvalue()
+
+
+def _check_cli(code: int, stdout: str, stderr: str):
+    if code == 0:
+        assert stderr == ""
+        _strict(stdout)
+        return "ok", None
+    assert code == 2 and stdout == "", (code, stdout[:200])
+    line = stderr[:-1]
+    assert stderr.endswith("\n") and _one_line(line) and line.startswith("error: "), repr(stderr)
+    return "error", line[len("error: "):].split(": ", 1)[0]
+
+
+def test_fuzzed_inputs_keep_the_contract_in_the_api_and_the_cli():
+    seen = Counter()
+    for data in cases(FUZZ_CASES):
+        cli = _check_cli(*_cli(data))
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError:
+            assert cli[0] == "error" and cli[1] == "input"
+            seen["not utf-8"] += 1
+            continue
+        api = _api(text)
+        assert api == cli, (data[:300], api, cli)
+        seen[api[0]] += 1
+    print(f"\nfuzzed inputs: {sum(seen.values())} through run_json and the CLI entry "
+          f"({dict(seen)})")
+    assert sum(seen.values()) == FUZZ_CASES
+    # The generator must reach valid reports and many distinct errors, or it tests little.
+    assert seen["ok"] > 100 and seen["error"] > 5000
+
+
+@pytest.mark.parametrize("data, field", [
+    (b"[" * 100000, "input"),
+    (json.dumps({**BASE, "motor": {**BASE["motor"], "rs_ohm": int("9" * 309)}}).encode(),
+     "motor.rs_ohm"),
+    (json.dumps({**BASE, "motor": {**BASE["motor"], "a\nb\u2028": 1}}).encode(),
+     "motor['a\\nb\\u2028']"),
+    (json.dumps({**BASE, "sim": {"pll": {"duration_s": 1e300}}}).encode(), "sim.pll.duration_s"),
+    (b"\xff{}", "input"),
+])
+def test_real_cli_processes(tmp_path, data, field):
+    """A handful of real ``python -m pulab`` runs, the file and stdin paths both."""
+    path = tmp_path / "in.json"
+    path.write_bytes(data)
+    for args, stdin in ((["report", str(path)], None), (["report", "-"], data)):
+        p = subprocess.run([sys.executable, "-m", "pulab", *args], input=stdin,
+                           capture_output=True, cwd=ROOT / "py", timeout=60)
+        assert (p.returncode, p.stdout) == (2, b""), p
+        assert p.stderr.decode().startswith(f"error: {field}: ") and p.stderr.count(b"\n") == 1, p
+
+
+def test_a_valid_input_through_a_real_process_is_strict_json():
+    p = subprocess.run([sys.executable, "-m", "pulab", "report", "-"],
+                       input=json.dumps(BASE).encode(), capture_output=True, cwd=ROOT / "py",
+                       timeout=60)
+    assert p.returncode == 0 and p.stderr == b""
+    assert "sim" in _strict(p.stdout.decode())
+
+
+@pytest.mark.parametrize("depth, ok", [(MAX_DEPTH, True), (MAX_DEPTH + 1, False)])
+def test_depth_cap(depth, ok):
+    text = "[" * depth + "]" * depth
+    if ok:
+        assert parse(text) is not None
+    else:
+        with pytest.raises(ValueError, match="nested deeper"):
+            parse(text)
+
+
+@pytest.mark.parametrize("fn, text, field", [
+    (qcalc_json, '{"format": [[["Q15"]]]}', "qcalc.format"),
+    (qcalc_json, '{"format": "Q0.15", "value": 1' + "0" * 400 + "}", "qcalc.value"),
+    (qcalc_json, "[" * 5000, "qcalc"),
+    (export_json, "{" * 5000, "input"),
+    (export_json, '{"input": null, "kind": {"x": 1}}', "input"),
+])
+def test_other_api_functions_name_the_field(fn, text, field):
+    out = _strict(fn(text))
+    assert out["ok"] is False and out["field"] == field and _one_line(out["message"]), out
+
+
+def test_fuzzed_qcalc_and_export_requests_keep_the_contract():
+    """The other api functions: 1,000 seeded requests each, built from the same hostile values."""
+    import random
+    from adversarial import NASTY_TEXT, NUMBER_LITERALS, _value
+    rng = random.Random(15)
+    count = 0
+    plain = {k: v for k, v in BASE.items() if k != "sim"}
+    for _ in range(1000):
+        req = {"format": rng.choice(["Q0.15", "Q15", "UQ8.8", "Q3.12", *NASTY_TEXT[:8]]),
+               rng.choice(["value", "raw", "word_bits", "rounding", "overflow", "format"]): "@@x@@"}
+        text = json.dumps(req).replace('"@@x@@"', rng.choice(NUMBER_LITERALS) if rng.random() < 0.5
+                                       else json.dumps(_value(rng)))
+        for fn, body in ((qcalc_json, text), (export_json, json.dumps({"input": plain, "kind": _value(rng)}))):
+            out = _strict(fn(body))
+            assert out["ok"] is True or all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
+            count += 1
+    print(f"\nfuzzed qcalc/export requests: {count}")

@@ -1,0 +1,151 @@
+// Issue 8: the numbers painted before Python runs must be the numbers Python gives, and every
+// fast path of the boot must fall back cleanly.
+//   prerender (CPython at build time) = Pyodide, byte for byte, for the seed and the golden inputs;
+//   the build-time memory snapshot loads back and answers alike; a refused snapshot → full boot;
+//   one runtime serves several clients (SharedWorker) without one superseding another's calls;
+//   the boot timeout counts time without progress, not total time.
+import { describe, it, expect, beforeAll } from 'vitest';
+import { readFileSync, readdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { loadPyodide } from 'pyodide';
+import { bootPulab, INDEX_URL, type NodePulab } from './pulab-node';
+import { REPO, runJsonCPython, seedKey } from '../../web/build/prerender';
+import { SNAPSHOT_MAX_BYTES, makeSnapshot, pulabFiles } from '../../web/build/snapshot';
+import { createRuntimeHost, fastOrFull, idleTimeout, type PyodideLike, type PyodideLoader } from '../../web/src/worker-logic';
+import { PULAB_FILES } from '../../web/src/pysources';
+import { effectiveInput } from '../../web/src/fields';
+import { reportInput, type Input } from '../../web/src/state';
+import type { WorkerToMain } from '../../web/src/protocol';
+
+const GOLDEN = fileURLToPath(new URL('../golden/', import.meta.url));
+/** The key the page sends for an input (numbers.ts reportKey). */
+const keyOf = (input: Input): string => JSON.stringify(reportInput(effectiveInput(input)));
+const goldenKeys = readdirSync(GOLDEN).filter((f) => /^\d\d_.*\.json$/.test(f))
+  .map((f) => [f, keyOf(JSON.parse(readFileSync(`${GOLDEN}${f}`, 'utf8')).input as Input)] as const);
+
+let p: NodePulab;
+beforeAll(async () => {
+  p = await bootPulab();
+});
+
+describe('prerendered report = Pyodide report (text of pulab.api.run_json)', () => {
+  it('seed input (the report the build paints): identical text', () => {
+    const key = seedKey();
+    const cpython = runJsonCPython(key);
+    expect(JSON.parse(cpython).report.vendor.Rpm.value).toBe(15022);
+    expect(p.raw('report', key)).toBe(cpython);
+  });
+  it.each(goldenKeys)('%s: identical text', (_f, key) => {
+    expect(p.raw('report', key)).toBe(runJsonCPython(key));
+  });
+});
+
+describe('memory snapshot (build time) and its fallback', () => {
+  it('is made, fits the size cap, loads back and answers as CPython; a worker boots from it', async () => {
+    const key = seedKey();
+    const expected = runJsonCPython(key);
+    const r = await makeSnapshot(INDEX_URL, pulabFiles(REPO), key, expected);
+    if (!r.ok) throw new Error(r.reason);
+    expect(r.bytes.length).toBeLessThanOrEqual(SNAPSHOT_MAX_BYTES);
+    const got = await bootHost(async () => (await loadPyodide({ indexURL: INDEX_URL, _loadSnapshot: r.bytes })) as unknown as PyodideLike);
+    expect(got.ready).toMatchObject({ type: 'ready', from: 'snapshot' });
+    expect(got.result).toBe(asPosted(expected));
+  }, 120_000);
+  it('a snapshot that is refused (corrupt bytes) → a full boot, same report, the reason noted', async () => {
+    const junk = new Uint8Array(1 << 20);
+    const got = await bootHost(async () => (await loadPyodide({ indexURL: INDEX_URL, _loadSnapshot: junk })) as unknown as PyodideLike);
+    expect(got.ready).toMatchObject({ type: 'ready', from: 'full' });
+    expect((got.ready as { note?: string }).note).toMatch(/snapshot refused/);
+    expect(got.result).toBe(asPosted(runJsonCPython(seedKey())));
+  }, 120_000);
+  it('no snapshot in the build → a full boot', async () => {
+    const r = await fastOrFull(null, async () => fakePy());
+    expect(r.from).toBe('full');
+  });
+});
+
+/** The report as the page receives it from the worker (parsed there, posted as an object). */
+const asPosted = (text: string): string => JSON.stringify(JSON.parse(text));
+
+/** Boot a runtime host with `fast` (falling back to a full boot), then run the seed report. */
+async function bootHost(fast: () => Promise<PyodideLike>): Promise<{ ready: WorkerToMain | undefined; result: string }> {
+  const load: PyodideLoader = () => fastOrFull(fast, async () => (await loadPyodide({ indexURL: INDEX_URL })) as unknown as PyodideLike);
+  const host = createRuntimeHost(load, PULAB_FILES);
+  const got: WorkerToMain[] = [];
+  const send = host.connect((m) => got.push(m));
+  send({ type: 'init', indexURL: INDEX_URL });
+  await host.ready;
+  const result = await new Promise<string>((resolve) => {
+    const send2 = host.connect((m) => m.type === 'result' && resolve(JSON.stringify(m.result)));
+    send2({ type: 'call', id: 1, kind: 'report', payload: seedKey() });
+  });
+  return { ready: got.find((m) => m.type === 'ready'), result };
+}
+
+/** A stand-in runtime: run_json echoes its input, so calls can be told apart. */
+function fakePy(): PyodideLike {
+  return {
+    version: 'fake',
+    FS: { mkdirTree: () => undefined, writeFile: () => undefined },
+    runPython: () => undefined,
+    pyimport: () => ({ run_json: (t: string) => JSON.stringify({ ok: true, echo: t }) }),
+  };
+}
+
+describe('one runtime, several clients (SharedWorker)', () => {
+  it('a client connecting after the boot is told "ready" at once; the same channel of two clients does not coalesce', async () => {
+    let boots = 0;
+    const host = createRuntimeHost(async () => {
+      boots++;
+      return fakePy();
+    }, PULAB_FILES);
+    const a: WorkerToMain[] = [];
+    const b: WorkerToMain[] = [];
+    const sendA = host.connect((m) => a.push(m));
+    sendA({ type: 'init', indexURL: 'x/' });
+    await host.ready;
+    const sendB = host.connect((m) => b.push(m));
+    sendB({ type: 'init', indexURL: 'x/' });
+    expect(b.map((m) => m.type)).toEqual(['ready']);
+    sendA({ type: 'call', id: 1, kind: 'report', payload: '"a1"', channel: 'report' });
+    sendB({ type: 'call', id: 1, kind: 'report', payload: '"b1"', channel: 'report' });
+    sendA({ type: 'call', id: 2, kind: 'report', payload: '"a2"', channel: 'report' });
+    await new Promise((r) => setTimeout(r, 20));
+    expect(a.filter((m) => m.type === 'superseded')).toEqual([{ type: 'superseded', id: 1 }]);
+    expect(a.filter((m) => m.type === 'result').map((m) => m.type === 'result' && m.result)).toEqual([{ ok: true, echo: '"a2"' }]);
+    expect(b.filter((m) => m.type === 'result').map((m) => m.type === 'result' && m.result)).toEqual([{ ok: true, echo: '"b1"' }]);
+    expect(boots).toBe(1);
+  });
+});
+
+describe('boot timeout counts time without progress', () => {
+  const slowLoader = (steps: number, every: number): PyodideLoader => async (_url, progress) => {
+    for (let i = 0; i < steps; i++) {
+      await new Promise((r) => setTimeout(r, every));
+      progress('runtime', i / steps);
+    }
+    return fakePy();
+  };
+  it('a slow boot that keeps progressing (10 × 40 ms, idle limit 100 ms) succeeds', async () => {
+    const host = createRuntimeHost(slowLoader(10, 40), PULAB_FILES);
+    const got: WorkerToMain[] = [];
+    host.connect((m) => got.push(m))({ type: 'init', indexURL: 'x/', timeoutMs: 100 });
+    await host.ready;
+    expect(got.at(-1)?.type).toBe('ready');
+  });
+  it('a boot that stalls (one step of 300 ms, idle limit 100 ms) fails with "no progress"', async () => {
+    const host = createRuntimeHost(slowLoader(1, 300), PULAB_FILES);
+    const got: WorkerToMain[] = [];
+    host.connect((m) => got.push(m))({ type: 'init', indexURL: 'x/', timeoutMs: 100 });
+    await expect(host.ready).rejects.toThrow(/no progress for/);
+    expect(got.at(-1)).toMatchObject({ type: 'fatal' });
+  });
+  it('idleTimeout: kick() restarts the clock', async () => {
+    const w = idleTimeout(60, 'x');
+    const t = setInterval(() => w.kick(), 20);
+    const raced = await Promise.race([w.expired.then(() => 'expired', () => 'expired'), new Promise((r) => setTimeout(() => r('alive'), 200))]);
+    clearInterval(t);
+    w.stop();
+    expect(raced).toBe('alive');
+  });
+});

@@ -1,0 +1,29 @@
+// Build time: the default (seed) report computed by the same pulab code in CPython, so the page
+// paints numbers before Python has started in the browser (issue 8). The page recognises the
+// input by its key: the exact JSON text its worker would hand to pulab.api.run_json.
+import { execFileSync } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { effectiveInput } from '../src/fields';
+import { SEED_INPUT, reportInput } from '../src/state';
+
+export const REPO = fileURLToPath(new URL('../../', import.meta.url));
+
+/** The JSON text the page sends for the seed input (`reportInput(effectiveInput(input))`). */
+export function seedKey(): string {
+  return JSON.stringify(reportInput(effectiveInput(SEED_INPUT)));
+}
+
+/** The project's Python (the venv if made, else python3 from PATH); pulab needs only the standard library. */
+export function python(): string {
+  const venv = resolve(REPO, '.venv/bin/python');
+  return process.env.PULAB_PYTHON ?? (existsSync(venv) ? venv : 'python3');
+}
+
+/** pulab.api.run_json(key) in CPython: the exact text the worker's Pyodide returns for `key`. */
+export function runJsonCPython(key: string): string {
+  return execFileSync(python(), ['-c', 'import sys; from pulab.api import run_json; sys.stdout.write(run_json(sys.stdin.read()))'], {
+    cwd: REPO, env: { ...process.env, PYTHONPATH: resolve(REPO, 'py') }, input: key,
+  }).toString();
+}

@@ -1,0 +1,64 @@
+// Build time: a Pyodide memory snapshot taken after every pulab module is imported, so a worker
+// boots from it in a fraction of a normal boot (issue 8). Pyodide's snapshot API is private
+// (`_makeSnapshot`, `makeMemorySnapshot`, `_loadSnapshot`), so it is used only with the version it
+// was written against, and every snapshot is loaded back in Node and checked before it ships;
+// the worker falls back to a normal boot whenever the snapshot is missing or refused.
+import { loadPyodide, version } from 'pyodide';
+import { readFileSync, readdirSync, statSync } from 'node:fs';
+import { join, relative } from 'node:path';
+import { writePulab, type PyodideLike } from '../src/worker-logic';
+
+/** The Pyodide release whose private snapshot API this file was written and tested against. */
+export const SNAPSHOT_PYODIDE_VERSION = '314.0.7';
+/** Above this the snapshot is not shipped: Pyodide sizes the initial heap from it, and a
+ * larger heap made loads fail (RangeError) in the spikes of issue 8. */
+export const SNAPSHOT_MAX_BYTES = 48 * 1024 * 1024;
+
+interface SnapshotPyodide extends PyodideLike {
+  makeMemorySnapshot(): Uint8Array;
+}
+
+/** py/pulab/**.py keyed as the bundle's glob keys ('../../py/pulab/api.py'), as writePulab takes them. */
+export function pulabFiles(repo: string): Record<string, string> {
+  const out: Record<string, string> = {};
+  const walk = (dir: string): void => {
+    for (const f of readdirSync(dir)) {
+      const p = join(dir, f);
+      if (statSync(p).isDirectory()) walk(p);
+      else if (f.endsWith('.py')) out[`../../${relative(repo, p)}`] = readFileSync(p, 'utf8');
+    }
+  };
+  walk(join(repo, 'py/pulab'));
+  return out;
+}
+
+/** Python run before the snapshot is taken: everything the workers import, warmed by one call. */
+const WARM = `import json, pulab, pulab.api, pulab.sim, pulab.export
+pulab.api.run_json(json.dumps({}))`;
+
+export type SnapshotResult = { ok: true; bytes: Uint8Array; ms: number } | { ok: false; reason: string };
+
+/**
+ * Make the snapshot in Node and verify it: loaded back, it must give `expected` (the CPython
+ * text of pulab.api.run_json(key)) for `key`.
+ */
+export async function makeSnapshot(indexURL: string, files: Record<string, string>, key: string, expected: string): Promise<SnapshotResult> {
+  if (version !== SNAPSHOT_PYODIDE_VERSION) return { ok: false, reason: `pyodide ${version} is not ${SNAPSHOT_PYODIDE_VERSION}, the version the snapshot code was checked with` };
+  const t0 = performance.now();
+  const py = (await loadPyodide({ indexURL, _makeSnapshot: true })) as unknown as SnapshotPyodide;
+  writePulab(py, files);
+  py.runPython(WARM);
+  const bytes = py.makeMemorySnapshot();
+  const ms = performance.now() - t0;
+  if (bytes.length > SNAPSHOT_MAX_BYTES) return { ok: false, reason: `snapshot ${bytes.length} bytes > ${SNAPSHOT_MAX_BYTES}` };
+  try {
+    const back = (await loadPyodide({ indexURL, _loadSnapshot: bytes })) as unknown as PyodideLike;
+    writePulab(back, files);
+    const api = back.pyimport('pulab.api') as { run_json(text: string): string };
+    const got = api.run_json(key);
+    if (got !== expected) return { ok: false, reason: 'the snapshot gives another report than CPython' };
+  } catch (e) {
+    return { ok: false, reason: `the snapshot does not load back: ${e instanceof Error ? e.message : String(e)}` };
+  }
+  return { ok: true, bytes, ms };
+}

@@ -1,0 +1,56 @@
+// pu-lab offline cache (issue 14). A template: web/offline/plugin.ts fills in VERSION (a hash of
+// the whole build) and FILES (every file of the build) and emits it as dist/sw.js.
+//
+// Never stale after a new deployment: index.html and every file without a content hash in its
+// name (Pyodide's runtime) are fetched from the network first and only taken from the cache when
+// the network fails; files with a content hash (assets/name-HASH.js) are immutable, so the cache
+// may serve them first. A new build has a new VERSION: the new worker installs, then deletes the
+// caches of every other version.
+const VERSION = '__PULAB_VERSION__';
+const FILES = __PULAB_FILES__;
+const CACHE = `pulab-${VERSION}`;
+const SCOPE = new URL(self.registration.scope);
+const HASHED = /\/assets\/[^/]+-[A-Za-z0-9_-]{8,}\.[a-z0-9]+$/;
+
+self.addEventListener('install', (ev) => {
+  ev.waitUntil(caches.open(CACHE).then((c) => c.addAll(FILES.map((f) => new URL(f, SCOPE).href))).then(() => self.skipWaiting()));
+});
+
+self.addEventListener('activate', (ev) => {
+  ev.waitUntil(caches.keys()
+    .then((keys) => Promise.all(keys.filter((k) => k.startsWith('pulab-') && k !== CACHE).map((k) => caches.delete(k))))
+    .then(() => self.clients.claim()));
+});
+
+self.addEventListener('fetch', (ev) => {
+  const req = ev.request;
+  const url = new URL(req.url);
+  if (req.method !== 'GET' || url.origin !== SCOPE.origin || !url.pathname.startsWith(SCOPE.pathname)) return;
+  ev.respondWith(HASHED.test(url.pathname) ? cacheFirst(req) : networkFirst(req));
+});
+
+async function fromCache(req) {
+  const cache = await caches.open(CACHE);
+  const hit = await cache.match(req, { ignoreSearch: true });
+  if (hit || req.mode !== 'navigate') return hit;
+  return cache.match(new URL('index.html', SCOPE).href);
+}
+
+async function networkFirst(req) {
+  try {
+    const res = await fetch(req);
+    if (res.ok && !res.redirected) {
+      const copy = res.clone();
+      void caches.open(CACHE).then((c) => c.put(req, copy)).catch(() => undefined);
+    }
+    return res;
+  } catch (e) {
+    const hit = await fromCache(req);
+    if (hit) return hit;
+    throw e;
+  }
+}
+
+async function cacheFirst(req) {
+  return (await fromCache(req)) ?? networkFirst(req);
+}
