@@ -26,7 +26,8 @@ from .messages import to_zh
 from .report import report
 from .textnum import ascii_text, parse_int, parse_real
 
-__all__ = ["run_json", "qcalc", "qcalc_json", "export_json"]
+__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
+           "trace_json", "trace_examples_json", "vendors_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -142,5 +143,171 @@ def export_json(text: str) -> str:
                 raise InputError("sim", f"the input asks for no {kind[4:]} simulation")
             return json.dumps({"ok": True, "text": sim_csv(r, kind[4:])})
         raise InputError("kind", "must be one of header, csv_current, csv_pll")
+    except InputError as e:
+        return _fail(e)
+
+
+def sweep_json(text: str) -> str:
+    """A family sweep (:mod:`pulab.sweep`) on a JSON string, whole or in chunks.
+
+    The request is a sweep request (``input``, ``x``, optional ``y`` and ``profile``) with
+    ``op``: ``"sweep"`` (default: everything at once), ``"plan"`` (the axes and the number
+    of points, nothing computed), ``"chunk"`` with ``start`` and ``count`` (those points and
+    their summary; a page computes a sweep chunk by chunk to show progress and cancel), or
+    ``"merge"`` with ``summaries`` (the chunks' summaries → the sweep's summary).
+
+    Returns ``{"ok": true, ...}`` with ``plan``, ``chunk`` or ``summary``, or an error
+    naming the field.
+
+    >>> import json
+    >>> req = {"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3}}
+    >>> json.loads(sweep_json(json.dumps({**req, "op": "plan"})))["plan"]["x"]["values"]
+    [1.0, 1.5, 2.0]
+    >>> json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": 0, "count": 2})))[
+    ...     "chunk"]["points"]["error"][0]
+    'motor.rated_voltage_v: is required'
+    """
+    from . import sweep as sw  # imported on first use: report-only pages stay lean
+    try:
+        req = parse(text, "sweep")
+        op = req.get("op", "sweep") if isinstance(req, dict) else None
+        if op == "sweep":
+            out = {"sweep": sw.sweep(req)}
+        else:
+            plan = sw.make_plan(req)
+            if op == "plan":
+                out = {"plan": sw.describe(plan)}
+            elif op == "chunk":
+                out = {"chunk": sw.chunk(plan, req.get("start", 0), req.get("count"))}
+            elif op == "merge":
+                summaries = req.get("summaries")
+                if not isinstance(summaries, list):
+                    raise InputError("sweep.summaries", "must be a list of chunk summaries")
+                out = {"summary": sw.merge(plan, summaries)}
+            else:
+                raise InputError("sweep.op", "must be one of sweep, plan, chunk, merge")
+        return json.dumps({"ok": True, **out}, allow_nan=False)
+    except InputError as e:
+        return _fail(e)
+
+
+def batch_json(text: str) -> str:
+    """A batch (:mod:`pulab.batch`) on ``{"csv": text, "start": int, "count": int}``.
+
+    Returns ``{"ok": true, "total": rows, "columns": [...], "rows": [[cell, ...]], "csv":
+    text}`` for data rows ``start`` … ``start+count−1`` (``csv`` has the header when
+    ``start`` is 0, so the chunks' texts joined are the CLI's output), or an error naming
+    the field when the file as a whole is unreadable.  Bad rows come back in their
+    ``error`` cell.
+    """
+    from . import batch as bt  # imported on first use: report-only pages stay lean
+    try:
+        req = parse(text, "batch")
+        if not isinstance(req, dict):
+            raise InputError("batch", "must be an object")
+        columns, rows = bt.read_table(req.get("csv"))
+        start, count = req.get("start", 0), req.get("count", len(rows))
+        for name, v, hi in (("start", start, len(rows)), ("count", count, None)):
+            if isinstance(v, bool) or not isinstance(v, int) or v < 0 or (hi is not None and v > hi):
+                raise InputError(f"batch.{name}", f"must be 0..{hi if hi is not None else 'N'}, "
+                                 f"got {v!r}")
+        names = bt.output_columns(columns)
+        out = bt.batch_rows(req["csv"], start, count)
+        return json.dumps({"ok": True, "total": len(rows), "columns": names,
+                           "rows": [[r.get(n, "") for n in names] for r in out],
+                           "csv": bt.to_csv(names, out, start == 0)})
+    except InputError as e:
+        return _fail(e)
+    except ValueError as e:
+        return _fail(InputError("input", f"not valid JSON: {e}"))
+
+
+def trace_json(text: str) -> str:
+    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q"}``.
+
+    Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",
+    "message_zh"}`` with ``line`` and ``column`` when the code is at fault, and
+    ``inputs`` whenever the code compiled (so the page can offer input fields).
+
+    >>> r = json.loads(trace_json('{"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}}'))
+    >>> r["vars"]["x"]["value"], r["target"]
+    (4, 'c28x')
+    >>> json.loads(trace_json('{"code": "x = 1 +;"}'))["message"]
+    "1:8: expected a value, got ';'"
+    """
+    from .ctrace import TraceError, compile_code, trace_checked
+    checked = None
+    try:
+        try:
+            req = json.loads(text)
+        except ValueError as e:
+            raise InputError("input", f"not valid JSON: {e}") from None
+        if not isinstance(req, dict):
+            raise InputError("input", "must be an object")
+        unknown = set(req) - {"code", "target", "set", "global_q"}
+        if unknown:
+            raise InputError(sorted(unknown)[0], "unknown field (expected one of: code, "
+                             "target, set, global_q)")
+        sets = req.get("set") or {}
+        if not isinstance(sets, dict):
+            raise InputError("set", "must be an object")
+        checked = compile_code(req.get("code", ""), req.get("target", "c28x"))
+        return json.dumps(trace_checked(checked, sets, req.get("global_q")), allow_nan=False)
+    except InputError as e:
+        reply = json.loads(_fail(e))
+        if isinstance(e, TraceError):
+            reply.update(line=e.line, column=e.column)
+        if checked is not None:
+            reply["inputs"] = checked.inputs
+        return json.dumps(reply)
+
+
+def trace_examples_json(text: str = "") -> str:
+    """The tracer's example code and targets for the page: ``{"ok": true, "examples": [...],
+    "targets": [...]}``; each example has ``id``, ``title``, ``title_zh`` and ``code``.
+
+    >>> [e["id"] for e in json.loads(trace_examples_json())["examples"]][:2]
+    ['rpm', 'ld']
+    """
+    from .ctrace import TARGETS
+    from .ctrace.examples import EXAMPLES
+    return json.dumps({"ok": True, "targets": list(TARGETS),
+                       "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]})
+
+
+def vendors_json(text: str) -> str:
+    """Vendor profiles for the page (docs/contract.md, "Vendor profiles").
+
+    ``{"input": {...}, "action": "header", "profile": NAME}`` → ``{"ok": true, "text": ...}``;
+    ``{"input": {...}, "action": "translate", "from": NAME, "axis": "d"|"q",
+    "values": {FIELD: int, FIELD: int}}`` → ``{"ok": true, "translation": {...}}``;
+    bad input → an error naming the field.
+
+    >>> import json
+    >>> req = {"input": {"motor": {}}, "action": "header", "profile": "ti"}
+    >>> json.loads(vendors_json(json.dumps(req)))["field"]
+    'motor.rated_voltage_v'
+    """
+    from . import profiles
+    from .profiles.translate import translate
+    try:
+        req = parse(text)
+        if not isinstance(req, dict):
+            raise InputError("request", "must be a JSON object")
+        inp = req.get("input")
+        if not isinstance(inp, dict):
+            raise InputError("input", "must be a JSON object")
+        action = req.get("action")
+        if action == "header":
+            name = req.get("profile")
+            if name not in profiles.NAMES:
+                raise InputError("profile", f"must be one of {', '.join(profiles.NAMES)}, "
+                                 f"got {shown(name)}")
+            r = report({**inp, "profiles": inp.get("profiles") or {}})
+            return json.dumps({"ok": True, "text": profiles.header(r, name)})
+        if action == "translate":
+            t = translate(inp, req.get("from"), req.get("axis", "q"), req.get("values"))
+            return json.dumps({"ok": True, "translation": t}, allow_nan=False)
+        raise InputError("action", "must be one of header, translate")
     except InputError as e:
         return _fail(e)

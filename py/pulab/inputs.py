@@ -187,9 +187,9 @@ def normalize(inp: dict) -> dict:
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     for key in inp:
-        if key not in SECTIONS and key not in ("sim", "datasheet"):
+        if key not in SECTIONS and key not in ("sim", "datasheet", "profiles"):
             raise InputError(key_path("", key), f"unknown section (expected one of: "
-                             f"{', '.join(list(SECTIONS) + ['datasheet', 'sim'])})")
+                             f"{', '.join(list(SECTIONS) + ['datasheet', 'sim', 'profiles'])})")
     ds = object_fields(inp.get("datasheet"), "datasheet", _datasheet.FIELDS)
     m, conversions, d = _datasheet.apply(ds, _section(inp, "motor"), _section(inp, "drive"))
     c = _section(inp, "conventions")
@@ -262,4 +262,6 @@ def normalize(inp: dict) -> dict:
         out["datasheet"] = {"given": ds, "conversions": conversions}
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
+    if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor
+        out["profiles"] = inp["profiles"]
     return out

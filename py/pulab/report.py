@@ -11,17 +11,31 @@ Examples
 
 from __future__ import annotations
 
-import math
-
 from .bases import bases, flux_linkage, per_unit
 from .constants import magic_constants
 from .datasheet import mechanical
 from .gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .inputs import normalize
+from .messages import to_zh
 from .review import review
 from .vendor import current_pi_step, raw_from_si, vendor_results
 
-__all__ = ["report", "format_text"]
+__all__ = ["report", "format_text", "input_bases", "input_raw", "current_pi_section"]
+
+
+def _profile_warnings(prof: dict) -> list:
+    """One warning per profile constant the firmware could not store as intended."""
+    w = [f"profiles.ti: USER_checkForErrors would set {code} ({why})"
+         for code, why in prof["ti"]["checks"]]
+    for name, p in prof.items():
+        for k, c in p["constants"].items():
+            if "out_of_range" in c["flags"] or "saturate" in c["flags"]:
+                w.append(f"profiles.{name}.{k}: {c['ideal']:.6g} does not fit {c['format']}; "
+                         f"stored {c['value']}")
+            elif c["value"] == 0 and c["ideal"] != 0:
+                w.append(f"profiles.{name}.{k}: rounds to 0 in {c['format']} "
+                         f"(ideal {c['ideal']:.6g})")
+    return w
 
 
 def _pi_example(g: dict, vendor: dict) -> dict:
@@ -31,6 +45,34 @@ def _pi_example(g: dict, vendor: dict) -> dict:
     current_pi_step(0, error, g["pm_kp"], g["pm_ki"], vendor["maxu"]["value"],
                     vendor["pm_maxout_vol"]["value"], trace)
     return {"error": error, "integral": 0, "trace": trace}
+
+
+def input_bases(n: dict) -> dict:
+    """The bases (contract ``base``) of a normalized input."""
+    m, d, c = n["motor"], n["drive"], n["conventions"]
+    return bases(c["base"], m["rated_voltage_v"], m["rated_current_a"], d["base_freq_hz"],
+                 c["base_voltage_v"], c["base_current_a"], c["angle_base"])
+
+
+def input_raw(n: dict) -> dict:
+    """The raw firmware integers (contract ``vendor.raw``) of a normalized input."""
+    si = {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
+    return raw_from_si(si, n["conventions"]["inductance_unit"], n["raw"])
+
+
+def current_pi_section(n: dict, b: dict) -> dict:
+    """The current PI gains of both axes (contract ``current_pi`` without ``step_example``)."""
+    m, d, cl = n["motor"], n["drive"], n["current_loop"]
+    pi = {"method": cl["method"],
+          "bandwidth_hz": cl["bandwidth_hz"] if cl["method"] in ("bandwidth", "damping") else None}
+    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
+        if cl["method"] == "integers":
+            kp, ki = gains_from_integers(cl["pm_kp"], cl["pm_ki"], b["U_b"], b["I_b"], d["ts_s"])
+        else:
+            kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
+                                   cl["damping"], cl["kp"], cl["ki"])
+        pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
+    return pi
 
 
 def report(inp: dict) -> dict:
@@ -55,28 +97,24 @@ def report(inp: dict) -> dict:
         Naming the field, for any bad input or firmware division by zero.
     """
     n = normalize(inp)
-    m, d, c, cl = n["motor"], n["drive"], n["conventions"], n["current_loop"]
+    m, d, c = n["motor"], n["drive"], n["conventions"]
     sim_in = None
     if "sim" in n:
         from . import sim as _sim  # imported only when asked: plain reports stay fast
         sim_in = _sim.validate(n["sim"])
-    b = bases(c["base"], m["rated_voltage_v"], m["rated_current_a"], d["base_freq_hz"],
-              c["base_voltage_v"], c["base_current_a"], c["angle_base"])
+    b = input_bases(n)
     psi = flux_linkage(c["base"], m["bemf_v"], m["rated_freq_hz"])
     pu = per_unit(b, m["rs_ohm"], m["ld_h"], m["lq_h"], psi, d["ts_s"])
-    si = {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
-    raw = raw_from_si(si, c["inductance_unit"], n["raw"])
+    raw = input_raw(n)
     vendor = vendor_results(raw, c["inductance_unit"])
-    pi = {"method": cl["method"],
-          "bandwidth_hz": cl["bandwidth_hz"] if cl["method"] in ("bandwidth", "damping") else None}
-    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
-        if cl["method"] == "integers":
-            kp, ki = gains_from_integers(cl["pm_kp"], cl["pm_ki"], b["U_b"], b["I_b"], d["ts_s"])
-        else:
-            kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
-                                   cl["damping"], cl["kp"], cl["ki"])
-        pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
+    pi = current_pi_section(n, b)
     pi["step_example"] = _pi_example(pi["d"], vendor)
+    prof = None
+    if "profiles" in n:  # only when asked: the five profiles cost more than the rest
+        from . import profiles as _profiles
+        ctx = _profiles.context(n, raw, vendor, pi)
+        n["profiles"] = _profiles.options(n["profiles"], ctx)
+        prof = _profiles.profiles(ctx, n["profiles"])
     out = {
         "input": {k: v for k, v in n.items() if k not in ("sim", "datasheet")},
         "base": b,
@@ -90,6 +128,8 @@ def report(inp: dict) -> dict:
     }
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
+    if prof is not None:
+        out["profiles"] = prof
     if sim_in is not None:
         out["sim"] = _sim.simulate(out, sim_in)
     out["review"] = review(n, raw, vendor, pi, out.get("sim"))
@@ -97,6 +137,10 @@ def report(inp: dict) -> dict:
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]
     out["warnings_zh"] = [x["message_zh"] for x in serious]
+    if prof is not None:
+        extra = _profile_warnings(prof)
+        out["warnings"] += extra
+        out["warnings_zh"] += [to_zh(w) for w in extra]
     return out
 
 
@@ -160,4 +204,13 @@ def format_text(r: dict) -> str:
                 f"{c['note']} note(s)"
         lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] "
                                                f"{x['message']}" for x in findings]
+    for name, prof in r.get("profiles", {}).items():
+        lines += _table(f"Profile {name}", [
+            (k, f"{c['value']:>11d}  {c['format']:<16} err {c['error_pct']:+.4f} %  = "
+                f"{c['si']:.6g} {c['unit']}  {' '.join(c['flags'])}")
+            for k, c in prof["constants"].items()])
+    reviewed = {x["message"] for x in r["review"]["findings"]}
+    other = [w for w in r["warnings"] if w not in reviewed]
+    if other:
+        lines += ["Warnings", "--------"] + [f"  ! {w}" for w in other]
     return "\n".join(lines).rstrip() + "\n"
