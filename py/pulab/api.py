@@ -18,12 +18,13 @@ import json
 import re
 
 from .errors import InputError
-from .inputs import real, shown
+from .inputs import shown
 from .jsontext import parse
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
 from .messages import to_zh
 from .report import report
+from .textnum import ascii_text, parse_int, parse_real
 
 __all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
            "trace_json", "trace_examples_json", "vendors_json"]
@@ -48,9 +49,13 @@ def qcalc(req: dict) -> dict:
     Parameters
     ----------
     req : dict
-        ``format`` (``Qm.n``/``UQm.n``, or ``Qn`` with ``word_bits``, default 16), and either
-        ``value`` (a real number to encode, with ``rounding`` and ``overflow``)
-        or ``raw`` (an integer to decode).
+        ``format`` (``Qm.n``/``UQm.n``, ``Qn`` with ``word_bits`` (default 16), or an
+        IQmath name ``iqN``/``_IQN``: Q N in a 32-bit long), and either ``value`` (a real
+        number or its text, full-width digits allowed, to encode with ``rounding`` and
+        ``overflow``) or ``raw`` (an integer or its text: decimal, ``0x…``, ``0b…``, to
+        decode; for a signed format a reading above its maximum up to 2^word_bits − 1 is
+        the register's bit pattern, taken as two's complement and flagged
+        ``unsigned_register``).
 
     Returns
     -------
@@ -63,10 +68,15 @@ def qcalc(req: dict) -> dict:
     name = req.get("format", "")
     if not isinstance(name, str):
         raise InputError("qcalc.format", f"must be a string, got {shown(name)}")
-    name = name.strip()
+    name = ascii_text(name)
     word_bits = req.get("word_bits")
     if word_bits is not None and (isinstance(word_bits, bool) or not isinstance(word_bits, int)):
         raise InputError("qcalc.word_bits", "must be an integer")
+    iq = re.fullmatch(r"_?iq(\d*)", name, re.I)
+    if iq:
+        # TI IQmath: _iqN / _IQN is a 32-bit long with N fractional bits (GLOBAL_Q = 24).
+        name = f"Q{iq[1] or 24}"
+        word_bits = 32 if word_bits is None else word_bits
     if word_bits is None and re.fullmatch(r"U?Q\d+", name, re.I):
         word_bits = 16  # a short name like Q15 means a 16-bit word unless told otherwise
     try:
@@ -75,7 +85,7 @@ def qcalc(req: dict) -> dict:
         if re.fullmatch(r"U?Q\d+(\.\d+)?", name, re.I):
             raise InputError("qcalc.format", f"{name} does not fit {word_bits or 64} word "
                              "bits") from None
-        raise InputError("qcalc.format", f"not a Q format: {shown(name)} "
+        raise InputError("qcalc.format", f"not a Q format: {shown(req.get('format', ''))} "
                          "(use Qm.n, UQm.n, or Qn with word_bits)") from None
     rounding = req.get("rounding", "nearest")
     overflow = req.get("overflow", "saturate")
@@ -84,17 +94,18 @@ def qcalc(req: dict) -> dict:
     if overflow not in OVERFLOWS:
         raise InputError("qcalc.overflow", f"must be one of {', '.join(OVERFLOWS)}")
     if req.get("raw") is not None:
-        raw = req["raw"]
-        if isinstance(raw, bool) or not isinstance(raw, int):
-            raise InputError("qcalc.raw", "must be an integer")
+        raw = parse_int(req["raw"], "qcalc.raw")
+        flags = []
+        if fmt.signed and fmt.raw_max < raw < (1 << fmt.word_bits):
+            # A register reading (40000, 0x8000) is the word's bit pattern: two's complement.
+            raw -= 1 << fmt.word_bits
+            flags.append("unsigned_register")
         if not fmt.raw_min <= raw <= fmt.raw_max:
-            raise InputError("qcalc.raw", f"must be {fmt.raw_min}..{fmt.raw_max} for {fmt.name}")
-        res = {"raw": raw, "value": decode(raw, fmt), "error": 0.0, "flags": []}
+            hi = (1 << fmt.word_bits) - 1 if fmt.signed else fmt.raw_max
+            raise InputError("qcalc.raw", f"must be {fmt.raw_min}..{hi} for {fmt.name}")
+        res = {"raw": raw, "value": decode(raw, fmt), "error": 0.0, "flags": flags}
     else:
-        x = req.get("value")
-        if isinstance(x, bool) or not isinstance(x, (int, float)):
-            raise InputError("qcalc.value", "must be a finite number")
-        x = real(x, "qcalc.value")
+        x = parse_real(req.get("value"), "qcalc.value")
         try:
             e = encode(x, fmt, rounding, overflow)
         except OverflowError as err:

@@ -18,6 +18,9 @@ import math
 __all__ = ["c_header", "sim_csv"]
 
 _NAMES = ("Rpm", "LD", "LQ", "FreqPer", "FluxRotor", "pm_maxout_vol", "maxu")
+#: Unit of each simulated signal (pulab.sim output is SI), as a column-name suffix.
+_CSV_UNITS = {"id": "A", "iq": "A", "ud": "V", "uq": "V", "theta": "rad", "theta_hat": "rad",
+              "omega_hat": "rad_per_s"}
 
 
 def _line(name: str, value: int, comment: str) -> str:
@@ -69,7 +72,9 @@ def c_header(r: dict) -> str:
 def sim_csv(r: dict, which: str) -> str:
     """CSV of a simulation's time series (``which`` = ``current`` or ``pll``), SI units.
 
-    One column per variant and signal, e.g. ``si.id``, ``fixed.uq``.
+    One column per variant and signal, its unit in the name: ``t_s``, ``si.id_A``,
+    ``fixed.uq_V`` (phase voltage), ``q15.theta_hat_rad``, ``pu.omega_hat_rad_per_s``
+    (electrical).
     """
     s = r.get("sim", {}).get(which)
     if s is None:
@@ -78,7 +83,7 @@ def sim_csv(r: dict, which: str) -> str:
     for variant, series in s["variants"].items():
         for sig, vals in series.items():
             cols.append(vals)
-            names.append(f"{variant}.{sig}")
+            names.append(f"{variant}.{sig}_{_CSV_UNITS[sig]}")
     rows = [",".join(names)]
     rows += [",".join(repr(float(c[i])) for c in cols) for i in range(len(s["t"]))]
     return "\n".join(rows) + "\n"

@@ -21,6 +21,7 @@ from __future__ import annotations
 import math
 import sys
 
+from . import datasheet as _datasheet
 from .errors import InputError
 from .vendor import RAW_FIELDS
 
@@ -179,21 +180,36 @@ def normalize(inp: dict) -> dict:
     dict
         Same layout; every optional field present; numbers as float (pole
         pairs and raw values as int); ``raw`` holds only the values given.
+        ``motor`` holds the values derived from a ``datasheet`` section, and
+        ``datasheet`` (when given) its values and conversions
+        (:func:`pulab.datasheet.apply`).
     """
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     for key in inp:
-        if key not in SECTIONS and key not in ("sim", "profiles", "analysis"):
+        if key not in SECTIONS and key not in ("sim", "datasheet", "profiles", "analysis"):
             raise InputError(key_path("", key), f"unknown section (expected one of: "
-                             f"{', '.join(list(SECTIONS) + ['sim', 'profiles', 'analysis'])})")
-    m = _section(inp, "motor")
-    d = _section(inp, "drive")
+                             f"{', '.join(list(SECTIONS) + ['datasheet', 'sim', 'profiles', 'analysis'])})")
+    ds = object_fields(inp.get("datasheet"), "datasheet", _datasheet.FIELDS)
+    m, conversions, d = _datasheet.apply(ds, _section(inp, "motor"), _section(inp, "drive"))
     c = _section(inp, "conventions")
     cl = _section(inp, "current_loop")
     p = _section(inp, "pll")
     r = _section(inp, "raw")
 
-    motor = {k: _number(m, "motor", k) for k in SECTIONS["motor"] if k != "pole_pairs"}
+    derived = {c["field"]: c["from"][0] for c in conversions}
+    motor = {}
+    for k in SECTIONS["motor"]:
+        if k == "pole_pairs":
+            continue
+        try:
+            motor[k] = _number(m, "motor", k)
+        except InputError as e:
+            if f"motor.{k}" not in derived:
+                raise
+            # The value came from the datasheet: the error belongs at what the user typed.
+            raise InputError(derived[f"motor.{k}"], f"gives motor.{k} = {m[k]:g}, which "
+                             f"{e.message}") from None
     if "pole_pairs" not in m:
         raise InputError("motor.pole_pairs", "is required")
     motor["pole_pairs"] = _integer(m["pole_pairs"], "motor.pole_pairs", 1, 1000)
@@ -241,6 +257,9 @@ def normalize(inp: dict) -> dict:
 
     out = {"motor": motor, "drive": drive, "conventions": conv, "current_loop": loop,
            "pll": pll, "raw": raw}
+    if ds:
+        # Not part of the echoed input (report.input.motor already holds the derived values).
+        out["datasheet"] = {"given": ds, "conversions": conversions}
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
     if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor

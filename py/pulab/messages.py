@@ -33,7 +33,11 @@ CATALOG = [
     (r"nested deeper than (\d+) levels", r"嵌套超过 \1 层"),
     (r"unknown field \(expected one of: (.*)\)", r"未知字段（应为以下之一：\1）"),
     (r"unknown section \(expected one of: (.*)\)", r"未知分节（应为以下之一：\1）"),
+    (r"must be a number, got (.*) \(ambiguous: a decimal comma or a thousands separator\?\)",
+     r"必须是数字，当前为 \1（有歧义：是小数逗号还是千位分隔符？）"),
     (r"must be a number, got (.*)", r"必须是数字，当前为 \1"),
+    (r"must be an integer \(decimal, 0x… hex or 0b… binary\), got (.*)",
+     r"必须是整数（十进制、0x… 十六进制或 0b… 二进制），当前为 \1"),
     (r"must be finite", "必须是有限数"),
     (r"must be a finite number", "必须是有限数"),
     (r"must be > 0, got (.*)", r"必须大于 0，当前为 \1"),
@@ -74,10 +78,6 @@ CATALOG = [
      "gMotorExtPer.LD/LQ 是 Q13 标幺电感的 10 倍（式 1.4-6 的“×10”之谜）"),
     (r"custom bases: .*", "自定义基值：汇川整数（Rpm、LD 等）始终使用汇川 rms 基值 U_LL/√3 与 "
      "I_rms；PI 整数使用自定义基值"),
-    (r"(\S+): an intermediate result wrapped around; the firmware value (\S+) is wrong "
-     r"\(ideal (\S+)\)", r"\1：中间结果发生回绕，固件值 \2 是错的（理想值 \3）"),
-    (r"(\S+): the store into Uint16 changed the value; the firmware value (\S+) is wrong "
-     r"\(ideal (\S+)\)", r"\1：存入 Uint16 时数值被改变，固件值 \2 是错的（理想值 \3）"),
     (r"raw\.(\S+) = 0: (\S+) = (\S+) is below the firmware resolution",
      r"raw.\1 = 0：\2 = \3 低于固件分辨率"),
     (r"raw\.(\S+) = (\S+): rounding (\S+) = (\S+) to the firmware unit changes it by (\S+) %",
@@ -86,9 +86,44 @@ CATALOG = [
      r"current_pi.\1.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）"),
     (r"current_pi\.(\w)\.(pm_k[pi]) = (\S+): coarse, rounding changes (k[pi]) by (\S+) %",
      r"current_pi.\1.\2 = \3：分辨率粗，取整使 \4 改变 \5 %"),
-    (r"current-loop ω_c·Ts = (\S+): .*",
-     r"电流环 ω_c·Ts = \1：连续域设计与离散环路的实际行为相差较大（建议 ω_c·Ts ≲ 0.2）"),
-    (r"base frequency below rated frequency: .*", "基值频率低于额定频率：Q15 的 FreqPer > 1.0"),
+    # the design review (pulab.review)
+    (r"vendor\.(\S+) = (\S+): the firmware arithmetic wrapped \(exact value (\S+)\); "
+     r"change (\S+)", r"vendor.\1 = \2：固件运算发生回绕（精确值 \3）；请修改 \4"),
+    (r"vendor\.(\S+) = (\S+) is (\S+) % off the exact value (\S+); change (\S+)",
+     r"vendor.\1 = \2 与精确值 \4 相差 \3 %；请修改 \5"),
+    (r"current-loop ω_c·Ts = (\S+) ≥ (\S+): the 1\.5·Ts loop delay leaves a phase margin "
+     r"below 5°; lower the bandwidth to (\S+) Hz or less \((\S+)\)",
+     r"电流环 ω_c·Ts = \1 ≥ \2：1.5·Ts 的环路延迟使相位裕度低于 5°；请把带宽降到 \3 Hz 以下（\4）"),
+    (r"current-loop ω_c·Ts = (\S+) > (\S+): the continuous-time design is far from the "
+     r"discrete loop's behaviour; lower the bandwidth to (\S+) Hz or less \((\S+)\)",
+     r"电流环 ω_c·Ts = \1 > \2：连续域设计与离散环路的实际行为相差较大；请把带宽降到 \3 Hz 以下（\4）"),
+    (r"raw\.FullFreq01 = (\S+) < raw\.FreqRated01 = (\S+): base frequency below rated "
+     r"frequency, FreqPer > 1\.0 in Q15; raise drive\.base_freq_hz to motor\.rated_freq_hz "
+     r"or more", r"raw.FullFreq01 = \1 < raw.FreqRated01 = \2：基值频率低于额定频率，Q15 的 "
+     r"FreqPer > 1.0；请把 drive.base_freq_hz 提高到不低于 motor.rated_freq_hz"),
+    (r"at rated current and rated frequency the motor needs (\S+) V \(line RMS\), above the "
+     r"voltage limit (\S+) V; raise drive\.udc_v",
+     r"额定电流、额定频率下电机需要 \1 V（线电压有效值），超过电压限幅 \2 V；请提高 drive.udc_v"),
+    (r"back-EMF at f_b = (\S+) Hz is (\S+) V \(line RMS\), above the voltage limit (\S+) V: "
+     r"field weakening needed above (\S+) Hz; raise drive\.udc_v or lower drive\.base_freq_hz",
+     r"f_b = \1 Hz 时反电势为 \2 V（线电压有效值），超过电压限幅 \3 V：\4 Hz 以上需要弱磁；"
+     r"请提高 drive.udc_v 或降低 drive.base_freq_hz"),
+    (r"at rated current and f_b = (\S+) Hz the motor needs (\S+) V \(line RMS\), above the "
+     r"voltage limit (\S+) V: full current up to f_b needs field weakening",
+     r"额定电流、f_b = \1 Hz 时电机需要 \2 V（线电压有效值），超过电压限幅 \3 V："
+     r"满电流运行到 f_b 需要弱磁"),
+    (r"(\S+): not locked \(\|θ − θ̂\| ≥ 2° in the last 20 % of the run\); change "
+     r"pll\.bandwidth_hz", r"\1：未锁定（仿真最后 20 % 内 |θ − θ̂| ≥ 2°）；请修改 pll.bandwidth_hz"),
+    (r"(\S+)\.steady_angle_error_deg = (\S+)°: angle error after lock; change pll\.bandwidth_hz",
+     r"\1.steady_angle_error_deg = \2°：锁定后的角度误差；请修改 pll.bandwidth_hz"),
+    # errors: the datasheet section (pulab.datasheet)
+    (r"and (\S+) both given; give one of them", r"与 \1 不能同时给出；请只给其中一个"),
+    (r"and (\S+) both give the back-EMF; give one of them", r"与 \1 都给出反电势；请只给其中一个"),
+    (r"gives (\S+) = (\S+), which (.*)", lambda m: f"得到 {m[1]} = {m[2]}，{to_zh(m[3])}"),
+    (r"is required \(one of (.*)\)", r"必填（以下之一：\1）"),
+    (r"is required to convert (\S+) \(or give (\S+)\)", r"换算 \1 时必填（或给出 \2）"),
+    (r"is only used with (\S+) or (\S+)", r"仅与 \1 或 \2 一起使用"),
+    (r"is only used with (\S+)", r"仅与 \1 一起使用"),
     # two hardening messages that had no Chinese yet (CLI input bytes, qcalc.format type)
     (r"not UTF-8 text \(byte (\d+)\)", r"不是 UTF-8 文本（第 \1 字节）"),
     (r"must be a string, got (.*)", r"必须是字符串，当前为 \1"),

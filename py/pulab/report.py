@@ -11,63 +11,16 @@ Examples
 
 from __future__ import annotations
 
-import math
-
 from .bases import bases, flux_linkage, per_unit
 from .constants import magic_constants
+from .datasheet import mechanical
 from .gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .inputs import normalize
 from .messages import to_zh
-from .vendor import RAW_FIELDS, current_pi_step, raw_from_si, raw_source, vendor_results
+from .review import review
+from .vendor import current_pi_step, raw_from_si, vendor_results
 
 __all__ = ["report", "format_text", "input_bases", "input_raw", "current_pi_section"]
-
-
-def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
-    w = []
-    unit = inp["conventions"]["inductance_unit"]
-    if unit == "uH":
-        w.append("LD/LQ taken in µH: the vendor code was written for 0.01 mH, so "
-                 "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (seed 1.4-6, the '×10' "
-                 "puzzle)")
-    if inp["conventions"]["base"] == "custom":
-        w.append("custom bases: the vendor integers (Rpm, LD, …) always use the Inovance rms "
-                 "bases U_LL/√3 and I_rms; the PI integers use the custom bases")
-    for name, res in vendor.items():
-        for flag, text in (("wrap", "an intermediate result wrapped around"),
-                           ("store", "the store into Uint16 changed the value")):
-            if flag in res["flags"]:
-                w.append(f"{name}: {text}; the firmware value {res['value']} is wrong "
-                         f"(ideal {res['ideal']:.6g})")
-    for name in RAW_FIELDS:
-        if name in inp["raw"]:
-            continue
-        path, scale = raw_source(name, unit)
-        si = inp[path.split(".")[0]][path.split(".")[1]]
-        exact = si * scale
-        if raw[name] == 0:
-            w.append(f"raw.{name} = 0: {path} = {si:g} is below the firmware resolution")
-        elif abs(raw[name] - exact) / exact > 0.005:
-            w.append(f"raw.{name} = {raw[name]}: rounding {path} = {si:g} to the firmware unit "
-                     f"changes it by {100 * (raw[name] - exact) / exact:+.2f} %")
-    for axis in ("d", "q"):
-        g = pi[axis]
-        if g["pm_ki"] == 0:
-            w.append(f"current_pi.{axis}.pm_ki rounds to 0: the integral action is lost "
-                     f"(ki·Ts is below one Q16 LSB of the per-unit gain)")
-        elif abs(g["pm_ki"]) < 16:
-            w.append(f"current_pi.{axis}.pm_ki = {g['pm_ki']}: coarse, rounding changes ki by "
-                     f"{100 * (g['from_integers']['ki'] - g['ki']) / g['ki']:+.1f} %")
-        if 0 < abs(g["pm_kp"]) < 16:
-            w.append(f"current_pi.{axis}.pm_kp = {g['pm_kp']}: coarse, rounding changes kp by "
-                     f"{100 * (g['from_integers']['kp'] - g['kp']) / g['kp']:+.1f} %")
-    wc_ts = 2 * math.pi * inp["current_loop"]["bandwidth_hz"] * inp["drive"]["ts_s"]
-    if inp["current_loop"]["method"] in ("bandwidth", "damping") and wc_ts > 0.3:
-        w.append(f"current-loop ω_c·Ts = {wc_ts:.2f}: the continuous-time design is far from "
-                 f"the discrete loop's behaviour (keep ω_c·Ts ≲ 0.2)")
-    if b["f_b"] < inp["motor"]["rated_freq_hz"]:
-        w.append("base frequency below rated frequency: FreqPer > 1.0 in Q15")
-    return w
 
 
 def _profile_warnings(prof: dict) -> list:
@@ -134,7 +87,10 @@ def report(inp: dict) -> dict:
     -------
     dict
         ``input`` (normalized), ``base``, ``pu``, ``vendor``, ``current_pi``, ``pll``,
-        ``constants``, ``warnings`` and, when asked, ``sim`` and ``loop``.
+        ``constants``, ``mechanical``, ``review`` (graded findings, :mod:`pulab.review`),
+        ``warnings``/``warnings_zh`` (the review's errors and warnings as text, then the
+        profiles' and the loop analysis' warnings), ``datasheet`` (when given: values and
+        conversions) and, when asked, ``sim`` and ``loop``.
 
     Raises
     ------
@@ -161,7 +117,7 @@ def report(inp: dict) -> dict:
         n["profiles"] = _profiles.options(n["profiles"], ctx)
         prof = _profiles.profiles(ctx, n["profiles"])
     out = {
-        "input": {k: v for k, v in n.items() if k not in ("sim", "analysis")},
+        "input": {k: v for k, v in n.items() if k not in ("sim", "analysis", "datasheet")},
         "base": b,
         "pu": pu,
         "vendor": {"raw": raw, **vendor},
@@ -169,20 +125,29 @@ def report(inp: dict) -> dict:
         "pll": pll_gains(n["pll"]["bandwidth_hz"], n["pll"]["damping"], b["w_b"],
                          b["theta_b"]),
         "constants": magic_constants(),
-        "warnings": _warnings(n, raw, vendor, pi, b),
+        "mechanical": mechanical(m, b, psi, c["base"]),
     }
+    if "datasheet" in n:
+        out["datasheet"] = n["datasheet"]
     if prof is not None:
         out["profiles"] = prof
-        out["warnings"] += _profile_warnings(prof)
     if n["analysis"] is not None:
         # issue 11, only when asked (like "sim"): plain reports stay within their time budget
         from . import loop as _loop
         out["loop"] = _loop.analyze(out, n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
-        out["warnings"] += _loop.warnings(out["loop"])
-    out["warnings_zh"] = [to_zh(w) for w in out["warnings"]]
     if sim_in is not None:
         out["sim"] = _sim.simulate(out, sim_in)
+    out["review"] = review(n, raw, vendor, pi, out.get("sim"))
+    # The pre-review contract: warnings (and errors) of the review as plain strings.
+    serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
+    out["warnings"] = [x["message"] for x in serious]
+    out["warnings_zh"] = [x["message_zh"] for x in serious]
+    extra = _profile_warnings(prof) if prof is not None else []
+    if "loop" in out:
+        extra += _loop.warnings(out["loop"])
+    out["warnings"] += extra
+    out["warnings_zh"] += [to_zh(w) for w in extra]
     return out
 
 
@@ -235,6 +200,32 @@ def format_text(r: dict) -> str:
     lines += _table("Magic constants", [(k, f"exact {c['exact']:.6f} = {c['expression']}, "
                                             f"rel. error {100 * c['rel_error']:+.4f} %")
                                         for k, c in r["constants"].items()])
+    mech = r["mechanical"]
+    lines += _table("Mechanical", [
+        ("pole pairs", str(mech["pole_pairs"])),
+        ("rated speed", f"{mech['rated_speed_rpm']:.6g} rpm"),
+        ("base speed (f_b)", f"{mech['base_speed_rpm']:.6g} rpm"),
+        ("torque base T_b", f"{mech['torque_base_nm']:.6g} N·m"),
+        ("kT", f"{mech['kt_nm_per_a']:.6g} N·m/A (RMS)"),
+        ("Ke", f"{mech['ke_v_s_per_rad']:.6g} V·s/rad (line RMS)"),
+        ("rated torque", f"{mech['rated_torque_nm']:.6g} N·m")])
+    if "datasheet" in r:
+        lines += _table("Datasheet conversions", [
+            (c["field"], f"{c['formula']} = {c['value']:.6g} {c['unit']}")
+            for c in r["datasheet"]["conversions"]])
+    h = r["review"]["headroom"]
+    lines += _table("Voltage headroom (line RMS)", [
+        ("limit (pm_maxout_vol)", f"{h['limit_v']:.6g} V"),
+        ("back-EMF at f_b", f"{h['bemf_fb_v']:.6g} V"),
+        ("needed, rated I at f_n", f"{h['need_rated_fn_v']:.6g} V"),
+        ("needed, rated I at f_b", f"{h['need_rated_fb_v']:.6g} V")])
+    findings = r["review"]["findings"]
+    if findings:
+        c = r["review"]["counts"]
+        title = f"Design review: {c['error']} error(s), {c['warning']} warning(s), " \
+                f"{c['note']} note(s)"
+        lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] "
+                                               f"{x['message']}" for x in findings]
     for name, prof in r.get("profiles", {}).items():
         lines += _table(f"Profile {name}", [
             (k, f"{c['value']:>11d}  {c['format']:<16} err {c['error_pct']:+.4f} %  = "
@@ -242,6 +233,8 @@ def format_text(r: dict) -> str:
             for k, c in prof["constants"].items()])
     if "loop" in r:
         lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
-    if r["warnings"]:
-        lines += ["Warnings", "--------"] + [f"  ! {w}" for w in r["warnings"]]
+    reviewed = {x["message"] for x in r["review"]["findings"]}
+    other = [w for w in r["warnings"] if w not in reviewed]
+    if other:
+        lines += ["Warnings", "--------"] + [f"  ! {w}" for w in other]
     return "\n".join(lines).rstrip() + "\n"

@@ -316,7 +316,8 @@ def pll(R, cfg, inp):
             lt = float(t[above[-1] + 1]) if len(above) else float(t[0])
         se = float(np.mean(np.array(w[start:]) - np.array(omega[start:])) / TWO_PI)
         metrics[name] = {"locked": locked, "lock_time_s": lt, "speed_error_hz": se,
-                         "max_angle_error_deg": math.degrees(float(np.max(err)))}
+                         "max_angle_error_deg": math.degrees(float(np.max(err))),
+                         "steady_angle_error_deg": math.degrees(float(np.max(err[start:])))}
     return {"t": t[idx].tolist(), "variants": variants, "metrics": metrics}
 
 
@@ -386,17 +387,19 @@ def compare_rules(inp: dict) -> dict:
     max |a − b| ≤ rel·max|expected series| (angles: the difference wrapped into [−π, π]);
     bools, ints and nulls exactly.  Absolute floors only for the metrics that are a
     difference of nearly equal numbers (a steady-state error of 1e-16 A, a locked PLL's speed
-    error of 1e-14 Hz).  ``skip``: compared to nothing (the naive PLL is unstable, rounding
+    error of 1e-14 Hz, a locked PLL's angle error of 1e-11°).  ``skip``: compared to nothing (the naive PLL is unstable, rounding
     differences grow exponentially; only its ``locked`` = false is compared).
     """
     ib = oracle_report({k: v for k, v in inp.items() if k != "sim"})["base"]["I_b"]
     return {"rel": 1e-9,
             "abs": {"current.metrics.*.steady_state_error_a": 1e-9 * ib,
                     "current.metrics.*.overshoot_pct": 1e-7,
-                    "pll.metrics.*.speed_error_hz": 1e-6},
+                    "pll.metrics.*.speed_error_hz": 1e-6,
+                    "pll.metrics.*.steady_angle_error_deg": 1e-9},
             "wrapped": ["pll.variants.*.theta", "pll.variants.*.theta_hat"],
             "skip": ["pll.variants.naive", "pll.metrics.naive.lock_time_s",
-                     "pll.metrics.naive.speed_error_hz", "pll.metrics.naive.max_angle_error_deg"]}
+                     "pll.metrics.naive.speed_error_hz", "pll.metrics.naive.max_angle_error_deg",
+                     "pll.metrics.naive.steady_angle_error_deg"]}
 
 
 def build() -> dict:

@@ -32,7 +32,8 @@ def test_every_golden_warning_has_chinese(path):
 @pytest.mark.parametrize("req", [
     {"format": "Qx"}, {"format": "Q15", "word_bits": 8}, {"format": "Q40.30"},
     {"format": "Q15", "word_bits": "8"}, {"format": "Q0.15", "value": 2.0, "overflow": "error"},
-    {"format": "Q0.15", "raw": 40000}, {"format": "Q0.15", "value": "a"},
+    {"format": "Q0.15", "raw": 70000}, {"format": "Q0.15", "value": "a"},
+    {"format": "Q0.15", "raw": "0xZZ"}, {"format": "Q0.15", "value": "1,500"},
     {"format": "Q0.15", "value": 0.1, "rounding": "up"}, {"format": "Q0.15", "raw": 1.5},
 ])
 def test_qcalc_errors_have_chinese(req):

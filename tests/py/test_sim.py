@@ -370,7 +370,7 @@ def test_output_keys_and_decimation():
                                        "steady_state_error_a"}
     assert {"fixed_vs_si_max_abs_a", "fixed_vs_si_max_lsb"} <= set(c["metrics"])
     assert set(p["metrics"]["q15"]) == {"locked", "lock_time_s", "speed_error_hz",
-                                        "max_angle_error_deg"}
+                                        "max_angle_error_deg", "steady_angle_error_deg"}
     assert 300 <= len(c["t"]) <= sim.MAX_POINTS and len(p["t"]) <= sim.MAX_POINTS
     assert c["t"][-1] == pytest.approx(0.5)
     json.dumps(s, allow_nan=False)

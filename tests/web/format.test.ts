@@ -55,6 +55,13 @@ describe('parseNumber: what a user types', () => {
     ['4', true, { ok: true, value: 4 }],
     ['4.5', true, { ok: false, error: 'integer' }],
     ['0x10', true, { ok: false, error: 'integer' }],
+    // a Chinese input method: full-width digits, full-width and ideographic full stops, minus
+    ['１７', false, { ok: true, value: 17 }],
+    ['１７', true, { ok: true, value: 17 }],
+    ['０．５', false, { ok: true, value: 0.5 }],
+    ['０。５', false, { ok: true, value: 0.5 }],
+    ['－１．５ｅ－３', false, { ok: true, value: -0.0015 }],
+    ['1　5', false, { ok: true, value: 15 }],
   ];
   for (const [text, int, want] of cases) it(`${JSON.stringify(text)}${int ? ' (integer)' : ''} → ${JSON.stringify(want)}`, () => expect(parseNumber(text, int)).toEqual(want));
 });

@@ -1,5 +1,6 @@
-import { describe, it, expect } from 'vitest';
-import { SEED_INPUT, decodeHash, encodeHash, getPath, initialInput, reportInput, setPath, simInput, type Input } from '../../web/src/state';
+import { describe, it, expect, beforeAll } from 'vitest';
+import { bootPulab, type NodePulab } from './pulab-node';
+import { PRESETS, SEED_INPUT, decodeHash, decodeUnits, encodeHash, getPath, initialInput, reportInput, setPath, simInput, type Input } from '../../web/src/state';
 import { effectiveInput } from '../../web/src/fields';
 
 describe('URL state: #in= + encodeURIComponent(JSON)', () => {
@@ -72,4 +73,34 @@ describe('what is sent', () => {
       { conventions: { base: 'custom', base_voltage_v: 10, base_current_a: 1 } }],
   ];
   for (const [name, inp, want] of eff) it(`effectiveInput, ${name}`, () => expect(effectiveInput(inp)).toEqual(want));
+});
+
+describe('presets: current-loop bandwidth suited to Ts (no ω_c·Ts finding from pulab.review, except the seed example)', () => {
+  let p: NodePulab;
+  beforeAll(async () => {
+    p = await bootPulab();
+  });
+  for (const preset of PRESETS)
+    it(`${preset.id}: bandwidth ${String(preset.input.current_loop.bandwidth_hz)} Hz at Ts ${String(preset.input.drive.ts_s)} s → wc_ts finding only for the seed`, async () => {
+      const { result } = await p.call('report', JSON.stringify(reportInput(preset.input)));
+      expect(result.ok).toBe(true);
+      const findings = (result as unknown as { report: { review: { findings: { code: string }[] } } }).report.review.findings;
+      // The seed example (the golden default page) keeps its 500 Hz and shows the warning on purpose.
+      expect(findings.filter((f) => f.code === 'wc_ts').length).toBe(preset.id === 'seed' ? 1 : 0);
+    });
+});
+
+describe('share links keep display units and shortest decimals', () => {
+  const inp: Input = { motor: { ld_h: 0.0042 }, drive: { ts_s: 0.0000625 } };
+  it('encodeHash → decodeHash round trip, 0.0042 printed as 0.0042', () => {
+    const hash = encodeHash(inp, { 'motor.ld_h': 'mH', 'drive.ts_s': 'kHz' });
+    expect(decodeURIComponent(hash)).toContain('"ld_h":0.0042}');
+    expect(decodeHash(hash)).toEqual(inp);
+    expect(decodeUnits(hash)).toEqual({ 'motor.ld_h': 'mH', 'drive.ts_s': 'kHz' });
+  });
+  it('no units → no u= part; a bad u= is ignored', () => {
+    expect(encodeHash(inp)).not.toContain('&u=');
+    expect(decodeUnits(encodeHash(inp))).toBeNull();
+    expect(decodeUnits('#in=%7B%7D&u=%5B1%5D')).toBeNull();
+  });
 });

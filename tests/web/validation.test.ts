@@ -28,7 +28,11 @@ describe('qcalc request from the form state', () => {
     [{ mode: 'encode', format: 'Q0.15', value: '0.5', word_bits: '' }, { ok: true, req: { format: 'Q0.15', rounding: 'nearest', overflow: 'saturate', value: 0.5 } }],
     [{ mode: 'decode', format: 'Q15', raw: '-16384', word_bits: '16' }, { ok: true, req: { format: 'Q15', rounding: 'nearest', overflow: 'saturate', word_bits: 16, raw: -16384 } }],
     [{ mode: 'encode', format: 'Q0.15', value: 'x' }, { ok: false, field: 'qcalc.value', error: 'number' }],
-    [{ mode: 'decode', format: 'Q0.15', raw: '1.5' }, { ok: false, field: 'qcalc.raw', error: 'integer' }],
+    // Not a decimal integer: sent as typed, pulab reads hex/binary or names qcalc.raw.
+    [{ mode: 'decode', format: 'Q0.15', raw: '1.5' }, { ok: true, req: { format: 'Q0.15', rounding: 'nearest', overflow: 'saturate', raw: '1.5' } }],
+    [{ mode: 'decode', format: 'Q15', raw: ' 0x8000 ' }, { ok: true, req: { format: 'Q15', rounding: 'nearest', overflow: 'saturate', raw: '0x8000' } }],
+    [{ mode: 'decode', format: 'Q15', raw: '４００００' }, { ok: true, req: { format: 'Q15', rounding: 'nearest', overflow: 'saturate', raw: 40000 } }],
+    [{ mode: 'decode', format: 'Q15', raw: ' ' }, { ok: false, field: 'qcalc.raw', error: 'integer' }],
   ];
   for (const [s, want] of cases) it(`${JSON.stringify(s)} → ${JSON.stringify(want)}`, () => expect(qcalcRequest({ ...qstate, word_bits: '', ...s })).toEqual(want));
 });

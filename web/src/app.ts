@@ -44,7 +44,7 @@ export class App {
     this.init = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY));
     this.session = new ComputeSession(this.init.input, this.embed !== null, {
       report: (same) => (same ? this.renderPanels(PYTHON_PANELS) : this.renderPanels()),
-      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs']),
+      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     });

@@ -35,7 +35,7 @@ function append(el: HTMLElement, children: Child[]): void {
 export function num(
   path: string,
   value: unknown,
-  opts: { kind?: 'int' | 'float' | 'pct' | 'hex'; type?: string; alias?: string; sig?: number; unit?: string; text?: string } = {},
+  opts: { kind?: 'int' | 'float' | 'pct' | 'hex'; type?: string; alias?: string; sig?: number; unit?: string; text?: string; mirror?: boolean } = {},
 ): HTMLElement {
   const v = typeof value === 'number' ? value : null;
   let text: string;
@@ -46,8 +46,9 @@ export function num(
   else text = fmtNum(v, opts.sig ?? 6);
   const cls = `num${opts.kind === 'int' || opts.kind === 'hex' ? ' int' : ''}${v === null ? ' pending' : ''}`;
   // A hex rendering is a second view of a value: it names its source in data-hex-of, so that every
-  // data-key in the page is a real path of the report.
-  const keyAttr = opts.kind === 'hex' ? 'data-hex-of' : 'data-key';
+  // data-key in the page is a real path of the report; `mirror` repeats a value shown elsewhere
+  // (data-mirror-of), so each data-key appears once.
+  const keyAttr = opts.kind === 'hex' ? 'data-hex-of' : opts.mirror ? 'data-mirror-of' : 'data-key';
   const el = h('span', { class: cls, [keyAttr]: path, 'data-value': v === null ? null : JSON.stringify(v), title: v === null ? null : String(v) }, text);
   const inner = opts.unit ? h('span', { class: 'withunit' }, el, h('span', { class: 'u' }, ` ${opts.unit}`)) : el;
   return opts.alias ? h('span', { 'data-key': opts.alias, 'data-value': v === null ? null : JSON.stringify(v) }, inner) : inner;
@@ -88,4 +89,18 @@ export function table(head: (string | Node)[], rows: (Child[] | HTMLElement)[], 
     h('thead', {}, h('tr', {}, head.map((x) => h('th', {}, x)))),
     h('tbody', {}, rows.map((r) => (r instanceof HTMLElement ? r : h('tr', {}, r.map((c) => h('td', {}, c)))))),
   );
+}
+
+/**
+ * Scroll `el` to the top of this document's view. In an iframe (an embed), scrollIntoView would
+ * scroll the host page too; there only this document scrolls.
+ */
+export function scrollToEl(el: Element | null | undefined): void {
+  if (!el) return;
+  if (window.parent === window) {
+    el.scrollIntoView({ block: 'start' });
+    return;
+  }
+  const margin = parseFloat(getComputedStyle(el).scrollMarginTop) || 0;
+  window.scrollTo({ top: el.getBoundingClientRect().top + window.scrollY - margin });
 }

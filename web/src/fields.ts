@@ -38,14 +38,33 @@ const RAW_UNIT: Record<string, string> = {
 export const SECTIONS: SectionSpec[] = [
   {
     id: 'motor', title: 'sec_motor', fields: [
-      { path: 'motor.rated_voltage_v', kind: 'number', unit: 'V' },
+      // Empty = derived from the datasheet section (placeholder: the derived value).
+      { path: 'motor.rated_voltage_v', kind: 'number', unit: 'V', optional: true, placeholderFrom: 'input.motor.rated_voltage_v' },
       { path: 'motor.rated_current_a', kind: 'number', unit: 'A' },
-      { path: 'motor.rated_freq_hz', kind: 'number', unit: 'Hz' },
-      { path: 'motor.rs_ohm', kind: 'number', unit: 'Ω' },
-      { path: 'motor.ld_h', kind: 'number', units: ['µH', 'mH', 'H'] },
-      { path: 'motor.lq_h', kind: 'number', units: ['µH', 'mH', 'H'] },
-      { path: 'motor.bemf_v', kind: 'number', unit: 'V' },
+      { path: 'motor.rated_freq_hz', kind: 'number', unit: 'Hz', optional: true, placeholderFrom: 'input.motor.rated_freq_hz' },
+      { path: 'motor.rs_ohm', kind: 'number', unit: 'Ω', optional: true, placeholderFrom: 'input.motor.rs_ohm' },
+      { path: 'motor.ld_h', kind: 'number', units: ['µH', 'mH', 'H'], optional: true, placeholderFrom: 'input.motor.ld_h' },
+      { path: 'motor.lq_h', kind: 'number', units: ['µH', 'mH', 'H'], optional: true, placeholderFrom: 'input.motor.lq_h' },
+      { path: 'motor.bemf_v', kind: 'number', unit: 'V', optional: true, placeholderFrom: 'input.motor.bemf_v' },
       { path: 'motor.pole_pairs', kind: 'int' },
+    ],
+  },
+  {
+    // pulab.datasheet: what datasheets print; each value fills a motor field left empty.
+    id: 'datasheet', title: 'sec_datasheet', hint: 'datasheetHint', collapsed: true, fields: [
+      { path: 'datasheet.speed_rpm', kind: 'number', unit: 'rpm', optional: true },
+      { path: 'datasheet.ke_v_per_krpm', kind: 'number', unit: 'V/krpm', optional: true },
+      { path: 'datasheet.ke_v_s_per_rad', kind: 'number', unit: 'V·s/rad', optional: true },
+      { path: 'datasheet.ke_measure', kind: 'select', options: ['', 'rms', 'peak'], optional: true },
+      { path: 'datasheet.kt_nm_per_a', kind: 'number', unit: 'N·m/A', optional: true },
+      { path: 'datasheet.kt_current', kind: 'select', options: ['', 'rms', 'peak'], optional: true },
+      { path: 'datasheet.psi_wb', kind: 'number', unit: 'Wb', optional: true },
+      { path: 'datasheet.rs_line_ohm', kind: 'number', unit: 'Ω', optional: true },
+      { path: 'datasheet.l_line_h', kind: 'number', units: ['mH', 'µH', 'H'], optional: true },
+      { path: 'datasheet.ld_line_h', kind: 'number', units: ['mH', 'µH', 'H'], optional: true },
+      { path: 'datasheet.lq_line_h', kind: 'number', units: ['mH', 'µH', 'H'], optional: true },
+      { path: 'datasheet.winding', kind: 'select', options: ['', 'star', 'delta'], optional: true },
+      { path: 'datasheet.dc_bus_v', kind: 'number', unit: 'V', optional: true },
     ],
   },
   {

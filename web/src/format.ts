@@ -37,12 +37,20 @@ export function fmtHex(value: number, type: string): string {
 export type ParseResult = { ok: true; value: number | null } | { ok: false; error: 'number' | 'integer' };
 
 /**
+ * What a Chinese input method types, folded to ASCII: full-width digits and signs (NFKC), the
+ * ideographic full stop 。 and the Unicode minus −; white space removed.
+ */
+export function asciiNumber(text: string): string {
+  return text.normalize('NFKC').replace(/[。｡]/g, '.').replace(/−/g, '-').replace(/\s+/g, '');
+}
+
+/**
  * Parse what a user typed into a number field. Empty → null (the field is absent: default or
- * derived). Accepts a decimal comma, surrounding spaces, exponent notation; `integer` demands an
- * integer literal.
+ * derived). Accepts a decimal comma, surrounding spaces, exponent notation, full-width digits and
+ * IME decimal points; `integer` demands an integer literal.
  */
 export function parseNumber(text: string, integer = false): ParseResult {
-  const s = text.trim().replace(/\s+/g, '');
+  const s = asciiNumber(text);
   if (s === '') return { ok: true, value: null };
   // A decimal comma (1,5) is accepted; 1,500 could be a thousands separator (1500) — refuse it.
   if (/^[+-]?\d+,\d{3}$/.test(s)) return { ok: false, error: integer ? 'integer' : 'number' };

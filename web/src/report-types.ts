@@ -65,6 +65,9 @@ export interface Report {
   warnings: string[];
   warnings_zh: string[];
   sim?: { current?: SimCurrent; pll?: SimPll };
+  mechanical: Record<string, number>;
+  review: Review;
+  datasheet?: { given: Record<string, unknown>; conversions: Conversion[] };
   loop?: LoopReport;
 }
 
@@ -116,4 +119,31 @@ export interface LoopReport {
     speed?: { f_hz: number[]; open: BodeCurve; closed: BodeCurve };
   };
 }
+/** pulab.review: one graded finding; `key` = the report path of the value, `field` = the input to change. */
+export interface Finding {
+  severity: 'error' | 'warning' | 'note';
+  code: string;
+  key: string;
+  field: string;
+  value: unknown;
+  message: string;
+  message_zh: string;
+}
+export interface Review {
+  findings: Finding[];
+  counts: { error: number; warning: number; note: number };
+  thresholds: Record<string, Partial<Record<'note' | 'warning' | 'error', number>>>;
+  headroom: Record<string, number | null | boolean>;
+}
+/** pulab.datasheet: one conversion from a datasheet value into a motor field. */
+export interface Conversion {
+  field: string;
+  label: string;
+  label_zh: string;
+  formula: string;
+  value: number;
+  unit: string;
+  from: string[];
+}
+
 export const VENDOR_NAMES = ['Rpm', 'LD', 'LQ', 'FreqPer', 'FluxRotor', 'pm_maxout_vol', 'maxu'] as const;

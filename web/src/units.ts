@@ -1,5 +1,6 @@
 // Display units of input fields and their exact conversion to the SI value of the input JSON.
-// Division by powers of ten (not multiplication by 1e-6) keeps 600 µH → 0.0006 exactly.
+// Powers of ten shift the decimal exponent (4.2 mH → "4.2e-3" → 0.0042), so the SI value is the
+// shortest decimal the user meant, never 4.2/1000 = 0.004200000000000001.
 
 export type UnitId = 'H' | 'mH' | 'µH' | 's' | 'ms' | 'µs' | 'kHz';
 
@@ -20,9 +21,17 @@ export const UNITS: Record<UnitId, UnitDef> = {
   kHz: { recip: 1e3 },
 };
 
+/** `x`·10^-k through the decimal text of x (exact for every decimal the user can type). */
+function shift(x: number, k: number): number {
+  if (k === 0 || !Number.isFinite(x) || x === 0) return x;
+  const [m, e] = x.toExponential().split('e');
+  return Number(`${m}e${Number(e) - k}`);
+}
+
 export function toSI(display: number, unit: UnitId): number {
   const u = UNITS[unit];
-  return u.recip !== undefined ? 1 / (display * u.recip) : display / (u.div ?? 1);
+  if (u.recip !== undefined) return display === 0 ? Infinity : shift(1 / display, Math.round(Math.log10(u.recip)));
+  return shift(display, Math.round(Math.log10(u.div ?? 1)));
 }
 
 export function fromSI(si: number, unit: UnitId): number {

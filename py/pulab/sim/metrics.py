@@ -143,7 +143,9 @@ def pll_metrics(t: list, theta: list, omega: list, theta_hat: list, omega_hat: l
         ``lock_time_s`` (the first time from which the error stays below 2° to
         the end; None when not locked), ``speed_error_hz`` (mean of ω̂ − ω over
         the last 20 %, electrical Hz), ``max_angle_error_deg`` (over the whole
-        run, including the acquisition).
+        run, including the acquisition), ``steady_angle_error_deg`` (the largest
+        |θ − θ̂| over the last 20 %, after lock: what the loop tracks with, without the
+        cold-start transient).
     """
     err = [abs(e) for e in wrapped_error(theta, theta_hat)]
     lim = math.radians(LOCK_DEG)
@@ -161,4 +163,5 @@ def pll_metrics(t: list, theta: list, omega: list, theta_hat: list, omega_hat: l
     if not math.isfinite(speed_err):
         speed_err = None
     return {"locked": locked, "lock_time_s": lock_time, "speed_error_hz": speed_err,
-            "max_angle_error_deg": math.degrees(max(err))}
+            "max_angle_error_deg": math.degrees(max(err)),
+            "steady_angle_error_deg": math.degrees(max(err[start:]))}

@@ -3,19 +3,29 @@
 import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
 import { ALL_FIELDS, SECTIONS, effectiveInput, type FieldSpec } from '../fields';
-import { errText, getLang, t, type Key } from '../i18n';
-import { PRESETS, clone, getPath, setPath, type Input } from '../state';
+import { errText, getLang, has, t, type Key } from '../i18n';
+import type { ApiErr } from '../protocol';
+import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
 import { fromSI, toSI, type UnitId } from '../units';
 import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
 import { checkUnits } from '../state-check';
 
-export class InputForm {
-  /** The display unit chosen for each field (kept in localStorage). */
-  private units: Record<string, UnitId> = {};
+/** The SI field a raw firmware value was converted from, as Python's message names it. */
+export function sourceField(e: ApiErr): string | null {
+  return e.field.startsWith('raw.') ? /\(from ([\w.]+)\)/.exec(e.message)?.[1] ?? null : null;
+}
 
+export class InputForm {
   constructor(private root: HTMLElement, private session: ComputeSession) {
-    this.units = checkUnits(load(UNITS_KEY));
+    // A shared link's units (&u=) win over the ones this browser chose last; both checked.
+    const fromLink = decodeUnits(location.hash);
+    session.units = checkUnits(fromLink ? JSON.stringify(fromLink) : load(UNITS_KEY));
+  }
+
+  /** The display unit chosen for each field (the session keeps it for links). */
+  private get units(): Record<string, UnitId> {
+    return this.session.units as Record<string, UnitId>;
   }
 
   private get host(): HTMLElement | null {
@@ -36,7 +46,7 @@ export class InputForm {
     let control: HTMLElement;
     if (f.kind === 'select') {
       control = h('select', { name: f.path, disabled: !enabled, onchange: (ev: Event) => this.onSelect(f, (ev.target as HTMLSelectElement).value) },
-        (f.options ?? []).map((o) => h('option', { value: o, selected: String(v ?? f.options?.[0]) === o }, t(`o.${o}` as Key))));
+        (f.options ?? []).map((o) => h('option', { value: o, selected: String(v ?? f.options?.[0]) === o }, t((has(`o.${f.path}.${o}`) ? `o.${f.path}.${o}` : `o.${o}`) as Key))));
     } else if (f.kind === 'bool') {
       control = h('input', { type: 'checkbox', name: f.path, checked: v === true, onchange: (ev: Event) => this.onBool(f, (ev.target as HTMLInputElement).checked) });
     } else {
@@ -50,7 +60,9 @@ export class InputForm {
     }
     const unitEl = f.units
       ? h('select', { class: 'unit', 'data-unit-for': f.path, 'aria-label': t('unit'), disabled: !enabled, onchange: (ev: Event) => this.onUnit(f, (ev.target as HTMLSelectElement).value as UnitId) },
-          f.units.map((u) => h('option', { value: u, selected: this.unitOf(f) === u }, u === 'kHz' ? 'kHz (f_s)' : u)))
+          // "kHz" on a period field is the control frequency f_s = 1/Ts (said in the tooltip: a
+          // longer label is cut in the 64 px unit box).
+          f.units.map((u) => h('option', { value: u, selected: this.unitOf(f) === u, title: u === 'kHz' ? 'f_s = 1/Ts' : null }, u)))
       : f.unit ? h('span', { class: 'unit' }, f.unit) : null;
     return h('label', { class: `field kind-${f.kind}${enabled ? '' : ' disabled'}` },
       label, h('span', { class: 'ctl' }, control, unitEl), h('span', { class: 'err', 'data-err-for': f.path }));
@@ -68,7 +80,8 @@ export class InputForm {
           h('select', { name: 'preset', onchange: (ev: Event) => this.onPreset((ev.target as HTMLSelectElement).value) },
             h('option', { value: '' }, t('presetCustom')),
             PRESETS.map((p) => h('option', { value: p.id, selected: this.matchesPreset(p.input) }, p.label[getLang()]))))),
-      ...SECTIONS.map((s) => h('details', { class: 'section', 'data-section': s.id, open: first ? !s.collapsed : open.has(s.id) },
+      // The datasheet and raw sections start collapsed, but open when the input uses them.
+      ...SECTIONS.map((s) => h('details', { class: 'section', 'data-section': s.id, open: (first ? !s.collapsed : open.has(s.id)) || ((s.id === 'datasheet' || s.id === 'raw') && Object.keys(this.session.input[s.id] ?? {}).length > 0) },
         h('summary', {}, t(s.title), h('span', { class: 'err', 'data-err-for': s.id })),
         s.hint ? h('p', { class: 'hint' }, t(s.hint)) : null,
         h('div', { class: 'fields' }, s.fields.map((f) => this.fieldEl(f))))),
@@ -77,19 +90,27 @@ export class InputForm {
     this.session.errorsChanged();
   }
 
-  /** The message at each field: the page's own check first, then Python's, then the simulation's. */
+  /**
+   * The message at each field: the page's own check first, then Python's, then the simulation's.
+   * A raw firmware value converted from an SI field ("70000 (from motor.rated_voltage_v) is
+   * outside Uint16") is shown at that SI field too, where it was typed; a collapsed section with
+   * an error opens.
+   */
   showErrors(): void {
     const { localErrors, remoteError, simFieldError, stateNotes } = this.session;
+    const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f);
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
       let msg = localErrors.get(f) ?? '';
-      if (!msg && remoteError?.field === f) msg = errText(remoteError);
+      if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
       // A value from the link that could not be used: a note, not an error (the default is used).
       const note = msg ? '' : stateNotes.get(f) ?? '';
       el.textContent = msg || note;
       el.closest('.field')?.classList.toggle('invalid', msg !== '');
       el.closest('.field')?.classList.toggle('noted', note !== '');
+      const sec = el.closest<HTMLDetailsElement>('details.section');
+      if (msg && sec && !sec.open) sec.open = true;
     }
   }
 
@@ -143,7 +164,8 @@ export class InputForm {
   private onSelect(f: FieldSpec, value: string): void {
     const { input, report } = this.session;
     this.session.touched(f.path);
-    setPath(input as Record<string, unknown>, f.path, value);
+    // The empty choice ("—") is an absent field (pulab's default, or "not given").
+    setPath(input as Record<string, unknown>, f.path, value === '' ? null : value);
     if (f.path === 'current_loop.method' && value === 'manual' && report) {
       // Start manual tuning from the current design.
       const cl = input.current_loop ?? (input.current_loop = {});
@@ -175,6 +197,7 @@ export class InputForm {
     this.units[f.path] = u;
     store(UNITS_KEY, JSON.stringify(this.units));
     this.render();
+    this.session.schedule(); // the link (#in=…&u=…) carries the units too
   }
 
   private onPreset(id: string): void {

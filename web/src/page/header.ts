@@ -41,9 +41,20 @@ async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExpo
   } else toast(root, `${result.field}: ${errText(result)}`);
 }
 
+/**
+ * The report JSON as the page shows it: with the simulation (its metrics, traces and PLL review
+ * findings) when the simulation report is for the same input as the numbers shown.
+ */
+export function exportReport(session: Pick<ComputeSession, 'report' | 'simReport'>): string | null {
+  const { report, simReport } = session;
+  if (!report) return null;
+  const same = simReport && JSON.stringify(simReport.input) === JSON.stringify(report.input);
+  return JSON.stringify(same ? simReport : report, null, 2);
+}
+
 /** Copy the share link (#in=…); where the clipboard is refused, show it selected in a box. */
 async function copyLink(root: HTMLElement, session: ComputeSession): Promise<void> {
-  const url = location.href.split('#')[0] + encodeHash(effectiveInput(session.input));
+  const url = location.href.split('#')[0] + encodeHash(effectiveInput(session.input), session.units);
   try {
     await navigator.clipboard.writeText(url);
     toast(root, t('linkCopied'));
@@ -65,7 +76,7 @@ export function renderHeader(root: HTMLElement, session: ComputeSession, lang: H
       h('button', { type: 'button', class: 'copy-link', onclick: () => void copyLink(root, session) }, t('copyLink')),
       h('details', { class: 'export' }, h('summary', {}, t('export')),
         h('div', { class: 'menu' },
-          h('button', { type: 'button', 'data-export': 'json', onclick: () => session.report && download('pulab_report.json', JSON.stringify(session.report, null, 2), 'application/json') }, t('exportJson')),
+          h('button', { type: 'button', 'data-export': 'json', onclick: () => { const j = exportReport(session); if (j) download('pulab_report.json', j, 'application/json'); } }, t('exportJson')),
           exportButton('header', 'exportHeader'),
           exportButton('csv_current', 'exportCsvCurrent'),
           exportButton('csv_pll', 'exportCsvPll'))),

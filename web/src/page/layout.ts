@@ -1,10 +1,11 @@
 // The page's skeleton (full page or one embedded panel), the panels rendered into it, the
 // warnings list, and the stale marking of numbers that no longer match the form.
 import { h } from '../dom';
-import { errText, getLang, t, type Key } from '../i18n';
+import { errText, t, type Key } from '../i18n';
 import type { Panel, PanelContext, PanelId } from '../panels/panel';
 import { PANELS } from '../panels/registry';
 import { docTarget, docsAvailable } from '../panels/docs';
+import { allFindings, findingItem, markFindings, reviewCounts } from '../panels/review';
 import type { ComputeSession } from './session';
 
 export class Layout {
@@ -62,8 +63,9 @@ export class Layout {
       return;
     }
     // Bases and per-unit values side by side on wide screens.
-    const body = has('bases') && has('pu') && panels[0].id === 'bases' && panels[1].id === 'pu'
-      ? [h('div', { class: 'pair' }, sections[0], sections[1]), ...sections.slice(2)]
+    const ib = panels.findIndex((p) => p.id === 'bases');
+    const body = has('bases') && has('pu') && panels[ib + 1]?.id === 'pu'
+      ? [...sections.slice(0, ib), h('div', { class: 'pair' }, sections[ib], sections[ib + 1]), ...sections.slice(ib + 2)]
       : sections;
     this.root.replaceChildren(
       chrome,
@@ -76,7 +78,8 @@ export class Layout {
     );
   }
 
-  /** Render every panel (or only those in `only`) and, on a full render, the warnings. */
+  /** Render every panel (or only those in `only`), the review's findings at the top (on a full
+   * render or with the review), and the marks at the values they concern. */
   renderPanels(ctx: PanelContext, only?: PanelId[]): void {
     for (const p of PANELS) {
       if (only && !only.includes(p.id)) continue;
@@ -84,10 +87,16 @@ export class Layout {
       if (el) p.render(el, ctx);
     }
     const w = this.root.querySelector('.warnings');
-    if (w && (!only || only.length === 0)) {
-      const list = (getLang() === 'zh' ? ctx.report?.warnings_zh : ctx.report?.warnings) ?? [];
-      w.replaceChildren(...(list.length ? [h('strong', {}, `${t('warnings')}: `), h('ul', {}, list.map((x) => h('li', {}, x)))] : []));
+    const r = ctx.report;
+    if (w && (!only || only.length === 0 || only.includes('review'))) {
+      // The review's errors and warnings at the top of the page (notes only in its panel).
+      const all = allFindings(ctx);
+      const serious = all.filter((f) => f.severity !== 'note');
+      w.replaceChildren(...(r && serious.length ? [
+        h('strong', {}, `${t('p_review')}: `), h('a', { href: '#panel-review', class: 'counts' }, reviewCounts(all)),
+        h('ul', { class: 'findings' }, serious.map(findingItem))] : []));
     }
+    markFindings(this.root, allFindings(ctx));
   }
 
   /**
@@ -98,7 +107,11 @@ export class Layout {
   showStale(session: ComputeSession, hasField: (field: string) => boolean): void {
     const { localErrors, remoteError: re } = session;
     const stale = session.stale;
-    this.root.querySelector('.panels')?.classList.toggle('stale', stale);
+    const panels = this.root.querySelector('.panels');
+    panels?.classList.toggle('stale', stale);
+    // Between an edit and its numbers the panels show the previous input's: marked (after a
+    // short delay in CSS, so fast typing does not flicker).
+    panels?.classList.toggle('outdated', !stale && session.outdated);
     const global = this.root.querySelector('.global-error');
     if (global) global.textContent = re && !hasField(re.field) ? `${re.field}: ${errText(re)}` : '';
     const banner = this.root.querySelector('.stale-banner');

@@ -1,14 +1,15 @@
 // In-page links (why?, panel links, chapter anchors, the nav): handled here because
 // location.hash holds the input state and must not change. In an embed, they open the full page.
+import { scrollToEl } from '../dom';
 import { docTarget, openChapter } from '../panels/docs';
 import type { PanelId } from '../panels/panel';
 
 export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: () => void): void {
   root.addEventListener('click', (ev) => {
-    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], nav.tabs a');
+    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], [data-field], nav.tabs a');
     if (!a) return;
     ev.preventDefault();
-    const go = (id: string) => document.getElementById(id)?.scrollIntoView({ block: 'start' });
+    const go = (id: string) => scrollToEl(document.getElementById(id));
     if (a.dataset.why) {
       const target = docTarget(a.dataset.why);
       if (!target) return;
@@ -28,7 +29,18 @@ export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: 
       if (a.dataset.panelLink === 'inputs') (root.querySelector('.inputs input') as HTMLElement | null)?.focus();
     } else if (a.dataset.docLink) {
       const el = root.querySelector(`[data-anchor="${CSS.escape(a.dataset.docLink)}"]`);
-      if (el) el.scrollIntoView({ block: 'start' });
+      scrollToEl(el);
+    } else if (a.dataset.field) {
+      // A review finding's "→ field": the input to change (its section opened), focused.
+      const input = root.querySelector<HTMLElement>(`.inputs [name="${CSS.escape(a.dataset.field)}"]`);
+      if (embed || !input) {
+        if (embed) window.open(`./${location.hash}`, '_blank', 'noopener');
+        return;
+      }
+      const sec = input.closest<HTMLDetailsElement>('details.section');
+      if (sec) sec.open = true;
+      scrollToEl(input.closest('.field'));
+      input.focus();
     } else if (a.dataset.nav) {
       go(`panel-${a.dataset.nav}`);
     }

@@ -29,6 +29,8 @@ const SIM_PAUSE_MS = 400;
 
 export class ComputeSession {
   input: Input;
+  /** Display unit chosen per field path (the form's; kept in links and localStorage). */
+  units: Record<string, string> = {};
   report: Report | null = null;
   simReport: Report | null = null;
   simError: string | null = null;
@@ -145,6 +147,11 @@ export class ComputeSession {
     return this.localErrors.size > 0 || this.remoteError !== null || behind;
   }
 
+  /** The numbers on the page are from another input than the form's (a computation is due). */
+  get outdated(): boolean {
+    return this.report !== null && this.reportFor !== reportKey(this.input);
+  }
+
   schedule(delay = 10): void {
     this.updateSource();
     clearTimeout(this.timer);
@@ -252,7 +259,7 @@ export class ComputeSession {
   /** The input goes into the URL (#in=) and localStorage; embeds leave both to their host page. */
   private persist(eff: Input): void {
     if (this.embed) return;
-    const hash = encodeHash(eff);
+    const hash = encodeHash(eff, this.units);
     if (location.hash !== hash && !this.keepLink) history.replaceState(null, '', hash);
     store(STORAGE_KEY, JSON.stringify(eff));
   }

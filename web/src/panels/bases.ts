@@ -6,11 +6,12 @@ const UNITS: Record<string, string> = { U_b: 'V', I_b: 'A', f_b: 'Hz', w_b: 'rad
 const SYM: Record<string, string> = { U_b: 'U_b', I_b: 'I_b', f_b: 'f_b', w_b: '\\omega_b', Z_b: 'Z_b', L_b: 'L_b', psi_b: '\\psi_b', T_b: 'T_b', P_b: 'P_b', theta_b: '\\theta_b' };
 
 function formulas(base: string, angle: string): Record<string, string> {
-  const ub = base === 'peak' ? '\\sqrt{2/3}\\,U_{LL}' : base === 'custom' ? '\\text{given}' : 'U_{LL}/\\sqrt{3}';
-  const ib = base === 'peak' ? '\\sqrt{2}\\,I_{rms}' : base === 'custom' ? '\\text{given}' : 'I_{rms}';
+  const given = `\\text{${t('texGiven')}}`;
+  const ub = base === 'peak' ? '\\sqrt{2/3}\\,U_{LL}' : base === 'custom' ? given : 'U_{LL}/\\sqrt{3}';
+  const ib = base === 'peak' ? '\\sqrt{2}\\,I_{rms}' : base === 'custom' ? given : 'I_{rms}';
   const pb = base === 'rms' ? '3\\,U_b I_b' : '\\tfrac{3}{2}\\,U_b I_b';
   return {
-    U_b: ub, I_b: ib, f_b: 'f_{max}\\ (\\text{drive})', w_b: '2\\pi f_b', Z_b: 'U_b / I_b', L_b: 'Z_b / \\omega_b',
+    U_b: ub, I_b: ib, f_b: `f_{max}\\ (\\text{${t('texDrive')}})`, w_b: '2\\pi f_b', Z_b: 'U_b / I_b', L_b: 'Z_b / \\omega_b',
     psi_b: 'U_b / \\omega_b', T_b: '1/\\omega_b', P_b: pb, theta_b: angle === '2pi' ? '2\\pi' : '\\pi',
   };
 }
@@ -22,7 +23,7 @@ export const basesPanel: Panel = {
     const conv = (report?.input.conventions ?? input.conventions ?? {}) as Record<string, string>;
     const f = formulas(conv.base ?? 'rms', conv.angle_base ?? 'pi');
     el.replaceChildren(
-      h('p', { class: 'note' }, tex('\\{U_b, I_b, f_b\\} \\Rightarrow Z_b = \\frac{U_b}{I_b},\\ \\omega_b = 2\\pi f_b,\\ L_b = \\frac{Z_b}{\\omega_b},\\ \\psi_b = \\frac{U_b}{\\omega_b}'), ' ', h('span', { class: 'cite' }, '(seed 1.1-1)')),
+      h('p', { class: 'note' }, tex('\\{U_b, I_b, f_b\\} \\Rightarrow Z_b = \\frac{U_b}{I_b},\\ \\omega_b = 2\\pi f_b,\\ L_b = \\frac{Z_b}{\\omega_b},\\ \\psi_b = \\frac{U_b}{\\omega_b}'), ' ', h('span', { class: 'cite' }, t('seedCite', { n: '1.1-1' }))),
       table(
         [t('quantity'), t('formula'), t('value'), t('unit')],
         Object.keys(UNITS).map((k) => [tex(SYM[k]), tex(`${SYM[k]} = ${f[k]}`), num(`base.${k}`, report?.base[k]), UNITS[k]]),

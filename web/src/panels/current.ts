@@ -10,12 +10,12 @@ import { metricsTable } from './metrics';
 import type { Panel } from './panel';
 import { traceTable } from './vendor';
 
-const DESIGN: Record<string, string> = {
+const DESIGN = (): Record<string, string> => ({
   bandwidth: 'k_p = \\omega_c L,\\quad k_i = \\omega_c R_s,\\quad \\omega_c = 2\\pi f_{bw}',
   damping: 'k_p = 2\\zeta\\omega_0 L - R_s,\\quad k_i = \\omega_0^2 L',
-  manual: 'k_p,\\ k_i\\ \\text{given}',
-  integers: '\\text{pm\\_kp},\\ \\text{pm\\_ki}\\ \\text{given} \\Rightarrow k_p = \\frac{\\text{pm\\_kp}}{2^{12}}\\frac{U_b}{I_b},\\ k_i = \\frac{\\text{pm\\_ki}}{2^{16}T_s}\\frac{U_b}{I_b}',
-};
+  manual: `k_p,\\ k_i\\ \\text{${t('texGiven')}}`,
+  integers: `\\text{pm\\_kp},\\ \\text{pm\\_ki}\\ \\text{${t('texGiven')}} \\Rightarrow k_p = \\frac{\\text{pm\\_kp}}{2^{12}}\\frac{U_b}{I_b},\\ k_i = \\frac{\\text{pm\\_ki}}{2^{16}T_s}\\frac{U_b}{I_b}`,
+});
 
 function axisRow(a: 'd' | 'q', g: PiAxis | undefined): HTMLElement {
   const p = `current_pi.${a}`;
@@ -51,7 +51,7 @@ export const currentPanel: Panel = {
     const figEl = f.fig;
     el.replaceChildren(...[
       h('div', { class: 'formulas' },
-        tex(DESIGN[method] ?? DESIGN.manual, true),
+        tex(DESIGN()[method] ?? DESIGN().manual, true),
         tex('k_p^{pu} = k_p\\frac{I_b}{U_b},\\ k_i^{pu} = k_i\\frac{I_b}{U_b}\\ \\text{(2.1-4)}\\qquad \\text{pm\\_kp} = \\mathrm{round}(k_p^{pu}\\,2^{12}),\\ \\text{pm\\_ki} = \\mathrm{round}(k_i^{pu}\\,T_s\\,2^{16})\\ \\text{(2.2-9)}', true)),
       h('table', { class: 'grid pi' },
         h('thead', {},

@@ -1,6 +1,6 @@
 // Explainer chapters (docs/zh, docs/en, docs/index.json, issue 5) rendered with the current
 // report: {{path}} values, {{panel:NAME}} and {{plot:NAME}} embeds, links back to the panels.
-import { h, num, table } from '../dom';
+import { h, num, scrollToEl, table } from '../dom';
 import { SECTIONS } from '../fields';
 import { fmtNum } from '../format';
 import { fromSI } from '../units';
@@ -147,7 +147,7 @@ export const docsPanel: Panel = {
       body.innerHTML = renderMarkdown(md, { value: (p) => getPath(ctx.report, p) ?? getPath(ctx.simReport, p) });
       fillEmbeds(body, ctx);
       if (state.anchor) {
-        body.querySelector(`[data-anchor="${CSS.escape(state.anchor)}"]`)?.scrollIntoView({ block: 'start' });
+        scrollToEl(body.querySelector(`[data-anchor="${CSS.escape(state.anchor)}"]`));
         state.anchor = '';
       }
     });

@@ -40,6 +40,7 @@ export const pllPanel: Panel = {
         { key: 'locked', label: 'locked', bool: true },
         { key: 'lock_time_s', label: 'lockTime', unit: 'ms', scale: 1e3 },
         { key: 'speed_error_hz', label: 'speedErr', unit: 'Hz' },
+        { key: 'steady_angle_error_deg', label: 'steadyAngleErr', unit: '°' },
         { key: 'max_angle_error_deg', label: 'maxAngleErr', unit: '°' },
       ]) : null,
     ].filter((x): x is HTMLElement => x !== null));

@@ -12,21 +12,20 @@ const ROWS: [string, string, string][] = [
 ];
 
 /** ψ_r from the back-EMF in the chosen convention (seed 1.3-2, 1.4-22): peak dq is √2 larger. */
-const PSI_R: Record<string, string> = {
-  rms: '\\psi_r = \\dfrac{E_{LL}}{\\sqrt{3}\\cdot 2\\pi f_n}\\ (\\text{rms})',
-  peak: '\\psi_r = \\dfrac{\\sqrt{2}\\,E_{LL}}{\\sqrt{3}\\cdot 2\\pi f_n}\\ (\\text{peak, custom})',
-};
+const PSI_R = (conv: 'rms' | 'peak'): string => conv === 'rms'
+  ? `\\psi_r = \\dfrac{E_{LL}}{\\sqrt{3}\\cdot 2\\pi f_n}\\ (\\text{${t('texRms')}})`
+  : `\\psi_r = \\dfrac{\\sqrt{2}\\,E_{LL}}{\\sqrt{3}\\cdot 2\\pi f_n}\\ (\\text{${t('texPeakCustom')}})`;
 
 export const puPanel: Panel = {
   id: 'pu',
   title: 'p_pu',
   render(el, { report }) {
     el.replaceChildren(
-      h('p', { class: 'note' }, tex('u_d^* = R_s^* i_d^* + L_d^* \\frac{di_d^*}{dt^*} - \\omega_e^* L_q^* i_q^*'), ' ', h('span', { class: 'cite' }, '(seed 1.2-2)')),
+      h('p', { class: 'note' }, tex('u_d^* = R_s^* i_d^* + L_d^* \\frac{di_d^*}{dt^*} - \\omega_e^* L_q^* i_q^*'), ' ', h('span', { class: 'cite' }, t('seedCite', { n: '1.2-2' }))),
       table(
         [t('quantity'), t('formula'), t('value'), t('unit')],
         ROWS.map(([k, f, u]) => [h('code', {}, k),
-          tex(k === 'psi_r_wb' ? PSI_R[report?.input.conventions?.base === 'rms' || !report ? 'rms' : 'peak'] : f),
+          tex(k === 'psi_r_wb' ? PSI_R(report?.input.conventions?.base === 'rms' || !report ? 'rms' : 'peak') : f),
           num(`pu.${k}`, report?.pu[k], { sig: 8 }), u]),
       ),
     );

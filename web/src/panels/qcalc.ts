@@ -32,9 +32,10 @@ export function qcalcRequest(s: QcalcState): { ok: true; req: Record<string, unk
   if (!wb.ok) return { ok: false, field: 'qcalc.word_bits', error: wb.error };
   if (wb.value !== null) req.word_bits = wb.value;
   if (s.mode === 'decode') {
+    // Sent as typed: pulab reads decimal, 0x… hex, 0b… binary and full-width digits.
     const r = parseNumber(s.raw, true);
-    if (!r.ok || r.value === null) return { ok: false, field: 'qcalc.raw', error: 'integer' };
-    req.raw = r.value;
+    if (r.ok && r.value === null) return { ok: false, field: 'qcalc.raw', error: 'integer' };
+    req.raw = r.ok ? r.value : s.raw.trim();
   } else {
     const v = parseNumber(s.value);
     if (!v.ok || v.value === null) return { ok: false, field: 'qcalc.value', error: 'number' };
@@ -93,8 +94,8 @@ export const qcalcPanel: Panel = {
           qstate.mode === 'encode'
             ? field(t('qValue'), inp('value'), 'qcalc.value', errFor('qcalc.value'))
             : field(t('qRaw'), inp('raw'), 'qcalc.raw', errFor('qcalc.raw')),
-          field(t('qRounding'), sel('rounding', [['nearest', 'nearest (ties away)'], ['convergent', 'convergent (ties even)'], ['floor', 'floor'], ['zero', 'toward zero']]), 'qcalc.rounding'),
-          field(t('qOverflow'), sel('overflow', [['saturate', 'saturate'], ['wrap', 'wrap'], ['error', 'error']]), 'qcalc.overflow'),
+          field(t('qRounding'), sel('rounding', [['nearest', t('qr_nearest')], ['convergent', t('qr_convergent')], ['floor', t('qr_floor')], ['zero', t('qr_zero')]]), 'qcalc.rounding'),
+          field(t('qOverflow'), sel('overflow', [['saturate', t('qo_saturate')], ['wrap', t('qo_wrap')], ['error', t('qo_error')]]), 'qcalc.overflow'),
           h('p', { class: 'hint' }, t('qFormatHint'))),
         h('div', { class: 'qout' + (last && !last.ok ? ' stale' : '') },
           otherErr ? h('p', { class: 'err' }, otherErr) : null,

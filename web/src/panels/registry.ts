@@ -1,6 +1,8 @@
 // The panels of the page, in display order. To add a panel: one file in this folder behind the
 // `Panel` interface (panel.ts), one line here, its `nav_<id>` and title keys in i18n.ts.
 import type { Panel } from './panel';
+import { reviewPanel } from './review';
+import { datasheetPanel } from './datasheet';
 import { basesPanel } from './bases';
 import { puPanel } from './pu';
 import { vendorPanel } from './vendor';
@@ -17,6 +19,8 @@ import { vendorsPanel } from './vendors';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
+  reviewPanel, // first: the design review is the page's summary
+  datasheetPanel,
   basesPanel,
   puPanel,
   vendorPanel,

@@ -73,7 +73,7 @@ function traceBlock(name: string, v: VendorResult | undefined): HTMLElement {
   return h(
     'div',
     { class: 'trace-block' },
-    h('div', { class: 'trace-title' }, h('code', {}, VAR[name]), ' = ', num(`${p}.value`, v?.value, { kind: 'int' }), h('span', { class: 'q' }, v ? ` Q${v.q}` : ''), ' ', flagChips(v?.flags)),
+    h('div', { class: 'trace-title' }, h('code', {}, VAR[name]), ' = ', num(`${p}.value`, v?.value, { kind: 'int', mirror: true }), h('span', { class: 'q' }, v ? ` Q${v.q}` : ''), ' ', flagChips(v?.flags)),
     traceTable(`${p}.trace`, steps),
   );
 }

@@ -1,0 +1,269 @@
+"""Datasheet entry and the graded design review (issue 9).
+
+Golden vectors: tests/golden/review, written by tests/oracle/review_oracle.py (pulab-free)
+for three real motors' datasheets and the issue's contract example."""
+import copy
+import json
+import math
+import subprocess
+import sys
+
+import pytest
+
+from conftest import ROOT
+from pulab import InputError, report
+from pulab.messages import has_chinese
+from pulab.review import THRESHOLDS, grade
+
+GOLDEN = sorted((ROOT / "tests" / "golden" / "review").glob("*.json"))
+REL = 1e-12
+
+
+def _close(a, b):
+    if b is None or a is None:
+        return a is b
+    return abs(a - b) <= REL * max(abs(a), abs(b))
+
+
+def test_review_golden_files_are_fresh():
+    r = subprocess.run([sys.executable, str(ROOT / "tests/oracle/review_oracle.py"), "--check"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+@pytest.mark.parametrize("path", GOLDEN, ids=lambda p: p.stem)
+def test_real_motor_datasheets(path):
+    case = json.loads(path.read_text())
+    exp = case["expected"]
+    if "error_field" in exp:
+        with pytest.raises(InputError) as e:
+            report(case["input"])
+        assert e.value.field == exp["error_field"]
+        from pulab.datasheet import apply
+        motor = apply(case["input"]["datasheet"], case["input"]["motor"], case["input"]["drive"])[0]
+    else:
+        r = report(case["input"])
+        motor = r["input"]["motor"]
+        for k, v in exp["mechanical"].items():
+            assert _close(r["mechanical"][k], v), k
+        for k, v in exp["review.headroom"].items():
+            assert _close(r["review"]["headroom"][k], v), k
+        got = sorted(((x["severity"], x["code"], x["key"]) for x in r["review"]["findings"]),
+                     key=lambda x: (("error", "warning", "note").index(x[0]), x[1], x[2]))
+        assert got == [tuple(x) for x in exp["review.findings"]]
+    for k, v in exp["input.motor"].items():
+        assert _close(float(motor[k]), float(v)), (k, motor[k], v)
+
+
+def _seed(**drive):
+    return {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
+                      "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
+            "drive": {"udc_v": 24, "ts_s": 1e-4, **drive}, "current_loop": {"bandwidth_hz": 300}}
+
+
+def _codes(r, severity=None):
+    return {(x["code"], x["key"]) for x in r["review"]["findings"]
+            if severity is None or x["severity"] == severity}
+
+
+@pytest.mark.parametrize("value, severity", [
+    (0.099, None), (0.1, "note"), (-0.99, "note"), (1.0, "warning"), (-4.99, "warning"),
+    (5.0, "error"), (-200.0, "error")])
+def test_quantization_grades(value, severity):
+    assert grade(value, THRESHOLDS["quantization_pct"]) == severity
+
+
+def test_24v_bus_truncation_of_pm_maxout_vol_is_an_error():
+    # data1 = (240·2316)>>15 = 16 V instead of 16.97 V: −5.7 % (issue 9)
+    r = report(_seed())
+    f = {x["key"]: x for x in r["review"]["findings"]}
+    assert f["vendor.pm_maxout_vol.value"]["severity"] == "error"
+    assert f["vendor.pm_maxout_vol.value"]["field"] == "drive.udc_v"
+    assert r["vendor"]["pm_maxout_vol"]["error_pct"] == pytest.approx(-5.72, abs=0.01)
+
+
+def test_base_100hz_on_300hz_motor_flags_freqper_and_fluxrotor():
+    inp = _seed(base_freq_hz=100)
+    inp["motor"]["rated_freq_hz"] = 300
+    r = report(inp)
+    errors = _codes(r, "error")
+    assert ("constant_wrap", "vendor.FreqPer.value") in errors
+    assert ("constant_error", "vendor.FluxRotor.value") in errors
+    assert r["vendor"]["FluxRotor"]["error_pct"] == pytest.approx(200, rel=1e-3)
+    assert ("base_below_rated", "vendor.FreqPer.value") in _codes(r, "warning")
+
+
+@pytest.mark.parametrize("wc_ts, severity", [(0.19, None), (0.2, "warning"), (0.25, "warning"),
+                                             (0.99, "warning"), (1.0, "error")])
+def test_wc_ts_one_threshold_and_consistent_text(wc_ts, severity):
+    inp = _seed()
+    inp["current_loop"] = {"bandwidth_hz": wc_ts / (2 * math.pi * 1e-4) * (1 + 1e-12)}
+    f = [x for x in report(inp)["review"]["findings"] if x["code"] == "wc_ts"]
+    if severity is None:
+        assert f == []
+    else:
+        assert f[0]["severity"] == severity
+        # the text states the same bound that fired it, and a bandwidth that passes
+        assert "> 0.2" in f[0]["message"] or "≥ 1" in f[0]["message"]
+        assert "318.3 Hz" in f[0]["message"]
+
+
+def test_base_equal_rated_compared_on_integers():
+    inp = _seed(base_freq_hz=633.33)
+    inp["motor"]["rated_freq_hz"] = 633.333
+    r = report(inp)
+    assert r["vendor"]["raw"]["FullFreq01"] == r["vendor"]["raw"]["FreqRated01"] == 63333
+    assert not [x for x in r["review"]["findings"] if x["code"] == "base_below_rated"]
+
+
+def test_voltage_headroom_needs_field_weakening():
+    # 400 V servo whose back-EMF at f_b is 1.28 pu against a ≈0.95 pu limit (issue 9)
+    inp = {"motor": {"rated_voltage_v": 400, "rated_current_a": 10, "rated_freq_hz": 250,
+                     "rs_ohm": 0.5, "ld_h": 0.008, "lq_h": 0.008, "bemf_v": 320,
+                     "pole_pairs": 5},
+           "drive": {"base_freq_hz": 400, "udc_v": 540, "ts_s": 1e-4},
+           "current_loop": {"bandwidth_hz": 300}}
+    r = report(inp)
+    assert r["pu"]["psi_r"] == pytest.approx(1.28, rel=1e-9)
+    h = r["review"]["headroom"]
+    assert h["limit_v"] / 400 == pytest.approx(0.95, abs=0.01)
+    assert h["field_weakening"] is True
+    assert h["field_weakening_from_hz"] == pytest.approx(h["limit_v"] / 320 * 250)
+    assert ("voltage_bemf", "review.headroom.bemf_fb_v") in _codes(r)
+
+
+def test_well_designed_drive_is_quiet():
+    case = json.loads((ROOT / "tests/golden/review/issue9_contract_example.json").read_text())
+    r = report(case["input"])
+    assert r["warnings"] == [] and r["review"]["counts"]["error"] == 0
+    assert r["review"]["counts"]["warning"] == 0
+
+
+def test_pll_steady_angle_error_beside_the_transient():
+    inp = _seed()
+    inp["sim"] = {"pll": {}}
+    m = report(inp)["sim"]["pll"]["metrics"]["q15"]
+    assert m["locked"]
+    assert m["steady_angle_error_deg"] < 2.0 < m["max_angle_error_deg"]
+
+
+@pytest.mark.parametrize("ds, motor_key, field", [
+    ({"speed_rpm": 3000}, "rated_freq_hz", "datasheet.speed_rpm"),
+    ({"ke_v_per_krpm": 40, "ke_measure": "rms"}, "bemf_v", "datasheet.ke_v_per_krpm"),
+    ({"rs_line_ohm": 2}, "rs_ohm", "datasheet.rs_line_ohm"),
+    ({"l_line_h": 0.004}, "ld_h", "datasheet.l_line_h"),
+    ({"dc_bus_v": 48}, "rated_voltage_v", "datasheet.dc_bus_v"),
+])
+def test_datasheet_and_motor_field_both_given_names_both(ds, motor_key, field):
+    inp = _seed()
+    inp["datasheet"] = ds
+    with pytest.raises(InputError) as e:
+        report(inp)
+    assert e.value.field == field and f"motor.{motor_key}" in e.value.message
+    assert has_chinese(e.value.message)
+
+
+FULL = {"speed_rpm": 3000, "ke_v_per_krpm": 30, "ke_measure": "rms", "rs_line_ohm": 3,
+        "l_line_h": 1e-3}
+
+
+def _without(*keys, **extra):
+    d = {k: v for k, v in FULL.items() if k not in keys}
+    d.update(extra)
+    return d
+
+
+@pytest.mark.parametrize("ds, field", [
+    (_without("ke_measure"), "datasheet.ke_measure"),
+    (_without(ke_measure="avg"), "datasheet.ke_measure"),
+    (_without(psi_wb=0.1), "datasheet.psi_wb"),
+    (_without("ke_v_per_krpm", psi_wb=0.1), "datasheet.ke_measure"),
+    (_without(kt_current="rms"), "datasheet.kt_current"),
+    (_without(winding="wye"), "datasheet.winding"),
+    (_without(speed_rpm=-1), "datasheet.speed_rpm"),
+    (_without(speed_rpm="3000"), "datasheet.speed_rpm"),
+    (_without(rpm=3000), "datasheet.rpm"),
+    (_without(ld_line_h=1e-3), "datasheet.ld_line_h"),
+    (_without("speed_rpm"), "datasheet.speed_rpm"),
+    # a derived value out of range is reported at the datasheet value it came from
+    (_without(speed_rpm=1e-8), "datasheet.speed_rpm"),
+])
+def test_datasheet_errors_name_the_field(ds, field):
+    inp = _seed()
+    for k in ("rated_freq_hz", "bemf_v", "rs_ohm", "ld_h", "lq_h"):
+        inp["motor"].pop(k)
+    inp["datasheet"] = ds
+    with pytest.raises(InputError) as e:
+        report(inp)
+    assert e.value.field == field
+    assert has_chinese(e.value.message), e.value.message
+
+
+@pytest.mark.parametrize("extra, bemf", [
+    # E_LL = Ke_rms·ω_m: 0.2 V·s/rad at 3000 rpm = 62.83 V
+    ({"ke_v_s_per_rad": 0.2, "ke_measure": "rms"}, 0.2 * 100 * math.pi),
+    # kT = √3·Ke (per A RMS), so E_LL = kT/√3·ω_m
+    ({"kt_nm_per_a": 0.2 * math.sqrt(3)}, 0.2 * 100 * math.pi),
+    ({"kt_nm_per_a": 0.2 * math.sqrt(3) / math.sqrt(2), "kt_current": "peak"}, 0.2 * 100 * math.pi),
+    # ψ amplitude: E_LL = √3·ω_e·ψ/√2, ω_e = 2π·200 Hz
+    ({"psi_wb": 0.1}, math.sqrt(3) * 2 * math.pi * 200 * 0.1 / math.sqrt(2)),
+])
+def test_other_back_emf_sources(extra, bemf):
+    inp = _seed()
+    for k in ("rated_freq_hz", "bemf_v"):
+        inp["motor"].pop(k)
+    inp["datasheet"] = {"speed_rpm": 3000, **extra}
+    r = report(inp)
+    assert r["input"]["motor"]["bemf_v"] == pytest.approx(bemf, rel=1e-12)
+    assert r["datasheet"]["conversions"][1]["field"] == "motor.bemf_v"
+
+
+def test_delta_winding_has_the_same_star_equivalent():
+    inp = _seed()
+    for k in ("rs_ohm", "ld_h", "lq_h"):
+        inp["motor"].pop(k)
+    inp["datasheet"] = {"rs_line_ohm": 3.0, "l_line_h": 0.002, "winding": "delta"}
+    r = report(inp)
+    assert r["input"]["motor"]["rs_ohm"] == 1.5 and r["input"]["motor"]["lq_h"] == 0.001
+    assert "delta" in r["datasheet"]["conversions"][0]["formula"]
+    assert "datasheet" not in r["input"]  # the echoed input can be fed back as it is
+    assert report(r["input"])["vendor"]["raw"] == r["vendor"]["raw"]
+
+
+def test_every_finding_has_chinese_and_names_a_field():
+    inp = _seed(base_freq_hz=100)
+    inp["motor"]["rated_freq_hz"] = 300
+    inp["conventions"] = {"inductance_unit": "uH"}
+    inp["current_loop"] = {"bandwidth_hz": 5000}
+    inp["sim"] = {"pll": {}}
+    r = report(inp)
+    assert {"error", "warning", "note"} == {x["severity"] for x in r["review"]["findings"]}
+    for x in r["review"]["findings"]:
+        assert has_chinese(x["message"]), x["message"]
+        assert x["field"].split(".")[0] in ("motor", "drive", "conventions", "current_loop",
+                                            "pll"), x
+    assert r["warnings_zh"] == [x["message_zh"] for x in r["review"]["findings"]
+                                if x["severity"] != "note"]
+
+
+def test_cli_text_shows_the_review_and_the_conversions(tmp_path):
+    case = json.loads((ROOT / "tests/golden/review/heidenhain_srp5000.json").read_text())
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps(case["input"]))
+    out = subprocess.run([sys.executable, "-m", "pulab", "report", str(p), "--format", "text"],
+                         capture_output=True, text=True, env={"PYTHONPATH": str(ROOT / "py")})
+    assert out.returncode == 0, out.stderr
+    assert "Design review: 0 error(s), 2 warning(s)" in out.stdout
+    assert "E_LL = Ke·2π·n/60 = 0.397·2π·300/60" in out.stdout
+    assert "WARNING [vendor.pm_maxout_vol.value]" in out.stdout
+
+
+def test_cli_both_given_exits_2_naming_the_field(tmp_path):
+    inp = copy.deepcopy(_seed())
+    inp["datasheet"] = {"speed_rpm": 3000}
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps(inp))
+    out = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)],
+                         capture_output=True, text=True, env={"PYTHONPATH": str(ROOT / "py")})
+    assert out.returncode == 2
+    assert out.stderr.startswith("error: datasheet.speed_rpm: and motor.rated_freq_hz both given")
