@@ -90,6 +90,7 @@ export default async function review(ctx) {
   await check('review: JSON export holds the simulation metrics; CSV headers carry units', async () => {
     await page.goto(subSrv.url);
     await ready(page);
+    await page.$eval('#panel-pll', (e) => e.scrollIntoView()); // simulations run for visible plots
     await page.waitForSelector('[data-key="sim.pll.metrics.q15.steady_angle_error_deg"][data-value]', { timeout: 60_000, state: 'attached' });
     const grab = async (kind) => {
       if (!(await page.$eval('details.export', (e) => e.open))) await page.click('.export > summary');
