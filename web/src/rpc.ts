@@ -94,14 +94,28 @@ export class PulabClient {
     }, this.idleMs);
   }
 
-  call(kind: ApiKind, payload: unknown, channel?: string): Promise<CallResult> {
+  /**
+   * Call pulab.api in the worker. `lostAfterMs`: a ready runtime that has not answered by then is
+   * lost (crashed, killed or hung): the client fails with a message and `lost` set, so the page
+   * can start a new runtime (a report takes milliseconds, so a short limit is safe for it).
+   */
+  call(kind: ApiKind, payload: unknown, channel?: string, lostAfterMs?: number): Promise<CallResult> {
     if (this.fatal) return Promise.reject(new Error(this.fatal));
     const id = this.next++;
     return new Promise<CallResult>((resolve, reject) => {
       this.pending.set(id, { resolve, reject });
       this.worker.postMessage({ type: 'call', id, kind, payload: JSON.stringify(payload), channel });
+      if (lostAfterMs !== undefined && this.ready)
+        setTimeout(() => {
+          if (!this.pending.has(id)) return;
+          this.lost = true;
+          this.fail(`Python did not answer for ${Math.round(lostAfterMs / 1000)} s`);
+        }, lostAfterMs);
     });
   }
+
+  /** The runtime was ready and then stopped answering (see `call`). */
+  lost = false;
 
   private fail(message: string): void {
     if (this.fatal) return;
