@@ -43,7 +43,7 @@ export function startRuntime(kind: RuntimeKind, generation = 0): PulabClient {
   const shared = typeof SharedWorker === 'function';
   const name = generation ? `pulab-${kind}-${generation}` : `pulab-${kind}`;
   document.documentElement.dataset.runtime = shared ? 'shared' : 'dedicated';
-  const client = new PulabClient(shared ? sharedWorker(name) : dedicatedWorker(name));
+  const client = new PulabClient(shared ? sharedWorker(name) : dedicatedWorker(name), {}, `pulab-alive-${name}`);
   client.init(new URL('pyodide/', document.baseURI).href, BOOT_IDLE_MS);
   return client;
 }
