@@ -226,7 +226,12 @@ export class ComputeSession {
     const sc = this.simWorker();
     if (!sc) return;
     try {
+      // <html data-sim-posted/-done>: counters of simulation requests and results (the fault suite
+      // measures how long a new input waits behind a running simulation).
+      const root = document.documentElement;
+      root.dataset.simPosted = String(Number(root.dataset.simPosted ?? 0) + 1);
       const { result } = await sc.call('report', simInput(eff), 'sim', SIM_LOST_MS);
+      root.dataset.simDone = String(Number(root.dataset.simDone ?? 0) + 1);
       if (result.ok) {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
