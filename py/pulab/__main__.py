@@ -1,4 +1,4 @@
-"""Command line: ``python -m pulab report INPUT.json [--format json|text]``.
+"""Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``.
 
 Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr.
 """
@@ -10,7 +10,7 @@ import json
 import sys
 
 from .errors import InputError
-from .jsontext import parse
+from .commands import add_family_commands, read_json
 from .report import format_text, report
 
 
@@ -21,21 +21,12 @@ def main(argv: list | None = None) -> int:
     rp = sub.add_parser("report", help="print the report for an input JSON file ('-' = stdin)")
     rp.add_argument("input")
     rp.add_argument("--format", choices=("json", "text"), default="json")
+    add_family_commands(sub)
     args = p.parse_args(argv)
+    if hasattr(args, "run"):
+        return args.run(args)
     try:
-        if args.input == "-":
-            data = sys.stdin.buffer.read()
-        else:
-            with open(args.input, "rb") as f:
-                data = f.read()
-    except OSError as e:
-        print(f"error: input: cannot read {args.input!a}: {e.strerror}", file=sys.stderr)
-        return 2
-    try:
-        r = report(parse(data.decode("utf-8")))
-    except UnicodeDecodeError as e:
-        print(f"error: input: not UTF-8 text (byte {e.start})", file=sys.stderr)
-        return 2
+        r = report(read_json(args.input))
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2

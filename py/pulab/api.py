@@ -25,7 +25,7 @@ from .export import c_header, sim_csv
 from .messages import to_zh
 from .report import report
 
-__all__ = ["run_json", "qcalc", "qcalc_json", "export_json"]
+__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -131,5 +131,78 @@ def export_json(text: str) -> str:
                 raise InputError("sim", f"the input asks for no {kind[4:]} simulation")
             return json.dumps({"ok": True, "text": sim_csv(r, kind[4:])})
         raise InputError("kind", "must be one of header, csv_current, csv_pll")
+    except InputError as e:
+        return _fail(e)
+
+
+def sweep_json(text: str) -> str:
+    """A family sweep (:mod:`pulab.sweep`) on a JSON string, whole or in chunks.
+
+    The request is a sweep request (``input``, ``x``, optional ``y`` and ``profile``) with
+    ``op``: ``"sweep"`` (default: everything at once), ``"plan"`` (the axes and the number
+    of points, nothing computed), ``"chunk"`` with ``start`` and ``count`` (those points and
+    their summary; a page computes a sweep chunk by chunk to show progress and cancel), or
+    ``"merge"`` with ``summaries`` (the chunks' summaries → the sweep's summary).
+
+    Returns ``{"ok": true, ...}`` with ``plan``, ``chunk`` or ``summary``, or an error
+    naming the field.
+
+    >>> import json
+    >>> req = {"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3}}
+    >>> json.loads(sweep_json(json.dumps({**req, "op": "plan"})))["plan"]["x"]["values"]
+    [1.0, 1.5, 2.0]
+    >>> json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": 0, "count": 2})))[
+    ...     "chunk"]["points"]["error"][0]
+    'motor.rated_voltage_v: is required'
+    """
+    from . import sweep as sw  # imported on first use: report-only pages stay lean
+    try:
+        req = parse(text, "sweep")
+        op = req.get("op", "sweep") if isinstance(req, dict) else None
+        if op == "sweep":
+            out = {"sweep": sw.sweep(req)}
+        else:
+            plan = sw.make_plan(req)
+            if op == "plan":
+                out = {"plan": sw.describe(plan)}
+            elif op == "chunk":
+                out = {"chunk": sw.chunk(plan, req.get("start", 0), req.get("count"))}
+            elif op == "merge":
+                summaries = req.get("summaries")
+                if not isinstance(summaries, list):
+                    raise InputError("sweep.summaries", "must be a list of chunk summaries")
+                out = {"summary": sw.merge(plan, summaries)}
+            else:
+                raise InputError("sweep.op", "must be one of sweep, plan, chunk, merge")
+        return json.dumps({"ok": True, **out}, allow_nan=False)
+    except InputError as e:
+        return _fail(e)
+
+
+def batch_json(text: str) -> str:
+    """A batch (:mod:`pulab.batch`) on ``{"csv": text, "start": int, "count": int}``.
+
+    Returns ``{"ok": true, "total": rows, "columns": [...], "rows": [[cell, ...]], "csv":
+    text}`` for data rows ``start`` … ``start+count−1`` (``csv`` has the header when
+    ``start`` is 0, so the chunks' texts joined are the CLI's output), or an error naming
+    the field when the file as a whole is unreadable.  Bad rows come back in their
+    ``error`` cell.
+    """
+    from . import batch as bt  # imported on first use: report-only pages stay lean
+    try:
+        req = parse(text, "batch")
+        if not isinstance(req, dict):
+            raise InputError("batch", "must be an object")
+        columns, rows = bt.read_table(req.get("csv"))
+        start, count = req.get("start", 0), req.get("count", len(rows))
+        for name, v, hi in (("start", start, len(rows)), ("count", count, None)):
+            if isinstance(v, bool) or not isinstance(v, int) or v < 0 or (hi is not None and v > hi):
+                raise InputError(f"batch.{name}", f"must be 0..{hi if hi is not None else 'N'}, "
+                                 f"got {v!r}")
+        names = bt.output_columns(columns)
+        out = bt.batch_rows(req["csv"], start, count)
+        return json.dumps({"ok": True, "total": len(rows), "columns": names,
+                           "rows": [[r.get(n, "") for n in names] for r in out],
+                           "csv": bt.to_csv(names, out, start == 0)})
     except InputError as e:
         return _fail(e)

@@ -27,7 +27,8 @@ import math
 from .errors import InputError
 from .vendor import round_half_away
 
-__all__ = ["current_pi_si", "gains_from_integers", "current_pi", "pll_gains", "INT32_MIN",
+__all__ = ["current_pi_si", "gains_from_integers", "current_pi", "pi_integer_ideals", "pll_gains",
+           "INT32_MIN",
            "INT32_MAX"]
 
 INT32_MIN, INT32_MAX = -(1 << 31), (1 << 31) - 1
@@ -84,6 +85,15 @@ def _int32(x: float, what: str) -> int:
     return v
 
 
+def pi_integer_ideals(kp_pu: float, ki_pu: float, ts_s: float) -> tuple[float, float]:
+    """The exact values pm_kp and pm_ki round (seed 2.2-9): kp_pu·2^12 (Q12), ki_pu·Ts·2^16 (Q16).
+
+    >>> pi_integer_ideals(0.5, 100.0, 1e-4)
+    (2048.0, 655.36)
+    """
+    return kp_pu * 4096.0, ki_pu * ts_s * 65536.0
+
+
 def current_pi(kp: float, ki: float, l_h: float, u_b: float, i_b: float, ts_s: float) -> dict:
     """Per-unit and vendor-integer form of one axis' gains, and back from the integers.
 
@@ -106,8 +116,9 @@ def current_pi(kp: float, ki: float, l_h: float, u_b: float, i_b: float, ts_s: f
     (1180, 4720)
     """
     kp_pu, ki_pu = kp * i_b / u_b, ki * i_b / u_b
-    pm_kp = _int32(kp_pu * 4096.0, "pm_kp")
-    pm_ki = _int32(ki_pu * ts_s * 65536.0, "pm_ki")
+    kp_ideal, ki_ideal = pi_integer_ideals(kp_pu, ki_pu, ts_s)
+    pm_kp = _int32(kp_ideal, "pm_kp")
+    pm_ki = _int32(ki_ideal, "pm_ki")
     kp_back, ki_back = gains_from_integers(pm_kp, pm_ki, u_b, i_b, ts_s)
     return {"kp": kp, "ki": ki, "kp_pu": kp_pu, "ki_pu": ki_pu, "pm_kp": pm_kp, "pm_ki": pm_ki,
             "from_integers": {"kp": kp_back, "ki": ki_back,

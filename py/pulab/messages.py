@@ -89,6 +89,27 @@ CATALOG = [
     (r"current-loop ω_c·Ts = (\S+): .*",
      r"电流环 ω_c·Ts = \1：连续域设计与离散环路的实际行为相差较大（建议 ω_c·Ts ≲ 0.2）"),
     (r"base frequency below rated frequency: .*", "基值频率低于额定频率：Q15 的 FreqPer > 1.0"),
+    # errors: the family sweep and the batch (issue 13)
+    (r"not a numeric input path: (.*)", r"不是数值输入路径：\1"),
+    (r"must be > 0 for a log scale, got (.*)", r"对数刻度要求大于 0，当前为 \1"),
+    (r"must differ from (\S+) \((.*)\)", r"必须不同于 \1（\2）"),
+    (r"unknown profile (.*)", r"未知的厂商配置：\1"),
+    (r"the sweep has (\d+) points; at most (\d+)", r"扫描共有 \1 个点；最多 \2 个"),
+    (r"must be a list of chunk summaries", "必须是分块摘要的列表"),
+    (r"expected PATH=START:STOP\[:N\]\[:log\], got (.*)",
+     r"格式应为 PATH=START:STOP[:N][:log]，当前为 \1"),
+    (r"empty column name (.*)", r"列名为空：\1"),
+    (r"a unit is only converted for an input path, not (.*)", r"只有输入路径列才换算单位，\1 不是"),
+    (r"unknown unit \[(.*)\] for (\S+) \(allowed: none \(give the value in the unit its name "
+     r"ends in\)\)", r"\2 的单位 [\1] 未知（此列不换算单位：请按列名结尾的单位给值）"),
+    (r"unknown unit \[(.*)\] for (\S+) \(allowed: (.*)\)", r"\2 的单位 [\1] 未知（可用：\3）"),
+    (r"must be text", "必须是文本"),
+    (r"not readable as CSV: (.*)", r"无法按 CSV 读取：\1"),
+    (r"no header row", "没有表头行"),
+    (r"duplicate column (\S+) \(also column (\d+)\)", r"列 \1 重复（与第 \2 列相同）"),
+    (r"(\d+) cells, the header has (\d+)", r"该行有 \1 个单元格，表头只有 \2 列"),
+    (r"cannot read (.*): not UTF-8 \((.*)\)", r"无法读取 \1：不是 UTF-8 编码（\2）"),
+    (r"cannot read (.*): (.*)", r"无法读取 \1：\2"),
 ]
 _COMPILED = [(re.compile(p, re.S), r) for p, r in CATALOG]
 

@@ -20,7 +20,7 @@ from .inputs import normalize
 from .messages import to_zh
 from .vendor import RAW_FIELDS, current_pi_step, raw_from_si, raw_source, vendor_results
 
-__all__ = ["report", "format_text"]
+__all__ = ["report", "format_text", "input_bases", "input_raw", "current_pi_section"]
 
 
 def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
@@ -79,6 +79,34 @@ def _pi_example(g: dict, vendor: dict) -> dict:
     return {"error": error, "integral": 0, "trace": trace}
 
 
+def input_bases(n: dict) -> dict:
+    """The bases (contract ``base``) of a normalized input."""
+    m, d, c = n["motor"], n["drive"], n["conventions"]
+    return bases(c["base"], m["rated_voltage_v"], m["rated_current_a"], d["base_freq_hz"],
+                 c["base_voltage_v"], c["base_current_a"], c["angle_base"])
+
+
+def input_raw(n: dict) -> dict:
+    """The raw firmware integers (contract ``vendor.raw``) of a normalized input."""
+    si = {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
+    return raw_from_si(si, n["conventions"]["inductance_unit"], n["raw"])
+
+
+def current_pi_section(n: dict, b: dict) -> dict:
+    """The current PI gains of both axes (contract ``current_pi`` without ``step_example``)."""
+    m, d, cl = n["motor"], n["drive"], n["current_loop"]
+    pi = {"method": cl["method"],
+          "bandwidth_hz": cl["bandwidth_hz"] if cl["method"] in ("bandwidth", "damping") else None}
+    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
+        if cl["method"] == "integers":
+            kp, ki = gains_from_integers(cl["pm_kp"], cl["pm_ki"], b["U_b"], b["I_b"], d["ts_s"])
+        else:
+            kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
+                                   cl["damping"], cl["kp"], cl["ki"])
+        pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
+    return pi
+
+
 def report(inp: dict) -> dict:
     """Compute the report for one motor and drive.
 
@@ -99,27 +127,17 @@ def report(inp: dict) -> dict:
         Naming the field, for any bad input or firmware division by zero.
     """
     n = normalize(inp)
-    m, d, c, cl = n["motor"], n["drive"], n["conventions"], n["current_loop"]
+    m, d, c = n["motor"], n["drive"], n["conventions"]
     sim_in = None
     if "sim" in n:
         from . import sim as _sim  # imported only when asked: plain reports stay fast
         sim_in = _sim.validate(n["sim"])
-    b = bases(c["base"], m["rated_voltage_v"], m["rated_current_a"], d["base_freq_hz"],
-              c["base_voltage_v"], c["base_current_a"], c["angle_base"])
+    b = input_bases(n)
     psi = flux_linkage(c["base"], m["bemf_v"], m["rated_freq_hz"])
     pu = per_unit(b, m["rs_ohm"], m["ld_h"], m["lq_h"], psi, d["ts_s"])
-    si = {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
-    raw = raw_from_si(si, c["inductance_unit"], n["raw"])
+    raw = input_raw(n)
     vendor = vendor_results(raw, c["inductance_unit"])
-    pi = {"method": cl["method"],
-          "bandwidth_hz": cl["bandwidth_hz"] if cl["method"] in ("bandwidth", "damping") else None}
-    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
-        if cl["method"] == "integers":
-            kp, ki = gains_from_integers(cl["pm_kp"], cl["pm_ki"], b["U_b"], b["I_b"], d["ts_s"])
-        else:
-            kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
-                                   cl["damping"], cl["kp"], cl["ki"])
-        pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
+    pi = current_pi_section(n, b)
     pi["step_example"] = _pi_example(pi["d"], vendor)
     out = {
         "input": {k: v for k, v in n.items() if k != "sim"},

@@ -39,9 +39,9 @@ from .errors import InputError
 from .qformat import iqsat
 
 __all__ = [
-    "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_from_si", "round_half_away",
+    "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_from_si", "round_half_away",
     "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
-    "vendor_results", "current_pi_step", "PiStep", "to_si",
+    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "current_pi_step", "PiStep", "to_si",
 ]
 
 SQRT3 = math.sqrt(3.0)
@@ -71,6 +71,15 @@ def raw_source(name: str, inductance_unit: str) -> tuple[str, float]:
     return path, scale if scale is not None else INDUCTANCE_SCALE[inductance_unit]
 
 
+def raw_value(name: str, si_value: float, inductance_unit: str) -> int:
+    """The raw integer of field ``name`` for its SI value (before the Uint16 range check).
+
+    >>> raw_value("Current", 69.475, "10uH"), raw_value("Current", 69.47500000000001, "10uH")
+    (6947, 6948)
+    """
+    return round_half_away(float(si_value) * raw_source(name, inductance_unit)[1])
+
+
 def round_half_away(x: float) -> int:
     """Round to nearest, ties away from zero (not Python's banker's ``round``)."""
     return int(math.copysign(math.floor(abs(x) + 0.5), x))
@@ -94,11 +103,8 @@ def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
     """
     raw = {}
     for name in RAW_FIELDS:
-        path, scale = raw_source(name, inductance_unit)
-        if name in given:
-            v = given[name]
-        else:
-            v = round_half_away(float(si[path]) * scale)
+        path = RAW_SCALE[name][0]
+        v = given[name] if name in given else raw_value(name, si[path], inductance_unit)
         if not 0 <= v <= 0xFFFF:
             src = "given" if name in given else f"from {path}"
             raise InputError(f"raw.{name}", f"{v} ({src}) is outside Uint16 0..65535")
@@ -266,19 +272,36 @@ def max_output_voltage(raw: dict) -> tuple[dict, dict]:
     return vol, maxu
 
 
+#: Each vendor result of seed 1.4 and 2.2, in report order, computed from the raw integers
+#: alone (with the blocks it reads, e.g. FluxRotor reads FreqPer), so one can be computed
+#: without the others — a sweep bisecting one integer's boundary needs only that one.
+VENDOR_RESULTS = {
+    "Rpm": lambda raw, unit: rpm(raw),
+    "LD": lambda raw, unit: inductance(raw, "d", unit),
+    "LQ": lambda raw, unit: inductance(raw, "q", unit),
+    "FreqPer": lambda raw, unit: freq_per(raw),
+    "FluxRotor": lambda raw, unit: flux_rotor(raw, freq_per(raw)["value"]),
+    "pm_maxout_vol": lambda raw, unit: max_output_voltage(raw)[0],
+    "maxu": lambda raw, unit: max_output_voltage(raw)[1],
+}
+
+
+#: The raw fields each vendor result reads (the C statements of its block and the blocks it
+#: reads), so a caller may reuse a result while these stay the same.
+VENDOR_READS = {
+    "Rpm": ("RsPm", "Current", "Voltage"),
+    "LD": ("Voltage", "Current", "FullFreq01", "LD"),
+    "LQ": ("Voltage", "Current", "FullFreq01", "LQ"),
+    "FreqPer": ("FreqRated01", "FullFreq01"),
+    "FluxRotor": ("BemfVolt", "Voltage", "FreqRated01", "FullFreq01"),
+    "pm_maxout_vol": ("uDCFilter", "Voltage"),
+    "maxu": ("uDCFilter", "Voltage"),
+}
+
+
 def vendor_results(raw: dict, inductance_unit: str) -> dict:
     """Every vendor result of seed 1.4 and 2.2, keyed as in the report contract."""
-    fp = freq_per(raw)
-    vol, maxu = max_output_voltage(raw)
-    return {
-        "Rpm": rpm(raw),
-        "LD": inductance(raw, "d", inductance_unit),
-        "LQ": inductance(raw, "q", inductance_unit),
-        "FreqPer": fp,
-        "FluxRotor": flux_rotor(raw, fp["value"]),
-        "pm_maxout_vol": vol,
-        "maxu": maxu,
-    }
+    return {name: f(raw, inductance_unit) for name, f in VENDOR_RESULTS.items()}
 
 
 def to_si(name: str, value: int, raw: dict, inductance_unit: str = "10uH") -> float:

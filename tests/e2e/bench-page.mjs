@@ -5,7 +5,8 @@
 //   a page with 6 different ?embed= iframes (runtimes started, time to all live, PSS of Chromium),
 //   input → all numbers updated (in page, dataset.updateMs).
 // Each boot is printed in phases (ms since navigation) from <html data-t-…> marks.
-// BENCH_NO_BUILD=1 reuses dist/; BENCH_SCENARIOS=cold,warm,share,embeds,input picks scenarios.
+// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=cold,warm,share,nosnap,embeds,input
+// picks scenarios (nosnap: cold with the snapshot refused, the fallback boot).
 import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
@@ -20,10 +21,13 @@ if (!existsSync(CHROMIUM)) {
   process.exit(0);
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
-const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,embeds,input').split(','));
+const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,nosnap,embeds,input').split(','));
+const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
 if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
-const { server, url } = await serve(join(ROOT, 'dist'), '/bench/');
+const { server, url } = await serve(DIST, '/bench/');
+// The fallback boot: the same build with its snapshot refused (404).
+const nosnap = await serve(DIST, '/bench/', 0, { refuse: /snapshot-.*\.bin$/ });
 const load0 = loadavg();
 const browser = await chromium.launch({
   executablePath: CHROMIUM,
@@ -32,7 +36,13 @@ const browser = await chromium.launch({
 const q = (a, f) => [...a].sort((x, y) => x - y)[Math.min(a.length - 1, Math.floor(f * a.length))];
 const stat = (a) => (a.length ? `${q(a, 0.5).toFixed(0)} ms (${Math.min(...a).toFixed(0)}–${Math.max(...a).toFixed(0)})` : 'n/a');
 const PHASES = ['app', 'numbers', 'bootRuntime', 'bootSnapshot', 'bootFiles', 'bootImport', 'bootReady', 'live'];
-const waitLive = (p, timeout = 90_000) => p.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout, polling: 20 });
+// Live: Python computed the input in the form (data-numbers="live"; a build without that attribute
+// showed only live numbers, so for it the first number counts).
+const isLive = () => {
+  const n = document.documentElement.dataset.numbers;
+  return n ? n === 'live' : !!document.querySelector('[data-key="vendor.Rpm.value"][data-value], [data-key][data-value]');
+};
+const waitLive = (p, timeout = 90_000) => p.waitForFunction(isLive, null, { timeout, polling: 20 });
 const waitFirst = (p) => p.waitForFunction(() => /^(build|cached|live)$/.test(document.documentElement.dataset.numbers ?? '') || !!document.querySelector('[data-key="vendor.Rpm.value"][data-value]'), null, { timeout: 90_000, polling: 10 });
 
 /** One navigation: wall-clock to first numbers and to live, and the page's own phase marks. */
@@ -84,6 +94,15 @@ if (SCEN.has('share')) {
   }
   report('share link (380 V), cold', runs);
 }
+if (SCEN.has('nosnap')) {
+  const runs = [];
+  for (let i = 0; i < RUNS; i++) {
+    const ctx = await newCtx();
+    runs.push(await boot(await ctx.newPage(), nosnap.url));
+    await ctx.close();
+  }
+  report('default page, cold, no snapshot', runs);
+}
 
 /** PSS (kB) summed over this process's descendants (the browser and its renderers, GPU, utility). */
 function pssOfChildren() {
@@ -131,9 +150,9 @@ if (SCEN.has('embeds')) {
     await p.waitForFunction(() => document.querySelectorAll('iframe').length === 6);
     const frames = () => p.frames().filter((f) => f !== p.mainFrame());
     while (frames().length < 6) await p.waitForTimeout(20);
-    await Promise.all(frames().map((f) => f.waitForFunction(() => /^(build|cached|live)$/.test(document.documentElement.dataset.numbers ?? ''), null, { timeout: 90_000, polling: 20 })));
+    await Promise.all(frames().map((f) => f.waitForFunction(() => /^(build|cached|live)$/.test(document.documentElement.dataset.numbers ?? '') || !!document.querySelector('[data-key][data-value]'), null, { timeout: 240_000, polling: 20 })));
     const first = Date.now() - t0;
-    await Promise.all(frames().map((f) => f.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 120_000, polling: 20 })));
+    await Promise.all(frames().map((f) => f.waitForFunction(isLive, null, { timeout: 240_000, polling: 20 })));
     const live = Date.now() - t0;
     await p.waitForTimeout(3000); // simulations of the plot panels
     const mem = pssOfChildren();
@@ -167,5 +186,6 @@ if (SCEN.has('input')) {
 }
 await browser.close();
 server.close();
+nosnap.server.close();
 const load1 = loadavg();
 console.log(`page: load average before ${load0.map((x) => x.toFixed(2)).join(' ')}, after ${load1.map((x) => x.toFixed(2)).join(' ')} (2 cores; ${RUNS} runs per scenario)`);

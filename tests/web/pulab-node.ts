@@ -4,7 +4,7 @@ import { loadPyodide } from 'pyodide';
 import { fileURLToPath } from 'node:url';
 import { createWorkerLogic, type PyodideLike } from '../../web/src/worker-logic';
 import { PULAB_FILES } from '../../web/src/pysources';
-import type { ApiKind, ApiResult, WorkerToMain } from '../../web/src/protocol';
+import { API_FUNCTIONS, type ApiKind, type ApiResult, type WorkerToMain } from '../../web/src/protocol';
 
 export const INDEX_URL = fileURLToPath(new URL('../../node_modules/pyodide/', import.meta.url));
 
@@ -41,7 +41,7 @@ export function bootPulab(): Promise<NodePulab> {
       messages,
       bootMs,
       py,
-      raw: (kind, payload) => api[{ report: 'run_json', qcalc: 'qcalc_json', export: 'export_json' }[kind]](payload),
+      raw: (kind, payload) => api[API_FUNCTIONS[kind]](payload),
       call(kind, payload, channel) {
         const id = next++;
         return new Promise((resolve, reject) => {

@@ -9,6 +9,7 @@ export const API_FUNCTIONS = {
   report: 'run_json',
   qcalc: 'qcalc_json',
   export: 'export_json',
+  sweep: 'sweep_json', batch: 'batch_json',
 } as const;
 export type ApiKind = keyof typeof API_FUNCTIONS;
 

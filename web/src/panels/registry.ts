@@ -9,6 +9,8 @@ import { currentPanel } from './current';
 import { pllPanel } from './pll';
 import { qcalcPanel } from './qcalc';
 import { conventionsPanel } from './conventions';
+import { sweepPanel } from './sweep';
+import { batchPanel } from './batch';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -20,6 +22,8 @@ export const PANELS: Panel[] = [
   pllPanel,
   qcalcPanel,
   conventionsPanel,
+  sweepPanel,
+  batchPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
