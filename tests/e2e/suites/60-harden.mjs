@@ -40,7 +40,7 @@ const HOSTILE_STORAGE = [
   ['units "null"', 'pulab.units.v1', 'null'],
   ['units with an object unit', 'pulab.units.v1', '{"motor.ld_h":{"toString":1}}'],
   ['input "null"', 'pulab.input.v1', 'null'],
-  ['input with a valueOf object', 'pulab.input.v1', '{"motor":{"rs_ohm":{"valueOf":1}}}'],
+  ['input with a valueOf object', 'pulab.input.v1', '{"pll":{"bandwidth_hz":{"valueOf":1}}}'],
   ['language junk', 'pulab.lang', '{"x":1}'],
 ];
 
