@@ -163,6 +163,8 @@ export class PulabClient {
     if (!isWorkerToMain(m)) return;
     switch (m.type) {
       case 'progress':
+        // A failed boot's loader may still report progress in the background: the failure stands.
+        if (this.fatal) break;
         this.progress = { stage: m.stage, fraction: m.fraction };
         this.stageAt[m.stage] ??= performance.now();
         if (!this.ready) this.armWatchdog();
