@@ -3,7 +3,7 @@
 // an unhandled promise rejection). Fault pages break requests on purpose, so they use their own
 // browser contexts (not ctx.newPage, whose console-error check would count the failed loads).
 //
-//   node tests/e2e/run.mjs harden          (E2E_NO_BUILD=1 to reuse dist/)
+//   node tests/e2e/run.mjs harden          (E2E_NO_BUILD=1 to reuse dist/; HARDEN_ONLY=regex for some)
 import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -44,7 +44,10 @@ const HOSTILE_STORAGE = [
   ['language junk', 'pulab.lang', '{"x":1}'],
 ];
 
-export default async function harden({ check, assert, browser, subSrv, ready, waitValue, golden, ROOT, timings }) {
+export default async function harden({ check: runCheck, assert, browser, subSrv, ready, waitValue, golden, ROOT, timings }) {
+  // HARDEN_ONLY=regex: only the scenarios whose name matches (to rerun a few after a fix).
+  const only = process.env.HARDEN_ONLY ? new RegExp(process.env.HARDEN_ONLY) : null;
+  const check = (name, fn) => (only && !only.test(name) ? undefined : runCheck(name, fn));
   const seed = golden('01_seed_motor.json').input;
   /** A fresh context; every pageerror (uncaught error, unhandled rejection) is recorded. */
   async function open(opts = {}) {
