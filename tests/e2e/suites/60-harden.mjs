@@ -287,10 +287,14 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     px.close();
   });
   /** Kill a runtime (as a crash would): its SharedWorker target closed through CDP. */
-  async function killRuntime(kind) {
+  async function killRuntime(page, kind) {
+    // Shared workers of this page's browser context only (others may still be winding down).
+    const own = await page.context().newCDPSession(page);
+    const { targetInfo } = await own.send('Target.getTargetInfo');
+    await own.detach();
     const cdp = await browser.newBrowserCDPSession();
     const { targetInfos } = await cdp.send('Target.getTargets');
-    const t = targetInfos.find((x) => x.type === 'shared_worker' && x.title === `pulab-${kind}`);
+    const t = targetInfos.find((x) => x.type === 'shared_worker' && x.title === `pulab-${kind}` && x.browserContextId === targetInfo.browserContextId);
     assert(t, `no pulab-${kind} shared worker`);
     await cdp.send('Target.closeTarget', { targetId: t.targetId });
     await cdp.detach();
@@ -299,7 +303,7 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     const { context, page, errors } = await open();
     await page.goto(subSrv.url);
     await live(page);
-    await killRuntime('report');
+    await killRuntime(page, 'report');
     const t0 = Date.now();
     await page.fill('.inputs input[name="motor.rs_ohm"]', '1.7');
     await page.waitForFunction(() => /restart/i.test(document.querySelector('.status')?.textContent ?? ''), null, { timeout: 30_000 });
@@ -315,7 +319,7 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     await live(page);
     await page.$eval('#panel-current', (e) => e.scrollIntoView());
     await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 120_000 });
-    await killRuntime('sim');
+    await killRuntime(page, 'sim');
     await page.fill('.inputs input[name="motor.rs_ohm"]', '1.8');
     await page.waitForSelector('.panel-current .sim-error button.sim-retry', { timeout: 60_000 });
     await formUsable(page);
@@ -402,7 +406,8 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     await sw.page.reload();
     await ready(sw.page);
     assert(await sw.page.$('meta[name="pulab-deploy"][content="B"]') !== null, 'the old index.html was served');
-    for (let i = 0; i < 60 && (await cached()).keys.length !== 1; i++) await sw.page.waitForTimeout(500);
+    // The new version precaches the whole build, then deletes the old cache.
+    for (let i = 0; i < 240 && (await cached()).keys.length !== 1; i++) await sw.page.waitForTimeout(500);
     const keys = (await cached()).keys;
     assert(keys.length === 1 && keys[0].endsWith('-b'), `old caches kept: ${keys}`);
     noPageErrors(sw.errors);
