@@ -114,7 +114,7 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets(), pulabBuild(true), precompress(), offlineCache()],
+  plugins: [pyodideAssets(), pulabBuild(true), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
   optimizeDeps: { exclude: ['pyodide'] },
   worker: { format: 'es', plugins: () => [pulabBuild(false)] },
   server: { fs: { allow: [repo] } },

@@ -1,17 +1,25 @@
-"""Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``.
+"""Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``,
+``python -m pulab trace FILE.c --target c28x --set NAME=VALUE …``,
+``python -m pulab header --profile NAME INPUT.json`` (one vendor's C header) and
+``python -m pulab translate --from NAME [--axis d|q] --kp INT --ki INT INPUT.json``
+(docs/contract.md, "Vendor profiles").
 
-Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr.
+Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
+(for code, ``error: code: LINE:COLUMN: MESSAGE``).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 
 from .errors import InputError
 from .commands import add_family_commands, read_json
+from .inputs import shown
 from .report import format_text, report
+from .ctrace.cli import add_trace_parser, trace_main
 
 
 def main(argv: list | None = None) -> int:
@@ -22,7 +30,11 @@ def main(argv: list | None = None) -> int:
     rp.add_argument("input")
     rp.add_argument("--format", choices=("json", "text"), default="json")
     add_family_commands(sub)
+    add_trace_parser(sub)
+    _add_vendor_commands(sub)
     args = p.parse_args(argv)
+    if args.command == "trace":
+        return trace_main(args)
     if hasattr(args, "run"):
         return args.run(args)
     try:
@@ -36,6 +48,65 @@ def main(argv: list | None = None) -> int:
         json.dump(r, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
         sys.stdout.write("\n")
     return 0
+
+
+def _add_vendor_commands(sub) -> None:
+    hp = sub.add_parser("header", help="print one vendor profile's C header")
+    hp.add_argument("--profile", default=None, help="inovance, ti, nxp, st or microchip")
+    hp.add_argument("input")
+    hp.set_defaults(run=_run_vendor)
+    tp = sub.add_parser("translate", help="one profile's current-loop integers in every profile")
+    tp.add_argument("--from", dest="source", default=None)
+    tp.add_argument("--axis", default="q")
+    tp.add_argument("--kp", default=None)
+    tp.add_argument("--ki", default=None)
+    tp.add_argument("input")
+    tp.set_defaults(run=_run_vendor)
+
+
+def _run_vendor(args) -> int:
+    try:
+        inp = read_json(args.input)
+        if args.command == "header":
+            sys.stdout.write(_header(inp, args.profile))
+        else:
+            json.dump(_translate(inp, args), sys.stdout, indent=1, ensure_ascii=False,
+                      allow_nan=False)
+            sys.stdout.write("\n")
+    except InputError as e:
+        print(f"error: {e.field}: {e.message}", file=sys.stderr)
+        return 2
+    return 0
+
+
+def _header(inp, name: str | None) -> str:
+    from . import profiles
+    if name is None:
+        raise InputError("profile", "is required")
+    if name not in profiles.NAMES:  # before the report: a typo should not cost a report
+        raise InputError("profile",
+                         f"must be one of {', '.join(profiles.NAMES)}, got {shown(name)}")
+    if not isinstance(inp, dict):
+        raise InputError("input", "must be a JSON object")
+    return profiles.header(report({**inp, "profiles": inp.get("profiles") or {}}), name)
+
+
+def _translate(inp, args) -> dict:
+    from .profiles import MODULES, NAMES
+    from .profiles.translate import translate
+    if args.source is None:
+        raise InputError("translate.from", "is required")
+    if args.source not in NAMES:
+        raise InputError("translate.from", f"must be one of {', '.join(NAMES)}, "
+                         f"got {shown(args.source)}")
+    if not isinstance(inp, dict):
+        raise InputError("input", "must be a JSON object")
+    names = MODULES[args.source].gain_fields(args.axis) if args.axis in ("d", "q") else ("", "")
+    values = {}
+    for name, text in zip(names, (args.kp, args.ki)):
+        if text is not None:  # absent: translate() names the missing field
+            values[name] = int(text) if re.fullmatch(r"[+-]?\d+", text) else text
+    return translate(inp, args.source, args.axis, values)
 
 
 if __name__ == "__main__":

@@ -25,7 +25,8 @@ from .export import c_header, sim_csv
 from .messages import to_zh
 from .report import report
 
-__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json"]
+__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
+           "trace_json", "trace_examples_json", "vendors_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -204,5 +205,98 @@ def batch_json(text: str) -> str:
         return json.dumps({"ok": True, "total": len(rows), "columns": names,
                            "rows": [[r.get(n, "") for n in names] for r in out],
                            "csv": bt.to_csv(names, out, start == 0)})
+    except InputError as e:
+        return _fail(e)
+    except ValueError as e:
+        return _fail(InputError("input", f"not valid JSON: {e}"))
+
+
+def trace_json(text: str) -> str:
+    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q"}``.
+
+    Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",
+    "message_zh"}`` with ``line`` and ``column`` when the code is at fault, and
+    ``inputs`` whenever the code compiled (so the page can offer input fields).
+
+    >>> r = json.loads(trace_json('{"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}}'))
+    >>> r["vars"]["x"]["value"], r["target"]
+    (4, 'c28x')
+    >>> json.loads(trace_json('{"code": "x = 1 +;"}'))["message"]
+    "1:8: expected a value, got ';'"
+    """
+    from .ctrace import TraceError, compile_code, trace_checked
+    checked = None
+    try:
+        try:
+            req = json.loads(text)
+        except ValueError as e:
+            raise InputError("input", f"not valid JSON: {e}") from None
+        if not isinstance(req, dict):
+            raise InputError("input", "must be an object")
+        unknown = set(req) - {"code", "target", "set", "global_q"}
+        if unknown:
+            raise InputError(sorted(unknown)[0], "unknown field (expected one of: code, "
+                             "target, set, global_q)")
+        sets = req.get("set") or {}
+        if not isinstance(sets, dict):
+            raise InputError("set", "must be an object")
+        checked = compile_code(req.get("code", ""), req.get("target", "c28x"))
+        return json.dumps(trace_checked(checked, sets, req.get("global_q")), allow_nan=False)
+    except InputError as e:
+        reply = json.loads(_fail(e))
+        if isinstance(e, TraceError):
+            reply.update(line=e.line, column=e.column)
+        if checked is not None:
+            reply["inputs"] = checked.inputs
+        return json.dumps(reply)
+
+
+def trace_examples_json(text: str = "") -> str:
+    """The tracer's example code and targets for the page: ``{"ok": true, "examples": [...],
+    "targets": [...]}``; each example has ``id``, ``title``, ``title_zh`` and ``code``.
+
+    >>> [e["id"] for e in json.loads(trace_examples_json())["examples"]][:2]
+    ['rpm', 'ld']
+    """
+    from .ctrace import TARGETS
+    from .ctrace.examples import EXAMPLES
+    return json.dumps({"ok": True, "targets": list(TARGETS),
+                       "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]})
+
+
+def vendors_json(text: str) -> str:
+    """Vendor profiles for the page (docs/contract.md, "Vendor profiles").
+
+    ``{"input": {...}, "action": "header", "profile": NAME}`` → ``{"ok": true, "text": ...}``;
+    ``{"input": {...}, "action": "translate", "from": NAME, "axis": "d"|"q",
+    "values": {FIELD: int, FIELD: int}}`` → ``{"ok": true, "translation": {...}}``;
+    bad input → an error naming the field.
+
+    >>> import json
+    >>> req = {"input": {"motor": {}}, "action": "header", "profile": "ti"}
+    >>> json.loads(vendors_json(json.dumps(req)))["field"]
+    'motor.rated_voltage_v'
+    """
+    from . import profiles
+    from .profiles.translate import translate
+    try:
+        req = parse(text)
+        if not isinstance(req, dict):
+            raise InputError("request", "must be a JSON object")
+        inp = req.get("input")
+        if not isinstance(inp, dict):
+            raise InputError("input", "must be a JSON object")
+        action = req.get("action")
+        if action == "header":
+            name = req.get("profile")
+            if name not in profiles.NAMES:
+                raise InputError("profile", f"must be one of {', '.join(profiles.NAMES)}, "
+                                 f"got {shown(name)}")
+            r = report({**inp, "profiles": inp.get("profiles") or {}})
+            return json.dumps({"ok": True, "text": profiles.header(r, name)})
+        if action == "translate":
+            t = translate(inp, req.get("from"), req.get("axis", "q"), req.get("values"))
+            return json.dumps({"ok": True, "translation": t}, allow_nan=False)
+        raise InputError("action", "must be one of header, translate")
     except InputError as e:
         return _fail(e)

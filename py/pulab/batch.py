@@ -11,7 +11,8 @@ CSV contract (docs/contract.md, "Batch"):
 - The output has one row per input row, in order: ``row`` (1-based data row), the label
   columns, ``error`` (``field: message``, empty when the row computed) and ``error_zh``,
   then columns named by report JSON paths (:data:`REPORT_COLUMNS`) and the number of
-  review findings per severity (``review.error``, ``review.warning``, ``review.note``).
+  review findings per severity (``review.counts.error``, ``review.counts.warning``,
+  ``review.counts.note``: the graded review's report path).
 - A bad row is reported in its ``error`` cell and the others are still computed; only an
   unreadable header stops the batch (:class:`pulab.InputError` naming the column).
 
@@ -171,11 +172,14 @@ def _row_input(columns: list, cells: list) -> dict:
 def findings_counts(r: dict) -> dict:
     """Review findings per severity (``error``, ``warning``, ``note``) of a report.
 
-    The graded review (issue 9) lists findings with a ``severity``; a report without one
-    counts its ``warnings``, all of them warnings.
+    The graded review (issue 9) gives ``review.counts`` (or at least ``review.findings``
+    with a ``severity`` each); a report without one counts its ``warnings``, all of them
+    warnings.
     """
     counts = dict.fromkeys(SEVERITIES, 0)
     review = r.get("review")
+    if isinstance(review, dict) and isinstance(review.get("counts"), dict):
+        return {s: int(review["counts"].get(s, 0)) for s in SEVERITIES}
     if review is None:
         counts["warning"] = len(r["warnings"])
         return counts
@@ -203,7 +207,7 @@ def _report_cells(r: dict) -> dict:
             v = v[part]
         out[path] = _cell(v)
     for sev, n in findings_counts(r).items():
-        out[f"review.{sev}"] = str(n)
+        out[f"review.counts.{sev}"] = str(n)
     return out
 
 
@@ -211,7 +215,7 @@ def output_columns(columns: list) -> list:
     """The output header for an input header (see the module docstring)."""
     labels = [name for name, _ in columns if "." not in name]
     return (["row"] + labels + ["error", "error_zh"] + list(REPORT_COLUMNS)
-            + [f"review.{s}" for s in SEVERITIES])
+            + [f"review.counts.{s}" for s in SEVERITIES])
 
 
 def batch_rows(text: str, start: int = 0, count: int | None = None) -> list:

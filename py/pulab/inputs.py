@@ -183,9 +183,9 @@ def normalize(inp: dict) -> dict:
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
     for key in inp:
-        if key not in SECTIONS and key != "sim":
+        if key not in SECTIONS and key not in ("sim", "profiles"):
             raise InputError(key_path("", key), f"unknown section (expected one of: "
-                             f"{', '.join(list(SECTIONS) + ['sim'])})")
+                             f"{', '.join(list(SECTIONS) + ['sim', 'profiles'])})")
     m = _section(inp, "motor")
     d = _section(inp, "drive")
     c = _section(inp, "conventions")
@@ -243,4 +243,6 @@ def normalize(inp: dict) -> dict:
            "pll": pll, "raw": raw}
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
+    if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor
+        out["profiles"] = inp["profiles"]
     return out

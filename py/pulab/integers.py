@@ -157,7 +157,8 @@ def _inovance(inp: dict, only) -> dict:
 
 
 def _from_report(inp: dict, profile: str, only) -> dict:
-    r = report(inp)
+    # Issue 12's profiles are computed only when the input asks (a "profiles" section).
+    r = report({**inp, "profiles": inp.get("profiles") or {}})
     constants = r.get("profiles", {}).get(profile, {}).get("constants")
     if constants is None:
         raise InputError("sweep.profile", f"unknown profile {profile!r}")

@@ -70,6 +70,21 @@ def _warnings(inp: dict, raw: dict, vendor: dict, pi: dict, b: dict) -> list:
     return w
 
 
+def _profile_warnings(prof: dict) -> list:
+    """One warning per profile constant the firmware could not store as intended."""
+    w = [f"profiles.ti: USER_checkForErrors would set {code} ({why})"
+         for code, why in prof["ti"]["checks"]]
+    for name, p in prof.items():
+        for k, c in p["constants"].items():
+            if "out_of_range" in c["flags"] or "saturate" in c["flags"]:
+                w.append(f"profiles.{name}.{k}: {c['ideal']:.6g} does not fit {c['format']}; "
+                         f"stored {c['value']}")
+            elif c["value"] == 0 and c["ideal"] != 0:
+                w.append(f"profiles.{name}.{k}: rounds to 0 in {c['format']} "
+                         f"(ideal {c['ideal']:.6g})")
+    return w
+
+
 def _pi_example(g: dict, vendor: dict) -> dict:
     """The first vendor PI update after a step of 10 % rated current in i_d (seed 2.2)."""
     error = round(0.1 * 4096)
@@ -139,6 +154,12 @@ def report(inp: dict) -> dict:
     vendor = vendor_results(raw, c["inductance_unit"])
     pi = current_pi_section(n, b)
     pi["step_example"] = _pi_example(pi["d"], vendor)
+    prof = None
+    if "profiles" in n:  # only when asked: the five profiles cost more than the rest
+        from . import profiles as _profiles
+        ctx = _profiles.context(n, raw, vendor, pi)
+        n["profiles"] = _profiles.options(n["profiles"], ctx)
+        prof = _profiles.profiles(ctx, n["profiles"])
     out = {
         "input": {k: v for k, v in n.items() if k != "sim"},
         "base": b,
@@ -150,6 +171,9 @@ def report(inp: dict) -> dict:
         "constants": magic_constants(),
         "warnings": _warnings(n, raw, vendor, pi, b),
     }
+    if prof is not None:
+        out["profiles"] = prof
+        out["warnings"] += _profile_warnings(prof)
     out["warnings_zh"] = [to_zh(w) for w in out["warnings"]]
     if sim_in is not None:
         out["sim"] = _sim.simulate(out, sim_in)
@@ -190,6 +214,11 @@ def format_text(r: dict) -> str:
     lines += _table("Magic constants", [(k, f"exact {c['exact']:.6f} = {c['expression']}, "
                                             f"rel. error {100 * c['rel_error']:+.4f} %")
                                         for k, c in r["constants"].items()])
+    for name, prof in r.get("profiles", {}).items():
+        lines += _table(f"Profile {name}", [
+            (k, f"{c['value']:>11d}  {c['format']:<16} err {c['error_pct']:+.4f} %  = "
+                f"{c['si']:.6g} {c['unit']}  {' '.join(c['flags'])}")
+            for k, c in prof["constants"].items()])
     if r["warnings"]:
         lines += ["Warnings", "--------"] + [f"  ! {w}" for w in r["warnings"]]
     return "\n".join(lines).rstrip() + "\n"

@@ -8,6 +8,7 @@ interface Run {
   python: string;
   report_ms: Record<string, number>;
   sim: { steps: number; total_s: number; steps_per_s: number; fixed_no_memo_s: number };
+  trace?: { lines: number; median_ms: number; p95_ms: number };
 }
 
 it('prints the Pyodide benchmark and the Pyodide/CPython ratio', async () => {
@@ -24,6 +25,9 @@ it('prints the Pyodide benchmark and the Pyodide/CPython ratio', async () => {
       lines.push(`  Pyodide/CPython report(), ${k}: ${(pyo.report_ms[k] / cpy.report_ms[k]).toFixed(2)}×`);
     }
     lines.push(`  Pyodide/CPython sim: ${(pyo.sim.total_s / cpy.sim.total_s).toFixed(2)}×`);
+    if (pyo.trace && cpy.trace) {
+      lines.push(`  Pyodide/CPython trace() median: ${(pyo.trace.median_ms / cpy.trace.median_ms).toFixed(2)}×`);
+    }
   }
   process.stdout.write(`\n${lines.join('\n')}\n`);
 });

@@ -47,7 +47,7 @@ def test_units_convert_exactly_and_integers_match_the_oracle():
         for key in ("pm_kp", "pm_ki"):
             assert int(row[f"current_pi.{axis}.{key}"]) == ref["current_pi"][axis][key]
     assert row["vendor.raw.LD"] == "60" and row["vendor.raw.RsPm"] == "1500"
-    assert row["review.warning"] == "1" and row["review.error"] == "0"
+    assert row["review.counts.warning"] == "1" and row["review.counts.error"] == "0"
 
 
 def test_bad_rows_are_reported_with_row_and_field_and_the_others_computed():
@@ -103,6 +103,9 @@ def test_findings_are_counted_per_severity():
                                                       {"severity": "note"},
                                                       {"severity": "note"}]}}
     assert findings_counts(graded) == {"error": 1, "warning": 0, "note": 2}
+    counted = {"warnings": [], "review": {"findings": [], "counts": {"error": 2, "warning": 3,
+                                                                      "note": 4}}}
+    assert findings_counts(counted) == {"error": 2, "warning": 3, "note": 4}
 
 
 def test_catalogue_chunks_through_the_api_equal_the_cli(tmp_path):

@@ -199,7 +199,7 @@ def test_2d_boundaries_along_x_match_the_oracle_on_every_row():
     ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 1000},
       "y": {"path": "motor.ld_h", "start": 1, "stop": 2, "n": 1000}}, "sweep"),
     ({"input": SEED_INPUT, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2},
-      "profile": "nxp"}, "sweep.profile"),
+      "profile": "infineon"}, "sweep.profile"),  # nxp is a profile since issue 12 landed
     ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "op": "chunk",
       "start": 500}, "sweep.chunk.start"),
     ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "op": "merge",

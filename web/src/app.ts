@@ -51,6 +51,7 @@ export class App {
     this.form = new InputForm(root, this.session);
     this.layout = new Layout(root, this.embed);
     this.session.wantsSim = PANELS.some((p) => p.usesSim && (this.embed === null || p.id === this.embed));
+    this.session.simGate = this.layout.simPanelNear;
     this.status = new StatusLine(root, this.session);
     this.useInitial(this.init);
     window.addEventListener('hashchange', () => {

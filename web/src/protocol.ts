@@ -9,7 +9,10 @@ export const API_FUNCTIONS = {
   report: 'run_json',
   qcalc: 'qcalc_json',
   export: 'export_json',
+  vendors: 'vendors_json',
   sweep: 'sweep_json', batch: 'batch_json',
+  trace: 'trace_json',
+  traceExamples: 'trace_examples_json',
 } as const;
 export type ApiKind = keyof typeof API_FUNCTIONS;
 

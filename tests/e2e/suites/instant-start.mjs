@@ -118,6 +118,27 @@ export default async function instantStart(ctx) {
     await page.context().close();
   });
 
+  await check('the simulation runtime starts only when a plot comes near the viewport (1 runtime at the top of the page, 2 at the plots)', async () => {
+    const page = await newPage();
+    const cdp = await browser.newBrowserCDPSession();
+    const kinds = [];
+    cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
+      if (t.type === 'shared_worker' || t.type === 'worker') kinds.push(t.type);
+    });
+    await cdp.send('Target.setDiscoverTargets', { discover: true });
+    await page.goto(ctx.subSrv.url);
+    await numbersIs(page, 'live', 60_000);
+    await page.waitForTimeout(1500); // a simulation would have been asked for 400 ms after the report
+    const atTop = kinds.length;
+    await page.$eval('#panel-current', (e) => e.scrollIntoView());
+    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 60_000 });
+    await cdp.send('Target.setDiscoverTargets', { discover: false });
+    await cdp.detach();
+    assert(atTop === 1, `runtimes started before scrolling to a plot: ${atTop}`);
+    assert(kinds.length === 2, `runtimes after scrolling to the plots: ${kinds.length}`);
+    await page.context().close();
+  });
+
   await check('server: precompressed brotli/gzip by Accept-Encoding, ETag/Last-Modified → 304, hashed files immutable', async () => {
     const base = ctx.subSrv.url;
     const html = await fetch(base, { headers: { 'accept-encoding': 'identity' } });

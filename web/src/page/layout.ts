@@ -10,7 +10,29 @@ import type { ComputeSession } from './session';
 export class Layout {
   private panelEls = new Map<PanelId, HTMLElement>();
 
-  constructor(private root: HTMLElement, private embed: PanelId | null) {}
+  private near: IntersectionObserver | null = null;
+  private onNear: (() => void) | null = null;
+  /** Resolves once a panel that draws simulations is near the viewport (see ComputeSession.simGate). */
+  readonly simPanelNear: Promise<void>;
+
+  constructor(private root: HTMLElement, private embed: PanelId | null) {
+    this.simPanelNear = new Promise((resolve) => {
+      this.onNear = resolve;
+    });
+  }
+
+  private watchSimPanels(sections: HTMLElement[]): void {
+    if (!this.onNear) return;
+    if (typeof IntersectionObserver === 'undefined') return this.onNear();
+    this.near?.disconnect();
+    this.near = new IntersectionObserver((entries) => {
+      if (!entries.some((e) => e.isIntersecting)) return;
+      this.near?.disconnect();
+      this.onNear?.();
+      this.onNear = null;
+    }, { rootMargin: '600px 0px' });
+    for (const s of sections) this.near.observe(s);
+  }
 
   /** The panels this page shows: all of them, or the embedded one. */
   private panels(): Panel[] {
@@ -28,6 +50,7 @@ export class Layout {
         h('h2', {}, t(p.title as Key), p.id !== 'docs' && docTarget(p.id) ? h('a', { class: 'why', href: `#panel-docs`, 'data-why': p.id }, t('why')) : null), body);
     });
     const has = (id: PanelId) => panels.some((p) => p.id === id);
+    this.watchSimPanels(sections.filter((_, i) => panels[i].usesSim));
     if (this.embed) {
       document.body.classList.add('embed');
       this.root.replaceChildren(

@@ -214,6 +214,10 @@ export class ComputeSession {
 
   /** Whether simulations are computed (a shown panel draws them). */
   wantsSim = true;
+  /** Resolves when a panel that draws simulations comes near the viewport: the simulation
+   * runtime (a second Python) is not started for a page nobody scrolls to the plots of. */
+  simGate: Promise<void> = Promise.resolve();
+  private simLatest: Input | null = null;
 
   /** The worker for simulations and CSV exports (started on first use). */
   simWorker(): PulabClient | null {
@@ -223,6 +227,13 @@ export class ComputeSession {
 
   private async computeSim(eff: Input): Promise<void> {
     if (!this.wantsSim || !eff.sim) return;
+    // Only the newest input is simulated once the gate opens.
+    const waiting = this.simLatest !== null;
+    this.simLatest = eff;
+    if (waiting) return;
+    await this.simGate;
+    eff = this.simLatest;
+    this.simLatest = null;
     const sc = this.simWorker();
     if (!sc) return;
     try {

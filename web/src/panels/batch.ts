@@ -13,7 +13,7 @@ const CHUNK = 40;
 const SHOWN = 200;
 /** Columns drawn in the table (all are in the CSV). */
 const TABLE_COLUMNS = ['vendor.Rpm.value', 'vendor.LD.value', 'vendor.LD.error_pct', 'vendor.LD.flags', 'vendor.FluxRotor.value',
-  'vendor.pm_maxout_vol.error_pct', 'current_pi.d.pm_kp', 'current_pi.d.pm_ki', 'review.error', 'review.warning', 'review.note'];
+  'vendor.pm_maxout_vol.error_pct', 'current_pi.d.pm_kp', 'current_pi.d.pm_ki', 'review.counts.error', 'review.counts.warning', 'review.counts.note'];
 
 const st = {
   file: '' as string,

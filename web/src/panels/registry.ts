@@ -8,9 +8,11 @@ import { constantsPanel } from './constants';
 import { currentPanel } from './current';
 import { pllPanel } from './pll';
 import { qcalcPanel } from './qcalc';
+import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
 import { sweepPanel } from './sweep';
 import { batchPanel } from './batch';
+import { vendorsPanel } from './vendors';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -21,9 +23,11 @@ export const PANELS: Panel[] = [
   currentPanel,
   pllPanel,
   qcalcPanel,
+  codePanel,
   conventionsPanel,
   sweepPanel,
   batchPanel,
+  vendorsPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);

@@ -1,0 +1,89 @@
+"""Tokens of the C subset, each with its source position.
+
+Comments are dropped except the ``// @q`` annotations (see
+:mod:`pulab.ctrace.parser`), which come back as ``annotation`` tokens;
+preprocessor lines come back whole as ``directive`` tokens.
+
+Examples
+--------
+>>> [(t.kind, t.text) for t in tokenize("x += 0x1FUL; // note")]
+[('name', 'x'), ('op', '+='), ('number', '0x1FUL'), ('op', ';'), ('end', '')]
+"""
+
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+from .errors import TraceError
+
+__all__ = ["Token", "tokenize", "MAX_SOURCE_CHARS"]
+
+#: Longer pastes are refused (the page keeps the code in the URL).
+MAX_SOURCE_CHARS = 100_000
+
+_OPERATORS = sorted("""<<= >>= ... -> ++ -- << >> <= >= == != && || += -= *= /= %= &= ^= |=
+    + - * / % & | ^ ~ ! < > = ? : ; , ( ) { } [ ] .""".split(), key=len, reverse=True)
+
+# Most frequent first; blanks after a token are consumed with it (half the loop's iterations).
+_TOKEN = re.compile(r"""(?:
+    (?P<name>[A-Za-z_][A-Za-z_0-9]*)
+  | (?P<space>[ \t\r\f\v]+)
+  | (?P<number>(?:0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?[A-Za-z_0-9]*)
+  | (?P<directive>\#(?:\\\n|[^\n])*)
+  | (?P<annotation>//[ \t]*@q\b[^\n]*)
+  | (?P<comment>//[^\n]*|/\*.*?\*/)
+  | (?P<unclosed>/\*)
+  | (?P<op>""" + "|".join(re.escape(o) for o in _OPERATORS) + r""")
+  | (?P<newline>\n)
+  | (?P<bad>.)
+)[ \t\r\f\v]*""", re.S | re.X)
+_SKIP = frozenset({"space", "newline", "comment"})
+_new = tuple.__new__
+
+
+class Token(NamedTuple):
+    """One token: ``kind`` in name, number, op, directive, annotation, end."""
+
+    kind: str
+    text: str
+    line: int
+    column: int
+    start: int
+    end: int
+
+
+def tokenize(source: str) -> list:
+    """Split ``source`` into tokens; raises :class:`TraceError` at the first bad character."""
+    if len(source) > MAX_SOURCE_CHARS:
+        raise TraceError(1, 1, f"code is longer than {MAX_SOURCE_CHARS} characters")
+    tokens: list = []
+    line, line_start = 1, 0
+    append = tokens.append
+    for m in _TOKEN.finditer(source):
+        kind = m.lastgroup
+        if kind == "space":
+            continue
+        pos = m.start()
+        if kind == "newline":
+            line += 1
+            line_start = pos + 1
+            continue
+        text = m.group(kind)
+        if kind not in _SKIP:
+            if kind == "bad":
+                raise TraceError(line, pos - line_start + 1, f"unexpected character {text!r}")
+            if kind == "unclosed":
+                raise TraceError(line, pos - line_start + 1, "comment not closed: */ missing")
+            if kind == "directive" and source[line_start:pos].strip():
+                raise TraceError(line, pos - line_start + 1, "unexpected character '#'")
+            # tuple.__new__ skips NamedTuple's Python-level __new__ (a third of the lexer's time).
+            append(_new(Token, (kind, text, line, pos - line_start + 1, pos, pos + len(text))))
+        if kind != "number" and kind != "name" and kind != "op":
+            nls = text.count("\n")
+            if nls:
+                line += nls
+                line_start = pos + text.rfind("\n") + 1
+    n = len(source)
+    tokens.append(Token("end", "", line, n - line_start + 1, n, n))
+    return tokens

@@ -1,0 +1,135 @@
+"""``trace``: pasted C code, a target and input values in; every intermediate out.
+
+Examples
+--------
+>>> code = "Uint16 Voltage; Ulong m = (Ulong)Voltage * 10; Uint16 w = Voltage * 10;"
+>>> r = trace(code, "c28x", {"Voltage": 6554})
+>>> r["vars"]["m"]["value"], r["vars"]["w"]["value"], r["steps"][2]["flags"]
+(65540, 4, ['unsigned_wrap'])
+>>> trace(code, "arm", {"Voltage": 6554})["steps"][2]["flags"]
+['conversion']
+"""
+
+from __future__ import annotations
+
+from .check import Checked, check
+from .evaluate import Evaluator, hex_of
+from .parser import parse
+from .types import TARGETS
+from ..errors import InputError
+
+__all__ = ["trace", "trace_checked", "compile_code", "run_checked", "DEFAULT_GLOBAL_Q"]
+
+#: IQmath's GLOBAL_Q when neither the code (``#define GLOBAL_Q``) nor the caller sets one.
+DEFAULT_GLOBAL_Q = 24
+
+
+def compile_code(code: str, target: str = "c28x") -> Checked:
+    """Parse and type ``code`` for ``target`` (reusable for many input vectors)."""
+    if not isinstance(target, str) or target not in TARGETS:
+        raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
+    t = TARGETS[target]
+    return check(parse(code), t)
+
+
+def _input_values(checked: Checked, inputs: dict) -> dict:
+    out = {}
+    for name, value in inputs.items():
+        field = f"set.{name}"
+        sym = checked.symbols.get(name)
+        if sym is None:
+            raise InputError(field, f"no variable {name} is declared in the code")
+        if sym.initialized:
+            raise InputError(field, f"{name} has an initializer in the code")
+        if isinstance(value, str):
+            try:
+                value = int(value.strip().replace("_", ""), 0)
+            except ValueError:
+                raise InputError(field, f"must be an integer, got {value!r}") from None
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise InputError(field, f"must be an integer, got {value!r}")
+        t = sym.ctype
+        if not t.min <= value <= t.max:
+            raise InputError(field, f"must be {t.min}..{t.max} for {sym.spelling}, got {value}")
+        out[name] = value
+    return out
+
+
+def _meaning(note, value: int) -> dict:
+    real = value / 2.0 ** note.q
+    d = {"q": note.q, "real": real}
+    if note.base is not None:
+        d["si"] = real * note.base
+        d["unit"] = note.unit
+    return d
+
+
+def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
+                record: bool = True) -> Evaluator:
+    """Run a compiled program (inputs are validated here); returns the finished
+    :class:`~pulab.ctrace.evaluate.Evaluator` (``values``, ``steps``, ``undefined``)."""
+    gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
+    ev = Evaluator(checked, _input_values(checked, inputs or {}), gq, record)
+    ev.run()
+    return ev
+
+
+def trace(code: str, target: str = "c28x", inputs: dict | None = None,
+          global_q: int | None = None) -> dict:
+    """Trace C code as ``target``'s compiler computes it.
+
+    Parameters
+    ----------
+    code : str
+        C statements (see :mod:`pulab.ctrace.parser` for the subset).
+    target : {'c28x', 'avr', 'msp430', 'arm'}
+    inputs : dict, optional
+        Variable name → integer (or integer text, ``0x…`` allowed) for variables declared
+        without an initializer.
+    global_q : int in 1..30, optional
+        IQmath's GLOBAL_Q (default 24); ``#define GLOBAL_Q`` in the code wins.
+
+    Returns
+    -------
+    dict
+        ``ok``, ``target``, ``global_q``, ``inputs`` (names the code reads before giving
+        them a value), ``vars`` (every variable: type, c_type, bits, value, hex, and q,
+        real, si, unit when annotated) and ``steps`` (one per executed statement, each
+        with ``terms``: every intermediate, in evaluation order).
+
+    Raises
+    ------
+    TraceError
+        Code outside the subset, or a division by zero, naming line and column.
+    InputError
+        A bad target, input value or global_q.
+    """
+    return trace_checked(compile_code(code, target), inputs, global_q)
+
+
+def trace_checked(checked: Checked, inputs: dict | None = None,
+                  global_q: int | None = None) -> dict:
+    """:func:`trace` for code already compiled by :func:`compile_code`."""
+    if global_q is not None and (isinstance(global_q, bool) or not isinstance(global_q, int)
+                                 or not 1 <= global_q <= 30):
+        raise InputError("global_q", f"must be an integer 1..30, got {global_q!r}")
+    inputs = inputs or {}
+    ev = run_checked(checked, inputs, global_q)
+    values, steps = ev.values, ev.steps
+    gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
+    notes = checked.program.notes
+    for s in steps:
+        if s["var"] in notes:
+            s.update(_meaning(notes[s["var"]], s["value"]))
+    out_vars = {}
+    for name, sym in checked.symbols.items():
+        v = values[name]
+        d = {"type": sym.spelling, "c_type": sym.ctype.name, "bits": sym.ctype.bits,
+             "signed": sym.ctype.signed, "value": v,
+             "hex": hex_of(v, sym.ctype.bits) if v is not None else None,
+             "input": name in inputs}
+        if name in notes and v is not None:
+            d.update(_meaning(notes[name], v))
+        out_vars[name] = d
+    return {"ok": True, "target": checked.target.name, "global_q": gq,
+            "inputs": checked.inputs, "vars": out_vars, "steps": steps}

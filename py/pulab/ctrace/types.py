@@ -1,0 +1,132 @@
+"""C integer types of each target, the firmware's type names, and C's conversions.
+
+A type is a :class:`pulab.cint.CType` named by its canonical C spelling
+(``unsigned long``); its conversion rank (C99 6.3.1.1) is looked up from
+that name.  Widths per target:
+
+======= ==== ===== ==== ===== =========
+target  char short int  long  long long
+======= ==== ===== ==== ===== =========
+c28x    16   16    16   32    64
+avr     8    16    16   32    64
+msp430  8    16    16   32    64
+arm     8    16    32   32    64
+======= ==== ===== ==== ===== =========
+
+Examples
+--------
+>>> c28x, arm = TARGETS["c28x"], TARGETS["arm"]
+>>> c28x.type_named("Uint16").name, arm.type_named("Uint16").name
+('unsigned int', 'unsigned short')
+>>> common_type(c28x, c28x.type_named("Uint16"), c28x.type_named("int")).name
+'unsigned int'
+>>> common_type(arm, arm.type_named("Uint16"), arm.type_named("int")).name
+'int'
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from ..cint import CType
+
+__all__ = ["Target", "TARGETS", "rank", "promote", "common_type", "BASE_TYPE_WORDS"]
+
+_RANK = {"char": 1, "short": 2, "int": 3, "long": 4, "long long": 5}
+
+#: Words that may make up a base type spelling (``unsigned long long int``).
+BASE_TYPE_WORDS = frozenset({"signed", "unsigned", "char", "short", "int", "long"})
+
+
+def rank(t: CType) -> int:
+    """Integer conversion rank: char 1 < short 2 < int 3 < long 4 < long long 5."""
+    name = t.name
+    if name.startswith("unsigned "):
+        name = name[9:]
+    elif name.startswith("signed "):
+        name = name[7:]
+    return _RANK[name]
+
+
+@dataclass(frozen=True)
+class Target:
+    """A compiler's integer model.
+
+    Parameters
+    ----------
+    name : str
+    char_bits, int_bits : int in {8, 16, 32}
+    char_signed : bool
+        Whether plain ``char`` is signed.
+    """
+
+    name: str
+    char_bits: int
+    int_bits: int
+    char_signed: bool
+    types: dict = field(init=False, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        bits = {"char": self.char_bits, "short": 16, "int": self.int_bits, "long": 32,
+                "long long": 64}
+        names = {"char": CType("char", self.char_bits, self.char_signed),
+                 "signed char": CType("signed char", self.char_bits, True)}
+        for base, b in bits.items():
+            if base != "char":
+                names[base] = CType(base, b, True)
+            names["unsigned " + base] = CType("unsigned " + base, b, False)
+        # The exact-width names as each compiler's <stdint.h> defines them.
+        exact = {8: "signed char", 16: "int" if self.int_bits == 16 else "short",
+                 32: "int" if self.int_bits == 32 else "long", 64: "long long"}
+        for b, signed_name in exact.items():
+            if b == 8 and self.char_bits != 8:
+                continue  # C28x has no 8-bit type: int8_t does not exist there
+            names[f"int{b}_t"] = names[signed_name]
+            names[f"uint{b}_t"] = names["unsigned " + signed_name.replace("signed ", "")]
+        # Firmware spellings (TI's DSP28x_Project.h, Inovance's typedefs).
+        firmware = {"int16": "int16_t", "Int16": "int16_t", "Uint16": "uint16_t",
+                    "int32": "int32_t", "Int32": "int32_t", "Uint32": "uint32_t",
+                    "int64": "int64_t", "Int64": "int64_t", "Uint64": "uint64_t",
+                    "Long": "long", "Ulong": "unsigned long", "ULong": "unsigned long",
+                    "Uint": "unsigned int", "Int": "int", "_iq": "long"}
+        for alias, real in firmware.items():
+            names[alias] = names[real]
+        for q in range(1, 31):
+            names[f"_iq{q}"] = names["long"]
+        object.__setattr__(self, "types", names)
+
+    def type_named(self, name: str) -> CType:
+        """The type a spelling denotes; ``KeyError`` when unknown on this target."""
+        return self.types[name]
+
+
+TARGETS = {
+    "c28x": Target("c28x", 16, 16, True),
+    "avr": Target("avr", 8, 16, True),
+    "msp430": Target("msp430", 8, 16, True),
+    "arm": Target("arm", 8, 32, False),
+}
+
+
+def promote(target: Target, t: CType) -> CType:
+    """Integer promotions (C99 6.3.1.1): below ``int`` rank to ``int`` if it holds every value."""
+    if rank(t) >= 3:
+        return t
+    if t.bits < target.int_bits or (t.signed and t.bits == target.int_bits):
+        return target.types["int"]
+    return target.types["unsigned int"]
+
+
+def common_type(target: Target, a: CType, b: CType) -> CType:
+    """The usual arithmetic conversions (C99 6.3.1.8) for two integer types."""
+    a, b = promote(target, a), promote(target, b)
+    if a == b:
+        return a
+    if a.signed == b.signed:
+        return a if rank(a) >= rank(b) else b
+    u, s = (a, b) if not a.signed else (b, a)
+    if rank(u) >= rank(s):
+        return u
+    if s.bits > u.bits:
+        return s
+    return target.types["unsigned " + s.name]

@@ -1,0 +1,147 @@
+"""Vendor profiles: the same motor and drive in five vendors' scaling (docs/contract.md).
+
+One module per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.vendor`),
+:mod:`.ti`, :mod:`.nxp`, :mod:`.st`, :mod:`.microchip` — each with the same small
+interface: ``OPTIONS`` (its hardware inputs and their defaults), ``CONVENTIONS`` and
+``CONVENTIONS_ZH`` (its base choices, in words, English and Chinese), ``bases(ctx, opt)``
+(its voltage, current and inductance bases in SI), ``profile(ctx, opt)`` (its constants),
+``gain_fields``/``gain_range``/``gains_to_ints``/``ints_to_gains`` (its current-loop
+integers, for the translator) and, except Inovance, ``header(p, ctx)``.
+
+Profiles are computed only when the input has a ``profiles`` section (``{}`` asks for
+all five with defaults), so a plain report stays as fast as before.
+
+Examples
+--------
+>>> from pulab import report
+>>> r = report({"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5,
+...     "rated_freq_hz": 220, "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4,
+...     "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 1e-4},
+...     "profiles": {}})
+>>> sorted(r["profiles"])
+['inovance', 'microchip', 'nxp', 'st', 'ti']
+>>> r["profiles"]["microchip"]["constants"]["KIP"]["format"]
+'Q15'
+"""
+
+from __future__ import annotations
+
+from ..bases import flux_linkage
+from ..errors import InputError
+from ..inputs import _integer, object_fields, real, shown  # the report's own checks
+from . import inovance, microchip, nxp, st, ti
+from .common import SQRT2
+
+__all__ = ["NAMES", "MODULES", "context", "context_of", "options", "profiles", "bases_table",
+           "header"]
+
+NAMES = ("inovance", "ti", "nxp", "st", "microchip")
+MODULES = {"inovance": inovance, "ti": ti, "nxp": nxp, "st": st, "microchip": microchip}
+
+_INTEGERS = {"global_q": (1, 30), "f1": (1, 32767), "tf_kpdiv": (1, 32768),
+             "tf_kidiv": (1, 32768)}
+_BOOLEANS = {"trapezoidal", "round_u_max"}
+
+
+def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
+    """Everything a profile needs from the normalized input and the report, in SI.
+
+    Parameters
+    ----------
+    n : dict
+        The normalized input (:func:`pulab.inputs.normalize`).
+    raw, vendor : dict
+        The Inovance raw integers and results (:mod:`pulab.vendor`).
+    pi : dict
+        The report's ``current_pi``; its SI kp [V/A], ki [V/(A·s)] per axis are the
+        gains every profile stores (a V/A ratio is the same in peak and RMS).
+    """
+    m, d = n["motor"], n["drive"]
+    return {"rs": m["rs_ohm"], "ld": m["ld_h"], "lq": m["lq_h"], "pp": m["pole_pairs"],
+            "i_rated": m["rated_current_a"], "u_rated": m["rated_voltage_v"],
+            "f_rated": m["rated_freq_hz"], "bemf_v": m["bemf_v"], "f_base": d["base_freq_hz"],
+            "udc": d["udc_v"], "ts": d["ts_s"], "i_fs": 2.0 * SQRT2 * m["rated_current_a"],
+            "psi_peak": flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
+            "psi_rms": flux_linkage("rms", m["bemf_v"], m["rated_freq_hz"]),
+            "u_limit": d["udc_v"] / SQRT2,
+            "gains": {a: (pi[a]["kp"], pi[a]["ki"]) for a in ("d", "q")},
+            "vendor": vendor, "raw": raw, "inductance_unit": n["conventions"]["inductance_unit"]}
+
+
+def _option(name: str, key: str, v):
+    path = f"profiles.{name}.{key}"
+    if key in _BOOLEANS:
+        if not isinstance(v, bool):
+            raise InputError(path, f"must be true or false, got {shown(v)}")
+        return v
+    if key in _INTEGERS:
+        v = _integer(v, path, *_INTEGERS[key])
+        if key.startswith("tf_") and v & (v - 1):
+            raise InputError(path, f"must be a power of two, got {v}")
+        return v
+    x = real(v, path)
+    if x <= 0:
+        raise InputError(path, f"must be > 0, got {x:g}")
+    if not 1e-9 <= x <= 1e9:
+        raise InputError(path, f"must be between 1e-09 and 1e+09, got {x:g}")
+    return x
+
+
+def options(section, ctx: dict) -> dict:
+    """The ``profiles`` input section checked, every vendor's defaults filled in.
+
+    Raises
+    ------
+    InputError
+        Naming ``profiles.NAME.KEY`` for an unknown or bad value.
+    """
+    given = object_fields(section, "profiles", NAMES)
+    out = {}
+    for name in NAMES:
+        spec = MODULES[name].OPTIONS
+        sec = object_fields(given.get(name), f"profiles.{name}", [k for k, _, _ in spec])
+        out[name] = {k: _option(name, k, sec[k]) if k in sec else default(ctx)
+                     for k, default, _ in spec}
+    return out
+
+
+def bases_table(name: str, ctx: dict, p: dict) -> dict:
+    """The conventions of one profile side by side: words and the numeric bases (SI)."""
+    u, i, l_b = MODULES[name].bases(ctx, p["inputs"])
+    return {**MODULES[name].CONVENTIONS, "zh": MODULES[name].CONVENTIONS_ZH, "U_b": u, "I_b": i,
+            "Z_b": u / i, "L_b": l_b, "kp_per_unit_of_1_ohm": i / u}
+
+
+def profiles(ctx: dict, opts: dict) -> dict:
+    """Every profile: ``inputs`` (options used), ``constants``, ``bases``."""
+    out = {}
+    for name in NAMES:
+        p = MODULES[name].profile(ctx, opts[name])
+        p["bases"] = bases_table(name, ctx, p)
+        p["files"] = MODULES[name].FILES
+        out[name] = p
+    return out
+
+
+def context_of(r: dict) -> dict:
+    """:func:`context` rebuilt from a finished report (which carries every piece of it)."""
+    return context(r["input"], r["vendor"]["raw"],
+                   {k: v for k, v in r["vendor"].items() if k != "raw"}, r["current_pi"])
+
+
+def header(r: dict, name: str) -> str:
+    """The C header of one profile, in that vendor's naming and layout.
+
+    Parameters
+    ----------
+    r : dict
+        A report computed with a ``profiles`` section.
+    name : {'inovance', 'ti', 'nxp', 'st', 'microchip'}
+        Inovance's header is the report's own (:func:`pulab.export.c_header`).
+    """
+    if name not in NAMES:
+        raise InputError("profile", f"must be one of {', '.join(NAMES)}, got {shown(name)}")
+    if name == "inovance":
+        from ..export import c_header
+        return c_header(r)
+    return MODULES[name].header(r["profiles"][name], context_of(r))

@@ -1,0 +1,151 @@
+"""The constant record every vendor profile reports, and the shared SI context.
+
+A *constant* is one integer a vendor's firmware stores, with what it should
+have been and what it means (docs/contract.md, "Vendor profiles")::
+
+    value      the stored integer
+    ideal      the exact real value on the same integer scale (real · 2^n)
+    error_pct  100·(value − ideal)/ideal  (0 when ideal = 0)
+    format     e.g. "IQ24", "Q15", "ACC32 (Q16.15)", "int16 / 128", "FRAC16 · 2^3"
+    si         what the stored integer means back in SI, in ``unit``
+    scale      SI value of 1.0 in the format (MCAF's ``_SCALE``): si = value/2^q · scale
+    source     the public file the formula follows ("repository : path"), or
+               "derived: …" when no public file was found that states it
+    flags      'truncation' (a C cast dropped a fraction), 'saturate' (the vendor's
+               macro clamped), 'out_of_range' (the value does not fit and the vendor's
+               conversion does not clamp: C leaves the cast undefined)
+
+Examples
+--------
+>>> c = fixed("Kp", 0.3, 32, 24, 2.0, "V/A", "x", "TI", rounding="zero", fmt="IQ24")
+>>> c["value"], c["flags"], round(c["si"], 6)
+(5033164, ['truncation'], 0.6)
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from ..qformat import QFormat, encode
+
+__all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "SOURCES",
+           "derived"]
+
+SQRT2 = math.sqrt(2.0)
+SQRT3 = math.sqrt(3.0)
+TWO_PI = 2.0 * math.pi
+
+
+def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: float,
+          unit: str, expression: str, source: str, *, rounding: str = "nearest",
+          clamps: bool = False, fmt: str | None = None, signed: bool = True,
+          shift: int = 0, value: int | None = None) -> dict:
+    """One stored integer: the real ``ideal`` quantized into a ``word_bits`` word.
+
+    Parameters
+    ----------
+    name : str
+        The vendor's name of the constant (``Kp_Iq``, ``KIP`` …).
+    ideal : float, finite
+        The real value the integer represents (per unit, or the vendor's scaled unit).
+    word_bits : int in {16, 32}; frac_bits : int >= 0
+        The integer is ideal·2^frac_bits rounded by ``rounding``.
+    si_per_unit : float
+        SI value of ideal = 1.0 (so si = value/2^frac_bits · 2^shift · si_per_unit).
+    rounding : {'nearest', 'zero', 'floor'}
+        'zero' is a C cast of a float; the vendor's macro decides.
+    clamps : bool
+        True when the vendor's conversion saturates (NXP FRAC16/ACC32 macros).
+    shift : int
+        A power-of-two scale kept beside a FRAC16 mantissa (NXP).
+    value : int, optional
+        The stored integer when the firmware computes it from other rounded integers
+        (ST's C5 uses the truncated MAX_VOLTAGE); ``ideal`` stays the exact value.
+    """
+    q = QFormat(word_bits, frac_bits, signed)
+    e = encode(ideal, q, rounding, "saturate")
+    exact = ideal * 2.0 ** frac_bits
+    raw = e.raw if value is None else value
+    inexact = "rounded" in e.flags if value is None else \
+        Fraction(raw) != Fraction(ideal) * (1 << frac_bits)
+    flags = []
+    if rounding != "nearest" and inexact and "saturate" not in e.flags:
+        flags.append("truncation")
+    if "saturate" in e.flags:
+        flags.append("saturate" if clamps else "out_of_range")
+    si = raw / 2.0 ** frac_bits * 2.0 ** shift * si_per_unit
+    return {"name": name, "value": raw, "ideal": exact,
+            "error_pct": 0.0 if exact == 0 else 100.0 * (raw - exact) / exact,
+            "format": fmt or q.name, "q": frac_bits, "word_bits": word_bits, "shift": shift,
+            "si": si, "si_ideal": ideal * 2.0 ** shift * si_per_unit, "unit": unit,
+            "scale": 2.0 ** shift * si_per_unit,
+            "expression": expression, "source": source, "flags": flags}
+
+
+def mantissa_shift(k: float) -> tuple[float, int]:
+    """NXP MCAT's FRAC16 mantissa and shift for a positive constant K.
+
+    shift = ceil(log2 K) for K ≥ 1, −ceil(log2(1/K) − 1) for K < 1; mantissa = K·2^−shift
+    (Masmiseim36/nxpSDK : middleware/motor_control/freemaster/pmsm_frac/mcat/src/
+    JS_functions/inner_PoSpeBemfDQ.js, tracking-observer and theta gains).
+
+    >>> mantissa_shift(3.0), mantissa_shift(0.1)
+    ((0.75, 2), (0.8, -3))
+    """
+    if k >= 1.0:
+        s = math.ceil(math.log2(k))
+    else:
+        s = -math.ceil(math.log2(1.0 / k) - 1.0)
+    return k * 2.0 ** -s, s
+
+
+def pow2_divisor(k: float, limit: int = 32767, largest: int = 16384) -> int:
+    """The largest power-of-two divisor D ≤ ``largest`` with round(|k|·D) ≤ ``limit``.
+
+    pulab's choice for ST's ``TF_KPDIV``/``TF_KIDIV`` when none is given (the Motor
+    Control Workbench's own rule is not public).
+
+    >>> pow2_divisor(18.06), pow2_divisor(0.001)
+    (1024, 16384)
+    """
+    d = largest
+    while d > 1 and math.floor(abs(k) * d + 0.5) > limit:  # nearest, ties away
+        d //= 2
+    return d
+
+
+#: Public files each profile's formulas were read in ("repository : path").
+SOURCES = {
+    "seed": "seed 1.4, 2.2 (Inovance C2000 code quoted in the seed document)",
+    "ti_ctrl": "PBLSys/motorware_1_01_00_18_PB2 : sw/modules/ctrl/src/32b/ctrl.c (CTRL_setParams)",
+    "ti_pigains": "TI MotorWare calcPIgains() (public lab copies, e.g. gdgly/EV_28069M; "
+                  "exact-string match, file path not pinned)",
+    "ti_iqmath": "TI IQmathLib.h _IQ24(A) = (long)((A)*16777216.0L) (public copies)",
+    "ti_pi": "TI MotorWare pi.h PI_run_series: Ui += _IQmpy(Ki, Up) (public copy, path not pinned)",
+    "ti_user": "gdgly/EV_28069M : sw/modules/user/src/32b/user.c",
+    "nxp_cloop": "Masmiseim36/nxpSDK : middleware/motor_control/freemaster/pmsm_frac/mcat/src/"
+                 "JS_functions/inner_CLoop.js",
+    "nxp_bemf": "Masmiseim36/nxpSDK : middleware/motor_control/freemaster/pmsm_frac/mcat/src/"
+                "JS_functions/inner_PoSpeBemfDQ.js",
+    "nxp_types": "NXP RTCESL mlib_types.h ACC32(x)/FRAC16(x) macros (public copies)",
+    "nxp_appconfig": "NXP MCAT-generated m1_pmsm_appconfig.h, 'FILE NAME: pmsm_frac/mcat/"
+                     "m1_pmsm_appconfig.h, DATE: Mon Nov 27 2023' (motor 'linix'; public copy "
+                     "found by exact-string search, repository not named by the search tool)",
+    "st_conv": "dronectl/g431-mcsdk : Inc/parameters_conversion.h",
+    "st_motor": "dronectl/g431-mcsdk : Inc/pmsm_motor_parameters.h",
+    "st_drive": "dronectl/g431-mcsdk : Inc/drive_parameters.h",
+    "st_pid": "ST MCSDK pid_regulator.c PI_Controller and mc_math.c MCM_Clarke (public copies "
+              "found by exact-string search; path not pinned)",
+    "mchp_motor": "microchip-pic-avr-solutions/motorbench-release-collateral : "
+                  "zsmt-reference-actblf02-lvmc.X/mcc_generated_files/motorBench/parameters/"
+                  "motor_params.h",
+    "mchp_foc": "microchip-pic-avr-solutions/motorbench-release-collateral : "
+                "zsmt-reference-actblf02-lvmc.X/mcc_generated_files/motorBench/parameters/"
+                "foc_params.h",
+}
+
+
+def derived(why: str) -> str:
+    """``source`` text for a formula no public file was found to state."""
+    return f"derived (not found in a public file): {why}"

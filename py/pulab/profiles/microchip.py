@@ -1,0 +1,156 @@
+"""Microchip MCAF / motorBench profile: Q15 fractions of V_b, I_b, ω_b, and two L bases.
+
+From the generated parameter headers (motor_params.h, foc_params.h), where every
+constant is listed with its Q format, its normalized value, its scale (the
+engineering value of 1.0) and its engineering value::
+
+    R:   scale V_b/I_b (Q15)          L: scale V_b·Δt/I_b (Q13, *_BASE_DT)
+                                         and V_b/(I_b·ω_b) (Q15, *_BASE_OMEGA_E)
+    ψ:   scale V_b/ω_b (Q14) and V_b·Δt (Q13)
+    Ke:  scale V_b/(ω_b/p) per mechanical rad/s (Q12)
+    KIP: scale V_b/I_b (Q15)          KII: scale V_b/(I_b·Δt) (Q15)
+
+All quantities line-to-neutral, 0-to-peak (motor_params.h comments).  The stored
+integer is the normalized value rounded to nearest.
+
+Examples
+--------
+>>> opt = {"voltage_base_v": 71.3, "current_base_a": 43.6, "velocity_base_hz": 400.0}
+>>> gains_to_ints(0.25374467, 634.829, {"ts": 5e-5}, opt, "q")["KIP"]["value"]
+5084
+"""
+
+from __future__ import annotations
+
+import math
+
+from .common import SOURCES, TWO_PI, fixed
+from .headers import define, guard
+
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_q", "gain_fields",
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "header"]
+
+OPTIONS = (
+    ("voltage_base_v", lambda c: c["udc"], "V_b, the DC-link voltage full scale; default U_dc"),
+    ("current_base_a", lambda c: c["i_fs"],
+     "I_b, the current full scale; default 2·√2·I_rated"),
+    ("velocity_base_hz", lambda c: c["f_base"],
+     "ω_b/2π, electrical velocity base; default f_b"),
+)
+CONVENTIONS = {
+    "voltage_base": "V_b = DC-link full scale (hardware)",
+    "current_base": "I_b = current full scale (hardware)", "line_or_phase": "phase",
+    "rms_or_peak": "peak (line-to-neutral 0-pk)", "clarke_k": "2/3",
+    "inductance_base": "two: V_b·Δt/I_b (Q13) and V_b/(I_b·ω_b) (Q15)",
+    "pi_form": "parallel, Ki·Δt folded in (scale V_b/(I_b·Δt))",
+    "rounding": "nearest (motorBench)",
+}
+CONVENTIONS_ZH = {
+    "voltage_base": "V_b = 直流母线满量程（硬件）",
+    "current_base": "I_b = 电流满量程（硬件）", "line_or_phase": "相",
+    "rms_or_peak": "峰值（线-中性点 0-峰值）", "clarke_k": "2/3",
+    "inductance_base": "两种：V_b·Δt/I_b（Q13）与 V_b/(I_b·ω_b)（Q15）",
+    "pi_form": "并联，Ki·Δt 合并（比例 V_b/(I_b·Δt)）",
+    "rounding": "最近（motorBench）",
+}
+#: Where the rounding rule was read; files whose printed numbers the tests reproduce.
+FILES = {"rounding": SOURCES["mchp_motor"],
+         "worked_numbers": [SOURCES["mchp_motor"], SOURCES["mchp_foc"]]}
+
+
+def _bases(ctx: dict, opt: dict) -> tuple[float, float, float, float]:
+    v, i = opt["voltage_base_v"], opt["current_base_a"]
+    return v, i, TWO_PI * opt["velocity_base_hz"], ctx["ts"]
+
+
+def bases(ctx: dict, opt: dict) -> tuple:
+    """V_b, I_b and the Δt inductance base V_b·Δt/I_b (the ω_b one is V_b/(I_b·ω_b))."""
+    v, i, _, dt = _bases(ctx, opt)
+    return v, i, v / i * dt
+
+
+def gain_fields(axis: str) -> tuple[str, str]:
+    """MCAF keeps one pair for both axes (DKP = QKP = KIP)."""
+    return "KIP", "KII"
+
+
+def gain_range(axis: str) -> tuple[int, int]:
+    """Q15 in int16_t."""
+    return -32768, 32767
+
+
+def _q(name, x, n, scale, unit, expr, source):
+    return fixed(name, x, 16, n, scale, unit, expr, source, fmt=f"Q{n}")
+
+
+def gain_q(x: float) -> int:
+    """KIP_Q/KII_Q: 15, or fewer fractional bits when |x| ≥ 1 (the PI then shifts by
+    DKNP = 15 − KIP_Q, foc_params.h); pulab takes the largest Q that fits int16.
+
+    >>> gain_q(0.155), gain_q(2.5)
+    (15, 13)
+    """
+    q = 15
+    while q > 0 and math.floor(abs(x) * 2 ** q + 0.5) > 32767:  # nearest, ties away
+        q -= 1
+    return q
+
+
+def gains_to_ints(kp: float, ki: float, ctx: dict, opt: dict, axis: str) -> dict:
+    """KIP, KII (Q15, or Q(KIP_Q) when the gain exceeds 1) for SI kp [V/A], ki [V/(A·s)]."""
+    v, i, _, dt = _bases(ctx, opt)
+    z = v / i
+    kp_n, ki_n = kp / z, ki * dt / z
+    return {"KIP": _q("KIP", kp_n, gain_q(kp_n), z, "V/A", "kp/(V_b/I_b)", SOURCES["mchp_foc"]),
+            "KII": _q("KII", ki_n, gain_q(ki_n), z / dt, "V/(A·s)", "ki/(V_b/(I_b·Δt))",
+                      SOURCES["mchp_foc"])}
+
+
+def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> tuple:
+    """SI kp, ki of stored KIP, KII; their Q (KIP_Q, KII_Q) is the one
+    :func:`gain_q` picks for the report's own gains on that axis."""
+    v, i, _, dt = _bases(ctx, opt)
+    z = v / i
+    kp, ki = ctx["gains"][axis]
+    return (kp_int / 2.0 ** gain_q(kp / z) * z, ki_int / 2.0 ** gain_q(ki * dt / z) * z / dt)
+
+
+def profile(ctx: dict, opt: dict) -> dict:
+    """MCAF constants: motor parameters in both inductance bases, ψ, Ke, KIP/KII (q axis)."""
+    v, i, wb, dt = _bases(ctx, opt)
+    z, src = v / i, SOURCES["mchp_motor"]
+    out = {"MCAF_MOTOR_RS": _q("MCAF_MOTOR_RS", ctx["rs"] / z, 15, z, "Ω", "R_s/(V_b/I_b)",
+                               src)}
+    for axis, l_h in (("D", ctx["ld"]), ("Q", ctx["lq"])):
+        out[f"MCAF_MOTOR_L{axis}_BASE_DT"] = _q(f"MCAF_MOTOR_L{axis}_BASE_DT", l_h / (z * dt), 13,
+                                                 z * dt, "H", "L/(V_b·Δt/I_b)", src)
+        out[f"MCAF_MOTOR_L{axis}_BASE_OMEGA_E"] = _q(f"MCAF_MOTOR_L{axis}_BASE_OMEGA_E",
+                                                      l_h / (z / wb), 15, z / wb, "H",
+                                                      "L/(V_b/(I_b·ω_b))", src)
+    psi = ctx["psi_peak"]
+    out["MCAF_MOTOR_PSI_BASE_OMEGA_E"] = _q("MCAF_MOTOR_PSI_BASE_OMEGA_E", psi / (v / wb), 14,
+                                            v / wb, "V·s", "ψ/(V_b/ω_b)", src)
+    out["MCAF_MOTOR_PSI_BASE_DT"] = _q("MCAF_MOTOR_PSI_BASE_DT", psi / (v * dt), 13, v * dt,
+                                       "V·s", "ψ/(V_b·Δt)", src)
+    ke_scale = v / (wb / ctx["pp"])
+    out["MCAF_MOTOR_KE"] = _q("MCAF_MOTOR_KE", psi * ctx["pp"] / ke_scale, 12, ke_scale,
+                              "V/(rad/s)", "p·ψ/(V_b/(ω_b/p)), per mechanical rad/s", src)
+    out.update(gains_to_ints(*ctx["gains"]["q"], ctx, opt, "q"))
+    return {"inputs": opt, "constants": out}
+
+
+def header(p: dict, ctx: dict) -> str:
+    """``motor_params.h``/``foc_params.h``-style: INT, _Q, _NORM, _SCALE, _ENG per constant."""
+    body = []
+    for k, c in p["constants"].items():
+        scale = c["scale"]
+        body += [define(k, c),
+                 f"#define {k + '_Q':<30} {c['q']:>7}",
+                 f"#define {k + '_NORM':<30} {c['value'] / 2.0 ** c['q']!r}",
+                 f"#define {k + '_SCALE':<30} {scale!r}  /* {c['unit']} */",
+                 f"#define {k + '_ENG':<30} {c['si']!r}  /* {c['unit']} */", ""]
+    body += ["#define DKP KIP", "#define DKI KII", "#define QKP KIP", "#define QKI KII",
+             "#define DKNP (15-KIP_Q)", "#define DKNI (15-KII_Q)"]
+    return guard("MCAF_PARAMS_PULAB_H",
+                 ["Microchip MCAF-style motor_params.h / foc_params.h block generated by pu-lab.",
+                  "KIP/KII are designed on the q axis; MCAF uses one pair for both axes."], body)

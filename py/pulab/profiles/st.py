@@ -1,0 +1,247 @@
+"""ST MCSDK profile: ADC/PWM "digit" units, int16 gains over power-of-two divisors.
+
+Hardware scaling (parameters_conversion.h)::
+
+    CURRENT_CONV_FACTOR = (uint16_t)(65536·R_shunt·G/V_ref)   digits per ampere
+    MAX_CURRENT = V_ref/(2·R_shunt·G)                         A at 32768 digits
+    MAX_VOLTAGE = (int16_t)((V_ref/√3)/VBUS_PARTITIONING_FACTOR)
+    C1 = (int32_t)(F1·RS/(LS·f_reg))
+    C3 = (int32_t)(F1·MAX_BEMF_VOLTAGE/(LS·MAX_CURRENT·f_reg))
+    C5 = (int32_t)(F1·MAX_VOLTAGE/(LS·MAX_CURRENT·f_reg))
+
+LS is L_q (pmsm_motor_parameters.h: "For I-PMSM it is equal to Lq"); NOMINAL_CURRENT
+is I_peak·32767·R_shunt·G/(V_ref/2) (the formula in that file's comment).
+
+Current PI (pid_regulator.c ``PI_Controller``): ``out = (Kp·e >> log2 KPDIV) +
+(ΣKi·e >> log2 KIDIV)`` in digits; the FULL_MISRA_C_COMPLIANCY build divides instead, which
+rounds negative values toward zero rather than down (one LSB apart). The voltage digit is taken
+as (U_dc/√3)/32768 (full SVPWM modulation, phase peak) — an assumption, not read in
+a public file; the Workbench's own Kp/Ki rule is not public either, so pulab stores
+the report's kp, ki::
+
+    Kp/KPDIV = kp·MAX_CURRENT/(U_dc/√3)      Ki/KIDIV = ki·T·MAX_CURRENT/(U_dc/√3)
+
+Examples
+--------
+>>> opt = {"rshunt_ohm": 0.003, "amplification_gain": 9.14, "adc_reference_v": 3.3}
+>>> round(max_current(opt), 3)
+60.175
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..cint import trunc_div
+from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor
+from .headers import define, define_float, guard
+
+__all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "max_current",
+           "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains", "pi_first_output",
+           "profile", "header"]
+
+_GAIN = 8.0
+OPTIONS = (
+    ("adc_reference_v", lambda c: 3.3, "ADC_REFERENCE_VOLTAGE; default 3.3 V"),
+    ("amplification_gain", lambda c: _GAIN, "AMPLIFICATION_GAIN; default 8"),
+    ("rshunt_ohm", lambda c: 3.3 / (2.0 * _GAIN * c["i_fs"]),
+     "RSHUNT; default so that MAX_CURRENT = 2·√2·I_rated with the defaults above"),
+    ("vbus_partitioning_factor", lambda c: 3.3 / (2.0 * c["udc"]),
+     "VBUS_PARTITIONING_FACTOR; default puts U_dc at half the ADC range"),
+    ("tf_kpdiv", lambda c: None,
+     "TF_KPDIV (power of two); default the largest ≤ 16384 fitting int16"),
+    ("tf_kidiv", lambda c: None, "TF_KIDIV (power of two); default as TF_KPDIV"),
+    ("f1", lambda c: 16384, "observer scaling F1; default 16384"),
+)
+CONVENTIONS = {
+    "voltage_base": "U_dc/√3 at 32768 digits (assumed, full modulation)",
+    "current_base": "MAX_CURRENT = V_ref/(2·R_shunt·G) at 32768 digits (hardware)",
+    "line_or_phase": "phase", "rms_or_peak": "peak (0-to-peak digits)",
+    "clarke_k": "2/3 (MCM_Clarke: α = a, β = −(a + 2b)/√3, mc_math.c)",
+    "inductance_base": "none: LS in H (float) enters C1..C5",
+    "pi_form": "parallel, int16 gain / power-of-two divisor, Ki·T folded in",
+    "rounding": "C casts (uint16_t)/(int16_t)/(int32_t): toward zero",
+}
+CONVENTIONS_ZH = {
+    "voltage_base": "U_dc/√3 对应 32768 数字量（假设，满调制）",
+    "current_base": "MAX_CURRENT = V_ref/(2·R_shunt·G) 对应 32768 数字量（硬件）",
+    "line_or_phase": "相", "rms_or_peak": "峰值（0-峰值数字量）",
+    "clarke_k": "2/3（MCM_Clarke：α = a，β = −(a + 2b)/√3，mc_math.c）",
+    "inductance_base": "无：LS 以 H 存（浮点），进入 C1..C5",
+    "pi_form": "并联，int16 增益 / 2 的幂除数，Ki·T 合并",
+    "rounding": "C 强制转换 (uint16_t)/(int16_t)/(int32_t)：向零",
+}
+#: Where the rounding rule was read; files whose printed numbers the tests reproduce.
+FILES = {"rounding": SOURCES["st_conv"], "pi": SOURCES["st_pid"],
+         "worked_numbers": [SOURCES["st_drive"]]}
+
+
+def max_current(opt: dict) -> float:
+    """MAX_CURRENT = V_ref/(2·R_shunt·G), A (parameters_conversion.h)."""
+    return opt["adc_reference_v"] / (2.0 * opt["rshunt_ohm"] * opt["amplification_gain"])
+
+
+def _v_over_i(ctx: dict, opt: dict) -> float:
+    """Volts per voltage digit over amperes per current digit."""
+    return (ctx["udc"] / SQRT3) / max_current(opt)
+
+
+def bases(ctx: dict, opt: dict) -> tuple:
+    """U_dc/√3 (assumed voltage digit scale), MAX_CURRENT; no inductance base (LS in H)."""
+    return ctx["udc"] / SQRT3, max_current(opt), None
+
+
+def gain_fields(axis: str) -> tuple[str, str]:
+    """Flux (d) and torque (q) PID defaults."""
+    w = "FLUX" if axis == "d" else "TORQUE"
+    return f"PID_{w}_KP_DEFAULT", f"PID_{w}_KI_DEFAULT"
+
+
+def gain_range(axis: str) -> tuple[int, int]:
+    """hKpGain, hKiGain are int16_t."""
+    return -32768, 32767
+
+
+def divisors(ctx: dict, opt: dict) -> tuple[int, int]:
+    """TF_KPDIV, TF_KIDIV: given, or pulab's choice for the larger of the two axes."""
+    r = _v_over_i(ctx, opt)
+    kp = max(abs(ctx["gains"][a][0]) for a in ("d", "q")) / r
+    ki = max(abs(ctx["gains"][a][1]) for a in ("d", "q")) * ctx["ts"] / r
+    return (opt["tf_kpdiv"] or pow2_divisor(kp), opt["tf_kidiv"] or pow2_divisor(ki))
+
+
+def gains_to_ints(kp: float, ki: float, ctx: dict, opt: dict, axis: str) -> dict:
+    """int16 Kp, Ki over TF_KPDIV, TF_KIDIV for SI gains kp [V/A], ki [V/(A·s)]."""
+    r, t = _v_over_i(ctx, opt), ctx["ts"]
+    kpdiv = opt["tf_kpdiv"] or pow2_divisor(kp / r)
+    kidiv = opt["tf_kidiv"] or pow2_divisor(ki * t / r)
+    kp_name, ki_name = gain_fields(axis)
+    src = derived("kp·MAX_CURRENT/(U_dc/√3), the Workbench rule is not public; the PI form "
+                  "(int16 gain >> log2 divisor) is MCSDK pid_regulator.c")
+    return {kp_name: fixed(kp_name, kp / r, 16, int(math.log2(kpdiv)), r, "V/A",
+                           "kp·MAX_CURRENT/(U_dc/√3)", src, fmt=f"int16 / {kpdiv}"),
+            ki_name: fixed(ki_name, ki * t / r, 16, int(math.log2(kidiv)), r / t, "V/(A·s)",
+                           "ki·T·MAX_CURRENT/(U_dc/√3)", src, fmt=f"int16 / {kidiv}")}
+
+
+def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> tuple:
+    """SI kp, ki of stored gains (divisors from the profile inputs, or as chosen above)."""
+    r, t = _v_over_i(ctx, opt), ctx["ts"]
+    kpdiv, kidiv = divisors(ctx, opt)
+    return kp_int / kpdiv * r, ki_int / kidiv * r / t
+
+
+def pi_first_output(kp: int, kpdiv: int, ki: int, kidiv: int, error: int, misra: bool) -> int:
+    """The first output of ``PI_Controller`` from a zero integral (pid_regulator.c), digits.
+
+    The default build shifts (an arithmetic shift floors), the FULL_MISRA_C_COMPLIANCY build
+    divides (C division truncates toward zero): a negative term differs by one LSB.
+
+    >>> pi_first_output(9456, 16384, 2364, 16384, -33, False)
+    -25
+    >>> pi_first_output(9456, 16384, 2364, 16384, -33, True)
+    -23
+    """
+    p, i = kp * error, ki * error
+    if misra:
+        return trunc_div(p, kpdiv) + trunc_div(i, kidiv)
+    return (p >> (kpdiv.bit_length() - 1)) + (i >> (kidiv.bit_length() - 1))
+
+
+def _c_trunc(x: float) -> int:
+    return math.trunc(x)
+
+
+def profile(ctx: dict, opt: dict) -> dict:
+    """ST constants: PID defaults, current conversion, observer C1, C3, C5."""
+    kpdiv, kidiv = divisors(ctx, opt)
+    o = {**opt, "tf_kpdiv": kpdiv, "tf_kidiv": kidiv}
+    out = {}
+    for axis in ("d", "q"):
+        out.update(gains_to_ints(*ctx["gains"][axis], ctx, o, axis))
+    vref, rsh, g = o["adc_reference_v"], o["rshunt_ohm"], o["amplification_gain"]
+    imax = max_current(o)
+    f_reg = round(1.0 / ctx["ts"])  # PWM_FREQUENCY / REGULATION_EXECUTION_RATE (= 1)
+    f1 = o["f1"]
+    conv, mot = SOURCES["st_conv"], SOURCES["st_motor"]
+    out["CURRENT_CONV_FACTOR"] = fixed("CURRENT_CONV_FACTOR", 65536.0 * rsh * g / vref, 16, 0,
+                                       1.0, "digit/A", "65536·RSHUNT·G/V_ref", conv,
+                                       rounding="zero", signed=False, fmt="uint16_t")
+    mv_exact = (vref / SQRT3) / o["vbus_partitioning_factor"]
+    out["MAX_VOLTAGE"] = fixed("MAX_VOLTAGE", mv_exact, 16, 0, 1.0, "V",
+                               "(V_ref/√3)/VBUS_PARTITIONING_FACTOR", conv, rounding="zero",
+                               fmt="int16_t")
+    i_pk = SQRT2 * ctx["i_rated"]
+    out["NOMINAL_CURRENT"] = fixed("NOMINAL_CURRENT", i_pk * 32767.0 * rsh * g / (vref / 2.0),
+                                   16, 0, (vref / 2.0) / (32767.0 * rsh * g), "A",
+                                   "I_peak·32767·RSHUNT·G/(V_ref/2)", mot, fmt="int16_t")
+    ls = ctx["lq"]
+    out["C1"] = fixed("C1", f1 * ctx["rs"] / (ls * f_reg), 32, 0, ls * f_reg / f1, "Ω",
+                      "F1·RS/(LS·f_reg)", conv, rounding="zero", fmt="int32_t")
+    max_rpm = 60.0 * ctx["f_base"] / ctx["pp"]
+    ke = ctx["bemf_v"] / (60.0 * ctx["f_rated"] / ctx["pp"] / 1000.0)  # V rms LL per krpm
+    bemf_exact = max_rpm * 1.2 * ke * SQRT2 / (1000.0 * SQRT3)
+    bemf = fixed("MAX_BEMF_VOLTAGE", bemf_exact, 16, 0, 1.0, "V",
+                 "MAX_APPLICATION_SPEED_RPM·1.2·MOTOR_VOLTAGE_CONSTANT·√2/(1000·√3)", conv,
+                 rounding="zero", signed=False, fmt="uint16_t")
+    out["MAX_BEMF_VOLTAGE"] = bemf
+    den = ls * imax * f_reg
+    out["C3"] = fixed("C3", f1 * bemf_exact / den, 32, 0, den / f1, "V",
+                      "F1·MAX_BEMF_VOLTAGE/(LS·MAX_CURRENT·f_reg)", conv, rounding="zero",
+                      fmt="int32_t", value=_c_trunc(f1 * bemf["value"] / den))
+    out["C5"] = fixed("C5", f1 * mv_exact / den, 32, 0, den / f1, "V",
+                      "F1·MAX_VOLTAGE/(LS·MAX_CURRENT·f_reg)", conv, rounding="zero",
+                      fmt="int32_t", value=_c_trunc(f1 * out["MAX_VOLTAGE"]["value"] / den))
+    o.update(max_current_a=imax, pwm_frequency_hz=f_reg, max_application_speed_rpm=max_rpm,
+             motor_voltage_constant=ke)
+    # A ±0.1 % current error through the torque PI: the shift and the MISRA build disagree
+    # on the negative side (rounding down vs toward zero).
+    e = max(1, round(0.001 * 32768))
+    kp_i, ki_i = out["PID_TORQUE_KP_DEFAULT"]["value"], out["PID_TORQUE_KI_DEFAULT"]["value"]
+    example = [{"error": err,
+                "shift": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, False),
+                "misra": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, True)}
+               for err in (e, -e)]
+    return {"inputs": o, "constants": out, "pi_example": example}
+
+
+def header(p: dict, ctx: dict) -> str:
+    """``pmsm_motor_parameters.h`` + ``drive_parameters.h`` + power stage, as the Workbench lays
+    them out; what ``parameters_conversion.h`` will compute from them is in the last comment."""
+    o, c = p["inputs"], p["constants"]
+    body = ["/* pmsm_motor_parameters.h */",
+            f"#define {'POLE_PAIR_NUM':<30} {ctx['pp']:>7}",
+            define_float("RS", ctx["rs"], "Ω"),
+            define_float("LS", ctx["lq"], "H (Lq)"),
+            define("NOMINAL_CURRENT", c["NOMINAL_CURRENT"]),
+            define_float("MOTOR_VOLTAGE_CONSTANT", o["motor_voltage_constant"],
+                         "V rms line-to-line per krpm"),
+            "", "/* drive_parameters.h */",
+            define_float("MAX_APPLICATION_SPEED_RPM", o["max_application_speed_rpm"],
+                         "rpm mechanical (f_b)"),
+            f"#define {'PWM_FREQUENCY':<30} {o['pwm_frequency_hz']:>7}",
+            f"#define {'REGULATION_EXECUTION_RATE':<30} {1:>7}",
+            f"#define {'F1':<30} {o['f1']:>7}"]
+    for k in ("PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "PID_FLUX_KP_DEFAULT",
+              "PID_FLUX_KI_DEFAULT"):
+        body.append(define(k, c[k]))
+    body += [f"#define {'TF_KPDIV':<30} {o['tf_kpdiv']:>7}",
+             f"#define {'TF_KIDIV':<30} {o['tf_kidiv']:>7}",
+             f"#define {'TF_KPDIV_LOG':<30} {o['tf_kpdiv'].bit_length() - 1:>7}",
+             f"#define {'TF_KIDIV_LOG':<30} {o['tf_kidiv'].bit_length() - 1:>7}",
+             "", "/* power_stage_parameters.h */",
+             define_float("RSHUNT", o["rshunt_ohm"], "Ω"),
+             define_float("AMPLIFICATION_GAIN", o["amplification_gain"], ""),
+             define_float("VBUS_PARTITIONING_FACTOR", o["vbus_partitioning_factor"], ""),
+             define_float("NOMINAL_BUS_VOLTAGE_V", ctx["udc"], "V"),
+             "#ifndef ADC_REFERENCE_VOLTAGE  /* parameters_conversion.h defines it */",
+             define_float("ADC_REFERENCE_VOLTAGE", o["adc_reference_v"], "V"),
+             "#endif",
+             "", "/* parameters_conversion.h computes from the lines above: */"]
+    for k in ("CURRENT_CONV_FACTOR", "MAX_VOLTAGE", "MAX_BEMF_VOLTAGE", "C1", "C3", "C5"):
+        flags = "; " + ", ".join(c[k]["flags"]) if c[k]["flags"] else ""
+        body.append(f"/*   {k} = {c[k]['value']}  ({c[k]['expression']} = "
+                    f"{c[k]['ideal']:.6g}{flags}) */")
+    return guard("PULAB_ST_MCSDK_PARAMETERS_H",
+                 ["ST MCSDK-style motor, drive and power-stage parameters generated by pu-lab."],
+                 body)

@@ -1,0 +1,229 @@
+"""Run C cases through real compilers (never imports pulab).
+
+``avr``: avr-gcc -mmcu=atmega2560 (16-bit int, 32-bit long, as C28x and MSP430),
+run in simavr; results come back on UART0, which simavr echoes to stderr with
+colour codes, '.' before each newline, and a line break every 255 characters.
+``arm``: the host gcc -m32 (32-bit int and long, as ARM Cortex-M) with
+-funsigned-char (ARM's plain char is unsigned).  Both build with -fwrapv, so a
+signed overflow is the two's-complement wrap; the vectors exclude the other
+undefined behaviour (shift count out of range, INT_MIN / -1, division by zero).
+
+Each program batches many cases, each with its own input table (at most
+~30 KB per AVR table and ~60 KB of tables per program, as pgm_read works in
+the first 64 KB of flash).
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import tempfile
+
+from ctrace_gen import TYPE_BITS
+
+__all__ = ["available", "run_cases", "PRELUDE"]
+
+#: Firmware type names and IQmath as TI defines them (DSP28x_Project.h, IQmathLib.h);
+#: _IQmpy = (long)(((long long)a * b) >> GLOBAL_Q), __IQsat(x, hi, lo) clamps.
+PRELUDE = r"""
+#include <stdint.h>
+#include <string.h>
+typedef uint16_t Uint16; typedef int16_t int16; typedef int16_t Int16;
+typedef uint32_t Uint32; typedef int32_t int32; typedef int32_t Int32;
+typedef int64_t int64; typedef uint64_t Uint64; typedef long Long; typedef unsigned long Ulong;
+typedef unsigned int Uint; typedef int Int; typedef long _iq;
+#define GLOBAL_Q 24
+static long iq_mpy(long a, long b, int q) { return (long)(((long long)a * (long long)b) >> q); }
+static long iq_sat(long x, long hi, long lo) { return x > hi ? hi : (x < lo ? lo : x); }
+#define _IQmpy(a, b) iq_mpy((a), (b), GLOBAL_Q)
+#define __IQmpy(a, b, q) iq_mpy((a), (b), (q))
+#define _IQsat(x, hi, lo) iq_sat((x), (hi), (lo))
+#define __IQsat(x, hi, lo) iq_sat((x), (hi), (lo))
+""" + "".join(f"#define _IQ{q}mpy(a, b) iq_mpy((a), (b), {q})\n" for q in range(1, 31))
+
+_AVR_IO = r"""
+#include <avr/io.h>
+#include <avr/interrupt.h>
+#include <avr/sleep.h>
+#include <avr/pgmspace.h>
+static void put(char c) { while (!(UCSR0A & (1 << UDRE0))); UDR0 = c; }
+#define LOAD(dst, src) memcpy_P(&(dst), &(src), sizeof(dst))
+#define TABLE PROGMEM
+"""
+_HOST_IO = r"""
+#include <stdio.h>
+static void put(char c) { putchar(c); }
+#define LOAD(dst, src) memcpy(&(dst), &(src), sizeof(dst))
+#define TABLE
+"""
+_PUT_HEX = r"""
+static void put_hex(uint64_t v, uint8_t bytes) {
+  uint8_t b[8]; memcpy(b, &v, 8);  /* both targets are little-endian */
+  while (bytes--) { uint8_t x = b[bytes], h = x >> 4, l = x & 15;
+    put(h < 10 ? '0' + h : 'a' + h - 10); put(l < 10 ? '0' + l : 'a' + l - 10); }
+}
+"""
+
+_TABLE_BYTES = 30000
+_PROGRAM_TABLE_BYTES = 60000
+_PROGRAM_CASES = 40
+
+
+def available(target: str) -> list:
+    """The missing tools for ``target`` (empty when it can run): the programs, and a compile
+    of an empty program (avr-libc's headers; gcc-multilib's 32-bit libraries)."""
+    tools = ["avr-gcc", "simavr"] if target == "avr" else ["gcc"]
+    missing = [t for t in tools if shutil.which(t) is None]
+    if missing:
+        return missing
+    with tempfile.TemporaryDirectory() as d:
+        src = os.path.join(d, "t.c")
+        with open(src, "w") as f:
+            f.write("#include <stdint.h>\n" + ("#include <avr/io.h>\n" if target == "avr" else "")
+                    + "int main(void) { return 0; }\n")
+        cmd = ["avr-gcc", "-mmcu=atmega2560"] if target == "avr" else ["gcc", "-m32"]
+        if subprocess.run(cmd + [src, "-o", os.path.join(d, "t")], capture_output=True).returncode:
+            return ["avr-libc" if target == "avr" else "gcc-multilib"]
+    return []
+
+
+def _declare(decls: list) -> str:
+    """C declarations for (spelling, name); dotted names become struct members."""
+    plain, structs = [], {}
+    for spelling, name in decls:
+        if "." in name:
+            head, _, member = name.partition(".")
+            structs.setdefault(head, []).append(f"{spelling} {member};")
+        else:
+            plain.append(f"{spelling} {name};")
+    return " ".join(plain + [f"struct {{ {' '.join(m)} }} {h};" for h, m in structs.items()])
+
+
+def _case_source(k: int, case, vectors: list, target: str) -> str:
+    inputs = case.input_decls()
+    fields = " ".join(f"{t} f{i};" for i, (t, _) in enumerate(inputs)) or "char unused;"
+    rows = []
+    for vec in vectors:
+        vals = []
+        for spelling, name in inputs:
+            bits, _ = TYPE_BITS(spelling, target)
+            vals.append(f"({spelling})0x{vec[name] & ((1 << bits) - 1):X}ULL")
+        rows.append("{" + ", ".join(vals or ["0"]) + "}")
+    load = " ".join(f"{name} = in.f{i};" for i, (_, name) in enumerate(inputs))
+    prints = " ".join(f"put(' '); put_hex((uint64_t)({name}), sizeof({name}));"
+                      for _, name in case.outputs)
+    return f"""
+struct in_{k} {{ {fields} }};
+static const struct in_{k} tbl_{k}[] TABLE = {{ {", ".join(rows)} }};
+static void case_{k}(void) {{
+  uint16_t i;
+  for (i = 0; i < {len(vectors)}; i++) {{
+    struct in_{k} in; LOAD(in, tbl_{k}[i]);
+    {{ {_declare(case.decls)} {load}
+{case.body}
+    put('@'); put_hex({k}, 2); put(' '); put_hex(i, 2); {prints} put('\\n'); }}
+  }}
+}}
+"""
+
+
+def _program(chunks: list, target: str) -> str:
+    io = _AVR_IO if target == "avr" else _HOST_IO
+    body = "".join(_case_source(k, c, v, target) for k, (c, v) in enumerate(chunks))
+    calls = " ".join(f"case_{k}();" for k in range(len(chunks)))
+    init = "UCSR0A = 1 << U2X0; UBRR0 = 0; UCSR0B = 1 << TXEN0;" if target == "avr" else ""
+    end = "cli(); sleep_cpu();" if target == "avr" else ""
+    return f"{PRELUDE}{io}{_PUT_HEX}{body}\nint main(void) {{ {init} {calls} {end} return 0; }}\n"
+
+
+def _row_bytes(case, target: str) -> int:
+    return sum(TYPE_BITS(t, target)[0] // 8 + 1 for t, _ in case.input_decls()) + 2
+
+
+def _batches(cases: list, target: str) -> list:
+    """Split (case, vectors) pairs into programs of table chunks within the size limits."""
+    programs, current, size = [], [], 0
+    for case, vectors in cases:
+        per = max(1, _TABLE_BYTES // _row_bytes(case, target))
+        for start in range(0, len(vectors), per):
+            chunk = vectors[start:start + per]
+            nbytes = len(chunk) * _row_bytes(case, target)
+            if current and (size + nbytes > _PROGRAM_TABLE_BYTES or
+                            len(current) >= _PROGRAM_CASES):
+                programs.append(current)
+                current, size = [], 0
+            current.append((case, chunk))
+            size += nbytes
+    if current:
+        programs.append(current)
+    return programs
+
+
+def _compile_and_run(chunks: list, target: str, workdir: str, index: int) -> list:
+    src = os.path.join(workdir, f"p{index}.c")
+    exe = os.path.join(workdir, f"p{index}.{'elf' if target == 'avr' else 'out'}")
+    with open(src, "w") as f:
+        f.write(_program(chunks, target))
+    if target == "avr":
+        cmd = ["avr-gcc", "-mmcu=atmega2560", "-Os", "-fwrapv", "-std=gnu99", "-w", src,
+               "-o", exe]
+    else:
+        cmd = ["gcc", "-m32", "-O1", "-fwrapv", "-funsigned-char", "-std=gnu99", "-w", src,
+               "-o", exe]
+    cc = subprocess.run(cmd, capture_output=True, text=True)
+    if cc.returncode:
+        raise RuntimeError(f"{cmd[0]} failed on {src}:\n{cc.stderr[:4000]}")
+    if target == "avr":
+        run = subprocess.run(["simavr", "-m", "atmega2560", "-f", "16000000", exe],
+                             capture_output=True, text=True, timeout=300)
+        text = re.sub(r"\x1b\[[0-9;]*m", "", run.stderr)
+        text = text.replace(".\n", "\x00").replace("\n", "")
+        lines = text.split("\x00")
+    else:
+        run = subprocess.run([exe], capture_output=True, text=True, timeout=300)
+        lines = run.stdout.split("\n")
+    results: dict = {}
+    for line in lines:
+        at = line.find("@")
+        if at < 0:
+            continue
+        parts = line[at + 1:].split()
+        results[(int(parts[0], 16), int(parts[1], 16))] = parts[2:]
+    out = []
+    for k, (case, chunk) in enumerate(chunks):
+        for i in range(len(chunk)):
+            words = results.get((k, i))
+            if words is None or len(words) != len(case.outputs):
+                raise RuntimeError(f"program {index}: no complete output for case {k} "
+                                   f"vector {i}")
+            vals = {}
+            for (spelling, name), word in zip(case.outputs, words):
+                bits, signed = TYPE_BITS(spelling, target)
+                v = int(word, 16) & ((1 << bits) - 1)
+                if signed and v >> (bits - 1):
+                    v -= 1 << bits
+                vals[name] = v
+            out.append(vals)
+    return out
+
+
+def run_cases(cases: list, target: str, jobs: int = 2) -> tuple:
+    """Final values of every output of every (case, vectors) pair, in order.
+
+    Returns (results, programs): results is a list (per case) of lists (per vector)
+    of {name: value}; programs is how many programs were compiled and run.
+    """
+    from concurrent.futures import ThreadPoolExecutor
+    programs = _batches(cases, target)
+    with tempfile.TemporaryDirectory(prefix=f"ctrace-{target}-") as d:
+        with ThreadPoolExecutor(jobs) as pool:
+            outs = list(pool.map(lambda a: _compile_and_run(a[1], target, d, a[0]),
+                                 enumerate(programs)))
+    flat = [v for o in outs for v in o]
+    results, pos = [], 0
+    for case, vectors in cases:
+        results.append(flat[pos:pos + len(vectors)])
+        pos += len(vectors)
+    return results, len(programs)

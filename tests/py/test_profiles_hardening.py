@@ -1,0 +1,82 @@
+"""The vendor-profile entry points keep the hardening contract (docs/contract.md, issue 14).
+
+``python -m pulab header`` and ``translate`` on the seeded adversarial inputs of
+tests/py/adversarial.py, and ``api.vendors_json`` with hostile ``profiles`` sections and
+translator values: strict JSON / a header, or one printable error line naming a field, with
+Chinese text for every message.
+"""
+import contextlib
+import io
+import json
+import random
+import sys
+from collections import Counter
+
+from adversarial import BASE, _value, cases
+from pulab.__main__ import main
+from pulab.api import vendors_json
+from pulab.messages import has_chinese
+from test_hardening import _check_cli, _one_line, _strict
+
+FUZZ = 1500
+
+
+def _cli(args: list, data: bytes) -> tuple:
+    stdin = io.TextIOWrapper(io.BytesIO(data), encoding="utf-8")
+    out, err = io.StringIO(), io.StringIO()
+    saved = sys.stdin
+    sys.stdin = stdin
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = main([*args, "-"])
+    finally:
+        sys.stdin = saved
+    return code, out.getvalue(), err.getvalue()
+
+
+def test_header_and_translate_cli_on_adversarial_inputs():
+    seen = Counter()
+    for i, data in enumerate(cases(FUZZ, seed=12)):
+        args = (["header", "--profile", ("ti", "nxp", "st", "microchip", "inovance")[i % 5]]
+                if i % 2 else ["translate", "--from", "inovance", "--kp", "1180", "--ki", "4720"])
+        code, out, err = _cli(args, data)
+        if code == 0 and args[0] == "header":
+            assert err == "" and "#define" in out and out.isprintable() is False  # text with \n
+            seen["header"] += 1
+            continue
+        kind, _ = _check_cli(code, out, err)
+        if kind == "error":
+            assert has_chinese(err[:-1].split(": ", 2)[2]), err
+        seen[f"{args[0]} {kind}"] += 1
+    print(f"\nprofile CLI fuzz: {dict(seen)}")
+    assert seen["header"] > 50 and seen["translate ok"] > 50
+
+
+def test_vendors_json_with_hostile_profiles_and_values():
+    rng = random.Random(12)
+    seen = Counter()
+    plain = {k: v for k, v in BASE.items() if k != "sim"}
+    names = ["ti", "nxp", "st", "microchip", "inovance", "", "a\nb", "ti.x"]
+    keys = ["full_scale_voltage_v", "global_q", "tf_kpdiv", "trapezoidal", "i_max_a",
+            "voltage_base_v", "f1", "round_u_max", "\u2028"]
+    for _ in range(FUZZ):
+        section = rng.choice([_value(rng), {rng.choice(names): _value(rng)},
+                              {rng.choice(names): {rng.choice(keys): _value(rng)}}])
+        req = rng.choice([
+            {"input": {**plain, "profiles": section}, "action": "header",
+             "profile": rng.choice(names + [_value(rng)])},
+            {"input": {**plain, "profiles": section}, "action": "translate",
+             "from": rng.choice(names), "axis": rng.choice(["d", "q", _value(rng)]),
+             "values": rng.choice([_value(rng), {"pm_kp": _value(rng), "pm_ki": 4720},
+                                   {"Kp_Iq": rng.choice([1, -1, 2 ** 31, 0.5]), "Ki_Iq": 3}])},
+        ])
+        out = _strict(vendors_json(json.dumps(req)))
+        if out["ok"]:
+            seen["ok"] += 1
+            continue
+        assert set(out) == {"ok", "field", "message", "message_zh"}, out
+        assert all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
+        assert has_chinese(out["message"]), out
+        seen["error"] += 1
+    print(f"\nvendors_json fuzz: {dict(seen)}")
+    assert seen["error"] > 500

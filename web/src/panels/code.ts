@@ -1,0 +1,310 @@
+// "Your code": paste C scaling code, pick a target (and one to compare with), and see every
+// intermediate integer with its C type, hex and flags. Everything comes from
+// pulab.api.trace_json in the worker; the state lives in the URL query (code-share.ts).
+import { flagChips, h, table } from '../dom';
+import { errText, getLang, t } from '../i18n';
+import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
+import { toast } from '../page/toast';
+import type { Panel, PanelContext } from './panel';
+
+interface Term { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string }
+interface Step { line: number; column: number; code: string; var: string | null; type: string; value: number; hex: string; flags: string[]; terms: Term[]; spelling?: string; input?: boolean; branch?: string }
+interface VarOut { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
+interface TraceOk { ok: true; target: string; global_q: number; inputs: string[]; vars: Record<string, VarOut>; steps: Step[] }
+interface TraceErr { ok: false; field: string; message: string; message_zh?: string; line?: number; column?: number; inputs?: string[] }
+type Reply = TraceOk | TraceErr;
+interface Example { id: string; title: string; title_zh: string; code: string }
+
+const FALLBACK_TARGETS = ['c28x', 'avr', 'msp430', 'arm'];
+let state: CodeState | null = null;
+let examples: Example[] | null = null;
+let targets: string[] = FALLBACK_TARGETS;
+let inputs: string[] = [];
+let main: Reply | null = null;
+let other: Reply | null = null;
+let lastKey = '';
+let seq = 0;
+let timer: ReturnType<typeof setTimeout> | undefined;
+let lastCtx: PanelContext | null = null;
+
+function st(): CodeState {
+  state ??= codeStateFromSearch(location.search) ?? { code: '', target: DEFAULT_TARGET, vs: DEFAULT_VS, set: {} };
+  return state;
+}
+
+/** The exact decimal of a value that may exceed 2^53: the sign from the number, the bits from the hex. */
+function exact(value: number | null, hex: string | null): string {
+  if (value === null || hex === null) return '';
+  if (Number.isSafeInteger(value)) return String(value);
+  const bits = BigInt((hex.length - 2) * 4);
+  const u = BigInt(hex);
+  return String(value < 0 ? u - (1n << bits) : u);
+}
+
+function intCell(key: string, value: number | null, hex: string | null, differs = false): HTMLElement {
+  const dec = exact(value, hex);
+  return h('span', { class: `num int${differs ? ' differs' : ''}` },
+    h('span', { 'data-key': `${key}`, 'data-value': dec || null, title: dec }, dec || '…'),
+    hex ? h('code', { class: 'hex', 'data-hex-of': key }, ` ${hex}`) : null);
+}
+
+function compute(ctx: PanelContext, delay = 0): void {
+  clearTimeout(timer);
+  timer = setTimeout(() => run(ctx), delay);
+}
+
+function run(ctx: PanelContext): void {
+  const s = st();
+  if (!ctx.client || !s.code) return;
+  const report = ctx.report;
+  const key = JSON.stringify([s, report ? prefill(inputs, report) : null, inputs]);
+  if (key === lastKey) return;
+  lastKey = key;
+  const id = ++seq;
+  const one = (target: string, channel: string) =>
+    ctx.client!.call('trace', traceRequest(s, target, inputs, report), channel).then(({ result }) => result as unknown as Reply);
+  const calls = [one(s.target, 'trace'), s.vs && s.vs !== s.target ? one(s.vs, 'trace-vs') : Promise.resolve(null)];
+  void Promise.all(calls).then(([a, b]) => {
+    if (id !== seq) return;
+    main = a;
+    other = b;
+    const names = a?.inputs ?? inputs;
+    if (JSON.stringify(names) !== JSON.stringify(inputs)) {
+      inputs = names;
+      run(ctx); // the prefilled values depend on the inputs the code reads
+    }
+    const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
+    if (el) update(el, ctx);
+  }, () => undefined);
+}
+
+function errorFor(field: string): string {
+  for (const r of [main, other]) if (r && !r.ok && r.field === field) return errText(r);
+  return '';
+}
+
+function caret(code: string, r: Reply | null): HTMLElement | null {
+  if (!r || r.ok || !r.line || !r.column) return null;
+  const line = code.split('\n')[r.line - 1] ?? '';
+  return h('pre', { class: 'code-caret' }, `${r.line} | ${line}\n${' '.repeat(String(r.line).length + 3 + r.column - 1)}^`);
+}
+
+function renderInputs(box: HTMLElement, ctx: PanelContext): void {
+  const s = st();
+  const fromReport = prefill(inputs, ctx.report);
+  box.replaceChildren(
+    ...(inputs.length === 0 ? [h('p', { class: 'hint' }, t('codeNoInputs'))] : inputs.map((name) => {
+      const report = fromReport[name];
+      const field = `set.${name}`;
+      return h('label', { class: 'field code-input' },
+        h('span', { class: 'lbl' }, h('code', {}, name), report ? h('span', { class: 'hint' }, ` ${t('codeFromReport', { name: report.source })}`) : null),
+        h('input', {
+          type: 'text', name: field, value: s.set[name] ?? '', placeholder: report ? String(report.value) : '', spellcheck: 'false', inputmode: 'numeric',
+          oninput: (ev: Event) => {
+            s.set[name] = (ev.target as HTMLInputElement).value;
+            compute(ctx, 120);
+          },
+        }),
+        h('span', { class: 'err', 'data-err-for': field }, errorFor(field)));
+    })),
+  );
+}
+
+function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
+  const pair = (i: number): Step | null => {
+    const x = a.steps[i];
+    const y = b?.steps[i];
+    return y && y.code === x.code && y.line === x.line && y.column === x.column ? y : null;
+  };
+  const rows: HTMLElement[] = [];
+  a.steps.forEach((s, i) => {
+    const o = pair(i);
+    const k = `code.${a.target}.steps.${i}`;
+    const differs = o !== null && o.value !== s.value;
+    rows.push(h('tr', { class: `step${differs ? ' differs' : ''}${s.flags.length ? ' flagged' : ''}` },
+      h('td', { class: 'pos' }, `${s.line}:${s.column}`),
+      h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null),
+      h('td', {}, s.var ? h('code', {}, s.var) : ''),
+      h('td', { class: 'r' }, intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
+      h('td', {}, flagChips(s.flags)),
+      b ? h('td', { class: 'r' }, o ? [intCell(`code.${b.target}.steps.${i}.value`, o.value, o.hex, differs), h('div', { class: 'ctype' }, o.type)] : '—') : null,
+      b ? h('td', {}, o ? flagChips(o.flags) : '') : null));
+    if (s.terms.length) {
+      const terms = s.terms.map((tm, j) => {
+        const ot = o?.terms[j] && o.terms[j].expr === tm.expr ? o.terms[j] : null;
+        const d = ot !== null && (ot.value !== tm.value || ot.type !== tm.type);
+        return h('tr', { class: d ? 'differs' : '' },
+          h('td', {}, h('code', {}, tm.expr)),
+          h('td', {}, tm.type),
+          h('td', { class: 'r' }, intCell(`${k}.terms.${j}.value`, tm.value, tm.hex, d)),
+          h('td', {}, flagChips(tm.flags)),
+          b ? h('td', {}, ot?.type ?? '') : null,
+          b ? h('td', { class: 'r' }, ot ? intCell(`code.${b.target}.steps.${i}.terms.${j}.value`, ot.value, ot.hex, d) : '—') : null,
+          b ? h('td', {}, ot ? flagChips(ot.flags) : '') : null);
+      });
+      const head = [t('codeExpr'), `${t('codeType')} (${a.target})`, a.target, t('flags'), ...(b ? [`${t('codeType')} (${b.target})`, b.target, t('flags')] : [])];
+      const open = s.flags.length > 0 || rows[rows.length - 1].classList.contains('differs');
+      rows.push(h('tr', { class: 'terms' }, h('td', {}), h('td', { colspan: b ? 6 : 4 },
+        h('details', { open }, h('summary', {}, t('codeTerms', { n: s.terms.length })), table(head, terms, 'code-terms')))));
+    }
+  });
+  const head = ['L:C', t('codeSource'), t('codeVariable'), a.target, t('flags'), ...(b ? [b.target, t('flags')] : [])];
+  return table(head, rows, 'code-steps');
+}
+
+function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
+  const diff = new Set(differingVars(a.vars, b?.vars));
+  const rows = Object.entries(a.vars).map(([name, v]) => {
+    const o = b?.vars[name];
+    const d = diff.has(name);
+    const meaning = v.real !== undefined ? `${v.real.toPrecision(6)}${v.si !== undefined ? ` → ${v.si.toPrecision(6)} ${v.unit ?? ''}` : ''} (Q${v.q})` : '';
+    return h('tr', { class: d ? 'differs' : '' },
+      h('td', {}, h('code', {}, name), v.input ? h('span', { class: 'hint' }, ` ${t('codeInputMark')}`) : null),
+      h('td', { title: v.c_type }, `${v.type}`, h('div', { class: 'ctype' }, `${v.c_type}, ${v.bits} bit`)),
+      h('td', { class: 'r' }, intCell(`code.${a.target}.vars.${name}.value`, v.value, v.hex, d)),
+      b ? h('td', { class: 'r' }, o ? [intCell(`code.${b.target}.vars.${name}.value`, o.value, o.hex, d), h('div', { class: 'ctype' }, `${o.c_type}, ${o.bits} bit`)] : '—') : null,
+      b ? h('td', {}, d ? h('span', { class: 'flag flag-differs' }, t('codeDiffers')) : '') : null,
+      h('td', {}, meaning));
+  });
+  return table([t('codeVariable'), t('codeType'), a.target, ...(b ? [b.target, ''] : []), t('codeMeaning')], rows, 'code-vars');
+}
+
+function update(el: HTMLElement, ctx: PanelContext): void {
+  const s = st();
+  const box = el.querySelector<HTMLElement>('.code-inputs');
+  const boxKey = JSON.stringify([inputs, ctx.report ? prefill(inputs, ctx.report) : null, getLang()]);
+  if (box && box.dataset.key !== boxKey) {
+    box.dataset.key = boxKey;
+    renderInputs(box, ctx);
+  }
+  el.querySelectorAll<HTMLElement>('[data-err-for]').forEach((e) => (e.textContent = errorFor(e.dataset.errFor ?? '')));
+  el.querySelectorAll<HTMLElement>('.code-input').forEach((f) => f.classList.toggle('invalid', !!errorFor(f.querySelector('input')?.name ?? '')));
+  const caretBox = el.querySelector<HTMLElement>('.code-caret-box');
+  caretBox?.replaceChildren(caret(s.code, main && !main.ok && main.field === 'code' ? main : other) ?? '');
+  const out = el.querySelector<HTMLElement>('.code-out');
+  if (!out) return;
+  el.querySelector('.code-trace')?.classList.toggle('stale', !(main?.ok));
+  const a = main?.ok ? main : null;
+  const b = other?.ok ? other : null;
+  const other_err = [main, other].find((r) => r && !r.ok && r.field !== 'code' && !r.field.startsWith('set.')) as TraceErr | undefined;
+  out.querySelector('.code-global-err')?.remove();
+  if (!a) {
+    out.classList.add('stale');
+    if (other_err) out.prepend(h('p', { class: 'err code-global-err' }, `${other_err.field}: ${errText(other_err)}`));
+    return;
+  }
+  out.classList.remove('stale');
+  const diff = b ? differingVars(a.vars, b.vars) : [];
+  out.replaceChildren(
+    b ? h('p', { class: `code-summary${diff.length ? ' differs' : ''}`, 'data-differ': String(diff.length) },
+      diff.length ? t('codeDiffCount', { n: diff.length, m: Object.keys(a.vars).length, a: a.target, b: b.target }) : t('codeSame', { a: a.target, b: b.target })) : '',
+    h('h3', {}, t('codeVars')),
+    varsTable(a, b),
+  );
+  el.querySelector<HTMLElement>('.code-trace')?.replaceChildren(
+    h('h3', {}, t('codeSteps')),
+    stepsTable(a, b),
+    h('p', { class: 'hint' }, t('codeCheck')),
+  );
+}
+
+async function share(root: HTMLElement, embed: boolean): Promise<void> {
+  const url = `${location.origin}${location.pathname}${codeSearch(st(), embed)}${location.hash}`;
+  document.documentElement.dataset.codeLink = url;
+  try {
+    await navigator.clipboard.writeText(url);
+    toast(root, t('linkCopied'));
+  } catch {
+    const box = h('input', { class: 'linkbox', value: url, readonly: true }) as HTMLInputElement;
+    toast(root, t('linkCopyFailed'), box);
+    box.select();
+  }
+}
+
+function loadExamples(ctx: PanelContext): void {
+  if (examples !== null || !ctx.client) return;
+  examples = [];
+  void ctx.client.call('traceExamples', {}).then(({ result }) => {
+    const r = result as unknown as { ok: boolean; examples: Example[]; targets: string[] };
+    examples = r.examples;
+    targets = r.targets;
+    const s = st();
+    if (!s.code) s.code = examples.find((e) => e.id === 'flux')?.code ?? '';
+    const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
+    if (el && lastCtx) codePanel.render(el, lastCtx);
+  }, () => undefined);
+}
+
+export const codePanel: Panel = {
+  id: 'code',
+  title: 'p_code',
+  needsPython: true,
+  render(el, ctx) {
+    lastCtx = ctx;
+    const s = st();
+    loadExamples(ctx);
+    const focused = document.activeElement instanceof HTMLElement && el.contains(document.activeElement) ? (document.activeElement as HTMLInputElement).name : null;
+    const area = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');
+    const sel = area ? [area.selectionStart, area.selectionEnd, area.scrollTop] : null;
+    const zh = getLang() === 'zh';
+    const current = examples?.find((e) => e.code === s.code)?.id ?? '';
+    const select = (name: string, value: string, options: [string, string][], on: (v: string) => void) =>
+      h('select', { name, onchange: (ev: Event) => on((ev.target as HTMLSelectElement).value) },
+        options.map(([v, l]) => h('option', { value: v, selected: v === value }, l)));
+    const changed = () => {
+      compute(ctx);
+      codePanel.render(el, ctx);
+    };
+    el.replaceChildren(
+      h('div', { class: 'code-panel' },
+        h('p', { class: 'hint' }, t('codeIntro')),
+        h('div', { class: 'code-controls' },
+          h('label', {}, `${t('codeExample')} `, select('example', current, [['', t('codeExampleCustom')], ...(examples ?? []).map((e): [string, string] => [e.id, zh ? e.title_zh : e.title])], (v) => {
+            const ex = examples?.find((e) => e.id === v);
+            if (!ex) return;
+            s.code = ex.code;
+            s.set = {};
+            changed();
+          })),
+          h('label', {}, `${t('codeTarget')} `, select('target', s.target, targets.map((x): [string, string] => [x, x]), (v) => {
+            s.target = v;
+            changed();
+          })),
+          h('label', {}, `${t('codeVs')} `, select('vs', s.vs, [['', t('codeNone')], ...targets.map((x): [string, string] => [x, x])], (v) => {
+            s.vs = v;
+            changed();
+          })),
+          h('button', { type: 'button', class: 'code-share', onclick: () => void share(document.getElementById('app') ?? document.body, false) }, t('codeShare'))),
+        h('div', { class: 'code-grid' },
+          h('div', { class: 'code-left' },
+            h('label', { class: 'code-src' }, h('span', { class: 'lbl' }, t('codeSource')),
+              h('textarea', {
+                name: 'code', rows: Math.min(24, Math.max(8, s.code.split('\n').length + 1)), spellcheck: 'false', autocapitalize: 'off', autocomplete: 'off', wrap: 'off',
+                oninput: (ev: Event) => {
+                  s.code = (ev.target as HTMLTextAreaElement).value;
+                  const ex = el.querySelector<HTMLSelectElement>('select[name="example"]');
+                  if (ex) ex.value = examples?.find((e) => e.code === s.code)?.id ?? '';
+                  compute(ctx, 150);
+                },
+              })),
+            h('span', { class: 'err', 'data-err-for': 'code' }),
+            h('div', { class: 'code-caret-box' }),
+            h('h3', {}, t('codeInputs')),
+            h('div', { class: 'code-inputs fields' })),
+          h('div', { class: 'code-out' })),
+        h('div', { class: 'code-trace' })),
+    );
+    const ta = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');
+    if (ta) {
+      ta.value = s.code;
+      if (sel) {
+        ta.setSelectionRange(sel[0], sel[1]);
+        ta.scrollTop = sel[2];
+      }
+    }
+    update(el, ctx);
+    if (focused) el.querySelector<HTMLElement>(`[name="${CSS.escape(focused)}"]`)?.focus();
+    // Before the first report, wait a little: the report goes first, and it fills the inputs.
+    compute(ctx, ctx.report ? 0 : 400);
+  },
+};
