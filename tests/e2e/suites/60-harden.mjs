@@ -402,6 +402,8 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     writeFileSync(index, readFileSync(index, 'utf8').replace('<head>', '<head><meta name="pulab-deploy" content="B">'));
     const swFile = join(dir, 'sw.js');
     writeFileSync(swFile, readFileSync(swFile, 'utf8').replace(/const VERSION = "([^"]+)"/, 'const VERSION = "$1-b"'));
+    // A real build writes their precompressed twins too; here the stale twins go.
+    for (const f of [index, swFile]) for (const z of ['.br', '.gz']) rmSync(f + z, { force: true });
     srv = await serve(dir, '/off/', Number(port));
     await sw.page.reload();
     await ready(sw.page);
