@@ -409,7 +409,8 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     await ready(sw.page);
     assert(await sw.page.$('meta[name="pulab-deploy"][content="B"]') !== null, 'the old index.html was served');
     // The new version precaches the whole build, then deletes the old cache.
-    for (let i = 0; i < 240 && (await cached()).keys.length !== 1; i++) await sw.page.waitForTimeout(500);
+    const onlyNew = (keys) => keys.length === 1 && keys[0].endsWith('-b');
+    for (let i = 0; i < 240 && !onlyNew((await cached()).keys); i++) await sw.page.waitForTimeout(500);
     const keys = (await cached()).keys;
     assert(keys.length === 1 && keys[0].endsWith('-b'), `old caches kept: ${keys}`);
     noPageErrors(sw.errors);
