@@ -99,7 +99,9 @@ const offOrigin = [];
 const consoleErrors = [];
 /** A page in a fresh browser context (own storage), watched for off-origin requests and console errors. */
 async function newPage(opts = {}) {
-  const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale: opts.locale ?? 'en-US', acceptDownloads: true, ...opts.context });
+  // The offline cache (dist/sw.js) is off unless a suite asks for it (context: { serviceWorkers: 'allow' }):
+  // a Service Worker between the page and the network would change what routing and timings see.
+  const ctx = await browser.newContext({ viewport: { width: 1366, height: 768 }, locale: opts.locale ?? 'en-US', acceptDownloads: true, serviceWorkers: 'block', ...opts.context });
   const page = await ctx.newPage();
   page.on('request', (r) => {
     const u = r.url();

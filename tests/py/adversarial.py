@@ -53,6 +53,10 @@ NUMBER_LITERALS = ["0", "-0", "-0.0", "1e-324", "5e-324", "2.2250738585072014e-3
                    "1000000001", "1e-3", "1e3", "0.5", "100", "200000", "500000", "1e300",
                    "4.9e-324", "123456789012345678901234567890"]
 
+# Simulation lengths: tiny, invalid, or beyond the caps (200 000 / 500 000 periods at Ts = 1e-4 s),
+# never a long valid run (that would only cost time).
+DURATION_LITERALS = ["0", "-0", "-1", "1e-9", "1e-300", "5e-324", "2e-3", "1e-3", "20.0001", "50.0001",
+                     "20000", "1e300", "1e309", "1" + "0" * 308, "9" * 309, "NaN", "Infinity", "1e9"]
 
 def _value(rng: random.Random, depth: int = 0):
     """A random JSON value (as a Python object) of any type."""
@@ -116,16 +120,18 @@ def _mutate(rng: random.Random, inp: dict) -> tuple:
         _get_parent(inp, path)[path[-1]] = _value(rng)
     elif family == 2:  # numeric edge, written as a literal
         marker = f"@@{rng.randrange(10 ** 9)}@@"
-        lits[marker] = rng.choice(NUMBER_LITERALS)
+        lits[marker] = rng.choice(DURATION_LITERALS if path[-1] == "duration_s" else NUMBER_LITERALS)
         _get_parent(inp, path)[path[-1]] = marker
     elif family == 3:  # coherent combinations that reach deeper code
         marker, other = f"@@{rng.randrange(10 ** 9)}@@", f"@@{rng.randrange(10 ** 9)}@@"
         lits[marker], lits[other] = rng.choice(NUMBER_LITERALS), rng.choice(NUMBER_LITERALS)
+        duration = f"@@{rng.randrange(10 ** 9)}@@"
+        lits[duration] = rng.choice(DURATION_LITERALS)
         section, value = rng.choice([
             ("current_loop", {"method": "integers", "pm_kp": marker, "pm_ki": other}),
             ("current_loop", {"method": "manual", "kp": marker, "ki": other}),
             ("conventions", {"base": "custom", "base_voltage_v": marker, "base_current_a": other}),
-            ("sim", {"current": {"duration_s": marker, "step_a": other}, "pll": {"duration_s": marker}}),
+            ("sim", {"current": {"duration_s": duration, "step_a": other}, "pll": {"duration_s": duration}}),
             ("sim", {"pll": {"duration_s": 1e-3, "ramp_hz_per_s": marker, "speed_hz": other}}),
             ("drive", {"udc_v": marker, "ts_s": other}),
         ])

@@ -56,3 +56,35 @@ describe('boot retries', () => {
     await expect(call).resolves.toMatchObject({ result: { ok: true } });
   });
 });
+
+describe('a lost runtime: a ready worker that stops answering', () => {
+  it('a call unanswered for lostAfterMs fails the client with lost = true', async () => {
+    vi.useFakeTimers();
+    const w = fakeWorker(0); // ready, then silent: calls are never answered
+    let fatal = '';
+    const c = new PulabClient(w, { onFatal: (m) => (fatal = m) });
+    c.init('x/');
+    await vi.runAllTimersAsync();
+    expect(c.ready).toBe(true);
+    const call = c.call('report', {}, 'report', 15_000);
+    const settled = expect(call).rejects.toThrow(/did not answer for 15 s/);
+    await vi.advanceTimersByTimeAsync(15_000);
+    await settled;
+    expect([c.lost, fatal]).toEqual([true, 'Python did not answer for 15 s']);
+  });
+  it('an answered call leaves the client alone', async () => {
+    vi.useFakeTimers();
+    const w = fakeWorker(0);
+    const post = w.postMessage.bind(w);
+    w.postMessage = (m: MainToWorker) => {
+      post(m);
+      if (m.type === 'call') queueMicrotask(() => w.onmessage?.({ data: { type: 'result', id: m.id, kind: m.kind, result: { ok: true }, ms: 1 } } as MessageEvent));
+    };
+    const c = new PulabClient(w);
+    c.init('x/');
+    await vi.runAllTimersAsync();
+    await c.call('report', {}, 'report', 15_000);
+    await vi.advanceTimersByTimeAsync(20_000);
+    expect([c.lost, c.fatalMessage]).toEqual([false, null]);
+  });
+});

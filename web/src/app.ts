@@ -82,8 +82,14 @@ export class App {
   }
 
   /** Attach to a client that may already be booting (main.ts starts the worker first). */
-  start(client: PulabClient): void {
+  start(client: PulabClient, restart?: (generation: number) => PulabClient): void {
     handleLinks(this.root, this.embed, () => this.renderPanels(['docs']));
+    this.attach(client, restart, 0);
+    this.renderAll();
+  }
+
+  /** Follow `client`; when a ready runtime is lost (PulabClient.lost), start the next generation. */
+  private attach(client: PulabClient, restart: ((generation: number) => PulabClient) | undefined, generation: number): void {
     this.session.client = client;
     const onReady = (ms: number): void => {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
@@ -92,8 +98,14 @@ export class App {
       this.renderPanels(PYTHON_PANELS);
       this.session.schedule(0);
     };
-    this.status.follow(client, onReady);
-    this.renderAll();
+    const onLost = restart
+      ? (message: string) => {
+        document.documentElement.dataset.runtimeRestarts = String(generation + 1);
+        this.attach(restart(generation + 1), restart, generation + 1);
+        this.status.lost(message);
+      }
+      : undefined;
+    this.status.follow(client, onReady, onLost);
     if (client.ready) onReady(client.bootMs);
   }
 

@@ -12,8 +12,8 @@ window.addEventListener('vite:preloadError', (ev) => {
 
 void import('./app').then(({ App }) => {
   const app = new App(document.getElementById('app')!);
-  app.session.simWorkerFactory = () => startRuntime('sim');
-  app.start(client);
+  app.session.simWorkerFactory = (generation) => startRuntime('sim', generation);
+  app.start(client, (generation) => startRuntime('report', generation));
 }).catch((e: unknown) => {
   // The page's own code did not load (offline, blocked, removed by a new deployment): say so in
   // both languages (i18n is in that code) and offer the one thing that helps.

@@ -21,6 +21,9 @@ export interface RpcEvents {
   onRetry?(message: string, attempt: number, of: number, delayMs: number): void;
 }
 
+/** How often a pending call checks that its worker is still alive. */
+const LIVENESS_MS = 1000;
+
 /** Waits before each new boot attempt after a failed one (a network hiccup, a server restart). */
 export const BOOT_RETRY_MS = [1000, 4000, 12000];
 
@@ -46,7 +49,11 @@ export class PulabClient {
   progress: { stage: BootStage; fraction: number } = { stage: 'runtime', fraction: 0 };
   fatalMessage: string | null = null;
 
-  constructor(private worker: WorkerLike, public events: RpcEvents = {}) {
+  /**
+   * `aliveLock`: the Web Lock the worker holds for its lifetime (worker.ts). While a call is
+   * pending, the lock is probed every LIVENESS_MS; if the page can take it, the worker is gone.
+   */
+  constructor(private worker: WorkerLike, public events: RpcEvents = {}, private aliveLock?: string) {
     worker.onmessage = (ev) => this.receive(ev.data);
     worker.onerror = (ev) => {
       ev.preventDefault?.(); // handled here: reported in the status line, not as an uncaught error
@@ -94,13 +101,51 @@ export class PulabClient {
     }, this.idleMs);
   }
 
-  call(kind: ApiKind, payload: unknown, channel?: string): Promise<CallResult> {
+  /**
+   * Call pulab.api in the worker. `lostAfterMs`: a ready runtime that has not answered by then is
+   * lost (crashed, killed or hung): the client fails with a message and `lost` set, so the page
+   * can start a new runtime (a report takes milliseconds, so a short limit is safe for it).
+   */
+  call(kind: ApiKind, payload: unknown, channel?: string, lostAfterMs?: number): Promise<CallResult> {
     if (this.fatal) return Promise.reject(new Error(this.fatal));
     const id = this.next++;
     return new Promise<CallResult>((resolve, reject) => {
       this.pending.set(id, { resolve, reject });
       this.worker.postMessage({ type: 'call', id, kind, payload: JSON.stringify(payload), channel });
+      if (lostAfterMs !== undefined && this.ready)
+        setTimeout(() => {
+          if (this.pending.has(id)) this.markLost(`Python did not answer for ${Math.round(lostAfterMs / 1000)} s`);
+        }, lostAfterMs);
+      if (this.ready) this.watchLiveness();
     });
+  }
+
+  /** The runtime was ready and then died or stopped answering (see `call`). */
+  lost = false;
+  private liveness: ReturnType<typeof setInterval> | undefined;
+
+  private markLost(message: string): void {
+    this.lost = true;
+    this.fail(message);
+  }
+
+  /** Probe the worker's lock while calls are pending (a dead worker never answers them). */
+  private watchLiveness(): void {
+    const locks = typeof navigator === 'undefined' ? undefined : (navigator as Navigator & { locks?: LockManager }).locks;
+    if (!this.aliveLock || !locks || this.liveness !== undefined) return;
+    const name = this.aliveLock;
+    this.liveness = setInterval(() => {
+      if (!this.pending.size || this.fatal) {
+        clearInterval(this.liveness);
+        this.liveness = undefined;
+        return;
+      }
+      void locks.request(name, { ifAvailable: true }, (lock) => lock !== null)
+        .then((free) => {
+          if (free && this.ready) this.markLost('the Python worker stopped');
+        })
+        .catch(() => undefined);
+    }, LIVENESS_MS);
   }
 
   private fail(message: string): void {
@@ -118,6 +163,8 @@ export class PulabClient {
     if (!isWorkerToMain(m)) return;
     switch (m.type) {
       case 'progress':
+        // A failed boot's loader may still report progress in the background: the failure stands.
+        if (this.fatal) break;
         this.progress = { stage: m.stage, fraction: m.fraction };
         this.stageAt[m.stage] ??= performance.now();
         if (!this.ready) this.armWatchdog();

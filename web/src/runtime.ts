@@ -10,9 +10,9 @@ export type RuntimeKind = 'report' | 'sim';
 /** Python's start-up may take this long without any progress before it counts as failed. */
 const BOOT_IDLE_MS = 60_000;
 
-function sharedWorker(kind: RuntimeKind): WorkerLike {
+function sharedWorker(name: string): WorkerLike {
   // The literal `new SharedWorker(new URL(…))` lets Vite bundle the worker script.
-  const sw = new SharedWorker(new URL('./worker.ts', import.meta.url), { type: 'module', name: `pulab-${kind}` });
+  const sw = new SharedWorker(new URL('./worker.ts', import.meta.url), { type: 'module', name });
   const port = sw.port;
   return {
     postMessage: (m: MainToWorker) => port.postMessage(m),
@@ -31,14 +31,19 @@ function sharedWorker(kind: RuntimeKind): WorkerLike {
   };
 }
 
-function dedicatedWorker(kind: RuntimeKind): WorkerLike {
-  return new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name: `pulab-${kind}` }) as unknown as WorkerLike;
+function dedicatedWorker(name: string): WorkerLike {
+  return new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name }) as unknown as WorkerLike;
 }
 
-export function startRuntime(kind: RuntimeKind): PulabClient {
+/**
+ * A client of the `kind` runtime. `generation` > 0 after a lost runtime: a new name, so a hung
+ * SharedWorker (which the page cannot terminate) is not joined again.
+ */
+export function startRuntime(kind: RuntimeKind, generation = 0): PulabClient {
   const shared = typeof SharedWorker === 'function';
+  const name = generation ? `pulab-${kind}-${generation}` : `pulab-${kind}`;
   document.documentElement.dataset.runtime = shared ? 'shared' : 'dedicated';
-  const client = new PulabClient(shared ? sharedWorker(kind) : dedicatedWorker(kind));
+  const client = new PulabClient(shared ? sharedWorker(name) : dedicatedWorker(name), {}, `pulab-alive-${name}`);
   client.init(new URL('pyodide/', document.baseURI).href, BOOT_IDLE_MS);
   return client;
 }

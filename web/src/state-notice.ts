@@ -10,7 +10,8 @@ import type { StateProblem } from './state-check';
 const FIELD_PATHS = new Set([...ALL_FIELDS.map((f) => f.path), ...SECTIONS.map((s) => s.id)]);
 
 function reason(p: StateProblem): string {
-  return t(`state_reason_${p.reason}`, { got: p.got });
+  const got = p.got === 'an object' ? t('state_got_object') : p.got === 'a list' ? t('state_got_list') : p.got;
+  return t(`state_reason_${p.reason}`, { got });
 }
 
 /** Notes for fields and sections of the form: path → "from the link: wrong type …; the default is used". */

@@ -114,6 +114,25 @@ export function describeError(e: unknown): string {
   return String(e);
 }
 
+/** Files every boot needs; Pyodide may wait forever on a missing wasm instead of failing. */
+export const ESSENTIAL_FILES = ['pyodide.asm.mjs', 'pyodide.asm.wasm'];
+
+/**
+ * Rejects as soon as an essential runtime file answers with an HTTP error (a HEAD request each),
+ * naming it; otherwise never settles. A network error proves nothing (offline with the files
+ * cached) and is ignored.
+ */
+export function missingRuntimeFile(indexURL: string, fetchFn: typeof fetch = fetch): Promise<never> {
+  return new Promise<never>((_, reject) => {
+    for (const f of ESSENTIAL_FILES) {
+      const url = `${indexURL}${f}`;
+      fetchFn(url, { method: 'HEAD' }).then((r) => {
+        if (r.status >= 400) reject(new Error(`HTTP ${r.status} for ${url}`));
+      }, () => undefined);
+    }
+  });
+}
+
 export interface WorkerLogic {
   onMessage(msg: MainToWorker): void;
   /** Resolves when booted (for tests); rejects on a boot failure. */
@@ -162,7 +181,9 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
     };
     try {
       progress('runtime', 0.05);
-      const loaded = await Promise.race([load(indexURL, progress), watchdog.expired]);
+      const missing = typeof fetch === 'function' ? missingRuntimeFile(indexURL) : new Promise<never>(() => undefined);
+      missing.catch(() => undefined);
+      const loaded = await Promise.race([load(indexURL, progress), watchdog.expired, missing]);
       watchdog.stop();
       const { py, from, note } = 'py' in loaded ? loaded : { py: loaded, from: undefined, note: undefined };
       progress('files', 0.8);

@@ -55,6 +55,10 @@ function serve(port: Port): void {
   port.onmessage = (ev) => onMessage(ev.data);
 }
 
+// Alive while this lock is held: the browser releases it when the worker dies (crash, killed),
+// which a page can see even while Python is busy (rpc.ts, PulabClient's liveness check).
+void (navigator as Navigator & { locks?: LockManager }).locks?.request(`pulab-alive-${(self as unknown as { name: string }).name}`, () => new Promise<never>(() => undefined));
+
 const scope = self as unknown as Port & { onconnect?: ((ev: MessageEvent) => void) | null };
 if ('onconnect' in scope) scope.onconnect = (ev) => serve(ev.ports[0] as unknown as Port);
 else serve(scope);

@@ -3,10 +3,11 @@
 // an unhandled promise rejection). Fault pages break requests on purpose, so they use their own
 // browser contexts (not ctx.newPage, whose console-error check would count the failed loads).
 //
-//   node tests/e2e/run.mjs harden          (E2E_NO_BUILD=1 to reuse dist/)
+//   node tests/e2e/run.mjs harden          (E2E_NO_BUILD=1 to reuse dist/; HARDEN_ONLY=regex for some)
 import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
+import { createServer, request } from 'node:http';
 import { serve } from '../serve.mjs';
 
 /** Linked states (#in=…): [name, JSON text, a named path, a kept [path, value] or null]. Mirrors tests/web/state-check.test.ts. */
@@ -39,11 +40,14 @@ const HOSTILE_STORAGE = [
   ['units "null"', 'pulab.units.v1', 'null'],
   ['units with an object unit', 'pulab.units.v1', '{"motor.ld_h":{"toString":1}}'],
   ['input "null"', 'pulab.input.v1', 'null'],
-  ['input with a valueOf object', 'pulab.input.v1', '{"motor":{"rs_ohm":{"valueOf":1}}}'],
+  ['input with a valueOf object', 'pulab.input.v1', '{"pll":{"bandwidth_hz":{"valueOf":1}}}'],
   ['language junk', 'pulab.lang', '{"x":1}'],
 ];
 
-export default async function harden({ check, assert, browser, subSrv, ready, golden, ROOT }) {
+export default async function harden({ check: runCheck, assert, browser, subSrv, ready, waitValue, golden, ROOT, timings }) {
+  // HARDEN_ONLY=regex: only the scenarios whose name matches (to rerun a few after a fix).
+  const only = process.env.HARDEN_ONLY ? new RegExp(process.env.HARDEN_ONLY) : null;
+  const check = (name, fn) => (only && !only.test(name) ? undefined : runCheck(name, fn));
   const seed = golden('01_seed_motor.json').input;
   /** A fresh context; every pageerror (uncaught error, unhandled rejection) is recorded. */
   async function open(opts = {}) {
@@ -102,7 +106,9 @@ export default async function harden({ check, assert, browser, subSrv, ready, go
       const { context, page, errors } = await open();
       await page.goto(subSrv.url);
       await ready(page);
-      await page.evaluate(([k, v]) => localStorage.setItem(k, v), [key, value]);
+      // A stored input is the whole state too: a hostile field goes into the seed motor's input.
+      const stored = key === 'pulab.input.v1' && value.startsWith('{') ? JSON.stringify(merge(seed, JSON.parse(value))) : value;
+      await page.evaluate(([k, v]) => localStorage.setItem(k, v), [key, stored]);
       for (let i = 0; i < 2; i++) {
         await page.reload();
         await ready(page);
@@ -116,110 +122,252 @@ export default async function harden({ check, assert, browser, subSrv, ready, go
   console.log(`      hostile states passing: ${hostilePass} of ${HOSTILE_LINKS.length + HOSTILE_STORAGE.length}`);
 
   // ---- faults -------------------------------------------------------------------------------
+  // Python runs in a SharedWorker, whose requests Playwright's routing does not see: faults are
+  // injected by a proxy in front of the test server instead (per path: 404, abort, fail once,
+  // delay, a byte rate), one proxy (one origin, so its own SharedWorkers) per scenario.
   const faults = [];
   const fault = (name, fn) => check(`fault: ${name}`, async () => {
     await fn();
     faults.push(name);
   });
+  const live = (page, timeout = 120_000) => page.waitForSelector('html[data-ready="1"] [data-key="vendor.Rpm.value"][data-value]', { timeout });
   const statusText = (page) => text(page, '.status');
-  /** Boot fails on a missing runtime file: a message naming it, the form usable, a reload recovers. */
-  for (const file of ['python_stdlib.zip', 'pyodide.asm.wasm', 'pyodide-lock.json', 'pyodide.asm.mjs']) {
-    await fault(`${file} missing → message, usable form; reload after the fix → numbers`, async () => {
+  const upstream = new URL(subSrv.url);
+
+  /** Faults by the file's path: `(path) => action | undefined`; `rules` may change at run time. */
+  async function faultProxy(rules) {
+    const server = createServer((req, res) => {
+      const rule = rules.find((r) => r.match.test(req.url) && !r.spent);
+      if (rule?.once) rule.spent = true;
+      const act = rule?.action;
+      if (act === '404') return res.writeHead(404, { 'Content-Type': 'text/plain' }).end('not found');
+      if (act === 'abort') return req.socket.destroy();
+      const forward = () => {
+        const up = request({ host: upstream.hostname, port: upstream.port, path: req.url, method: req.method, headers: req.headers }, (ur) => {
+          res.writeHead(ur.statusCode ?? 502, ur.headers);
+          if (!act?.rate) return ur.pipe(res);
+          // A slow network: at most `rate` bytes a second, in 50 ms slices.
+          ur.pause();
+          const slice = Math.max(1, Math.round(act.rate / 20));
+          let buf = Buffer.alloc(0);
+          let ended = false;
+          ur.on('data', (c) => (buf = Buffer.concat([buf, c])));
+          ur.on('end', () => (ended = true));
+          ur.resume();
+          const tick = setInterval(() => {
+            if (buf.length) {
+              res.write(buf.subarray(0, slice));
+              buf = buf.subarray(slice);
+            } else if (ended) {
+              clearInterval(tick);
+              res.end();
+            }
+          }, 50);
+          res.on('close', () => clearInterval(tick));
+        });
+        up.on('error', () => res.destroy());
+        req.pipe(up);
+      };
+      if (act?.delayMs) setTimeout(forward, act.delayMs);
+      else forward();
+    });
+    await new Promise((r) => server.listen(0, '127.0.0.1', r));
+    return { url: `http://127.0.0.1:${server.address().port}${upstream.pathname}`, close: () => { server.closeAllConnections?.(); server.close(); } };
+  }
+
+  /** A missing runtime file: the page either does not need it, or says what failed; after the fix, live numbers. */
+  for (const file of ['python_stdlib.zip', 'pyodide.asm.wasm', 'pyodide-lock.json', 'pyodide.asm.mjs', 'snapshot-']) {
+    await fault(`${file} missing → works or a clear message, usable form; reload after the fix → live numbers`, async () => {
+      const rules = [{ match: new RegExp(`/pyodide/${file.replace('.', '\\.')}`), action: '404' }];
+      const px = await faultProxy(rules);
       const { context, page, errors } = await open();
-      await context.route(`**/pyodide/${file}`, (r) => r.fulfill({ status: 404, body: 'not found' }));
-      await page.goto(subSrv.url);
-      await page.waitForSelector('.status .status-fatal', { timeout: 90_000 });
-      const msg = await statusText(page);
-      assert(!/\[object Object\]/.test(msg), `unclear message: ${msg}`);
+      await page.goto(px.url);
+      const outcome = await Promise.race([
+        page.waitForSelector('.status .status-fatal', { timeout: 150_000 }).then(() => 'message'),
+        live(page, 150_000).then(() => 'works'),
+      ]);
+      if (outcome === 'message') {
+        const msg = await statusText(page);
+        assert(!/\[object Object\]/.test(msg) && /reload/i.test(msg), `unclear message: ${msg}`);
+        await formUsable(page);
+        rules.length = 0;
+        await page.click('.status .status-reload');
+      }
+      await live(page);
       await formUsable(page);
-      await context.unroute(`**/pyodide/${file}`);
-      await page.reload();
-      await ready(page);
+      console.log(`      ${file} missing: ${outcome}`);
       noPageErrors(errors);
       await context.close();
+      px.close();
     });
   }
-  await fault('worker chunk blocked → message, usable form; reload → numbers', async () => {
+  await fault('worker script blocked → message, usable form; reload after the fix → live numbers', async () => {
+    const rules = [{ match: /\/assets\/worker-[^/]*\.js/, action: 'abort' }];
+    const px = await faultProxy(rules);
     const { context, page, errors } = await open();
-    await context.route('**/assets/worker-*.js', (r) => r.abort());
-    await page.goto(subSrv.url);
+    await page.goto(px.url);
     await page.waitForSelector('.status .status-fatal', { timeout: 90_000 });
     await formUsable(page);
-    await context.unroute('**/assets/worker-*.js');
-    await page.reload();
-    await ready(page);
+    rules.length = 0;
+    await page.click('.status .status-reload');
+    await live(page);
     noPageErrors(errors);
     await context.close();
+    px.close();
   });
-  await fault('python_stdlib.zip fails once → the boot retries by itself', async () => {
+  await fault('python_stdlib.zip and the snapshot fail once → the boot retries by itself (no reload)', async () => {
+    const px = await faultProxy([{ match: /\/pyodide\/python_stdlib\.zip/, action: 'abort', once: true }, { match: /\/pyodide\/snapshot-/, action: 'abort', once: true }]);
     const { context, page, errors } = await open();
-    let failed = 0;
-    await context.route('**/pyodide/python_stdlib.zip', (r) => (failed++ === 0 ? r.abort() : r.continue()));
-    await page.goto(subSrv.url);
-    await ready(page);
-    noPageErrors(errors);
-    await context.close();
-  });
-  await fault('plot library blocked → message and retry at the plot; retry after the fix → plot', async () => {
-    const { context, page, errors } = await open();
-    await context.route('**/assets/plotly*.js', (r) => r.abort());
-    await page.goto(subSrv.url);
-    await ready(page);
-    await page.$eval('#panel-current', (e) => e.scrollIntoView());
-    await page.waitForSelector('.panel-current .plot-error button.plot-retry', { timeout: 30_000 });
+    await page.goto(px.url);
+    await live(page);
     await formUsable(page);
-    await context.unroute('**/assets/plotly*.js');
-    await page.click('.panel-current .plot-retry');
-    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 30_000 });
     noPageErrors(errors);
     await context.close();
+    px.close();
+  });
+  for (const rate of [200_000, 50_000]) {
+    await fault(`slow network (${rate / 1000} KB/s for Python's files) → progress, then live numbers; no timeout`, async () => {
+      const px = await faultProxy([{ match: /\/pyodide\//, action: { rate } }]);
+      const { context, page, errors } = await open();
+      const t0 = Date.now();
+      await page.goto(px.url);
+      await formUsable(page);
+      await live(page, 600_000);
+      console.log(`      ${rate / 1000} KB/s: live numbers after ${((Date.now() - t0) / 1000).toFixed(0)} s`);
+      assert(!(await page.$('.status .status-fatal')), 'boot failed');
+      noPageErrors(errors);
+      await context.close();
+      px.close();
+    });
+  }
+  await fault('plot library blocked → message and retry at the plot; retry after the fix → plot', async () => {
+    const rules = [{ match: /\/assets\/plotly[^/]*\.js/, action: 'abort' }];
+    const px = await faultProxy(rules);
+    const { context, page, errors } = await open();
+    await page.goto(px.url);
+    await live(page);
+    await page.$eval('#panel-current', (e) => e.scrollIntoView());
+    await page.waitForSelector('.panel-current .plot-error button.plot-retry', { timeout: 60_000 });
+    await formUsable(page);
+    rules.length = 0;
+    await page.click('.panel-current .plot-retry');
+    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 60_000 });
+    noPageErrors(errors);
+    await context.close();
+    px.close();
   });
   await fault('plot library slow (3 s) → loading, then the plot, no error', async () => {
+    const px = await faultProxy([{ match: /\/assets\/plotly[^/]*\.js/, action: { delayMs: 3000 } }]);
     const { context, page, errors } = await open();
-    await context.route('**/assets/plotly*.js', async (r) => {
-      await new Promise((res) => setTimeout(res, 3000));
-      await r.continue();
-    });
-    await page.goto(subSrv.url);
-    await ready(page);
+    await page.goto(px.url);
+    await live(page);
     await page.$eval('#panel-current', (e) => e.scrollIntoView());
-    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 30_000 });
+    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 60_000 });
+    noPageErrors(errors);
+    await context.close();
+    px.close();
+  });
+  await fault('offline right after the first numbers → the plots say so with a retry; online again → plots', async () => {
+    const rules = [];
+    const px = await faultProxy(rules);
+    const { context, page, errors } = await open();
+    await page.goto(px.url);
+    await live(page);
+    rules.push({ match: /./, action: 'abort' }); // the simulation runtime starts after the first report: its boot fails
+    await context.setOffline(true);
+    await page.$eval('#panel-current', (e) => e.scrollIntoView());
+    await page.fill('.inputs input[name="motor.rs_ohm"]', '1.6');
+    await page.waitForSelector('.panel-current .sim-error button.sim-retry', { timeout: 150_000 });
+    await formUsable(page);
+    rules.length = 0;
+    await context.setOffline(false); // 'online' → retried by itself
+    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 120_000 });
+    noPageErrors(errors);
+    await context.close();
+    px.close();
+  });
+  /** Kill a runtime (as a crash would): its SharedWorker target closed through CDP. */
+  async function killRuntime(page, kind) {
+    // Shared workers of this page's browser context only (others may still be winding down).
+    const own = await page.context().newCDPSession(page);
+    const { targetInfo } = await own.send('Target.getTargetInfo');
+    await own.detach();
+    const cdp = await browser.newBrowserCDPSession();
+    const { targetInfos } = await cdp.send('Target.getTargets');
+    const t = targetInfos.find((x) => x.type === 'shared_worker' && x.title === `pulab-${kind}` && x.browserContextId === targetInfo.browserContextId);
+    assert(t, `no pulab-${kind} shared worker`);
+    await cdp.send('Target.closeTarget', { targetId: t.targetId });
+    await cdp.detach();
+  }
+  await fault('report runtime killed → detected, a message, restarted; the next input gets live numbers', async () => {
+    const { context, page, errors } = await open();
+    await page.goto(subSrv.url);
+    await live(page);
+    await killRuntime(page, 'report');
+    const t0 = Date.now();
+    await page.fill('.inputs input[name="motor.rs_ohm"]', '1.7');
+    await page.waitForFunction(() => /restart/i.test(document.querySelector('.status')?.textContent ?? ''), null, { timeout: 30_000 });
+    await page.waitForFunction(() => document.documentElement.dataset.runtimeRestarts === '1' && document.documentElement.dataset.ready === '1', null, { timeout: 120_000 });
+    await waitValue(page, 'pu.Rs', 0.229242018648822 * 1.7 / 1.5, 1e-9, 60_000); // Rs/Z_b of the new input
+    console.log(`      report runtime killed: numbers again after ${Date.now() - t0} ms`);
     noPageErrors(errors);
     await context.close();
   });
-  await fault('offline right after the first numbers → the plots say so with a retry; online again → plots', async () => {
+  await fault('simulation runtime killed → message and retry at the plot; retry → plot', async () => {
     const { context, page, errors } = await open();
     await page.goto(subSrv.url);
-    await ready(page);
-    await context.setOffline(true); // the simulation worker starts after the first report: its boot fails
+    await live(page);
     await page.$eval('#panel-current', (e) => e.scrollIntoView());
-    await page.waitForSelector('.panel-current .sim-error button.sim-retry', { timeout: 90_000 });
+    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 120_000 });
+    await killRuntime(page, 'sim');
+    await page.fill('.inputs input[name="motor.rs_ohm"]', '1.8');
+    await page.waitForSelector('.panel-current .sim-error button.sim-retry', { timeout: 60_000 });
     await formUsable(page);
-    await context.setOffline(false); // 'online' → retried by itself
-    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 90_000 });
+    await page.click('.panel-current .sim-retry');
+    await page.waitForSelector('.panel-current .plot-host .main-svg', { timeout: 120_000 });
+    noPageErrors(errors);
+    await context.close();
+  });
+  await check('measured: a new input while the worst allowed simulation runs → its simulation result arrives (latency printed)', async () => {
+    const { context, page, errors } = await open();
+    const worst = merge(seed, { current_loop: { method: 'integers', pm_kp: 2 ** 31 - 1, pm_ki: 2 ** 31 - 1 },
+      sim: { current: { duration_s: 200000 * 1e-4 }, pll: { duration_s: 500000 * 1e-4 } } });
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(worst))}`);
+    await live(page);
+    await page.waitForFunction(() => document.documentElement.dataset.simPosted === '1', null, { timeout: 60_000 });
+    await page.waitForTimeout(1000); // the worst simulation is running now
+    const t0 = Date.now();
+    await page.selectOption('select[name="preset"]', 'seed');
+    await page.waitForFunction(() => Number(document.documentElement.dataset.simDone ?? 0) >= 2, null, { timeout: 300_000 });
+    const ms = Date.now() - t0;
+    timings.new_sim_behind_worst_ms = ms;
+    console.log(`      new input during the worst simulation: its simulation result after ${ms} ms (400 ms of it is the typing pause)`);
     noPageErrors(errors);
     await context.close();
   });
   await fault('page code chunk blocked → a message and a reload button; reload after the fix → numbers', async () => {
+    const rules = [{ match: /\/assets\/app-[^/]*\.js/, action: 'abort' }];
+    const px = await faultProxy(rules);
     const { context, page, errors } = await open();
-    await context.route('**/assets/app-*.js', (r) => r.abort());
-    await page.goto(subSrv.url);
+    await page.goto(px.url);
     await page.waitForSelector('#app .load-failed button', { timeout: 30_000 });
-    await context.unroute('**/assets/app-*.js');
+    rules.length = 0;
     await page.click('#app .load-failed button');
-    await ready(page);
+    await live(page);
     await formUsable(page);
     noPageErrors(errors);
     await context.close();
+    px.close();
   });
   await fault('stylesheet and KaTeX fonts blocked → numbers and form still work', async () => {
+    const px = await faultProxy([{ match: /\/assets\/[^/]*\.(css|woff2?|ttf)/, action: 'abort' }]);
     const { context, page, errors } = await open();
-    await context.route(/\/assets\/.*\.(css|woff2?|ttf)$/, (r) => r.abort());
-    await page.goto(subSrv.url);
-    await ready(page);
+    await page.goto(px.url);
+    await live(page);
     await formUsable(page);
     noPageErrors(errors);
     await context.close();
+    px.close();
   });
 
   // Offline after one visit, and no stale code after a new deployment: a copy of dist/ that this
@@ -254,11 +402,15 @@ export default async function harden({ check, assert, browser, subSrv, ready, go
     writeFileSync(index, readFileSync(index, 'utf8').replace('<head>', '<head><meta name="pulab-deploy" content="B">'));
     const swFile = join(dir, 'sw.js');
     writeFileSync(swFile, readFileSync(swFile, 'utf8').replace(/const VERSION = "([^"]+)"/, 'const VERSION = "$1-b"'));
+    // A real build writes their precompressed twins too; here the stale twins go.
+    for (const f of [index, swFile]) for (const z of ['.br', '.gz']) rmSync(f + z, { force: true });
     srv = await serve(dir, '/off/', Number(port));
     await sw.page.reload();
     await ready(sw.page);
     assert(await sw.page.$('meta[name="pulab-deploy"][content="B"]') !== null, 'the old index.html was served');
-    for (let i = 0; i < 60 && (await cached()).keys.length !== 1; i++) await sw.page.waitForTimeout(500);
+    // The new version precaches the whole build, then deletes the old cache.
+    const onlyNew = (keys) => keys.length === 1 && keys[0].endsWith('-b');
+    for (let i = 0; i < 240 && !onlyNew((await cached()).keys); i++) await sw.page.waitForTimeout(500);
     const keys = (await cached()).keys;
     assert(keys.length === 1 && keys[0].endsWith('-b'), `old caches kept: ${keys}`);
     noPageErrors(sw.errors);

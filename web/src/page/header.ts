@@ -6,6 +6,7 @@ import { errText, getLang, t, type Lang } from '../i18n';
 import { encodeHash, reportInput, simInput } from '../state';
 import type { ComputeSession } from './session';
 import { toast } from './toast';
+import type { ApiResult } from '../protocol';
 
 export function langSwitch(onSwitch: (l: Lang) => void): HTMLElement {
   return h('div', { class: 'lang', role: 'group' },
@@ -28,7 +29,7 @@ async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExpo
   if (!session.client?.ready) return;
   const eff = effectiveInput(session.input);
   const c = kind === 'header' ? session.client : session.simWorker() ?? session.client;
-  let result;
+  let result: ApiResult;
   try {
     ({ result } = await c.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind }));
   } catch (e) {

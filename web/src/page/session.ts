@@ -24,6 +24,11 @@ export interface SessionEvents {
   busy(): void;
 }
 
+/** A report takes milliseconds: a ready runtime silent this long is lost and gets replaced. */
+const REPORT_LOST_MS = 15_000;
+/** The worst allowed simulation takes ≈ 10 s in CPython; Pyodide is a few times slower. */
+const SIM_LOST_MS = 120_000;
+
 /** Simulations wait for a pause in typing: they are heavier and only feed the plots. */
 const SIM_PAUSE_MS = 400;
 
@@ -55,7 +60,9 @@ export class ComputeSession {
   /** Simulations run in a second worker (started after the first report), so a running
    * simulation never delays the numbers. */
   simClient: PulabClient | null = null;
-  simWorkerFactory: (() => PulabClient) | null = null;
+  simWorkerFactory: ((generation: number) => PulabClient) | null = null;
+  /** Bumped when the simulation runtime died: the next one gets a new name (runtime.ts). */
+  private simGeneration = 0;
   /** Time of the last input event (for the input → numbers latency in dataset.updateMs). */
   private inputAt = 0;
   private timer: ReturnType<typeof setTimeout> | undefined;
@@ -72,7 +79,10 @@ export class ComputeSession {
 
   /** Run the simulation again, in a new worker if the old one died. */
   retrySim(): void {
-    if (this.simClient?.fatalMessage) this.simClient = null;
+    if (this.simClient?.fatalMessage) {
+      this.simClient = null;
+      this.simGeneration++;
+    }
     this.simWorkerFailed = false;
     this.simError = null;
     this.events.sim();
@@ -174,7 +184,7 @@ export class ComputeSession {
     root.dataset.busy = '1';
     try {
       const t0 = performance.now();
-      const { result, ms } = await this.client.call('report', JSON.parse(key), 'report');
+      const { result, ms } = await this.client.call('report', JSON.parse(key), 'report', REPORT_LOST_MS);
       this.lastMs = ms;
       if (result.ok) {
         const same = this.reportFor === key && this.source !== 'live';
@@ -218,7 +228,7 @@ export class ComputeSession {
 
   /** The worker for simulations and CSV exports (started on first use). */
   simWorker(): PulabClient | null {
-    if (!this.simClient && this.simWorkerFactory) this.simClient = this.simWorkerFactory();
+    if (!this.simClient && this.simWorkerFactory) this.simClient = this.simWorkerFactory(this.simGeneration);
     return this.simClient ?? this.client;
   }
 
@@ -234,7 +244,12 @@ export class ComputeSession {
     const sc = this.simWorker();
     if (!sc) return;
     try {
-      const { result } = await sc.call('report', simInput(eff), 'sim');
+      // <html data-sim-posted/-done>: counters of simulation requests and results (the fault suite
+      // measures how long a new input waits behind a running simulation).
+      const root = document.documentElement;
+      root.dataset.simPosted = String(Number(root.dataset.simPosted ?? 0) + 1);
+      const { result } = await sc.call('report', simInput(eff), 'sim', SIM_LOST_MS);
+      root.dataset.simDone = String(Number(root.dataset.simDone ?? 0) + 1);
       if (result.ok) {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';

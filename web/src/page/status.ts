@@ -10,6 +10,8 @@ export interface BootState {
   failed?: string;
   /** A failed boot about to be tried again. */
   retry?: { message: string; attempt: number; of: number; seconds: number };
+  /** Python was lost after it was ready, and is starting again. */
+  lostMessage?: string;
 }
 
 export class StatusLine {
@@ -19,13 +21,13 @@ export class StatusLine {
   constructor(private root: HTMLElement, private session: { lastMs: number }) {}
 
   /** Follow a client that may already be booting; `onReady` runs once it is (or now, if it is). */
-  follow(client: PulabClient, onReady: (bootMs: number) => void): void {
+  follow(client: PulabClient, onReady: (bootMs: number) => void, onLost?: (message: string) => void): void {
     this.client = client;
     for (const [stage, at] of Object.entries(client.stageAt)) mark(`boot-${stage}`, at);
     client.events = {
       onProgress: (stage, fraction) => {
         mark(`boot-${stage}`);
-        this.boot = { stage: `boot_${stage}` as Key, fraction };
+        this.boot = { stage: `boot_${stage}` as Key, fraction, lostMessage: this.boot.lostMessage };
         this.render();
       },
       onReady: (ms) => {
@@ -33,6 +35,7 @@ export class StatusLine {
         onReady(ms);
       },
       onFatal: (message) => {
+        if (client.lost && onLost) return onLost(message);
         this.boot = { ...this.boot, failed: message, retry: undefined };
         this.render();
       },
@@ -44,6 +47,12 @@ export class StatusLine {
     this.boot = { stage: `boot_${client.progress.stage}` as Key, fraction: client.progress.fraction, failed: client.fatalMessage ?? undefined };
   }
 
+  /** A lost runtime was replaced: say so until the new one reports progress. */
+  lost(message: string): void {
+    this.boot = { stage: 'boot_runtime', fraction: 0, lostMessage: message };
+    this.render();
+  }
+
   render(): void {
     const el = this.root.querySelector('.status');
     if (!el) return;
@@ -53,6 +62,8 @@ export class StatusLine {
     if (b.failed) {
       el.replaceChildren(h('span', { class: 'status-fatal', role: 'alert' }, `${t('bootFailed')}: ${b.failed}. ${t('fatalHelp')}`),
         h('button', { type: 'button', class: 'status-reload', onclick: () => location.reload() }, t('reload')));
+    } else if (!ready && b.lostMessage) {
+      el.replaceChildren(h('span', { class: 'status-retry', role: 'status' }, t('runtimeLost', { m: b.lostMessage })), h('progress', { max: 1, value: b.fraction }));
     } else if (!ready && b.retry) {
       el.replaceChildren(h('span', { class: 'status-retry', role: 'status' }, t('bootRetry', { m: b.retry.message, s: b.retry.seconds, n: b.retry.attempt, of: b.retry.of })));
     } else if (!ready) {
