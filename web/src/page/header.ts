@@ -5,7 +5,7 @@ import { effectiveInput } from '../fields';
 import { errText, getLang, t, type Lang } from '../i18n';
 import { encodeHash, reportInput, simInput } from '../state';
 import type { ComputeSession } from './session';
-import { toast } from './toast';
+import { copyLinkToast, toast } from './toast';
 import type { ApiResult } from '../protocol';
 
 export function langSwitch(onSwitch: (l: Lang) => void): HTMLElement {
@@ -56,14 +56,7 @@ export function exportReport(session: Pick<ComputeSession, 'report' | 'simReport
 /** Copy the share link (#in=…); where the clipboard is refused, show it selected in a box. */
 async function copyLink(root: HTMLElement, session: ComputeSession): Promise<void> {
   const url = location.href.split('#')[0] + encodeHash(effectiveInput(session.input), session.units);
-  try {
-    await navigator.clipboard.writeText(url);
-    toast(root, t('linkCopied'));
-  } catch {
-    const box = h('input', { class: 'linkbox', value: url, readonly: true }) as HTMLInputElement;
-    toast(root, t('linkCopyFailed'), box);
-    box.select();
-  }
+  await copyLinkToast(root, url);
   document.documentElement.dataset.shareLink = url;
 }
 

@@ -4,7 +4,7 @@
 import { flagChips, h, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
-import { toast } from '../page/toast';
+import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
 
 interface Term { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string }
@@ -211,14 +211,7 @@ function update(el: HTMLElement, ctx: PanelContext): void {
 async function share(root: HTMLElement, embed: boolean): Promise<void> {
   const url = `${location.origin}${location.pathname}${codeSearch(st(), embed)}${location.hash}`;
   document.documentElement.dataset.codeLink = url;
-  try {
-    await navigator.clipboard.writeText(url);
-    toast(root, t('linkCopied'));
-  } catch {
-    const box = h('input', { class: 'linkbox', value: url, readonly: true }) as HTMLInputElement;
-    toast(root, t('linkCopyFailed'), box);
-    box.select();
-  }
+  await copyLinkToast(root, url);
 }
 
 function loadExamples(ctx: PanelContext): void {
