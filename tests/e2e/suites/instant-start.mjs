@@ -1,7 +1,7 @@
 // Issue 8, instant start: <html data-numbers> (build → live, cached → live, stale while typing
 // before Python is ready), the snapshot refused → full boot, no SharedWorker → dedicated Worker,
 // embeds sharing one runtime per kind, and the server's compression and validators.
-import { readdirSync, statSync } from 'node:fs';
+import { readdirSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 /** A gate for the Python runtime's files: requests under pyodide/ wait until open() is called. */
@@ -43,7 +43,11 @@ export default async function instantStart(ctx) {
     assert(n >= 60, `only ${n} prerendered numbers`);
     assert((await page.$eval('section.panel', (e) => getComputedStyle(e).borderTopStyle)) === 'dashed', 'build numbers not marked');
     assert((await page.$$('.status .prelive')).length === 1, 'status does not say where the numbers come from');
-    await page.screenshot({ path: join(SHOTS, '10-build-numbers.png') });
+    // Through CDP: page.screenshot waits for web fonts, and while the held Pyodide requests (and
+    // their boot retries) occupy HTTP/1.1's six connections, the KaTeX fonts wait behind them.
+    const cdp = await page.context().newCDPSession(page);
+    writeFileSync(join(SHOTS, '10-build-numbers.png'), Buffer.from((await cdp.send('Page.captureScreenshot')).data, 'base64'));
+    await cdp.detach();
     await page.fill('input[name="motor.rs_ohm"]', '3.3');
     await numbersIs(page, 'stale', 5000);
     assert(await page.$eval('main.panels', (e) => e.classList.contains('stale')), 'panels not marked stale');

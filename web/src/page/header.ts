@@ -49,7 +49,9 @@ async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExpo
 export function exportReport(session: Pick<ComputeSession, 'report' | 'simReport'>): string | null {
   const { report, simReport } = session;
   if (!report) return null;
-  const same = simReport && JSON.stringify(simReport.input) === JSON.stringify(report.input);
+  // The simulation request also asks for the loop analysis, whose options its input echoes.
+  const { analysis: _, ...simIn } = (simReport?.input ?? {}) as Record<string, unknown>;
+  const same = simReport && JSON.stringify(simIn) === JSON.stringify(report.input);
   return JSON.stringify(same ? simReport : report, null, 2);
 }
 
