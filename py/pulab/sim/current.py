@@ -316,6 +316,7 @@ def run_steps(report: dict, cfg: dict):
                                    z_pu.bemf, n, cfg["delay"])
     p = {"id": [x * i_b for x in p["id"]], "iq": [x * i_b for x in p["iq"]],
          "ud": [x * u_b for x in p["ud"]], "uq": [x * u_b for x in p["uq"]], "sat": p["sat"]}
+    yield  # the unit conversions are a slice of their own
 
     fx = yield from run_fixed_steps(z_si, i_b, u_b, gd["pm_kp"], gd["pm_ki"], gq["pm_kp"],
                                     gq["pm_ki"], maxu, maxout,
