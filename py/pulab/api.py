@@ -23,10 +23,11 @@ from .jsontext import parse
 from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
 from .messages import to_zh
-from .report import report
+from .report import report, report_steps
+from .steps import finish
 from .textnum import ascii_text, parse_int, parse_real
 
-__all__ = ["run_json", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
+__all__ = ["run_json", "run_json_steps", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
            "trace_json", "trace_examples_json", "vendors_json"]
 
 
@@ -37,8 +38,15 @@ def _fail(e: InputError) -> str:
 
 def run_json(text: str) -> str:
     """``report`` on a JSON string; returns ``{"ok": true, "report": {...}}`` or an error."""
+    return finish(run_json_steps(text))
+
+
+def run_json_steps(text: str):
+    """:func:`run_json` in slices: a generator that yields None between slices of the simulation
+    and returns the same JSON text; closing it cancels the computation (issue 14)."""
     try:
-        return json.dumps({"ok": True, "report": report(parse(text))}, allow_nan=False)
+        out = yield from report_steps(parse(text))
+        return json.dumps({"ok": True, "report": out}, allow_nan=False)
     except InputError as e:
         return _fail(e)
 

@@ -18,9 +18,10 @@ from .gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .inputs import normalize
 from .messages import to_zh
 from .review import review
+from .steps import finish
 from .vendor import current_pi_step, raw_from_si, vendor_results
 
-__all__ = ["report", "format_text", "input_bases", "input_raw", "current_pi_section"]
+__all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "current_pi_section"]
 
 
 def _profile_warnings(prof: dict) -> list:
@@ -76,7 +77,15 @@ def current_pi_section(n: dict, b: dict) -> dict:
 
 
 def report(inp: dict) -> dict:
-    """Compute the report for one motor and drive.
+    """Compute the report for one motor and drive: :func:`report_steps` run to the end.
+
+    Parameters, result and errors are those of :func:`report_steps`.
+    """
+    return finish(report_steps(inp))
+
+
+def report_steps(inp: dict):
+    """Compute the report for one motor and drive, in slices (issue 14).
 
     Parameters
     ----------
@@ -85,7 +94,8 @@ def report(inp: dict) -> dict:
 
     Returns
     -------
-    dict
+    generator — yields None between slices of the simulation (:mod:`pulab.steps`; none
+    without ``sim``), returning a dict:
         ``input`` (normalized), ``base``, ``pu``, ``vendor``, ``current_pi``, ``pll``,
         ``constants``, ``mechanical``, ``review`` (graded findings, :mod:`pulab.review`),
         ``warnings``/``warnings_zh`` (the review's errors and warnings as text, then the
@@ -137,7 +147,7 @@ def report(inp: dict) -> dict:
         out["loop"] = _loop.analyze(out, n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
     if sim_in is not None:
-        out["sim"] = _sim.simulate(out, sim_in)
+        out["sim"] = yield from _sim.simulate_steps(out, sim_in)
     out["review"] = review(n, raw, vendor, pi, out.get("sim"))
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]

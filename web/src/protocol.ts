@@ -16,6 +16,15 @@ export const API_FUNCTIONS = {
 } as const;
 export type ApiKind = keyof typeof API_FUNCTIONS;
 
+/**
+ * Entry points that compute in slices: `pulab.api.<fn>(text)` returns a Python generator that
+ * yields between slices and returns the same JSON text as the API_FUNCTIONS entry. A call of
+ * such a kind on a channel runs slice by slice, and a newer call on its channel cancels it
+ * (`superseded`) between two slices (issue 14).
+ */
+export const STEPPED_FUNCTIONS = { report: 'run_json_steps' } as const satisfies Partial<Record<ApiKind, string>>;
+export type SteppedKind = keyof typeof STEPPED_FUNCTIONS;
+
 /** Main thread → worker. */
 export type MainToWorker =
   | { type: 'init'; indexURL: string; timeoutMs?: number }
@@ -25,7 +34,10 @@ export type MainToWorker =
       kind: ApiKind;
       /** JSON text handed to the Python function unchanged. */
       payload: string;
-      /** Calls sharing a channel are coalesced: only the newest queued one is computed. */
+      /**
+       * Calls sharing a channel are coalesced: only the newest queued one is computed, and a
+       * running call of a STEPPED_FUNCTIONS kind is cancelled when a newer one arrives.
+       */
       channel?: string;
     };
 

@@ -2,7 +2,7 @@
 // (the tabs and iframes connected to a SharedWorker, or the one page of a dedicated Worker). It
 // gets a `post` function per client and a Pyodide loader, so vitest runs exactly this code on
 // real Pyodide in Node.
-import { API_FUNCTIONS, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type WorkerToMain } from './protocol';
+import { API_FUNCTIONS, STEPPED_FUNCTIONS, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type SteppedKind, type WorkerToMain } from './protocol';
 
 /** The part of the Pyodide API the worker uses. */
 export interface PyodideLike {
@@ -88,6 +88,14 @@ export async function fastOrFull(
 }
 
 type PyApi = Record<string, (text: string) => string>;
+/** A Python generator as Pyodide hands it to JavaScript (a PyProxy). */
+interface PyGenerator {
+  next(): { done?: boolean; value?: unknown };
+  return(value?: unknown): unknown;
+  destroy(): void;
+}
+type PySteps = Record<string, (text: string) => PyGenerator>;
+type Queued = { call: Call; post: Post; client: number };
 type Call = Extract<MainToWorker, { type: 'call' }>;
 type Post = (msg: WorkerToMain) => void;
 
@@ -150,6 +158,7 @@ const now = (): number => (typeof performance !== 'undefined' ? performance.now(
 
 export function createRuntimeHost(load: PyodideLoader, files: Record<string, string>): RuntimeHost {
   let api: PyApi | null = null;
+  let steps: PySteps = {};
   let resolveReady!: () => void;
   let rejectReady!: (e: unknown) => void;
   const ready = new Promise<void>((res, rej) => {
@@ -162,9 +171,10 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
   let state: 'idle' | 'booting' | 'ready' | 'failed' = 'idle';
   let lastProgress: WorkerToMain | null = null;
   let readyMsg: WorkerToMain | null = null;
-  const queue: { call: Call; post: Post; client: number }[] = [];
+  const queue: Queued[] = [];
   const clientIds = new Map<Post, number>();
   let scheduled = false;
+  let draining = false;
 
   const broadcast = (m: WorkerToMain): void => {
     for (const post of clients) post(m);
@@ -196,6 +206,12 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
         if (typeof f === 'function') fns[name] = f as (text: string) => string;
       }
       if (!fns.run_json) throw new Error('pulab.api.run_json is missing');
+      const stepFns: PySteps = {};
+      for (const name of Object.values(STEPPED_FUNCTIONS)) {
+        const f = mod[name];
+        if (typeof f === 'function') stepFns[name] = f as (text: string) => PyGenerator;
+      }
+      steps = stepFns;
       api = fns;
       progress('ready', 1);
       readyMsg = { type: 'ready', bootMs: now() - t0, pyodideVersion: py.version, ...(from ? { from } : {}), ...(note ? { note } : {}) };
@@ -219,37 +235,80 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
     try {
       return JSON.parse(f(payload)) as ApiResult;
     } catch (e) {
-      const text = e instanceof Error ? e.message : String(e);
-      const last = text.trim().split('\n').pop() ?? text;
-      return { ok: false, field: '', message: `internal error in pulab.api.${fname}: ${last}` };
+      return internalError(fname, e);
     }
   }
 
-  function drain(): void {
-    scheduled = false;
-    if (!api) return;
-    // Coalesce: for each client's channel only the newest queued call is computed.
-    const newest = new Map<string, number>();
-    queue.forEach((c, i) => {
-      if (c.call.channel) newest.set(`${c.client}:${c.call.channel}`, i);
-    });
-    const batch = queue.splice(0, queue.length);
-    batch.forEach((c, i) => {
-      if (c.call.channel && newest.get(`${c.client}:${c.call.channel}`) !== i) {
-        c.post({ type: 'superseded', id: c.call.id });
-        return;
+  function internalError(fname: string, e: unknown): ApiResult {
+    const text = e instanceof Error ? e.message : String(e);
+    const last = text.trim().split('\n').pop() ?? text;
+    return { ok: false, field: '', message: `internal error in pulab.api.${fname}: ${last}` };
+  }
+
+  const channelKey = (c: Queued): string | null => (c.call.channel ? `${c.client}:${c.call.channel}` : null);
+  /** A newer call of the same client on the same channel is waiting. */
+  const newerQueued = (c: Queued): boolean => {
+    const key = channelKey(c);
+    return key !== null && queue.some((q) => channelKey(q) === key);
+  };
+
+  /**
+   * A call of a STEPPED_FUNCTIONS kind: one slice per macrotask, so calls posted meanwhile are
+   * queued; null when a newer call on its channel cancelled it (the generator is closed).
+   */
+  async function runSteps(c: Queued, kind: SteppedKind): Promise<ApiResult | null> {
+    const fname = STEPPED_FUNCTIONS[kind];
+    const start = steps[fname];
+    if (!start) return run(kind, c.call.payload);
+    let gen: PyGenerator | null = null;
+    try {
+      gen = start(c.call.payload);
+      for (;;) {
+        const slice = gen.next();
+        if (slice.done) return JSON.parse(String(slice.value)) as ApiResult;
+        await new Promise((res) => setTimeout(res, 0));
+        if (newerQueued(c)) {
+          gen.return();
+          return null;
+        }
       }
-      const t0 = now();
-      const result = run(c.call.kind, c.call.payload);
-      c.post({ type: 'result', id: c.call.id, kind: c.call.kind, result, ms: now() - t0 });
-    });
+    } catch (e) {
+      return internalError(fname, e);
+    } finally {
+      gen?.destroy();
+    }
+  }
+
+  const isStepped = (kind: ApiKind): kind is SteppedKind => kind in STEPPED_FUNCTIONS;
+
+  /** Compute the queued calls in order; calls posted during a stepped call join this loop. */
+  async function drain(): Promise<void> {
+    scheduled = false;
+    if (!api || draining) return;
+    draining = true;
+    try {
+      for (let c = queue.shift(); c; c = queue.shift()) {
+        // Coalesce: for each client's channel only the newest queued call is computed.
+        if (newerQueued(c)) {
+          c.post({ type: 'superseded', id: c.call.id });
+          continue;
+        }
+        const t0 = now();
+        const { kind } = c.call;
+        const result = c.call.channel && isStepped(kind) ? await runSteps(c, kind) : run(kind, c.call.payload);
+        if (result === null) c.post({ type: 'superseded', id: c.call.id });
+        else c.post({ type: 'result', id: c.call.id, kind, result, ms: now() - t0 });
+      }
+    } finally {
+      draining = false;
+    }
   }
 
   function schedule(): void {
     if (scheduled || !api) return;
     scheduled = true;
     // A macrotask, so messages already posted to us are queued (and coalesced) first.
-    setTimeout(drain, 0);
+    setTimeout(() => void drain(), 0);
   }
 
   return {

@@ -38,10 +38,11 @@ import math
 
 from . import current as _current
 from . import pll as _pll
+from ..steps import finish
 from .inputs import validate
 from .metrics import pll_metrics, step_metrics
 
-__all__ = ["validate", "simulate", "decimate_indices", "MAX_POINTS"]
+__all__ = ["validate", "simulate", "simulate_steps", "decimate_indices", "MAX_POINTS"]
 
 #: Time series in the JSON output are decimated to at most this many samples.
 MAX_POINTS = 400
@@ -85,8 +86,8 @@ def _pick(series: list, idx: list) -> list:
     return [series[k] for k in idx]
 
 
-def _current_section(report: dict, cfg: dict) -> dict:
-    r = _current.run(report, cfg)
+def _current_section(report: dict, cfg: dict):
+    r = yield from _current.run_steps(report, cfg)
     t, ts, ref = r["t"], r["ts"], r["ref_a"]
     key = "id" if r["axis"] == "d" else "iq"
     idx = decimate_indices(len(t))
@@ -94,6 +95,7 @@ def _current_section(report: dict, cfg: dict) -> dict:
     for name, v in r["variants"].items():
         variants[name] = {k: _pick(v[k], idx) for k in ("id", "iq", "ud", "uq")}
         metrics[name] = step_metrics(t, v[key], ref, v["sat"], ts)
+        yield
     si, fx = r["variants"]["si"], r["variants"]["fixed"]
     diff = max(max(abs(a - b) for a, b in zip(fx["id"], si["id"])),
                max(abs(a - b) for a, b in zip(fx["iq"], si["iq"])))
@@ -116,8 +118,8 @@ def _current_section(report: dict, cfg: dict) -> dict:
     return {"t": _pick(t, idx), "variants": variants, "metrics": metrics}
 
 
-def _pll_section(report: dict, cfg: dict) -> dict:
-    r = _pll.run(report, cfg)
+def _pll_section(report: dict, cfg: dict):
+    r = yield from _pll.run_steps(report, cfg)
     t, theta, omega = r["t"], r["theta"], r["omega"]
     idx = decimate_indices(len(t))
     variants, metrics = {}, {}
@@ -125,10 +127,11 @@ def _pll_section(report: dict, cfg: dict) -> dict:
         variants[name] = {"theta": _pick(theta, idx), "theta_hat": _pick(v["theta_hat"], idx),
                           "omega_hat": _pick(v["omega_hat"], idx)}
         metrics[name] = pll_metrics(t, theta, omega, v["theta_hat"], v["omega_hat"])
+        yield
     return {"t": _pick(t, idx), "variants": variants, "metrics": metrics}
 
 
-def simulate(report: dict, sim: dict) -> dict:
+def simulate_steps(report: dict, sim: dict):
     """The ``"sim"`` output section for a finished report.
 
     Parameters
@@ -141,8 +144,9 @@ def simulate(report: dict, sim: dict) -> dict:
 
     Returns
     -------
-    dict
-        ``{"current": {...}, "pll": {...}}`` as in the module docstring.
+    generator — yields None between slices of about SLICE_STEPS periods
+    (:mod:`pulab.steps`), returning ``{"current": {...}, "pll": {...}}`` as in
+    the module docstring.
 
     Raises
     ------
@@ -151,5 +155,11 @@ def simulate(report: dict, sim: dict) -> dict:
         outside the Q12 range).
     """
     cfg = validate(sim)
-    return {"current": _current_section(report, cfg["current"]),
-            "pll": _pll_section(report, cfg["pll"])}
+    current = yield from _current_section(report, cfg["current"])
+    pll = yield from _pll_section(report, cfg["pll"])
+    return {"current": current, "pll": pll}
+
+
+def simulate(report: dict, sim: dict) -> dict:
+    """:func:`simulate_steps` run to the end: the same arguments, the same result."""
+    return finish(simulate_steps(report, sim))

@@ -55,11 +55,13 @@ import math
 from array import array
 
 from ..errors import InputError
+from ..steps import SLICE_STEPS, finish
 from ..vendor import current_pi_step, round_half_away
 from .inputs import periods
 from .plant import zoh
 
-__all__ = ["run_float", "run_fixed", "run", "MAX_STEPS", "Q12_CURRENT_LIMIT_PU"]
+__all__ = ["run_float", "run_fixed", "run", "run_float_steps", "run_fixed_steps", "run_steps",
+           "MAX_STEPS", "Q12_CURRENT_LIMIT_PU"]
 
 #: Upper bound on the number of controller periods of one run (keeps a typo in
 #: ``duration_s`` from hanging the browser).
@@ -69,9 +71,9 @@ MAX_STEPS = 200_000
 Q12_CURRENT_LIMIT_PU = 32767 / 4096.0
 
 
-def run_float(z, kp_d: float, ki_ts_d: float, kp_q: float, ki_ts_q: float, umax: float,
-              imax: float, ref_d: float, ref_q: float, integ_q0: float, n: int,
-              delay: bool) -> dict:
+def run_float_steps(z, kp_d: float, ki_ts_d: float, kp_q: float, ki_ts_q: float, umax: float,
+                    imax: float, ref_d: float, ref_q: float, integ_q0: float, n: int,
+                    delay: bool):
     """Float PI + ZOH plant for n+1 samples (SI or per unit, same code).
 
     Parameters
@@ -88,7 +90,7 @@ def run_float(z, kp_d: float, ki_ts_d: float, kp_q: float, ki_ts_q: float, umax:
 
     Returns
     -------
-    dict
+    generator — yields None every SLICE_STEPS periods (:mod:`pulab.steps`), returns a dict
         ``id, iq, ud, uq`` (arrays of n+1 floats: current at t_k, voltage applied
         from t_k) and ``sat`` (array of 0/1: an output was at its limit at t_k).
         Arrays, not lists: 8 bytes a sample instead of 32 at the 200 000-period cap.
@@ -101,7 +103,9 @@ def run_float(z, kp_d: float, ki_ts_d: float, kp_q: float, ki_ts_q: float, umax:
     integ_q = max(-imax, min(imax, integ_q0))
     prev_d, prev_q = 0.0, max(-umax, min(umax, integ_q))
     ids, iqs, uds, uqs, sats = array("d"), array("d"), array("d"), array("d"), array("b")
-    for _ in range(n + 1):
+    for k in range(n + 1):
+        if k and not k % SLICE_STEPS:
+            yield
         ids.append(xd)
         iqs.append(xq)
         ed = ref_d - xd
@@ -140,9 +144,14 @@ def run_float(z, kp_d: float, ki_ts_d: float, kp_q: float, ki_ts_q: float, umax:
     return {"id": ids, "iq": iqs, "ud": uds, "uq": uqs, "sat": sats}
 
 
-def run_fixed(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp_q: int,
-              pm_ki_q: int, maxu: int, maxout: int, ref_d: int, ref_q: int, integ_q0: int,
-              n: int, delay: bool, memo: bool = True) -> dict:
+def run_float(*args, **kwargs):
+    """:func:`run_float_steps` run to the end: the same arguments, the same result."""
+    return finish(run_float_steps(*args, **kwargs))
+
+
+def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp_q: int,
+                    pm_ki_q: int, maxu: int, maxout: int, ref_d: int, ref_q: int,
+                    integ_q0: int, n: int, delay: bool, memo: bool = True):
     """Vendor fixed-point PI (seed 2.2, :func:`pulab.vendor.current_pi_step`) on the SI plant.
 
     Parameters
@@ -160,7 +169,7 @@ def run_fixed(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp_q: in
 
     Returns
     -------
-    dict
+    generator — yields None every SLICE_STEPS periods (:mod:`pulab.steps`), returns a dict
         As :func:`run_float`, in A and V (phase), plus ``fb_d, fb_q``: the Q12
         feedback integers.
     """
@@ -181,7 +190,9 @@ def run_fixed(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp_q: in
     # without re-implementing the vendor arithmetic.
     memo_d: dict = {}
     memo_q: dict = {}
-    for _ in range(n + 1):
+    for k in range(n + 1):
+        if k and not k % SLICE_STEPS:
+            yield
         ids.append(xd)
         iqs.append(xq)
         # ADC reading: round to nearest Q12, ties away from zero, saturate to int16.
@@ -222,6 +233,11 @@ def run_fixed(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp_q: in
     return {"id": ids, "iq": iqs, "ud": uds, "uq": uqs, "sat": sats, "fb_d": fbd, "fb_q": fbq}
 
 
+def run_fixed(*args, **kwargs):
+    """:func:`run_fixed_steps` run to the end: the same arguments, the same result."""
+    return finish(run_fixed_steps(*args, **kwargs))
+
+
 def default_duration(report: dict, axis: str) -> float:
     """Default run length: 30 closed-loop time constants 1/ω_c, at least 200 periods.
 
@@ -242,7 +258,7 @@ def default_duration(report: dict, axis: str) -> float:
     return max(200 * ts, 30.0 / w_c)
 
 
-def run(report: dict, cfg: dict) -> dict:
+def run_steps(report: dict, cfg: dict):
     """Run the three variants for one reference step.
 
     Parameters
@@ -254,7 +270,7 @@ def run(report: dict, cfg: dict) -> dict:
 
     Returns
     -------
-    dict
+    generator — yields None every SLICE_STEPS periods (:mod:`pulab.steps`), returns a dict
         ``t`` (s), ``ts``, ``n``, ``axis``, ``ref_a`` (A), and ``variants``:
         ``si``/``pu``/``fixed`` → ``id, iq, ud, uq`` in A and V (phase) plus ``sat``.
 
@@ -289,19 +305,28 @@ def run(report: dict, cfg: dict) -> dict:
     gd, gq = pi["d"], pi["q"]
 
     z_si = zoh(m["rs_ohm"], m["ld_h"], m["lq_h"], pu["psi_r_wb"], omega, ts)
-    si = run_float(z_si, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts, umax_pu * u_b,
-                   imax_pu * u_b, ref_d, ref_q, z_si.bemf, n, cfg["delay"])
+    si = yield from run_float_steps(z_si, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts,
+                                    umax_pu * u_b, imax_pu * u_b, ref_d, ref_q, z_si.bemf, n,
+                                    cfg["delay"])
 
     z_pu = zoh(pu["Rs"], pu["Ld"], pu["Lq"], pu["psi_r"], omega / w_b, pu["Ts"])
     # The per-unit PI integrates in seconds like the firmware (pm_ki = ki_pu·Ts·2^16).
-    p = run_float(z_pu, gd["kp_pu"], gd["ki_pu"] * ts, gq["kp_pu"], gq["ki_pu"] * ts, umax_pu,
-                  imax_pu, ref_d / i_b, ref_q / i_b, z_pu.bemf, n, cfg["delay"])
+    p = yield from run_float_steps(z_pu, gd["kp_pu"], gd["ki_pu"] * ts, gq["kp_pu"],
+                                   gq["ki_pu"] * ts, umax_pu, imax_pu, ref_d / i_b, ref_q / i_b,
+                                   z_pu.bemf, n, cfg["delay"])
     p = {"id": [x * i_b for x in p["id"]], "iq": [x * i_b for x in p["iq"]],
          "ud": [x * u_b for x in p["ud"]], "uq": [x * u_b for x in p["uq"]], "sat": p["sat"]}
+    yield  # the unit conversions are a slice of their own
 
-    fx = run_fixed(z_si, i_b, u_b, gd["pm_kp"], gd["pm_ki"], gq["pm_kp"], gq["pm_ki"], maxu,
-                   maxout, round_half_away(ref_d / i_b * 4096.0),
-                   round_half_away(ref_q / i_b * 4096.0),
-                   round_half_away(z_pu.bemf * 16777216.0), n, cfg["delay"])
+    fx = yield from run_fixed_steps(z_si, i_b, u_b, gd["pm_kp"], gd["pm_ki"], gq["pm_kp"],
+                                    gq["pm_ki"], maxu, maxout,
+                                    round_half_away(ref_d / i_b * 4096.0),
+                                    round_half_away(ref_q / i_b * 4096.0),
+                                    round_half_away(z_pu.bemf * 16777216.0), n, cfg["delay"])
     return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "axis": axis,
             "ref_a": step, "variants": {"si": si, "pu": p, "fixed": fx}}
+
+
+def run(*args, **kwargs):
+    """:func:`run_steps` run to the end: the same arguments, the same result."""
+    return finish(run_steps(*args, **kwargs))

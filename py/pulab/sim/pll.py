@@ -55,10 +55,12 @@ import math
 from array import array
 
 from ..errors import InputError
+from ..steps import SLICE_STEPS, finish
 from ..vendor import round_half_away
 from .inputs import periods
 
-__all__ = ["input_angle", "run_float", "run_q15", "run", "q15_gains", "MAX_STEPS"]
+__all__ = ["input_angle", "run_float", "run_q15", "run", "run_float_steps", "run_q15_steps",
+           "run_steps", "input_angle_steps", "q15_gains", "MAX_STEPS"]
 
 #: Upper bound on the number of periods of one run.
 MAX_STEPS = 500_000
@@ -72,8 +74,8 @@ def _wrap(x: float) -> float:
     return math.remainder(x, _TWO_PI)
 
 
-def input_angle(n: int, ts: float, speed_hz: float, ramp_hz_s: float,
-                step_rad: float) -> tuple:
+def input_angle_steps(n: int, ts: float, speed_hz: float, ramp_hz_s: float,
+                      step_rad: float):
     """The true angle and speed at t_k = k·T_s, k = 0..n.
 
     Parameters
@@ -84,18 +86,28 @@ def input_angle(n: int, ts: float, speed_hz: float, ramp_hz_s: float,
 
     Returns
     -------
+    generator — yields None every 8·SLICE_STEPS samples (:mod:`pulab.steps`), returning
     (theta, omega) : arrays of n+1 floats, rad wrapped into [−π, π] and rad/s
     """
     w0 = _TWO_PI * speed_hz
     a = math.pi * ramp_hz_s
     # Arrays, not lists: 8 bytes a sample instead of 32, at 500 000 samples (the cap) per series.
-    theta = array("d", (_wrap(step_rad + w0 * (k * ts) + a * (k * ts) ** 2) for k in range(n + 1)))
-    omega = array("d", (w0 + 2.0 * a * (k * ts) for k in range(n + 1)))
+    theta, omega = array("d"), array("d")
+    for first in range(0, n + 1, 8 * SLICE_STEPS):
+        ks = range(first, min(n + 1, first + 8 * SLICE_STEPS))
+        theta.extend(_wrap(step_rad + w0 * (k * ts) + a * (k * ts) ** 2) for k in ks)
+        omega.extend(w0 + 2.0 * a * (k * ts) for k in ks)
+        yield
     return theta, omega
 
 
-def run_float(theta: list, ts: float, kp: float, ki: float, angle_base: float,
-              gain: float) -> tuple:
+def input_angle(*args, **kwargs):
+    """:func:`input_angle_steps` run to the end: the same arguments, the same result."""
+    return finish(input_angle_steps(*args, **kwargs))
+
+
+def run_float_steps(theta: list, ts: float, kp: float, ki: float, angle_base: float,
+                    gain: float):
     """Float PLL on a given input angle (SI, per unit or naive, same code).
 
     Parameters
@@ -108,6 +120,7 @@ def run_float(theta: list, ts: float, kp: float, ki: float, angle_base: float,
 
     Returns
     -------
+    generator — yields None every SLICE_STEPS periods (:mod:`pulab.steps`), returning
     (theta_hat, omega_hat) : arrays of float, rad wrapped into [−π, π] and the PI output
     in its own unit (rad/s for SI, pu for pu and naive).
     """
@@ -118,7 +131,9 @@ def run_float(theta: list, ts: float, kp: float, ki: float, angle_base: float,
     period = _TWO_PI / angle_base
     inv_base = 1.0 / angle_base
     out_th, out_w = array("d"), array("d")
-    for x in theta:
+    for k, x in enumerate(theta):
+        if k and not k % SLICE_STEPS:
+            yield
         out_th.append(th * angle_base)
         e = math.remainder(x * inv_base - th, period)
         integ += kits * e
@@ -127,6 +142,11 @@ def run_float(theta: list, ts: float, kp: float, ki: float, angle_base: float,
         # Keep θ̂ wrapped (as the int16 does) so its rounding does not grow with t.
         th = math.remainder(th + gts * w, period)
     return out_th, out_w
+
+
+def run_float(*args, **kwargs):
+    """:func:`run_float_steps` run to the end: the same arguments, the same result."""
+    return finish(run_float_steps(*args, **kwargs))
 
 
 def q15_gains(kp: float, ki: float, w_b: float, f_b: float, ts: float) -> dict:
@@ -158,7 +178,7 @@ def q15_gains(kp: float, ki: float, w_b: float, f_b: float, ts: float) -> dict:
     return out
 
 
-def run_q15(theta: list, gains: dict) -> tuple:
+def run_q15_steps(theta: list, gains: dict):
     """Integer PLL (int16 angle, Q24 speed) on a given input angle.
 
     Parameters
@@ -168,6 +188,7 @@ def run_q15(theta: list, gains: dict) -> tuple:
 
     Returns
     -------
+    generator — yields None every SLICE_STEPS periods (:mod:`pulab.steps`), returning
     (theta_in, theta_hat, omega_hat) : arrays of int — int16 input angle, int16
     θ̂ (Q15 of π), int32 ω̂ (Q24 of ω_b)
     """
@@ -176,7 +197,9 @@ def run_q15(theta: list, gains: dict) -> tuple:
     integ = 0
     th_in, th_hat, w_hat = array("q"), array("q"), array("q")
     scale = 32768.0 / math.pi
-    for x in theta:
+    for k, x in enumerate(theta):
+        if k and not k % SLICE_STEPS:
+            yield
         q = round_half_away(x * scale)
         q = ((q + 32768) & 0xFFFF) - 32768                 # +π rounds to 32768 → −32768
         th_in.append(q)
@@ -192,6 +215,11 @@ def run_q15(theta: list, gains: dict) -> tuple:
     return th_in, th_hat, w_hat
 
 
+def run_q15(*args, **kwargs):
+    """:func:`run_q15_steps` run to the end: the same arguments, the same result."""
+    return finish(run_q15_steps(*args, **kwargs))
+
+
 def default_duration(report: dict) -> float:
     """Default run length: 60/(ζ·ω_n) (≈ 15 envelope time constants), at least 2000 periods."""
     ts = report["input"]["drive"]["ts_s"]
@@ -199,7 +227,7 @@ def default_duration(report: dict) -> float:
     return max(2000 * ts, 60.0 / (p["damping"] * _TWO_PI * p["bandwidth_hz"]))
 
 
-def run(report: dict, cfg: dict) -> dict:
+def run_steps(report: dict, cfg: dict):
     """Run the four PLL variants on the same input angle.
 
     Parameters
@@ -209,7 +237,7 @@ def run(report: dict, cfg: dict) -> dict:
 
     Returns
     -------
-    dict
+    generator — yields None every SLICE_STEPS periods (:mod:`pulab.steps`), returning a dict:
         ``t`` (s), ``theta`` (rad), ``omega`` (rad/s), ``variants``:
         ``si``/``pu``/``q15``/``naive`` → ``theta_hat`` (rad, wrapped),
         ``omega_hat`` (electrical rad/s).
@@ -233,17 +261,25 @@ def run(report: dict, cfg: dict) -> dict:
         field = "sim.pll.ramp_hz_per_s" if abs(speed) * ts < 0.5 else "sim.pll.speed_hz"
         raise InputError(field, f"the input speed reaches {top:g} Hz, not below half the "
                          f"control frequency 1/(2·Ts) = {0.5 / ts:g} Hz")
-    theta, omega = input_angle(n, ts, speed, cfg["ramp_hz_per_s"],
-                               math.radians(cfg["angle_step_deg"]))
+    theta, omega = yield from input_angle_steps(n, ts, speed, cfg["ramp_hz_per_s"],
+                                                math.radians(cfg["angle_step_deg"]))
     v = {}
-    th, w = run_float(theta, ts, g["kp"], g["ki"], 1.0, 1.0)
+    th, w = yield from run_float_steps(theta, ts, g["kp"], g["ki"], 1.0, 1.0)
     v["si"] = {"theta_hat": th, "omega_hat": w}
-    th, w = run_float(theta, ts, g["kp_pu"], g["ki_pu"], theta_b, w_b / theta_b)
+    th, w = yield from run_float_steps(theta, ts, g["kp_pu"], g["ki_pu"], theta_b, w_b / theta_b)
     v["pu"] = {"theta_hat": th, "omega_hat": array("d", (x * w_b for x in w))}
-    _, th, w = run_q15(theta, q15_gains(g["kp"], g["ki"], w_b, f_b, ts))
+    yield  # the unit conversions of 500 000 samples are a slice of their own
+    _, th, w = yield from run_q15_steps(theta, q15_gains(g["kp"], g["ki"], w_b, f_b, ts))
     v["q15"] = {"theta_hat": array("d", (x * (math.pi / 32768.0) for x in th)),
                 "omega_hat": array("d", (x * (w_b / 16777216.0) for x in w))}
-    th, w = run_float(theta, ts, g["kp"], g["ki"], theta_b, w_b / theta_b)
+    yield  # the unit conversions of 500 000 samples are a slice of their own
+    th, w = yield from run_float_steps(theta, ts, g["kp"], g["ki"], theta_b, w_b / theta_b)
     v["naive"] = {"theta_hat": th, "omega_hat": array("d", (x * w_b for x in w))}
+    yield  # the unit conversions of 500 000 samples are a slice of their own
     return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "theta": theta,
             "omega": omega, "variants": v}
+
+
+def run(*args, **kwargs):
+    """:func:`run_steps` run to the end: the same arguments, the same result."""
+    return finish(run_steps(*args, **kwargs))

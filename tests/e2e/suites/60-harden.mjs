@@ -328,20 +328,39 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     noPageErrors(errors);
     await context.close();
   });
-  await check('measured: a new input while the worst allowed simulation runs → its simulation result arrives (latency printed)', async () => {
+  await check('measured: a new input while the worst allowed simulation runs → the running one is cancelled, the new result arrives (latency printed)', async () => {
     const { context, page, errors } = await open();
     const worst = merge(seed, { current_loop: { method: 'integers', pm_kp: 2 ** 31 - 1, pm_ki: 2 ** 31 - 1 },
       sim: { current: { duration_s: 200000 * 1e-4 }, pll: { duration_s: 500000 * 1e-4 } } });
     await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(worst))}`);
     await live(page);
+    // The simulation runtime starts only when a plot panel comes near the screen.
+    await page.$eval('#panel-current', (e) => e.scrollIntoView());
     await page.waitForFunction(() => document.documentElement.dataset.simPosted === '1', null, { timeout: 60_000 });
-    await page.waitForTimeout(1000); // the worst simulation is running now
-    const t0 = Date.now();
+    await page.waitForTimeout(1000); // the worst simulation is running now (it takes several seconds)
+    // Page-side timestamps of the counters <html data-sim-posted/-superseded/-done>.
+    const t0 = await page.evaluate(() => {
+      const seen = {};
+      window.__simTimes = seen;
+      new MutationObserver(() => {
+        const d = document.documentElement.dataset;
+        for (const k of ['simPosted', 'simSuperseded', 'simDone']) seen[`${k}=${d[k]}`] ??= performance.now();
+      }).observe(document.documentElement, { attributes: true });
+      return performance.now();
+    });
     await page.selectOption('select[name="preset"]', 'seed');
-    await page.waitForFunction(() => Number(document.documentElement.dataset.simDone ?? 0) >= 2, null, { timeout: 300_000 });
-    const ms = Date.now() - t0;
-    timings.new_sim_behind_worst_ms = ms;
-    console.log(`      new input during the worst simulation: its simulation result after ${ms} ms (400 ms of it is the typing pause)`);
+    await page.waitForFunction(() => Number(document.documentElement.dataset.simDone ?? 0) >= 1, null, { timeout: 300_000 });
+    const seen = await page.evaluate(() => window.__simTimes);
+    assert(await page.evaluate(() => document.documentElement.dataset.simSuperseded) === '1', 'the worst simulation was not cancelled');
+    const posted = seen['simPosted=2'] - t0;
+    const cancelled = seen['simSuperseded=1'] - t0;
+    const done = seen['simDone=1'] - t0;
+    timings.new_sim_behind_worst_ms = Math.round(done);
+    timings.sim_cancel_ms = Math.round(cancelled - posted);
+    console.log(`      new input during the worst simulation: posted after ${posted.toFixed(0)} ms (the typing pause), old one cancelled ${(cancelled - posted).toFixed(0)} ms after the post, new result after ${done.toFixed(0)} ms`);
+    // Generous bounds for a loaded 2-core machine; the issue's target is 500 ms to the new start.
+    assert(cancelled - posted < 2000, `cancellation took ${(cancelled - posted).toFixed(0)} ms`);
+    assert(done < 10_000, `the new simulation result took ${done.toFixed(0)} ms`);
     noPageErrors(errors);
     await context.close();
   });

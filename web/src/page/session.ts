@@ -243,10 +243,10 @@ export class ComputeSession {
     this.simLatest = null;
     const sc = this.simWorker();
     if (!sc) return;
+    // <html data-sim-posted/-done/-superseded>: counters of simulation requests, results and
+    // requests cancelled by a newer one (the fault suite measures the cancellation latency).
+    const root = document.documentElement;
     try {
-      // <html data-sim-posted/-done>: counters of simulation requests and results (the fault suite
-      // measures how long a new input waits behind a running simulation).
-      const root = document.documentElement;
       root.dataset.simPosted = String(Number(root.dataset.simPosted ?? 0) + 1);
       const { result } = await sc.call('report', simInput(eff), 'sim', SIM_LOST_MS);
       root.dataset.simDone = String(Number(root.dataset.simDone ?? 0) + 1);
@@ -262,7 +262,10 @@ export class ComputeSession {
       }
       this.events.sim();
     } catch (e) {
-      if (e instanceof Superseded) return;
+      if (e instanceof Superseded) {
+        root.dataset.simSuperseded = String(Number(root.dataset.simSuperseded ?? 0) + 1);
+        return;
+      }
       // The simulation worker could not start or died: say so at the plots, with a retry.
       this.simReport = null;
       this.simWorkerFailed = true;
