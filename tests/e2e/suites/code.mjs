@@ -43,7 +43,7 @@ export default async function code(ctx) {
     assert(c28x.vars.out.value === -7500, '_IQmpy(-5000, 1.5 in Q24) = -7500');
     const differ = await page.$eval('.code-summary', (e) => Number(e.dataset.differ));
     assert(differ >= 2, `summary counts ${differ} differing variables`);
-    assert(await page.$eval('#panel-code tr.differs', (e) => e.textContent.includes('m_Ulong') || true), 'differing rows marked');
+    assert(await page.$$eval('#panel-code tr.differs', (els) => els.some((e) => e.textContent.includes('m_Ulong'))), 'differing rows marked');
     const flags = await page.$$eval('#panel-code .flag-unsigned_wrap', (els) => els.length);
     assert(flags > 0, 'the 16-bit wrap of Voltage*10 is flagged');
     await page.$eval('#panel-code', (e) => e.scrollIntoView());
