@@ -82,13 +82,14 @@ async function bootHost(fast: () => Promise<PyodideLike>): Promise<{ ready: Work
   return { ready: got.find((m) => m.type === 'ready'), result };
 }
 
-/** A stand-in runtime: run_json echoes its input, so calls can be told apart. */
+const echo = (t: string): string => JSON.stringify({ ok: true, echo: t });
+/** A stand-in runtime: run_json (and qcalc_json) echo their input, so calls can be told apart. */
 function fakePy(): PyodideLike {
   return {
     version: 'fake',
     FS: { mkdirTree: () => undefined, writeFile: () => undefined },
     runPython: () => undefined,
-    pyimport: () => ({ run_json: (t: string) => JSON.stringify({ ok: true, echo: t }) }),
+    pyimport: () => ({ run_json: echo, qcalc_json: echo }),
   };
 }
 
@@ -115,6 +116,24 @@ describe('one runtime, several clients (SharedWorker)', () => {
     expect(a.filter((m) => m.type === 'result').map((m) => m.type === 'result' && m.result)).toEqual([{ ok: true, echo: '"a2"' }]);
     expect(b.filter((m) => m.type === 'result').map((m) => m.type === 'result' && m.result)).toEqual([{ ok: true, echo: '"b1"' }]);
     expect(boots).toBe(1);
+  });
+});
+
+describe('queued calls: the page\'s numbers first', () => {
+  it.each([
+    ['trace, vendors, report → report first', ['trace', 'vendors', 'report'], ['"report"', '"trace"', '"vendors"']],
+    ['report, trace → report first', ['report', 'trace'], ['"report"', '"trace"']],
+    ['two channels without priority → in order', ['trace', 'vendors'], ['"trace"', '"vendors"']],
+  ])('%s', async (_name, channels, order) => {
+    const host = createRuntimeHost(async () => fakePy(), PULAB_FILES);
+    const got: WorkerToMain[] = [];
+    const send = host.connect((m) => got.push(m));
+    send({ type: 'init', indexURL: 'x/' });
+    await host.ready;
+    await new Promise((r) => setTimeout(r, 5)); // the boot's own drain
+    channels.forEach((ch, i) => send({ type: 'call', id: i + 1, kind: 'qcalc', payload: JSON.stringify(ch), channel: ch }));
+    await new Promise((r) => setTimeout(r, 20));
+    expect(got.filter((m) => m.type === 'result').map((m) => m.type === 'result' && m.result.ok && m.result.echo)).toEqual(order);
   });
 });
 

@@ -25,6 +25,13 @@ export type ApiKind = keyof typeof API_FUNCTIONS;
 export const STEPPED_FUNCTIONS = { report: 'run_json_steps' } as const satisfies Partial<Record<ApiKind, string>>;
 export type SteppedKind = keyof typeof STEPPED_FUNCTIONS;
 
+/**
+ * The channel of the page's own numbers: a queued call on it is computed before every other
+ * queued call (the code panel's traces, the vendors' report, another frame's sweep), so a panel
+ * asking Python for something never delays the numbers (issue 8).
+ */
+export const PRIORITY_CHANNEL = 'report';
+
 /** Main thread → worker. */
 export type MainToWorker =
   | { type: 'init'; indexURL: string; timeoutMs?: number }

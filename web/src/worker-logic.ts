@@ -2,7 +2,7 @@
 // (the tabs and iframes connected to a SharedWorker, or the one page of a dedicated Worker). It
 // gets a `post` function per client and a Pyodide loader, so vitest runs exactly this code on
 // real Pyodide in Node.
-import { API_FUNCTIONS, STEPPED_FUNCTIONS, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type SteppedKind, type WorkerToMain } from './protocol';
+import { API_FUNCTIONS, PRIORITY_CHANNEL, STEPPED_FUNCTIONS, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type SteppedKind, type WorkerToMain } from './protocol';
 
 /** The part of the Pyodide API the worker uses. */
 export interface PyodideLike {
@@ -200,6 +200,9 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
       writePulab(py, files);
       progress('import', 0.9);
       const mod = py.pyimport('pulab.api') as Record<string, unknown>;
+      // Everything imported so far lives as long as the runtime: out of the cyclic collector's
+      // sight, a full collection during a report no longer walks the whole stdlib and pulab.
+      py.runPython('import gc; gc.freeze()');
       const fns: PyApi = {};
       for (const name of Object.values(API_FUNCTIONS)) {
         const f = mod[name];
@@ -281,13 +284,19 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
 
   const isStepped = (kind: ApiKind): kind is SteppedKind => kind in STEPPED_FUNCTIONS;
 
+  /** The oldest queued call on the priority channel, else the oldest queued call. */
+  const takeNext = (): Queued | undefined => {
+    const i = queue.findIndex((q) => q.call.channel === PRIORITY_CHANNEL);
+    return queue.splice(Math.max(i, 0), 1)[0];
+  };
+
   /** Compute the queued calls in order; calls posted during a stepped call join this loop. */
   async function drain(): Promise<void> {
     scheduled = false;
     if (!api || draining) return;
     draining = true;
     try {
-      for (let c = queue.shift(); c; c = queue.shift()) {
+      for (let c = takeNext(); c; c = takeNext()) {
         // Coalesce: for each client's channel only the newest queued call is computed.
         if (newerQueued(c)) {
           c.post({ type: 'superseded', id: c.call.id });
