@@ -172,6 +172,9 @@ if (SCEN.has('input')) {
   await p.waitForTimeout(3000);
   const upd = [];
   const rep = [];
+  const ren = [];
+  const wrk = [];
+  const slow = new Map();
   for (let i = 0; i < 40; i++) {
     const before = await p.$eval('[data-key="current_pi.d.ki"]', (e) => e.dataset.value);
     await p.fill('input[name="motor.rs_ohm"]', (1 + i / 20).toFixed(3));
@@ -179,10 +182,17 @@ if (SCEN.has('input')) {
     const d = await p.evaluate(() => ({ ...document.documentElement.dataset }));
     upd.push(Number(d.updateMs));
     rep.push(Number(d.reportMs));
+    ren.push(Number(d.renderMs));
+    wrk.push(Number(d.workerMs));
+    for (const part of (d.renderSlowest ?? '').split(', ').filter(Boolean)) {
+      const [id, ms] = part.split(' ');
+      slow.set(id, [...(slow.get(id) ?? []), Number(ms)]);
+    }
   }
   await ctx.close();
   console.log(`page: input → all numbers updated        p50 ${q(upd, 0.5).toFixed(1)} ms, p95 ${q(upd, 0.95).toFixed(1)} ms   (target p95 ≤ 30)`);
-  console.log(`page: report round trip to the worker    p50 ${q(rep, 0.5).toFixed(1)} ms, p95 ${q(rep, 0.95).toFixed(1)} ms`);
+  console.log(`page: report round trip to the worker    p50 ${q(rep, 0.5).toFixed(1)} ms, p95 ${q(rep, 0.95).toFixed(1)} ms  (in the worker: p50 ${q(wrk, 0.5).toFixed(1)} ms, p95 ${q(wrk, 0.95).toFixed(1)} ms)`);
+  console.log(`page: rendering the new report           p50 ${q(ren, 0.5).toFixed(1)} ms, p95 ${q(ren, 0.95).toFixed(1)} ms;  slowest panels (median ms when among the 3 slowest): ${[...slow].sort((a, b) => q(b[1], 0.5) - q(a[1], 0.5)).slice(0, 5).map(([id, v]) => `${id} ${q(v, 0.5).toFixed(1)}`).join(', ')}`);
 }
 await browser.close();
 server.close();

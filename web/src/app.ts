@@ -20,6 +20,7 @@ import { handleLinks } from './page/links';
 import { LANG_KEY, load, store } from './page/storage';
 import { registerOffline } from './offline';
 import { mark } from './page/marks';
+import { seedReport } from './page/numbers';
 
 /** Panels that call Python themselves: rendered again when it becomes ready. */
 const PYTHON_PANELS = PANELS.filter((p) => p.needsPython).map((p) => p.id);
@@ -86,6 +87,9 @@ export class App {
     handleLinks(this.root, this.embed, () => this.renderPanels(['docs']));
     this.attach(client, restart, 0);
     this.renderAll();
+    // No numbers to show before Python (a share link): the seed's panels warm the fonts meanwhile.
+    const seed = this.session.report === null ? seedReport() : null;
+    if (seed) setTimeout(() => !this.session.ready && this.layout.warmUp({ ...this.ctx(), report: seed }), 0);
   }
 
   /** Follow `client`; when a ready runtime is lost (PulabClient.lost), start the next generation. */
@@ -95,8 +99,9 @@ export class App {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
       registerOffline();
       document.documentElement.dataset.pythonBoot = client.bootFrom;
-      this.renderPanels(PYTHON_PANELS);
+      // The numbers first: the report is posted before the panels that call Python post theirs.
       this.session.schedule(0);
+      this.renderPanels(PYTHON_PANELS);
     };
     const onLost = restart
       ? (message: string) => {

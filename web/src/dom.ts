@@ -6,12 +6,24 @@ import { has, t, type Key } from './i18n';
 type Child = Node | string | number | null | undefined | false | Child[];
 type Attrs = Record<string, string | number | boolean | null | undefined | ((ev: Event) => void)>;
 
+/** The handlers h() gave each element, by event type: `morph` hands a kept element the new ones. */
+const handlers = new WeakMap<Element, Record<string, (ev: Event) => void>>();
+function dispatch(this: Element, ev: Event): void {
+  handlers.get(this)?.[ev.type]?.(ev);
+}
+
 export function h(tag: string, attrs: Attrs = {}, ...children: Child[]): HTMLElement {
   const el = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs)) {
     if (v === null || v === undefined || v === false) continue;
-    if (typeof v === 'function') el.addEventListener(k.replace(/^on/, ''), v as EventListener);
-    else if (k === 'class') el.className = String(v);
+    if (typeof v === 'function') {
+      const type = k.replace(/^on/, '');
+      const own = handlers.get(el) ?? {};
+      own[type] = v;
+      handlers.set(el, own);
+      el.addEventListener(type, dispatch);
+      el.setAttribute('data-on', Object.keys(own).join(' '));
+    } else if (k === 'class') el.className = String(v);
     else if (v === true) el.setAttribute(k, '');
     else el.setAttribute(k, String(v));
   }
@@ -54,6 +66,58 @@ export function num(
   return opts.alias ? h('span', { 'data-key': opts.alias, 'data-value': v === null ? null : JSON.stringify(v) }, inner) : inner;
 }
 
+/** Form controls keep what the user did to them (value, focus, selection): never patched. */
+const REPLACED = new Set(['INPUT', 'SELECT', 'TEXTAREA', 'OPTION', 'DETAILS', 'IFRAME', 'CANVAS']);
+
+/**
+ * Make `old`'s children equal to `fresh`'s by patching in place: nodes of the same kind are kept
+ * and only changed text and attributes are written, so a new report costs the browser a layout of
+ * the numbers that changed instead of the whole panel (issue 8: input → numbers). Elements with
+ * equal `data-tex` (the same cached formula) are not descended into; form controls are replaced;
+ * elements with handlers carry `data-on` (their event types) and get the new handlers.
+ */
+export function morph(old: Element, fresh: Element): void {
+  let o = old.firstChild;
+  let n = fresh.firstChild;
+  while (n) {
+    const next = n.nextSibling;
+    if (!o) {
+      old.append(n);
+    } else {
+      const oNext = o.nextSibling;
+      if (o.nodeType !== n.nodeType || o.nodeName !== n.nodeName || REPLACED.has(n.nodeName)) old.replaceChild(n, o);
+      else if (o instanceof Element) {
+        // An equal subtree (the usual case: most of a panel is unchanged) is left alone, unless
+        // it holds handlers (`data-on`), which must be the new ones (they may close over the report).
+        if (!o.isEqualNode(n) || (n as Element).matches('[data-on], :has([data-on])')) patchElement(o, n as Element);
+      }
+      else if (o.nodeValue !== n.nodeValue) o.nodeValue = n.nodeValue;
+      o = oNext;
+    }
+    n = next;
+  }
+  while (o) {
+    const x = o.nextSibling;
+    o.remove();
+    o = x;
+  }
+}
+
+function patchElement(o: Element, n: Element): void {
+  const tex = n.getAttribute('data-tex');
+  const oa = o.attributes;
+  for (let i = oa.length - 1; i >= 0; i--) if (!n.hasAttribute(oa[i].name)) o.removeAttribute(oa[i].name);
+  const na = n.attributes;
+  for (let i = 0; i < na.length; i++) if (o.getAttribute(na[i].name) !== na[i].value) o.setAttribute(na[i].name, na[i].value);
+  const own = handlers.get(n);
+  if (own) {
+    for (const type of Object.keys(own)) o.addEventListener(type, dispatch);
+    handlers.set(o, own);
+  } else handlers.delete(o);
+  if (tex !== null && tex === o.getAttribute('data-tex')) return;
+  morph(o, n);
+}
+
 /** Flags as coloured chips with a tooltip. */
 export function flagChips(flags: unknown): HTMLElement {
   const list = Array.isArray(flags) ? (flags as string[]) : [];
@@ -68,18 +132,17 @@ export function flagChips(flags: unknown): HTMLElement {
   );
 }
 
-const texCache = new Map<string, string>();
-/** KaTeX formula (display or inline), cached. */
+const texCache = new Map<string, HTMLElement>();
+/** KaTeX formula (display or inline), cached as a node: a copy is cheaper than parsing its HTML again. */
 export function tex(src: string, display = false): HTMLElement {
   const key = `${display ? 'D' : 'I'}${src}`;
-  let html = texCache.get(key);
-  if (html === undefined) {
-    html = katex.renderToString(src, { displayMode: display, throwOnError: false, output: 'html' });
-    texCache.set(key, html);
+  let el = texCache.get(key);
+  if (el === undefined) {
+    el = h(display ? 'div' : 'span', { class: 'tex', 'data-tex': key });
+    el.innerHTML = katex.renderToString(src, { displayMode: display, throwOnError: false, output: 'html' });
+    texCache.set(key, el);
   }
-  const el = h(display ? 'div' : 'span', { class: 'tex' });
-  el.innerHTML = html;
-  return el;
+  return el.cloneNode(true) as HTMLElement;
 }
 
 export function table(head: (string | Node)[], rows: (Child[] | HTMLElement)[], cls = ''): HTMLElement {

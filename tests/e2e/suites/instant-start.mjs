@@ -100,6 +100,27 @@ export default async function instantStart(ctx) {
     await page.context().close();
   });
 
+  await check('a new report patches the pure panels in place: the same elements show the new numbers, the rest is untouched', async () => {
+    const page = await newPage();
+    await page.goto(ctx.subSrv.url);
+    await numbersIs(page, 'live', 60_000);
+    // Expando properties (not attributes: patching sets attributes to the new render's).
+    await page.evaluate(() => {
+      for (const k of ['base.Z_b', 'base.U_b']) document.querySelector(`[data-key="${k}"]`).pulabProbe = k;
+      document.querySelector('#panel-bases .tex').pulabProbe = 'tex';
+    });
+    const want = cpython({ ...seed.input, motor: { ...seed.input.motor, rated_current_a: 3 } });
+    assert(want.base.Z_b !== seed.expected.base.Z_b && want.base.U_b === seed.expected.base.U_b, 'the case must change Z_b only');
+    await page.fill('input[name="motor.rated_current_a"]', '3');
+    await ctx.waitValue(page, 'base.Z_b', want.base.Z_b);
+    const kept = await page.evaluate(() => [
+      document.querySelector('[data-key="base.Z_b"]').pulabProbe, document.querySelector('[data-key="base.U_b"]').pulabProbe,
+      document.querySelector('#panel-bases .tex').pulabProbe]);
+    assert(JSON.stringify(kept) === JSON.stringify(['base.Z_b', 'base.U_b', 'tex']), `elements replaced: ${JSON.stringify(kept)}`);
+    assert(await compareShown(page, want) >= 100, 'patched numbers');
+    await page.context().close();
+  });
+
   await check('no SharedWorker (Chrome for Android) → a dedicated Worker, live golden numbers', async () => {
     const page = await newPage();
     await page.addInitScript(() => {

@@ -1,6 +1,6 @@
 // The page's skeleton (full page or one embedded panel), the panels rendered into it, the
 // warnings list, and the stale marking of numbers that no longer match the form.
-import { h } from '../dom';
+import { h, morph } from '../dom';
 import { errText, t, type Key } from '../i18n';
 import type { Panel, PanelContext, PanelId } from '../panels/panel';
 import { PANELS } from '../panels/registry';
@@ -8,8 +8,12 @@ import { docTarget, docsAvailable } from '../panels/docs';
 import { allFindings, findingItem, markFindings, reviewCounts } from '../panels/review';
 import type { ComputeSession } from './session';
 
+/** Numbers later than this after an edit are faded as outdated (ms). */
+const OUTDATED_MS = 300;
+
 export class Layout {
   private panelEls = new Map<PanelId, HTMLElement>();
+  private outdatedTimer: ReturnType<typeof setTimeout> | undefined;
 
   private near: IntersectionObserver | null = null;
   private onNear: (() => void) | null = null;
@@ -81,11 +85,22 @@ export class Layout {
   /** Render every panel (or only those in `only`), the review's findings at the top (on a full
    * render or with the review), and the marks at the values they concern. */
   renderPanels(ctx: PanelContext, only?: PanelId[]): void {
+    const took: [string, number][] = [];
     for (const p of PANELS) {
       if (only && !only.includes(p.id)) continue;
       const el = this.panelEls.get(p.id);
-      if (el) p.render(el, ctx);
+      if (!el) continue;
+      const t0 = performance.now();
+      if (p.pure && el.firstChild) {
+        // Patched in place: only the numbers that changed are laid out again.
+        const fresh = document.createElement('div');
+        p.render(fresh, ctx);
+        morph(el, fresh);
+      } else p.render(el, ctx);
+      took.push([p.id, performance.now() - t0]);
     }
+    // <html data-render-slowest>: the three slowest panels of the last render (the bench prints them).
+    document.documentElement.dataset.renderSlowest = took.sort((a, b) => b[1] - a[1]).slice(0, 3).map(([id, ms]) => `${id} ${ms.toFixed(1)}`).join(', ');
     const w = this.root.querySelector('.warnings');
     const r = ctx.report;
     if (w && (!only || only.length === 0 || only.includes('review'))) {
@@ -100,6 +115,28 @@ export class Layout {
   }
 
   /**
+   * Lay out the pure panels once with `ctx` (the build's seed report) in a hidden scratch box, and
+   * remove it in the same task (nothing can see its numbers). A page opened without any known
+   * numbers (a share link) has only placeholders to lay out while Python boots; its first live
+   * render then paid ≈ 0.2–0.3 s of font lookups and text shaping on the main thread. Done here,
+   * that work overlaps the boot (issue 8).
+   */
+  warmUp(ctx: PanelContext): void {
+    const host = this.root.querySelector('main.panels');
+    if (!host) return;
+    const box = h('div', { class: 'warmup', 'aria-hidden': 'true' });
+    for (const p of this.panels()) {
+      if (!p.pure) continue;
+      const body = h('div', { class: 'panel-body' });
+      p.render(body, ctx);
+      box.append(h('section', { class: `panel panel-${p.id}` }, body));
+    }
+    host.append(box);
+    void box.offsetHeight;
+    box.remove();
+  }
+
+  /**
    * Mark the panels stale while the form holds an input they were not computed from, with the
    * reason in the banner; an error naming no field of the form (a section, the whole input) is
    * shown above the panels.
@@ -109,9 +146,12 @@ export class Layout {
     const stale = session.stale;
     const panels = this.root.querySelector('.panels');
     panels?.classList.toggle('stale', stale);
-    // Between an edit and its numbers the panels show the previous input's: marked (after a
-    // short delay in CSS, so fast typing does not flicker).
-    panels?.classList.toggle('outdated', !stale && session.outdated);
+    // Between an edit and its numbers the panels show the previous input's: marked when the
+    // numbers take longer than OUTDATED_MS. Not at once: the class fades every panel, which made
+    // the browser repaint the whole page on each keystroke while the report was on its way.
+    clearTimeout(this.outdatedTimer);
+    if (!stale && session.outdated) this.outdatedTimer = setTimeout(() => panels?.classList.toggle('outdated', !session.stale && session.outdated), OUTDATED_MS);
+    else panels?.classList.remove('outdated');
     const global = this.root.querySelector('.global-error');
     if (global) global.textContent = re && !hasField(re.field) ? `${re.field}: ${errText(re)}` : '';
     const banner = this.root.querySelector('.stale-banner');

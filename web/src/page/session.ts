@@ -1,6 +1,6 @@
 // The compute session: the input in the form, the reports computed from it, and the scheduling
 // of report and simulation calls to the Python workers. Knows nothing of the DOM except the
-// timing attributes on <html> (reportMs, renderMs, updateMs: the benchmark reads them).
+// timing attributes on <html> (reportMs, workerMs, renderMs, updateMs: the benchmark reads them).
 import { effectiveInput } from '../fields';
 import { errText, t } from '../i18n';
 import { Superseded, type PulabClient } from '../rpc';
@@ -162,18 +162,21 @@ export class ComputeSession {
     return this.report !== null && this.reportFor !== reportKey(this.input);
   }
 
-  schedule(delay = 10): void {
+  /** Compute the input in the form: at once (a report takes milliseconds and a newer call
+   * supersedes an older one, so keystrokes need no debounce), or after `delay` ms. */
+  schedule(delay = 0): void {
     this.updateSource();
     clearTimeout(this.timer);
-    this.timer = setTimeout(() => void this.compute(), delay);
+    if (delay <= 0) void this.compute();
+    else this.timer = setTimeout(() => void this.compute(), delay);
   }
 
   private async compute(): Promise<void> {
     if (this.localErrors.size) return this.events.errors();
     const eff = effectiveInput(this.input);
-    this.persist(eff);
     const key = JSON.stringify(reportInput(eff));
     if (!this.client?.ready) {
+      this.persist(eff);
       // Typing before Python is ready: kept (computed once it is), and painted at once if known.
       if (key !== this.reportFor && this.paintKnown(key)) this.events.report();
       this.updateSource();
@@ -182,6 +185,9 @@ export class ComputeSession {
     }
     const root = document.documentElement;
     root.dataset.busy = '1';
+    // The address bar and localStorage are written after the numbers are shown (history.replaceState
+    // takes milliseconds); a call superseded by a newer input leaves them to that one.
+    let superseded = false;
     try {
       const t0 = performance.now();
       const { result, ms } = await this.client.call('report', JSON.parse(key), 'report', REPORT_LOST_MS);
@@ -200,6 +206,7 @@ export class ComputeSession {
         this.updateSource();
         const t2 = performance.now();
         root.dataset.reportMs = (t1 - t0).toFixed(1);
+        root.dataset.workerMs = ms.toFixed(1);
         root.dataset.renderMs = (t2 - t1).toFixed(1);
         if (this.inputAt) root.dataset.updateMs = (t2 - this.inputAt).toFixed(1);
         clearTimeout(this.simTimer);
@@ -212,8 +219,10 @@ export class ComputeSession {
     } catch (e) {
       // Superseded: a newer input is on its way. Anything else is the worker failing, which the
       // status line reports (PulabClient onFatal); never an unhandled rejection.
-      if (!(e instanceof Superseded)) console.warn('report call failed:', e);
+      superseded = e instanceof Superseded;
+      if (!superseded) console.warn('report call failed:', e);
     } finally {
+      if (!superseded) this.persist(eff);
       delete root.dataset.busy;
       this.events.busy();
     }

@@ -19,6 +19,7 @@ function formulas(base: string, angle: string): Record<string, string> {
 export const basesPanel: Panel = {
   id: 'bases',
   title: 'p_bases',
+  pure: true,
   render(el, { report, input }) {
     const conv = (report?.input.conventions ?? input.conventions ?? {}) as Record<string, string>;
     const f = formulas(conv.base ?? 'rms', conv.angle_base ?? 'pi');

@@ -26,6 +26,8 @@ let lastKey = '';
 let seq = 0;
 let timer: ReturnType<typeof setTimeout> | undefined;
 let lastCtx: PanelContext | null = null;
+/** The traces (and language) the tables show: unchanged traces are not drawn again. */
+let drawn: unknown[] = [];
 
 function st(): CodeState {
   state ??= codeStateFromSearch(location.search) ?? { code: '', target: DEFAULT_TARGET, vs: DEFAULT_VS, set: {} };
@@ -194,6 +196,9 @@ function update(el: HTMLElement, ctx: PanelContext): void {
     return;
   }
   out.classList.remove('stale');
+  const shown = [a, b, getLang()];
+  if (drawn.every((x, i) => x === shown[i]) && out.childElementCount) return;
+  drawn = shown;
   const diff = b ? differingVars(a.vars, b.vars) : [];
   out.replaceChildren(
     b ? h('p', { class: `code-summary${diff.length ? ' differs' : ''}`, 'data-differ': String(diff.length) },
@@ -228,6 +233,9 @@ function loadExamples(ctx: PanelContext): void {
   }, () => undefined);
 }
 
+/** What the panel's controls were last built for; a new report alone only refreshes its numbers. */
+let builtFor = '';
+
 export const codePanel: Panel = {
   id: 'code',
   title: 'p_code',
@@ -236,6 +244,15 @@ export const codePanel: Panel = {
     lastCtx = ctx;
     const s = st();
     loadExamples(ctx);
+    // Rebuilding the editor reads its scroll position, which forces a layout of the whole page:
+    // on a new report (every keystroke in the form) only the inputs and the trace are refreshed.
+    const key = JSON.stringify([getLang(), examples?.length ?? -1, targets, s.target, s.vs]);
+    if (builtFor === key && el.querySelector('.code-panel')) {
+      update(el, ctx);
+      compute(ctx, ctx.report ? 0 : 400);
+      return;
+    }
+    builtFor = key;
     const focused = document.activeElement instanceof HTMLElement && el.contains(document.activeElement) ? (document.activeElement as HTMLInputElement).name : null;
     const area = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');
     const sel = area ? [area.selectionStart, area.selectionEnd, area.scrollTop] : null;
@@ -246,6 +263,7 @@ export const codePanel: Panel = {
         options.map(([v, l]) => h('option', { value: v, selected: v === value }, l)));
     const changed = () => {
       compute(ctx);
+      builtFor = '';
       codePanel.render(el, ctx);
     };
     el.replaceChildren(

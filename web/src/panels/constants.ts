@@ -6,6 +6,7 @@ import type { Panel } from './panel';
 export const constantsPanel: Panel = {
   id: 'constants',
   title: 'p_constants',
+  pure: true,
   render(el, { report }) {
     const cs = report?.constants ?? {};
     const keys = Object.keys(cs).length ? Object.keys(cs) : ['18597', '3678', '2316'];

@@ -15,6 +15,7 @@ function get(obj: unknown, path: string): unknown {
 export const conventionsPanel: Panel = {
   id: 'conventions',
   title: 'p_conventions',
+  pure: true,
   render(el, { report, input }) {
     el.replaceChildren(
       ...GROUPS.map((g) => {

@@ -12,6 +12,7 @@ const MECH_UNIT: Record<string, string> = {
 export const datasheetPanel: Panel = {
   id: 'datasheet',
   title: 'p_datasheet',
+  pure: true,
   render(el, { report }) {
     const conv = report?.datasheet?.conversions ?? [];
     const mech = report?.mechanical;

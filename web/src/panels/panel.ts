@@ -27,6 +27,9 @@ export interface Panel {
   needsPython?: boolean;
   /** Shows simulation results: the simulation runtime starts only if a shown panel has this. */
   usesSim?: boolean;
+  /** Its render reads only the context and writes only into `el` (no state of its own), so the
+   * layout may also render it into a scratch element (Layout.warmUp). */
+  pure?: boolean;
   /** Render into `el` (called on every new report and on a language switch). */
   render(el: HTMLElement, ctx: PanelContext): void;
 }

@@ -19,6 +19,7 @@ const PSI_R = (conv: 'rms' | 'peak'): string => conv === 'rms'
 export const puPanel: Panel = {
   id: 'pu',
   title: 'p_pu',
+  pure: true,
   render(el, { report }) {
     el.replaceChildren(
       h('p', { class: 'note' }, tex('u_d^* = R_s^* i_d^* + L_d^* \\frac{di_d^*}{dt^*} - \\omega_e^* L_q^* i_q^*'), ' ', h('span', { class: 'cite' }, t('seedCite', { n: '1.2-2' }))),

@@ -61,6 +61,7 @@ export function markFindings(root: ParentNode, findings: Finding[]): void {
 export const reviewPanel: Panel = {
   id: 'review',
   title: 'p_review',
+  pure: true,
   render(el, ctx) {
     const report = ctx.report;
     if (!report?.review) {

@@ -81,6 +81,7 @@ function traceBlock(name: string, v: VendorResult | undefined): HTMLElement {
 export const vendorPanel: Panel = {
   id: 'vendor',
   title: 'p_vendor',
+  pure: true,
   render(el, { report }) {
     const vd = report?.vendor;
     const raw = vd?.raw ?? {};
