@@ -7,11 +7,11 @@
 // Each boot is printed in phases (ms since navigation) from <html data-t-…> marks.
 // BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=cold,warm,share,nosnap,embeds,input
 // picks scenarios (nosnap: cold with the snapshot refused, the fallback boot).
-import { existsSync, readFileSync, readdirSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { join } from 'node:path';
-import { loadavg } from 'node:os';
+import { loadavg, tmpdir } from 'node:os';
 import { serve } from './serve.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
@@ -29,10 +29,8 @@ const { server, url } = await serve(DIST, '/bench/');
 // The fallback boot: the same build with its snapshot refused (404).
 const nosnap = await serve(DIST, '/bench/', 0, { refuse: /snapshot-.*\.bin$/ });
 const load0 = loadavg();
-const browser = await chromium.launch({
-  executablePath: CHROMIUM,
-  args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
-});
+const CHROMIUM_ARGS = ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'];
+let browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
 const q = (a, f) => [...a].sort((x, y) => x - y)[Math.min(a.length - 1, Math.floor(f * a.length))];
 const stat = (a) => (a.some((x) => x === Infinity) ? `> 240 s in ${a.filter((x) => x === Infinity).length} of ${a.length} runs` : a.length ? `${q(a, 0.5).toFixed(0)} ms (${Math.min(...a).toFixed(0)}–${Math.max(...a).toFixed(0)})` : 'n/a');
 const PHASES = ['app', 'numbers', 'bootRuntime', 'bootSnapshot', 'bootFiles', 'bootImport', 'bootReady', 'live'];
@@ -104,8 +102,11 @@ if (SCEN.has('nosnap')) {
   report('default page, cold, no snapshot', runs);
 }
 
-/** PSS (kB) summed over this process's descendants (the browser and its renderers, GPU, utility). */
-function pssOfChildren() {
+/**
+ * PSS (kB) summed over the Chromium started by this process whose command line contains `mark`
+ * (a browser's --user-data-dir), and its descendants (renderers, GPU, utility).
+ */
+function pssOfBrowser(mark) {
   const ppid = new Map();
   for (const d of readdirSync('/proc')) {
     if (!/^\d+$/.test(d)) continue;
@@ -114,13 +115,13 @@ function pssOfChildren() {
       ppid.set(Number(d), Number(s.slice(s.lastIndexOf(')') + 2).split(' ')[1]));
     } catch { /* gone */ }
   }
-  const mine = new Set([process.pid]);
+  const cmdline = (pid) => { try { return readFileSync(`/proc/${pid}/cmdline`, 'utf8'); } catch { return ''; } };
+  const mine = new Set([...ppid].filter(([pid, pp]) => pp === process.pid && cmdline(pid).includes(mark)).map(([pid]) => pid));
   let grew = true;
   while (grew) {
     grew = false;
     for (const [pid, pp] of ppid) if (!mine.has(pid) && mine.has(pp)) { mine.add(pid); grew = true; }
   }
-  mine.delete(process.pid);
   let kb = 0;
   for (const pid of mine) {
     try {
@@ -131,38 +132,63 @@ function pssOfChildren() {
   return { kb, processes: mine.size };
 }
 
-if (SCEN.has('embeds')) {
+/**
+ * 6 different ?embed= iframes on one host page, in a fresh browser context: runtimes started,
+ * time to first and to all-live numbers, PSS of every Chromium process 3 s after all are live.
+ */
+async function embedsRun(ctx, cdp, mark) {
   const panels = ['bases', 'pu', 'vendor', 'constants', 'current', 'pll'];
   const host = `<!doctype html><meta charset="utf-8"><title>embeds</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="900" height="400"></iframe>`).join('')}`;
-  const runs = [];
+  await ctx.route(`${url}embed-host.html`, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
+  const workers = new Set();
+  cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
+    if (t.type === 'shared_worker' || t.type === 'worker') workers.add(t.targetId);
+  });
+  await cdp.send('Target.setDiscoverTargets', { discover: true });
+  const p = ctx.pages()[0] ?? await ctx.newPage();
+  const t0 = Date.now();
+  await p.goto(`${url}embed-host.html`, { waitUntil: 'commit' });
+  await p.waitForFunction(() => document.querySelectorAll('iframe').length === 6);
+  const frames = () => p.frames().filter((f) => f !== p.mainFrame());
+  while (frames().length < 6) await p.waitForTimeout(20);
+  const first = await Promise.all(frames().map((f) => f.waitForFunction(() => /^(build|cached|live)$/.test(document.documentElement.dataset.numbers ?? '') || !!document.querySelector('[data-key][data-value]'), null, { timeout: 240_000, polling: 20 }))).then(() => Date.now() - t0, () => Infinity);
+  // A build that starts 12 runtimes may not get there under load: recorded as not live.
+  const live = await Promise.all(frames().map((f) => f.waitForFunction(isLive, null, { timeout: 240_000, polling: 20 })))
+    .then(() => Date.now() - t0, () => Infinity);
+  await p.waitForTimeout(3000); // simulations of the plot panels
+  const mem = pssOfBrowser(mark);
+  await cdp.send('Target.setDiscoverTargets', { discover: false });
+  await cdp.detach();
+  return { first, live, runtimes: workers.size, pssMB: mem.kb / 1024, processes: mem.processes };
+}
+function reportEmbeds(name, runs) {
+  console.log(`page: 6 ?embed= iframes, cold, ${name.padEnd(22)} first numbers ${stat(runs.map((r) => r.first))}   all live ${stat(runs.map((r) => r.live))}`);
+  console.log(`      Python runtimes (workers) started ${runs.map((r) => r.runtimes).join(', ')};  PSS of all Chromium processes ${stat(runs.map((r) => r.pssMB)).replace(/ ms/g, '')} MB (${runs[0].processes} processes)`);
+}
+
+if (SCEN.has('embeds')) {
+  // A user's browser: a fresh profile on disk (its HTTP cache and the offline cache on disk).
+  // Alone: another Chromium would share (and halve the PSS of) the binary's pages.
+  await browser.close();
+  const disk = [];
+  for (let i = 0; i < RUNS; i++) {
+    const dir = mkdtempSync(join(tmpdir(), 'pulab-bench-profile-'));
+    const ctx = await chromium.launchPersistentContext(dir, { executablePath: CHROMIUM, args: CHROMIUM_ARGS, viewport: { width: 1366, height: 768 } });
+    disk.push(await embedsRun(ctx, await ctx.newCDPSession(ctx.pages()[0]), dir));
+    await ctx.close();
+    rmSync(dir, { recursive: true, force: true });
+  }
+  reportEmbeds('fresh profile on disk', disk);
+  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  // An incognito-like context (Playwright's default, the other scenarios): the browser keeps the
+  // HTTP cache and the offline cache (≈ 45 MB of runtime files) in memory.
+  const otr = [];
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();
-    await ctx.route(`${url}embed-host.html`, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
-    const cdp = await browser.newBrowserCDPSession();
-    const workers = new Set();
-    cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
-      if (t.type === 'shared_worker' || t.type === 'worker') workers.add(t.targetId);
-    });
-    await cdp.send('Target.setDiscoverTargets', { discover: true });
-    const p = await ctx.newPage();
-    const t0 = Date.now();
-    await p.goto(`${url}embed-host.html`, { waitUntil: 'commit' });
-    await p.waitForFunction(() => document.querySelectorAll('iframe').length === 6);
-    const frames = () => p.frames().filter((f) => f !== p.mainFrame());
-    while (frames().length < 6) await p.waitForTimeout(20);
-    const first = await Promise.all(frames().map((f) => f.waitForFunction(() => /^(build|cached|live)$/.test(document.documentElement.dataset.numbers ?? '') || !!document.querySelector('[data-key][data-value]'), null, { timeout: 240_000, polling: 20 }))).then(() => Date.now() - t0, () => Infinity);
-    // A build that starts 12 runtimes may not get there under load: recorded as not live.
-    const live = await Promise.all(frames().map((f) => f.waitForFunction(isLive, null, { timeout: 240_000, polling: 20 })))
-      .then(() => Date.now() - t0, () => Infinity);
-    await p.waitForTimeout(3000); // simulations of the plot panels
-    const mem = pssOfChildren();
-    runs.push({ first, live, runtimes: workers.size, pssMB: mem.kb / 1024, processes: mem.processes });
-    await cdp.send('Target.setDiscoverTargets', { discover: false });
-    await cdp.detach();
+    otr.push(await embedsRun(ctx, await browser.newBrowserCDPSession(), 'playwright_chromium'));
     await ctx.close();
   }
-  console.log(`page: 6 ?embed= iframes, cold          first numbers ${stat(runs.map((r) => r.first))}   all live ${stat(runs.map((r) => r.live))}`);
-  console.log(`      Python runtimes (workers) started ${runs.map((r) => r.runtimes).join(', ')};  PSS of all Chromium processes ${stat(runs.map((r) => r.pssMB)).replace(/ ms/g, '')} MB (${runs[0].processes} processes)`);
+  reportEmbeds('incognito context', otr);
 }
 
 if (SCEN.has('input')) {
