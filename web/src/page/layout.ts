@@ -11,6 +11,15 @@ import type { ComputeSession } from './session';
 /** Numbers later than this after an edit are faded as outdated (ms). */
 const OUTDATED_MS = 300;
 
+/** The review's errors and warnings at the top of the page (notes only in its panel). */
+function warnings(ctx: PanelContext): HTMLElement[] {
+  const all = allFindings(ctx);
+  const serious = all.filter((f) => f.severity !== 'note');
+  return ctx.report && serious.length ? [
+    h('strong', {}, `${t('p_review')}: `), h('a', { href: '#panel-review', class: 'counts' }, reviewCounts(all)),
+    h('ul', { class: 'findings' }, serious.map(findingItem))] : [];
+}
+
 export class Layout {
   private panelEls = new Map<PanelId, HTMLElement>();
   private outdatedTimer: ReturnType<typeof setTimeout> | undefined;
@@ -102,15 +111,7 @@ export class Layout {
     // <html data-render-slowest>: the three slowest panels of the last render (the bench prints them).
     document.documentElement.dataset.renderSlowest = took.sort((a, b) => b[1] - a[1]).slice(0, 3).map(([id, ms]) => `${id} ${ms.toFixed(1)}`).join(', ');
     const w = this.root.querySelector('.warnings');
-    const r = ctx.report;
-    if (w && (!only || only.length === 0 || only.includes('review'))) {
-      // The review's errors and warnings at the top of the page (notes only in its panel).
-      const all = allFindings(ctx);
-      const serious = all.filter((f) => f.severity !== 'note');
-      w.replaceChildren(...(r && serious.length ? [
-        h('strong', {}, `${t('p_review')}: `), h('a', { href: '#panel-review', class: 'counts' }, reviewCounts(all)),
-        h('ul', { class: 'findings' }, serious.map(findingItem))] : []));
-    }
+    if (w && (!only || only.length === 0 || only.includes('review'))) w.replaceChildren(...warnings(ctx));
     markFindings(this.root, allFindings(ctx));
   }
 
@@ -124,7 +125,7 @@ export class Layout {
   warmUp(ctx: PanelContext): void {
     const host = this.root.querySelector('main.panels');
     if (!host) return;
-    const box = h('div', { class: 'warmup', 'aria-hidden': 'true' });
+    const box = h('div', { class: 'warmup', 'aria-hidden': 'true' }, h('div', { class: 'warnings' }, warnings(ctx)));
     for (const p of this.panels()) {
       if (!p.pure) continue;
       const body = h('div', { class: 'panel-body' });
