@@ -44,7 +44,11 @@ export class App {
     setLang(langParam === 'zh' || langParam === 'en' ? langParam : defaultLang(navigator.languages, load(LANG_KEY)));
     this.init = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY));
     this.session = new ComputeSession(this.init.input, this.embed !== null, {
-      report: (same) => (same ? this.renderPanels(PYTHON_PANELS) : this.renderPanels()),
+      report: (same) => {
+        if (same) this.renderPanels(PYTHON_PANELS);
+        else this.renderPanels();
+        if (this.session.source === 'live') this.layout.settle();
+      },
       sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),

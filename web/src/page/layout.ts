@@ -23,6 +23,7 @@ function warnings(ctx: PanelContext): HTMLElement[] {
 export class Layout {
   private panelEls = new Map<PanelId, HTMLElement>();
   private outdatedTimer: ReturnType<typeof setTimeout> | undefined;
+  private settling = false;
 
   private near: IntersectionObserver | null = null;
   private onNear: (() => void) | null = null;
@@ -113,6 +114,19 @@ export class Layout {
     const w = this.root.querySelector('.warnings');
     if (w && (!only || only.length === 0 || only.includes('review'))) w.replaceChildren(...warnings(ctx));
     markFindings(this.root, allFindings(ctx));
+  }
+
+  /** After the first live numbers: lay out the panels off screen too, once the page is idle (style.css). */
+  settle(): void {
+    const panels = this.root.querySelector('main.panels');
+    if (!panels || panels.classList.contains('settled') || this.settling) return;
+    this.settling = true;
+    const go = (): void => {
+      this.settling = false;
+      this.root.querySelector('main.panels')?.classList.add('settled');
+    };
+    if (typeof requestIdleCallback === 'function') requestIdleCallback(go, { timeout: 2000 });
+    else setTimeout(go, 500);
   }
 
   /**
