@@ -100,7 +100,7 @@ export default async function instantStart(ctx) {
     await page.context().close();
   });
 
-  await check('a new report patches the pure panels in place: the same elements show the new numbers, the rest is untouched', async () => {
+  await check('a new report patches the pure panels in place: the same elements show the new numbers, the rest is untouched; once idle every panel is laid out', async () => {
     const page = await newPage();
     await page.goto(ctx.subSrv.url);
     await numbersIs(page, 'live', 60_000);
@@ -118,6 +118,10 @@ export default async function instantStart(ctx) {
       document.querySelector('#panel-bases .tex').pulabProbe]);
     assert(JSON.stringify(kept) === JSON.stringify(['base.Z_b', 'base.U_b', 'tex']), `elements replaced: ${JSON.stringify(kept)}`);
     assert(await compareShown(page, want) >= 100, 'patched numbers');
+    // Once idle after live numbers, no panel is skipped any more (full-page screenshots, printing).
+    await page.waitForSelector('main.panels.settled', { timeout: 10_000 });
+    const skipped = await page.$$eval('section.panel', (els) => els.filter((e) => getComputedStyle(e).contentVisibility !== 'visible').map((e) => e.id));
+    assert(skipped.length === 0, `panels still skipped: ${skipped}`);
     await page.context().close();
   });
 
