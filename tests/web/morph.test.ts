@@ -1,0 +1,62 @@
+// @vitest-environment happy-dom
+// dom.morph (issue 8): a new report patches a pure panel in place. Named by what is rendered
+// before and after, and what must hold of the patched DOM.
+import { describe, expect, it } from 'vitest';
+import { h, morph } from '../../web/src/dom';
+
+/** Render `before` into a host, then morph it to `after`; returns the host and its old first child. */
+function patch(before: () => HTMLElement[], after: () => HTMLElement[]): { host: HTMLElement; first: ChildNode | null } {
+  const host = h('div', {}, ...before());
+  const first = host.firstChild;
+  morph(host, h('div', {}, ...after()));
+  return { host, first };
+}
+
+describe('morph: the host ends up equal to the new render', () => {
+  it.each([
+    ['a changed number', () => [h('p', {}, h('span', { 'data-key': 'a', 'data-value': '1' }, '1'))], () => [h('p', {}, h('span', { 'data-key': 'a', 'data-value': '2' }, '2'))]],
+    ['an attribute added and one removed', () => [h('span', { class: 'x', title: 't' }, 'v')], () => [h('span', { class: 'y', 'data-value': '3' }, 'v')]],
+    ['rows appended', () => [h('table', {}, h('tr', {}, 'r1'))], () => [h('table', {}, h('tr', {}, 'r1'), h('tr', {}, 'r2'), h('tr', {}, 'r3'))]],
+    ['rows removed', () => [h('ul', {}, h('li', {}, 'a'), h('li', {}, 'b'), h('li', {}, 'c'))], () => [h('ul', {}, h('li', {}, 'a'))]],
+    ['another tag at the same place', () => [h('p', {}, 'x'), h('span', {}, 'y')], () => [h('p', {}, 'x'), h('div', {}, 'y'), h('b', {}, 'z')]],
+    ['text and elements interleaved', () => [h('p', {}, 'a', h('b', {}, '1'), 'c')], () => [h('p', {}, 'A', h('i', {}, '1'), 'c', 'd')]],
+    ['everything removed', () => [h('p', {}, 'x'), h('p', {}, 'y')], () => []],
+  ])('%s', (_name, before, after) => {
+    const { host } = patch(before, after);
+    expect(host.innerHTML).toBe(h('div', {}, ...after()).innerHTML);
+  });
+});
+
+describe('morph: what is kept, replaced or skipped', () => {
+  it('a changed number: the same element, the new text and data-value', () => {
+    const { host, first } = patch(
+      () => [h('span', { 'data-key': 'base.Z_b', 'data-value': '11.3' }, '11.3')],
+      () => [h('span', { 'data-key': 'base.Z_b', 'data-value': '5.66' }, '5.66')]);
+    expect(host.firstChild).toBe(first);
+    expect((host.firstChild as HTMLElement).dataset.value).toBe('5.66');
+  });
+  it('a form control is replaced, not patched (it keeps what the user did to it otherwise)', () => {
+    const { host, first } = patch(() => [h('input', { name: 'a', value: '1' })], () => [h('input', { name: 'a', value: '2' })]);
+    expect(host.firstChild).not.toBe(first);
+    expect((host.firstChild as HTMLInputElement).getAttribute('value')).toBe('2');
+  });
+  it('equal data-tex (the same cached formula): the subtree is not walked', () => {
+    const { host } = patch(() => [h('span', { 'data-tex': 'Ix' }, 'old render')], () => [h('span', { 'data-tex': 'Ix' }, 'new render')]);
+    expect(host.textContent).toBe('old render');
+  });
+  it('an equal element with a handler: kept, and a click runs the new handler', () => {
+    const calls: string[] = [];
+    const { host, first } = patch(
+      () => [h('p', {}, h('button', { onclick: () => calls.push('old report') }, 'copy'))],
+      () => [h('p', {}, h('button', { onclick: () => calls.push('new report') }, 'copy'))]);
+    expect(host.firstChild).toBe(first);
+    (host.querySelector('button') as HTMLButtonElement).click();
+    expect(calls).toEqual(['new report']);
+  });
+  it('a handler that the new render no longer has is gone', () => {
+    const calls: string[] = [];
+    const { host } = patch(() => [h('a', { onclick: () => calls.push('old') }, 'x')], () => [h('a', {}, 'x')]);
+    (host.querySelector('a') as HTMLElement).click();
+    expect(calls).toEqual([]);
+  });
+});
