@@ -209,6 +209,7 @@ export class InputForm {
 
   private syncPresetSelect(): void {
     const sel = this.root.querySelector<HTMLSelectElement>('select[name="preset"]');
-    if (sel) sel.value = PRESETS.find((p) => this.matchesPreset(p.input))?.id ?? '';
+    const id = PRESETS.find((p) => this.matchesPreset(p.input))?.id ?? '';
+    if (sel && sel.value !== id) sel.value = id;
   }
 }

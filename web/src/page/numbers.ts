@@ -67,5 +67,9 @@ export function keepReport(key: string, report: Report): void {
 }
 
 export function showSource(source: NumbersSource): void {
-  document.documentElement.dataset.numbers = source;
+  const root = document.documentElement;
+  root.dataset.numbers = source;
+  // Build or cached numbers on screen (dashed panels): a class that changes only when that does.
+  const prelive = source === 'build' || source === 'cached';
+  if (root.classList.contains('prelive-numbers') !== prelive) root.classList.toggle('prelive-numbers', prelive);
 }
