@@ -122,6 +122,10 @@ export default async function instantStart(ctx) {
     await page.waitForSelector('main.panels.settled', { timeout: 10_000 });
     const skipped = await page.$$eval('section.panel', (els) => els.filter((e) => getComputedStyle(e).contentVisibility !== 'visible').map((e) => e.id));
     assert(skipped.length === 0, `panels still skipped: ${skipped}`);
+    // A language switch builds the page again: still every panel laid out.
+    await page.click('.lang button:has-text("中文")');
+    await page.waitForSelector('html[lang="zh-CN"]');
+    assert(await page.$('main.panels.settled') !== null, 'the page built again skips panels off screen');
     await page.context().close();
   });
 

@@ -23,7 +23,7 @@ function warnings(ctx: PanelContext): HTMLElement[] {
 export class Layout {
   private panelEls = new Map<PanelId, HTMLElement>();
   private outdatedTimer: ReturnType<typeof setTimeout> | undefined;
-  private settling = false;
+  private settled: 'no' | 'pending' | 'yes' = 'no';
 
   private near: IntersectionObserver | null = null;
   private onNear: (() => void) | null = null;
@@ -71,7 +71,7 @@ export class Layout {
       this.root.replaceChildren(
         chrome,
         h('div', { class: 'inputs', hidden: true }),
-        h('main', { class: 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), ...sections),
+        h('main', { class: this.settled === 'yes' ? 'panels settled' : 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), ...sections),
         h('div', { class: 'toast' }),
       );
       return;
@@ -87,7 +87,7 @@ export class Layout {
         h('aside', { class: 'inputs' }),
         h('div', { class: 'content' },
           h('nav', { class: 'tabs' }, panels.map((p) => h('a', { href: `#panel-${p.id}`, 'data-nav': p.id }, t(`nav_${p.id}` as Key)))),
-          h('main', { class: 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), h('div', { class: 'warnings' }), ...body))),
+          h('main', { class: this.settled === 'yes' ? 'panels settled' : 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), h('div', { class: 'warnings' }), ...body))),
       h('div', { class: 'toast' }),
     );
   }
@@ -116,13 +116,13 @@ export class Layout {
     markFindings(this.root, allFindings(ctx));
   }
 
-  /** After the first live numbers: lay out the panels off screen too, once the page is idle (style.css). */
+  /** After the first live numbers: lay out the panels off screen too, once the page is idle
+   * (style.css); a page built again later (a language switch) starts settled. */
   settle(): void {
-    const panels = this.root.querySelector('main.panels');
-    if (!panels || panels.classList.contains('settled') || this.settling) return;
-    this.settling = true;
+    if (this.settled !== 'no') return;
+    this.settled = 'pending';
     const go = (): void => {
-      this.settling = false;
+      this.settled = 'yes';
       this.root.querySelector('main.panels')?.classList.add('settled');
     };
     if (typeof requestIdleCallback === 'function') requestIdleCallback(go, { timeout: 2000 });
