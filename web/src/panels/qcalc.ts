@@ -1,7 +1,7 @@
 // Standalone Q-format calculator: every result comes from pulab.api.qcalc_json in the worker.
 import { h, num, table, flagChips } from '../dom';
 import { parseNumber } from '../format';
-import { errText, t } from '../i18n';
+import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
 
 export interface QcalcState {
@@ -64,6 +64,9 @@ function compute(el: HTMLElement, ctx: PanelContext): void {
   }, () => undefined);
 }
 
+/** What the panel was last drawn with (language, result, form state, runtime). */
+let drawn: unknown[] = [];
+
 export const qcalcPanel: Panel = {
   id: 'qcalc',
   needsPython: true,
@@ -73,6 +76,10 @@ export const qcalcPanel: Panel = {
       last = { ok: true };
       compute(el, ctx);
     }
+    // Nothing here depends on the report: a new one (every keystroke in the form) changes nothing.
+    const shows = [getLang(), last, JSON.stringify(qstate), ctx.client];
+    if (el.firstChild && drawn.length === shows.length && shows.every((x, i) => x === drawn[i])) return;
+    drawn = shows;
     const on = (k: keyof QcalcState) => (ev: Event) => {
       (qstate as unknown as Record<string, string>)[k] = (ev.target as HTMLInputElement).value;
       compute(el, ctx);
