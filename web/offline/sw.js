@@ -14,20 +14,8 @@ const SCOPE = new URL(self.registration.scope);
 // never copied into the cache again on each visit (30 MB).
 const HASHED = /\/(assets\/[^/]+-[A-Za-z0-9_-]{8,}\.[a-z0-9]+|pyodide\/snapshot-[0-9a-f]{12}\.bin)$/;
 
-// One file at a time: addAll fetched the whole build (≈ 45 MB with the snapshot) at once, and the
-// browser held it in memory while the page was being used. A failed install leaves no half cache.
-async function precache() {
-  const c = await caches.open(CACHE);
-  try {
-    for (const f of FILES) await c.add(new URL(f, SCOPE).href);
-  } catch (e) {
-    await caches.delete(CACHE);
-    throw e;
-  }
-}
-
 self.addEventListener('install', (ev) => {
-  ev.waitUntil(precache().then(() => self.skipWaiting()));
+  ev.waitUntil(caches.open(CACHE).then((c) => c.addAll(FILES.map((f) => new URL(f, SCOPE).href))).then(() => self.skipWaiting()));
 });
 
 self.addEventListener('activate', (ev) => {
