@@ -118,6 +118,26 @@ function patchElement(o: Element, n: Element): void {
   morph(o, n);
 }
 
+/** The same items, each the same (===): what a panel drew with has not changed. */
+export function sameItems(a: readonly unknown[], b: readonly unknown[]): boolean {
+  return a.length === b.length && a.every((x, i) => x === b[i]);
+}
+
+/** The name of the input inside `el` that has the focus (before `el` is rebuilt), or null. */
+export function focusedInput(el: HTMLElement): string | null {
+  const a = document.activeElement;
+  return a instanceof HTMLInputElement && el.contains(a) ? a.name : null;
+}
+
+/** After `el` was rebuilt: the focus back in the input named `name`, the caret at its end. */
+export function refocus(el: HTMLElement, name: string | null): void {
+  const again = name ? el.querySelector<HTMLInputElement>(`input[name="${name}"]`) : null;
+  if (!again) return;
+  again.focus();
+  const n = again.value.length;
+  again.setSelectionRange(n, n);
+}
+
 /** Flags as coloured chips with a tooltip. */
 export function flagChips(flags: unknown): HTMLElement {
   const list = Array.isArray(flags) ? (flags as string[]) : [];

@@ -1,7 +1,7 @@
 // "Your code": paste C scaling code, pick a target (and one to compare with), and see every
 // intermediate integer with its C type, hex and flags. Everything comes from
 // pulab.api.trace_json in the worker; the state lives in the URL query (code-share.ts).
-import { flagChips, h, table } from '../dom';
+import { flagChips, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
@@ -197,7 +197,7 @@ function update(el: HTMLElement, ctx: PanelContext): void {
   }
   out.classList.remove('stale');
   const shown = [a, b, getLang()];
-  if (drawn.every((x, i) => x === shown[i]) && out.childElementCount) return;
+  if (sameItems(shown, drawn) && out.childElementCount) return;
   drawn = shown;
   const diff = b ? differingVars(a.vars, b.vars) : [];
   out.replaceChildren(

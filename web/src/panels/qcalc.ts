@@ -1,5 +1,5 @@
 // Standalone Q-format calculator: every result comes from pulab.api.qcalc_json in the worker.
-import { h, num, table, flagChips } from '../dom';
+import { flagChips, focusedInput, h, num, refocus, sameItems, table } from '../dom';
 import { parseNumber } from '../format';
 import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
@@ -78,7 +78,7 @@ export const qcalcPanel: Panel = {
     }
     // Nothing here depends on the report: a new one (every keystroke in the form) changes nothing.
     const shows = [getLang(), last, JSON.stringify(qstate), ctx.client];
-    if (el.firstChild && drawn.length === shows.length && shows.every((x, i) => x === drawn[i])) return;
+    if (el.firstChild && sameItems(shows, drawn)) return;
     drawn = shows;
     const on = (k: keyof QcalcState) => (ev: Event) => {
       (qstate as unknown as Record<string, string>)[k] = (ev.target as HTMLInputElement).value;
@@ -91,7 +91,7 @@ export const qcalcPanel: Panel = {
     const f = last?.ok ? last.format : undefined;
     const res = last?.ok ? last.result : undefined;
     const otherErr = last && !last.ok && !['qcalc.value', 'qcalc.raw', 'qcalc.format', 'qcalc.word_bits'].includes(last.field ?? '') ? errText(last) : null;
-    const focused = document.activeElement instanceof HTMLInputElement && el.contains(document.activeElement) ? document.activeElement.name : null;
+    const focused = focusedInput(el);
     el.replaceChildren(
       h('div', { class: 'qcalc' },
         h('div', { class: 'qform' },
@@ -116,13 +116,6 @@ export const qcalcPanel: Panel = {
             [t('flags'), flagChips(res?.flags)],
           ], 'qtable'))),
     );
-    if (focused) {
-      const again = el.querySelector<HTMLInputElement>(`input[name="${focused}"]`);
-      if (again) {
-        again.focus();
-        const n = again.value.length;
-        again.setSelectionRange(n, n);
-      }
-    }
+    refocus(el, focused);
   },
 };
