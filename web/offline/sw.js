@@ -31,19 +31,24 @@ self.addEventListener('fetch', (ev) => {
   ev.respondWith(HASHED.test(url.pathname) ? cacheFirst(req) : networkFirst(req));
 });
 
+// Never caches.open(CACHE) outside install: a worker that a new version has replaced may still be
+// answering a request when the new one deletes its cache, and open() would create that cache again
+// (a CI run kept the old version's cache for good that way).
 async function fromCache(req) {
-  const cache = await caches.open(CACHE);
-  const hit = await cache.match(req, { ignoreSearch: true });
+  const hit = await caches.match(req, { cacheName: CACHE, ignoreSearch: true });
   if (hit || req.mode !== 'navigate') return hit;
-  return cache.match(new URL('index.html', SCOPE).href);
+  return caches.match(new URL('index.html', SCOPE).href, { cacheName: CACHE });
+}
+
+async function store(req, res) {
+  if (await caches.has(CACHE)) await (await caches.open(CACHE)).put(req, res);
 }
 
 async function networkFirst(req) {
   try {
     const res = await fetch(req);
     if (res.ok && !res.redirected) {
-      const copy = res.clone();
-      void caches.open(CACHE).then((c) => c.put(req, copy)).catch(() => undefined);
+      void store(req, res.clone()).catch(() => undefined);
     }
     return res;
   } catch (e) {
