@@ -59,4 +59,16 @@ describe('morph: what is kept, replaced or skipped', () => {
     (host.querySelector('a') as HTMLElement).click();
     expect(calls).toEqual([]);
   });
+  it('the same data-keep (a figure its panel draws): the old element and its drawing stay', () => {
+    const drawn = h('div', { class: 'figure', 'data-keep': 'plot' }, h('svg', {}, 'curve'));
+    const host = h('div', {}, h('p', {}, '1'), drawn);
+    morph(host, h('div', {}, h('p', {}, '2'), h('div', { class: 'figure', 'data-keep': 'plot' })));
+    expect(host.lastChild).toBe(drawn);
+    expect(host.innerHTML).toBe('<p>2</p><div class="figure" data-keep="plot"><svg>curve</svg></div>');
+  });
+  it('another data-keep at that place: patched like any element (the new, empty figure)', () => {
+    const host = h('div', {}, h('div', { 'data-keep': 'bode-pll' }, 'drawn'));
+    morph(host, h('div', {}, h('div', { 'data-keep': 'bode-speed' })));
+    expect(host.innerHTML).toBe('<div data-keep="bode-speed"></div>');
+  });
 });

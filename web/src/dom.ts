@@ -74,7 +74,8 @@ const REPLACED = new Set(['INPUT', 'SELECT', 'TEXTAREA', 'OPTION', 'DETAILS', 'I
  * and only changed text and attributes are written, so a new report costs the browser a layout of
  * the numbers that changed instead of the whole panel (issue 8: input → numbers). Elements with
  * equal `data-tex` (the same cached formula) are not descended into; form controls are replaced;
- * elements with handlers carry `data-on` (their event types) and get the new handlers.
+ * elements with handlers carry `data-on` (their event types) and get the new handlers; an element
+ * with the same `data-keep` as the old one (a figure its panel draws itself) is kept as it is.
  */
 export function morph(old: Element, fresh: Element): void {
   let o = old.firstChild;
@@ -87,6 +88,12 @@ export function morph(old: Element, fresh: Element): void {
       const oNext = o.nextSibling;
       if (o.nodeType !== n.nodeType || o.nodeName !== n.nodeName || REPLACED.has(n.nodeName)) old.replaceChild(n, o);
       else if (o instanceof Element) {
+        const keep = (n as Element).getAttribute('data-keep');
+        if (keep !== null && keep === o.getAttribute('data-keep')) {
+          o = oNext;
+          n = next;
+          continue;
+        }
         // An equal subtree (the usual case: most of a panel is unchanged) is left alone, unless
         // it holds handlers (`data-on`), which must be the new ones (they may close over the report).
         if (!o.isEqualNode(n) || (n as Element).matches('[data-on], :has([data-on])')) patchElement(o, n as Element);
@@ -116,6 +123,12 @@ function patchElement(o: Element, n: Element): void {
   } else handlers.delete(o);
   if (tex !== null && tex === o.getAttribute('data-tex')) return;
   morph(o, n);
+}
+
+/** Show `children` in `el`, patched in place (morph) when `el` already shows something. */
+export function patch(el: HTMLElement, ...children: Child[]): void {
+  if (!el.firstChild) return append(el, children);
+  morph(el, h('div', {}, children));
 }
 
 /** The same items, each the same (===): what a panel drew with has not changed. */

@@ -1,6 +1,6 @@
 // Shared by the figures: Plotly loaded lazily as its own chunk, one common look.
-import { h } from '../dom';
-import { t } from '../i18n';
+import { h, patch } from '../dom';
+import { getLang, t } from '../i18n';
 import type { PanelContext } from '../panels/panel';
 
 type PlotlyT = typeof import('plotly.js-basic-dist-min').default;
@@ -127,4 +127,29 @@ export function simPlaceholder(ctx: PanelContext): HTMLElement {
   if (!ctx.simError) return h('div', { class: 'plot-placeholder' }, t('simRunning'));
   return h('div', { class: 'sim-error', role: 'alert' }, t('simNotAvailable', { m: ctx.simError }),
     ctx.retrySim ? h('button', { type: 'button', class: 'sim-retry', onclick: ctx.retrySim }, t('retry')) : null);
+}
+
+/** What each kept figure element was last drawn with. */
+const drawnWith = new WeakMap<HTMLElement, { data: unknown; lang: string }>();
+
+/**
+ * The figure slot `name` inside `el` (an element with `data-keep="name"`, which `patch` keeps
+ * across renders): drawn by `draw` only when its data or the language changed since it was drawn,
+ * so typing re-renders a panel's numbers without touching its plot; `empty()` shown while there
+ * is no data.
+ */
+export function keptFigure(el: HTMLElement, name: string, data: unknown, draw: (fig: HTMLElement) => void, empty: () => Node | null = () => null): void {
+  const fig = el.querySelector<HTMLElement>(`[data-keep="${name}"]`);
+  if (!fig) return;
+  const was = drawnWith.get(fig);
+  const lang = getLang();
+  if (data) {
+    if (data !== was?.data || lang !== was?.lang) draw(fig);
+  } else {
+    const shown = empty();
+    // A placeholder is patched over a placeholder; a plot (with the library's own listeners) is replaced.
+    if (was && !was.data) patch(fig, shown);
+    else fig.replaceChildren(...(shown ? [shown] : []));
+  }
+  drawnWith.set(fig, { data, lang });
 }

@@ -1,6 +1,6 @@
 // The page's skeleton (full page or one embedded panel), the panels rendered into it, the
 // warnings list, and the stale marking of numbers that no longer match the form.
-import { h, morph } from '../dom';
+import { h } from '../dom';
 import { errText, t, type Key } from '../i18n';
 import type { Panel, PanelContext, PanelId } from '../panels/panel';
 import { PANELS } from '../panels/registry';
@@ -101,12 +101,7 @@ export class Layout {
       const el = this.panelEls.get(p.id);
       if (!el) continue;
       const t0 = performance.now();
-      if (p.pure && el.firstChild) {
-        // Patched in place: only the numbers that changed are laid out again.
-        const fresh = document.createElement('div');
-        p.render(fresh, ctx);
-        morph(el, fresh);
-      } else p.render(el, ctx);
+      p.render(el, ctx);
       took.push([p.id, performance.now() - t0]);
     }
     // <html data-render-slowest>: the three slowest panels of the last render (the bench prints them).

@@ -1,4 +1,4 @@
-import { h, num, table } from '../dom';
+import { h, num, patch, table } from '../dom';
 import { getLang, t } from '../i18n';
 import { fmtPct } from '../format';
 import type { Panel } from './panel';
@@ -10,7 +10,7 @@ export const constantsPanel: Panel = {
   render(el, { report }) {
     const cs = report?.constants ?? {};
     const keys = Object.keys(cs).length ? Object.keys(cs) : ['18597', '3678', '2316'];
-    el.replaceChildren(
+    patch(el, 
       table(
         [t('value'), t('expression'), t('exact'), t('relError'), t('usedIn'), t('derivation')],
         keys.map((k) => {

@@ -1,4 +1,4 @@
-import { h, num, table } from '../dom';
+import { h, num, patch, table } from '../dom';
 import { t, type Key } from '../i18n';
 import type { Panel } from './panel';
 
@@ -17,7 +17,7 @@ export const conventionsPanel: Panel = {
   title: 'p_conventions',
   pure: true,
   render(el, { report, input }) {
-    el.replaceChildren(
+    patch(el, 
       ...GROUPS.map((g) => {
         const cur = String(get(report?.input ?? input, g.path) ?? g.options[0][0]);
         return h('div', { class: 'conv' },

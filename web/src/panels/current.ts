@@ -1,11 +1,8 @@
-import { h, num, tex } from '../dom';
-import { getLang, t } from '../i18n';
-
-/** Per host element: the figure element kept across renders, and what it shows. */
-const figs = new WeakMap<HTMLElement, { fig: HTMLElement; sim: unknown; stamp: string }>();
+import { h, num, patch, tex } from '../dom';
+import { t } from '../i18n';
 import type { PiAxis } from '../report-types';
 import { renderCurrentStep } from '../figures/current-step';
-import { simPlaceholder } from '../figures/figure';
+import { keptFigure, simPlaceholder } from '../figures/figure';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
 import { traceTable } from './vendor';
@@ -46,10 +43,7 @@ export const currentPanel: Panel = {
     const ex = pi?.step_example;
     const sim = simReport?.sim?.current;
     const axis = (String((input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd') as 'd' | 'q';
-    const f = figs.get(el) ?? { fig: h('div', { class: 'figure' }), sim: null, stamp: '' };
-    figs.set(el, f);
-    const figEl = f.fig;
-    el.replaceChildren(...[
+    patch(el, ...[
       h('div', { class: 'formulas' },
         tex(DESIGN()[method] ?? DESIGN().manual, true),
         tex('k_p^{pu} = k_p\\frac{I_b}{U_b},\\ k_i^{pu} = k_i\\frac{I_b}{U_b}\\ \\text{(2.1-4)}\\qquad \\text{pm\\_kp} = \\mathrm{round}(k_p^{pu}\\,2^{12}),\\ \\text{pm\\_ki} = \\mathrm{round}(k_i^{pu}\\,T_s\\,2^{16})\\ \\text{(2.2-9)}', true)),
@@ -59,7 +53,7 @@ export const currentPanel: Panel = {
           h('tr', {}, h('th', {}, t('axis')), h('th', {}, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', { class: 'sep' }, 'kp_pu'), h('th', {}, 'ki_pu [1/s]'), h('th', { class: 'sep' }, 'pm_kp (Q12)'), h('th', {}, 'pm_ki (Q16·Ts)'), h('th', { class: 'sep' }, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', {}, `${t('impliedBw')} [Hz]`))),
         h('tbody', {}, axisRow('d', pi?.d), axisRow('q', pi?.q))),
       h('h3', {}, t('plotCurrent')),
-      figEl,
+      h('div', { class: 'figure', 'data-keep': 'current-step' }),
       sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu', 'fixed'], [
         { key: 'rise_time_s', label: 'riseTime', unit: 'ms', scale: 1e3 },
         { key: 'overshoot_pct', label: 'overshoot', unit: '%' },
@@ -70,11 +64,7 @@ export const currentPanel: Panel = {
         num('sim.current.metrics.fixed_vs_si_max_abs_a', sim.metrics.fixed_vs_si_max_abs_a, { unit: 'A' }), ' = ',
         num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' })) : null,
       ex ? h('div', { class: 'step-example' }, h('h3', {}, t('stepExample', { e: ex.error })), traceTable('current_pi.step_example.trace', ex.trace)) : null,
-    ].filter((x): x is HTMLElement => x !== null));
-    const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
-    if (sim && (sim !== f.sim || stamp !== f.stamp)) renderCurrentStep(figEl, sim, axis, ctx.report?.input.drive?.ts_s as number | undefined);
-    else if (!sim) figEl.replaceChildren(simPlaceholder(ctx));
-    f.sim = sim;
-    f.stamp = stamp;
+    ]);
+    keptFigure(el, 'current-step', sim, (fig) => renderCurrentStep(fig, sim!, axis, ctx.report?.input.drive?.ts_s as number | undefined), () => simPlaceholder(ctx));
   },
 };

@@ -1,5 +1,5 @@
 // Datasheet entry: each conversion pulab made (formula and result) and what the pole pairs give.
-import { h, num, table } from '../dom';
+import { h, num, patch, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
 import type { Panel } from './panel';
 
@@ -16,7 +16,7 @@ export const datasheetPanel: Panel = {
   render(el, { report }) {
     const conv = report?.datasheet?.conversions ?? [];
     const mech = report?.mechanical;
-    el.replaceChildren(
+    patch(el, 
       conv.length
         ? table([t('dsField'), t('quantity'), t('dsFormula'), t('value'), t('unit')], conv.map((c, i) => [
           h('code', {}, c.field),

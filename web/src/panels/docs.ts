@@ -1,6 +1,6 @@
 // Explainer chapters (docs/zh, docs/en, docs/index.json, issue 5) rendered with the current
 // report: {{path}} values, {{panel:NAME}} and {{plot:NAME}} embeds, links back to the panels.
-import { h, num, scrollToEl, table } from '../dom';
+import { h, morph, num, patch, scrollToEl, table } from '../dom';
 import { SECTIONS } from '../fields';
 import { fmtNum } from '../format';
 import { fromSI } from '../units';
@@ -9,7 +9,7 @@ import { renderMarkdown } from '../docs/render';
 import { getPath } from '../state';
 import { renderCurrentStep } from '../figures/current-step';
 import { renderPllTrack } from '../figures/pll-track';
-import { simPlaceholder } from '../figures/figure';
+import { keptFigure, simPlaceholder } from '../figures/figure';
 import type { Panel, PanelContext } from './panel';
 
 const CHAPTERS = import.meta.glob('../../../docs/{zh,en}/*.md', { query: '?raw', import: 'default', eager: true }) as Record<string, string>;
@@ -100,27 +100,23 @@ function inputsSummary(ctx: PanelContext): HTMLElement {
   return table([t('quantity'), t('value')], rows, 'doc-inputs');
 }
 
+/** The panels and plots a chapter embeds, each patched in place (its kept slot: `data-keep`). */
 function fillEmbeds(body: HTMLElement, ctx: PanelContext): void {
   for (const el of body.querySelectorAll<HTMLElement>('[data-embed-panel]')) {
     const name = el.dataset.embedPanel ?? '';
     const p = registry.find((x) => x.id === name && x.id !== 'docs');
     const link = h('a', { href: `#panel-${name}`, 'data-panel-link': name, class: 'doc-embed-link' }, `↗ ${p ? t(p.title as never) : t('inputs')}`);
-    if (p) {
-      const inner = h('div', { class: 'panel-body' });
-      el.replaceChildren(link, inner);
-      p.render(inner, ctx);
-    } else el.replaceChildren(link, inputsSummary(ctx));
+    patch(el, link, p ? h('div', { class: 'panel-body', 'data-keep': 'panel' }) : inputsSummary(ctx));
+    if (p) p.render(el.querySelector<HTMLElement>(':scope > .panel-body')!, ctx);
   }
   for (const el of body.querySelectorAll<HTMLElement>('[data-embed-plot]')) {
     const name = el.dataset.embedPlot;
     const link = h('a', { href: `#panel-${name}`, 'data-panel-link': name ?? '', class: 'doc-embed-link' }, `↗ ${t(name === 'pll' ? 'plotPll' : 'plotCurrent')}`);
-    const fig = h('div', { class: 'figure' });
-    el.replaceChildren(link, fig);
+    patch(el, link, h('div', { class: 'figure', 'data-keep': 'plot' }));
     const sim = ctx.simReport?.sim;
     const axis = String((ctx.input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd';
-    if (name === 'current' && sim?.current) renderCurrentStep(fig, sim.current, axis);
-    else if (name === 'pll' && sim?.pll) renderPllTrack(fig, sim.pll);
-    else fig.replaceChildren(simPlaceholder(ctx));
+    const shown = name === 'current' ? sim?.current : name === 'pll' ? sim?.pll : undefined;
+    keptFigure(el, 'plot', shown, (fig) => name === 'current' ? renderCurrentStep(fig, sim!.current!, axis) : renderPllTrack(fig, sim!.pll!), () => simPlaceholder(ctx));
   }
 }
 
@@ -137,14 +133,18 @@ export const docsPanel: Panel = {
     const lang = getLang();
     const nav = h('nav', { class: 'doc-nav' }, INDEX.chapters.map((c, i) =>
       h('button', { type: 'button', class: c.id === state.chapter ? 'on' : '', 'data-chapter': c.id, onclick: () => { openChapter(c.id); docsPanel.render(el, ctx); } }, `${i + 1}. ${c.title[lang]}`)));
-    const body = h('article', { class: 'doc', 'data-chapter': state.chapter });
-    if (!el.querySelector('article.doc')) body.append(h('p', { class: 'note' }, '…'));
-    else body.replaceChildren(...el.querySelector('article.doc')!.childNodes);
-    el.replaceChildren(nav, body);
+    // The chapter is kept across renders (its job below patches it): typing re-lays out only the
+    // numbers that changed, not the whole chapter.
+    patch(el, nav, h('article', { class: 'doc', 'data-keep': 'chapter' }, h('p', { class: 'note' }, '…')));
+    const body = el.querySelector<HTMLElement>(':scope > article.doc')!;
     // Chapters are long: rendered only while visible, and after the numbers of the other panels.
     pending.set(el, () => {
-      const md = chapterText(state.chapter) ?? '';
-      body.innerHTML = renderMarkdown(md, { value: (p) => getPath(ctx.report, p) ?? getPath(ctx.simReport, p) });
+      const fresh = h('article');
+      fresh.innerHTML = renderMarkdown(chapterText(state.chapter) ?? '', { value: (p) => getPath(ctx.report, p) ?? getPath(ctx.simReport, p) });
+      // The embedded panels and plots are kept too, then patched by fillEmbeds.
+      for (const e of fresh.querySelectorAll('[data-embed-panel], [data-embed-plot]')) e.setAttribute('data-keep', `embed ${e.getAttribute('data-embed-panel') ?? ''} ${e.getAttribute('data-embed-plot') ?? ''}`);
+      morph(body, fresh);
+      body.dataset.chapter = state.chapter;
       fillEmbeds(body, ctx);
       if (state.anchor) {
         scrollToEl(body.querySelector(`[data-anchor="${CSS.escape(state.anchor)}"]`));

@@ -1,17 +1,14 @@
 // Loop design as firmware runs it (issue 11): margins with the delay, the delay-aware design
 // beside the continuous one, Bode plots, the PLL's scaled vs naive margins, the speed loop.
 // Everything shown comes from the report's "loop" section (sent with the simulation request).
-import { h, num, table } from '../dom';
-import { getLang, t, type Key } from '../i18n';
+import { h, num, patch, table } from '../dom';
+import { t, type Key } from '../i18n';
 import type { LoopReport, Margins } from '../report-types';
 import { renderBode } from '../figures/bode';
-import { COLORS, simPlaceholder } from '../figures/figure';
+import { COLORS, keptFigure, simPlaceholder } from '../figures/figure';
 import { renderSpeedStep } from '../figures/speed-step';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
-
-/** Per host element: figure elements kept across renders, and the loop section they show. */
-const kept = new WeakMap<HTMLElement, { figs: Record<string, HTMLElement>; loop: unknown; stamp: string }>();
 
 const MARGIN_COLS: [keyof Margins, Key, string][] = [
   ['phase_margin_deg', 'pm', '°'],
@@ -42,14 +39,12 @@ function marginsTable(rows: [string, string, Margins | undefined][], cls: string
   );
 }
 
-function figure(el: HTMLElement, name: string): HTMLElement {
-  const k = kept.get(el) ?? { figs: {}, loop: null, stamp: '' };
-  kept.set(el, k);
-  k.figs[name] ??= h('div', { class: 'figure', 'data-figure': name });
-  return k.figs[name];
+/** A figure slot the panel draws itself (kept across renders: keptFigure). */
+function figure(name: string): HTMLElement {
+  return h('div', { class: 'figure', 'data-figure': name, 'data-keep': name });
 }
 
-function currentSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
+function currentSection(loop: LoopReport): HTMLElement[] {
   const c = loop.current;
   const rows: [string, string, Margins | undefined][] = [];
   for (const a of ['d', 'q'] as const) {
@@ -76,11 +71,11 @@ function currentSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
     marginsTable(rows, 'current'),
     note,
     h('h3', {}, t('bodeCurrent')),
-    figure(el, 'bode-current'),
+    figure('bode-current'),
   ];
 }
 
-function pllSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
+function pllSection(loop: LoopReport): HTMLElement[] {
   const p = loop.pll;
   return [
     h('h3', {}, t('pllMarginsTitle')),
@@ -90,11 +85,11 @@ function pllSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
       num('loop.pll.naive.kp_ts_gain', p.naive.kp_ts_gain, { sig: 4 }), ` (${t('pllNaive')}); `,
       t('boundary', { b: '' }), num('loop.pll.boundary_kp_ts_gain', p.boundary_kp_ts_gain, { sig: 6 })),
     h('h3', {}, t('bodePll')),
-    figure(el, 'bode-pll'),
+    figure('bode-pll'),
   ];
 }
 
-function speedSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
+function speedSection(loop: LoopReport): HTMLElement[] {
   const s = loop.speed;
   if (!s) return [];
   const b = s.bases;
@@ -117,7 +112,7 @@ function speedSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
     h('p', { class: 'note' }, t('speedFormats')),
     marginsTable([[t('loopYours'), 'loop.speed', s], [t('loopFirmware'), 'loop.speed.firmware', s.firmware]], 'speed'),
     h('h3', {}, t('speedResponse')),
-    figure(el, 'speed-step'),
+    figure('speed-step'),
     r ? metricsTable('loop.speed.response.metrics', r.metrics, ['float', 'fixed'], [
       { key: 'rise_time_s', label: 'riseTime', unit: 'ms', scale: 1e3 },
       { key: 'overshoot_pct', label: 'overshoot', unit: '%' },
@@ -126,37 +121,31 @@ function speedSection(el: HTMLElement, loop: LoopReport): HTMLElement[] {
     ]) : h('span'),
     r ? h('p', { class: 'note' }, `${t('fixedVsFloat')}: `, num('loop.speed.response.fixed_vs_float_max_rpm', r.fixed_vs_float_max_rpm, { unit: 'r/min', sig: 4 })) : h('span'),
     h('h3', {}, t('bodeSpeed')),
-    figure(el, 'bode-speed'),
+    figure('bode-speed'),
   ];
 }
 
 function drawFigures(el: HTMLElement, loop: LoopReport): void {
-  const figs = kept.get(el)?.figs ?? {};
   const bode = loop.bode;
-  if (!bode) return;
-  const cur = bode.current;
-  if (figs['bode-current']) {
-    renderBode(figs['bode-current'], cur.f_hz, [
-      { curve: cur.open.d, name: `L_d ${t('loopYoursShort')}`, color: COLORS.si },
-      { curve: cur.closed.d, name: `T_d ${t('loopYoursShort')}`, color: COLORS.si, dash: 'dot' },
-      { curve: cur.open.d_design, name: `L_d ${t('loopDesignedShort')}`, color: COLORS.pu },
-      { curve: cur.closed.d_design, name: `T_d ${t('loopDesignedShort')}`, color: COLORS.pu, dash: 'dot' },
-    ]);
-  }
-  if (figs['bode-pll']) {
-    renderBode(figs['bode-pll'], bode.pll.f_hz, [
-      { curve: bode.pll.open.correct, name: t('pllCorrect'), color: COLORS.si },
-      { curve: bode.pll.open.naive, name: t('pllNaive'), color: COLORS.naive, dash: 'dash' },
-    ]);
-  }
-  if (figs['bode-speed'] && bode.speed) {
-    renderBode(figs['bode-speed'], bode.speed.f_hz, [
-      { curve: bode.speed.open, name: 'L', color: COLORS.si },
-      { curve: bode.speed.closed, name: 'T', color: COLORS.si, dash: 'dot' },
-    ]);
-  }
+  const cur = bode?.current;
+  keptFigure(el, 'bode-current', cur, (fig) => renderBode(fig, cur!.f_hz, [
+    { curve: cur!.open.d, name: `L_d ${t('loopYoursShort')}`, color: COLORS.si },
+    { curve: cur!.closed.d, name: `T_d ${t('loopYoursShort')}`, color: COLORS.si, dash: 'dot' },
+    { curve: cur!.open.d_design, name: `L_d ${t('loopDesignedShort')}`, color: COLORS.pu },
+    { curve: cur!.closed.d_design, name: `T_d ${t('loopDesignedShort')}`, color: COLORS.pu, dash: 'dot' },
+  ]));
+  const pll = bode?.pll;
+  keptFigure(el, 'bode-pll', pll, (fig) => renderBode(fig, pll!.f_hz, [
+    { curve: pll!.open.correct, name: t('pllCorrect'), color: COLORS.si },
+    { curve: pll!.open.naive, name: t('pllNaive'), color: COLORS.naive, dash: 'dash' },
+  ]));
+  const speed = bode?.speed;
+  keptFigure(el, 'bode-speed', speed, (fig) => renderBode(fig, speed!.f_hz, [
+    { curve: speed!.open, name: 'L', color: COLORS.si },
+    { curve: speed!.closed, name: 'T', color: COLORS.si, dash: 'dot' },
+  ]));
   const r = loop.speed?.response;
-  if (figs['speed-step'] && r) renderSpeedStep(figs['speed-step'], r);
+  keptFigure(el, 'speed-step', r, (fig) => renderSpeedStep(fig, r!));
 }
 
 export const loopPanel: Panel = {
@@ -169,13 +158,7 @@ export const loopPanel: Panel = {
       el.replaceChildren(ctx.simError ? simPlaceholder(ctx) : h('div', { class: 'plot-placeholder' }, t('loopWaiting')));
       return;
     }
-    el.replaceChildren(...currentSection(el, loop), ...pllSection(el, loop), ...speedSection(el, loop));
-    const k = kept.get(el);
-    const stamp = getLang();
-    if (k && (k.loop !== loop || k.stamp !== stamp)) {
-      drawFigures(el, loop);
-      k.loop = loop;
-      k.stamp = stamp;
-    }
+    patch(el, ...currentSection(loop), ...pllSection(loop), ...speedSection(loop));
+    drawFigures(el, loop);
   },
 };

@@ -30,6 +30,7 @@ export interface Panel {
   /** Its render reads only the context and writes only into `el` (no state of its own), so the
    * layout may also render it into a scratch element (Layout.warmUp). */
   pure?: boolean;
-  /** Render into `el` (called on every new report and on a language switch). */
+  /** Render into `el` (called on every new report and on a language switch). A panel shows a
+   * new report by `patch` (dom.ts): only the numbers that changed are laid out again (issue 8). */
   render(el: HTMLElement, ctx: PanelContext): void;
 }

@@ -1,10 +1,7 @@
-import { h, num, table, tex } from '../dom';
-import { getLang, t } from '../i18n';
-
-/** Per host element: the figure element kept across renders, and what it shows. */
-const figs = new WeakMap<HTMLElement, { fig: HTMLElement; sim: unknown; stamp: string }>();
+import { h, num, patch, table, tex } from '../dom';
+import { t } from '../i18n';
 import { renderPllTrack } from '../figures/pll-track';
-import { simPlaceholder } from '../figures/figure';
+import { keptFigure, simPlaceholder } from '../figures/figure';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
 
@@ -16,10 +13,7 @@ export const pllPanel: Panel = {
     const { report, simReport } = ctx;
     const g = report?.pll ?? {};
     const sim = simReport?.sim?.pll;
-    const f = figs.get(el) ?? { fig: h('div', { class: 'figure' }), sim: null, stamp: '' };
-    figs.set(el, f);
-    const figEl = f.fig;
-    el.replaceChildren(...[
+    patch(el, ...[
       h('div', { class: 'formulas' },
         tex('k_p = 2\\zeta\\omega_n,\\ k_i = \\omega_n^2;\\qquad k_p^{pu} = k_p\\frac{\\theta_b}{\\omega_b},\\ k_i^{pu} = k_i\\frac{\\theta_b}{\\omega_b}\\ \\text{(3.1-6)};\\qquad \\frac{\\theta_{pu}}{\\omega_{pu}} = \\frac{\\omega_b}{\\theta_b}\\cdot\\frac{1}{s}\\ \\text{(3.2-5)}', true)),
       table(
@@ -35,7 +29,7 @@ export const pllPanel: Panel = {
         'pllgains',
       ),
       h('h3', {}, t('plotPll')),
-      figEl,
+      h('div', { class: 'figure', 'data-keep': 'pll-track' }),
       sim ? metricsTable('sim.pll.metrics', sim.metrics, ['si', 'pu', 'q15', 'naive'], [
         { key: 'locked', label: 'locked', bool: true },
         { key: 'lock_time_s', label: 'lockTime', unit: 'ms', scale: 1e3 },
@@ -43,11 +37,7 @@ export const pllPanel: Panel = {
         { key: 'steady_angle_error_deg', label: 'steadyAngleErr', unit: '°' },
         { key: 'max_angle_error_deg', label: 'maxAngleErr', unit: '°' },
       ]) : null,
-    ].filter((x): x is HTMLElement => x !== null));
-    const stamp = `${getLang()}|${sim ? 'x' : 'none'}`;
-    if (sim && (sim !== f.sim || stamp !== f.stamp)) renderPllTrack(figEl, sim);
-    else if (!sim) figEl.replaceChildren(simPlaceholder(ctx));
-    f.sim = sim;
-    f.stamp = stamp;
+    ]);
+    keptFigure(el, 'pll-track', sim, (fig) => renderPllTrack(fig, sim!), () => simPlaceholder(ctx));
   },
 };

@@ -1,6 +1,6 @@
 // The graded design review (pulab.review): findings, voltage headroom, the thresholds, and the
 // marks it leaves at the value each finding concerns. Every number comes from the report.
-import { h, num, table } from '../dom';
+import { h, num, patch, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
 import type { Finding } from '../report-types';
 import type { Panel, PanelContext } from './panel';
@@ -65,14 +65,14 @@ export const reviewPanel: Panel = {
   render(el, ctx) {
     const report = ctx.report;
     if (!report?.review) {
-      el.replaceChildren(h('p', { class: 'note' }, '…'));
+      patch(el, h('p', { class: 'note' }, '…'));
       return;
     }
     const rv = report.review;
     const findings = allFindings(ctx);
     const hr = rv.headroom;
     const thr = rv.thresholds;
-    el.replaceChildren(h('div', { class: 'review' },
+    patch(el, h('div', { class: 'review' },
       h('p', { class: 'counts' }, reviewCounts(findings)),
       findings.length
         ? h('ul', { class: 'findings' }, findings.map(findingItem))

@@ -1,4 +1,4 @@
-import { flagChips, h, num, table } from '../dom';
+import { flagChips, h, num, patch, table } from '../dom';
 import { t } from '../i18n';
 import { VENDOR_NAMES, type TraceStep, type VendorResult } from '../report-types';
 import type { Panel } from './panel';
@@ -85,7 +85,7 @@ export const vendorPanel: Panel = {
   render(el, { report }) {
     const vd = report?.vendor;
     const raw = vd?.raw ?? {};
-    el.replaceChildren(
+    patch(el, 
       h('div', { class: 'raw-used' }, h('span', { class: 'lbl' }, `${t('raw')}: `),
         Object.keys(RAW_UNITS).map((k) => h('span', { class: 'rawchip', title: RAW_UNITS[k] }, h('code', {}, k), ' = ', num(`vendor.raw.${k}`, raw[k], { kind: 'int' })))),
       table(
