@@ -31,6 +31,23 @@ const SIM_LOST_MS = 120_000;
 
 /** Simulations wait for a pause in typing: they are heavier and only feed the plots. */
 const SIM_PAUSE_MS = 400;
+/** The address bar and localStorage wait for a pause in typing: history.replaceState costs
+ * ≈ 10 ms of main thread per call (it recalculates the style of the whole page), which delayed
+ * the paint of every keystroke's numbers (issue 8). */
+const PERSIST_PAUSE_MS = 400;
+
+let persistNow: () => void = () => undefined;
+/** Write an input still waiting for a pause in typing into the address bar now (before
+ * anything reads location.hash, and when the page is hidden or left). */
+export function flushPersist(): void {
+  persistNow();
+}
+if (typeof window !== 'undefined') {
+  window.addEventListener('pagehide', flushPersist);
+  document.addEventListener('visibilitychange', () => {
+    if (document.visibilityState === 'hidden') flushPersist();
+  });
+}
 
 export class ComputeSession {
   input: Input;
@@ -67,6 +84,7 @@ export class ComputeSession {
   private inputAt = 0;
   private timer: ReturnType<typeof setTimeout> | undefined;
   private simTimer: ReturnType<typeof setTimeout> | undefined;
+  private persistTimer: ReturnType<typeof setTimeout> | undefined;
 
   constructor(input: Input, private embed: boolean, private events: SessionEvents) {
     this.input = input;
@@ -185,8 +203,8 @@ export class ComputeSession {
     }
     const root = document.documentElement;
     root.dataset.busy = '1';
-    // The address bar and localStorage are written after the numbers are shown (history.replaceState
-    // takes milliseconds); a call superseded by a newer input leaves them to that one.
+    // The address bar and localStorage are written after the numbers are shown, once typing
+    // pauses (persist); a call superseded by a newer input leaves them to that one.
     let superseded = false;
     try {
       const t0 = performance.now();
@@ -295,11 +313,18 @@ export class ComputeSession {
       && JSON.stringify(decodeUnits(location.hash) ?? {}) === JSON.stringify(this.units);
   }
 
-  /** The input goes into the URL (#in=) and localStorage; embeds leave both to their host page. */
+  /** The input goes into the URL (#in=) and localStorage once typing pauses (flushPersist);
+   * embeds leave both to their host page. */
   private persist(eff: Input): void {
     if (this.embed) return;
-    const hash = encodeHash(eff, this.units);
-    if (location.hash !== hash && !this.keepLink && !this.linkSays(eff)) history.replaceState(null, '', hash);
-    store(STORAGE_KEY, JSON.stringify(eff));
+    clearTimeout(this.persistTimer);
+    persistNow = () => {
+      clearTimeout(this.persistTimer);
+      persistNow = () => undefined;
+      const hash = encodeHash(eff, this.units);
+      if (location.hash !== hash && !this.keepLink && !this.linkSays(eff)) history.replaceState(null, '', hash);
+      store(STORAGE_KEY, JSON.stringify(eff));
+    };
+    this.persistTimer = setTimeout(flushPersist, PERSIST_PAUSE_MS);
   }
 }
