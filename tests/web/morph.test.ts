@@ -2,7 +2,7 @@
 // dom.morph (issue 8): a new report patches a pure panel in place. Named by what is rendered
 // before and after, and what must hold of the patched DOM.
 import { describe, expect, it } from 'vitest';
-import { h, morph } from '../../web/src/dom';
+import { h, morph, patch as show, tex } from '../../web/src/dom';
 
 /** Render `before` into a host, then morph it to `after`; returns the host and its old first child. */
 function patch(before: () => HTMLElement[], after: () => HTMLElement[]): { host: HTMLElement; first: ChildNode | null } {
@@ -70,5 +70,20 @@ describe('morph: what is kept, replaced or skipped', () => {
     const host = h('div', {}, h('div', { 'data-keep': 'bode-pll' }, 'drawn'));
     morph(host, h('div', {}, h('div', { 'data-keep': 'bode-speed' })));
     expect(host.innerHTML).toBe('<div data-keep="bode-speed"></div>');
+  });
+});
+
+describe('patch: formulas (tex) filled where newly shown, kept where already shown', () => {
+  it.each([
+    ['empty host, a formula → KaTeX markup', [], ['x^2'], (host: HTMLElement) => expect(host.querySelector('.katex')).not.toBeNull()],
+    ['the same formula again → the same KaTeX nodes (not copied)', ['x^2'], ['x^2'], (host: HTMLElement, before: Element | null) => expect(host.querySelector('.katex')).toBe(before)],
+    ['another formula at its place → that formula\'s markup', ['x^2'], ['y_3'], (host: HTMLElement) => expect(host.textContent).toContain('y')],
+  ])('%s', (_name, before, after, check) => {
+    const host = h('div');
+    if (before.length) show(host, ...before.map((src) => tex(src)));
+    const was = host.querySelector('.katex');
+    show(host, ...after.map((src) => tex(src)));
+    expect(host.querySelectorAll('[data-tex]:empty').length).toBe(0);
+    check(host, was);
   });
 });

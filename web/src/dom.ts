@@ -112,6 +112,8 @@ export function morph(old: Element, fresh: Element): void {
 
 function patchElement(o: Element, n: Element): void {
   const tex = n.getAttribute('data-tex');
+  // Read before the attributes are copied: another formula at this place must be redrawn.
+  const sameTex = tex !== null && tex === o.getAttribute('data-tex');
   const oa = o.attributes;
   for (let i = oa.length - 1; i >= 0; i--) if (!n.hasAttribute(oa[i].name)) o.removeAttribute(oa[i].name);
   const na = n.attributes;
@@ -121,14 +123,19 @@ function patchElement(o: Element, n: Element): void {
     for (const type of Object.keys(own)) o.addEventListener(type, dispatch);
     handlers.set(o, own);
   } else handlers.delete(o);
-  if (tex !== null && tex === o.getAttribute('data-tex')) return;
+  if (sameTex) return;
   morph(o, n);
 }
 
-/** Show `children` in `el`, patched in place (morph) when `el` already shows something. */
+/** Show `children` in `el`, patched in place (morph) when `el` already shows something; the
+ * formulas (`tex`) it newly shows are filled in. */
 export function patch(el: HTMLElement, ...children: Child[]): void {
-  if (!el.firstChild) return append(el, children);
-  morph(el, h('div', {}, children));
+  if (!el.firstChild) append(el, children);
+  else morph(el, h('div', {}, children));
+  for (const f of el.querySelectorAll('[data-tex]:empty')) {
+    const cached = texCache.get(f.getAttribute('data-tex') ?? '');
+    if (cached) f.append(...[...cached.childNodes].map((c) => c.cloneNode(true)));
+  }
 }
 
 /** The same items, each the same (===): what a panel drew with has not changed. */
@@ -166,16 +173,19 @@ export function flagChips(flags: unknown): HTMLElement {
 }
 
 const texCache = new Map<string, HTMLElement>();
-/** KaTeX formula (display or inline), cached as a node: a copy is cheaper than parsing its HTML again. */
+/**
+ * KaTeX formula (display or inline), rendered once per source and cached. Returned empty: `patch`
+ * fills it in where it is newly shown and keeps a formula already shown (equal `data-tex`), so a
+ * new report copies no formula (deep copies of KaTeX's markup were a fifth of a render).
+ */
 export function tex(src: string, display = false): HTMLElement {
   const key = `${display ? 'D' : 'I'}${src}`;
-  let el = texCache.get(key);
-  if (el === undefined) {
-    el = h(display ? 'div' : 'span', { class: 'tex', 'data-tex': key });
+  if (!texCache.has(key)) {
+    const el = h('span');
     el.innerHTML = katex.renderToString(src, { displayMode: display, throwOnError: false, output: 'html' });
     texCache.set(key, el);
   }
-  return el.cloneNode(true) as HTMLElement;
+  return h(display ? 'div' : 'span', { class: 'tex', 'data-tex': key });
 }
 
 export function table(head: (string | Node)[], rows: (Child[] | HTMLElement)[], cls = ''): HTMLElement {

@@ -106,7 +106,8 @@ export class InputForm {
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
       // A value from the link that could not be used: a note, not an error (the default is used).
       const note = msg ? '' : stateNotes.get(f) ?? '';
-      el.textContent = msg || note;
+      // Written only when it changes: a text node replaced on every keystroke re-laid out each field.
+      if (el.textContent !== (msg || note)) el.textContent = msg || note;
       el.closest('.field')?.classList.toggle('invalid', msg !== '');
       el.closest('.field')?.classList.toggle('noted', note !== '');
       const sec = el.closest<HTMLDetailsElement>('details.section');
@@ -135,13 +136,14 @@ export class InputForm {
         if (typeof v === 'number') {
           const u = this.unitOf(f);
           ph = `= ${fmtNum(u ? fromSI(v, u) : v, 8)}`;
-          el.title = `${t('derived')}: ${fmtNum(u ? fromSI(v, u) : v, 12)}`;
+          const title = `${t('derived')}: ${fmtNum(u ? fromSI(v, u) : v, 12)}`;
+          if (el.title !== title) el.title = title;
         }
       } else if (f.optional && report) {
         const v = getPath(report.input, f.path);
         if (typeof v === 'number') ph = `= ${fmtNum(v, 8)}`;
       }
-      el.placeholder = ph;
+      if (el.placeholder !== ph) el.placeholder = ph;
     }
   }
 

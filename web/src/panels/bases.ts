@@ -23,7 +23,7 @@ export const basesPanel: Panel = {
   render(el, { report, input }) {
     const conv = (report?.input.conventions ?? input.conventions ?? {}) as Record<string, string>;
     const f = formulas(conv.base ?? 'rms', conv.angle_base ?? 'pi');
-    patch(el, 
+    patch(el,
       h('p', { class: 'note' }, tex('\\{U_b, I_b, f_b\\} \\Rightarrow Z_b = \\frac{U_b}{I_b},\\ \\omega_b = 2\\pi f_b,\\ L_b = \\frac{Z_b}{\\omega_b},\\ \\psi_b = \\frac{U_b}{\\omega_b}'), ' ', h('span', { class: 'cite' }, t('seedCite', { n: '1.1-1' }))),
       table(
         [t('quantity'), t('formula'), t('value'), t('unit')],

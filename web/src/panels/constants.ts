@@ -10,7 +10,7 @@ export const constantsPanel: Panel = {
   render(el, { report }) {
     const cs = report?.constants ?? {};
     const keys = Object.keys(cs).length ? Object.keys(cs) : ['18597', '3678', '2316'];
-    patch(el, 
+    patch(el,
       table(
         [t('value'), t('expression'), t('exact'), t('relError'), t('usedIn'), t('derivation')],
         keys.map((k) => {

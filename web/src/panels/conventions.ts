@@ -17,7 +17,7 @@ export const conventionsPanel: Panel = {
   title: 'p_conventions',
   pure: true,
   render(el, { report, input }) {
-    patch(el, 
+    patch(el,
       ...GROUPS.map((g) => {
         const cur = String(get(report?.input ?? input, g.path) ?? g.options[0][0]);
         return h('div', { class: 'conv' },

@@ -16,7 +16,7 @@ export const datasheetPanel: Panel = {
   render(el, { report }) {
     const conv = report?.datasheet?.conversions ?? [];
     const mech = report?.mechanical;
-    patch(el, 
+    patch(el,
       conv.length
         ? table([t('dsField'), t('quantity'), t('dsFormula'), t('value'), t('unit')], conv.map((c, i) => [
           h('code', {}, c.field),

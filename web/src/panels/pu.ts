@@ -21,7 +21,7 @@ export const puPanel: Panel = {
   title: 'p_pu',
   pure: true,
   render(el, { report }) {
-    patch(el, 
+    patch(el,
       h('p', { class: 'note' }, tex('u_d^* = R_s^* i_d^* + L_d^* \\frac{di_d^*}{dt^*} - \\omega_e^* L_q^* i_q^*'), ' ', h('span', { class: 'cite' }, t('seedCite', { n: '1.2-2' }))),
       table(
         [t('quantity'), t('formula'), t('value'), t('unit')],

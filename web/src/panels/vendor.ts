@@ -85,7 +85,7 @@ export const vendorPanel: Panel = {
   render(el, { report }) {
     const vd = report?.vendor;
     const raw = vd?.raw ?? {};
-    patch(el, 
+    patch(el,
       h('div', { class: 'raw-used' }, h('span', { class: 'lbl' }, `${t('raw')}: `),
         Object.keys(RAW_UNITS).map((k) => h('span', { class: 'rawchip', title: RAW_UNITS[k] }, h('code', {}, k), ' = ', num(`vendor.raw.${k}`, raw[k], { kind: 'int' })))),
       table(
