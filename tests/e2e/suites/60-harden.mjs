@@ -89,8 +89,7 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
       };
       if ((await page.evaluate(noted, named)) !== 'none') await page.waitForFunction(noted, named, { timeout: 10_000 });
       await page.waitForSelector('html[data-ready="1"]', { timeout: 60_000 });
-      // The address bar is written once typing pauses (0.4 s after the numbers): waited out.
-      await page.waitForTimeout(1200);
+      await page.waitForTimeout(600);
       assert(await page.evaluate(() => location.hash) === hash, 'the opened link was overwritten');
       // Recovery: a preset replaces the state; numbers, and the address bar follows again.
       await page.selectOption('select[name="preset"]', 'ind380');

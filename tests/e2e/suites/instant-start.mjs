@@ -118,6 +118,16 @@ export default async function instantStart(ctx) {
       document.querySelector('#panel-bases .tex').pulabProbe]);
     assert(JSON.stringify(kept) === JSON.stringify(['base.Z_b', 'base.U_b', 'tex']), `elements replaced: ${JSON.stringify(kept)}`);
     assert(await compareShown(page, want) >= 100, 'patched numbers');
+    // The link is written in the task that shows the numbers (docs/contract.md).
+    const linked = await page.evaluate(() => JSON.parse(decodeURIComponent(location.hash.slice('#in='.length).split('&')[0])));
+    assert(linked.motor.rated_current_a === 3, `the link does not say the new input: ${JSON.stringify(linked.motor)}`);
+    // Another formula at the same place is drawn anew (U_b = U_LL/√3 → √(2/3)·U_LL).
+    const ubRoots = () => page.$$eval('table.bases tbody tr:nth-child(1) td:nth-child(2) .sqrt', (e) => e.length);
+    const rootsBefore = await ubRoots();
+    await page.selectOption('select[name="conventions.base"]', 'peak');
+    await ctx.waitValue(page, 'base.U_b', cpython({ ...seed.input, motor: { ...seed.input.motor, rated_current_a: 3 }, conventions: { ...seed.input.conventions, base: 'peak' } }).base.U_b);
+    const texts = await page.$eval('table.bases tbody tr:nth-child(1) td:nth-child(2)', (e) => e.textContent);
+    assert(rootsBefore === 1 && await ubRoots() === 1 && texts.includes('2') && texts.includes('3'), `U_b formula not redrawn: ${texts}`);
     // Once idle after live numbers, no panel is skipped any more (full-page screenshots, printing).
     await page.waitForSelector('main.panels.settled', { timeout: 10_000 });
     const skipped = await page.$$eval('section.panel', (els) => els.filter((e) => getComputedStyle(e).contentVisibility !== 'visible').map((e) => e.id));

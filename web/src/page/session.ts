@@ -31,23 +31,6 @@ const SIM_LOST_MS = 120_000;
 
 /** Simulations wait for a pause in typing: they are heavier and only feed the plots. */
 const SIM_PAUSE_MS = 400;
-/** The address bar and localStorage wait for a pause in typing: history.replaceState costs
- * ≈ 10 ms of main thread per call (it recalculates the style of the whole page), which delayed
- * the paint of every keystroke's numbers (issue 8). */
-const PERSIST_PAUSE_MS = 400;
-
-let persistNow: () => void = () => undefined;
-/** Write an input still waiting for a pause in typing into the address bar now (before
- * anything reads location.hash, and when the page is hidden or left). */
-export function flushPersist(): void {
-  persistNow();
-}
-if (typeof window !== 'undefined') {
-  window.addEventListener('pagehide', flushPersist);
-  document.addEventListener('visibilitychange', () => {
-    if (document.visibilityState === 'hidden') flushPersist();
-  });
-}
 
 export class ComputeSession {
   input: Input;
@@ -83,8 +66,9 @@ export class ComputeSession {
   /** Time of the last input event (for the input → numbers latency in dataset.updateMs). */
   private inputAt = 0;
   private timer: ReturnType<typeof setTimeout> | undefined;
+  /** The last hash this page wrote into the address bar. */
+  private wroteHash: string | null = null;
   private simTimer: ReturnType<typeof setTimeout> | undefined;
-  private persistTimer: ReturnType<typeof setTimeout> | undefined;
 
   constructor(input: Input, private embed: boolean, private events: SessionEvents) {
     this.input = input;
@@ -203,8 +187,8 @@ export class ComputeSession {
     }
     const root = document.documentElement;
     root.dataset.busy = '1';
-    // The address bar and localStorage are written after the numbers are shown, once typing
-    // pauses (persist); a call superseded by a newer input leaves them to that one.
+    // The address bar and localStorage are written after the numbers are shown (history.replaceState
+    // takes milliseconds); a call superseded by a newer input leaves them to that one.
     let superseded = false;
     try {
       const t0 = performance.now();
@@ -313,18 +297,16 @@ export class ComputeSession {
       && JSON.stringify(decodeUnits(location.hash) ?? {}) === JSON.stringify(this.units);
   }
 
-  /** The input goes into the URL (#in=) and localStorage once typing pauses (flushPersist);
-   * embeds leave both to their host page. */
+  /** The input goes into the URL (#in=) and localStorage; embeds leave both to their host page. */
   private persist(eff: Input): void {
     if (this.embed) return;
-    clearTimeout(this.persistTimer);
-    persistNow = () => {
-      clearTimeout(this.persistTimer);
-      persistNow = () => undefined;
-      const hash = encodeHash(eff, this.units);
-      if (location.hash !== hash && !this.keepLink && !this.linkSays(eff)) history.replaceState(null, '', hash);
-      store(STORAGE_KEY, JSON.stringify(eff));
-    };
-    this.persistTimer = setTimeout(flushPersist, PERSIST_PAUSE_MS);
+    const hash = encodeHash(eff, this.units);
+    // Whether an opened link already says this input is asked only while it is in the address bar
+    // (decoding and checking a link took 0.2–11 ms of every keystroke).
+    if (location.hash !== hash && !this.keepLink && (location.hash === this.wroteHash || !this.linkSays(eff))) {
+      history.replaceState(null, '', hash);
+      this.wroteHash = hash;
+    }
+    store(STORAGE_KEY, JSON.stringify(eff));
   }
 }

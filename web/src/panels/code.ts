@@ -5,7 +5,6 @@ import { flagChips, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
-import { flushPersist } from '../page/session';
 import type { Panel, PanelContext } from './panel';
 
 interface Term { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string }
@@ -215,7 +214,6 @@ function update(el: HTMLElement, ctx: PanelContext): void {
 }
 
 async function share(root: HTMLElement, embed: boolean): Promise<void> {
-  flushPersist();
   const url = `${location.origin}${location.pathname}${codeSearch(st(), embed)}${location.hash}`;
   document.documentElement.dataset.codeLink = url;
   await copyLinkToast(root, url);
