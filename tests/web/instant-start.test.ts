@@ -137,6 +137,34 @@ describe('queued calls: the page\'s numbers first', () => {
   });
 });
 
+describe('warm-up runs after the first report (idle only, never ahead of a call)', () => {
+  /** A runtime whose run_json logs every payload it computes. */
+  const logging = (log: string[]): PyodideLike => ({ ...fakePy(), pyimport: () => ({ run_json: (t: string) => (log.push(t), echo(t)), qcalc_json: echo }) });
+  const cases: [string, number, string, string[], string[]][] = [
+    ['warmRuns 3, nothing else asked → the first report computed 3 more times', 3, 'report', [], ['"r1"', '"r1"', '"r1"', '"r1"']],
+    ['warmRuns 0 → computed once', 0, 'report', [], ['"r1"']],
+    ['warmRuns 3, the first report on the simulation channel → computed once (a simulation takes seconds)', 3, 'sim', [], ['"r1"']],
+    ['warmRuns 20, a new report posted at once → it is computed before any warm-up run', 20, 'report', ['"r2"'], ['"r1"', '"r2"', '"r1"']],
+  ];
+  it.each(cases)('%s', async (_name, warmRuns, channel, next, firstComputed) => {
+    const log: string[] = [];
+    const host = createRuntimeHost(async () => logging(log), PULAB_FILES, { warmRuns });
+    const got: WorkerToMain[] = [];
+    const send = host.connect((m) => {
+      got.push(m);
+      // The page answers the first result with its next input at once (typing).
+      if (m.type === 'result' && m.id === 1) next.forEach((p, i) => send({ type: 'call', id: 2 + i, kind: 'report', payload: p, channel }));
+    });
+    send({ type: 'init', indexURL: 'x/' });
+    await host.ready;
+    send({ type: 'call', id: 1, kind: 'report', payload: '"r1"', channel });
+    await new Promise((r) => setTimeout(r, 150));
+    expect(log.slice(0, firstComputed.length)).toEqual(firstComputed);
+    expect(log.length).toBe(1 + next.length + (channel === 'report' ? warmRuns : 0));
+    expect(got.filter((m) => m.type === 'result').length).toBe(1 + next.length);
+  });
+});
+
 describe('boot timeout counts time without progress', () => {
   const slowLoader = (steps: number, every: number): PyodideLoader => async (_url, progress) => {
     for (let i = 0; i < steps; i++) {
