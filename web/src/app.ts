@@ -47,7 +47,7 @@ export class App {
       report: (same) => {
         if (same) this.renderPanels(PYTHON_PANELS);
         else this.renderPanels();
-        if (this.session.source === 'live') this.layout.settle();
+        if (this.session.source === 'live') this.layout.settle(this.ctx());
       },
       sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review']),
       errors: () => this.showErrors(),

@@ -10,6 +10,14 @@ import type { ComputeSession } from './session';
 
 /** Numbers later than this after an edit are faded as outdated (ms). */
 const OUTDATED_MS = 300;
+/** Renders of the pure panels while idle after the first live numbers (Layout.warmRenders). */
+const WARM_RENDERS = 20;
+
+/** Run `f` when the page is idle (at the latest after `timeout` ms). */
+const idle = (f: () => void, timeout = 1000): void => {
+  if (typeof requestIdleCallback === 'function') requestIdleCallback(f, { timeout });
+  else setTimeout(f, Math.min(timeout, 500));
+};
 
 /** The review's errors and warnings at the top of the page (notes only in its panel). */
 function warnings(ctx: PanelContext): HTMLElement[] {
@@ -112,16 +120,43 @@ export class Layout {
   }
 
   /** After the first live numbers: lay out the panels off screen too, once the page is idle
-   * (style.css); a page built again later (a language switch) starts settled. */
-  settle(): void {
+   * (style.css), then warm the renderers up (`warmRenders`); a page built again later (a language
+   * switch) starts settled. */
+  settle(ctx: PanelContext): void {
     if (this.settled !== 'no') return;
     this.settled = 'pending';
     const go = (): void => {
       this.settled = 'yes';
       this.root.querySelector('main.panels')?.classList.add('settled');
+      this.warmRenders(ctx, WARM_RENDERS);
     };
-    if (typeof requestIdleCallback === 'function') requestIdleCallback(go, { timeout: 2000 });
-    else setTimeout(go, 500);
+    idle(go, 2000);
+  }
+
+  /** Every pure panel rendered with `ctx` into `bodies` (new detached ones when not given). */
+  private renderPure(ctx: PanelContext, bodies?: Map<PanelId, HTMLElement>): Map<PanelId, HTMLElement> {
+    const out = bodies ?? new Map<PanelId, HTMLElement>();
+    for (const p of this.panels()) {
+      if (!p.pure) continue;
+      const body = out.get(p.id) ?? h('div', { class: 'panel-body' });
+      p.render(body, ctx);
+      out.set(p.id, body);
+    }
+    return out;
+  }
+
+  /**
+   * Render the pure panels `runs` more times into detached elements, one run per idle period (the
+   * first builds, the others patch: the code paths of a keystroke). The first keystrokes' renders
+   * ran up to twice as long as later ones: JavaScript not yet optimized by the engine (issue 8).
+   */
+  private warmRenders(ctx: PanelContext, runs: number): void {
+    let bodies: Map<PanelId, HTMLElement> | undefined;
+    const step = (): void => {
+      bodies = this.renderPure(ctx, bodies);
+      if (--runs > 0) idle(step);
+    };
+    if (runs > 0) idle(step);
   }
 
   /**
@@ -135,12 +170,7 @@ export class Layout {
     const host = this.root.querySelector('main.panels');
     if (!host) return;
     const box = h('div', { class: 'warmup', 'aria-hidden': 'true' }, h('div', { class: 'warnings' }, warnings(ctx)));
-    for (const p of this.panels()) {
-      if (!p.pure) continue;
-      const body = h('div', { class: 'panel-body' });
-      p.render(body, ctx);
-      box.append(h('section', { class: `panel panel-${p.id}` }, body));
-    }
+    for (const [id, body] of this.renderPure(ctx)) box.append(h('section', { class: `panel panel-${id}` }, body));
     host.append(box);
     void box.offsetHeight;
     box.remove();
