@@ -17,14 +17,15 @@ afterEach(() => {
 
 describe('warm renders after the first live numbers', () => {
   it.each([
-    { name: 'a pure panel (bases)', id: 'bases', times: 20 },
-    { name: 'a panel with its own state (code)', id: 'code', times: 0 },
-  ])('$name → rendered $times more times, never into the page', ({ id, times }) => {
+    { name: 'a pure panel (bases)', id: 'bases', embed: null, times: 20 },
+    { name: 'a panel with its own state (code)', id: 'code', embed: null, times: 0 },
+    { name: 'a pure panel embedded alone (?embed=bases: no form to type in)', id: 'bases', embed: 'bases', times: 0 },
+  ])('$name → rendered $times more times, never into the page', ({ id, embed, times }) => {
     vi.useFakeTimers();
     vi.stubGlobal('requestIdleCallback', (f: () => void) => setTimeout(f, 1));
     const root = h('div');
     document.body.append(root);
-    const layout = new Layout(root, null);
+    const layout = new Layout(root, embed);
     layout.build(h('header'));
     const panel = PANELS.find((p) => p.id === id)!;
     const shown = root.querySelector(`#panel-${id} .panel-body`)!;
