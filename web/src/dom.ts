@@ -143,10 +143,11 @@ export function sameItems(a: readonly unknown[], b: readonly unknown[]): boolean
   return a.length === b.length && a.every((x, i) => x === b[i]);
 }
 
-/** The name of the input inside `el` that has the focus (before `el` is rebuilt), or null. */
+/** The name of the form control inside `el` that has the focus (before `el` is rebuilt), or null. */
 export function focusedInput(el: HTMLElement): string | null {
   const a = document.activeElement;
-  return a instanceof HTMLInputElement && el.contains(a) ? a.name : null;
+  const named = a instanceof HTMLInputElement || a instanceof HTMLTextAreaElement || a instanceof HTMLSelectElement;
+  return named && el.contains(a) && a.name ? a.name : null;
 }
 
 /** After `el` was rebuilt: the focus back in the input named `name`, the caret at its end. */

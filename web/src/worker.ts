@@ -63,7 +63,7 @@ async function load(indexURL: string, progress: BootProgress) {
 
 // 200 warm-up runs after the first report: measured against 0, 40 and 100 side by side (first 8
 // keystrokes, 5 fresh pages each), the Python time of the first keystrokes fell from p90 20 ms to
-// 7.8 ms (100: 17 ms; 40: no change); they cost 0.2–0.6 s of this worker's idle time, once.
+// 7.8 ms (100: 17 ms; 40: no change); they cost 0.7–0.9 s of this worker's idle time, once (traced).
 const host = createRuntimeHost(load, PULAB_FILES, { warmRuns: 200 });
 
 type Port = { postMessage(m: WorkerToMain): void; onmessage: ((ev: MessageEvent<MainToWorker>) => void) | null };

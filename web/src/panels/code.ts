@@ -1,7 +1,7 @@
 // "Your code": paste C scaling code, pick a target (and one to compare with), and see every
 // intermediate integer with its C type, hex and flags. Everything comes from
 // pulab.api.trace_json in the worker; the state lives in the URL query (code-share.ts).
-import { flagChips, h, sameItems, table } from '../dom';
+import { flagChips, focusedInput, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
@@ -253,7 +253,7 @@ export const codePanel: Panel = {
       return;
     }
     builtFor = key;
-    const focused = document.activeElement instanceof HTMLElement && el.contains(document.activeElement) ? (document.activeElement as HTMLInputElement).name : null;
+    const focused = focusedInput(el);
     const area = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');
     const sel = area ? [area.selectionStart, area.selectionEnd, area.scrollTop] : null;
     const zh = getLang() === 'zh';
