@@ -3,9 +3,47 @@
 Pure Python standard library, so it imports in a bare Pyodide.  The entry
 point is :func:`report` (dict → dict, docs/contract.md); :mod:`pulab.api`
 wraps it for JSON callers and ``python -m pulab report FILE`` for the shell.
+
+Layout
+------
+The package is grouped by layer.  A module imports from its own layer and the
+layers listed above it, never from a layer below (the known exceptions are
+named at the end)::
+
+    fixedpoint/   Q formats and C integer arithmetic           qformat, cint
+    schema/       what an input is and how it is read and      errors, jsontext, textnum,
+                  checked; the error texts                     inputs, messages
+    model/        the per-unit model of one motor and drive    bases, gains, datasheet
+    profiles/     firmware scaling, one module per vendor      inovance (+ inovance_code:
+                                                               the seed's C code bit-exact,
+                                                               inovance_magic: its magic
+                                                               numbers), ti, st, nxp,
+                                                               microchip, headers, translate
+    ctrace/       the C tracer: a user's own fixed-point code  lexer, parser, check, evaluate…
+    analyses/     what is computed from a model                loop/, sim/, review, sweep,
+                                                               integers, batch, slices
+    (top level)   the ways in and out                          report (dict → dict), api
+                                                               (JSON text → JSON text),
+                                                               export (C header, CSV),
+                                                               benchmark, __main__ (the
+                                                               command line: parser, main,
+                                                               report, header, translate)
+    cli/          the other subcommands                        family (sweep, batch),
+                                                               trace
+
+Where a new module goes: a new number format or integer rule → ``fixedpoint``; a
+new input check, parser limit or error text → ``schema``; a new per-unit quantity
+→ ``model``; a vendor → ``profiles/NAME.py`` (listed in ``profiles.MODULES``); a
+new computation over a model (margins, responses, families) → ``analyses``; a new
+output format → ``export``; a new subcommand → ``cli/`` (registered in ``__main__``).  Tests mirror modules:
+``tests/py/test_NAME.py``.
+
+Known upward imports: ``model.gains`` and ``schema.inputs`` use the Inovance
+rounding and raw fields of ``profiles.inovance_code``; ``analyses.integers`` and
+``profiles.translate`` call :func:`report`.
 """
 
-from .errors import InputError
+from .schema.errors import InputError
 from .report import format_text, report
 
 __all__ = ["report", "format_text", "InputError", "__version__"]

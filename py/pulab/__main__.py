@@ -15,11 +15,11 @@ import json
 import re
 import sys
 
-from .errors import InputError
-from .commands import add_family_commands, read_json
-from .inputs import shown
+from .schema.errors import InputError
+from .cli.family import add_family_commands, read_json
+from .schema.inputs import shown
 from .report import format_text, report
-from .ctrace.cli import add_trace_parser, trace_main
+from .cli.trace import add_trace_parser, trace_main
 
 
 def main(argv: list | None = None) -> int:

@@ -17,15 +17,15 @@ from __future__ import annotations
 import json
 import re
 
-from .errors import InputError
-from .inputs import shown
-from .jsontext import parse
-from .qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
+from .schema.errors import InputError
+from .schema.inputs import shown
+from .schema.jsontext import parse
+from .fixedpoint.qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
-from .messages import to_zh
+from .schema.messages import to_zh
 from .report import report, report_steps
-from .steps import finish
-from .textnum import ascii_text, parse_int, parse_real
+from .analyses.slices import finish
+from .schema.textnum import ascii_text, parse_int, parse_real
 
 __all__ = ["run_json", "run_json_steps", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
            "trace_json", "trace_examples_json", "vendors_json"]
@@ -156,7 +156,7 @@ def export_json(text: str) -> str:
 
 
 def sweep_json(text: str) -> str:
-    """A family sweep (:mod:`pulab.sweep`) on a JSON string, whole or in chunks.
+    """A family sweep (:mod:`pulab.analyses.sweep`) on a JSON string, whole or in chunks.
 
     The request is a sweep request (``input``, ``x``, optional ``y`` and ``profile``) with
     ``op``: ``"sweep"`` (default: everything at once), ``"plan"`` (the axes and the number
@@ -175,7 +175,7 @@ def sweep_json(text: str) -> str:
     ...     "chunk"]["points"]["error"][0]
     'motor.rated_voltage_v: is required'
     """
-    from . import sweep as sw  # imported on first use: report-only pages stay lean
+    from .analyses import sweep as sw  # imported on first use: report-only pages stay lean
     try:
         req = parse(text, "sweep")
         op = req.get("op", "sweep") if isinstance(req, dict) else None
@@ -200,7 +200,7 @@ def sweep_json(text: str) -> str:
 
 
 def batch_json(text: str) -> str:
-    """A batch (:mod:`pulab.batch`) on ``{"csv": text, "start": int, "count": int}``.
+    """A batch (:mod:`pulab.analyses.batch`) on ``{"csv": text, "start": int, "count": int}``.
 
     Returns ``{"ok": true, "total": rows, "columns": [...], "rows": [[cell, ...]], "csv":
     text}`` for data rows ``start`` … ``start+count−1`` (``csv`` has the header when
@@ -208,7 +208,7 @@ def batch_json(text: str) -> str:
     the field when the file as a whole is unreadable.  Bad rows come back in their
     ``error`` cell.
     """
-    from . import batch as bt  # imported on first use: report-only pages stay lean
+    from .analyses import batch as bt  # imported on first use: report-only pages stay lean
     try:
         req = parse(text, "batch")
         if not isinstance(req, dict):

@@ -2,7 +2,7 @@
 
 ``PYTHONPATH=py python3 -m pulab.benchmark [--json]`` times :func:`pulab.report`
 on every golden-style motor below (issue 2's target: under 5 ms per full report
-in Pyodide) and the current-loop simulation (:mod:`pulab.sim.bench`; issue 3's
+in Pyodide) and the current-loop simulation (:mod:`pulab.analyses.sim.bench`; issue 3's
 target: 20 000 steps of the three variants under 0.5 s in CPython, 1 s in
 Pyodide).  The Pyodide runner (``tests/bench/pyodide.bench.ts``) calls
 :func:`run` and prints the Pyodide/CPython ratio.
@@ -122,9 +122,9 @@ def trace_timing(n: int = 200) -> dict:
 
 
 def run(sim_steps: int = 20000) -> dict:
-    """All core benchmarks: ``report_ms`` per motor, ``loop_ms``, ``sim`` (see pulab.sim.bench),
+    """All core benchmarks: ``report_ms`` per motor, ``loop_ms``, ``sim`` (see pulab.analyses.sim.bench),
     ``trace``."""
-    from .sim.bench import bench
+    from .analyses.sim.bench import bench
     return {"python": f"{sys.implementation.name} {sys.version.split()[0]}",
             "platform": sys.platform, "report_ms": report_timing(), "loop_ms": loop_timing(),
             "sim": bench(sim_steps), "trace": trace_timing()}

@@ -18,7 +18,7 @@ import math
 __all__ = ["c_header", "sim_csv"]
 
 _NAMES = ("Rpm", "LD", "LQ", "FreqPer", "FluxRotor", "pm_maxout_vol", "maxu")
-#: Unit of each simulated signal (pulab.sim output is SI), as a column-name suffix.
+#: Unit of each simulated signal (pulab.analyses.sim output is SI), as a column-name suffix.
 _CSV_UNITS = {"id": "A", "iq": "A", "ud": "V", "uq": "V", "theta": "rad", "theta_hat": "rad",
               "omega_hat": "rad_per_s"}
 

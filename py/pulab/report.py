@@ -11,15 +11,15 @@ Examples
 
 from __future__ import annotations
 
-from .bases import bases, flux_linkage, per_unit
-from .constants import magic_constants
-from .datasheet import mechanical
-from .gains import current_pi, current_pi_si, gains_from_integers, pll_gains
-from .inputs import normalize
-from .messages import to_zh
-from .review import review
-from .steps import finish
-from .vendor import current_pi_step, raw_from_si, vendor_results
+from .model.bases import bases, flux_linkage, per_unit
+from .profiles.inovance_magic import magic_constants
+from .model.datasheet import mechanical
+from .model.gains import current_pi, current_pi_si, gains_from_integers, pll_gains
+from .schema.inputs import normalize
+from .schema.messages import to_zh
+from .analyses.review import review
+from .analyses.slices import finish
+from .profiles.inovance_code import current_pi_step, raw_from_si, vendor_results
 
 __all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "current_pi_section"]
 
@@ -94,10 +94,10 @@ def report_steps(inp: dict):
 
     Returns
     -------
-    generator — yields None between slices of the simulation (:mod:`pulab.steps`; none
+    generator — yields None between slices of the simulation (:mod:`pulab.analyses.slices`; none
     without ``sim``), returning a dict:
         ``input`` (normalized), ``base``, ``pu``, ``vendor``, ``current_pi``, ``pll``,
-        ``constants``, ``mechanical``, ``review`` (graded findings, :mod:`pulab.review`),
+        ``constants``, ``mechanical``, ``review`` (graded findings, :mod:`pulab.analyses.review`),
         ``warnings``/``warnings_zh`` (the review's errors and warnings as text, then the
         profiles' and the loop analysis' warnings), ``datasheet`` (when given: values and
         conversions) and, when asked, ``sim`` and ``loop``.
@@ -111,7 +111,7 @@ def report_steps(inp: dict):
     m, d, c = n["motor"], n["drive"], n["conventions"]
     sim_in = None
     if "sim" in n:
-        from . import sim as _sim  # imported only when asked: plain reports stay fast
+        from .analyses import sim as _sim  # imported only when asked: plain reports stay fast
         sim_in = _sim.validate(n["sim"])
     b = input_bases(n)
     psi = flux_linkage(c["base"], m["bemf_v"], m["rated_freq_hz"])
@@ -143,7 +143,7 @@ def report_steps(inp: dict):
         out["profiles"] = prof
     if n["analysis"] is not None:
         # issue 11, only when asked (like "sim"): plain reports stay within their time budget
-        from . import loop as _loop
+        from .analyses import loop as _loop
         out["loop"] = _loop.analyze(out, n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
     if sim_in is not None:

@@ -29,7 +29,7 @@ SWEEPS = {
 
 def _median(f, repeat: int) -> tuple:
     """(wall, CPU) medians in seconds; on a shared machine the CPU time is the fairer number."""
-    from pulab import integers
+    from pulab.analyses import integers
     f()  # warm-up (lazy imports)
     wall, cpu = [], []
     for _ in range(repeat):
@@ -43,7 +43,7 @@ def _median(f, repeat: int) -> tuple:
 
 def sweep_timing(repeat: int = 5) -> dict:
     """(wall, CPU) median seconds of each sweep in :data:`SWEEPS` (whole, with boundaries)."""
-    from pulab.sweep import sweep
+    from pulab.analyses.sweep import sweep
     return {name: _median(lambda req=req: sweep({"input": SEED, **req}), repeat)
             for name, req in SWEEPS.items()}
 
@@ -54,7 +54,7 @@ def batch_timing(rows: int = 10_000, repeat: int = 3) -> tuple:
     import sys
     sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "data"))
     from make_catalogue import synthetic, to_csv
-    from pulab.batch import batch_csv
+    from pulab.analyses.batch import batch_csv
     text = to_csv(synthetic(rows))
     return _median(lambda: batch_csv(text), repeat)
 

@@ -1,4 +1,4 @@
-"""Batch (pulab.batch, `pulab batch`): the CSV contract, bad rows, units, the 1,000-motor catalogue.
+"""Batch (pulab.analyses.batch, `pulab batch`): the CSV contract, bad rows, units, the 1,000-motor catalogue.
 
 Expected integers come from the golden-vector oracle (tests/oracle/oracle.py, never imports
 pulab), fed with the SI values a reader gets by converting the units by hand.
@@ -14,8 +14,8 @@ import pytest
 from conftest import ROOT
 from pulab import InputError
 from pulab.api import batch_json
-from pulab.batch import batch_csv, findings_counts, read_table
-from pulab.messages import has_chinese
+from pulab.analyses.batch import batch_csv, findings_counts, read_table
+from pulab.schema.messages import has_chinese
 
 sys.path.insert(0, str(ROOT / "tests/oracle"))
 import oracle  # noqa: E402

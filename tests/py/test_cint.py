@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 from hypothesis import given, strategies as st
 
-from pulab.cint import INT16, INT32, UINT16, UINT32, CDivisionByZero, CInt, trunc_div
+from pulab.fixedpoint.cint import INT16, INT32, UINT16, UINT32, CDivisionByZero, CInt, trunc_div
 
 i32 = st.integers(-(1 << 31), (1 << 31) - 1)
 u32 = st.integers(0, (1 << 32) - 1)

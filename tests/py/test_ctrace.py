@@ -16,8 +16,8 @@ from conftest import ROOT
 from pulab.api import trace_json
 from pulab.ctrace import TraceError, trace
 from pulab.ctrace.examples import EXAMPLES
-from pulab.errors import InputError
-from pulab.messages import has_chinese
+from pulab.schema.errors import InputError
+from pulab.schema.messages import has_chinese
 
 
 def value(code, name, target="c28x", **inputs):

@@ -6,7 +6,7 @@ and type, seeded) and random inputs are compiled and run; every final variable m
 the tracer's.  Built with -fwrapv: signed overflow is compared as the two's-complement
 wrap; vectors that meet other undefined behaviour (shift count out of range, INT_MIN/-1,
 division by zero) are excluded and counted.  The seed's own Inovance blocks run over
-1,100 random motors the same way, and must also equal pulab.vendor's hand-written twins.
+1,100 random motors the same way, and must also equal pulab.profiles.inovance_code's hand-written twins.
 
 Missing tools: SKIPPED loudly; with CI=true the missing tools fail the test.
 """
@@ -21,7 +21,7 @@ import pytest
 
 from ctrace_compilers import available, run_cases
 from ctrace_gen import Case, generate_case, random_vector
-from pulab import vendor
+from pulab.profiles import inovance_code as vendor
 from pulab.ctrace import TraceError, compile_code, run_checked
 from pulab.ctrace.examples import EXAMPLES
 from pulab.ctrace.parser import Decl
@@ -140,7 +140,7 @@ def _seed_case(name: str, target: str) -> tuple:
 
 
 def _vendor_value(name: str, raw: dict, values: dict):
-    """The hand-written pulab.vendor twin of each seed block's result."""
+    """The hand-written pulab.profiles.inovance_code twin of each seed block's result."""
     if name == "rpm":
         return vendor.rpm(raw)["value"], values["gMotorExtPer.Rpm"]
     if name == "ld":
@@ -194,6 +194,6 @@ def test_seed_statements_match_the_compiler_over_motors(target, capsys):
               f"{'avr-gcc+simavr' if target == 'avr' else 'gcc -m32'}: {MOTORS} motors × "
               f"{len(cases)} blocks = {pairs} pairs ({excluded} excluded: the firmware "
               f"divides by zero), {len(mismatches)} mismatches"
-              + (f"; {twins} pulab.vendor twins equal" if twins else ""))
+              + (f"; {twins} pulab.profiles.inovance_code twins equal" if twins else ""))
     assert not mismatches, mismatches[:3]
     assert pairs + excluded == MOTORS * len(cases) and pairs >= 1000 * len(cases)

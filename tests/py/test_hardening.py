@@ -21,7 +21,7 @@ from adversarial import BASE, cases
 from conftest import ROOT
 from pulab.__main__ import main
 from pulab.api import export_json, qcalc_json, run_json
-from pulab.jsontext import MAX_DEPTH, parse
+from pulab.schema.jsontext import MAX_DEPTH, parse
 
 FUZZ_CASES = 10_000
 

@@ -1,4 +1,4 @@
-"""pulab.loop (issue 11): discrete margins, delays, design, PLL, speed loop — against the
+"""pulab.analyses.loop (issue 11): discrete margins, delays, design, PLL, speed loop — against the
 python-control oracle tests/oracle/loop_oracle.py (golden files tests/golden/loop) and by
 properties that follow from the mathematics."""
 
@@ -15,9 +15,9 @@ import sys
 import pytest
 
 import pulab
-from pulab.errors import InputError
-from pulab.loop import current, discrete, pll, polynomial
-from pulab.messages import has_chinese
+from pulab.schema.errors import InputError
+from pulab.analyses.loop import current, discrete, pll, polynomial
+from pulab.schema.messages import has_chinese
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GOLDEN = ROOT / "tests" / "golden" / "loop"

@@ -8,7 +8,7 @@ import pytest
 from conftest import ROOT
 from pulab import report
 from pulab.api import qcalc_json, run_json
-from pulab.messages import has_chinese, to_zh
+from pulab.schema.messages import has_chinese, to_zh
 
 ERRORS = json.loads((ROOT / "tests/golden/errors.json").read_text())
 GOLDEN = sorted((ROOT / "tests/golden").glob("*.json"))

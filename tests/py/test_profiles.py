@@ -20,7 +20,7 @@ import pytest
 from conftest import ROOT, SEED_INPUT
 from pulab import report
 from pulab.api import run_json
-from pulab.messages import has_chinese
+from pulab.schema.messages import has_chinese
 from pulab.profiles import NAMES, header
 from pulab.profiles.common import mantissa_shift
 from pulab.profiles.translate import translate
@@ -373,7 +373,7 @@ def test_translate_from_every_profile_reproduces_its_own_integers(source, seed_i
     ([1, 2], "translate.values", None),
 ])
 def test_translate_errors_name_the_field(seed_input, values, field, message):
-    from pulab.errors import InputError
+    from pulab.schema.errors import InputError
     with pytest.raises(InputError) as e:
         translate(seed_input, "ti", "q", values)
     assert e.value.field == field
@@ -528,8 +528,8 @@ def test_header_compiles_where_int_is_16_bits(tmp_path, name):
 
 @pytest.mark.parametrize("name", ["ti", "nxp", "st", "microchip"])
 def test_the_family_sweep_reads_each_profile(seed_input, name):
-    """pulab.integers (issue 13) looks integers up in profiles.NAME.constants."""
-    from pulab.integers import evaluate
+    """pulab.analyses.integers (issue 13) looks integers up in profiles.NAME.constants."""
+    from pulab.analyses.integers import evaluate
     e = evaluate(seed_input, name)
     consts = report(_with_profiles(seed_input))["profiles"][name]["constants"]
     assert sorted(e["integers"]) == sorted(f"profiles.{name}.constants.{k}" for k in consts)

@@ -15,7 +15,7 @@ from collections import Counter
 from adversarial import BASE, _value, cases
 from pulab.__main__ import main
 from pulab.api import vendors_json
-from pulab.messages import has_chinese
+from pulab.schema.messages import has_chinese
 from test_hardening import _check_cli, _one_line, _strict
 
 FUZZ = 1500

@@ -4,7 +4,7 @@ import math
 import pytest
 from hypothesis import assume, given, strategies as st
 
-from pulab.qformat import QFormat, decode, encode, iqsat, parse_format
+from pulab.fixedpoint.qformat import QFormat, decode, encode, iqsat, parse_format
 
 
 @pytest.mark.parametrize("fmt, name, lo, hi", [

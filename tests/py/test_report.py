@@ -11,7 +11,7 @@ from hypothesis import given, settings, strategies as st
 from conftest import ROOT, SEED_INPUT
 from pulab import InputError, report
 from pulab.api import qcalc_json
-from pulab.messages import has_chinese
+from pulab.schema.messages import has_chinese
 
 
 def test_seed_bases_and_per_unit(seed_input):

@@ -12,8 +12,8 @@ import pytest
 
 from conftest import ROOT
 from pulab import InputError, report
-from pulab.messages import has_chinese
-from pulab.review import THRESHOLDS, grade
+from pulab.schema.messages import has_chinese
+from pulab.analyses.review import THRESHOLDS, grade
 
 GOLDEN = sorted((ROOT / "tests" / "golden" / "review").glob("*.json"))
 REL = 1e-12
@@ -39,7 +39,7 @@ def test_real_motor_datasheets(path):
         with pytest.raises(InputError) as e:
             report(case["input"])
         assert e.value.field == exp["error_field"]
-        from pulab.datasheet import apply
+        from pulab.model.datasheet import apply
         motor = apply(case["input"]["datasheet"], case["input"]["motor"], case["input"]["drive"])[0]
     else:
         r = report(case["input"])

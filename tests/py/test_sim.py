@@ -1,4 +1,4 @@
-"""pulab.sim (issue 3): plant discretization, the three current-loop variants, the PLL
+"""pulab.analyses.sim (issue 3): plant discretization, the three current-loop variants, the PLL
 variants, metrics, validation, and the golden trajectories of tests/oracle/sim_oracle.py."""
 
 import cmath
@@ -14,11 +14,11 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 import pulab
-from pulab import sim
-from pulab.errors import InputError
-from pulab.sim import current, metrics, plant
-from pulab.sim.linalg import expm, matmul
-from pulab.vendor import current_pi_step
+from pulab.analyses import sim
+from pulab.schema.errors import InputError
+from pulab.analyses.sim import current, metrics, plant
+from pulab.analyses.sim.linalg import expm, matmul
+from pulab.profiles.inovance_code import current_pi_step
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GOLDEN = ROOT / "tests" / "golden" / "sim"
@@ -303,7 +303,7 @@ def test_pll_si_and_pu_agree():
 
 
 def test_pll_q15_angle_is_int16_of_pi():
-    from pulab.sim import pll
+    from pulab.analyses.sim import pll
     g = pll.q15_gains(444.0, 98696.0, 2 * math.pi * 220, 220.0, 1e-4)
     assert g["g"] == round(2 * 220 * 1e-4 * 2 ** 23)
     th_in, th_hat, w = pll.run_q15([math.pi * 0.999, -math.pi * 0.999, math.pi], g)
@@ -467,7 +467,7 @@ def test_fuzzed_sim_input_gives_output_or_input_error(cur, pll):
 
 
 def test_bench_runs():
-    from pulab.sim.bench import bench
+    from pulab.analyses.sim.bench import bench
     r = bench(500, repeat=1)
     assert r["steps"] == 500 and r["steps_per_s"] > 0
 

@@ -3,7 +3,7 @@
 import json
 
 from pulab import api
-from pulab.steps import SLICE_STEPS, finish
+from pulab.analyses.slices import SLICE_STEPS, finish
 
 SEED = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
                   "rs_ohm": 1.5, "ld_h": 0.0006, "lq_h": 0.0006, "bemf_v": 12, "pole_pairs": 4},

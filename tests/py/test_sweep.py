@@ -1,4 +1,4 @@
-"""The family sweep (pulab.sweep): boundaries against an independent oracle, chunks, errors.
+"""The family sweep (pulab.analyses.sweep): boundaries against an independent oracle, chunks, errors.
 
 The expected boundaries come from tests/oracle/sweep_oracle.py, which never imports pulab:
 it scans the firmware's raw integers with plain Python ints (seed 1.4-3 … 1.4-6) and walks
@@ -15,8 +15,8 @@ import pytest
 from conftest import ROOT, SEED_INPUT
 from pulab import InputError
 from pulab.api import sweep_json
-from pulab.messages import has_chinese
-from pulab.sweep import chunk, make_plan, merge, sweep
+from pulab.schema.messages import has_chinese
+from pulab.analyses.sweep import chunk, make_plan, merge, sweep
 
 sys.path.insert(0, str(ROOT / "tests/oracle"))
 import oracle  # noqa: E402  (the golden-vector oracle)
@@ -257,7 +257,7 @@ def test_vendor_reads_lists_every_raw_field_a_result_depends_on():
     # The sweep reuses a vendor result while the raw fields VENDOR_READS names repeat; changing
     # any other field must leave the result as it is (value, flags and whole trace).
     import random
-    from pulab.vendor import RAW_FIELDS, VENDOR_READS, VENDOR_RESULTS
+    from pulab.profiles.inovance_code import RAW_FIELDS, VENDOR_READS, VENDOR_RESULTS
     rng = random.Random(3)
     for _ in range(200):
         raw = {k: rng.choice((1, 2, 7, 150, 1500, 22000, 65535, rng.randrange(65536)))
@@ -279,7 +279,7 @@ def test_vendor_reads_lists_every_raw_field_a_result_depends_on():
 def test_another_profile_is_swept_through_the_report(monkeypatch):
     # Issue 12's profiles (report["profiles"][NAME]["constants"]) are not in this branch yet; a
     # report wrapped with one synthetic profile checks the path a real one will take.
-    from pulab import integers
+    from pulab.analyses import integers
     from pulab.report import report as real_report
 
     def with_profile(inp):

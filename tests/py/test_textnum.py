@@ -1,9 +1,9 @@
-"""Typed numbers (pulab.textnum) and the Q calculator's readings: hex, register values, IQmath."""
+"""Typed numbers (pulab.schema.textnum) and the Q calculator's readings: hex, register values, IQmath."""
 import pytest
 
 from pulab import InputError
 from pulab.api import qcalc
-from pulab.textnum import parse_int, parse_real
+from pulab.schema.textnum import parse_int, parse_real
 
 
 @pytest.mark.parametrize("text, want", [

@@ -4,7 +4,7 @@ import math
 import pytest
 
 from pulab import InputError
-from pulab.vendor import (current_pi_step, flux_rotor, freq_per, inductance,
+from pulab.profiles.inovance_code import (current_pi_step, flux_rotor, freq_per, inductance,
                           max_output_voltage, raw_from_si, round_half_away, rpm, to_si)
 
 SEED_RAW = {"Voltage": 17, "Current": 150, "FullFreq01": 22000, "FreqRated01": 22000,

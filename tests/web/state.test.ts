@@ -75,7 +75,7 @@ describe('what is sent', () => {
   for (const [name, inp, want] of eff) it(`effectiveInput, ${name}`, () => expect(effectiveInput(inp)).toEqual(want));
 });
 
-describe('presets: current-loop bandwidth suited to Ts (no ω_c·Ts finding from pulab.review, except the seed example)', () => {
+describe('presets: current-loop bandwidth suited to Ts (no ω_c·Ts finding from pulab.analyses.review, except the seed example)', () => {
   let p: NodePulab;
   beforeAll(async () => {
     p = await bootPulab();

@@ -39,7 +39,7 @@ export function pulabFiles(repo: string): Record<string, string> {
  * the first call after a boot runs warm.
  */
 function warm(key: string): string {
-  return `import json, pulab, pulab.api, pulab.sim, pulab.export, pulab.loop, pulab.profiles, pulab.ctrace, pulab.sweep, pulab.batch
+  return `import json, pulab, pulab.api, pulab.analyses.sim, pulab.export, pulab.analyses.loop, pulab.profiles, pulab.ctrace, pulab.analyses.sweep, pulab.analyses.batch
 seed = json.loads(${JSON.stringify(key)})
 pulab.api.run_json(json.dumps(seed))
 pulab.api.run_json(json.dumps({**seed, "profiles": {}, "analysis": {}}))

@@ -50,7 +50,7 @@ export const SECTIONS: SectionSpec[] = [
     ],
   },
   {
-    // pulab.datasheet: what datasheets print; each value fills a motor field left empty.
+    // pulab.model.datasheet: what datasheets print; each value fills a motor field left empty.
     id: 'datasheet', title: 'sec_datasheet', hint: 'datasheetHint', collapsed: true, fields: [
       { path: 'datasheet.speed_rpm', kind: 'number', unit: 'rpm', optional: true },
       { path: 'datasheet.ke_v_per_krpm', kind: 'number', unit: 'V/krpm', optional: true },

@@ -119,7 +119,7 @@ export interface LoopReport {
     speed?: { f_hz: number[]; open: BodeCurve; closed: BodeCurve };
   };
 }
-/** pulab.review: one graded finding; `key` = the report path of the value, `field` = the input to change. */
+/** pulab.analyses.review: one graded finding; `key` = the report path of the value, `field` = the input to change. */
 export interface Finding {
   severity: 'error' | 'warning' | 'note';
   code: string;
@@ -135,7 +135,7 @@ export interface Review {
   thresholds: Record<string, Partial<Record<'note' | 'warning' | 'error', number>>>;
   headroom: Record<string, number | null | boolean>;
 }
-/** pulab.datasheet: one conversion from a datasheet value into a motor field. */
+/** pulab.model.datasheet: one conversion from a datasheet value into a motor field. */
 export interface Conversion {
   field: string;
   label: string;

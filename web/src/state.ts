@@ -15,7 +15,7 @@ export const SEED_INPUT: Input = {
   current_loop: { method: 'bandwidth', bandwidth_hz: 500, damping: 0.7071067811865476 },
   pll: { bandwidth_hz: 50, damping: 0.7071067811865476 },
   raw: {},
-  // Empty fields take pulab.sim's motor-dependent defaults (step 0.5·I_b, duration from ω_c, …).
+  // Empty fields take pulab.analyses.sim's motor-dependent defaults (step 0.5·I_b, duration from ω_c, …).
   sim: { current: { axis: 'd', delay: false }, pll: {} },
   // Loop analysis (issue 11): sent with the simulation request only (Bode data and the speed
   // response are heavy); J is a placeholder inertia for a small servo, to be replaced.
@@ -62,7 +62,7 @@ export const PRESETS: Preset[] = [
       { base_freq_hz: 300, udc_v: 48, ts_s: 0.00005 }, 600),
   },
   {
-    // A motor entered as its datasheet prints it (pulab.datasheet): HEIDENHAIN SRP 5000, DC 48 V,
+    // A motor entered as its datasheet prints it (pulab.model.datasheet): HEIDENHAIN SRP 5000, DC 48 V,
     // 20 poles, Ke 0.397 V_rms/(rad/s), R20 9.06 Ω and L1 2.42 mH terminal to terminal, 300 rpm.
     id: 'srp5000',
     label: { en: 'Datasheet: HEIDENHAIN SRP 5000 (48 V DC, 300 rpm)', zh: '样本参数：HEIDENHAIN SRP 5000（直流 48 V，300 rpm）' },

@@ -10,8 +10,8 @@ saturation).  Standard library only; the code is parsed, never ``eval``-ed.
 Modules: :mod:`~pulab.ctrace.lexer` (tokens), :mod:`~pulab.ctrace.parser`
 (the subset, ``#define``, ``// @q`` annotations), :mod:`~pulab.ctrace.types`
 (targets, type names, conversions), :mod:`~pulab.ctrace.check` (static types),
-:mod:`~pulab.ctrace.evaluate` (values and flags, on :mod:`pulab.cint`),
-:mod:`~pulab.ctrace.tracing` (the entry point), :mod:`~pulab.ctrace.cli`
+:mod:`~pulab.ctrace.evaluate` (values and flags, on :mod:`pulab.fixedpoint.cint`),
+:mod:`~pulab.ctrace.tracing` (the entry point), :mod:`~pulab.cli.trace`
 (``python -m pulab trace``), :mod:`~pulab.ctrace.examples` (the seed's blocks).
 
 Examples

@@ -1,7 +1,7 @@
 """Running a typed program: every intermediate value as the target computes it.
 
-The integer arithmetic is :mod:`pulab.cint`'s (``+ - * /`` and shifts through
-:class:`~pulab.cint.CInt`, conversions through :func:`~pulab.cint.wrap_to`);
+The integer arithmetic is :mod:`pulab.fixedpoint.cint`'s (``+ - * /`` and shifts through
+:class:`~pulab.fixedpoint.cint.CInt`, conversions through :func:`~pulab.fixedpoint.cint.wrap_to`);
 this module adds the C operators cint has no use for and names the flags:
 
 ``signed_overflow``
@@ -36,7 +36,7 @@ Examples
 
 from __future__ import annotations
 
-from ..cint import CInt, trunc_div, wrap_to
+from ..fixedpoint.cint import CInt, trunc_div, wrap_to
 from .check import Checked
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,

@@ -16,7 +16,7 @@ from .check import Checked, check
 from .evaluate import Evaluator, hex_of
 from .parser import parse
 from .types import TARGETS
-from ..errors import InputError
+from ..schema.errors import InputError
 
 __all__ = ["trace", "trace_checked", "compile_code", "run_checked", "DEFAULT_GLOBAL_Q"]
 

@@ -1,6 +1,6 @@
 """C integer types of each target, the firmware's type names, and C's conversions.
 
-A type is a :class:`pulab.cint.CType` named by its canonical C spelling
+A type is a :class:`pulab.fixedpoint.cint.CType` named by its canonical C spelling
 (``unsigned long``); its conversion rank (C99 6.3.1.1) is looked up from
 that name.  Widths per target:
 
@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..cint import CType
+from ..fixedpoint.cint import CType
 
 __all__ = ["Target", "TARGETS", "rank", "promote", "common_type", "BASE_TYPE_WORDS"]
 

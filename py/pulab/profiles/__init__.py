@@ -1,6 +1,6 @@
 """Vendor profiles: the same motor and drive in five vendors' scaling (docs/contract.md).
 
-One module per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.vendor`),
+One module per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.profiles.inovance_code`),
 :mod:`.ti`, :mod:`.nxp`, :mod:`.st`, :mod:`.microchip` — each with the same small
 interface: ``OPTIONS`` (its hardware inputs and their defaults), ``CONVENTIONS`` and
 ``CONVENTIONS_ZH`` (its base choices, in words, English and Chinese), ``bases(ctx, opt)``
@@ -26,9 +26,9 @@ Examples
 
 from __future__ import annotations
 
-from ..bases import flux_linkage
-from ..errors import InputError
-from ..inputs import _integer, object_fields, real, shown  # the report's own checks
+from ..model.bases import flux_linkage
+from ..schema.errors import InputError
+from ..schema.inputs import _integer, object_fields, real, shown  # the report's own checks
 from . import inovance, microchip, nxp, st, ti
 from .common import SQRT2
 
@@ -49,9 +49,9 @@ def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
     Parameters
     ----------
     n : dict
-        The normalized input (:func:`pulab.inputs.normalize`).
+        The normalized input (:func:`pulab.schema.inputs.normalize`).
     raw, vendor : dict
-        The Inovance raw integers and results (:mod:`pulab.vendor`).
+        The Inovance raw integers and results (:mod:`pulab.profiles.inovance_code`).
     pi : dict
         The report's ``current_pi``; its SI kp [V/A], ki [V/(A·s)] per axis are the
         gains every profile stores (a V/A ratio is the same in peak and RMS).

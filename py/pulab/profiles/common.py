@@ -27,7 +27,7 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ..qformat import QFormat, encode
+from ..fixedpoint.qformat import QFormat, encode
 
 __all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "SOURCES",
            "derived"]

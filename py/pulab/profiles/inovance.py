@@ -1,7 +1,7 @@
-"""Inovance-style C2000 profile (the seed's code) — a view of :mod:`pulab.vendor`.
+"""Inovance-style C2000 profile (the seed's code) — a view of :mod:`pulab.profiles.inovance_code`.
 
-The motor constants are :func:`pulab.vendor.vendor_results` (bit-exact C2000
-statements); the current-loop integers are :func:`pulab.gains.current_pi` with
+The motor constants are :func:`pulab.profiles.inovance_code.vendor_results` (bit-exact C2000
+statements); the current-loop integers are :func:`pulab.model.gains.current_pi` with
 Inovance's own bases U_b = U_LL/√3, I_b = I_rms (seed 1.4-13), whatever the
 report's ``conventions.base`` says:
 
@@ -19,8 +19,8 @@ Examples
 
 from __future__ import annotations
 
-from ..gains import current_pi, gains_from_integers
-from ..vendor import to_si
+from ..model.gains import current_pi, gains_from_integers
+from .inovance_code import to_si
 from .common import SOURCES, SQRT3, TWO_PI, fixed
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",

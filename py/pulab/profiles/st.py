@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import math
 
-from ..cint import trunc_div
+from ..fixedpoint.cint import trunc_div
 from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor
 from .headers import define, define_float, guard
 

@@ -30,8 +30,8 @@ Examples
 
 from __future__ import annotations
 
-from ..errors import InputError
-from ..inputs import _integer, object_fields, shown  # the report's own checks
+from ..schema.errors import InputError
+from ..schema.inputs import _integer, object_fields, shown  # the report's own checks
 from ..report import report
 from . import MODULES, NAMES, context_of, options
 

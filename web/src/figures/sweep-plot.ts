@@ -1,5 +1,5 @@
 // Sweep figures (issue 13): 1-D error curves with the chosen integer's status regions and
-// boundaries; 2-D status map. Every number drawn comes from pulab.sweep; nothing is computed here.
+// boundaries; 2-D status map. Every number drawn comes from pulab.analyses.sweep; nothing is computed here.
 import { h } from '../dom';
 import { t, type Key } from '../i18n';
 import type { Boundary, Plan, Points, Status, Summary } from '../family/types';

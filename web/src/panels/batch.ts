@@ -1,5 +1,5 @@
 // The Batch panel (issue 13): a CSV of motors → every motor's firmware integers, errors and
-// findings, computed by pulab.batch in the worker chunk by chunk (progress, cancel). The CSV
+// findings, computed by pulab.analyses.batch in the worker chunk by chunk (progress, cancel). The CSV
 // downloaded is the text Python wrote, the same as `pulab batch motors.csv`.
 import { h, num } from '../dom';
 import { errText, getLang, t, type Key } from '../i18n';

@@ -1,4 +1,4 @@
-// The graded design review (pulab.review): findings, voltage headroom, the thresholds, and the
+// The graded design review (pulab.analyses.review): findings, voltage headroom, the thresholds, and the
 // marks it leaves at the value each finding concerns. Every number comes from the report.
 import { h, num, patch, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';

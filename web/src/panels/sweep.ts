@@ -1,5 +1,5 @@
 // The Sweep panel (issue 13): one or two inputs of the current motor over a range, every
-// firmware integer's error and status, boundaries bisected in Python (pulab.sweep), worst cases
+// firmware integer's error and status, boundaries bisected in Python (pulab.analyses.sweep), worst cases
 // that open as the current motor. Computed chunk by chunk in the worker, with progress and cancel.
 import { h, num, table } from '../dom';
 import { ALL_FIELDS, effectiveInput } from '../fields';

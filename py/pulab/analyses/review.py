@@ -1,0 +1,306 @@
+"""The graded design review: every finding with a severity, the value concerned and what to change.
+
+Severities: ``error`` (the firmware computes a wrong number or the drive cannot work
+as designed), ``warning`` (works, but an experienced engineer would change it),
+``note`` (worth knowing).  The thresholds are data (:data:`THRESHOLDS`), stated in
+docs/contract.md, so the text and the test use the same numbers.
+
+Checks:
+
+- each firmware constant (``vendor.*``): the C code's error against the exact value
+  from the same raw integers (seed 1.4, 2.2); any wrap or Uint16 store change is an error;
+- each raw integer converted from SI: the rounding to the firmware unit;
+- the current-PI integers pm_kp (Q12), pm_ki (Q16): their rounding (seed 2.2-9);
+- ω_c·Ts of the current loop;
+- f_b against the rated frequency, compared on the firmware integers FullFreq01 and
+  FreqRated01 (what FreqPer is computed from), not on the typed floats;
+- voltage headroom: back-EMF at f_b, and R·I and ω·L·I at rated current, against the
+  firmware's voltage limit pm_maxout_vol (seed 2.2-1);
+- with a PLL simulation: lock and the angle error after lock (pulab.analyses.sim.metrics).
+
+Examples
+--------
+>>> grade(0.05, THRESHOLDS["quantization_pct"]), grade(-1.5, THRESHOLDS["quantization_pct"])
+(None, 'warning')
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..schema.messages import to_zh
+from ..profiles.inovance_code import RAW_FIELDS, raw_source
+
+__all__ = ["THRESHOLDS", "SEVERITIES", "grade", "review", "headroom"]
+
+SQRT3 = math.sqrt(3.0)
+SQRT2 = math.sqrt(2.0)
+
+SEVERITIES = ("error", "warning", "note")
+#: Lower bounds of each severity (|value| ≥ bound); docs/contract.md "Design review".
+THRESHOLDS = {
+    # relative error of a firmware constant, a raw integer or a PI integer, in %
+    "quantization_pct": {"note": 0.1, "warning": 1.0, "error": 5.0},
+    # ω_c·Ts of the current loop (dimensionless)
+    "wc_ts": {"warning": 0.2, "error": 1.0},
+    # needed / available voltage (line RMS)
+    # needed / available voltage (line RMS): a warning at the rated point or when the
+    # back-EMF alone exceeds the limit below the rated frequency, a note above it
+    "voltage_ratio": {"warning": 1.0},
+    # PLL angle error after lock, degrees
+    "pll_steady_deg": {"note": 0.5, "warning": 2.0},
+}
+
+#: What to change when a firmware constant is off (the input it mostly depends on).
+_CONSTANT_FIELD = {"Rpm": "motor.rs_ohm", "LD": "motor.ld_h", "LQ": "motor.lq_h",
+                   "FreqPer": "drive.base_freq_hz", "FluxRotor": "drive.base_freq_hz",
+                   "pm_maxout_vol": "drive.udc_v", "maxu": "drive.udc_v"}
+
+
+def grade(value: float, bounds: dict) -> str | None:
+    """The severity whose bound |value| reaches (the most severe), or None."""
+    for sev in SEVERITIES:
+        if sev in bounds and abs(value) >= bounds[sev]:
+            return sev
+    return None
+
+
+def _finding(out: list, severity: str | None, code: str, key: str, field: str,
+             value, message: str) -> None:
+    if severity is None:
+        return
+    out.append({"severity": severity, "code": code, "key": key, "field": field,
+                "value": value, "message": message, "message_zh": to_zh(message)})
+
+
+def headroom(n: dict, vendor: dict) -> dict:
+    """Voltage needed at rated current against the firmware's voltage limit (line RMS, V).
+
+    Steady state with i_d = 0 and i_q = I_n (RMS phase quantities, seed 1.2-3):
+    u_q = R·I + ω·ψ, u_d = −ω·L_q·I, U_LL = √3·|u|, with ψ = E_LL/(√3·ω_n) (RMS).
+
+    Parameters
+    ----------
+    n : dict — normalized input
+    vendor : dict — vendor results (``pm_maxout_vol.si`` is the limit, V line RMS)
+
+    Returns
+    -------
+    dict
+        ``limit_v`` (pm_maxout_vol in V line RMS), ``udc_limit_v`` (U_dc/√2, before the
+        firmware's truncation), ``bemf_fb_v`` (back-EMF at f_b), ``need_rated_fn_v`` and
+        ``need_rated_fb_v`` (at rated current, rated frequency and f_b),
+        ``field_weakening_from_hz`` (frequency where the back-EMF alone reaches the limit,
+        null when not below f_b), ``field_weakening`` (bool: needed below f_b at rated
+        current).
+
+    Examples
+    --------
+    >>> n = {"motor": {"rated_voltage_v": 220, "rated_current_a": 2.8, "rated_freq_hz": 200,
+    ...      "rs_ohm": 1.39, "lq_h": 0.00253, "bemf_v": 110}, "drive": {"base_freq_hz": 400,
+    ...      "udc_v": 311}}
+    >>> h = headroom(n, {"pm_maxout_vol": {"si": 219.0}})
+    >>> round(h["bemf_fb_v"], 1), round(h["field_weakening_from_hz"], 1), h["field_weakening"]
+    (220.0, 398.2, True)
+    """
+    m, d = n["motor"], n["drive"]
+    psi = m["bemf_v"] / (SQRT3 * 2.0 * math.pi * m["rated_freq_hz"])
+    i = m["rated_current_a"]
+
+    def need(f: float) -> float:
+        w = 2.0 * math.pi * f
+        return SQRT3 * math.hypot(m["rs_ohm"] * i + w * psi, w * m["lq_h"] * i)
+
+    limit = vendor["pm_maxout_vol"]["si"]
+    f_b = d["base_freq_hz"]
+    bemf_fb = m["bemf_v"] * f_b / m["rated_freq_hz"]
+    f_fw = limit / m["bemf_v"] * m["rated_freq_hz"]
+    return {"limit_v": limit, "udc_limit_v": d["udc_v"] / SQRT2, "bemf_fb_v": bemf_fb,
+            "need_rated_fn_v": need(m["rated_freq_hz"]), "need_rated_fb_v": need(f_b),
+            "field_weakening_from_hz": f_fw if f_fw < f_b else None,
+            "field_weakening": need(f_b) > limit}
+
+
+def _constants(f: list, vendor: dict, unit: str) -> None:
+    q = THRESHOLDS["quantization_pct"]
+    for name, res in vendor.items():
+        if name == "raw":
+            continue
+        key = f"vendor.{name}.value"
+        field = "conventions.inductance_unit" if "unit_uH" in res["flags"] \
+            else _CONSTANT_FIELD[name]
+        if {"wrap", "store"} & set(res["flags"]):
+            _finding(f, "error", "constant_wrap", key, field, res["value"],
+                     f"vendor.{name} = {res['value']}: the firmware arithmetic wrapped "
+                     f"(exact value {res['ideal']:.6g}); change {field}")
+        else:
+            _finding(f, grade(res["error_pct"], q), "constant_error", key, field,
+                     res["error_pct"],
+                     f"vendor.{name} = {res['value']} is {res['error_pct']:+.3g} % off the "
+                     f"exact value {res['ideal']:.6g}; change {field}")
+
+
+def _raw_rounding(f: list, n: dict, raw: dict) -> None:
+    unit = n["conventions"]["inductance_unit"]
+    for name in RAW_FIELDS:
+        if name in n["raw"]:
+            continue
+        path, scale = raw_source(name, unit)
+        section, key = path.split(".")
+        si = n[section][key]
+        exact = si * scale
+        if raw[name] == 0:
+            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", path, 0,
+                     f"raw.{name} = 0: {path} = {si:g} is below the firmware resolution")
+            continue
+        pct = 100.0 * (raw[name] - exact) / exact
+        _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
+                 f"vendor.raw.{name}", path, pct,
+                 f"raw.{name} = {raw[name]}: rounding {path} = {si:g} to the firmware unit "
+                 f"changes it by {pct:+.2f} %")
+
+
+def _pi(f: list, n: dict, pi: dict) -> None:
+    loop = n["current_loop"]
+    field = "current_loop.pm_ki" if loop["method"] == "integers" else "drive.ts_s"
+    for axis in ("d", "q"):
+        g = pi[axis]
+        if g["pm_ki"] == 0:
+            _finding(f, "error", "pi_zero", f"current_pi.{axis}.pm_ki", field, 0,
+                     f"current_pi.{axis}.pm_ki rounds to 0: the integral action is lost "
+                     f"(ki·Ts is below one Q16 LSB of the per-unit gain)")
+        for k in ("kp", "ki"):
+            if g[f"pm_{k}"] == 0 or loop["method"] == "integers":
+                continue  # given integers are exact by definition
+            pct = 100.0 * (g["from_integers"][k] - g[k]) / g[k]
+            _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "pi_rounding",
+                     f"current_pi.{axis}.pm_{k}", "current_loop.bandwidth_hz", pct,
+                     f"current_pi.{axis}.pm_{k} = {g[f'pm_{k}']}: coarse, rounding changes "
+                     f"{k} by {pct:+.1f} %")
+
+
+def _wc_ts(f: list, n: dict, pi: dict) -> None:
+    ts = n["drive"]["ts_s"]
+    loop = n["current_loop"]
+    bw = loop["bandwidth_hz"] if loop["method"] in ("bandwidth", "damping") \
+        else pi["d"]["from_integers"]["bandwidth_hz"]
+    wc_ts = 2.0 * math.pi * bw * ts
+    limit = THRESHOLDS["wc_ts"]
+    sev = grade(wc_ts, limit)
+    field = "current_loop.bandwidth_hz" if loop["method"] in ("bandwidth", "damping") \
+        else f"current_loop.{'kp' if loop['method'] == 'manual' else 'pm_kp'}"
+    ok_hz = limit["warning"] / (2.0 * math.pi * ts)
+    if sev == "error":
+        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts,
+                 f"current-loop ω_c·Ts = {wc_ts:.3f} ≥ {limit['error']:g}: the 1.5·Ts loop "
+                 f"delay leaves a phase margin below 5°; lower the bandwidth to {ok_hz:.4g} Hz "
+                 f"or less ({field})")
+    elif sev == "warning":
+        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts,
+                 f"current-loop ω_c·Ts = {wc_ts:.3f} > {limit['warning']:g}: the "
+                 f"continuous-time design is far from the discrete loop's behaviour; lower "
+                 f"the bandwidth to {ok_hz:.4g} Hz or less ({field})")
+
+
+def _base_frequency(f: list, raw: dict) -> None:
+    # On the integers the firmware divides (FreqPer = FreqRated01·2^15/FullFreq01), so a
+    # typed 633.33 Hz vs 633.333 Hz that both store 63333 is no finding.
+    if raw["FullFreq01"] < raw["FreqRated01"]:
+        _finding(f, "warning", "base_below_rated", "vendor.FreqPer.value", "drive.base_freq_hz",
+                 raw["FullFreq01"],
+                 f"raw.FullFreq01 = {raw['FullFreq01']} < raw.FreqRated01 = "
+                 f"{raw['FreqRated01']}: base frequency below rated frequency, FreqPer > 1.0 "
+                 f"in Q15; raise drive.base_freq_hz to motor.rated_freq_hz or more")
+
+
+def _voltage(f: list, h: dict, n: dict) -> None:
+    lim = h["limit_v"]
+    f_b = n["drive"]["base_freq_hz"]
+
+    def ratio(need: float) -> float | None:
+        # A zero limit (U_dc below the firmware's resolution) exceeds any need: no finite ratio.
+        return need / lim if lim > 0 else None
+
+    if lim <= 0 or ratio(h["need_rated_fn_v"]) > THRESHOLDS["voltage_ratio"]["warning"]:
+        _finding(f, "warning", "voltage_rated", "review.headroom.need_rated_fn_v", "drive.udc_v",
+                 ratio(h["need_rated_fn_v"]),
+                 f"at rated current and rated frequency the motor needs "
+                 f"{h['need_rated_fn_v']:.4g} V (line RMS), above the voltage limit "
+                 f"{lim:.4g} V; raise drive.udc_v")
+    if h["field_weakening_from_hz"] is not None:
+        # Above the rated frequency, field weakening is the usual constant-power range;
+        # below it the motor cannot reach its rated speed without it.
+        below_rated = h["field_weakening_from_hz"] < n["motor"]["rated_freq_hz"]
+        _finding(f, "warning" if below_rated else "note", "voltage_bemf", "review.headroom.bemf_fb_v", "drive.base_freq_hz",
+                 ratio(h["bemf_fb_v"]),
+                 f"back-EMF at f_b = {f_b:g} Hz is {h['bemf_fb_v']:.4g} V (line RMS), above "
+                 f"the voltage limit {lim:.4g} V: field weakening needed above "
+                 f"{h['field_weakening_from_hz']:.4g} Hz; raise drive.udc_v or lower "
+                 f"drive.base_freq_hz")
+    elif h["field_weakening"]:
+        _finding(f, "note", "voltage_fb", "review.headroom.need_rated_fb_v", "drive.base_freq_hz",
+                 ratio(h["need_rated_fb_v"]),
+                 f"at rated current and f_b = {f_b:g} Hz the motor needs "
+                 f"{h['need_rated_fb_v']:.4g} V (line RMS), above the voltage limit "
+                 f"{lim:.4g} V: full current up to f_b needs field weakening")
+
+
+def _pll(f: list, sim: dict | None) -> None:
+    if not sim or "pll" not in sim:
+        return
+    for variant in ("q15", "pu", "si"):
+        m = sim["pll"]["metrics"].get(variant)
+        if m is None:
+            continue
+        key = f"sim.pll.metrics.{variant}"
+        if not m["locked"]:
+            _finding(f, "error", "pll_unlocked", f"{key}.locked", "pll.bandwidth_hz", False,
+                     f"{key}: not locked (|θ − θ̂| ≥ 2° in the last 20 % of the run); change "
+                     f"pll.bandwidth_hz")
+        elif m.get("steady_angle_error_deg") is not None:
+            x = m["steady_angle_error_deg"]
+            _finding(f, grade(x, THRESHOLDS["pll_steady_deg"]), "pll_steady",
+                     f"{key}.steady_angle_error_deg", "pll.bandwidth_hz", x,
+                     f"{key}.steady_angle_error_deg = {x:.3g}°: angle error after lock; "
+                     f"change pll.bandwidth_hz")
+        return  # the firmware's variant when present, else the next one
+
+
+def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None) -> dict:
+    """All findings for one report, most severe first.
+
+    Parameters
+    ----------
+    n : dict — normalized input ; raw : dict — raw integers used
+    vendor : dict — vendor results ; pi : dict — ``current_pi``
+    sim : dict or None — the ``sim`` output, for the PLL checks
+
+    Returns
+    -------
+    dict
+        ``findings`` (list of ``{severity, code, key, field, value, message,
+        message_zh}``; ``key`` is the report path of the value concerned, ``field`` the
+        input to change), ``counts`` per severity, ``thresholds``, ``headroom``.
+    """
+    f: list = []
+    unit = n["conventions"]["inductance_unit"]
+    _constants(f, vendor, unit)
+    _raw_rounding(f, n, raw)
+    _pi(f, n, pi)
+    _wc_ts(f, n, pi)
+    _base_frequency(f, raw)
+    h = headroom(n, vendor)
+    _voltage(f, h, n)
+    _pll(f, sim)
+    if unit == "uH":
+        _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit,
+                 "LD/LQ taken in µH: the vendor code was written for 0.01 mH, so "
+                 "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (seed 1.4-6, the '×10' "
+                 "puzzle)")
+    if n["conventions"]["base"] == "custom":
+        _finding(f, "note", "custom_bases", "base.U_b", "conventions.base", "custom",
+                 "custom bases: the vendor integers (Rpm, LD, …) always use the Inovance rms "
+                 "bases U_LL/√3 and I_rms; the PI integers use the custom bases")
+    f.sort(key=lambda x: SEVERITIES.index(x["severity"]))
+    return {"findings": f, "counts": {s: sum(x["severity"] == s for x in f) for s in SEVERITIES},
+            "thresholds": THRESHOLDS, "headroom": h}

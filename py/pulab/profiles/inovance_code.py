@@ -1,0 +1,382 @@
+"""The Inovance C2000 normalization code of seed 1.4 and 2.2, bit-exact, as a trace.
+
+Each result is computed statement by statement with :mod:`pulab.fixedpoint.cint`, so the
+integer after every statement is the one the firmware holds, with the wrap and
+truncation it suffers.  Each result also carries ``ideal``, the exact real
+value the code approximates from the same raw inputs, and ``si``, what the
+integer means back in SI units for this motor.
+
+Raw inputs are the firmware's Uint16 parameters:
+
+========== ===================================== ==============
+name       meaning                               unit
+========== ===================================== ==============
+Voltage    rated line-to-line RMS voltage        1 V
+Current    rated RMS current                     0.01 A
+FullFreq01 base (maximum) frequency f_b          0.01 Hz
+FreqRated01 rated frequency                      0.01 Hz
+RsPm       stator resistance per phase           1 mΩ
+LD, LQ     d/q inductance                        0.01 mH (or 1 µH)
+BemfVolt   back-EMF line RMS at rated frequency  0.1 V
+uDCFilter  DC bus voltage                        0.1 V
+========== ===================================== ==============
+
+Examples
+--------
+>>> raw = {"Voltage": 17, "Current": 150, "RsPm": 1500, "FullFreq01": 22000}
+>>> r = rpm(raw)
+>>> r["value"], round(r["ideal"], 1)        # seed 1.4-1, 1.4-2
+(15022, 15023.6)
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+from ..fixedpoint.cint import INT32, UINT16, UINT32, CDivisionByZero, CInt, CType
+from ..schema.errors import InputError
+from ..fixedpoint.qformat import iqsat
+
+__all__ = [
+    "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_from_si", "round_half_away",
+    "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
+    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "current_pi_step", "PiStep", "to_si",
+]
+
+SQRT3 = math.sqrt(3.0)
+TWO_PI = 2.0 * math.pi
+
+#: Raw firmware fields, the SI input each comes from, and SI → raw scale.
+RAW_FIELDS = ("Voltage", "Current", "FullFreq01", "FreqRated01", "RsPm", "LD", "LQ",
+              "BemfVolt", "uDCFilter")
+RAW_SCALE = {
+    "Voltage": ("motor.rated_voltage_v", 1.0),
+    "Current": ("motor.rated_current_a", 100.0),
+    "FullFreq01": ("drive.base_freq_hz", 100.0),
+    "FreqRated01": ("motor.rated_freq_hz", 100.0),
+    "RsPm": ("motor.rs_ohm", 1000.0),
+    "LD": ("motor.ld_h", None),  # depends on the inductance unit
+    "LQ": ("motor.lq_h", None),
+    "BemfVolt": ("motor.bemf_v", 10.0),
+    "uDCFilter": ("drive.udc_v", 10.0),
+}
+#: SI henry → raw LD/LQ for each inductance unit.
+INDUCTANCE_SCALE = {"10uH": 1e5, "uH": 1e6}
+
+
+def raw_source(name: str, inductance_unit: str) -> tuple[str, float]:
+    """The SI input path a raw field comes from and the SI → raw scale factor."""
+    path, scale = RAW_SCALE[name]
+    return path, scale if scale is not None else INDUCTANCE_SCALE[inductance_unit]
+
+
+def raw_value(name: str, si_value: float, inductance_unit: str) -> int:
+    """The raw integer of field ``name`` for its SI value (before the Uint16 range check).
+
+    >>> raw_value("Current", 69.475, "10uH"), raw_value("Current", 69.47500000000001, "10uH")
+    (6947, 6948)
+    """
+    return round_half_away(float(si_value) * raw_source(name, inductance_unit)[1])
+
+
+def round_half_away(x: float) -> int:
+    """Round to nearest, ties away from zero (not Python's banker's ``round``)."""
+    return int(math.copysign(math.floor(abs(x) + 0.5), x))
+
+
+def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
+    """Firmware integers from SI inputs; values in ``given`` override.
+
+    Parameters
+    ----------
+    si : dict
+        Flat mapping from the SI field path (``motor.rs_ohm`` …) to its value.
+    inductance_unit : {'10uH', 'uH'}
+    given : dict
+        Raw values the user entered directly.
+
+    Raises
+    ------
+    InputError
+        Naming ``raw.NAME`` when a value is outside Uint16 (0..65535).
+    """
+    raw = {}
+    for name in RAW_FIELDS:
+        path = RAW_SCALE[name][0]
+        v = given[name] if name in given else raw_value(name, si[path], inductance_unit)
+        if not 0 <= v <= 0xFFFF:
+            src = "given" if name in given else f"from {path}"
+            raise InputError(f"raw.{name}", f"{v} ({src}) is outside Uint16 0..65535")
+        raw[name] = v
+    return raw
+
+
+class _Block:
+    """Runs the statements of one vendor code block and records the trace."""
+
+    def __init__(self) -> None:
+        self.trace: list[dict] = []
+
+    def let(self, code: str, var: str, ctype: CType, expr: CInt, meaning: str,
+            extra_flags: tuple = ()) -> CInt:
+        """Assign ``expr`` to a variable of ``ctype``, as the C assignment converts it."""
+        stored = expr.cast(ctype)
+        flags = set(expr.flags) | set(extra_flags)
+        if stored.value != expr.value:
+            # Conversion into the destination: for gMotorExtPer.* (Uint16) the
+            # firmware silently keeps the value modulo 65536.
+            flags.add("store" if ctype == UINT16 else "wrap")
+        self.trace.append({"code": code, "var": var, "type": ctype.name,
+                           "value": stored.value, "meaning": meaning,
+                           "flags": sorted(flags)})
+        return stored.clean()
+
+    def result(self, q: int, ideal: float, si: float, unit: str) -> dict:
+        last = self.trace[-1]
+        flags = sorted({f for s in self.trace for f in s["flags"]})
+        value = last["value"]
+        return {"value": value, "ideal": ideal, "q": q, "type": last["type"], "si": si,
+                "unit": unit,
+                "error_pct": 0.0 if ideal == 0 else 100.0 * (value - ideal) / ideal,
+                "flags": flags, "trace": self.trace}
+
+
+def _u16(raw: dict, name: str) -> CInt:
+    return CInt(raw[name], UINT16)
+
+
+def _divide(a: CInt, b: CInt, field: str, why: str) -> CInt:
+    try:
+        return a // b
+    except CDivisionByZero:
+        raise InputError(f"raw.{field}", f"the firmware divides by zero: {why}") from None
+
+
+def _bases(raw: dict) -> tuple[float, float, float]:
+    """U_b (phase RMS), I_b and f_b as the firmware's raw values define them (seed 1.4-13)."""
+    return raw["Voltage"] / SQRT3, raw["Current"] / 100.0, raw["FullFreq01"] / 100.0
+
+
+def rpm(raw: dict) -> dict:
+    """Stator resistance per unit, Q16 (seed 1.4-1, 1.4-2)."""
+    b = _Block()
+    m = b.let("m_UData = ((Ulong)gMotorExtInfo.RsPm * (Ulong)gMotorInfo.Current)"
+              "/gMotorInfo.Voltage;", "m_UData", UINT32,
+              _divide(_u16(raw, "RsPm").cast(UINT32) * _u16(raw, "Current").cast(UINT32),
+                      _u16(raw, "Voltage"), "Voltage", "Voltage = 0"),
+              "R_s[mΩ]·I_b[0.01 A]/U_LL[V] = 10^5/√3 · R_pu")
+    b.let("gMotorExtPer.Rpm = ((Ulong)m_UData * 18597)>>14;", "gMotorExtPer.Rpm", UINT16,
+          (m * CInt(18597, INT32).cast(UINT32)) >> 14, "R_pu·2^16 (Q16)")
+    u_b, i_b, _ = _bases(raw)
+    z_b = u_b / i_b if i_b else math.inf
+    ideal = (raw["RsPm"] / 1000.0) / z_b * 65536.0
+    return b.result(16, ideal, b.trace[-1]["value"] / 65536.0 * z_b, "Ω")
+
+
+def _base_l_steps(b: _Block, raw: dict) -> CInt:
+    m = b.let("m_BaseL = ((Ulong)gMotorInfo.Voltage * 3678)/gMotorInfo.Current;",
+              "m_BaseL", UINT32,
+              _divide(_u16(raw, "Voltage").cast(UINT32) * CInt(3678, INT32).cast(UINT32),
+                      _u16(raw, "Current"), "Current", "Current = 0"),
+              "U_LL·3678/I_b[0.01 A]")
+    return b.let("m_BaseL = ((Ulong)m_BaseL * 5000)/gBasePar.FullFreq01; //Q15",
+                 "m_BaseL", UINT32,
+                 _divide(m * CInt(5000, INT32).cast(UINT32), _u16(raw, "FullFreq01"),
+                         "FullFreq01", "FullFreq01 = 0"),
+                 "≈ 2·10^4·L_b[H]; 3678 ≈ 2·10^4/(√3·π)")
+
+
+def inductance(raw: dict, axis: str, unit: str = "10uH") -> dict:
+    """d- or q-axis inductance per unit, Q13 (seed 1.4-3 … 1.4-15).
+
+    With ``unit='uH'`` the raw value is taken in µH, which is what the seed
+    assumed; the code was written for 0.01 mH, so the result is 10× the Q13
+    value — the seed's "×10" puzzle — and is flagged ``unit_uH``.
+    """
+    name = "LD" if axis == "d" else "LQ"
+    b = _Block()
+    base = _base_l_steps(b, raw)
+    m = b.let(f"m_Ulong = ((Ulong)gMotorExtInfo.{name} <<14) + (m_BaseL >>1);", "m_Ulong",
+              UINT32, (_u16(raw, name).cast(UINT32) << 14) + (base >> 1),
+              f"{name}·2^14 + m_BaseL/2")
+    if base.value == 0:
+        # Blame the divisor that made m_BaseL truncate to zero.
+        culprit = "Current" if b.trace[0]["value"] == 0 else "FullFreq01"
+        raise InputError(f"raw.{culprit}", "the firmware divides by zero: m_BaseL = "
+                         "Voltage·3678/Current·5000/FullFreq01 = 0")
+    m = b.let("m_Ulong = m_Ulong / m_BaseL;", "m_Ulong", UINT32, m // base,
+              "10·L_pu·2^13")
+    b.let(f"gMotorExtPer.{name} = m_Ulong / 10; // Q13", f"gMotorExtPer.{name}", UINT16,
+          m // CInt(10, INT32).cast(UINT32),
+          "10·L_pu·2^13 (µH ≠ 0.01 mH)" if unit == "uH"
+          else "L_pu·2^13 (Q13)", ("unit_uH",) if unit == "uH" else ())
+    u_b, i_b, f_b = _bases(raw)
+    l_b = u_b / (TWO_PI * f_b * i_b) if f_b * i_b else math.inf
+    l_si = raw[name] * (1e-6 if unit == "uH" else 1e-5)
+    ideal = l_si / l_b * 8192.0
+    return b.result(13, ideal, b.trace[-1]["value"] / 8192.0 * l_b, "H")
+
+
+def freq_per(raw: dict) -> dict:
+    """Rated frequency per unit, Q15."""
+    b = _Block()
+    b.let("gMotorInfo.FreqPer = ((Ulong)gMotorInfo.FreqRated01<<15)/gBasePar.FullFreq01;",
+          "gMotorInfo.FreqPer", UINT16,
+          _divide(_u16(raw, "FreqRated01").cast(UINT32) << 15, _u16(raw, "FullFreq01"),
+                  "FullFreq01", "FullFreq01 = 0"),
+          "f_n/f_b·2^15 (Q15)")
+    ideal = raw["FreqRated01"] / raw["FullFreq01"] * 32768.0
+    return b.result(15, ideal, b.trace[-1]["value"] / 32768.0 * raw["FullFreq01"] / 100.0,
+                    "Hz")
+
+
+def flux_rotor(raw: dict, freq_per_value: int) -> dict:
+    """Permanent-magnet flux per unit, Q12 (seed 1.4-23 … 1.4-25)."""
+    b = _Block()
+    # Voltage*10 is unsigned int (16-bit) arithmetic on C2000, then promoted to long.
+    v10 = _u16(raw, "Voltage") * CInt(10, UINT16)
+    m = b.let("m_Ulong = ((Long)gMotorExtInfo.BemfVolt <<12) / (gMotorInfo.Voltage *10); //Q12",
+              "m_Ulong", UINT32,
+              _divide(_u16(raw, "BemfVolt").cast(INT32) << 12, v10, "Voltage",
+                      "Voltage*10 ≡ 0 (mod 2^16)"),
+              "2π·f_n·ψ_r/U_b·2^12")
+    b.let("gMotorExtPer.FluxRotor = (m_Ulong << 15) / gMotorInfo.FreqPer; //Q12",
+          "gMotorExtPer.FluxRotor", UINT16,
+          _divide(m << 15, CInt(freq_per_value, UINT16), "FreqRated01",
+                  "FreqPer = 0 (FreqRated01·2^15 < FullFreq01, or ≡ 0 mod 2^16)"),
+          "ψ_r/ψ_b·2^12 (Q12)")
+    ideal = (raw["BemfVolt"] / 10.0) / raw["Voltage"] * raw["FullFreq01"] \
+        / raw["FreqRated01"] * 4096.0
+    u_b, _, f_b = _bases(raw)
+    psi_b = u_b / (TWO_PI * f_b)
+    return b.result(12, ideal, b.trace[-1]["value"] / 4096.0 * psi_b, "Wb")
+
+
+def max_output_voltage(raw: dict) -> tuple[dict, dict]:
+    """pm_maxout_vol (Q12) and maxu (Q24), seed 2.2-1, 2.2-2."""
+    b = _Block()
+    d = b.let("data1 = ((long)gUDC.uDCFilter * 2316L)>>15; // Udc/sqrt(2)/10", "data1", INT32,
+              (_u16(raw, "uDCFilter").cast(INT32) * CInt(2316, INT32)) >> 15,
+              "U_dc/√2 [V] (2316 ≈ 2^15/(10·√2))")
+    mo = b.let("pm_maxout_vol = (data1<<12)/gMotorInfo.Voltage;", "pm_maxout_vol", INT32,
+               _divide(d << 12, _u16(raw, "Voltage"), "Voltage", "Voltage = 0"),
+               "(U_dc/√2)/U_LL·2^12 (Q12)")
+    ideal = (raw["uDCFilter"] / 10.0 / math.sqrt(2.0)) / raw["Voltage"] * 4096.0
+    vol = b.result(12, ideal, mo.value / 4096.0 * raw["Voltage"], "V")
+    b2 = _Block()
+    b2.let("maxu = (long)pm_maxout_vol<<12;", "maxu", INT32, mo << 12,
+           "(U_dc/√2)/U_LL·2^24 (Q24)")
+    maxu = b2.result(24, ideal * 4096.0, b2.trace[-1]["value"] / 16777216.0 * raw["Voltage"],
+                     "V")
+    return vol, maxu
+
+
+#: Each vendor result of seed 1.4 and 2.2, in report order, computed from the raw integers
+#: alone (with the blocks it reads, e.g. FluxRotor reads FreqPer), so one can be computed
+#: without the others — a sweep bisecting one integer's boundary needs only that one.
+VENDOR_RESULTS = {
+    "Rpm": lambda raw, unit: rpm(raw),
+    "LD": lambda raw, unit: inductance(raw, "d", unit),
+    "LQ": lambda raw, unit: inductance(raw, "q", unit),
+    "FreqPer": lambda raw, unit: freq_per(raw),
+    "FluxRotor": lambda raw, unit: flux_rotor(raw, freq_per(raw)["value"]),
+    "pm_maxout_vol": lambda raw, unit: max_output_voltage(raw)[0],
+    "maxu": lambda raw, unit: max_output_voltage(raw)[1],
+}
+
+
+#: The raw fields each vendor result reads (the C statements of its block and the blocks it
+#: reads), so a caller may reuse a result while these stay the same.
+VENDOR_READS = {
+    "Rpm": ("RsPm", "Current", "Voltage"),
+    "LD": ("Voltage", "Current", "FullFreq01", "LD"),
+    "LQ": ("Voltage", "Current", "FullFreq01", "LQ"),
+    "FreqPer": ("FreqRated01", "FullFreq01"),
+    "FluxRotor": ("BemfVolt", "Voltage", "FreqRated01", "FullFreq01"),
+    "pm_maxout_vol": ("uDCFilter", "Voltage"),
+    "maxu": ("uDCFilter", "Voltage"),
+}
+
+
+def vendor_results(raw: dict, inductance_unit: str) -> dict:
+    """Every vendor result of seed 1.4 and 2.2, keyed as in the report contract."""
+    return {name: f(raw, inductance_unit) for name, f in VENDOR_RESULTS.items()}
+
+
+def to_si(name: str, value: int, raw: dict, inductance_unit: str = "10uH") -> float:
+    """What a firmware integer means in SI for this motor (the inverse of ``ideal``).
+
+    >>> round(to_si("Rpm", 15022, {"Voltage": 17, "Current": 150, "FullFreq01": 22000}), 4)
+    1.4998
+    """
+    u_b, i_b, f_b = _bases(raw)
+    if name == "Rpm":
+        return value / 65536.0 * u_b / i_b
+    if name in ("LD", "LQ"):
+        return value / 8192.0 * u_b / (TWO_PI * f_b * i_b)
+    if name == "FreqPer":
+        return value / 32768.0 * f_b
+    if name == "FluxRotor":
+        return value / 4096.0 * u_b / (TWO_PI * f_b)
+    if name == "pm_maxout_vol":
+        return value / 4096.0 * raw["Voltage"]
+    if name == "maxu":
+        return value / 16777216.0 * raw["Voltage"]
+    raise ValueError(f"unknown vendor result {name!r}")
+
+
+class PiStep(NamedTuple):
+    """State after one vendor current-PI update."""
+
+    integral: int
+    out: int
+    flags: frozenset
+
+
+def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
+                    maxout: int, trace: list | None = None) -> PiStep:
+    """One update of the vendor current PI (seed 2.2), all arithmetic in 32-bit long.
+
+    Parameters
+    ----------
+    integral : int, Q24 (per unit of rated line voltage)
+    error : int, Q12 current error (per unit of rated current)
+    kp : int, Q12 ; ki : int, Q16 (the "new" integral gain, Ts folded in)
+    maxu : int, Q24 ; maxout : int, Q12
+    trace : list, optional
+        When given, one step per C statement is appended (as in vendor results).
+
+    Returns
+    -------
+    PiStep
+        New integral (Q24), output voltage (Q12) and the flags raised
+        (``wrap``, ``truncation``, ``saturate``).
+
+    Examples
+    --------
+    >>> current_pi_step(0, 410, 1000, 3000, 1 << 24, 4096)
+    PiStep(integral=76875, out=118, flags=frozenset({'truncation'}))
+    """
+    e = CInt(error, INT32)
+    s = CInt(integral, INT32) + ((e * CInt(ki, INT32)) >> 4)
+    integ = iqsat(s.value, maxu, -maxu)
+    d = (CInt(integ, INT32) + e * CInt(kp, INT32)) >> 12
+    out = iqsat(d.value, maxout, -maxout)
+    if trace is not None:
+        for code, value, flags, meaning in (
+                ("pm_integral_d = pm_integral_d + (pm_error_id * pm_ki_d >> 4); //Q24,28-4",
+                 s.value, s.flags, "integral + Δi·ki (Q12·Q16 = Q28, >>4 → Q24)"),
+                ("pm_integral_d = __IQsat(pm_integral_d, maxu, minu);", integ,
+                 {"saturate"} if integ != s.value else set(), "∈ [−maxu, maxu]"),
+                ("data1 = (pm_integral_d + pm_error_id * pm_kp_d)>>12;", d.value, d.flags,
+                 "(Q24 + Q12·Q12) >> 12 → Q12"),
+                ("data1 = __IQsat(data1, pm_maxout_vol, -pm_maxout_vol);", out,
+                 {"saturate"} if out != d.value else set(), "∈ [−pm_maxout_vol, pm_maxout_vol]"),
+                ("pm_ud = data1;", out, set(), "u_d/U_LL·2^12 (Q12)")):
+            trace.append({"code": code, "var": code.split(" =")[0], "type": "long",
+                          "value": value, "meaning": meaning, "flags": sorted(flags)})
+    flags = set(s.flags | d.flags)
+    if integ != s.value or out != d.value:
+        flags.add("saturate")
+    return PiStep(integ, out, frozenset(flags))
