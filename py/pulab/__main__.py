@@ -17,7 +17,7 @@ import sys
 
 from .schema.errors import InputError
 from .cli.family import add_family_commands, read_json
-from .schema.inputs import shown
+from .schema.validate import shown
 from .report import format_text, report
 from .cli.trace import add_trace_parser, trace_main
 

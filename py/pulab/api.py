@@ -1,7 +1,8 @@
 """JSON-in, JSON-out entry points for the web worker (one call per request).
 
 Errors never escape as exceptions: bad input comes back as
-``{"ok": false, "field": ..., "message": ..., "message_zh": ...}``.
+``{"ok": false, "field": ..., "message": ..., "message_zh": ..., "code": ..., "params": ...}``
+(:class:`pulab.schema.errors.InputError` as data, its texts from :mod:`pulab.schema.catalog`).
 
 Examples
 --------
@@ -18,11 +19,10 @@ import json
 import re
 
 from .schema.errors import InputError
-from .schema.inputs import shown
+from .schema.validate import shown
 from .schema.jsontext import parse
 from .fixedpoint.qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
-from .schema.messages import to_zh
 from .report import report, report_steps
 from .analyses.slices import finish
 from .schema.textnum import ascii_text, parse_int, parse_real
@@ -33,7 +33,7 @@ __all__ = ["run_json", "run_json_steps", "qcalc", "qcalc_json", "export_json", "
 
 def _fail(e: InputError) -> str:
     return json.dumps({"ok": False, "field": e.field, "message": e.message,
-                       "message_zh": to_zh(e.message)})
+                       "message_zh": e.message_zh, "code": e.code, "params": e.params})
 
 
 def run_json(text: str) -> str:
@@ -246,10 +246,7 @@ def trace_json(text: str) -> str:
     from .ctrace import TraceError, compile_code, trace_checked
     checked = None
     try:
-        try:
-            req = json.loads(text)
-        except ValueError as e:
-            raise InputError("input", f"not valid JSON: {e}") from None
+        req = parse(text)
         if not isinstance(req, dict):
             raise InputError("input", "must be an object")
         unknown = set(req) - {"code", "target", "set", "global_q"}

@@ -74,7 +74,8 @@ def test_vendors_json_with_hostile_profiles_and_values():
         if out["ok"]:
             seen["ok"] += 1
             continue
-        assert set(out) == {"ok", "field", "message", "message_zh"}, out
+        assert set(out) == {"ok", "field", "message", "message_zh", "code", "params"}, out
+        assert isinstance(out["code"], str) and isinstance(out["params"], dict), out
         assert all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
         assert has_chinese(out["message"]), out
         seen["error"] += 1

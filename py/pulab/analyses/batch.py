@@ -38,7 +38,6 @@ import re
 from decimal import Decimal, InvalidOperation
 
 from ..schema.errors import InputError
-from ..schema.messages import to_zh
 from ..report import report
 from ..profiles.inovance_code import RAW_FIELDS, VENDOR_RESULTS
 
@@ -239,7 +238,7 @@ def batch_rows(text: str, start: int = 0, count: int | None = None) -> list:
         try:
             rec.update(_report_cells(report(_row_input(columns, cells))), error="", error_zh="")
         except InputError as e:
-            rec.update(error=f"{e.field}: {e.message}", error_zh=f"{e.field}: {to_zh(e.message)}")
+            rec.update(error=f"{e.field}: {e.message}", error_zh=f"{e.field}: {e.message_zh}")
         out.append(rec)
     return out
 

@@ -45,7 +45,6 @@ from __future__ import annotations
 from ..schema.errors import InputError
 from ..model.gains import pi_integer_ideals
 from ..schema.inputs import normalize
-from ..schema.messages import to_zh
 from ..report import current_pi_section, input_bases, input_raw, report
 from ..profiles.inovance_code import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS
 
@@ -86,7 +85,7 @@ def _computed(value: int, ideal: float, error_pct: float, flags) -> dict:
 def _failed(e: InputError) -> dict:
     status = "div0" if "divides by zero" in e.message else "invalid"
     return {"status": status, "value": None, "ideal": None, "error_pct": None,
-            "message": f"{e.field}: {e.message}", "message_zh": f"{e.field}: {to_zh(e.message)}"}
+            "message": f"{e.field}: {e.message}", "message_zh": f"{e.field}: {e.message_zh}"}
 
 
 def _pi_integers(n: dict, out: dict, names) -> None:

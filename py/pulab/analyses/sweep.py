@@ -41,8 +41,9 @@ from __future__ import annotations
 from typing import NamedTuple
 
 from ..schema.errors import InputError
-from ..schema.inputs import _CHOICES, SECTIONS, real
-from ..schema.messages import to_zh
+from ..schema.fields import FIELD
+from ..schema.inputs import SECTIONS
+from ..schema.validate import real
 from .integers import RAW_ONLY_NAMES, STATUSES, evaluate, integer_names, profile_name
 from ..profiles.inovance_code import raw_value, round_half_away
 
@@ -93,7 +94,7 @@ def _axis(spec, field: str) -> Axis:
                              "stop, n, scale)")
     path = spec.get("path")
     section, _, key = path.partition(".") if isinstance(path, str) else ("", "", "")
-    if key not in SECTIONS.get(section, ()) or path in _CHOICES:
+    if key not in SECTIONS.get(section, ()) or FIELD[path].kind not in ("number", "integer"):
         raise InputError(f"{field}.path", f"not a numeric input path: {path!r}")
     start = real(spec.get("start"), f"{field}.start")
     stop = real(spec.get("stop"), f"{field}.stop")
@@ -188,7 +189,7 @@ def _evaluate(plan: Plan, inp: dict, only=None) -> _Point:
     except InputError as err:
         msg = f"{err.field}: {err.message}"
         failed = {"status": "invalid", "value": None, "ideal": None, "error_pct": None,
-                  "message": msg, "message_zh": f"{err.field}: {to_zh(err.message)}"}
+                  "message": msg, "message_zh": f"{err.field}: {err.message_zh}"}
         return _Point({name: failed for name in (only or plan.names)}, None, {}, msg,
                       failed["message_zh"])
     return _Point(e["integers"], e["raw"], e["intermediates"], None, None,

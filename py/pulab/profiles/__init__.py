@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from ..model.bases import flux_linkage
 from ..schema.errors import InputError
-from ..schema.inputs import _integer, object_fields, real, shown  # the report's own checks
+from ..schema.validate import integer, object_fields, real, shown
 from . import inovance, microchip, nxp, st, ti
 from .common import SQRT2
 
@@ -75,7 +75,7 @@ def _option(name: str, key: str, v):
             raise InputError(path, f"must be true or false, got {shown(v)}")
         return v
     if key in _INTEGERS:
-        v = _integer(v, path, *_INTEGERS[key])
+        v = integer(v, path, *_INTEGERS[key])
         if key.startswith("tf_") and v & (v - 1):
             raise InputError(path, f"must be a power of two, got {v}")
         return v

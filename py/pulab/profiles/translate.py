@@ -31,7 +31,7 @@ Examples
 from __future__ import annotations
 
 from ..schema.errors import InputError
-from ..schema.inputs import _integer, object_fields, shown  # the report's own checks
+from ..schema.validate import integer, object_fields, shown
 from ..report import report
 from . import MODULES, NAMES, context_of, options
 
@@ -80,7 +80,7 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     for k in (kp_name, ki_name):
         if k not in given:
             raise InputError(f"translate.values.{k}", "is required")
-        ints[k] = _integer(given[k], f"translate.values.{k}", lo, hi)
+        ints[k] = integer(given[k], f"translate.values.{k}", lo, hi)
     if ints[kp_name] == 0:
         raise InputError(f"translate.values.{kp_name}", "must not be 0")
     # The report without profiles gives the SI context; only the options are needed here,

@@ -24,7 +24,7 @@ import re
 import unicodedata
 
 from .errors import InputError
-from .inputs import real, shown
+from .validate import real, shown
 
 __all__ = ["ascii_text", "parse_real", "parse_int"]
 
