@@ -105,7 +105,8 @@ def _translate(inp, args) -> dict:
     values = {}
     for name, text in zip(names, (args.kp, args.ki)):
         if text is not None:  # absent: translate() names the missing field
-            values[name] = int(text) if re.fullmatch(r"[+-]?\d+", text) else text
+            # int() refuses over 4300 digits; such text is refused as "must be an integer".
+            values[name] = int(text) if re.fullmatch(r"[+-]?\d{1,400}", text) else text
     return translate(inp, args.source, args.axis, values)
 
 

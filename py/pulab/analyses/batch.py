@@ -140,9 +140,13 @@ def _parse(text: str) -> tuple:
     return columns, rows
 
 
+#: Longer integer cells are read as decimals (int() refuses over 4300 digits; no field needs 400).
+_INT_DIGITS = 400
+
+
 def _number(text: str, power: int, field: str):
     """A cell as a number: integers stay int, decimals become the nearest double."""
-    if power == 0 and _INT.fullmatch(text):
+    if power == 0 and _INT.fullmatch(text) and len(text) <= _INT_DIGITS:
         return int(text)
     try:
         d = Decimal(text)

@@ -38,12 +38,15 @@ Examples
 
 from __future__ import annotations
 
+import math
+
 from typing import NamedTuple
 
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
+from .loop.inputs import validate as check_analysis
 from ..schema.inputs import SECTIONS
-from ..schema.validate import real
+from ..schema.validate import object_fields, real, shown
 from .integers import RAW_ONLY_NAMES, STATUSES, evaluate, integer_names, profile_name
 from ..profiles.inovance_code import raw_value, round_half_away
 
@@ -88,10 +91,7 @@ class Plan(NamedTuple):
 def _axis(spec, field: str) -> Axis:
     if not isinstance(spec, dict):
         raise InputError(field, "must be an object")
-    for key in spec:
-        if key not in ("path", "start", "stop", "n", "scale"):
-            raise InputError(f"{field}.{key}", "unknown field (expected one of: path, start, "
-                             "stop, n, scale)")
+    object_fields(spec, field, ("path", "start", "stop", "n", "scale"))
     path = spec.get("path")
     section, _, key = path.partition(".") if isinstance(path, str) else ("", "", "")
     if key not in SECTIONS.get(section, ()) or FIELD[path].kind not in ("number", "integer"):
@@ -109,9 +109,15 @@ def _axis(spec, field: str) -> Axis:
             if v <= 0:
                 raise InputError(f"{field}.{name}", f"must be > 0 for a log scale, got {v:g}")
         ratio = stop / start
-        values = [start * ratio ** (k / (n - 1)) for k in range(n)]
-    else:
+        if math.isfinite(ratio):
+            values = [start * ratio ** (k / (n - 1)) for k in range(n)]
+        else:  # the ratio overflows: interpolate the logarithms
+            lo, hi = math.log(start), math.log(stop)
+            values = [math.exp(lo * (1 - k / (n - 1)) + hi * (k / (n - 1))) for k in range(n)]
+    elif math.isfinite((stop - start) * (n - 1)):
         values = [start + (stop - start) * k / (n - 1) for k in range(n)]
+    else:  # the span times k overflows: weighted sums stay finite
+        values = [start * (1 - k / (n - 1)) + stop * (k / (n - 1)) for k in range(n)]
     values[-1] = stop  # exactly the range asked for, whatever the rounding above
     integer = section == "raw" or path in _INTEGER_PATHS
     if integer:
@@ -141,19 +147,24 @@ def make_plan(req: dict) -> Plan:
     inp = req.get("input")
     if not isinstance(inp, dict):
         raise InputError("input", "must be a JSON object")
+    # Simulations do not change a firmware integer: dropped, not echoed with each worst case.
+    inp = {k: v for k, v in inp.items() if k != "sim"}
+    # The loop analysis is echoed too but checked by no point of an Inovance sweep.
+    check_analysis(inp.get("analysis"))
     x = _axis(req.get("x"), "sweep.x")
     y = None if req.get("y") is None else _axis(req["y"], "sweep.y")
     if y is not None and y.path == x.path:
         raise InputError("sweep.y.path", f"must differ from sweep.x.path ({x.path})")
-    profile = profile_name(req.get("profile"))
-    if not isinstance(profile, str):
-        raise InputError("sweep.profile", f"unknown profile {profile!r}")
+    profile = req.get("profile")
+    if profile is not None and not isinstance(profile, str):
+        raise InputError("sweep.profile", f"unknown profile {shown(profile)}")
+    profile = profile_name(profile)
     try:
         names = integer_names(inp, profile)
     except InputError as e:
         if e.field == "sweep.profile":
             raise
-        raise InputError("sweep.profile", f"unknown profile {profile!r}") from None
+        raise InputError("sweep.profile", f"unknown profile {shown(profile)}") from None
     plan = Plan(inp, x, y, profile, names)
     if plan.total > MAX_POINTS:
         raise InputError("sweep", f"the sweep has {plan.total} points; at most {MAX_POINTS}")

@@ -36,6 +36,7 @@ from typing import NamedTuple
 
 from ..fixedpoint.cint import INT32, UINT16, UINT32, CDivisionByZero, CInt, CType
 from ..schema.errors import InputError
+from ..schema.fields import RAW_FIELDS
 from ..fixedpoint.qformat import iqsat
 
 __all__ = [
@@ -47,9 +48,7 @@ __all__ = [
 SQRT3 = math.sqrt(3.0)
 TWO_PI = 2.0 * math.pi
 
-#: Raw firmware fields, the SI input each comes from, and SI → raw scale.
-RAW_FIELDS = ("Voltage", "Current", "FullFreq01", "FreqRated01", "RsPm", "LD", "LQ",
-              "BemfVolt", "uDCFilter")
+#: The SI input each raw firmware field (the schema's RAW_FIELDS) comes from, and SI → raw scale.
 RAW_SCALE = {
     "Voltage": ("motor.rated_voltage_v", 1.0),
     "Current": ("motor.rated_current_a", 100.0),

@@ -94,7 +94,9 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     start = NAMES.index(source)
     order = [NAMES[(start + i) % len(NAMES)] for i in range(1, len(NAMES) + 1)]
     chain, k_p, k_i = [], kp, ki
-    for name in order:
+    for prev, name in zip([source] + order, order):
+        if k_p == 0:  # the next profile's integers would divide by it (TI's series Ki = ki·T/kp)
+            raise InputError(f"translate.values.{kp_name}", code="chain_kp_zero", profile=prev)
         step = _encode(name, k_p, k_i, ctx, opts, axis)
         step["profile"] = name
         step["drift_pct"] = {"kp": 100.0 * (step["si"]["kp"] - kp) / kp,

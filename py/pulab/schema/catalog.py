@@ -46,6 +46,10 @@ MESSAGES = {
     "only_with": ("is only used with {key} = {value}", "仅在 {key} = {value} 时使用"),
     "derived_invalid": ("gives {target} = {value:g}, which {reason}",
                         "得到 {target} = {value:g}，{reason}"),
+    "chain_kp_zero": ("gives kp = 0 in profile {profile}, so the round trip through the "
+                      "other profiles stops (a series Ki = ki·T/kp needs kp ≠ 0)",
+                      "在厂商配置 {profile} 中 kp 取整为 0，无法继续在其他配置间往返换算"
+                      "（串联式 Ki = ki·T/kp 要求 kp ≠ 0）"),
     "json_invalid": ("not valid JSON: {detail}", "不是合法的 JSON：{detail}"),
     "json_not_text": ("not valid JSON: the input is not text", "不是合法的 JSON：输入不是文本"),
     "json_too_deep": ("nested deeper than {depth} levels", "嵌套超过 {depth} 层"),
