@@ -247,14 +247,49 @@ def batch_rows(text: str, start: int = 0, count: int | None = None) -> list:
     return out
 
 
+#: First characters that make a spreadsheet read a cell as a formula (OWASP, CSV injection).
+FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+_PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+
+
+def spreadsheet_safe(cell) -> str:
+    """A CSV cell a spreadsheet shows as text, never runs as a formula.
+
+    A cell starting with ``= + - @``, tab or carriage return gets a leading ``'``
+    (the OWASP rule), unless the whole cell is a plain decimal number such as
+    ``-0.5`` or ``-1e-3``, which stays a number.
+
+    Examples
+    --------
+    >>> for cell in ['=HYPERLINK("http://x","a")', "-1.5e-3", "-1+2", "@SUM(A1)", "seed"]:
+    ...     print(spreadsheet_safe(cell))
+    '=HYPERLINK("http://x","a")
+    -1.5e-3
+    '-1+2
+    '@SUM(A1)
+    seed
+    """
+    text = str(cell)
+    if text.startswith(FORMULA_START) and not _PLAIN_NUMBER.fullmatch(text):
+        return "'" + text
+    return text
+
+
 def to_csv(names: list, rows: list, header: bool = True) -> str:
-    """CSV text of output rows (dicts) in the column order ``names``, header first if asked."""
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, names, restval="", lineterminator="\n")
-    if header:
-        w.writeheader()
-    w.writerows(rows)
-    return buf.getvalue()
+    """CSV text of output rows (dicts) in the column order ``names``, header first if asked.
+
+    Every cell, the header's included, goes through :func:`spreadsheet_safe`.
+    """
+    lines = [[spreadsheet_safe(n) for n in names]] if header else []
+    lines += [[spreadsheet_safe(r.get(n, "")) for n in names] for r in rows]
+    return "".join(",".join(_quoted(c) for c in line) + "\n" for line in lines)
+
+
+def _quoted(cell: str) -> str:
+    # The csv module leaves a lone CR unquoted when the line ends in LF; readers then split there.
+    if any(c in cell for c in ',"\r\n'):
+        return '"' + cell.replace('"', '""') + '"'
+    return cell
 
 
 def batch_csv(text: str) -> str:
