@@ -3,8 +3,8 @@
 Each :class:`Field` names its JSON path, its kind, the unit of its JSON value,
 its range, its default and its label and help in English and Chinese.
 Everything else is derived from this table: the checks (:mod:`.validate`), the
-page's form and its field checks (generated at build time: ``python -m
-pulab.schema.fields``), the contract's input tables (``tests/py/test_schema.py``
+page's form and its field checks (``web/src/generated/schema.json``, written by
+the build from :func:`schema_json`), the contract's input tables (``tests/py/test_schema.py``
 compares them) and the fuzzer's field list (``tests/py/adversarial.py``).
 
 Adding an input field is one entry here, in the section it belongs to.  A
@@ -34,11 +34,10 @@ from __future__ import annotations
 
 import json
 import math
-import sys
 from typing import NamedTuple
 
 __all__ = ["Field", "Section", "REQUIRED", "FIELDS", "FIELD", "SECTIONS", "RAW_FIELDS",
-           "section_fields", "schema_json"]
+           "section_fields", "schema_json", "markdown"]
 
 
 class _Required:
@@ -92,8 +91,8 @@ RAW_FIELDS = ("Voltage", "Current", "FullFreq01", "FreqRated01", "RsPm", "LD", "
               "BemfVolt", "uDCFilter")
 #: Firmware unit of each raw parameter (LD/LQ: conventions.inductance_unit).
 RAW_UNITS = {"Voltage": "1 V", "Current": "0.01 A", "FullFreq01": "0.01 Hz",
-             "FreqRated01": "0.01 Hz", "RsPm": "1 mΩ", "LD": "0.01 mH | 1 µH",
-             "LQ": "0.01 mH | 1 µH", "BemfVolt": "0.1 V", "uDCFilter": "0.1 V"}
+             "FreqRated01": "0.01 Hz", "RsPm": "1 mΩ", "LD": "0.01 mH or 1 µH",
+             "LQ": "0.01 mH or 1 µH", "BemfVolt": "0.1 V", "uDCFilter": "0.1 V"}
 RAW_LABELS = {
     "Voltage": ("Voltage — rated line V", "Voltage — 额定线电压 V"),
     "Current": ("Current — rated A·100", "Current — 额定电流·100"),
@@ -109,13 +108,13 @@ RAW_LABELS = {
 #: Sections and fields in order: a Section entry, then its fields.
 TABLE = (
     Section('motor', ('the motor (SI, per phase of the equivalent star)', '电机（SI，等效星形每相）')),
-    F('motor.rated_voltage_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('Rated voltage (line RMS)', '额定电压（线电压有效值）')),
+    F('motor.rated_voltage_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, derived='from datasheet.dc_bus_v when not given', label=('Rated voltage (line RMS)', '额定电压（线电压有效值）')),
     F('motor.rated_current_a', 'number', 'A', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('Rated current (RMS)', '额定电流（有效值）')),
-    F('motor.rated_freq_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('Rated frequency', '额定频率')),
-    F('motor.rs_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('Stator resistance Rs (phase)', '定子电阻 Rs（相）')),
-    F('motor.ld_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('d-axis inductance Ld', 'd 轴电感 Ld')),
-    F('motor.lq_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('q-axis inductance Lq', 'q 轴电感 Lq')),
-    F('motor.bemf_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('Back-EMF at rated freq. (line RMS)', '额定频率反电势（线电压有效值）')),
+    F('motor.rated_freq_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, derived='from datasheet.speed_rpm when not given', label=('Rated frequency', '额定频率')),
+    F('motor.rs_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, derived='from datasheet.rs_line_ohm when not given', label=('Stator resistance Rs (phase)', '定子电阻 Rs（相）')),
+    F('motor.ld_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, derived='from datasheet.l_line_h or ld_line_h when not given', label=('d-axis inductance Ld', 'd 轴电感 Ld')),
+    F('motor.lq_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, derived='from datasheet.l_line_h or lq_line_h when not given', label=('q-axis inductance Lq', 'q 轴电感 Lq')),
+    F('motor.bemf_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, derived='from datasheet Ke, kT or ψ when not given', label=('Back-EMF at rated freq. (line RMS)', '额定频率反电势（线电压有效值）')),
     F('motor.pole_pairs', 'integer', '', lo=1, hi=1000, default=REQUIRED, label=('Pole pairs', '极对数')),
     Section('drive', ('the drive', '驱动器')),
     F('drive.base_freq_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, derived='motor.rated_freq_hz', label=('Base frequency f_b (drive max.)', '频率基值 f_b（最大频率）')),
@@ -139,7 +138,8 @@ TABLE = (
     F('pll.bandwidth_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, default=50.0, label=('Bandwidth', '带宽')),
     F('pll.damping', 'number', '', sign='>0', lo=1e-3, hi=100.0, default=DAMPING, label=('Damping ζ', '阻尼比 ζ')),
     Section('raw', ("the Inovance firmware's raw Uint16 parameters (each overrides the value from SI)", '汇川固件的原始 Uint16 参数（各自覆盖由 SI 换算的值）')),
-    *(F(f"raw.{n}", "integer", RAW_UNITS[n], lo=0, hi=0xFFFF, label=RAW_LABELS[n])
+    *(F(f"raw.{n}", "integer", RAW_UNITS[n], lo=0, hi=0xFFFF, derived="from SI (below)",
+        label=RAW_LABELS[n])
       for n in RAW_FIELDS),
     Section('datasheet', ('values as a datasheet prints them; each fills a motor field left empty', '按数据手册填写的值；各自填入留空的电机字段')),
     F('datasheet.speed_rpm', 'number', 'rpm', sign='>0', lo=1e-9, hi=1e9, label=('Rated speed', '额定转速')),
@@ -170,11 +170,11 @@ TABLE = (
     Section('profiles', ("vendor profiles: each vendor's options are its module's OPTIONS "
                          "(pulab.profiles)", '厂商配置：各厂商的选项见其模块的 OPTIONS（pulab.profiles）')),
     Section('analysis', ('loop analysis', '环路分析')),
-    F('analysis.delay', 'choice', '', choices=('none', 'computation', 'computation_pwm'), default='computation_pwm', label=('Delay model', '延时模型')),
+    F('analysis.delay', 'choice', '', choices=('computation_pwm', 'computation', 'none'), default='computation_pwm', label=('Delay model', '延时模型')),
     F('analysis.design', 'choice', '', choices=('phase_margin', 'bandwidth'), default='phase_margin', label=('Design the current PI for', '电流 PI 设计目标')),
     F('analysis.target_phase_margin_deg', 'number', '°', sign='>0', hi=90.0, hi_open=True, default=60.0, label=('Target phase margin', '目标相位裕度')),
     F('analysis.target_bandwidth_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, derived='current_loop.bandwidth_hz', label=('Target closed-loop bandwidth', '目标闭环带宽')),
-    F('analysis.bode', 'flag', '', default=False),
+    F('analysis.bode', 'flag', '', default=False, label=('Add the Bode data (loop.bode)', '加入伯德图数据（loop.bode）')),
     Section('analysis.speed', ('the speed loop (absent: not analysed)', '速度环（不填则不分析）')),
     F('analysis.speed.inertia_kg_m2', 'number', 'kg·m²', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED, label=('Inertia J (motor + load)', '转动惯量 J（电机 + 负载）')),
     F('analysis.speed.friction_nm_s', 'number', 'N·m·s/rad', sign='>=0', hi=1e9, default=0.0, label=('Viscous friction B', '粘滞摩擦系数 B')),
@@ -183,7 +183,7 @@ TABLE = (
     F('analysis.speed.filter_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, derived='5·analysis.speed.bandwidth_hz', label=('Speed-filter corner', '速度滤波器截止频率')),
     F('analysis.speed.ts_s', 'number', 's', sign='>0', lo=1e-9, hi=1.0, derived='10·drive.ts_s', label=('Speed-loop period', '速度环周期')),
     F('analysis.speed.current_limit_a', 'number', 'A', sign='>0', lo=1e-9, hi=1e9, derived='2·I_b', label=('i_q limit', 'i_q 限幅')),
-    F('analysis.speed.response', 'flag', '', default=False),
+    F('analysis.speed.response', 'flag', '', default=False, label=('Add the step and load-step responses (loop.speed.response)', '加入阶跃与负载阶跃响应（loop.speed.response）')),
     F('analysis.speed.step_pu', 'number', 'pu', sign='!=0', lo=-1.0, hi=1.0, default=0.1, label=('Speed step (pu of ω_b)', '速度阶跃（ω_b 的标幺值）')),
     F('analysis.speed.load_pu', 'number', 'pu', default=0.5, label=('Load step (pu of T_b)', '负载阶跃（T_b 的标幺值）')),
 )
@@ -207,10 +207,62 @@ def _plain(f: Field) -> dict:
 
 
 def schema_json() -> str:
-    """The schema as JSON text (what the page's build reads)."""
+    """The schema as JSON text (``web/src/generated/schema.json``, what the page is built from)."""
     return json.dumps({"sections": [{"path": s.path, "title": list(s.title)} for s in SECTIONS.values()],
-                       "fields": [_plain(f) for f in FIELDS]}, ensure_ascii=False, indent=1)
+                       "fields": [_plain(f) for f in FIELDS]}, ensure_ascii=False, indent=1) + "\n"
 
 
-if __name__ == "__main__":
-    sys.stdout.write(schema_json() + "\n")
+def _g(x) -> str:
+    return f"{x:g}" if isinstance(x, float) else str(x)
+
+
+def _range(f: Field) -> str:
+    if f.kind == "choice":
+        return ", ".join(f"`{c}`" for c in f.choices)
+    if f.kind == "flag":
+        return "`true`, `false`"
+    parts = [f.unit] if f.unit else []
+    if f.kind == "integer":
+        parts.append(f"integer {_g(f.lo)}..{_g(f.hi)}")
+        return ", ".join(parts)
+    parts.append({">0": "> 0", ">=0": "≥ 0", "!=0": "≠ 0"}.get(f.sign, "finite"))
+    if f.lo is not None or f.hi is not None:
+        lo = _g(f.lo) if f.lo is not None else ""
+        parts.append(f"{lo}..{_g(f.hi)}" + (" (excl.)" if f.hi_open else "") if lo else
+                     f"< {_g(f.hi)}" if f.hi_open else f"≤ {_g(f.hi)}")
+    return ", ".join(parts)
+
+
+def _default(f: Field) -> str:
+    if f.default is REQUIRED:
+        text = "required" + (f"; {f.derived}" if f.derived else "")
+    elif f.default is None:
+        text = f.derived or "absent"
+    elif isinstance(f.default, bool):
+        text = "`true`" if f.default else "`false`"
+    elif isinstance(f.default, str):
+        text = f"`{f.default}`"
+    else:
+        text = "1/√2" if f.default == DAMPING else _g(f.default)
+    if f.only_with:
+        text += f" (only with {f.only_with[0]} = `{f.only_with[1]}`)"
+    return text
+
+
+def markdown() -> str:
+    """The input tables of docs/contract.md, one per section (``tests/py/test_schema.py``
+    checks the contract against this text)."""
+    out = []
+    for sec in SECTIONS.values():
+        fields = section_fields(sec.path)
+        out.append(f"**`{sec.path}`** — {sec.title[0]}\n")
+        if not fields:
+            out.append("Its fields are in the sections below it." if sec.path == "sim" else
+                       "Documented under Vendor profiles.")
+            out.append("")
+            continue
+        out.append("| field | meaning | type, unit, range | default |\n|---|---|---|---|")
+        for f in fields:
+            out.append(f"| {f.path} | {f.label[0] or '—'} | {_range(f)} | {_default(f)} |")
+        out.append("")
+    return "\n".join(out)

@@ -2,7 +2,7 @@
 // error message at each field. Edits go into the compute session's input.
 import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
-import { ALL_FIELDS, SECTIONS, effectiveInput, type FieldSpec } from '../fields';
+import { ALL_FIELDS, SECTIONS, effectiveInput, fieldLabel, type FieldSpec } from '../fields';
 import { errText, getLang, has, t, type Key } from '../i18n';
 import type { ApiErr } from '../protocol';
 import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
@@ -42,7 +42,7 @@ export class InputForm {
     const input = this.session.input;
     const v = getPath(input, f.path);
     const enabled = f.enabled ? f.enabled(input) : true;
-    const label = h('span', { class: 'lbl' }, t(`f.${f.path}` as Key));
+    const label = h('span', { class: 'lbl' }, fieldLabel(f, getLang()));
     let control: HTMLElement;
     if (f.kind === 'select') {
       control = h('select', { name: f.path, disabled: !enabled, onchange: (ev: Event) => this.onSelect(f, (ev.target as HTMLSelectElement).value) },

@@ -12,7 +12,7 @@ Examples
 >>> validate({"delay": "pwm"})
 Traceback (most recent call last):
 ...
-pulab.schema.errors.InputError: analysis.delay: must be one of none, computation, computation_pwm, got 'pwm'
+pulab.schema.errors.InputError: analysis.delay: must be one of computation_pwm, computation, none, got 'pwm'
 """
 
 from __future__ import annotations
