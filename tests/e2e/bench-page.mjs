@@ -24,7 +24,7 @@ const RUNS = Number(process.env.BENCH_RUNS ?? 5);
 const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,nosnap,embeds,input').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
-if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
+if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--configLoader', 'runner', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
 const { server, url } = await serve(DIST, '/bench/');
 // The fallback boot: the same build with its snapshot refused (404).
 const nosnap = await serve(DIST, '/bench/', 0, { refuse: /snapshot-.*\.bin$/ });

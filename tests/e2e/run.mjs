@@ -83,7 +83,7 @@ async function compareShown(page, expected, scope = 'body') {
 // ---- build & serve -------------------------------------------------------------------------
 if (!process.env.E2E_NO_BUILD) {
   console.log('e2e: building…');
-  execFileSync('npx', ['vite', 'build', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
+  execFileSync('npx', ['vite', 'build', '--configLoader', 'runner', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
 }
 mkdirSync(SHOTS, { recursive: true });
 const SUB = '/tools/pu-lab/';

@@ -20,10 +20,12 @@ import sys
 import numpy as np
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from golden_files import golden_dir, sync  # noqa: E402
 from oracle import oracle_report  # noqa: E402
 from make_golden import IND380, LV48, SEED, SERVO  # noqa: E402
 
 OUT = pathlib.Path(__file__).resolve().parents[1] / "golden" / "profiles"
+REL, ABS = 1e-12, 1e-15  # closed-form float64 arithmetic (see golden_files.py)
 R2, R3 = np.sqrt(2.0), np.sqrt(3.0)
 
 
@@ -200,23 +202,10 @@ CASES = {
 }
 
 
-def main() -> int:
-    check = "--check" in sys.argv
-    OUT.mkdir(exist_ok=True)
-    stale = []
-    for name, inp in CASES.items():
-        text = json.dumps({"input": inp, "expected": profiles(inp)}, indent=1, sort_keys=True) + "\n"
-        path = OUT / f"{name}.json"
-        if check:
-            if not path.exists() or path.read_text() != text:
-                stale.append(path.name)
-        else:
-            path.write_text(text)
-    if stale:
-        print("stale:", ", ".join(stale))
-        return 1
-    return 0
+def main(argv: list[str]) -> int:
+    files = {f"{name}.json": {"input": inp, "expected": profiles(inp)} for name, inp in CASES.items()}
+    return sync(files, golden_dir(argv, OUT), "--check" in argv, REL, ABS)
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))

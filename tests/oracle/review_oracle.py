@@ -37,9 +37,11 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from golden_files import golden_dir, sync  # noqa: E402
 from oracle import OracleInputError, oracle_report  # noqa: E402  (pulab-free)
 
 GOLDEN = pathlib.Path(__file__).resolve().parents[1] / "golden" / "review"
+REL, ABS = 1e-12, 1e-15  # closed-form float64 arithmetic (see golden_files.py)
 TWO_PI = 2.0 * math.pi
 
 # docs/contract.md "Design review"
@@ -207,26 +209,7 @@ def build() -> dict:
 
 
 def main(argv) -> int:
-    GOLDEN.mkdir(parents=True, exist_ok=True)
-    files = build()
-    stale = []
-    for name, obj in files.items():
-        text = json.dumps(obj, indent=1, sort_keys=True, ensure_ascii=False) + "\n"
-        path = GOLDEN / name
-        if "--check" in argv:
-            if not path.exists() or json.loads(path.read_text()) != json.loads(text):
-                stale.append(name)
-        else:
-            path.write_text(text)
-    extra = sorted(p.name for p in GOLDEN.glob("*.json") if p.name not in files)
-    if "--check" in argv:
-        if stale or extra:
-            print(f"stale: {stale}; not written by the oracle: {extra}")
-            return 1
-        print(f"{len(files)} review golden files up to date")
-        return 0
-    print(f"wrote {len(files)} files to {GOLDEN}")
-    return 0
+    return sync(build(), golden_dir(argv, GOLDEN), "--check" in argv, REL, ABS)
 
 
 if __name__ == "__main__":
