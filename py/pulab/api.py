@@ -43,7 +43,7 @@ def run_json(text: str) -> str:
 
 def run_json_steps(text: str):
     """:func:`run_json` in slices: a generator that yields None between slices of the simulation
-    and returns the same JSON text; closing it cancels the computation (issue 14)."""
+    and returns the same JSON text; closing it cancels the computation."""
     try:
         out = yield from report_steps(parse(text))
         return json.dumps({"ok": True, "report": out}, allow_nan=False)

@@ -85,7 +85,7 @@ def report(inp: dict) -> dict:
 
 
 def report_steps(inp: dict):
-    """Compute the report for one motor and drive, in slices (issue 14).
+    """Compute the report for one motor and drive, in slices.
 
     Parameters
     ----------
@@ -142,7 +142,7 @@ def report_steps(inp: dict):
     if prof is not None:
         out["profiles"] = prof
     if n["analysis"] is not None:
-        # issue 11, only when asked (like "sim"): plain reports stay within their time budget
+        # only when asked (like "sim"): plain reports stay within their time budget
         from .analyses import loop as _loop
         out["loop"] = _loop.analyze(out, n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
@@ -167,7 +167,7 @@ def _table(title: str, rows: list) -> list:
 
 
 def _loop_rows(loop: dict) -> list:
-    """PM/GM/crossover/bandwidth lines of the loop section (issue 11), 'none' where absent."""
+    """PM/GM/crossover/bandwidth lines of the loop section, 'none' where absent."""
     def fmt(x, unit):
         return "none" if x is None else f"{x:.4g} {unit}"
     cases = [(f"current {a}", loop["current"][a]) for a in ("d", "q")]

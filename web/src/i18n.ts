@@ -172,7 +172,7 @@ const en = {
   bootSlow: 'Python is still loading…',
   fatalHelp: 'Check the connection and reload: your input stays in the link. (The calculator needs WebAssembly and Web Workers; a strict CSP must allow \'wasm-unsafe-eval\'.)',
   latency: 'last report {ms} ms in Python',
-  // family sweep and batch (issue 13)
+  // family sweep and batch
   p_sweep: 'Family sweep: where the scaling breaks',
   nav_sweep: 'Sweep',
   p_batch: 'Batch: a motor catalogue',
@@ -219,7 +219,7 @@ const en = {
   btDownload: 'Download CSV',
   btDone: '{n} rows in {s} s, {bad} with errors',
   btMoreRows: 'The first {shown} of {n} rows are shown; the CSV has them all.',
-  // Your code: the C tracer (issue 10)
+  // Your code: the C tracer
   p_code: 'Your code: every intermediate integer, as the target computes it',
   nav_code: 'Your code',
   codeIntro: 'Paste C scaling code (declarations, assignments, IQmath calls). Variables the code reads before assigning them are inputs; names matching the report\'s integers (raw inputs, vendor results, PI gains) are filled in from the current motor. Annotate Q formats with // @q NAME Q12 base=NUMBER UNIT.',
@@ -253,12 +253,12 @@ const en = {
   flagHelp_unsigned_wrap: 'an unsigned result was reduced modulo 2^bits',
   flagHelp_conversion: 'a conversion (assignment, cast, argument, operand to an unsigned type) changed the value',
   flagHelp_shift_count: 'shift count negative or ≥ the width: undefined behaviour; CPUs differ',
-  // instant start (issue 8)
+  // instant start
   numbers_build: 'Numbers for the default motor, computed when the site was built; Python is starting',
   numbers_cached: 'Numbers from your last visit; Python is starting',
   numbers_waiting: 'Your input is kept and computed as soon as Python is ready',
   boot_snapshot: 'Starting Python from its snapshot…',
-  // issue 14: hostile or damaged state, faults
+  // hostile or damaged state, faults
   state_link_partly: 'The link you opened was partly broken: the fields below could not be used, everything else was kept.',
   state_link_unusable: 'The link you opened holds no usable state, so the {shown} is shown instead.',
   state_link_kept: 'Your link stays in the address bar until you change an input.',
@@ -282,7 +282,7 @@ const en = {
   reload: 'Reload',
   exportFailed: 'Export failed ({m}); try again',
   simWorkerFailed: 'the simulation worker failed ({m}); check the connection, then retry',
-  // vendor profiles panel (issue 12)
+  // vendor profiles panel
   p_vendors: 'Vendor profiles: TI, NXP, ST, Microchip and the translator',
   nav_vendors: 'Vendors',
   vd_inovance: 'Inovance', vd_ti: 'TI', vd_nxp: 'NXP', vd_st: 'ST', vd_microchip: 'Microchip',
@@ -300,7 +300,7 @@ const en = {
   vd_pi_example: 'Torque PI, first output (digits) for a ±0.1 % current error, shifting build (>>) vs FULL_MISRA_C_COMPLIANCY build (/):',
   vb_voltage_base: 'Voltage base', vb_current_base: 'Current base', vb_line_or_phase: 'Line or phase', vb_rms_or_peak: 'RMS or peak',
   vb_clarke_k: 'Clarke k', vb_inductance_base: 'Inductance base', vb_pi_form: 'PI form', vb_rounding: 'Rounding',
-  // loop analysis (issue 11)
+  // loop analysis
   sec_analysis: 'Loop analysis (delay, design target)',
   sec_speed: 'Speed loop',
   'o.computation_pwm': '1 sample + ½ PWM (realistic)',
@@ -349,7 +349,7 @@ const en = {
   speedFormats: 'Speed error Q15 of ω_b, i_q reference Q12, pm_kp Q12, pm_ki Q16 (T_sp folded in), integral Q24.',
 
 
-  // issue 9: datasheet entry, design review
+  // datasheet entry, design review
   steadyAngleErr: 'Angle error after lock',
   sec_datasheet: 'Datasheet',
   datasheetHint: 'Values as the datasheet prints them; each fills a motor field (leave that field empty). Formulas below.',
@@ -581,7 +581,7 @@ const zh: Record<Key, string> = {
   bootSlow: 'Python 仍在加载…',
   fatalHelp: '请检查网络连接后重新加载：您的输入保留在链接中。（计算器需要 WebAssembly 和 Web Worker；严格的 CSP 须允许 \'wasm-unsafe-eval\'。）',
   latency: '上次报告 Python 耗时 {ms} ms',
-  // family sweep and batch (issue 13)
+  // family sweep and batch
   p_sweep: '系列扫描：定标在哪里失效',
   nav_sweep: '扫描',
   p_batch: '批量：电机目录',
@@ -628,7 +628,7 @@ const zh: Record<Key, string> = {
   btDownload: '下载 CSV',
   btDone: '{n} 行，用时 {s} s，其中 {bad} 行出错',
   btMoreRows: '显示前 {shown} 行，共 {n} 行；CSV 中包含全部。',
-  // Your code: the C tracer (issue 10)
+  // Your code: the C tracer
   p_code: '你的代码：按目标编译器的规则显示每个中间整数',
   nav_code: '你的代码',
   codeIntro: '粘贴 C 定标代码（声明、赋值、IQmath 调用）。代码在赋值前读取的变量即为输入；名字与报告中的整数（原始输入、汇川结果、PI 增益）相同的，自动填入当前电机的值。用 // @q NAME Q12 base=数值 单位 注明 Q 格式。',
@@ -662,12 +662,12 @@ const zh: Record<Key, string> = {
   flagHelp_unsigned_wrap: '无符号结果按 2^位数 取模',
   flagHelp_conversion: '类型转换（赋值、强制转换、参数、转为无符号类型的操作数）改变了数值',
   flagHelp_shift_count: '移位位数为负或不小于位宽：未定义行为；不同 CPU 结果不同',
-  // instant start (issue 8)
+  // instant start
   numbers_build: '默认电机的数值（构建网站时算好）；Python 正在启动',
   numbers_cached: '上次访问时的数值；Python 正在启动',
   numbers_waiting: '您的输入已保留，Python 就绪后立即计算',
   boot_snapshot: '正在从快照启动 Python…',
-  // issue 14: hostile or damaged state, faults
+  // hostile or damaged state, faults
   state_link_partly: '您打开的链接部分损坏：下列字段无法使用，其余内容均已保留。',
   state_link_unusable: '您打开的链接中没有可用的状态，因此显示{shown}。',
   state_link_kept: '在您修改输入之前，地址栏中保留您的链接。',
@@ -691,7 +691,7 @@ const zh: Record<Key, string> = {
   reload: '重新加载',
   exportFailed: '导出失败（{m}）；请重试',
   simWorkerFailed: '仿真 worker 失败（{m}）；请检查网络连接后重试',
-  // vendor profiles panel (issue 12)
+  // vendor profiles panel
   p_vendors: '厂商配置：TI、NXP、ST、Microchip 与翻译器',
   nav_vendors: '厂商',
   vd_inovance: '汇川', vd_ti: 'TI', vd_nxp: 'NXP', vd_st: 'ST', vd_microchip: 'Microchip',
@@ -709,7 +709,7 @@ const zh: Record<Key, string> = {
   vd_pi_example: '转矩 PI 对 ±0.1 % 电流误差的首个输出（数字量）：移位版本（>>）与 FULL_MISRA_C_COMPLIANCY 版本（/）：',
   vb_voltage_base: '电压基值', vb_current_base: '电流基值', vb_line_or_phase: '线或相', vb_rms_or_peak: '有效值或峰值',
   vb_clarke_k: 'Clarke 系数 k', vb_inductance_base: '电感基值', vb_pi_form: 'PI 形式', vb_rounding: '取整方式',
-  // 环路分析（issue 11）
+  // 环路分析
   sec_analysis: '环路分析（延时、设计目标）',
   sec_speed: '速度环',
   'o.computation_pwm': '1 拍 + ½ PWM（实际）',
@@ -758,7 +758,7 @@ const zh: Record<Key, string> = {
   speedFormats: '速度误差为 ω_b 的 Q15，i_q 给定为 Q12，pm_kp 为 Q12，pm_ki 为 Q16（已含 T_sp），积分器为 Q24。',
 
 
-  // issue 9: datasheet entry, design review
+  // datasheet entry, design review
   steadyAngleErr: '锁定后的角度误差',
   sec_datasheet: '样本参数',
   datasheetHint: '按样本（datasheet）上印的数值填写；每项会填入一个电机字段（请把该字段留空）。换算公式见下。',

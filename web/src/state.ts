@@ -1,4 +1,4 @@
-// The page state is the CLI input JSON (docs/contract.md) plus the "sim" section of issue 3.
+// The page state is the CLI input JSON (docs/contract.md) plus the "sim" section.
 // It lives in the URL (#in=…), in localStorage, and in the form.
 import type { Json } from './protocol';
 import { checkInputText, type StateProblem } from './state-check';
@@ -17,7 +17,7 @@ export const SEED_INPUT: Input = {
   raw: {},
   // Empty fields take pulab.analyses.sim's motor-dependent defaults (step 0.5·I_b, duration from ω_c, …).
   sim: { current: { axis: 'd', delay: false }, pll: {} },
-  // Loop analysis (issue 11): sent with the simulation request only (Bode data and the speed
+  // Loop analysis: sent with the simulation request only (Bode data and the speed
   // response are heavy); J is a placeholder inertia for a small servo, to be replaced.
   analysis: { delay: 'computation_pwm', design: 'phase_margin', target_phase_margin_deg: 60, speed: { inertia_kg_m2: 0.00001 } },
 };

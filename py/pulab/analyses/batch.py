@@ -175,7 +175,7 @@ def _row_input(columns: list, cells: list) -> dict:
 def findings_counts(r: dict) -> dict:
     """Review findings per severity (``error``, ``warning``, ``note``) of a report.
 
-    The graded review (issue 9) gives ``review.counts`` (or at least ``review.findings``
+    The graded review gives ``review.counts`` (or at least ``review.findings``
     with a ``severity`` each); a report without one counts its ``warnings``, all of them
     warnings.
     """

@@ -23,7 +23,7 @@ the report (``vendor.LD``, ``current_pi.d.pm_ki``) and gets one status:
 Profiles select the set of integers.  ``inovance`` (alias ``vendor``) is the
 seed's Inovance C2000 code: the ``vendor`` results of seed 1.4 and 2.2 and the
 current-PI integers of seed 2.2-9.  Any other name is looked up in the report's
-``profiles.NAME.constants`` (issue 12's contract), through the full report.
+``profiles.NAME.constants``, through the full report.
 
 Examples
 --------

@@ -135,7 +135,7 @@ CATALOG = [
      r"profiles.ti：USER_checkForErrors 会置位 \1（\2）"),
     (r"profiles\.(\S+): rounds to 0 in (.+) \(ideal (\S+)\)",
      r"profiles.\1：在 \2 中取整为 0（理想值 \3）"),
-    # errors: the family sweep and the batch (issue 13)
+    # errors: the family sweep and the batch
     (r"not a numeric input path: (.*)", r"不是数值输入路径：\1"),
     (r"must be > 0 for a log scale, got (.*)", r"对数刻度要求大于 0，当前为 \1"),
     (r"must differ from (\S+) \((.*)\)", r"必须不同于 \1（\2）"),
@@ -211,7 +211,7 @@ CATALOG = [
     (r"must be (\S+)\.\.(\S+) for (.+), got (.*)", r"对 \3 必须在 \1..\2 之间，当前为 \4"),
     (r"must be an integer 1\.\.30, got (.*)", r"必须是 1..30 的整数，当前为 \1"),
     (r"--set needs NAME=VALUE, got (.*)", r"--set 需要 NAME=VALUE，当前为 \1"),
-    # loop analysis (issue 11)
+    # loop analysis
     (r"(\S+): the closed current loop is unstable with the (\w+) delay \(largest \|pole\| (\S+)\)",
      r"\1：计入 \2 延时后电流闭环不稳定（最大极点模 \3）"),
     (r"(\S+): phase margin (\S+)° with the (\w+) delay \(below 30°: .*\)",

@@ -1,4 +1,4 @@
-// Where the numbers on screen come from (issue 8), published as <html data-numbers> (contract:
+// Where the numbers on screen come from, published as <html data-numbers> (contract:
 // docs/contract.md, "Instant start"):
 //   build  — the seed report prerendered by CPython at build time, for the input in the form;
 //   cached — a report kept in localStorage from an earlier visit, for the input in the form;

@@ -1,4 +1,4 @@
-// Explainer chapters (docs/zh, docs/en, docs/index.json, issue 5) rendered with the current
+// Explainer chapters (docs/zh, docs/en, docs/index.json) rendered with the current
 // report: {{path}} values, {{panel:NAME}} and {{plot:NAME}} embeds, links back to the panels.
 import { h, morph, num, patch, scrollToEl, table } from '../dom';
 import { SECTIONS, fieldLabel } from '../fields';

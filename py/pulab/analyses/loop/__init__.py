@@ -1,4 +1,4 @@
-"""Loop design as firmware runs it: discrete margins, delays, PLL, speed loop (issue 11).
+"""Loop design as firmware runs it: discrete margins, delays, PLL, speed loop.
 
 Pure standard library (runs in a bare Pyodide).  When the input has an
 ``"analysis"`` object (``{}`` = every default), :func:`pulab.report` calls

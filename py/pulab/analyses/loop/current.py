@@ -1,4 +1,4 @@
-"""The current loop as the firmware runs it: ZOH plant, PI form, delays (issue 11).
+"""The current loop as the firmware runs it: ZOH plant, PI form, delays.
 
 Per axis, on the zero-speed plant G(s) = 1/(R_s + s·L) (L = L_d or L_q; the
 cross-coupling ω_e·L vanishes at standstill), discretized exactly for a
