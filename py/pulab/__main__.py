@@ -82,12 +82,12 @@ def _run_vendor(args) -> int:
 def _header(inp, name: str | None) -> str:
     from . import profiles
     if name is None:
-        raise InputError("profile", "is required")
+        raise InputError("profile", code="required")
     if name not in profiles.NAMES:  # before the report: a typo should not cost a report
-        raise InputError("profile",
-                         f"must be one of {', '.join(profiles.NAMES)}, got {shown(name)}")
+        raise InputError("profile", code="not_choice", choices=", ".join(profiles.NAMES),
+                         got=shown(name))
     if not isinstance(inp, dict):
-        raise InputError("input", "must be a JSON object")
+        raise InputError("input", code="not_json_object")
     return profiles.header(report({**inp, "profiles": inp.get("profiles") or {}}), name)
 
 
@@ -95,12 +95,12 @@ def _translate(inp, args) -> dict:
     from .profiles import MODULES, NAMES
     from .profiles.translate import translate
     if args.source is None:
-        raise InputError("translate.from", "is required")
+        raise InputError("translate.from", code="required")
     if args.source not in NAMES:
-        raise InputError("translate.from", f"must be one of {', '.join(NAMES)}, "
-                         f"got {shown(args.source)}")
+        raise InputError("translate.from", code="not_choice", choices=", ".join(NAMES),
+                         got=shown(args.source))
     if not isinstance(inp, dict):
-        raise InputError("input", "must be a JSON object")
+        raise InputError("input", code="not_json_object")
     names = MODULES[args.source].gain_fields(args.axis) if args.axis in ("d", "q") else ("", "")
     values = {}
     for name, text in zip(names, (args.kp, args.ki)):

@@ -11,11 +11,10 @@ import sys
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, chinese
 from pulab import InputError
 from pulab.api import batch_json
 from pulab.analyses.batch import batch_csv, findings_counts, read_table
-from pulab.schema.messages import has_chinese
 
 sys.path.insert(0, str(ROOT / "tests/oracle"))
 import oracle  # noqa: E402
@@ -75,7 +74,7 @@ def test_bad_rows_are_reported_with_row_and_field_and_the_others_computed():
     assert errors["div0"].startswith("raw.FullFreq01: the firmware divides by zero")
     for r in rows:
         if r["error"]:
-            assert has_chinese(r["error"].split(": ", 1)[1]) and r["vendor.LD.value"] == ""
+            assert chinese(r["error_zh"]) and r["vendor.LD.value"] == ""
             assert r["error_zh"] != r["error"]
     assert rows[-1]["vendor.LD.value"] == rows[0]["vendor.LD.value"] == "1045"
 
@@ -90,7 +89,7 @@ def test_bad_rows_are_reported_with_row_and_field_and_the_others_computed():
 def test_a_bad_header_stops_the_batch_naming_the_column(text, field):
     with pytest.raises(InputError) as e:
         read_table(text)
-    assert e.value.field == field and has_chinese(e.value.message), e.value.message
+    assert e.value.field == field and chinese(e.value.message_zh), e.value.message
     out = json.loads(batch_json(json.dumps({"csv": text})))
     assert out["ok"] is False and out["field"] == field
 

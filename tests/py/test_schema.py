@@ -53,11 +53,13 @@ def test_number_fields_keep_their_range(f):
 
 
 def test_every_catalog_text_renders_in_both_languages():
-    params = {"choices": "a, b", "expected": "x, y", "got": "'z'", "value": -1.5, "lo": 1, "hi": 2,
-              "key": "base", "target": "motor.rs_ohm", "detail": "Expecting value", "depth": 32,
-              "limit": 10, "profile": "ti",
-              "reason": {"code": "not_positive", "params": {"value": -1.0}}}
+    """Each entry's two texts name the same params, and both render."""
     for code, (en, zh) in MESSAGES.items():
+        names = set(re.findall(r"{(\w+)", en))
+        assert names == set(re.findall(r"{(\w+)", zh)), code
+        params = {k: 1.5 for k in names}
+        if "reason" in names:
+            params["reason"] = {"code": "not_positive", "params": {"value": -1.0}}
         assert render(code, params, "en") and re.search(r"[\u4e00-\u9fff]", render(code, params, "zh")), code
 
 

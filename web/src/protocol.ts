@@ -54,7 +54,12 @@ export type BootFrom = 'snapshot' | 'full';
 
 /** What pulab.api returns (parsed). */
 export type ApiOk = { ok: true; [k: string]: Json };
-export type ApiErr = { ok: false; field: string; message: string; message_zh?: string };
+/** An error as data (docs/contract.md, Errors): `code` and `params` from pulab's catalog, the text in
+ * both languages made from them. Worker-side failures (no reply from Python) have no code. */
+export type ApiErr = {
+  ok: false; field: string; message: string; message_zh?: string;
+  code?: string; params?: Record<string, Json>;
+};
 export type ApiResult = ApiOk | ApiErr;
 
 /** Worker → main thread. */

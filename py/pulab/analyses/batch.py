@@ -38,6 +38,7 @@ import re
 from decimal import Decimal, InvalidOperation
 
 from ..schema.errors import InputError
+from ..schema.validate import shown
 from ..report import report
 from ..profiles.inovance_code import RAW_FIELDS, VENDOR_RESULTS
 
@@ -74,16 +75,17 @@ def _column(cell: str, k: int) -> tuple:
     name, unit = (m[1], m[2]) if m else (cell.strip(), None)
     where = f"csv.header.{k + 1}"
     if not name:
-        raise InputError(where, f"empty column name {cell!r}")
+        raise InputError(where, code="empty_column", got=shown(cell))
     if unit is None:
         return name, 0
     if "." not in name:
-        raise InputError(where, f"a unit is only converted for an input path, not {name!r}")
+        raise InputError(where, code="unit_not_path", got=shown(name))
     dim = name.rsplit("_", 1)[-1]
     table = UNITS.get(dim, {})
     if unit not in table:
-        allowed = ", ".join(table) if table else "none (give the value in the unit its name ends in)"
-        raise InputError(where, f"unknown unit [{unit}] for {name} (allowed: {allowed})")
+        if not table:
+            raise InputError(where, code="unit_none", unit=unit, name=name)
+        raise InputError(where, code="unit_unknown", unit=unit, name=name, allowed=", ".join(table))
     return name, table[unit]
 
 
@@ -110,7 +112,7 @@ def read_table(text: str) -> tuple:
         ``csv`` when there is no header, ``csv.header.K`` for a bad column K (1-based).
     """
     if not isinstance(text, str):
-        raise InputError("csv", "must be text")
+        raise InputError("csv", code="not_string", got=shown(text))
     if _LAST[0] == text:
         return _LAST[1]
     table = _parse(text)
@@ -125,15 +127,15 @@ def _parse(text: str) -> tuple:
     try:
         table = [r for r in reader if any(c.strip() for c in r)]
     except csv.Error as e:
-        raise InputError("csv", f"not readable as CSV: {e}") from None
+        raise InputError("csv", code="csv_unreadable", detail=str(e)) from None
     if not table:
-        raise InputError("csv", "no header row")
+        raise InputError("csv", code="no_header")
     columns = [_column(c, k) for k, c in enumerate(table[0])]
     seen: dict = {}
     for k, (name, _) in enumerate(columns):
         if name in seen:
-            raise InputError(f"csv.header.{k + 1}", f"duplicate column {name} "
-                             f"(also column {seen[name] + 1})")
+            raise InputError(f"csv.header.{k + 1}", code="duplicate_column", name=name,
+                             other=seen[name] + 1)
         seen[name] = k
     width = len(columns)
     rows = [r + [""] * (width - len(r)) for r in table[1:]]
@@ -152,16 +154,16 @@ def _number(text: str, power: int, field: str):
         d = Decimal(text)
     except InvalidOperation:
         if power:
-            raise InputError(field, f"must be a number, got {text!r}") from None
+            raise InputError(field, code="not_number", got=shown(text)) from None
         return text  # a choice (conventions.base …) or a mistake normalize will name
     if not d.is_finite():
-        raise InputError(field, "must be finite")
+        raise InputError(field, code="not_finite")
     return float(d.scaleb(power))
 
 
 def _row_input(columns: list, cells: list) -> dict:
     if len(cells) > len(columns):
-        raise InputError("row", f"{len(cells)} cells, the header has {len(columns)}")
+        raise InputError("row", code="ragged_row", cells=len(cells), columns=len(columns))
     inp: dict = {}
     for (name, power), cell in zip(columns, cells):
         cell = cell.strip()

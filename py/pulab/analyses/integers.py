@@ -45,6 +45,7 @@ from __future__ import annotations
 from ..schema.errors import InputError
 from ..model.gains import pi_integer_ideals
 from ..schema.inputs import normalize
+from ..schema.validate import shown
 from ..report import current_pi_section, input_bases, input_raw, report
 from ..profiles.inovance_code import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS
 
@@ -156,11 +157,11 @@ def _inovance(inp: dict, only) -> dict:
 
 
 def _from_report(inp: dict, profile: str, only) -> dict:
-    # Issue 12's profiles are computed only when the input asks (a "profiles" section).
+    # Profiles are computed only when the input asks (a "profiles" section).
     r = report({**inp, "profiles": inp.get("profiles") or {}})
     constants = r.get("profiles", {}).get(profile, {}).get("constants")
     if constants is None:
-        raise InputError("sweep.profile", f"unknown profile {profile!r}")
+        raise InputError("sweep.profile", code="unknown_profile", got=shown(profile))
     out = {}
     for key, c in constants.items():
         name = f"profiles.{profile}.constants.{key}"

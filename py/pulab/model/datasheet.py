@@ -35,7 +35,7 @@ import math
 
 from ..schema.errors import InputError
 from ..schema.fields import FIELD, section_fields
-from ..schema.validate import shown, value
+from ..schema.validate import value
 
 __all__ = ["FIELDS", "KE_FIELDS", "apply", "mechanical"]
 
@@ -104,26 +104,21 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
         if key in ds:
             for t in targets:
                 if t in motor:
-                    raise InputError(f"datasheet.{key}", f"and motor.{t} both given; "
-                                     "give one of them")
+                    raise InputError(f"datasheet.{key}", code="both_given", other=f"motor.{t}")
     sources = [k for k in KE_FIELDS if k in ds]
     if len(sources) > 1:
-        raise InputError(f"datasheet.{sources[1]}", f"and datasheet.{sources[0]} both give "
-                         "the back-EMF; give one of them")
+        raise InputError(f"datasheet.{sources[1]}", code="both_bemf", other=f"datasheet.{sources[0]}")
     if "ke_measure" in ds and not {"ke_v_per_krpm", "ke_v_s_per_rad"} & set(ds):
-        raise InputError("datasheet.ke_measure", "is only used with datasheet.ke_v_per_krpm "
-                         "or ke_v_s_per_rad")
+        raise InputError("datasheet.ke_measure", code="used_with_either",
+                         a="datasheet.ke_v_per_krpm", b="ke_v_s_per_rad")
     if "kt_current" in ds and "kt_nm_per_a" not in ds:
-        raise InputError("datasheet.kt_current", "is only used with datasheet.kt_nm_per_a")
+        raise InputError("datasheet.kt_current", code="used_with", other="datasheet.kt_nm_per_a")
     conv: list = []
     p = motor.get("pole_pairs")
     if "speed_rpm" in ds or sources:
         if p is None:
-            raise InputError("motor.pole_pairs", "is required")
-        if isinstance(p, bool) or not isinstance(p, (int, float)) or \
-                (isinstance(p, float) and not p.is_integer()) or not 1 <= p <= 1000:
-            raise InputError("motor.pole_pairs", f"must be 1..1000, got {shown(p)}")
-        p = int(p)
+            raise InputError("motor.pole_pairs", code="required")
+        p = value(FIELD["motor.pole_pairs"], p)
     if "speed_rpm" in ds:
         n = _positive(ds, "speed_rpm")
         motor["rated_freq_hz"] = n * p / 60.0
@@ -132,12 +127,10 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
                           ["datasheet.speed_rpm", "motor.pole_pairs"]))
     if sources:
         if "rated_freq_hz" not in motor:
-            raise InputError("datasheet.speed_rpm", f"is required to convert datasheet."
-                             f"{sources[0]} (or give motor.rated_freq_hz)")
-        f_n = motor["rated_freq_hz"]
-        if isinstance(f_n, bool) or not isinstance(f_n, (int, float)) or not \
-                (math.isfinite(f_n) and f_n > 0):
-            raise InputError("motor.rated_freq_hz", f"must be > 0, got {shown(f_n)}")
+            raise InputError("datasheet.speed_rpm", code="required_to_convert",
+                             source=f"datasheet.{sources[0]}", other="motor.rated_freq_hz")
+        # Only the sign here: a value out of range is named where it came from, by normalize.
+        f_n = value(FIELD["motor.rated_freq_hz"]._replace(lo=None, hi=None), motor["rated_freq_hz"])
         n = 60.0 * f_n / p  # rpm at rated frequency
         w_m = 2.0 * math.pi * n / 60.0
         src = sources[0]
@@ -171,12 +164,11 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
                                           else ["motor.rated_freq_hz"]) + ["motor.pole_pairs"]))
     winding = _choice(ds, "winding")
     if "winding" in ds and not {"rs_line_ohm", "l_line_h", "ld_line_h", "lq_line_h"} & set(ds):
-        raise InputError("datasheet.winding", "is only used with datasheet.rs_line_ohm or "
-                         "l_line_h")
+        raise InputError("datasheet.winding", code="used_with_either", a="datasheet.rs_line_ohm",
+                         b="l_line_h")
     if "l_line_h" in ds and ({"ld_line_h", "lq_line_h"} & set(ds)):
         other = "ld_line_h" if "ld_line_h" in ds else "lq_line_h"
-        raise InputError(f"datasheet.{other}", "and datasheet.l_line_h both given; give one "
-                         "of them")
+        raise InputError(f"datasheet.{other}", code="both_given", other="datasheet.l_line_h")
     delta = "" if winding == "star" else "  (delta: R_Δ = 3·R_LL/2, star equivalent R_Δ/3)"
     for key, fields, sym in (("rs_line_ohm", ("rs_ohm",), "R"), ("l_line_h", ("ld_h", "lq_h"), "L"),
                              ("ld_line_h", ("ld_h",), "L_d"), ("lq_line_h", ("lq_h",), "L_q")):

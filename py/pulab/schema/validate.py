@@ -133,10 +133,13 @@ def value(f: Field, v, path: str | None = None):
         raise InputError(path, code="negative", value=x)
     if f.sign == "!=0" and x == 0:
         raise InputError(path, code="zero")
-    lo = f.lo if f.lo is not None else (0.0 if f.sign == ">0" else -math.inf)
-    hi = f.hi if f.hi is not None else math.inf
-    if x < lo or x > hi or (f.hi_open and x == hi):
-        raise InputError(path, code="out_of_range", lo=lo, hi=hi, value=x)
+    lo = f.lo if f.lo is not None else (0.0 if f.sign == ">0" else None)
+    if (lo is not None and x < lo) or (f.hi is not None and (x > f.hi or (f.hi_open and x == f.hi))):
+        if lo is None:
+            raise InputError(path, code="too_large", hi=f.hi, value=x)
+        if f.hi is None:
+            raise InputError(path, code="too_small", lo=lo, value=x)
+        raise InputError(path, code="out_of_range", lo=lo, hi=f.hi, value=x)
     return x
 
 

@@ -11,9 +11,10 @@ import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
 import { checkUnits } from '../state-check';
 
-/** The SI field a raw firmware value was converted from, as Python's message names it. */
+/** The SI field a raw firmware value was converted from (the error's `source` parameter). */
 export function sourceField(e: ApiErr): string | null {
-  return e.field.startsWith('raw.') ? /\(from ([\w.]+)\)/.exec(e.message)?.[1] ?? null : null;
+  const source = e.code === 'raw_outside_from' ? e.params?.source : undefined;
+  return typeof source === 'string' ? source : null;
 }
 
 export class InputForm {

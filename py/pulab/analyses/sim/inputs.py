@@ -57,7 +57,7 @@ def periods(duration: float, ts: float, cap: int, field: str) -> int:
     q = duration / ts
     if not q <= cap + 0.5:  # also catches q = inf
         count = f"{q:.4g}" if q < float("inf") else ">1.8e308"
-        raise InputError(field, f"{duration:g} s is {count} control periods; at most {cap}")
+        raise InputError(field, code="too_many_periods", value=duration, count=count, limit=cap)
     return max(int(round(q)), 1)
 
 
