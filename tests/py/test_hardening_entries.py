@@ -20,6 +20,7 @@ from pulab.__main__ import main
 from pulab.api import batch_json, sweep_json, trace_json
 from pulab.profiles import NAMES
 from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
+from test_hardening import _one_line, _strict
 
 PER_COMMAND = 600
 PLAIN = {k: v for k, v in BASE.items() if k != "sim"}
@@ -27,16 +28,6 @@ CODE = ["Uint16 v; long x = v*10;", "int a = 1; a = a / 0;", "long y = 0x7ffffff
         "#define K 3\nUint16 v; Uint16 w = v * K;", "x = 1 +;", "{" * 500, "(" * 5000 + "1",
         "Uint16 v; // @q 15\n", "#define A A\nint x = A;", "int x = 1" + " + 1" * 3000 + ";",
         "long q = _IQmpy(1, 2);", "Uint16 v; if (v) { v = v >> 1; } else v = 0;", ""]
-
-
-def _strict(text: str):
-    def refuse(name):
-        raise AssertionError(f"non-strict JSON constant {name}")
-    return json.loads(text, parse_constant=refuse)
-
-
-def _one_line(s) -> bool:
-    return isinstance(s, str) and s != "" and s.isprintable()
 
 
 def _run(argv: list, stdin: bytes) -> tuple:
