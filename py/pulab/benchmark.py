@@ -66,7 +66,7 @@ def loop_timing(n: int = 30) -> dict:
     return out
 
 
-#: Issue 10's benchmark: 30 lines of firmware scaling code (the seed's blocks, one scope).
+#: The tracer's benchmark: 30 lines of firmware scaling code (the seed's blocks, one scope).
 TRACE_SNIPPET = """\
 Uint16 gMotorExtInfo.RsPm, gMotorInfo.Current, gMotorInfo.Voltage, gBasePar.FullFreq01;
 Uint16 gMotorExtInfo.LD, gMotorInfo.FreqRated01, gMotorExtInfo.BemfVolt, gUDC.uDCFilter;
