@@ -85,6 +85,10 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
 };
 /** Set by panels, not typed into the form. */
 const NOT_IN_FORM = new Set(['analysis.bode', 'analysis.speed.response']);
+// A field renamed or removed in the schema must not leave page settings behind (fails the build).
+for (const p of [...Object.keys(PAGE), ...NOT_IN_FORM]) {
+  if (!FIELDS.some((f) => f.path === p)) throw new Error(`web/src/fields.ts: ${p} is not in the input schema`);
+}
 
 function spec(f: SchemaField, emptyChoice: boolean): FieldSpec {
   const page = PAGE[f.path] ?? {};
