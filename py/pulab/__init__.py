@@ -35,8 +35,8 @@ Where a new module goes: a new number format or integer rule → ``fixedpoint``;
 new input check, parser limit or error text → ``schema``; a new per-unit quantity
 → ``model``; a vendor → ``profiles/NAME.py`` (listed in ``profiles.MODULES``); a
 new computation over a model (margins, responses, families) → ``analyses``; a new
-output format → ``export``; a new subcommand → ``cli/`` (registered in ``__main__``).  Tests mirror modules:
-``tests/py/test_NAME.py``.
+output format → ``export``; a new subcommand → ``cli/`` (registered in ``__main__``).
+Tests mirror modules: ``tests/py/test_NAME.py``.
 
 Adding an input field is one entry in :mod:`pulab.schema.fields` (path, kind, unit,
 range, default, en/zh label): the validator (:mod:`pulab.schema.validate`), the page's

@@ -23,7 +23,8 @@ from .errors import InputError
 from .fields import FIELD, section_fields
 from .validate import children, key_path, object_fields, read, real, shown, value
 
-__all__ = ["normalize", "object_fields", "real", "shown", "key_path", "DEFAULT_CURRENT_BANDWIDTH_HZ",
+__all__ = ["normalize", "object_fields", "real", "shown", "key_path",
+           "DEFAULT_CURRENT_BANDWIDTH_HZ",
            "DEFAULT_PLL_BANDWIDTH_HZ", "DEFAULT_DAMPING", "SECTIONS"]
 
 DEFAULT_CURRENT_BANDWIDTH_HZ = FIELD["current_loop.bandwidth_hz"].default
@@ -59,8 +60,9 @@ def normalize(inp: dict) -> dict:
             raise InputError(key_path("", key), code="unknown_section",
                              expected=", ".join(children("")))
     ds = object_fields(inp.get("datasheet"), "datasheet", _datasheet.FIELDS)
-    m, conversions, d = _datasheet.apply(ds, object_fields(inp.get("motor"), "motor", SECTIONS["motor"]),
-                                         object_fields(inp.get("drive"), "drive", SECTIONS["drive"]))
+    motor_in = object_fields(inp.get("motor"), "motor", SECTIONS["motor"])
+    drive_in = object_fields(inp.get("drive"), "drive", SECTIONS["drive"])
+    m, conversions, d = _datasheet.apply(ds, motor_in, drive_in)
     derived = {c["field"]: c["from"][0] for c in conversions}
     motor = {}
     for f in section_fields("motor"):

@@ -134,7 +134,8 @@ def value(f: Field, v, path: str | None = None):
     if f.sign == "!=0" and x == 0:
         raise InputError(path, code="zero")
     lo = f.lo if f.lo is not None else (0.0 if f.sign == ">0" else None)
-    if (lo is not None and x < lo) or (f.hi is not None and (x > f.hi or (f.hi_open and x == f.hi))):
+    above = f.hi is not None and (x > f.hi or (f.hi_open and x == f.hi))
+    if above or (lo is not None and x < lo):
         if lo is None:
             raise InputError(path, code="too_large", hi=f.hi, value=x)
         if f.hi is None:
