@@ -1,6 +1,7 @@
 // The page state is the CLI input JSON (docs/contract.md) plus the "sim" section.
 // It lives in the URL (#in=…), in localStorage, and in the form.
 import type { Json } from './protocol';
+import { effectiveInput } from './fields';
 import { checkInputText, type StateProblem } from './state-check';
 
 export type Input = { [section: string]: { [k: string]: Json } };
@@ -119,6 +120,11 @@ export function reportInput(inp: Input): Input {
     out[k] = v;
   }
   return out;
+}
+
+/** The JSON text the worker hands to pulab.api.run_json for `input`: the identity of a report. */
+export function reportKey(inp: Input): string {
+  return JSON.stringify(reportInput(effectiveInput(inp)));
 }
 
 /** The input with the simulation section (the sim request), and the loop analysis with its
