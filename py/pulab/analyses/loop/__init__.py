@@ -14,6 +14,8 @@ Modules, one concept each:
 - :mod:`.pll` — scaled and naive PLL loops;
 - :mod:`.speed` — mechanical bases, speed PI in SI/pu/Q format, its margins;
 - :mod:`.speed_response` — speed step and load step, float and fixed point;
+- :mod:`.robust` — margins of the nominal gains on a drifted plant (temperature,
+  saturation, bus, tolerances), the safe bandwidth band;
 - :mod:`.inputs` — validation and defaults.
 
 Examples
@@ -37,6 +39,7 @@ from ...schema.errors import InputError
 from ...model.gains import current_pi
 from . import current as _current
 from . import pll as _pll
+from . import robust as _robust
 from . import speed as _speed
 from .discrete import bode, curve, forget, log_frequencies, unit_circle, values
 from .inputs import validate
@@ -220,6 +223,8 @@ def analyze(report: dict, analysis) -> dict:
         cfg["speed"] = speed_cfg
         out["speed"] = _speed_section(report, speed_cfg, cfg["delay"],
                                       out["current"]["q"]["bandwidth_hz"])
+    if cfg["robust"] is not None:
+        out["robust"] = _robust.analyze(report, cfg["robust"], cfg["delay"])
     if cfg["bode"]:
         out["bode"] = _bode(report, cfg, out)
     return out
@@ -248,4 +253,6 @@ def warnings(loop: dict) -> list:
             w.append(f"loop.speed: the current loop's bandwidth is only {ratio:.2g}× the speed "
                      f"crossover; the speed margins (inner loop as one period of delay) are "
                      f"optimistic")
+    if "robust" in loop:
+        w += _robust.warnings(loop["robust"])
     return w

@@ -24,6 +24,8 @@ speed.current_limit_a          |i_q| limit of the speed PI output, A > 0,   2·I
 speed.response                 bool: add the step/load-step responses       false
 speed.step_pu                  speed step, pu of ω_b, 0 < |x| ≤ 1           0.1
 speed.load_pu                  load-torque step, pu of T_b (finite)         0.5
+robust                         object or null: drift, saturation and        null (not analysed)
+                               tolerances (:mod:`.robust`)
 ============================== ============================================ =====================
 
 Defaults that depend on the motor stay ``None`` here and are resolved by
@@ -45,10 +47,12 @@ import math
 
 from ...schema.errors import InputError
 from ...schema.inputs import object_fields, real
+from . import robust as _robust
 
 __all__ = ["validate", "FIELDS", "SPEED_FIELDS"]
 
-FIELDS = ("delay", "design", "target_phase_margin_deg", "target_bandwidth_hz", "bode", "speed")
+FIELDS = ("delay", "design", "target_phase_margin_deg", "target_bandwidth_hz", "bode", "speed",
+          "robust")
 SPEED_FIELDS = ("inertia_kg_m2", "friction_nm_s", "bandwidth_hz", "damping", "filter_hz", "ts_s",
                 "current_limit_a", "response", "step_pu", "load_pu")
 _CHOICES = {"delay": ("none", "computation", "computation_pwm"),
@@ -124,4 +128,5 @@ def validate(value) -> dict:
             "target_phase_margin_deg": pm,
             "target_bandwidth_hz": _positive(a, path, "target_bandwidth_hz", None),
             "bode": _flag(a, path, "bode"),
-            "speed": _speed(a.get("speed"))}
+            "speed": _speed(a.get("speed")),
+            "robust": None if a.get("robust") is None else _robust.validate(a["robust"])}
