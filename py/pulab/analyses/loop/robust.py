@@ -209,7 +209,9 @@ class _Drive:
         m, d = report["input"]["motor"], report["input"]["drive"]
         self.cfg, self.delay, self.ts = cfg, delay, d["ts_s"]
         self.rs, self.ld, self.lq = m["rs_ohm"], m["ld_h"], m["lq_h"]
-        self.psi = report["pu"]["psi_r_wb"]
+        # RMS phase flux linkage ψ = E_LL/(√3·ω_n), as the review's headroom (whatever the
+        # base convention: the headroom below is in RMS quantities)
+        self.psi = m["bemf_v"] / (math.sqrt(3.0) * 2.0 * math.pi * m["rated_freq_hz"])
         self.udc, self.f_rated = d["udc_v"], m["rated_freq_hz"]
         self.peak = cfg["peak_current_a"] or 2.0 * m["rated_current_a"]
         self.gains = {a: (report["current_pi"][a]["from_integers"]["kp"],
