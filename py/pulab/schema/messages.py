@@ -231,6 +231,26 @@ CATALOG = [
      r"\1 Hz 未低于奈奎斯特频率 1/(2·Ts) = \2 Hz"),
     (r"(\S+)° is not reached below the Nyquist frequency \(the loop keeps more phase margin\)",
      r"在奈奎斯特频率以下达不到 \1°（环路的相位裕度始终更大）"),
+    # robustness (analysis.robust, pulab robust)
+    (r"must be \[low, high\] in °C", "必须是 [下限, 上限]，单位 °C"),
+    (r"must be between (\S+) and (\S+) with low ≤ high, got (.*)",
+     r"必须在 \1 与 \2 之间且下限 ≤ 上限，当前为 \3"),
+    (r"must be a list of at least 2 \[current_a, ld_h, lq_h\] points",
+     "必须是至少 2 个 [current_a, ld_h, lq_h] 点的列表"),
+    (r"must be \[current_a, ld_h, lq_h\]", "必须是 [current_a, ld_h, lq_h]"),
+    (r"must have current ≥ 0 and inductances > 0", "电流必须 ≥ 0，电感必须 > 0"),
+    (r"currents must increase from point to point", "各点电流必须递增"),
+    (r"an input JSON file is required \(or --catalogue\)", "需要输入 JSON 文件（或 --catalogue）"),
+    (r"needs Dask: pip install 'pulab\[dask\]'", "需要 Dask：pip install 'pulab[dask]'"),
+    (r"(loop\.robust\.\w+): (phase|gain) margin (.+?) on the (\w) axis at (\S+) °C, (\S+) A, "
+     r"U_dc (\S+) V \(below (.+?); the firmware gains are tuned for the nominal motor\); "
+     r"(?:designed bandwidths (\S+)–(\S+) Hz keep it at every corner|(no designed bandwidth "
+     r"keeps it at every corner))", lambda m: (
+         f"{m[1]}：{m[4]} 轴{'相位' if m[2] == 'phase' else '增益'}裕度"
+         f"{'不稳定' if m[3] == 'unstable' else ' ' + m[3]}，工况 {m[5]} °C、{m[6]} A、"
+         f"U_dc {m[7]} V（低于 {m[8]}；固件增益按标称电机整定）；"
+         + (f"设计带宽 {m[9]}–{m[10]} Hz 在所有角点都满足" if m[9] else
+            "没有任何设计带宽能在所有角点满足"))),
     (r"must be between (\S+) and (\S+) and not 0, got (.*)", r"必须在 \1 与 \2 之间且不为 0，当前为 \3"),
     (r"must be ≥ 0, got (.*)", r"必须大于等于 0，当前为 \1"),
     (r"must be true or false, got (.*)", r"必须是 true 或 false，当前为 \1"),

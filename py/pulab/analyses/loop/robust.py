@@ -315,9 +315,8 @@ def _compass(drive: _Drive, start: tuple, key, box: list) -> tuple:
     return tuple(x), best
 
 
-def _safe_band(drive: _Drive, report: dict, corners: list, cfg: dict) -> list | None:
-    f_n = 0.5 / drive.ts
-    lo_f, hi_f = 1e-3 * f_n, 0.9 * f_n
+def _safe_band(drive: _Drive, corners: list, cfg: dict) -> list | None:
+    lo_f, hi_f = 0.5e-3 / drive.ts, 0.45 / drive.ts       # f_N/1000 … 0.9·f_N
     plants = [drive.plant(c["temperature_c"], c["current_a"], c["udc_v"]) for c in corners]
     nominal = drive.plant(cfg["reference_c"], 0.0, drive.udc)
 
@@ -368,8 +367,8 @@ def analyze(report: dict, cfg: dict, delay: str, band: bool = True) -> dict:
     -------
     dict
         ``config`` (the validated input, I_peak resolved), ``cases``, ``worst``,
-        ``worst_gain``, ``map``, ``safe_bandwidth_hz``, ``designed_bandwidth_hz``,
-        ``headroom`` and, when ``samples`` > 0, ``monte_carlo``.
+        ``worst_gain``, ``map``, ``safe_bandwidth_hz``, ``safe_bandwidth_scan_hz``,
+        ``designed_bandwidth_hz``, ``safe``, ``headroom`` and, when ``samples`` > 0, ``monte_carlo``.
     """
     drive = _Drive(report, cfg, delay)
     cfg = {**cfg, "peak_current_a": drive.peak}
@@ -425,7 +424,8 @@ def analyze(report: dict, cfg: dict, delay: str, band: bool = True) -> dict:
                         "hot_pct": min(c["voltage_headroom_pct"] for c in hot)},
            "designed_bandwidth_hz": {a: cases[0][a]["bandwidth_hz"] for a in _AXES},
            "safe": all(_passes(c[a], cfg) for c in cases for a in _AXES),
-           "safe_bandwidth_hz": _safe_band(drive, report, corners, cfg) if band else None}
+           "safe_bandwidth_hz": _safe_band(drive, corners, cfg) if band else None,
+           "safe_bandwidth_scan_hz": [0.5e-3 / drive.ts, 0.45 / drive.ts]}
     if cfg["samples"] > 0:
         out["monte_carlo"] = monte_carlo(drive, worst["pm"], cfg["samples"], cfg["seed"])
     return out
