@@ -54,7 +54,7 @@ def main(argv: list) -> None:
         t1 = time.perf_counter() - t
         from dask.distributed import LocalCluster
         with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                          dashboard_address=None) as cluster:
+                          dashboard_address=":0") as cluster:
             t = time.perf_counter()
             two = run_study(tasks, scheduler=cluster.scheduler_address, progress=quiet)
             t2 = time.perf_counter() - t

@@ -221,7 +221,7 @@ def test_study_on_a_local_dask_cluster_equals_jobs_1():
     tasks = study_tasks(_catalogue(8), {"robust": {}}, 40, 5)
     seen = []
     with LocalCluster(n_workers=3, threads_per_worker=1, processes=True,
-                      dashboard_address=None) as cluster:
+                      dashboard_address=":0") as cluster:
         rows = run_study(tasks, scheduler=cluster.scheduler_address,
                          progress=lambda d, t: seen.append((d, t)))
     assert rows == run_study(tasks, 1, progress=lambda d, t: None)
