@@ -76,7 +76,9 @@ export default async function loop(ctx) {
     const hi = await valueOf(page, 'loop.robust.safe_bandwidth_hz.1');
     const bw = await valueOf(page, 'loop.robust.designed_bandwidth_hz.q');
     assert(lo > 0 && lo < hi && hi < 5000, `band ${lo}–${hi}`);
-    assert((await valueOf(page, 'loop.robust.safe')) === (bw <= hi) || bw > hi, `safe flag vs band: bw ${bw}, hi ${hi}`);
+    // The seed's 500 Hz gains close the loop at ≈1268 Hz, above the band: its worst gain margin
+    // (cold, peak current) is below 6 dB, so the page says the margins are lost.
+    assert(bw > hi && (await valueOf(page, 'loop.robust.safe')) === false, `seed: bw ${bw}, band top ${hi}, safe flag`);
     for (const f of ['robust-band', 'robust-map', 'robust-hist']) {
       await page.$eval(`#panel-loop [data-figure="${f}"]`, (e) => e.scrollIntoView({ block: 'center' }));
       await page.waitForSelector(`#panel-loop [data-figure="${f}"] .main-svg`, { state: 'attached', timeout: 60_000 });
