@@ -8,7 +8,8 @@ Never imports pulab.  The firmware gains come from the report oracle (oracle.py:
 ``current_pi.*.from_integers``); the drifted plants are written here from the contract's
 formulas (docs/contract.md, "Robustness"): R(T) = R·(1 + α·(T − T_ref)),
 ψ(T) = ψ·(1 + β·(T − T_ref)), L linear to (1 − drop)·L at I_peak or a table, U_dc·(1 ± tol),
-loop gain scaled by U_dc/U_dc,nom without bus compensation; each loop is built and measured
+loop gain scaled by U_dc/U_dc,nom without bus compensation; the voltage headroom at rated
+frequency (i_d = 0, i_q = the case's current, against U_dc/√2); each loop is built and measured
 with python-control along loop_oracle.py's route (control.c2d, lifting for the PWM half
 period, control.stability_margins, feedback poles, a brentq bandwidth).
 
@@ -71,6 +72,10 @@ def expected(inp):
         c = {"temperature_c": float(t), "current_a": float(i), "udc_v": float(u),
              "rs_ohm": m["rs_ohm"] * (1 + alpha * (t - t_ref)), "ld_h": ld, "lq_h": lq,
              "psi_wb": psi * (1 + beta * (t - t_ref))}
+        # voltage need at rated frequency, i_d = 0, i_q = i (RMS), against U_dc/√2 (line RMS)
+        w = 2.0 * math.pi * m["rated_freq_hz"]
+        need = math.sqrt(3.0) * abs(complex(c["rs_ohm"] * i + w * c["psi_wb"], -w * lq * i))
+        c["voltage_headroom_pct"] = 100.0 * (1.0 - need / (u / math.sqrt(2.0)))
         k = 1.0 if comp else u / udc
         for axis, L in (("d", ld), ("q", lq)):
             g = rep["current_pi"][axis]["from_integers"]

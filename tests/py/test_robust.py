@@ -49,7 +49,8 @@ def test_corners_match_python_control(path):
     assert [c["kind"] for c in got[:len(expected)]] == ["nominal"] + ["corner"] * 8
     problems = []
     for k, (e, a) in enumerate(zip(expected, got)):
-        for key in ("temperature_c", "current_a", "udc_v", "rs_ohm", "ld_h", "lq_h", "psi_wb"):
+        for key in ("temperature_c", "current_a", "udc_v", "rs_ohm", "ld_h", "lq_h", "psi_wb",
+                    "voltage_headroom_pct"):
             if not _close(a[key], e[key]):
                 problems.append(f"cases[{k}].{key}: {a[key]} vs {e[key]}")
         for axis in ("d", "q"):
