@@ -96,6 +96,8 @@ export function plot(el: HTMLElement, traces: Trace[], layout: PlotLayout): void
 export function plotRaw(el: HTMLElement, data: object[], layout: Record<string, unknown>, height = 380): void {
   if (!el.querySelector('.plot-host')) el.replaceChildren(h('div', { class: 'plot-host' }, h('div', { class: 'plot-loading' }, t('plotLoading'))));
   const host = el.querySelector('.plot-host') as HTMLElement;
+  // The stylesheet reserves 380 px per plot (no jump when it arrives); a shorter plot says so.
+  if (height !== 380) host.style.minHeight = `${height}px`;
   whenVisible(host, () => draw(host, data, layout, height));
 }
 

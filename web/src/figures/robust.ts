@@ -37,7 +37,7 @@ export function renderRobustMap(el: HTMLElement, r: RobustReport): void {
 /** The scanned bandwidth axis, the safe band over it and the bandwidth of the firmware's gains. */
 export function renderRobustBand(el: HTMLElement, r: RobustReport): void {
   const [s0, s1] = r.safe_bandwidth_scan_hz;
-  const data: object[] = [{ type: 'scatter', mode: 'lines', x: [s0, s1], y: [0, 0], name: 'scan', line: { color: '#d0d7de', width: 14 } }];
+  const data: object[] = [{ type: 'scatter', mode: 'lines', x: [s0, s1], y: [0, 0], name: t('robustScan'), line: { color: '#d0d7de', width: 14 } }];
   if (r.safe_bandwidth_hz) {
     data.push({ type: 'scatter', mode: 'lines', x: r.safe_bandwidth_hz, y: [0, 0], name: t('robustSafe'), line: { color: COLORS.pu, width: 14 } });
   }
