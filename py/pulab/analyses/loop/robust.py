@@ -52,7 +52,7 @@ Examples
 >>> cfg["temperature_c"], cfg["copper_alpha_per_k"], cfg["magnet_pct_per_k"]
 ([20.0, 155.0], 0.00393, -0.12)
 >>> round(resistance(1.5, 155.0, cfg), 6)
-2.295915
+2.295825
 """
 
 from __future__ import annotations
