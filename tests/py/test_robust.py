@@ -270,3 +270,21 @@ def test_warnings_have_chinese():
     for i in (SEED, inp):
         w = [x for x in pulab.report(i)["warnings"] if x.startswith("loop.robust")]
         assert w and all(has_chinese(x) for x in w), w
+
+
+def test_worst_step_fixed_beside_float():
+    # 380 V 7.5 kW motor (tests/oracle/make_golden.py IND380): tuned for 500 Hz on the nameplate
+    # plant; at the worst case (peak current, L −30 %) the same integers overshoot far more.
+    ind = {"motor": {"rated_voltage_v": 380, "rated_current_a": 14.5, "rated_freq_hz": 50,
+                     "rs_ohm": 0.42, "ld_h": 0.0085, "lq_h": 0.0135, "bemf_v": 335.0,
+                     "pole_pairs": 2}, "drive": {"udc_v": 540, "ts_s": 0.000125},
+           "analysis": {"robust": {}}, "sim": {"current": {"axis": "q", "delay": True}}}
+    r = pulab.report(ind)
+    s = r["loop"]["robust"]["step"]
+    assert s["case"] == r["loop"]["robust"]["worst"]["case"] and s["axis"] == "q"
+    assert len(s["t"]) == len(s["float"]) == len(s["fixed"]) <= 400
+    m = s["metrics"]
+    assert abs(m["fixed"]["overshoot_pct"] - m["float"]["overshoot_pct"]) < 1.0
+    assert s["fixed_vs_float_max_a"] < 0.01 * s["ref_a"]
+    nominal = r["sim"]["current"]["metrics"]["fixed"]["overshoot_pct"]
+    assert m["fixed"]["overshoot_pct"] > nominal + 5, (m["fixed"]["overshoot_pct"], nominal)

@@ -156,6 +156,8 @@ export interface RobustReport {
   safe: boolean;
   safe_bandwidth_hz: [number, number] | null;
   safe_bandwidth_scan_hz: [number, number];
+  step?: { case: number; axis: 'd' | 'q'; ref_a: number; t: number[]; float: number[]; fixed: number[];
+    metrics: Record<'float' | 'fixed', Record<string, number | null>>; fixed_vs_float_max_a: number };
   monte_carlo?: { samples: number; seed: number; fraction_below: number; phase_margin_deg: Record<'d' | 'q', Histogram> };
 }
 /** pulab.analyses.review: one graded finding; `key` = the report path of the value, `field` = the input to change. */

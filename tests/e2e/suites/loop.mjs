@@ -79,7 +79,8 @@ export default async function loop(ctx) {
     // The seed's 500 Hz gains close the loop at ≈1268 Hz, above the band: its worst gain margin
     // (cold, peak current) is below 6 dB, so the page says the margins are lost.
     assert(bw > hi && (await valueOf(page, 'loop.robust.safe')) === false, `seed: bw ${bw}, band top ${hi}, safe flag`);
-    for (const f of ['robust-band', 'robust-map', 'robust-hist']) {
+    assert(Math.abs((await valueOf(page, 'loop.robust.step.metrics.fixed.overshoot_pct')) - (await valueOf(page, 'loop.robust.step.metrics.float.overshoot_pct'))) < 1, 'fixed vs float overshoot at the worst case');
+    for (const f of ['robust-band', 'robust-map', 'robust-step', 'robust-hist']) {
       await page.$eval(`#panel-loop [data-figure="${f}"]`, (e) => e.scrollIntoView({ block: 'center' }));
       await page.waitForSelector(`#panel-loop [data-figure="${f}"] .main-svg`, { state: 'attached', timeout: 60_000 });
     }

@@ -3,7 +3,7 @@
 // trace, so the map is a scatter of square markers coloured by the margin.
 import { t } from '../i18n';
 import type { Histogram, RobustReport } from '../report-types';
-import { COLORS, plotRaw } from './figure';
+import { COLORS, plot, plotRaw } from './figure';
 
 /** Phase margin (worse of d and q) at each grid point, coloured; the threshold marks the scale. */
 export function renderRobustMap(el: HTMLElement, r: RobustReport): void {
@@ -74,4 +74,16 @@ export function renderRobustHistogram(el: HTMLElement, r: RobustReport): void {
     xaxis: { title: { text: `${t('pm')} [°]` }, gridcolor: '#eaeef2' },
     yaxis: { title: { text: t('robustCount') }, gridcolor: '#eaeef2' },
   }, 300);
+}
+
+/** The step at the worst case: float and fixed point, their difference below. */
+export function renderRobustStep(el: HTMLElement, r: RobustReport): void {
+  const s = r.step!;
+  const ms = s.t.map((x) => x * 1e3);
+  plot(el, [
+    { x: ms, y: s.float, name: t('variant_float'), color: COLORS.si },
+    { x: ms, y: s.fixed, name: t('variant_fixed'), color: COLORS.fixed, dash: 'dash' },
+    { x: [0, ms[ms.length - 1] ?? 0], y: [s.ref_a, s.ref_a], name: 'ref', color: COLORS.ref, dash: 'dot', width: 1 },
+    { x: ms, y: s.fixed.map((v, k) => v - s.float[k]!), name: 'Δ', color: COLORS.fixed, yaxis: 'y2', width: 1.2 },
+  ], { xTitle: `${t('time')} [ms]`, yTitle: `i_${s.axis} [A]`, y2Title: 'fixed − float [A]', lower: 0.25 });
 }

@@ -7,7 +7,7 @@ import { t, type Key } from '../i18n';
 import type { LoopReport, Margins, RobustAxis, RobustCase } from '../report-types';
 import { renderBode } from '../figures/bode';
 import { COLORS, keptFigure, simPlaceholder } from '../figures/figure';
-import { renderRobustBand, renderRobustHistogram, renderRobustMap } from '../figures/robust';
+import { renderRobustBand, renderRobustHistogram, renderRobustMap, renderRobustStep } from '../figures/robust';
 import { renderSpeedStep } from '../figures/speed-step';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
@@ -165,6 +165,10 @@ function robustSection(loop: LoopReport): HTMLElement[] {
     figure('robust-band'),
     h('h3', {}, t('robustMap')),
     figure('robust-map'),
+    ...(r.step ? [h('h3', {}, t('robustStep', { a: r.step.axis })), figure('robust-step'),
+      h('p', { class: 'note' }, `${t('overshoot')}: `, num('loop.robust.step.metrics.float.overshoot_pct', r.step.metrics.float.overshoot_pct, { sig: 3, unit: '%' }),
+        ` (${t('variant_float')}), `, num('loop.robust.step.metrics.fixed.overshoot_pct', r.step.metrics.fixed.overshoot_pct, { sig: 3, unit: '%' }),
+        ` (${t('variant_fixed')}); ${t('fixedVsFloat')}: `, num('loop.robust.step.fixed_vs_float_max_a', r.step.fixed_vs_float_max_a, { sig: 3, unit: 'A' }))] : []),
     ...(mc ? [h('h3', {}, t('robustHist', { n: String(mc.samples), f: `${(100 * mc.fraction_below).toFixed(1)} %` })), figure('robust-hist')] : []),
   ];
 }
@@ -173,6 +177,7 @@ function drawFigures(el: HTMLElement, loop: LoopReport): void {
   const rob = loop.robust;
   keptFigure(el, 'robust-band', rob, (fig) => renderRobustBand(fig, rob!));
   keptFigure(el, 'robust-map', rob, (fig) => renderRobustMap(fig, rob!));
+  keptFigure(el, 'robust-step', rob?.step ? rob : undefined, (fig) => renderRobustStep(fig, rob!));
   keptFigure(el, 'robust-hist', rob?.monte_carlo ? rob : undefined, (fig) => renderRobustHistogram(fig, rob!));
   const bode = loop.bode;
   const cur = bode?.current;

@@ -60,13 +60,18 @@ from __future__ import annotations
 import math
 import random
 
+from ...profiles.inovance_code import round_half_away
 from ...schema.errors import InputError
 from ...schema.inputs import object_fields, real
+from ..sim import decimate_indices
+from ..sim.current import default_duration, run_fixed, run_float
+from ..sim.metrics import step_metrics
+from ..sim.plant import zoh
 from . import current as _current
 from .discrete import loop_margins
 
 __all__ = ["validate", "FIELDS", "MAGNETS", "resistance", "flux", "inductance", "analyze",
-           "monte_carlo", "warnings", "study_row"]
+           "monte_carlo", "worst_step", "warnings", "study_row"]
 
 FIELDS = ("temperature_c", "reference_c", "copper_alpha_per_k", "magnet", "peak_current_a",
           "inductance_drop_pct", "inductance_table", "udc_tolerance_pct", "bus_compensated",
@@ -426,9 +431,47 @@ def analyze(report: dict, cfg: dict, delay: str, band: bool = True) -> dict:
            "safe": all(_passes(c[a], cfg) for c in cases for a in _AXES),
            "safe_bandwidth_hz": _safe_band(drive, corners, cfg) if band else None,
            "safe_bandwidth_scan_hz": [0.5e-3 / drive.ts, 0.45 / drive.ts]}
+    if band:
+        out["step"] = worst_step(report, worst["pm"], delay)
     if cfg["samples"] > 0:
         out["monte_carlo"] = monte_carlo(drive, worst["pm"], cfg["samples"], cfg["seed"])
     return out
+
+
+def worst_step(report: dict, case: dict, delay: str) -> dict:
+    """Current step on the worst case's weaker axis: float PI beside the firmware's fixed point.
+
+    The time simulation of :mod:`pulab.analyses.sim.current` (vendor PI on integers, its
+    voltage limits and anti-windup clamp as the firmware holds them for the nominal motor) on
+    the drifted plant at standstill, a step of 0.5·I_b.  Its delay model is the simulation's:
+    one sample of computation delay unless ``analysis.delay`` is ``none`` (the PWM's half
+    period is in the margins, not in this time response).  Run length as the simulation's
+    default for the nominal motor (30/ω_c, at least 200 periods); at most 400 points kept.
+    """
+    inp, b, vendor, pi = report["input"], report["base"], report["vendor"], report["current_pi"]
+    ts = inp["drive"]["ts_s"]
+    u_b, i_b = b["U_b"], b["I_b"]
+    axis = case["axis"]
+    n = int(math.ceil(default_duration(report, axis) / ts))
+    step = 0.5 * i_b
+    ref_d, ref_q = (step, 0.0) if axis == "d" else (0.0, step)
+    maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
+    z = zoh(case["rs_ohm"], case["ld_h"], case["lq_h"], case["psi_wb"], 0.0, ts)
+    with_delay = delay != "none"
+    gd, gq = pi["d"]["from_integers"], pi["q"]["from_integers"]
+    fl = run_float(z, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts, maxout / 4096.0 * u_b,
+                   maxu / 16777216.0 * u_b, ref_d, ref_q, 0.0, n, with_delay)
+    fx = run_fixed(z, i_b, u_b, pi["d"]["pm_kp"], pi["d"]["pm_ki"], pi["q"]["pm_kp"],
+                   pi["q"]["pm_ki"], maxu, maxout, round_half_away(ref_d / i_b * 4096.0),
+                   round_half_away(ref_q / i_b * 4096.0), 0, n, with_delay)
+    t = [k * ts for k in range(n + 1)]
+    key = "id" if axis == "d" else "iq"
+    keep = decimate_indices(n + 1)
+    return {"case": case["case"], "axis": axis, "ref_a": step, "t": [t[k] for k in keep],
+            "float": [fl[key][k] for k in keep], "fixed": [fx[key][k] for k in keep],
+            "metrics": {"float": step_metrics(t, list(fl[key]), step, list(fl["sat"]), ts),
+                        "fixed": step_metrics(t, list(fx[key]), step, list(fx["sat"]), ts)},
+            "fixed_vs_float_max_a": max(abs(a - c) for a, c in zip(fl[key], fx[key]))}
 
 
 # ---- Monte Carlo ------------------------------------------------------------------------
