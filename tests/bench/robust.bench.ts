@@ -27,5 +27,5 @@ res["page_request_200_samples"] = 1e3 * (time.perf_counter() - t)
 json.dumps(res)
 `) as string;
   const res = JSON.parse(out) as Record<string, number>;
-  process.stdout.write(`\nPyodide: corners + worst case + map ${res.corners!.toFixed(1)} ms; with the safe band ${res.band!.toFixed(1)} ms; the page's request (band + 200 samples) ${res.page_request_200_samples!.toFixed(0)} ms\n`);
+  process.stdout.write(`\nPyodide: corners + worst case + map ${res.corners!.toFixed(1)} ms; with the safe band and the worst-case step ${res.band!.toFixed(1)} ms; the page's request (band + 200 samples) ${res.page_request_200_samples!.toFixed(0)} ms\n`);
 });

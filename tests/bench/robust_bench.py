@@ -37,7 +37,7 @@ def main(argv: list) -> None:
             t = time.perf_counter()
             robust.analyze(r, robust.validate({}), "computation_pwm", band=band)
             times.append(time.perf_counter() - t)
-        label = "corners + worst case + map" + (" + safe band" if band else "")
+        label = "corners + worst case + map" + (" + safe band + worst-case step" if band else "")
         print(f"{label}: median {1e3 * statistics.median(times):.1f} ms")
     t = time.perf_counter()
     out = robust.analyze(r, robust.validate({"samples": 10000}), "computation_pwm", band=False)
