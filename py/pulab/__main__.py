@@ -20,6 +20,7 @@ from .cli.family import add_family_commands, read_json
 from .schema.validate import shown
 from .report import format_text, report
 from .cli.trace import add_trace_parser, trace_main
+from .cli.robust import add_robust_parser
 
 
 def main(argv: list | None = None) -> int:
@@ -31,6 +32,7 @@ def main(argv: list | None = None) -> int:
     rp.add_argument("--format", choices=("json", "text"), default="json")
     add_family_commands(sub)
     add_trace_parser(sub)
+    add_robust_parser(sub)
     _add_vendor_commands(sub)
     args = p.parse_args(argv)
     if args.command == "trace":

@@ -113,11 +113,30 @@ describe('docs: placeholders resolve in every golden report', () => {
   const lookup = (obj: unknown, path: string): unknown =>
     path.split('.').reduce<unknown>((o, k) => (o !== null && typeof o === 'object' ? (o as Record<string, unknown>)[k] : undefined), obj);
 
+  // loop.robust.* comes with the simulation request: resolved in the robustness vectors
+  // (tests/golden/robust, expected = {cases}) instead of the plain report vectors.
+  const robustPaths = [...paths].filter((p) => p.startsWith('loop.robust.'));
+  const robustDir = join(goldenDir, 'robust');
+  const robustGoldens = existsSync(robustDir) ? readdirSync(robustDir).filter((f) => f.endsWith('.json')).sort() : [];
+  it('robustness vectors exist for the chapters\' loop.robust placeholders', () => {
+    expect(robustPaths.length === 0 || robustGoldens.length > 0).toBe(true);
+  });
+  for (const g of robustGoldens) {
+    it(`robust/${g}`, () => {
+      const doc = JSON.parse(readFileSync(join(robustDir, g), 'utf8'));
+      for (const p of robustPaths) {
+        const v = lookup({ loop: { robust: doc.expected } }, p);
+        expect(typeof v === 'number' && Number.isFinite(v), `robust/${g}: {{${p}}} -> ${JSON.stringify(v)}`).toBe(true);
+      }
+    });
+  }
+
   for (const g of goldens) {
     it(g, () => {
       const doc = JSON.parse(readFileSync(join(goldenDir, g), 'utf8'));
       if (!('expected' in doc)) return; // not a report vector (e.g. a simulation trajectory file)
       for (const p of paths) {
+        if (p.startsWith('loop.robust.')) continue;
         const v = lookup(doc.expected, p);
         const ok = (typeof v === 'number' && Number.isFinite(v)) || typeof v === 'string';
         expect(ok, `${g}: {{${p}}} -> ${JSON.stringify(v)}`).toBe(true);

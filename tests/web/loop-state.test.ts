@@ -3,11 +3,11 @@ import { describe, it, expect } from 'vitest';
 import { SEED_INPUT, initialInput, reportInput, simInput, type Input } from '../../web/src/state';
 import { effectiveInput } from '../../web/src/fields';
 
-describe('analysis: reportInput drops it, simInput asks for Bode data and the speed response', () => {
+describe('analysis: reportInput drops it, simInput asks for Bode data, the robustness view and the speed response', () => {
   const cases: [string, Input, unknown][] = [
     ['no analysis → none added', { motor: { rs_ohm: 1 }, sim: {} }, undefined],
-    ['delay only → bode', { analysis: { delay: 'none' } }, { delay: 'none', bode: true }],
-    ['speed → response', { analysis: { speed: { inertia_kg_m2: 0.001 } } }, { bode: true, speed: { inertia_kg_m2: 0.001, response: true } }],
+    ['delay only → bode', { analysis: { delay: 'none' } }, { delay: 'none', bode: true, robust: { samples: 200 } }],
+    ['speed → response', { analysis: { speed: { inertia_kg_m2: 0.001 } } }, { bode: true, robust: { samples: 200 }, speed: { inertia_kg_m2: 0.001, response: true } }],
   ];
   for (const [name, inp, want] of cases) {
     it(name, () => {

@@ -113,11 +113,52 @@ export interface LoopReport {
       fixed_vs_float_max_rpm: number;
     };
   });
+  robust?: RobustReport;
   bode?: {
     current: { f_hz: number[]; open: Record<string, BodeCurve>; closed: Record<string, BodeCurve> };
     pll: { f_hz: number[]; open: Record<string, BodeCurve> };
     speed?: { f_hz: number[]; open: BodeCurve; closed: BodeCurve };
   };
+}
+/** One axis of a robustness case (docs/contract.md, "Robustness"). */
+export interface RobustAxis {
+  phase_margin_deg: number | null;
+  gain_margin_db: number | null;
+  crossover_hz: number | null;
+  bandwidth_hz: number | null;
+  stable: boolean;
+}
+/** A drifted plant with the nominal firmware gains. */
+export interface RobustCase {
+  kind: 'nominal' | 'corner' | 'search';
+  temperature_c: number;
+  current_a: number;
+  rs_ohm: number;
+  ld_h: number;
+  lq_h: number;
+  psi_wb: number;
+  udc_v: number;
+  voltage_headroom_pct: number;
+  field_weakening_from_hz: number | null;
+  d: RobustAxis;
+  q: RobustAxis;
+}
+export interface Histogram { edges: number[]; counts: number[]; missing: number }
+/** pulab.analyses.loop.robust: report "loop.robust". */
+export interface RobustReport {
+  config: { min_phase_margin_deg: number; min_gain_margin_db: number; temperature_c: [number, number]; peak_current_a: number };
+  cases: RobustCase[];
+  worst: RobustCase & { case: number; axis: 'd' | 'q' };
+  worst_gain: RobustCase & { case: number; axis: 'd' | 'q' };
+  map: { temperature_c: number[]; current_a: number[]; d: Record<'phase_margin_deg' | 'gain_margin_db', (number | null)[][]>; q: Record<'phase_margin_deg' | 'gain_margin_db', (number | null)[][]> };
+  headroom: { cold_pct: number; hot_pct: number };
+  designed_bandwidth_hz: { d: number | null; q: number | null };
+  safe: boolean;
+  safe_bandwidth_hz: [number, number] | null;
+  safe_bandwidth_scan_hz: [number, number];
+  step?: { case: number; axis: 'd' | 'q'; ref_a: number; t: number[]; float: number[]; fixed: number[];
+    metrics: Record<'float' | 'fixed', Record<string, number | null>>; fixed_vs_float_max_a: number };
+  monte_carlo?: { samples: number; seed: number; fraction_below: number; phase_margin_deg: Record<'d' | 'q', Histogram> };
 }
 /** pulab.analyses.review: one graded finding; `key` = the report path of the value, `field` = the input to change. */
 export interface Finding {

@@ -134,7 +134,8 @@ export function simInput(inp: Input): Input {
   if (inp.sim) out.sim = inp.sim;
   if (inp.analysis) {
     const speed = inp.analysis.speed;
-    out.analysis = { ...inp.analysis, bode: true };
+    // The robustness view: drift, saturation and 200 tolerance samples with the defaults.
+    out.analysis = { ...inp.analysis, bode: true, robust: { samples: 200 } };
     if (speed && typeof speed === 'object' && !Array.isArray(speed)) out.analysis.speed = { ...speed, response: true };
   }
   return out;

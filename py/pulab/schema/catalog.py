@@ -195,6 +195,18 @@ MESSAGES = {
                                  "delay) are optimistic",
                                  "loop.speed：电流环带宽只有速度环穿越频率的 {ratio:.2g} 倍；速度环裕度"
                                  "（把内环当作一个周期的延时）偏乐观"),
+    "warning.robust_margin": ("loop.robust.{name}: {what} {shown} on the {axis} axis at {temp_c:g} °C, "
+                              "{current_a:.4g} A, U_dc {udc_v:.4g} V (below {threshold}; the firmware "
+                              "gains are tuned for the nominal motor); {fix}",
+                              "loop.robust.{name}：{axis} 轴{what} {shown}，工况 {temp_c:g} °C、"
+                              "{current_a:.4g} A、U_dc {udc_v:.4g} V（低于 {threshold}；固件增益按标称"
+                              "电机整定）；{fix}"),
+    "robust.phase_margin": ("phase margin", "相位裕度"),
+    "robust.gain_margin": ("gain margin", "增益裕度"),
+    "robust.unstable": ("unstable", "不稳定"),
+    "robust.band": ("designed bandwidths {lo:.4g}–{hi:.4g} Hz keep it at every corner",
+                    "设计带宽 {lo:.4g}–{hi:.4g} Hz 在所有角点都满足"),
+    "robust.no_band": ("no designed bandwidth keeps it at every corner", "没有任何设计带宽能在所有角点满足"),
     "warning.ti_check": ("profiles.ti: USER_checkForErrors would set {code} ({why})",
                          "profiles.ti：USER_checkForErrors 会置位 {code}（{why}）"),
     "warning.profile_overflow": ("{path}: {ideal:.6g} does not fit {format}; stored {value}",

@@ -53,6 +53,52 @@ export default async function loop(ctx) {
     }
   });
 
+  await check('robustness view: nominal and 155 °C peak-current corner equal python-control (1e-6), band and figures drawn, zh and en', async () => {
+    // tests/golden/robust/01_seed_motor.json: the seed motor, analysis.robust = {} (the page
+    // asks for the same defaults plus 200 tolerance samples, which leave the corners unchanged).
+    const cases = golden('robust/01_seed_motor.json').expected.cases;
+    const bad = [];
+    let n = 0;
+    for (const k of [0, 7]) {
+      for (const a of ['d', 'q']) {
+        for (const key of ['phase_margin_deg', 'gain_margin_db']) {
+          const e = cases[k][a][key];
+          const got = await valueOf(page, `loop.robust.cases.${k}.${a}.${key}`);
+          n++;
+          if (!(Math.abs(got - e) <= REL * Math.abs(e) + 1e-9)) bad.push(`cases.${k}.${a}.${key}: page ${got}, python-control ${e}`);
+        }
+      }
+      const r = await valueOf(page, `loop.robust.cases.${k}.rs_ohm`);
+      if (!(Math.abs(r - cases[k].rs_ohm) <= REL * cases[k].rs_ohm)) bad.push(`cases.${k}.rs_ohm ${r}`);
+    }
+    assert(bad.length === 0, bad.join('\n'));
+    const lo = await valueOf(page, 'loop.robust.safe_bandwidth_hz.0');
+    const hi = await valueOf(page, 'loop.robust.safe_bandwidth_hz.1');
+    const bw = await valueOf(page, 'loop.robust.designed_bandwidth_hz.q');
+    assert(lo > 0 && lo < hi && hi < 5000, `band ${lo}–${hi}`);
+    // The seed's 500 Hz gains close the loop at ≈1268 Hz, above the band: its worst gain margin
+    // (cold, peak current) is below 6 dB, so the page says the margins are lost.
+    assert(bw > hi && (await valueOf(page, 'loop.robust.safe')) === false, `seed: bw ${bw}, band top ${hi}, safe flag`);
+    assert(Math.abs((await valueOf(page, 'loop.robust.step.metrics.fixed.overshoot_pct')) - (await valueOf(page, 'loop.robust.step.metrics.float.overshoot_pct'))) < 1, 'fixed vs float overshoot at the worst case');
+    for (const f of ['robust-band', 'robust-map', 'robust-step', 'robust-hist']) {
+      await page.$eval(`#panel-loop [data-figure="${f}"]`, (e) => e.scrollIntoView({ block: 'center' }));
+      await page.waitForSelector(`#panel-loop [data-figure="${f}"] .main-svg`, { state: 'attached', timeout: 60_000 });
+    }
+    for (const lang of ['zh', 'en']) {
+      await page.click(`button[data-lang="${lang}"]`);
+      const title = await page.$eval('#panel-loop h3.robust-title', (e) => e.textContent);
+      assert(lang === 'zh' ? /鲁棒/.test(title) : /Robustness/.test(title), `${lang} title ${title}`);
+      for (const w of [390, 900, 1366]) {
+        await page.setViewportSize({ width: w, height: 900 });
+        await page.$eval('#panel-loop h3.robust-title', (e) => e.scrollIntoView());
+        await page.waitForTimeout(500);
+        await page.screenshot({ path: join(SHOTS, `loop-robust-${lang}-${w}.png`) });
+      }
+    }
+    await page.setViewportSize({ width: 1366, height: 768 });
+    console.log(`      ${n} robustness margins equal python-control; safe band ${lo.toFixed(1)}–${hi.toFixed(1)} Hz, your gains ${bw.toFixed(1)} Hz`);
+  });
+
   await check('inputs: delay none raises the margin; a 45° target is met', async () => {
     const before = await valueOf(page, 'loop.current.d.phase_margin_deg');
     await page.$eval('details[data-section="analysis"]', (d) => { d.open = true; });

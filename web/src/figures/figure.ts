@@ -79,32 +79,41 @@ export interface PlotLayout {
 
 /** A figure with a main plot and a subplot below (y2). */
 export function plot(el: HTMLElement, traces: Trace[], layout: PlotLayout): void {
-  if (!el.querySelector('.plot-host')) el.replaceChildren(h('div', { class: 'plot-host' }, h('div', { class: 'plot-loading' }, t('plotLoading'))));
-  const host = el.querySelector('.plot-host') as HTMLElement;
-  whenVisible(host, () => draw(host, traces, layout));
+  const lower = layout.lower ?? 0.26;
+  plotRaw(el, traces.map((tr) => ({
+    type: 'scatter', mode: 'lines', x: tr.x, y: tr.y, name: tr.name, yaxis: tr.yaxis ?? 'y',
+    line: { color: tr.color, dash: tr.dash ?? 'solid', width: tr.width ?? 1.8 }, opacity: tr.opacity ?? 1, showlegend: tr.yaxis !== 'y2',
+  })), {
+    legend: { orientation: 'h', y: 1.08, x: 0 },
+    grid: { rows: 2, columns: 1, roworder: 'top to bottom' },
+    xaxis: { title: { text: layout.xTitle }, gridcolor: '#eaeef2', anchor: 'y2', range: layout.xRange, type: layout.xLog ? 'log' : 'linear' },
+    yaxis: { title: { text: layout.yTitle }, domain: [lower + 0.1, 1], gridcolor: '#eaeef2', range: layout.yRange },
+    yaxis2: { title: { text: layout.y2Title }, domain: [0, lower], gridcolor: '#eaeef2', zerolinecolor: '#aaa' },
+  });
 }
 
-function draw(host: HTMLElement, traces: Trace[], layout: PlotLayout): void {
-  const lower = layout.lower ?? 0.26;
+/** A figure from Plotly traces and layout as given (the common look added), drawn when visible. */
+export function plotRaw(el: HTMLElement, data: object[], layout: Record<string, unknown>, height = 380): void {
+  if (!el.querySelector('.plot-host')) el.replaceChildren(h('div', { class: 'plot-host' }, h('div', { class: 'plot-loading' }, t('plotLoading'))));
+  const host = el.querySelector('.plot-host') as HTMLElement;
+  // The stylesheet reserves 380 px per plot (no jump when it arrives); a shorter plot says so.
+  if (height !== 380) host.style.minHeight = `${height}px`;
+  whenVisible(host, () => draw(host, data, layout, height));
+}
+
+function draw(host: HTMLElement, data: object[], layout: Record<string, unknown>, height: number): void {
   failed.delete(host);
   loadPlotly().then((P) => {
     host.querySelector('.plot-loading, .plot-error')?.remove();
     return P.react(
       host,
-      traces.map((tr) => ({
-        type: 'scatter', mode: 'lines', x: tr.x, y: tr.y, name: tr.name, yaxis: tr.yaxis ?? 'y',
-        line: { color: tr.color, dash: tr.dash ?? 'solid', width: tr.width ?? 1.8 }, opacity: tr.opacity ?? 1, showlegend: tr.yaxis !== 'y2',
-      })),
+      data as Parameters<PlotlyT['react']>[1],
       {
-        height: 380,
+        height,
         margin: { l: 64, r: 16, t: 10, b: 44 },
         font: { family: 'system-ui, sans-serif', size: 12, color: '#24292f' },
         paper_bgcolor: 'rgba(0,0,0,0)', plot_bgcolor: '#fff',
-        legend: { orientation: 'h', y: 1.08, x: 0 },
-        grid: { rows: 2, columns: 1, roworder: 'top to bottom' },
-        xaxis: { title: { text: layout.xTitle }, gridcolor: '#eaeef2', anchor: 'y2', range: layout.xRange, type: layout.xLog ? 'log' : 'linear' },
-        yaxis: { title: { text: layout.yTitle }, domain: [lower + 0.1, 1], gridcolor: '#eaeef2', range: layout.yRange },
-        yaxis2: { title: { text: layout.y2Title }, domain: [0, lower], gridcolor: '#eaeef2', zerolinecolor: '#aaa' },
+        ...layout,
       },
       { displaylogo: false, responsive: true, modeBarButtonsToRemove: ['lasso2d', 'select2d'] },
     );
@@ -113,7 +122,7 @@ function draw(host: HTMLElement, traces: Trace[], layout: PlotLayout): void {
     // offer a retry, and retry by itself when the network returns. The numbers are unaffected.
     const again = (): void => {
       host.querySelector('.plot-error')?.replaceWith(h('div', { class: 'plot-loading' }, t('plotLoading')));
-      draw(host, traces, layout);
+      draw(host, data, layout, height);
     };
     failed.set(host, again);
     host.querySelector('.plot-loading, .plot-error')?.remove();

@@ -1,11 +1,13 @@
 // Loop design as firmware runs it: margins with the delay, the delay-aware design
 // beside the continuous one, Bode plots, the PLL's scaled vs naive margins, the speed loop.
+// The robustness view: the nominal integers on the drifted motor ("loop.robust").
 // Everything shown comes from the report's "loop" section (sent with the simulation request).
 import { h, num, patch, table } from '../dom';
 import { t, type Key } from '../i18n';
-import type { LoopReport, Margins } from '../report-types';
+import type { LoopReport, Margins, RobustAxis, RobustCase } from '../report-types';
 import { renderBode } from '../figures/bode';
 import { COLORS, keptFigure, simPlaceholder } from '../figures/figure';
+import { renderRobustBand, renderRobustHistogram, renderRobustMap, renderRobustStep } from '../figures/robust';
 import { renderSpeedStep } from '../figures/speed-step';
 import { metricsTable } from './metrics';
 import type { Panel } from './panel';
@@ -125,7 +127,58 @@ function speedSection(loop: LoopReport): HTMLElement[] {
   ];
 }
 
+/** One row per case: where it is, the plant's drift, and each axis's phase and gain margin. */
+function robustRow(label: string, path: string, c: RobustCase): (string | HTMLElement)[] {
+  const axis = (a: 'd' | 'q', k: keyof RobustAxis): HTMLElement => {
+    const v = c[a][k];
+    if (v === null) return h('span', { class: 'num', 'data-key': `${path}.${a}.${k}`, 'data-value': 'null' }, t('noValue'));
+    return num(`${path}.${a}.${k}`, v, { sig: 4 });
+  };
+  return [label, num(`${path}.temperature_c`, c.temperature_c, { sig: 4 }), num(`${path}.current_a`, c.current_a, { sig: 4 }),
+    num(`${path}.udc_v`, c.udc_v, { sig: 4 }), num(`${path}.rs_ohm`, c.rs_ohm, { sig: 4 }), num(`${path}.lq_h`, c.lq_h, { sig: 4 }),
+    axis('d', 'phase_margin_deg'), axis('q', 'phase_margin_deg'), axis('d', 'gain_margin_db'), axis('q', 'gain_margin_db')];
+}
+
+function robustSection(loop: LoopReport): HTMLElement[] {
+  const r = loop.robust;
+  if (!r) return [];
+  const cfg = r.config;
+  const hot = r.cases.map((c, k) => [c, k] as const).filter(([c]) => c.kind === 'corner' && c.temperature_c === cfg.temperature_c[1] && c.current_a > 0)[0];
+  const rows = [robustRow(t('robustNominal'), 'loop.robust.cases.0', r.cases[0]!)];
+  if (hot) rows.push(robustRow(`${cfg.temperature_c[1]} °C, I_peak`, `loop.robust.cases.${hot[1]}`, hot[0]));
+  rows.push(robustRow(t('robustWorstPm'), 'loop.robust.worst', r.worst));
+  rows.push(robustRow(t('robustWorstGm'), 'loop.robust.worst_gain', r.worst_gain));
+  const band = r.safe_bandwidth_hz;
+  const mc = r.monte_carlo;
+  return [
+    h('h3', { class: 'robust-title' }, t('robustTitle')),
+    h('p', { class: 'note' }, t('robustNote', { t0: String(cfg.temperature_c[0]), t1: String(cfg.temperature_c[1]), ip: String(+cfg.peak_current_a.toPrecision(4)) })),
+    h('p', { class: r.safe ? 'ok' : 'bad-text', 'data-key': 'loop.robust.safe', 'data-value': JSON.stringify(r.safe) }, r.safe ? `✔ ${t('robustSafe')}` : `✘ ${t('robustUnsafe')}`),
+    table([t('robustCase'), 'T [°C]', 'I [A]', 'U_dc [V]', 'R_s [Ω]', 'L_q [H]', `${t('pm')} d [°]`, `${t('pm')} q [°]`, `${t('gm')} d [dB]`, `${t('gm')} q [dB]`], rows, 'robust-cases'),
+    h('p', { class: 'note robust-band' }, `${t('robustBand', { pm: String(cfg.min_phase_margin_deg), gm: String(cfg.min_gain_margin_db) })}: `,
+      ...(band ? [num('loop.robust.safe_bandwidth_hz.0', band[0], { sig: 4 }), ' – ', num('loop.robust.safe_bandwidth_hz.1', band[1], { sig: 4, unit: 'Hz' })]
+        : [h('span', { class: 'bad-text', 'data-key': 'loop.robust.safe_bandwidth_hz', 'data-value': 'null' }, t('robustNoBand'))]),
+      `; ${t('robustDesigned')}: `, num('loop.robust.designed_bandwidth_hz.q', r.designed_bandwidth_hz.q, { sig: 4, unit: 'Hz' })),
+    h('p', { class: 'note' }, `${t('robustHeadroom')}: `, num('loop.robust.headroom.cold_pct', r.headroom.cold_pct, { sig: 3, unit: '%' }), ' / ',
+      num('loop.robust.headroom.hot_pct', r.headroom.hot_pct, { sig: 3, unit: '%' })),
+    h('h3', {}, t('robustBandPlot')),
+    figure('robust-band'),
+    h('h3', {}, t('robustMap')),
+    figure('robust-map'),
+    ...(r.step ? [h('h3', {}, t('robustStep', { a: r.step.axis })), figure('robust-step'),
+      h('p', { class: 'note' }, `${t('overshoot')}: `, num('loop.robust.step.metrics.float.overshoot_pct', r.step.metrics.float.overshoot_pct, { sig: 3, unit: '%' }),
+        ` (${t('variant_float')}), `, num('loop.robust.step.metrics.fixed.overshoot_pct', r.step.metrics.fixed.overshoot_pct, { sig: 3, unit: '%' }),
+        ` (${t('variant_fixed')}); ${t('fixedVsFloat')}: `, num('loop.robust.step.fixed_vs_float_max_a', r.step.fixed_vs_float_max_a, { sig: 3, unit: 'A' }))] : []),
+    ...(mc ? [h('h3', {}, t('robustHist', { n: String(mc.samples), f: `${(100 * mc.fraction_below).toFixed(1)} %` })), figure('robust-hist')] : []),
+  ];
+}
+
 function drawFigures(el: HTMLElement, loop: LoopReport): void {
+  const rob = loop.robust;
+  keptFigure(el, 'robust-band', rob, (fig) => renderRobustBand(fig, rob!));
+  keptFigure(el, 'robust-map', rob, (fig) => renderRobustMap(fig, rob!));
+  keptFigure(el, 'robust-step', rob?.step ? rob : undefined, (fig) => renderRobustStep(fig, rob!));
+  keptFigure(el, 'robust-hist', rob?.monte_carlo ? rob : undefined, (fig) => renderRobustHistogram(fig, rob!));
   const bode = loop.bode;
   const cur = bode?.current;
   keptFigure(el, 'bode-current', cur, (fig) => renderBode(fig, cur!.f_hz, [
@@ -158,7 +211,7 @@ export const loopPanel: Panel = {
       el.replaceChildren(ctx.simError ? simPlaceholder(ctx) : h('div', { class: 'plot-placeholder' }, t('loopWaiting')));
       return;
     }
-    patch(el, ...currentSection(loop), ...pllSection(loop), ...speedSection(loop));
+    patch(el, ...currentSection(loop), ...robustSection(loop), ...pllSection(loop), ...speedSection(loop));
     drawFigures(el, loop);
   },
 };

@@ -14,6 +14,8 @@ Modules, one concept each:
 - :mod:`.pll` — scaled and naive PLL loops;
 - :mod:`.speed` — mechanical bases, speed PI in SI/pu/Q format, its margins;
 - :mod:`.speed_response` — speed step and load step, float and fixed point;
+- :mod:`.robust` — margins of the nominal gains on a drifted plant (temperature,
+  saturation, bus, tolerances), the safe bandwidth band;
 - :mod:`.inputs` — validation and defaults.
 
 Examples
@@ -37,6 +39,7 @@ from ...schema.errors import InputError
 from ...model.gains import current_pi
 from . import current as _current
 from . import pll as _pll
+from . import robust as _robust
 from . import speed as _speed
 from .discrete import bode, curve, forget, log_frequencies, unit_circle, values
 from .inputs import validate
@@ -218,6 +221,8 @@ def analyze(report: dict, analysis) -> dict:
         cfg["speed"] = speed_cfg
         out["speed"] = _speed_section(report, speed_cfg, cfg["delay"],
                                       out["current"]["q"]["bandwidth_hz"])
+    if cfg["robust"] is not None:
+        out["robust"] = _robust.analyze(report, cfg["robust"], cfg["delay"])
     if cfg["bode"]:
         out["bode"] = _bode(report, cfg, out)
     return out
@@ -244,4 +249,6 @@ def warnings(loop: dict) -> list:
         ratio = sp["inner_bandwidth_ratio"]
         if ratio is not None and ratio < 5.0:
             w.append(("warning.speed_inner_slow", {"ratio": ratio}))
+    if loop.get("robust") is not None:
+        w += _robust.warnings(loop["robust"])
     return w

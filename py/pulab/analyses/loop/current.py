@@ -2,7 +2,7 @@
 
 Per axis, on the zero-speed plant G(s) = 1/(R_s + s·L) (L = L_d or L_q; the
 cross-coupling ω_e·L vanishes at standstill), discretized exactly for a
-zero-order hold with :func:`pulab.analyses.sim.plant.zoh` (a = e^{−R_s·T_s/L},
+zero-order hold (a = e^{−R_s·T_s/L},
 b = (1 − a)/R_s).  The firmware PI (seed 2.2, vendor order)::
 
     I_k = I_{k−1} + ki·T_s·e_k,   u_k = kp·e_k + I_k
@@ -55,7 +55,6 @@ import math
 from functools import lru_cache
 
 from ...schema.errors import InputError
-from ..sim.plant import zoh
 from .discrete import margins
 from .pi import pi
 from .polynomial import multiply
@@ -67,9 +66,13 @@ DELAYS = ("none", "computation", "computation_pwm")
 
 @lru_cache(maxsize=64)
 def _hold(rs: float, l_h: float, ts: float) -> tuple:
-    """(φ, γ) of the scalar plant 1/(R_s + s·L) over ts (one matrix exponential, memoized)."""
-    z = zoh(rs, l_h, l_h, 0.0, 0.0, ts)
-    return z.phi[0], z.gamma[0]
+    """(φ, γ) of the scalar plant 1/(R_s + s·L) over ts, in closed form.
+
+    φ = e^{−R_s·ts/L}, γ = (1 − φ)/R_s (expm1 keeps γ exact when R_s·ts/L is tiny); the same
+    numbers as :func:`pulab.analyses.sim.plant.zoh` at zero speed, at a quarter of its cost,
+    which the robustness analysis pays once per drifted plant."""
+    x = -rs * ts / l_h
+    return math.exp(x), -math.expm1(x) / rs
 
 
 def plant(rs: float, l_h: float, ts: float, delay: str) -> tuple:

@@ -2,7 +2,9 @@
 
 The fields, their ranges and defaults are the schema's ``analysis`` and
 ``analysis.speed`` sections (:mod:`pulab.schema.fields`), checked by
-:func:`pulab.schema.validate.read`.  Defaults that depend on the motor stay
+:func:`pulab.schema.validate.read`.  ``analysis.robust`` holds lists and
+either-a-name-or-a-number fields that the schema's scalar kinds do not
+describe; :func:`pulab.analyses.loop.robust.validate` checks it.  Defaults that depend on the motor stay
 ``None`` here and are resolved by :func:`pulab.analyses.loop.analyze`.
 
 Examples
@@ -19,10 +21,11 @@ from __future__ import annotations
 
 from ...schema.fields import section_fields
 from ...schema.validate import read
+from . import robust as _robust
 
 __all__ = ["validate", "FIELDS", "SPEED_FIELDS"]
 
-FIELDS = tuple(f.key for f in section_fields("analysis")) + ("speed",)
+FIELDS = tuple(f.key for f in section_fields("analysis")) + ("speed", "robust")
 SPEED_FIELDS = tuple(f.key for f in section_fields("analysis.speed"))
 
 
@@ -34,7 +37,11 @@ def validate(value) -> dict:
     pulab.InputError
         Naming the JSON path of the first bad field.
     """
+    robust = value.get("robust") if isinstance(value, dict) else None
+    if isinstance(value, dict):
+        value = {k: v for k, v in value.items() if k != "robust"}
     a = read("analysis", value)
     speed = a.get("speed")
     a["speed"] = None if speed is None else read("analysis.speed", speed)
+    a["robust"] = None if robust is None else _robust.validate(robust)
     return a
