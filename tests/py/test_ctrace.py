@@ -137,7 +137,7 @@ def test_flux_lines_differ_between_c28x_and_arm():
     ("long a = 1.5;", 1, 10, "only integer constants"),
     ("long a = 99999999999999999999;", 1, 10, "too large"),
     ("long a = foo(1);", 1, 10, "unknown function foo()"),
-    ("#if 1\nlong a;", 1, 1, "#if is not supported"),
+    ("#if 1\nlong a;", 1, 1, "#if without #endif"),
     ("long a; // @q b Q12", 1, 9, "the annotation names b"),
     ("long a = b;", 1, 10, "b is not declared"),
     ("long a;\nlong c = a;", 2, 10, "a is read before it has a value"),

@@ -1,4 +1,4 @@
-"""``python -m pulab trace FILE.c --target c28x --set NAME=VALUE … [--global-q N]``.
+"""``python -m pulab trace FILE.c --target c28x --set NAME=VALUE … [-D NAME[=VALUE]]… [--global-q N]``.
 
 Prints the :func:`~pulab.ctrace.trace` JSON on stdout; bad code or input exits
 with status 2 and one line on stderr, ``error: code: LINE:COLUMN: MESSAGE`` or
@@ -27,6 +27,9 @@ def add_trace_parser(sub) -> None:
                                                      "(default c28x)")
     tp.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="an input value (decimal or 0x hex); repeat for each input")
+    tp.add_argument("-D", dest="define", action="append", default=[], metavar="NAME[=VALUE]",
+                    help="define a macro before the code, as a compiler's -D (VALUE 1 when "
+                         "absent); repeat for each")
     tp.add_argument("--global-q", type=str, default=None,
                     help="IQmath GLOBAL_Q, 1..30 (default 24; #define GLOBAL_Q in the code wins)")
 
@@ -66,7 +69,7 @@ def trace_main(args: argparse.Namespace) -> int:
             except ValueError:
                 raise InputError("global_q", f"must be an integer 1..30, got "
                                              f"{args.global_q!r}") from None
-        result = trace(code, args.target, parse_sets(args.set), gq)
+        result = trace(code, args.target, parse_sets(args.set), gq, args.define)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2

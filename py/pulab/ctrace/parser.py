@@ -10,8 +10,8 @@ The subset is what firmware scaling code is made of:
   binary, suffixes ``U``, ``L``, ``LL``), names with dots (``gMotorInfo.Voltage``
   is one variable) and the IQmath calls ``_IQmpy``, ``_IQNmpy``, ``__IQmpy(a,b,q)``,
   ``_IQsat``, ``__IQsat``;
-- object-like ``#define NAME tokens`` (expanded where used; ``#define GLOBAL_Q n``
-  also sets IQmath's Q); ``#include`` and ``#pragma`` lines are ignored;
+- the preprocessor of :mod:`pulab.ctrace.preprocess` (macros, ``#if`` family,
+  standard headers; ``#define GLOBAL_Q n`` also sets IQmath's Q);
 - annotations ``// @q NAME Qn [base=NUMBER [UNIT]]``: the variable holds a Qn number
   (real = value/2**n) whose per-unit base is NUMBER UNIT, so its SI value is real·base.
 
@@ -31,6 +31,7 @@ import re
 
 from .errors import TraceError
 from .lexer import Token, tokenize
+from .preprocess import preprocess
 from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
@@ -198,7 +199,7 @@ class QNote:
 class Program:
     """Parsed code: ``statements``, ``notes`` (name → QNote), ``global_q`` from ``#define``."""
 
-    __slots__ = ("source", "statements", "notes", "global_q")
+    __slots__ = ("source", "statements", "notes", "global_q", "unresolved")
 
     def __init__(self, source: str, statements: list, notes: dict, global_q: int | None) -> None:
         self.source, self.statements, self.notes, self.global_q = source, statements, notes, \
@@ -223,65 +224,17 @@ def _note(tok: Token) -> QNote:
     return QNote(m["name"], n, base, m["unit"] or "", tok.line, tok.column)
 
 
-def _preprocess(tokens: list) -> tuple:
-    """Expand object-like macros; collect annotations and GLOBAL_Q."""
-    macros: dict = {}
-    out: list = []
+def _notes(tokens: list) -> tuple:
+    """Tokens without the annotations, and the annotations' notes."""
     notes: dict = {}
-    global_q = None
-
-    def expand(tok: Token, active: frozenset, use: Token) -> None:
-        body = macros.get(tok.text) if tok.kind == "name" else None
-        if body is None or tok.text in active:
-            out.append(tok._replace(line=use.line, column=use.column, start=use.start,
-                                    end=use.end) if use is not tok else tok)
-            return
-        for t in body:
-            expand(t, active | {tok.text}, use)
-
+    out: list = []
     for tok in tokens:
-        if tok.kind == "directive":
-            m = re.match(r"#\s*(\w*)\s*(.*)", tok.text.replace("\\\n", " "), re.S)
-            word, rest = m[1], m[2]
-            if word in ("include", "pragma") or (word == "" and rest.strip() == ""):
-                continue
-            if word == "undef":
-                macros.pop(rest.strip(), None)
-                continue
-            if word != "define":
-                raise _fail(tok, f"#{word} is not supported (only #define, #undef, "
-                                 "#include, #pragma)")
-            dm = re.match(r"([A-Za-z_]\w*)(\(?)", rest)
-            if dm is None:
-                raise _fail(tok, "#define needs a name")
-            if dm[2]:
-                raise _fail(tok, f"function-like macro {dm[1]}(…) is not supported")
-            body_text = rest[dm.end():]
-            offset = tok.start + tok.text.find(body_text) if body_text else tok.end
-            try:
-                body = tokenize(body_text)[:-1]
-            except TraceError as e:
-                raise _fail(tok, f"in #define {dm[1]}: {e.reason}") from None
-            if any(t.kind in ("directive", "annotation") for t in body):
-                raise _fail(tok, f"#define {dm[1]}: unexpected text in its body")
-            body = [t._replace(line=tok.line, column=tok.column + (t.start + offset - tok.start),
-                               start=t.start + offset, end=t.end + offset) for t in body]
-            macros[dm[1]] = body
-            if dm[1] == "GLOBAL_Q":
-                if len(body) != 1 or not body[0].text.isdigit() or \
-                        not 1 <= int(body[0].text) <= 30:
-                    raise _fail(tok, "GLOBAL_Q must be an integer 1..30")
-                global_q = int(body[0].text)
-            continue
         if tok.kind == "annotation":
             note = _note(tok)
             notes[note.name] = note
-            continue
-        if tok.text in macros and tok.kind == "name":
-            expand(tok, frozenset(), tok)
         else:
             out.append(tok)
-    return out, notes, global_q
+    return out, notes
 
 
 def _int_constant(tok: Token) -> tuple:
@@ -628,8 +581,10 @@ class _Parser:
         return Call(name, args, q).at(tok, self.last())
 
 
-def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES) -> Program:
-    """Parse C code; ``type_names`` are the type spellings the target knows.
+def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
+          defines: dict | None = None) -> Program:
+    """Parse C code; ``type_names`` are the type spellings the target knows, ``defines``
+    the ``-D`` definitions (name → body text, see :mod:`pulab.ctrace.preprocess`).
 
     Raises
     ------
@@ -638,7 +593,10 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES) -> Program:
     """
     if not isinstance(source, str):
         raise TraceError(1, 1, "code must be text")
-    tokens, notes, global_q = _preprocess(tokenize(source))
+    pre = preprocess(tokenize(source), defines)
+    tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names
-    return Program(source, p.program(), notes, global_q)
+    prog = Program(source, p.program(), notes, pre.global_q)
+    prog.unresolved = pre.unresolved
+    return prog
