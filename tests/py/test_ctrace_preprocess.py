@@ -1,0 +1,193 @@
+"""pulab.ctrace.preprocess: the preprocessor as compilers run it.
+
+Routines written for these tests in the constructs real firmware uses (function-like
+macros with #/##, variadic macros, #if/#elif/#else with defined(), include guards,
+<stdint.h> limits, line splices, a splice continuing a // comment) are traced and also
+compiled by gcc -m32 and avr-gcc + simavr (tests/py/ctrace_compilers.py): every final
+variable must agree over random and extreme inputs.
+"""
+
+from __future__ import annotations
+
+import os
+import random
+import time
+
+import pytest
+
+from ctrace_compilers import available, run_cases
+from ctrace_gen import Case, random_vector
+from pulab.ctrace import TraceError, compile_code, run_checked, trace
+from pulab.ctrace.lexer import tokenize
+from pulab.ctrace.preprocess import MAX_EXPANDED_TOKENS, MAX_IF_DEPTH, preprocess
+from pulab.schema.messages import has_chinese
+
+VECTORS = 300
+
+# A PI step: the macros, conditionals and splices are the point, the arithmetic is ordinary.
+PI_MACROS = Case(
+    [("int16_t", "ref"), ("int16_t", "fb"), ("int16_t", "kp"), ("int16_t", "ki"),
+     ("int32_t", "acc"), ("int16_t", "e"), ("int16_t", "out")],
+    r"""
+#include <stdint.h>
+#define PI_SAT(v, lo, hi) ((v) > (hi) ? (hi) : \
+                           ((v) < (lo) ? (lo) : (v)))
+#define PI_Q 15
+#define PI_MUL(a, b) (((int32_t)(a) * (b)) >> PI_Q)
+#if defined(PI_USE_HALF) || PI_Q < 12
+e = (int16_t)((ref - fb) / 2);
+#elif PI_Q == 15
+e = (int16_t)(ref - fb);
+#else
+#error unreachable
+#endif
+acc = acc + PI_MUL(ki, e);   // integrator \
+acc = 0;
+acc = PI_SAT(acc, INT16_MIN * 4096L, INT16_MAX * 4096L);
+out = (int16_t)PI_SAT(PI_MUL(kp, e) + (acc >> 12), INT16_MIN, INT16_MAX);
+""", inputs=["ref", "fb", "kp", "ki", "acc"])
+PI_MACROS.outputs = PI_MACROS.decls
+
+# Token pasting builds names; a macro passed as an argument is expanded after substitution.
+PASTE = Case(
+    [("int16_t", "gain_a"), ("int16_t", "gain_b"), ("int16_t", "u"), ("int32_t", "y")],
+    r"""
+#define PASTE_FIELD(n) gain_##n
+#define PASTE_APPLY(n, x) ((int32_t)PASTE_FIELD(n) * (x) >> 8)
+#define PASTE_TWICE(f, x) f(f(x))
+#define PASTE_HALF(x) ((x) >> 1)
+y = PASTE_APPLY(a, u) + PASTE_APPLY(b, PASTE_TWICE(PASTE_HALF, u));
+""", inputs=["gain_a", "gain_b", "u"])
+PASTE.outputs = PASTE.decls
+
+# An include guard around variadic macros; nested #if with !defined and shifts.
+GUARD = Case(
+    [("uint16_t", "x"), ("uint16_t", "z"), ("int32_t", "w"), ("uint16_t", "r")],
+    r"""
+#include <stdint.h>
+#ifndef GUARD_CASE_H
+#define GUARD_CASE_H
+#define GUARD_SUB(b, c) ((b) - (c))
+#define GUARD_ADD(a, ...) ((a) + GUARD_SUB(__VA_ARGS__))
+#ifdef GUARD_CASE_H
+#if (3 * 4 >> 1) == 6 && !defined GUARD_NOT_THERE && -1 < 0
+r = GUARD_ADD(x, z, 7u);
+#endif
+#endif
+#endif
+#ifndef GUARD_CASE_H
+r = 0;
+#endif
+#if UINT16_MAX == 65535 && INT32_MIN < 0
+w = (int32_t)r - INT16_MAX;
+#endif
+""", inputs=["x", "z"])
+GUARD.outputs = GUARD.decls
+
+CASES = {"pi": PI_MACROS, "paste": PASTE, "guard": GUARD}
+
+
+def _traced(case: Case, target: str, rng: random.Random) -> tuple:
+    checked = compile_code(case.code(), target)
+    vectors, expected = [], []
+    while len(vectors) < VECTORS:
+        vec = random_vector(rng, case, target)
+        ev = run_checked(checked, vec, None, record=False)
+        if ev.undefined & {"shift_count", "division_overflow"}:
+            continue
+        vectors.append(vec)
+        expected.append({n: ev.values[n] for _, n in case.outputs})
+    return vectors, expected
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_macro_routines_match_the_compiler(target, capsys):
+    missing = available(target)
+    if missing:
+        msg = f"SKIPPED: compiler cross-check for {target} needs {', '.join(missing)}"
+        if os.environ.get("CI") == "true":
+            pytest.fail(msg + " — mandatory under CI=true")
+        pytest.skip(msg)
+    rng = random.Random(f"20261125-{target}")
+    cases, expected = [], []
+    for case in CASES.values():
+        vectors, exp = _traced(case, target, rng)
+        cases.append((case, vectors))
+        expected.append(exp)
+    results, _ = run_cases(cases, target)
+    pairs = 0
+    for (case, vectors), exp, got in zip(cases, expected, results):
+        for vec, e, g in zip(vectors, exp, got):
+            pairs += 1
+            assert e == g, f"{case.body}\ninputs {vec}: tracer {e} vs compiler {g}"
+    assert pairs == VECTORS * len(CASES)
+
+
+def test_the_pi_takes_the_branch_the_compiler_takes():
+    v = trace(PI_MACROS.code(), "arm", {"ref": 100, "fb": 40, "kp": 16384, "ki": 0,
+                                         "acc": 0})["vars"]
+    # PI_Q == 15: e = ref - fb, and the // comment ended by a splice swallowed "acc = 0;"
+    assert (v["e"]["value"], v["out"]["value"]) == (60, 30)
+    half = trace(PI_MACROS.code(), "arm", {"ref": 100, "fb": 40, "kp": 16384, "ki": 0,
+                                            "acc": 0}, defines=["PI_USE_HALF"])["vars"]
+    assert half["e"]["value"] == 30
+
+
+def test_minus_d_is_a_define_before_the_code():
+    code = "long a;\n#ifdef K\na = K * 2;\n#else\na = -1;\n#endif"
+    assert trace(code, "c28x", defines=["K=21"])["vars"]["a"]["value"] == 42
+    assert trace(code, "c28x", defines=["K"])["vars"]["a"]["value"] == 2
+    assert trace(code, "c28x")["vars"]["a"]["value"] == -1
+    assert trace("#define K 21\n" + code, "c28x")["vars"]["a"]["value"] == 42
+    assert trace(code, "c28x", defines=["GLOBAL_Q=20"])["global_q"] == 20
+
+
+def test_bom_splices_and_positions():
+    r = trace("\ufefflong a = 1 + \\\n 2;\nlong b = a\\\n;", "c28x")
+    assert (r["vars"]["a"]["value"], r["vars"]["b"]["value"]) == (3, 3)
+    with pytest.raises(TraceError) as e:
+        trace("#define TWICE(x) ((x) + (x))\nlong a;\nlong b = TWICE(a);", "c28x")
+    assert (e.value.line, e.value.column) == (3, 10)  # the macro use, not the #define
+
+
+def test_stringize_and_unresolved_includes():
+    pre = preprocess(tokenize("#define S(x) #x\nS(a  +  b)"))
+    assert [t.text for t in pre.tokens[:-1]] == ['"a + b"']
+    r = trace('#include "motor_cfg.h"\n#include <stdint.h>\nlong a = INT16_MIN;', "c28x")
+    assert r["unresolved_includes"] == ["motor_cfg.h"] and r["vars"]["a"]["value"] == -32768
+
+
+@pytest.mark.parametrize("code,line,text", [
+    ("#if 1\nlong a;", 1, "#if without #endif"),
+    ("#endif", 1, "#endif without #if"),
+    ("#if 1\n#else\n#elif 1\n#endif", 3, "#elif after #else"),
+    ("#define F(a, b) a\nlong x = F(1);", 2, "macro F() takes 2 arguments, got 1"),
+    ("#define F(a) a\nlong x = F(1;", 2, "macro F(: ')' missing"),
+    ("#if 1 +\n#endif", 1, "#if: expression ends early"),
+    ("#if 1 / 0\n#endif", 1, "#if: division by zero"),
+    ("#error stop here", 1, "#error stop here"),
+    ("#frobnicate", 1, "#frobnicate is not a preprocessor directive"),
+    ("#define P(a, b) a ## b\nlong x = P(+, /);", 2, "'##' pasting '+' and '/'"),
+    ("#define G(a, a) a", 1, "a parameter is named twice"),
+])
+def test_bad_directives_name_line_and_construct(code, line, text):
+    with pytest.raises(TraceError) as e:
+        trace(code, "c28x")
+    assert e.value.line == line and text in e.value.reason, e.value.message
+    assert has_chinese(e.value.message), e.value.message
+
+
+def test_expansion_and_nesting_are_bounded():
+    # Each level doubles: 2**40 tokens if nothing stopped it.
+    bomb = "".join(f"#define M{i} M{i + 1} M{i + 1}\n" for i in range(40)) + "long a = M0;"
+    t0 = time.perf_counter()
+    with pytest.raises(TraceError) as e:
+        trace(bomb, "c28x")
+    assert f"more than {MAX_EXPANDED_TOKENS} tokens" in e.value.reason
+    assert time.perf_counter() - t0 < 30  # a hang guard, not a speed target
+    deep = "#if 1\n" * (MAX_IF_DEPTH + 1) + "#endif\n" * (MAX_IF_DEPTH + 1)
+    with pytest.raises(TraceError) as e:
+        trace(deep, "c28x")
+    assert "nested deeper" in e.value.reason
+    # A self-referencing macro stops, as C says, instead of recursing.
+    assert trace("long a = 5;\n#define a (a + 1)\nlong b = a;", "c28x")["vars"]["b"]["value"] == 6
