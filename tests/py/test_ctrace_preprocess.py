@@ -191,3 +191,21 @@ def test_expansion_and_nesting_are_bounded():
     assert "nested deeper" in e.value.reason
     # A self-referencing macro stops, as C says, instead of recursing.
     assert trace("long a = 5;\n#define a (a + 1)\nlong b = a;", "c28x")["vars"]["b"]["value"] == 6
+
+
+def test_typedefs_and_vendor_type_names():
+    code = ("typedef signed short int16_T;\ntypedef int16_T myq15, myq15b;\n"
+            "#define MAX_int32_T ((int32_T)(2147483647))\n"
+            "myq15 a;\nint32_T y = (int32_T)a * 3 + MAX_int32_T;\nfrac16_t f = (frac16_t)a;")
+    v = trace(code, "arm", {"a": -5})["vars"]
+    assert (v["a"]["c_type"], v["y"]["value"], v["f"]["c_type"]) == ("short", 2147483632, "short")
+
+
+@pytest.mark.parametrize("code,column,text", [
+    ("int16_t f(int16_t x)\n{ return x; }", 1, "function definition f(…) is not supported"),
+    ("typedef struct { int a; } S;", 9, "typedef struct is not supported"),
+])
+def test_unsupported_constructs_are_named(code, column, text):
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm")
+    assert e.value.column == column and text in e.value.reason and has_chinese(e.value.message)

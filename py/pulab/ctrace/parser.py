@@ -3,7 +3,8 @@
 The subset is what firmware scaling code is made of:
 
 - declarations ``[const|static|volatile] TYPE name [= expr] {, name [= expr]};`` with
-  the C spellings and firmware names of :mod:`pulab.ctrace.types`;
+  the C spellings and firmware names of :mod:`pulab.ctrace.types`, and the names that
+  ``typedef INTEGER-TYPE NAME;`` makes (a typedef name stands for its integer type);
 - expression statements: assignments, compound assignments, ``++``/``--``;
 - ``if (…) … else …`` and ``{ … }`` (one flat scope: a name is declared once);
 - every C integer operator, casts, ``?:``, integer constants (decimal, hex, octal,
@@ -47,7 +48,7 @@ MAX_HEIGHT = 200
 ALL_TYPE_NAMES = frozenset(n for t in TARGETS.values() for n in t.types)
 _QUALIFIERS = frozenset({"const", "static", "volatile", "register", "extern", "auto"})
 _UNSUPPORTED = frozenset({"for", "while", "do", "switch", "case", "return", "goto", "break",
-                          "continue", "struct", "union", "enum", "typedef", "sizeof",
+                          "continue", "struct", "union", "enum", "sizeof",
                           "float", "double", "void", "default"})
 _IQ_N = re.compile(r"_IQ([1-9]|[12][0-9]|30)mpy")
 #: The IQmath calls understood, with their argument counts.
@@ -277,6 +278,7 @@ class _Parser:
         self.depth = 0
         self.height = 0  # the tree height on the current path: depth plus left-operand chains
         self.type_names: frozenset = frozenset()
+        self.aliases: dict = {}  # typedef name -> the spelling it stands for
 
     # -- token helpers
     def peek(self, k: int = 0) -> Token:
@@ -331,7 +333,7 @@ class _Parser:
             self.take()
             while self.peek().kind == "name" and self.peek().text in _QUALIFIERS:
                 self.take()
-            return tok.text
+            return self.aliases.get(tok.text, tok.text)
         while self.peek().kind == "name" and (self.peek().text in BASE_TYPE_WORDS or
                                               self.peek().text in _QUALIFIERS):
             w = self.take().text
@@ -394,11 +396,16 @@ class _Parser:
         if tok.kind == "name" and tok.text in _UNSUPPORTED:
             raise _fail(tok, f"'{tok.text}' is not supported (declarations, assignments, "
                              "if/else only)")
+        if tok.kind == "name" and tok.text == "typedef":
+            return self.typedef()
         if self.starts_type():
             type_name = self.type_spelling()
             items = []
             while True:
                 var = self.var_name("a variable name after the type")
+                if self.is_op("("):
+                    raise _fail(tok, f"function definition {var.name}(…) is not supported "
+                                     "(trace its body's statements)")
                 init = None
                 if self.is_op("="):
                     self.take()
@@ -412,6 +419,27 @@ class _Parser:
         expr = self.expression()
         self.expect(";", " at the end of the statement")
         return ExprStmt(expr).at(tok, self.last())
+
+    def typedef(self) -> Stmt:
+        """``typedef SCALAR NAME {, NAME};``: NAME becomes another spelling of SCALAR."""
+        tok = self.take()
+        nxt = self.peek()
+        if nxt.kind == "name" and nxt.text in ("struct", "union", "enum"):
+            raise _fail(nxt, f"typedef {nxt.text} is not supported (only typedefs of "
+                             "integer types)")
+        base = self.type_spelling()
+        while True:
+            name = self.take()
+            if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
+                raise _fail(name, f"expected a name after typedef {base}, got "
+                                  f"{'end of code' if name.kind == 'end' else repr(name.text)}")
+            self.aliases[name.text] = base
+            self.type_names = self.type_names | {name.text}
+            if not self.is_op(","):
+                break
+            self.take()
+        self.expect(";", " at the end of the declaration")
+        return Block([]).at(tok, self.last())
 
     def var_name(self, what: str) -> Var:
         tok = self.peek()

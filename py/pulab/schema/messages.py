@@ -166,6 +166,11 @@ CATALOG = [
     (r"Q(\d+): at most 63 fraction bits", r"Q\1：小数位最多 63 位"),
     (r"base must be a finite number", "base 必须是有限数"),
     (r"#define needs a name", "#define 需要一个名字"),
+    (r"function definition (\w+)\(…\) is not supported \(trace its body's statements\)",
+     r"不支持函数定义 \1(…)（请追踪其函数体中的语句）"),
+    (r"typedef (\w+) is not supported \(only typedefs of integer types\)",
+     r"不支持 typedef \1（只支持整数类型的 typedef）"),
+    (r"expected a name after typedef (.*), got (.*)", r"typedef \1 之后应为名字，实际为 \2"),
     # the preprocessor (pulab.ctrace.preprocess)
     (r"in (#\w+(?: \w+)?|[\w.]+\.h): (.*)", lambda m: f"在 {m[1]} 中：{to_zh(m[2])}"),
     (r"(#\w+(?: \w+)?|[\w.]+\.h): unexpected text", r"\1：有意外的内容"),
