@@ -209,3 +209,47 @@ def test_unsupported_constructs_are_named(code, column, text):
     with pytest.raises(TraceError) as e:
         trace(code, "arm")
     assert e.value.column == column and text in e.value.reason and has_chinese(e.value.message)
+
+
+IQ_CONSTANTS = ["0.1", "-0.57735026918963", "0.1f", "0.99999999", "1.0e-3", "-1", "0.5L",
+                "1.7320508075688772", "-0.00001"]
+
+
+def test_iq_constants_fold_as_gcc_m32_folds_them(tmp_path):
+    """_IQ(A) = (long)((A) * 2**Q L) (TI IQmathLib.h, fixed-point build), folded by gcc -m32."""
+    import shutil
+    import subprocess
+    if shutil.which("gcc") is None:
+        pytest.skip("needs gcc")
+    qs = (24, 15, 30, 1)
+    lines = [f'printf("%ld\\n", (long)(({c}) * {float(2 ** q)!r}L));' for q in qs
+             for c in IQ_CONSTANTS]
+    src = tmp_path / "iq.c"
+    src.write_text("#include <stdio.h>\nint main(void) {\n" + "\n".join(lines) + "\nreturn 0; }\n")
+    exe = tmp_path / "iq"
+    subprocess.run(["gcc", "-m32", "-o", str(exe), str(src)], check=True)
+    want = [int(x) for x in subprocess.run([str(exe)], capture_output=True, text=True,
+                                           check=True).stdout.split()]
+    code = "".join(f"_iq v{q}_{i} = _IQ{q}({c});\n" for q in qs for i, c in enumerate(IQ_CONSTANTS))
+    got = trace(code, "c28x")["vars"]
+    assert [got[f"v{q}_{i}"]["value"] for q in qs for i in range(len(IQ_CONSTANTS))] == want
+    # _IQ follows GLOBAL_Q: the code's #define, else the caller's, else 24.
+    assert trace("_iq a = _IQ(0.5);", "c28x")["vars"]["a"]["value"] == 1 << 23
+    assert trace("_iq a = _IQ(0.5);", "c28x", global_q=15)["vars"]["a"]["value"] == 1 << 14
+    assert trace("#define GLOBAL_Q 20\n_iq a = _IQ(0.5);", "c28x")["vars"]["a"]["value"] == 1 << 19
+
+
+@pytest.mark.parametrize("expr,value", [
+    ("_IQ15toIQ(x)", 3 << 9), ("_IQtoIQ21(x)", 3 >> 3), ("_IQtoIQ30(x)", 3 << 6),
+    ("_IQ30toIQ(x)", 0), ("_Q15toIQ(x)", 3 << 9), ("_IQmpy2(x)", 6), ("_IQdiv2(x)", 1),
+    ("_IQmpy64(x)", 192), ("_IQdiv64(x)", 0),
+])
+def test_iq_conversion_macros_shift_as_iqmathlib(expr, value):
+    # GLOBAL_Q 24: IQ15 -> IQ shifts left by 9, IQ -> IQ21 right by 3, IQ -> IQ30 left by 6.
+    assert trace(f"_iq x = 3;\n_iq y = {expr};", "c28x")["vars"]["y"]["value"] == value
+
+
+def test_iq_of_a_variable_is_refused_by_name():
+    with pytest.raises(TraceError) as e:
+        trace("_iq x = 3;\n_iq y = _IQ(x);", "c28x")
+    assert "_IQ(…) needs a floating constant" in e.value.reason and has_chinese(e.value.message)

@@ -610,9 +610,10 @@ class _Parser:
 
 
 def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
-          defines: dict | None = None) -> Program:
+          defines: dict | None = None, global_q: int = 24) -> Program:
     """Parse C code; ``type_names`` are the type spellings the target knows, ``defines``
-    the ``-D`` definitions (name → body text, see :mod:`pulab.ctrace.preprocess`).
+    the ``-D`` definitions (name → body text, see :mod:`pulab.ctrace.preprocess`),
+    ``global_q`` IQmath's Q for ``_IQ(…)`` and its family when the code defines none.
 
     Raises
     ------
@@ -621,7 +622,7 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
     """
     if not isinstance(source, str):
         raise TraceError(1, 1, "code must be text")
-    pre = preprocess(tokenize(source), defines)
+    pre = preprocess(tokenize(source), defines, global_q)
     tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names

@@ -10,6 +10,10 @@
 - ``#include <stdint.h>`` defines the exact-width limits (``INT16_MAX``, ``INT32_MIN``,
   ``UINT16_MAX`` …), ``<stdbool.h>`` ``true``/``false``; other headers are listed in
   :attr:`Preprocessed.unresolved` (their contents are not known unless pasted);
+- IQmath's conversion macros as TI's IQmathLib.h defines them (unless the code defines
+  them): ``_IQ(A)``/``_IQN(A)`` of a floating constant folded to the integer the compiler
+  makes, ``_IQtoIQN``, ``_IQNtoIQ``, ``_IQtoQN``, ``_QNtoIQ``, ``_IQmpy2``…``_IQmpy64``,
+  ``_IQdiv2``…``_IQdiv64``;
 - ``#pragma``, ``#line``, the null directive are skipped; ``#error`` is an error;
 - user definitions (``-D NAME[=VALUE]``) come first, as on a compiler's command line.
 
@@ -30,6 +34,7 @@ Examples
 from __future__ import annotations
 
 import re
+import struct
 from collections import deque
 
 from .errors import TraceError
@@ -46,6 +51,14 @@ MAX_MACRO_DEPTH = 64
 MAX_IF_DEPTH = 64
 
 _NAME = re.compile(r"[A-Za-z_]\w*\Z")
+#: IQmath's conversion family as TI's IQmathLib.h defines it (fixed-point build):
+#: _IQ(A)/_IQN(A) = (long)((A) * 2.0**N), _IQtoIQN/_IQtoQN(A) = (long)(A) >> (GLOBAL_Q - N)
+#: (<< when N > GLOBAL_Q), _IQNtoIQ/_QNtoIQ the reverse, _IQmpyK(A) = (A) << log2 K,
+#: _IQdivK(A) = (A) >> log2 K.
+_IQ_BUILTIN = re.compile(r"_IQ(?P<n>[1-9]|[12][0-9]|30)?\Z|_I?Q(?P<from>[1-9]|[12][0-9]|30)toIQ\Z"
+                         r"|_IQtoI?Q(?P<to>[1-9]|[12][0-9]|30)\Z|_IQ(?P<op>mpy|div)"
+                         r"(?P<k>2|4|8|16|32|64)\Z")
+_FLOAT = re.compile(r"([0-9]+\.?[0-9]*(?:[eE][-+]?[0-9]+)?)([fFlL]?)\Z")
 _DIRECTIVE = re.compile(r"#\s*(\w*)(.*)", re.S)
 
 
@@ -150,8 +163,9 @@ def parse_define(text: str) -> tuple:
 
 
 class _Pre:
-    def __init__(self, tokens: list, defines: dict) -> None:
+    def __init__(self, tokens: list, defines: dict, global_q: int) -> None:
         self.src = iter(tokens)
+        self.default_q = global_q
         self.macros: dict = {}
         self.global_q = None
         self.unresolved: list = []
@@ -293,6 +307,17 @@ class _Pre:
                 return out
             tok, hide = item
             mac = macros.get(tok.text) if tok.kind == "name" else None
+            if mac is None and tok.kind == "name" and tok.text[:2] in ("_I", "_Q") and \
+                    _IQ_BUILTIN.match(tok.text):
+                nxt = pull()
+                if nxt is not None and nxt[0].text == "(" and nxt[0].kind == "op":
+                    args, last = self.arguments(_Macro(tok.text, ["A"], False, []), tok, pull)
+                    span = dict(line=tok.line, column=tok.column, start=tok.start, end=last.end)
+                    body = [(t._replace(**span), hide) for t in self.iq(tok, args[0])]
+                    pending.extendleft(reversed(body))
+                    continue
+                if nxt is not None:
+                    pending.appendleft(nxt)
             if mac is None or tok.text in hide:
                 out.append(tok)
                 continue
@@ -319,6 +344,48 @@ class _Pre:
                 raise _fail(tok, f"macro {tok.text}: more than {MAX_EXPANDED_TOKENS} tokens "
                                  "after expansion")
             pending.extendleft(reversed(body))
+
+    def iq(self, use: Token, arg: list) -> list:
+        """The tokens an IQmath conversion macro stands for (see _IQ_BUILTIN)."""
+        m = _IQ_BUILTIN.match(use.text)
+        gq = self.default_q
+        g = self.macros.get("GLOBAL_Q")
+        if g is not None and g.params is None and len(g.body) == 1 and g.body[0].text.isdigit():
+            gq = int(g.body[0].text)
+        if m["op"]:
+            shift = {"2": 1, "4": 2, "8": 3, "16": 4, "32": 5, "64": 6}[m["k"]]
+            return self.text_around("((", arg, f") {'<<' if m['op'] == 'mpy' else '>>'} {shift})")
+        if m["from"] or m["to"]:
+            # IQN -> IQ: << (GLOBAL_Q - N); IQ -> IQN: >> (GLOBAL_Q - N); negative counts flip.
+            k = gq - int(m["from"] or m["to"])
+            left = (k >= 0) == bool(m["from"])
+            return self.text_around("((long)(", arg, f") {'<<' if left else '>>'} {abs(k)})")
+        n = int(m["n"]) if m["n"] else gq
+        return self.text_around("((long)(", [], f"{self.fold(use, arg, n)}))")
+
+    def fold(self, use: Token, arg: list, n: int) -> int:
+        """(long)(A * 2**n) for a floating constant A, as the compiler folds it: A is
+        rounded to its type (binary64, or binary32 with an f suffix), then truncated."""
+        arg = self.expand_list(arg)
+        sign, i = 1, 0
+        while i < len(arg) and arg[i].kind == "op" and arg[i].text in "+-":
+            sign = -sign if arg[i].text == "-" else sign
+            i += 1
+        core = [t for t in arg[i:] if t.text not in ("(", ")")]
+        m = _FLOAT.match(core[0].text) if len(core) == 1 and core[0].kind == "number" else None
+        if m is None:
+            raise _fail(use, f"{use.text}(…) needs a floating constant (a variable would need "
+                             "floating point at run time)")
+        value = float(m[1])
+        if m[2] in ("f", "F"):
+            value = struct.unpack("<f", struct.pack("<f", value))[0]
+        scaled = int(sign * value * 2.0 ** n)  # * 2**n is exact in binary floating point
+        if not -(1 << 31) <= scaled < (1 << 31):
+            raise _fail(use, f"{use.text}(…) = {scaled} does not fit a 32-bit long")
+        return scaled
+
+    def text_around(self, head: str, arg: list, tail: str) -> list:
+        return tokenize(head)[:-1] + list(arg) + tokenize(tail)[:-1]
 
     def arguments(self, mac: _Macro, use: Token, pull) -> tuple:
         args: list = [[]]
@@ -503,7 +570,7 @@ def _wrap(v: int) -> int:
     return ((v + (1 << 63)) & ((1 << 64) - 1)) - (1 << 63)
 
 
-def preprocess(tokens: list, defines: dict | None = None) -> Preprocessed:
+def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24) -> Preprocessed:
     """Run the directives of ``tokens`` and expand macros.
 
     Parameters
@@ -512,6 +579,8 @@ def preprocess(tokens: list, defines: dict | None = None) -> Preprocessed:
         From :func:`~pulab.ctrace.lexer.tokenize` (ending with the ``end`` token).
     defines : dict, optional
         ``-D`` definitions, name (``NAME`` or ``NAME(params)``) → body text.
+    global_q : int, optional
+        IQmath's GLOBAL_Q for the conversion macros when the code does not define it.
 
     Returns
     -------
@@ -519,7 +588,7 @@ def preprocess(tokens: list, defines: dict | None = None) -> Preprocessed:
         ``tokens`` (annotations kept in place, ending with ``end``), ``global_q``,
         ``unresolved`` headers, ``macros``.
     """
-    pre = _Pre(tokens, defines or {})
+    pre = _Pre(tokens, defines or {}, global_q)
     out = pre.run(deque(), pre.source_tokens())
     out.append(pre.end)
     return Preprocessed(out, pre.global_q, pre.unresolved, pre.macros)

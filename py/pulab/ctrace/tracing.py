@@ -39,13 +39,16 @@ def _defines(defines) -> dict:
     return out
 
 
-def compile_code(code: str, target: str = "c28x", defines=None) -> Checked:
+def compile_code(code: str, target: str = "c28x", defines=None,
+                 global_q: int | None = None) -> Checked:
     """Parse and type ``code`` for ``target`` (reusable for many input vectors);
-    ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``."""
+    ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``; ``global_q`` is the Q the
+    IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q."""
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
-    return check(parse(code, defines=_defines(defines)), t)
+    gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
+    return check(parse(code, defines=_defines(defines), global_q=gq), t)
 
 
 def _input_values(checked: Checked, inputs: dict) -> dict:
@@ -123,7 +126,7 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
     InputError
         A bad target, input value or global_q.
     """
-    return trace_checked(compile_code(code, target, defines), inputs, global_q)
+    return trace_checked(compile_code(code, target, defines, global_q), inputs, global_q)
 
 
 def trace_checked(checked: Checked, inputs: dict | None = None,

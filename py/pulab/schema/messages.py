@@ -172,6 +172,9 @@ CATALOG = [
      r"不支持 typedef \1（只支持整数类型的 typedef）"),
     (r"expected a name after typedef (.*), got (.*)", r"typedef \1 之后应为名字，实际为 \2"),
     # the preprocessor (pulab.ctrace.preprocess)
+    (r"(\w+)\(…\) needs a floating constant \(a variable would need floating point at run "
+     r"time\)", r"\1(…) 需要浮点常量（变量需要运行时浮点运算）"),
+    (r"(\w+)\(…\) = (\S+) does not fit a 32-bit long", r"\1(…) = \2 超出 32 位 long 的范围"),
     (r"in (#\w+(?: \w+)?|[\w.]+\.h): (.*)", lambda m: f"在 {m[1]} 中：{to_zh(m[2])}"),
     (r"(#\w+(?: \w+)?|[\w.]+\.h): unexpected text", r"\1：有意外的内容"),
     (r"#define (\w+)\(: '\)' missing after the parameters", r"#define \1(：参数后缺少 ')'"),
