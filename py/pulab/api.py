@@ -231,7 +231,8 @@ def batch_json(text: str) -> str:
 
 
 def trace_json(text: str) -> str:
-    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q"}``.
+    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q",
+    "define": ["NAME[=VALUE]", …]}`` (``define`` as a compiler's ``-D``).
 
     Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",
     "message_zh"}`` with ``line`` and ``column`` when the code is at fault, and
@@ -252,14 +253,18 @@ def trace_json(text: str) -> str:
             raise InputError("input", f"not valid JSON: {e}") from None
         if not isinstance(req, dict):
             raise InputError("input", "must be an object")
-        unknown = set(req) - {"code", "target", "set", "global_q"}
+        unknown = set(req) - {"code", "target", "set", "global_q", "define"}
         if unknown:
             raise InputError(sorted(unknown)[0], "unknown field (expected one of: code, "
-                             "target, set, global_q)")
+                             "target, set, global_q, define)")
+        defines = req.get("define") or []
+        if not isinstance(defines, list):
+            raise InputError("define", "must be a list of NAME[=VALUE] texts")
         sets = req.get("set") or {}
         if not isinstance(sets, dict):
             raise InputError("set", "must be an object")
-        checked = compile_code(req.get("code", ""), req.get("target", "c28x"))
+        checked = compile_code(req.get("code", ""), req.get("target", "c28x"), defines,
+                               req.get("global_q"))
         return json.dumps(trace_checked(checked, sets, req.get("global_q")), allow_nan=False)
     except InputError as e:
         reply = json.loads(_fail(e))

@@ -253,3 +253,26 @@ def test_iq_of_a_variable_is_refused_by_name():
     with pytest.raises(TraceError) as e:
         trace("_iq x = 3;\n_iq y = _IQ(x);", "c28x")
     assert "_IQ(…) needs a floating constant" in e.value.reason and has_chinese(e.value.message)
+
+
+def test_api_and_cli_take_defines(tmp_path):
+    import json
+    import subprocess
+    import sys
+    from pulab.api import trace_json
+    code = "long a;\n#if MODE == 2\na = 20;\n#else\na = 10;\n#endif"
+    r = json.loads(trace_json(json.dumps({"code": code, "define": ["MODE=2"]})))
+    assert r["vars"]["a"]["value"] == 20
+    bad = json.loads(trace_json(json.dumps({"code": code, "define": "MODE=2"})))
+    assert bad["field"] == "define" and not bad["ok"]
+    bad = json.loads(trace_json(json.dumps({"code": code, "define": ["2MODE"]})))
+    assert bad["field"] == "define[0]"
+    src = tmp_path / "m.c"
+    src.write_text(code)
+    run = subprocess.run([sys.executable, "-m", "pulab", "trace", str(src), "-D", "MODE=2"],
+                         capture_output=True, text=True, env={"PYTHONPATH": "py"})
+    assert run.returncode == 0 and json.loads(run.stdout)["vars"]["a"]["value"] == 20
+    run = subprocess.run([sys.executable, "-m", "pulab", "trace", str(src), "-D", "=1"],
+                         capture_output=True, text=True, env={"PYTHONPATH": "py"})
+    assert run.returncode == 2 and run.stderr.startswith("error: define[0]: ")
+    assert len(run.stderr.strip().splitlines()) == 1

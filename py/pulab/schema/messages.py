@@ -172,6 +172,8 @@ CATALOG = [
      r"不支持 typedef \1（只支持整数类型的 typedef）"),
     (r"expected a name after typedef (.*), got (.*)", r"typedef \1 之后应为名字，实际为 \2"),
     # the preprocessor (pulab.ctrace.preprocess)
+    (r"must be a list of NAME\[=VALUE\] texts", "必须是 NAME[=VALUE] 文本的列表"),
+    (r"must be text NAME\[=VALUE\], got (.*)", r"必须是文本 NAME[=VALUE]，当前为 \1"),
     (r"(\w+)\(…\) needs a floating constant \(a variable would need floating point at run "
      r"time\)", r"\1(…) 需要浮点常量（变量需要运行时浮点运算）"),
     (r"(\w+)\(…\) = (\S+) does not fit a 32-bit long", r"\1(…) = \2 超出 32 位 long 的范围"),
