@@ -100,6 +100,20 @@ class _Macro:
         self.name, self.params, self.variadic, self.body = name, params, variadic, body
 
 
+_new = tuple.__new__  # builds a Token without NamedTuple's slow keyword path
+_TEXT_TOKENS: dict = {}
+
+
+def _tokens(text: str) -> list:
+    """Tokens of a fixed text the expansion inserts (cached: the same few texts recur)."""
+    toks = _TEXT_TOKENS.get(text)
+    if toks is None:
+        toks = _TEXT_TOKENS[text] = tokenize(text)[:-1] if len(_TEXT_TOKENS) < 512 else None
+        if toks is None:
+            return tokenize(text)[:-1]
+    return toks
+
+
 def _fail(tok: Token, message: str) -> TraceError:
     return TraceError(tok.line, tok.column, message)
 
@@ -312,8 +326,9 @@ class _Pre:
                 nxt = pull()
                 if nxt is not None and nxt[0].text == "(" and nxt[0].kind == "op":
                     args, last = self.arguments(_Macro(tok.text, ["A"], False, []), tok, pull)
-                    span = dict(line=tok.line, column=tok.column, start=tok.start, end=last.end)
-                    body = [(t._replace(**span), hide) for t in self.iq(tok, args[0])]
+                    where = (tok.line, tok.column, tok.start, last.end)
+                    body = [(_new(Token, (t.kind, t.text) + where), hide)
+                            for t in self.iq(tok, args[0])]
                     pending.extendleft(reversed(body))
                     continue
                 if nxt is not None:
@@ -324,9 +339,10 @@ class _Pre:
             if len(hide) >= MAX_MACRO_DEPTH:
                 raise _fail(tok, f"macro {tok.text}: expansion nested deeper than "
                                  f"{MAX_MACRO_DEPTH} macros")
+            hs = hide | {mac.name}
             if mac.params is None:
-                body = [(t._replace(line=tok.line, column=tok.column, start=tok.start,
-                                    end=tok.end), hide | {mac.name})
+                where = (tok.line, tok.column, tok.start, tok.end)
+                body = [(_new(Token, (t.kind, t.text) + where), hs)
                         for t in self.paste(mac.body, tok)]
             else:
                 nxt = pull()
@@ -336,8 +352,8 @@ class _Pre:
                         pending.appendleft(nxt)
                     continue
                 args, last = self.arguments(mac, tok, pull)
-                span = dict(line=tok.line, column=tok.column, start=tok.start, end=last.end)
-                body = [(t._replace(**span), hide | {mac.name})
+                where = (tok.line, tok.column, tok.start, last.end)
+                body = [(_new(Token, (t.kind, t.text) + where), hs)
                         for t in self.substitute(mac, args, tok)]
             self.produced += len(body)
             if self.produced > MAX_EXPANDED_TOKENS:
@@ -385,7 +401,7 @@ class _Pre:
         return scaled
 
     def text_around(self, head: str, arg: list, tail: str) -> list:
-        return tokenize(head)[:-1] + list(arg) + tokenize(tail)[:-1]
+        return _tokens(head) + list(arg) + _tokens(tail)
 
     def arguments(self, mac: _Macro, use: Token, pull) -> tuple:
         args: list = [[]]
