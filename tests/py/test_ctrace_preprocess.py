@@ -276,3 +276,15 @@ def test_api_and_cli_take_defines(tmp_path):
                          capture_output=True, text=True, env={"PYTHONPATH": "py"})
     assert run.returncode == 2 and run.stderr.startswith("error: define[0]: ")
     assert len(run.stderr.strip().splitlines()) == 1
+
+
+def test_floating_typedefs_wait_until_used():
+    code = "typedef float real32_T;\ntypedef double real_T;\nint16_T a = 1;\n"
+    assert trace(code, "arm")["vars"]["a"]["value"] == 1
+    with pytest.raises(TraceError) as e:
+        trace(code + "real32_T f;", "arm")
+    assert (e.value.line, e.value.column) == (4, 1) and "typedef at 1:15" in e.value.reason
+    assert has_chinese(e.value.message)
+    with pytest.raises(TraceError) as e:  # inline is a qualifier: the definition is named
+        trace("static inline int16_t f(int16_t x) { return x; }", "arm")
+    assert "function definition f(…)" in e.value.reason

@@ -46,7 +46,9 @@ MAX_HEIGHT = 200
 
 #: Every type spelling of every target (a spelling one target lacks is refused by the checker).
 ALL_TYPE_NAMES = frozenset(n for t in TARGETS.values() for n in t.types)
-_QUALIFIERS = frozenset({"const", "static", "volatile", "register", "extern", "auto"})
+_QUALIFIERS = frozenset({"const", "static", "volatile", "register", "extern", "auto", "inline",
+                         "__inline", "__inline__"})
+_FLOATING = frozenset({"float", "double"})
 _UNSUPPORTED = frozenset({"for", "while", "do", "switch", "case", "return", "goto", "break",
                           "continue", "struct", "union", "enum", "sizeof",
                           "float", "double", "void", "default"})
@@ -279,6 +281,7 @@ class _Parser:
         self.height = 0  # the tree height on the current path: depth plus left-operand chains
         self.type_names: frozenset = frozenset()
         self.aliases: dict = {}  # typedef name -> the spelling it stands for
+        self.floating: dict = {}  # typedef name of float/double -> its token
 
     # -- token helpers
     def peek(self, k: int = 0) -> Token:
@@ -330,6 +333,10 @@ class _Parser:
         tok = self.peek()
         if tok.kind == "name" and tok.text in self.type_names and \
                 tok.text not in BASE_TYPE_WORDS:
+            if tok.text in self.floating:
+                at = self.floating[tok.text]
+                raise _fail(tok, f"{tok.text} is a floating-point type (typedef at "
+                                 f"{at.line}:{at.column}); floating point is not supported")
             self.take()
             while self.peek().kind == "name" and self.peek().text in _QUALIFIERS:
                 self.take()
@@ -427,7 +434,12 @@ class _Parser:
         if nxt.kind == "name" and nxt.text in ("struct", "union", "enum"):
             raise _fail(nxt, f"typedef {nxt.text} is not supported (only typedefs of "
                              "integer types)")
-        base = self.type_spelling()
+        floating = nxt.kind == "name" and (nxt.text in _FLOATING or (
+            nxt.text == "long" and self.peek(1).text == "double"))
+        if floating:  # as in rtwtypes.h: harmless until a floating-point variable is declared
+            base = "long double" if self.take().text == "long" and self.take() else nxt.text
+        else:
+            base = self.type_spelling()
         while True:
             name = self.take()
             if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
@@ -435,6 +447,8 @@ class _Parser:
                                   f"{'end of code' if name.kind == 'end' else repr(name.text)}")
             self.aliases[name.text] = base
             self.type_names = self.type_names | {name.text}
+            if floating:
+                self.floating[name.text] = name
             if not self.is_op(","):
                 break
             self.take()
