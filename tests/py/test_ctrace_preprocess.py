@@ -280,6 +280,10 @@ def test_api_and_cli_take_defines(tmp_path):
 
 def test_floating_typedefs_wait_until_used():
     code = "typedef float real32_T;\ntypedef double real_T;\nint16_T a = 1;\n"
+    assert trace("typedef void * pointer_T;\nlong a = 2;", "arm")["vars"]["a"]["value"] == 2
+    with pytest.raises(TraceError) as e:
+        trace("typedef int16_t *pq;\npq p;", "arm")
+    assert "pq is a pointer type (typedef at 1:18)" in e.value.reason
     assert trace(code, "arm")["vars"]["a"]["value"] == 1
     with pytest.raises(TraceError) as e:
         trace(code + "real32_T f;", "arm")

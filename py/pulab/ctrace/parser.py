@@ -281,7 +281,7 @@ class _Parser:
         self.height = 0  # the tree height on the current path: depth plus left-operand chains
         self.type_names: frozenset = frozenset()
         self.aliases: dict = {}  # typedef name -> the spelling it stands for
-        self.floating: dict = {}  # typedef name of float/double -> its token
+        self.floating: dict = {}  # typedef name of float/double/pointer -> (token, what)
 
     # -- token helpers
     def peek(self, k: int = 0) -> Token:
@@ -334,9 +334,9 @@ class _Parser:
         if tok.kind == "name" and tok.text in self.type_names and \
                 tok.text not in BASE_TYPE_WORDS:
             if tok.text in self.floating:
-                at = self.floating[tok.text]
-                raise _fail(tok, f"{tok.text} is a floating-point type (typedef at "
-                                 f"{at.line}:{at.column}); floating point is not supported")
+                at, what = self.floating[tok.text]
+                raise _fail(tok, f"{tok.text} is {what} (typedef at {at.line}:{at.column}), "
+                                 "not supported")
             self.take()
             while self.peek().kind == "name" and self.peek().text in _QUALIFIERS:
                 self.take()
@@ -434,21 +434,27 @@ class _Parser:
         if nxt.kind == "name" and nxt.text in ("struct", "union", "enum"):
             raise _fail(nxt, f"typedef {nxt.text} is not supported (only typedefs of "
                              "integer types)")
-        floating = nxt.kind == "name" and (nxt.text in _FLOATING or (
+        # As in rtwtypes.h: float, double and pointer typedefs are harmless until used.
+        floating = nxt.kind == "name" and (nxt.text in _FLOATING or nxt.text == "void" or (
             nxt.text == "long" and self.peek(1).text == "double"))
-        if floating:  # as in rtwtypes.h: harmless until a floating-point variable is declared
+        if floating:
             base = "long double" if self.take().text == "long" and self.take() else nxt.text
         else:
             base = self.type_spelling()
         while True:
+            pointer = False
+            while self.is_op("*") or (self.peek().kind == "name" and
+                                      self.peek().text in _QUALIFIERS):
+                pointer = pointer or self.take().text == "*"
             name = self.take()
             if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
                 raise _fail(name, f"expected a name after typedef {base}, got "
                                   f"{'end of code' if name.kind == 'end' else repr(name.text)}")
             self.aliases[name.text] = base
             self.type_names = self.type_names | {name.text}
-            if floating:
-                self.floating[name.text] = name
+            if floating or pointer:
+                self.floating[name.text] = (name, "a pointer type" if pointer or base == "void"
+                                            else "a floating-point type")
             if not self.is_op(","):
                 break
             self.take()

@@ -171,8 +171,10 @@ CATALOG = [
     (r"typedef (\w+) is not supported \(only typedefs of integer types\)",
      r"不支持 typedef \1（只支持整数类型的 typedef）"),
     (r"expected a name after typedef (.*), got (.*)", r"typedef \1 之后应为名字，实际为 \2"),
-    (r"(\w+) is a floating-point type \(typedef at (\S+)\); floating point is not supported",
-     r"\1 是浮点类型（typedef 于 \2）；不支持浮点"),
+    (r"(\w+) is a floating-point type \(typedef at (\S+)\), not supported",
+     r"\1 是浮点类型（typedef 于 \2），不支持"),
+    (r"(\w+) is a pointer type \(typedef at (\S+)\), not supported",
+     r"\1 是指针类型（typedef 于 \2），不支持"),
     # the preprocessor (pulab.ctrace.preprocess)
     (r"must be a list of NAME\[=VALUE\] texts", "必须是 NAME[=VALUE] 文本的列表"),
     (r"must be text NAME\[=VALUE\], got (.*)", r"必须是文本 NAME[=VALUE]，当前为 \1"),
