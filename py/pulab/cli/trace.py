@@ -1,4 +1,5 @@
-"""``python -m pulab trace FILE.c --target c28x --set NAME=VALUE … [-D NAME[=VALUE]]… [--global-q N]``.
+"""``python -m pulab trace FILE.c --target c28x --set NAME=VALUE … [-D NAME[=VALUE]]…
+[--global-q N] [--format json|text]``.
 
 Prints the :func:`~pulab.ctrace.trace` JSON on stdout; bad code or input exits
 with status 2 and one line on stderr, ``error: code: LINE:COLUMN: MESSAGE`` or
@@ -86,8 +87,9 @@ def format_text(result: dict) -> str:
         notes = []
         for flag in s.get("flags", []):
             term = next((t for t in s.get("terms", []) if flag in t["flags"]), None)
-            notes.append(flag if term is None else
-                         f"{flag} at {term['line']}:{term['column']} {' '.join(term['expr'].split())}")
+            if term is not None:
+                flag += f" at {term['line']}:{term['column']} {' '.join(term['expr'].split())}"
+            notes.append(flag)
         line = f"{s['line']}:{s['column']}".ljust(pos_w) + "  " + code.ljust(code_w) + "  " + what
         if notes:
             line += "  " + "; ".join(notes)
