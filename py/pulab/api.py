@@ -246,7 +246,8 @@ def batch_json(text: str) -> str:
 
 
 def trace_json(text: str) -> str:
-    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q"}``.
+    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q",
+    "define": ["NAME[=VALUE]", …]}`` (``define`` as a compiler's ``-D``).
 
     Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",
     "message_zh"}`` with ``line`` and ``column`` when the code is at fault, and
@@ -264,14 +265,18 @@ def trace_json(text: str) -> str:
         req = parse(text)
         if not isinstance(req, dict):
             raise InputError("input", code="not_object", got=shown(req))
-        unknown = set(req) - {"code", "target", "set", "global_q"}
+        unknown = set(req) - {"code", "target", "set", "global_q", "define"}
         if unknown:
             raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
-                             expected="code, target, set, global_q")
+                             expected="code, target, set, global_q, define")
+        defines = req.get("define") or []
+        if not isinstance(defines, list):
+            raise InputError("define", "must be a list of NAME[=VALUE] texts")
         sets = req.get("set") or {}
         if not isinstance(sets, dict):
             raise InputError("set", code="not_object", got=shown(sets))
-        checked = compile_code(req.get("code", ""), req.get("target", "c28x"))
+        checked = compile_code(req.get("code", ""), req.get("target", "c28x"), defines,
+                               req.get("global_q"))
         return json.dumps(trace_checked(checked, sets, req.get("global_q")), allow_nan=False)
     except InputError as e:
         reply = json.loads(_fail(e))

@@ -136,7 +136,7 @@ def test_flux_lines_differ_between_c28x_and_arm():
     ("long a = 1.5;", 1, 10, "only integer constants"),
     ("long a = 99999999999999999999;", 1, 10, "too large"),
     ("long a = foo(1);", 1, 10, "unknown function foo()"),
-    ("#if 1\nlong a;", 1, 1, "#if is not supported"),
+    ("#if 1\nlong a;", 1, 1, "#if without #endif"),
     ("long a; // @q b Q12", 1, 9, "the annotation names b"),
     ("long a = b;", 1, 10, "b is not declared"),
     ("long a;\nlong c = a;", 2, 10, "a is read before it has a value"),
@@ -258,3 +258,21 @@ def test_fuzzed_api_requests_give_only_error_replies():
         text = json.dumps(req) if rng.random() < 0.9 else rng.choice(["", "[", "nul", "1"])
         r = json.loads(trace_json(text))
         assert r["ok"] is True or (r["field"] and chinese(r["message_zh"])), (req, r)
+
+
+def test_cli_text_format_is_one_line_per_statement(tmp_path):
+    import subprocess
+    import sys
+    src = tmp_path / "pi.c"
+    src.write_text("int16_t e;\nint32_t acc = 0;\nacc += (int32_t)e * 3 >> 2;\n"
+                   "if (acc > 100) acc = 100;\n")
+    run = subprocess.run([sys.executable, "-m", "pulab", "trace", str(src), "--target", "arm",
+                          "--set", "e=-7", "--format", "text"],
+                         capture_output=True, text=True, env={"PYTHONPATH": "py"})
+    assert run.returncode == 0, run.stderr
+    lines = run.stdout.splitlines()
+    assert lines[0] == "target arm, GLOBAL_Q 24; inputs: e"
+    # e, acc, acc += …, the if (not taken): 4 statements, 4 lines
+    assert len(lines) == 5
+    assert "acc = -6 (0xFFFFFFFA)" in lines[3] and "truncation at 3:8" in lines[3]
+    assert lines[4].endswith("-> none")

@@ -1,4 +1,5 @@
-"""``python -m pulab trace FILE.c --target c28x --set NAME=VALUE … [--global-q N]``.
+"""``python -m pulab trace FILE.c --target c28x --set NAME=VALUE … [-D NAME[=VALUE]]…
+[--global-q N] [--format json|text]``.
 
 Prints the :func:`~pulab.ctrace.trace` JSON on stdout; bad code or input exits
 with status 2 and one line on stderr, ``error: code: LINE:COLUMN: MESSAGE`` or
@@ -16,7 +17,7 @@ from ..schema.validate import shown
 from ..ctrace.tracing import trace
 from ..ctrace.types import TARGETS
 
-__all__ = ["add_trace_parser", "trace_main", "parse_sets"]
+__all__ = ["add_trace_parser", "trace_main", "parse_sets", "format_text"]
 
 
 def add_trace_parser(sub) -> None:
@@ -28,6 +29,11 @@ def add_trace_parser(sub) -> None:
                                                      "(default c28x)")
     tp.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                     help="an input value (decimal or 0x hex); repeat for each input")
+    tp.add_argument("-D", dest="define", action="append", default=[], metavar="NAME[=VALUE]",
+                    help="define a macro before the code, as a compiler's -D (VALUE 1 when "
+                         "absent); repeat for each")
+    tp.add_argument("--format", choices=("json", "text"), default="json",
+                    help="json (default) or text: one line per executed statement")
     tp.add_argument("--global-q", type=str, default=None,
                     help="IQmath GLOBAL_Q, 1..30 (default 24; #define GLOBAL_Q in the code wins)")
 
@@ -45,6 +51,51 @@ def parse_sets(items: list) -> dict:
             raise InputError("set", code="set_syntax", got=shown(item))
         out[name.strip()] = value
     return out
+
+
+def format_text(result: dict) -> str:
+    """The trace as text: a header, then one line per executed statement: position, the
+    source, the value it gave (or the branch an ``if`` took) and its flags, each flag with
+    the first sub-expression that raised it.
+
+    >>> from pulab.ctrace import trace
+    >>> print(format_text(trace("Uint16 v; long x = v * 10;", "c28x", {"v": 6554})))
+    target c28x, GLOBAL_Q 24; inputs: v
+    1:1   Uint16 v;         v = 6554 (0x199A) input
+    1:11  long x = v * 10;  x = 4 (0x00000004)  unsigned_wrap at 1:20 v * 10
+    """
+    head = f"target {result['target']}, GLOBAL_Q {result['global_q']}; inputs: " + \
+        (", ".join(result["inputs"]) or "none")
+    lines = [head]
+    if result.get("unresolved_includes"):
+        lines.append("not known (contents not pasted): " +
+                     ", ".join(result["unresolved_includes"]))
+    steps = result["steps"]
+    pos_w = max((len(f"{s['line']}:{s['column']}") for s in steps), default=0)
+    code_w = min(max((len(" ".join(s["code"].split())) for s in steps), default=0), 60)
+    for s in steps:
+        code = " ".join(s["code"].split())
+        if len(code) > 60:
+            code = code[:57] + "..."
+        if "branch" in s:
+            what = f"-> {s['branch']}"
+        elif s.get("var") is not None:
+            what = f"{s['var']} = {s['value']} ({s['hex']})"
+        else:
+            what = f"= {s['value']}" if s.get("value") is not None else ""
+        if s.get("input"):
+            what += " input"
+        notes = []
+        for flag in s.get("flags", []):
+            term = next((t for t in s.get("terms", []) if flag in t["flags"]), None)
+            if term is not None:
+                flag += f" at {term['line']}:{term['column']} {' '.join(term['expr'].split())}"
+            notes.append(flag)
+        line = f"{s['line']}:{s['column']}".ljust(pos_w) + "  " + code.ljust(code_w) + "  " + what
+        if notes:
+            line += "  " + "; ".join(notes)
+        lines.append(line.rstrip())
+    return "\n".join(lines)
 
 
 def trace_main(args: argparse.Namespace) -> int:
@@ -67,10 +118,13 @@ def trace_main(args: argparse.Namespace) -> int:
             except ValueError:
                 raise InputError("global_q", code="integer_range", lo=1, hi=30,
                                  got=shown(args.global_q)) from None
-        result = trace(code, args.target, parse_sets(args.set), gq)
+        result = trace(code, args.target, parse_sets(args.set), gq, args.define)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
+    if args.format == "text":
+        sys.stdout.write(format_text(result) + "\n")
+        return 0
     json.dump(result, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
     sys.stdout.write("\n")
     return 0

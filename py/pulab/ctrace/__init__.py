@@ -7,8 +7,9 @@ overflow shown as the two's-complement wrap, unsigned wrap, value-changing
 conversion, truncating division or shift, shift count out of range,
 saturation).  Standard library only; the code is parsed, never ``eval``-ed.
 
-Modules: :mod:`~pulab.ctrace.lexer` (tokens), :mod:`~pulab.ctrace.parser`
-(the subset, ``#define``, ``// @q`` annotations), :mod:`~pulab.ctrace.types`
+Modules: :mod:`~pulab.ctrace.lexer` (tokens), :mod:`~pulab.ctrace.preprocess`
+(macros, ``#if``, standard headers, IQmath conversions), :mod:`~pulab.ctrace.parser`
+(the subset, typedefs, ``// @q`` annotations), :mod:`~pulab.ctrace.types`
 (targets, type names, conversions), :mod:`~pulab.ctrace.check` (static types),
 :mod:`~pulab.ctrace.evaluate` (values and flags, on :mod:`pulab.fixedpoint.cint`),
 :mod:`~pulab.ctrace.tracing` (the entry point), :mod:`~pulab.cli.trace`

@@ -1,6 +1,8 @@
 """Tokens of the C subset, each with its source position.
 
-Comments are dropped except the ``// @q`` annotations (see
+Line splices (backslash-newline) are blanks, also ending a ``//`` comment, which
+then goes on over the next line, as in a compiler; a leading byte-order mark is a
+blank.  Comments are dropped except the ``// @q`` annotations (see
 :mod:`pulab.ctrace.parser`), which come back as ``annotation`` tokens;
 preprocessor lines come back whole as ``directive`` tokens.
 
@@ -28,11 +30,11 @@ _OPERATORS = sorted("""<<= >>= ... -> ++ -- << >> <= >= == != && || += -= *= /= 
 # Most frequent first; blanks after a token are consumed with it (half the loop's iterations).
 _TOKEN = re.compile(r"""(?:
     (?P<name>[A-Za-z_][A-Za-z_0-9]*)
-  | (?P<space>[ \t\r\f\v]+)
+  | (?P<space>(?:[ \t\r\f\v]|\\\r?\n)+)
   | (?P<number>(?:0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?[A-Za-z_0-9]*)
-  | (?P<directive>\#(?:\\\n|[^\n])*)
+  | (?P<directive>\#(?:\\\r?\n|[^\n])*)
   | (?P<annotation>//[ \t]*@q\b[^\n]*)
-  | (?P<comment>//[^\n]*|/\*.*?\*/)
+  | (?P<comment>//(?:\\\r?\n|[^\n])*|/\*.*?\*/)
   | (?P<unclosed>/\*)
   | (?P<op>""" + "|".join(re.escape(o) for o in _OPERATORS) + r""")
   | (?P<newline>\n)
@@ -57,14 +59,21 @@ def tokenize(source: str) -> list:
     """Split ``source`` into tokens; raises :class:`TraceError` at the first bad character."""
     if len(source) > MAX_SOURCE_CHARS:
         raise TraceError(1, 1, f"code is longer than {MAX_SOURCE_CHARS} characters")
+    if source[:1] == "\ufeff":
+        source = " " + source[1:]  # a UTF-8 byte-order mark, kept as one column
     tokens: list = []
     line, line_start = 1, 0
     append = tokens.append
     for m in _TOKEN.finditer(source):
         kind = m.lastgroup
-        if kind == "space":
-            continue
         pos = m.start()
+        if kind == "space" or kind == "comment":
+            # A line splice (backslash-newline) is blank; one ending a // comment continues it.
+            text = m.group(kind)
+            if "\n" in text:
+                line += text.count("\n")
+                line_start = pos + text.rfind("\n") + 1
+            continue
         if kind == "newline":
             line += 1
             line_start = pos + 1

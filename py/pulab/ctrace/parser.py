@@ -3,15 +3,16 @@
 The subset is what firmware scaling code is made of:
 
 - declarations ``[const|static|volatile] TYPE name [= expr] {, name [= expr]};`` with
-  the C spellings and firmware names of :mod:`pulab.ctrace.types`;
+  the C spellings and firmware names of :mod:`pulab.ctrace.types`, and the names that
+  ``typedef INTEGER-TYPE NAME;`` makes (a typedef name stands for its integer type);
 - expression statements: assignments, compound assignments, ``++``/``--``;
 - ``if (…) … else …`` and ``{ … }`` (one flat scope: a name is declared once);
 - every C integer operator, casts, ``?:``, integer constants (decimal, hex, octal,
   binary, suffixes ``U``, ``L``, ``LL``), names with dots (``gMotorInfo.Voltage``
   is one variable) and the IQmath calls ``_IQmpy``, ``_IQNmpy``, ``__IQmpy(a,b,q)``,
   ``_IQsat``, ``__IQsat``;
-- object-like ``#define NAME tokens`` (expanded where used; ``#define GLOBAL_Q n``
-  also sets IQmath's Q); ``#include`` and ``#pragma`` lines are ignored;
+- the preprocessor of :mod:`pulab.ctrace.preprocess` (macros, ``#if`` family,
+  standard headers; ``#define GLOBAL_Q n`` also sets IQmath's Q);
 - annotations ``// @q NAME Qn [base=NUMBER [UNIT]]``: the variable holds a Qn number
   (real = value/2**n) whose per-unit base is NUMBER UNIT, so its SI value is real·base.
 
@@ -31,6 +32,7 @@ import re
 
 from .errors import TraceError
 from .lexer import Token, tokenize
+from .preprocess import preprocess
 from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
@@ -44,9 +46,11 @@ MAX_HEIGHT = 200
 
 #: Every type spelling of every target (a spelling one target lacks is refused by the checker).
 ALL_TYPE_NAMES = frozenset(n for t in TARGETS.values() for n in t.types)
-_QUALIFIERS = frozenset({"const", "static", "volatile", "register", "extern", "auto"})
+_QUALIFIERS = frozenset({"const", "static", "volatile", "register", "extern", "auto", "inline",
+                         "__inline", "__inline__"})
+_FLOATING = frozenset({"float", "double"})
 _UNSUPPORTED = frozenset({"for", "while", "do", "switch", "case", "return", "goto", "break",
-                          "continue", "struct", "union", "enum", "typedef", "sizeof",
+                          "continue", "struct", "union", "enum", "sizeof",
                           "float", "double", "void", "default"})
 _IQ_N = re.compile(r"_IQ([1-9]|[12][0-9]|30)mpy")
 #: The IQmath calls understood, with their argument counts.
@@ -198,7 +202,7 @@ class QNote:
 class Program:
     """Parsed code: ``statements``, ``notes`` (name → QNote), ``global_q`` from ``#define``."""
 
-    __slots__ = ("source", "statements", "notes", "global_q")
+    __slots__ = ("source", "statements", "notes", "global_q", "unresolved")
 
     def __init__(self, source: str, statements: list, notes: dict, global_q: int | None) -> None:
         self.source, self.statements, self.notes, self.global_q = source, statements, notes, \
@@ -223,65 +227,17 @@ def _note(tok: Token) -> QNote:
     return QNote(m["name"], n, base, m["unit"] or "", tok.line, tok.column)
 
 
-def _preprocess(tokens: list) -> tuple:
-    """Expand object-like macros; collect annotations and GLOBAL_Q."""
-    macros: dict = {}
-    out: list = []
+def _notes(tokens: list) -> tuple:
+    """Tokens without the annotations, and the annotations' notes."""
     notes: dict = {}
-    global_q = None
-
-    def expand(tok: Token, active: frozenset, use: Token) -> None:
-        body = macros.get(tok.text) if tok.kind == "name" else None
-        if body is None or tok.text in active:
-            out.append(tok._replace(line=use.line, column=use.column, start=use.start,
-                                    end=use.end) if use is not tok else tok)
-            return
-        for t in body:
-            expand(t, active | {tok.text}, use)
-
+    out: list = []
     for tok in tokens:
-        if tok.kind == "directive":
-            m = re.match(r"#\s*(\w*)\s*(.*)", tok.text.replace("\\\n", " "), re.S)
-            word, rest = m[1], m[2]
-            if word in ("include", "pragma") or (word == "" and rest.strip() == ""):
-                continue
-            if word == "undef":
-                macros.pop(rest.strip(), None)
-                continue
-            if word != "define":
-                raise _fail(tok, f"#{word} is not supported (only #define, #undef, "
-                                 "#include, #pragma)")
-            dm = re.match(r"([A-Za-z_]\w*)(\(?)", rest)
-            if dm is None:
-                raise _fail(tok, "#define needs a name")
-            if dm[2]:
-                raise _fail(tok, f"function-like macro {dm[1]}(…) is not supported")
-            body_text = rest[dm.end():]
-            offset = tok.start + tok.text.find(body_text) if body_text else tok.end
-            try:
-                body = tokenize(body_text)[:-1]
-            except TraceError as e:
-                raise _fail(tok, f"in #define {dm[1]}: {e.reason}") from None
-            if any(t.kind in ("directive", "annotation") for t in body):
-                raise _fail(tok, f"#define {dm[1]}: unexpected text in its body")
-            body = [t._replace(line=tok.line, column=tok.column + (t.start + offset - tok.start),
-                               start=t.start + offset, end=t.end + offset) for t in body]
-            macros[dm[1]] = body
-            if dm[1] == "GLOBAL_Q":
-                if len(body) != 1 or not body[0].text.isdigit() or \
-                        not 1 <= int(body[0].text) <= 30:
-                    raise _fail(tok, "GLOBAL_Q must be an integer 1..30")
-                global_q = int(body[0].text)
-            continue
         if tok.kind == "annotation":
             note = _note(tok)
             notes[note.name] = note
-            continue
-        if tok.text in macros and tok.kind == "name":
-            expand(tok, frozenset(), tok)
         else:
             out.append(tok)
-    return out, notes, global_q
+    return out, notes
 
 
 def _int_constant(tok: Token) -> tuple:
@@ -324,6 +280,8 @@ class _Parser:
         self.depth = 0
         self.height = 0  # the tree height on the current path: depth plus left-operand chains
         self.type_names: frozenset = frozenset()
+        self.aliases: dict = {}  # typedef name -> the spelling it stands for
+        self.floating: dict = {}  # typedef name of float/double/pointer -> (token, what)
 
     # -- token helpers
     def peek(self, k: int = 0) -> Token:
@@ -375,10 +333,14 @@ class _Parser:
         tok = self.peek()
         if tok.kind == "name" and tok.text in self.type_names and \
                 tok.text not in BASE_TYPE_WORDS:
+            if tok.text in self.floating:
+                at, what = self.floating[tok.text]
+                raise _fail(tok, f"{tok.text} is {what} (typedef at {at.line}:{at.column}), "
+                                 "not supported")
             self.take()
             while self.peek().kind == "name" and self.peek().text in _QUALIFIERS:
                 self.take()
-            return tok.text
+            return self.aliases.get(tok.text, tok.text)
         while self.peek().kind == "name" and (self.peek().text in BASE_TYPE_WORDS or
                                               self.peek().text in _QUALIFIERS):
             w = self.take().text
@@ -441,11 +403,16 @@ class _Parser:
         if tok.kind == "name" and tok.text in _UNSUPPORTED:
             raise _fail(tok, f"'{tok.text}' is not supported (declarations, assignments, "
                              "if/else only)")
+        if tok.kind == "name" and tok.text == "typedef":
+            return self.typedef()
         if self.starts_type():
             type_name = self.type_spelling()
             items = []
             while True:
                 var = self.var_name("a variable name after the type")
+                if self.is_op("("):
+                    raise _fail(tok, f"function definition {var.name}(…) is not supported "
+                                     "(trace its body's statements)")
                 init = None
                 if self.is_op("="):
                     self.take()
@@ -459,6 +426,40 @@ class _Parser:
         expr = self.expression()
         self.expect(";", " at the end of the statement")
         return ExprStmt(expr).at(tok, self.last())
+
+    def typedef(self) -> Stmt:
+        """``typedef SCALAR NAME {, NAME};``: NAME becomes another spelling of SCALAR."""
+        tok = self.take()
+        nxt = self.peek()
+        if nxt.kind == "name" and nxt.text in ("struct", "union", "enum"):
+            raise _fail(nxt, f"typedef {nxt.text} is not supported (only typedefs of "
+                             "integer types)")
+        # As in rtwtypes.h: float, double and pointer typedefs are harmless until used.
+        floating = nxt.kind == "name" and (nxt.text in _FLOATING or nxt.text == "void" or (
+            nxt.text == "long" and self.peek(1).text == "double"))
+        if floating:
+            base = "long double" if self.take().text == "long" and self.take() else nxt.text
+        else:
+            base = self.type_spelling()
+        while True:
+            pointer = False
+            while self.is_op("*") or (self.peek().kind == "name" and
+                                      self.peek().text in _QUALIFIERS):
+                pointer = pointer or self.take().text == "*"
+            name = self.take()
+            if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
+                raise _fail(name, f"expected a name after typedef {base}, got "
+                                  f"{'end of code' if name.kind == 'end' else repr(name.text)}")
+            self.aliases[name.text] = base
+            self.type_names = self.type_names | {name.text}
+            if floating or pointer:
+                self.floating[name.text] = (name, "a pointer type" if pointer or base == "void"
+                                            else "a floating-point type")
+            if not self.is_op(","):
+                break
+            self.take()
+        self.expect(";", " at the end of the declaration")
+        return Block([]).at(tok, self.last())
 
     def var_name(self, what: str) -> Var:
         tok = self.peek()
@@ -628,8 +629,11 @@ class _Parser:
         return Call(name, args, q).at(tok, self.last())
 
 
-def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES) -> Program:
-    """Parse C code; ``type_names`` are the type spellings the target knows.
+def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
+          defines: dict | None = None, global_q: int = 24) -> Program:
+    """Parse C code; ``type_names`` are the type spellings the target knows, ``defines``
+    the ``-D`` definitions (name → body text, see :mod:`pulab.ctrace.preprocess`),
+    ``global_q`` IQmath's Q for ``_IQ(…)`` and its family when the code defines none.
 
     Raises
     ------
@@ -638,7 +642,10 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES) -> Program:
     """
     if not isinstance(source, str):
         raise TraceError(1, 1, "code must be text")
-    tokens, notes, global_q = _preprocess(tokenize(source))
+    pre = preprocess(tokenize(source), defines, global_q)
+    tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names
-    return Program(source, p.program(), notes, global_q)
+    prog = Program(source, p.program(), notes, pre.global_q)
+    prog.unresolved = pre.unresolved
+    return prog

@@ -14,7 +14,9 @@ from __future__ import annotations
 
 from .check import Checked, check
 from .evaluate import Evaluator, hex_of
+from .errors import TraceError
 from .parser import parse
+from .preprocess import parse_define
 from .types import TARGETS
 from ..schema.errors import InputError
 from ..schema.validate import key_path, shown
@@ -25,12 +27,29 @@ __all__ = ["trace", "trace_checked", "compile_code", "run_checked", "DEFAULT_GLO
 DEFAULT_GLOBAL_Q = 24
 
 
-def compile_code(code: str, target: str = "c28x") -> Checked:
-    """Parse and type ``code`` for ``target`` (reusable for many input vectors)."""
+def _defines(defines) -> dict:
+    out = {}
+    for i, item in enumerate(defines or ()):
+        if not isinstance(item, str):
+            raise InputError(f"define[{i}]", f"must be text NAME[=VALUE], got {item!r}")
+        try:
+            name, value = parse_define(item)
+        except TraceError as e:
+            raise InputError(f"define[{i}]", e.reason) from None
+        out[name] = value
+    return out
+
+
+def compile_code(code: str, target: str = "c28x", defines=None,
+                 global_q: int | None = None) -> Checked:
+    """Parse and type ``code`` for ``target`` (reusable for many input vectors);
+    ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``; ``global_q`` is the Q the
+    IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q."""
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
-    return check(parse(code), t)
+    gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
+    return check(parse(code, defines=_defines(defines), global_q=gq), t)
 
 
 def _input_values(checked: Checked, inputs: dict) -> dict:
@@ -77,7 +96,7 @@ def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
 
 
 def trace(code: str, target: str = "c28x", inputs: dict | None = None,
-          global_q: int | None = None) -> dict:
+          global_q: int | None = None, defines=None) -> dict:
     """Trace C code as ``target``'s compiler computes it.
 
     Parameters
@@ -90,11 +109,14 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
         without an initializer.
     global_q : int in 1..30, optional
         IQmath's GLOBAL_Q (default 24); ``#define GLOBAL_Q`` in the code wins.
+    defines : list of str, optional
+        ``NAME[=VALUE]`` definitions made before the code, as a compiler's ``-D``.
 
     Returns
     -------
     dict
-        ``ok``, ``target``, ``global_q``, ``inputs`` (names the code reads before giving
+        ``ok``, ``target``, ``global_q``, ``unresolved_includes`` (headers named by
+        ``#include`` whose contents are unknown), ``inputs`` (names the code reads before giving
         them a value), ``vars`` (every variable: type, c_type, bits, value, hex, and q,
         real, si, unit when annotated) and ``steps`` (one per executed statement, each
         with ``terms``: every intermediate, in evaluation order).
@@ -106,7 +128,7 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
     InputError
         A bad target, input value or global_q.
     """
-    return trace_checked(compile_code(code, target), inputs, global_q)
+    return trace_checked(compile_code(code, target, defines, global_q), inputs, global_q)
 
 
 def trace_checked(checked: Checked, inputs: dict | None = None,
@@ -134,4 +156,5 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
             d.update(_meaning(notes[name], v))
         out_vars[name] = d
     return {"ok": True, "target": checked.target.name, "global_q": gq,
+            "unresolved_includes": list(checked.program.unresolved),
             "inputs": checked.inputs, "vars": out_vars, "steps": steps}

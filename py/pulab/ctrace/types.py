@@ -88,7 +88,12 @@ class Target:
                     "int32": "int32_t", "Int32": "int32_t", "Uint32": "uint32_t",
                     "int64": "int64_t", "Int64": "int64_t", "Uint64": "uint64_t",
                     "Long": "long", "Ulong": "unsigned long", "ULong": "unsigned long",
-                    "Uint": "unsigned int", "Int": "int", "_iq": "long"}
+                    "Uint": "unsigned int", "Int": "int", "_iq": "long",
+                    # Simulink Embedded Coder's rtwtypes.h and NXP RTCESL's mlib_types.h
+                    "int16_T": "int16_t", "uint16_T": "uint16_t", "int32_T": "int32_t",
+                    "uint32_T": "uint32_t", "boolean_T": "unsigned char",
+                    "frac16_t": "int16_t", "frac32_t": "int32_t", "acc16_t": "int16_t",
+                    "acc32_t": "int32_t"}
         for alias, real in firmware.items():
             names[alias] = names[real]
         for q in range(1, 31):
