@@ -42,7 +42,7 @@ export function linkToHost(panel: string, report: () => unknown): void {
   // An off-screen frame of another origin gets no rendering steps (Chromium throttles it), so no
   // ResizeObserver callbacks: changes to the DOM and loaded fonts measure again as well.
   new MutationObserver(size).observe(document.body, { subtree: true, childList: true, characterData: true, attributes: true });
-  void document.fonts.ready.then(size);
+  document.fonts.addEventListener('loadingdone', size);
   size();
   let sent = '';
   const numbers = (): void => {
