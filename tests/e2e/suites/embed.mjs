@@ -94,7 +94,7 @@ export default async function embed(ctx) {
         const inner = await f.evaluate(() => ({ doc: document.documentElement.scrollHeight, view: window.innerHeight, w: document.documentElement.scrollWidth, vw: window.innerWidth }));
         assert(ok, `${new URL(f.url()).search}: document ${inner.doc}×${inner.w} px in a ${inner.view}×${inner.vw} px iframe`);
       }
-      await page.screenshot({ path: join(SHOTS, 'embed-host-1366-en.png'), fullPage: true });
+      await page.screenshot({ path: join(SHOTS, 'embed-host-1366-en.png') });
       await page.context().close();
     });
 
@@ -117,7 +117,7 @@ export default async function embed(ctx) {
       const frame = () => page.frames().find((f) => f.url().includes('embed=vendor'));
       assert(await frame().evaluate(() => document.documentElement.dataset.theme) === 'dark', 'frame not dark');
       assert(await frame().evaluate(() => document.documentElement.lang) === 'zh-CN', 'lang attribute not followed');
-      await page.screenshot({ path: join(SHOTS, 'embed-host-390-zh-dark.png'), fullPage: true });
+      await page.screenshot({ path: join(SHOTS, 'embed-host-390-zh-dark.png') });
       const before = frame().url();
       await page.$eval('#p2', (e) => e.setAttribute('theme', 'light'));
       await frame().waitForFunction(() => document.documentElement.dataset.theme === 'light', null, { timeout: 5000 });
