@@ -7,6 +7,7 @@
 // Screenshots: tests/e2e/screenshots/embed-*.png.
 import { createServer } from 'node:http';
 import { join } from 'node:path';
+import { watchWorkers } from '../workers.mjs';
 
 const PANELS = ['bases', 'pu', 'vendor', 'constants', 'current', 'pll', 'loop', 'qcalc', 'conventions', 'datasheet', 'review', 'vendors'];
 
@@ -36,19 +37,6 @@ function hostServer(html) {
   const server = createServer((req, res) => res.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' }).end(html(req.url)));
   const at = (name) => `http://${name}:${server.address().port}/`;
   return new Promise((r) => server.listen(0, '127.0.0.1', () => r({ server, url: at('127.0.0.1'), crossSite: at('localhost') })));
-}
-
-async function watchWorkers(browser, page) {
-  const own = await page.context().newCDPSession(page);
-  const { targetInfo } = await own.send('Target.getTargetInfo');
-  await own.detach();
-  const cdp = await browser.newBrowserCDPSession();
-  const kinds = [];
-  cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
-    if ((t.type === 'shared_worker' || t.type === 'worker') && t.browserContextId === targetInfo.browserContextId) kinds.push(t.type);
-  });
-  await cdp.send('Target.setDiscoverTargets', { discover: true });
-  return { kinds, stop: async () => { await cdp.send('Target.setDiscoverTargets', { discover: false }); await cdp.detach(); } };
 }
 
 export default async function embed(ctx) {
