@@ -13,6 +13,7 @@ import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { join } from 'node:path';
 import { loadavg, tmpdir } from 'node:os';
+import { createServer } from 'node:http';
 import { serve } from './serve.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
@@ -136,12 +137,16 @@ function pssOfBrowser(mark) {
 const SIX = ['bases', 'pu', 'vendor', 'constants', 'current', 'pll'];
 const TWELVE = [...SIX, 'loop', 'qcalc', 'conventions', 'datasheet', 'review', 'vendors'];
 /** A docs page of another origin (same site) with 12 <pu-lab-panel>, every other one another motor. */
-const ELEMENTS_HOST = 'http://127.0.0.1:9/docs/embed-host.html';
-const elementsHost = () => {
+// A real server on its own port: a page answered by a route has no address, and Chromium refuses
+// its requests to the loopback site (local network access).
+const elementsServer = createServer((req, res) => res.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' }).end(elementsHost()));
+await new Promise((r) => elementsServer.listen(0, '127.0.0.1', r));
+const ELEMENTS_HOST = `http://127.0.0.1:${elementsServer.address().port}/docs.html`;
+function elementsHost() {
   const other = JSON.stringify({ motor: { rated_voltage_v: 380, rated_current_a: 14.5, rated_freq_hz: 50, pole_pairs: 2, rs_ohm: 0.42, ld_h: 0.0085, lq_h: 0.0135, bemf_v: 335 }, drive: { udc_v: 540, ts_s: 0.000125 } });
   return `<!doctype html><meta charset="utf-8"><title>docs</title><script type="module" src="${url}embed.js"></script>`
     + TWELVE.map((p, i) => `<h2>${p}</h2><pu-lab-panel panel="${p}"${i % 2 ? ` input='${other}'` : ''}></pu-lab-panel>`).join('');
-};
+}
 
 /**
  * Embedded panels on one host page, in a fresh browser context: 6 different ?embed= iframes of
@@ -151,8 +156,8 @@ const elementsHost = () => {
 async function embedsRun(ctx, cdp, mark, elements = false) {
   const panels = elements ? TWELVE : SIX;
   const hostUrl = elements ? ELEMENTS_HOST : `${url}embed-host.html`;
-  const host = elements ? elementsHost() : `<!doctype html><meta charset="utf-8"><title>embeds</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="900" height="400"></iframe>`).join('')}`;
-  await ctx.route(hostUrl, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
+  const host = elements ? null : `<!doctype html><meta charset="utf-8"><title>embeds</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="900" height="400"></iframe>`).join('')}`;
+  if (!elements) await ctx.route(hostUrl, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
   const workers = new Set();
   cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
     if (t.type === 'shared_worker' || t.type === 'worker') workers.add(t.targetId);
@@ -262,5 +267,6 @@ if (SCEN.has('input')) {
 await browser.close();
 server.close();
 nosnap.server.close();
+elementsServer.close();
 const load1 = loadavg();
 console.log(`page: load average before ${load0.map((x) => x.toFixed(2)).join(' ')}, after ${load1.map((x) => x.toFixed(2)).join(' ')} (2 cores; ${RUNS} runs per scenario)`);
