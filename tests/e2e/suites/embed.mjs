@@ -50,7 +50,7 @@ export default async function embed(ctx) {
   const allLive = (page, n = PANELS.length) => page.waitForFunction((k) => document.querySelectorAll('pu-lab-panel[data-numbers="live"]').length === k, n, { timeout: 120_000, polling: 50 });
 
   try {
-    await check('12 <pu-lab-panel> on another site: all live, sized to content, quoted by the host, ≤ 2 runtimes', async () => {
+    await check('12 <pu-lab-panel> on a page of another origin: all live, sized to content, quoted by the host, ≤ 2 runtimes', async () => {
       const page = await newPage();
       const w = await watchWorkers(browser, page);
       const t0 = Date.now();
