@@ -8,10 +8,13 @@ import { dirname, resolve } from 'node:path';
 import { offlineCache } from './offline/plugin';
 import { createHash } from 'node:crypto';
 import { runJsonCPython, seedKey } from './build/prerender';
+import { writeSchema } from './build/schema';
 import { SNAPSHOT_PYODIDE_VERSION, makeSnapshot, pulabFiles } from './build/snapshot';
 import { precompress } from './build/compress';
 
 const here = dirname(fileURLToPath(import.meta.url));
+// Before anything is bundled: the form is built from pulab's input schema.
+writeSchema();
 const repo = resolve(here, '..');
 const pyodideDir = resolve(repo, 'node_modules/pyodide');
 /** The runtime files loadPyodide fetches relative to indexURL. */

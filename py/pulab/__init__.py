@@ -35,8 +35,15 @@ Where a new module goes: a new number format or integer rule → ``fixedpoint``;
 new input check, parser limit or error text → ``schema``; a new per-unit quantity
 → ``model``; a vendor → ``profiles/NAME.py`` (listed in ``profiles.MODULES``); a
 new computation over a model (margins, responses, families) → ``analyses``; a new
-output format → ``export``; a new subcommand → ``cli/`` (registered in ``__main__``).  Tests mirror modules:
-``tests/py/test_NAME.py``.
+output format → ``export``; a new subcommand → ``cli/`` (registered in ``__main__``).
+Tests mirror modules: ``tests/py/test_NAME.py``.
+
+Adding an input field is one entry in :mod:`pulab.schema.fields` (path, kind, unit,
+range, default, en/zh label): the validator (:mod:`pulab.schema.validate`), the page's
+form (``web/src/generated/schema.json``, rewritten by ``npm run build``), the contract's
+input tables (``tests/py/test_schema.py`` prints the text to paste) and the fuzzer follow
+from it.  A new error or warning is one entry in :mod:`pulab.schema.catalog` (code → en,
+zh text), raised as ``InputError(field, code=..., **params)``.
 
 Known upward imports: ``model.gains`` and ``schema.inputs`` use the Inovance
 rounding and raw fields of ``profiles.inovance_code``; ``analyses.integers`` and

@@ -17,7 +17,7 @@ import sys
 
 from .schema.errors import InputError
 from .cli.family import add_family_commands, read_json
-from .schema.inputs import shown
+from .schema.validate import shown
 from .report import format_text, report
 from .cli.trace import add_trace_parser, trace_main
 
@@ -82,12 +82,12 @@ def _run_vendor(args) -> int:
 def _header(inp, name: str | None) -> str:
     from . import profiles
     if name is None:
-        raise InputError("profile", "is required")
+        raise InputError("profile", code="required")
     if name not in profiles.NAMES:  # before the report: a typo should not cost a report
-        raise InputError("profile",
-                         f"must be one of {', '.join(profiles.NAMES)}, got {shown(name)}")
+        raise InputError("profile", code="not_choice", choices=", ".join(profiles.NAMES),
+                         got=shown(name))
     if not isinstance(inp, dict):
-        raise InputError("input", "must be a JSON object")
+        raise InputError("input", code="not_json_object")
     return profiles.header(report({**inp, "profiles": inp.get("profiles") or {}}), name)
 
 
@@ -95,17 +95,18 @@ def _translate(inp, args) -> dict:
     from .profiles import MODULES, NAMES
     from .profiles.translate import translate
     if args.source is None:
-        raise InputError("translate.from", "is required")
+        raise InputError("translate.from", code="required")
     if args.source not in NAMES:
-        raise InputError("translate.from", f"must be one of {', '.join(NAMES)}, "
-                         f"got {shown(args.source)}")
+        raise InputError("translate.from", code="not_choice", choices=", ".join(NAMES),
+                         got=shown(args.source))
     if not isinstance(inp, dict):
-        raise InputError("input", "must be a JSON object")
+        raise InputError("input", code="not_json_object")
     names = MODULES[args.source].gain_fields(args.axis) if args.axis in ("d", "q") else ("", "")
     values = {}
     for name, text in zip(names, (args.kp, args.ki)):
         if text is not None:  # absent: translate() names the missing field
-            values[name] = int(text) if re.fullmatch(r"[+-]?\d+", text) else text
+            # int() refuses over 4300 digits; such text is refused as "must be an integer".
+            values[name] = int(text) if re.fullmatch(r"[+-]?\d{1,400}", text) else text
     return translate(inp, args.source, args.axis, values)
 
 

@@ -1,7 +1,8 @@
 """JSON-in, JSON-out entry points for the web worker (one call per request).
 
 Errors never escape as exceptions: bad input comes back as
-``{"ok": false, "field": ..., "message": ..., "message_zh": ...}``.
+``{"ok": false, "field": ..., "message": ..., "message_zh": ..., "code": ..., "params": ...}``
+(:class:`pulab.schema.errors.InputError` as data, its texts from :mod:`pulab.schema.catalog`).
 
 Examples
 --------
@@ -15,14 +16,14 @@ Examples
 from __future__ import annotations
 
 import json
+import math
 import re
 
 from .schema.errors import InputError
-from .schema.inputs import shown
+from .schema.validate import key_path, shown
 from .schema.jsontext import parse
 from .fixedpoint.qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
-from .schema.messages import to_zh
 from .report import report, report_steps
 from .analyses.slices import finish
 from .schema.textnum import ascii_text, parse_int, parse_real
@@ -33,7 +34,17 @@ __all__ = ["run_json", "run_json_steps", "qcalc", "qcalc_json", "export_json", "
 
 def _fail(e: InputError) -> str:
     return json.dumps({"ok": False, "field": e.field, "message": e.message,
-                       "message_zh": to_zh(e.message)})
+                       "message_zh": e.message_zh, "code": e.code, "params": _strict(e.params)},
+                      allow_nan=False)
+
+
+def _strict(v):
+    """Params as strict JSON: a non-finite float (a user's 1e999 quoted back) becomes its text."""
+    if isinstance(v, float) and not math.isfinite(v):
+        return repr(v)
+    if isinstance(v, dict):
+        return {k: _strict(x) for k, x in v.items()}
+    return v
 
 
 def run_json(text: str) -> str:
@@ -43,7 +54,7 @@ def run_json(text: str) -> str:
 
 def run_json_steps(text: str):
     """:func:`run_json` in slices: a generator that yields None between slices of the simulation
-    and returns the same JSON text; closing it cancels the computation (issue 14)."""
+    and returns the same JSON text; closing it cancels the computation."""
     try:
         out = yield from report_steps(parse(text))
         return json.dumps({"ok": True, "report": out}, allow_nan=False)
@@ -72,14 +83,14 @@ def qcalc(req: dict) -> dict:
         ``result`` (raw, hex, value, error, flags).
     """
     if not isinstance(req, dict):
-        raise InputError("qcalc", "must be an object")
+        raise InputError("qcalc", code="not_object", got=shown(req))
     name = req.get("format", "")
     if not isinstance(name, str):
-        raise InputError("qcalc.format", f"must be a string, got {shown(name)}")
+        raise InputError("qcalc.format", code="not_string", got=shown(name))
     name = ascii_text(name)
     word_bits = req.get("word_bits")
     if word_bits is not None and (isinstance(word_bits, bool) or not isinstance(word_bits, int)):
-        raise InputError("qcalc.word_bits", "must be an integer")
+        raise InputError("qcalc.word_bits", code="not_integer", got=shown(word_bits))
     iq = re.fullmatch(r"_?iq(\d*)", name, re.I)
     if iq:
         # TI IQmath: _iqN / _IQN is a 32-bit long with N fractional bits (GLOBAL_Q = 24).
@@ -91,16 +102,17 @@ def qcalc(req: dict) -> dict:
         fmt = parse_format(name, word_bits)
     except (ValueError, TypeError):
         if re.fullmatch(r"U?Q\d+(\.\d+)?", name, re.I):
-            raise InputError("qcalc.format", f"{name} does not fit {word_bits or 64} word "
-                             "bits") from None
-        raise InputError("qcalc.format", f"not a Q format: {shown(req.get('format', ''))} "
-                         "(use Qm.n, UQm.n, or Qn with word_bits)") from None
+            raise InputError("qcalc.format", code="q_too_wide", name=name,
+                             bits=word_bits or 64) from None
+        raise InputError("qcalc.format", code="not_q_format", got=shown(req.get("format", ""))) from None
     rounding = req.get("rounding", "nearest")
     overflow = req.get("overflow", "saturate")
     if rounding not in ROUNDINGS:
-        raise InputError("qcalc.rounding", f"must be one of {', '.join(ROUNDINGS)}")
+        raise InputError("qcalc.rounding", code="not_choice", choices=", ".join(ROUNDINGS),
+                         got=shown(rounding))
     if overflow not in OVERFLOWS:
-        raise InputError("qcalc.overflow", f"must be one of {', '.join(OVERFLOWS)}")
+        raise InputError("qcalc.overflow", code="not_choice", choices=", ".join(OVERFLOWS),
+                         got=shown(overflow))
     if req.get("raw") is not None:
         raw = parse_int(req["raw"], "qcalc.raw")
         flags = []
@@ -110,14 +122,15 @@ def qcalc(req: dict) -> dict:
             flags.append("unsigned_register")
         if not fmt.raw_min <= raw <= fmt.raw_max:
             hi = (1 << fmt.word_bits) - 1 if fmt.signed else fmt.raw_max
-            raise InputError("qcalc.raw", f"must be {fmt.raw_min}..{hi} for {fmt.name}")
+            raise InputError("qcalc.raw", code="raw_range_for", lo=fmt.raw_min, hi=hi, fmt=fmt.name)
         res = {"raw": raw, "value": decode(raw, fmt), "error": 0.0, "flags": flags}
     else:
         x = parse_real(req.get("value"), "qcalc.value")
         try:
             e = encode(x, fmt, rounding, overflow)
-        except OverflowError as err:
-            raise InputError("qcalc.value", str(err)) from None
+        except OverflowError:
+            raise InputError("qcalc.value", code="q_outside", value=x, fmt=fmt.name,
+                             lo=fmt.min_value, hi=fmt.max_value) from None
         res = {"raw": e.raw, "value": e.value, "error": e.error, "flags": e.flags}
     mask = (1 << fmt.word_bits) - 1
     res["hex"] = f"0x{res['raw'] & mask:0{(fmt.word_bits + 3) // 4}X}"
@@ -148,9 +161,10 @@ def export_json(text: str) -> str:
             return json.dumps({"ok": True, "text": c_header(r)})
         if kind in ("csv_current", "csv_pll"):
             if "sim" not in r or kind[4:] not in r["sim"]:
-                raise InputError("sim", f"the input asks for no {kind[4:]} simulation")
+                raise InputError("sim", code="no_simulation", kind=kind[4:])
             return json.dumps({"ok": True, "text": sim_csv(r, kind[4:])})
-        raise InputError("kind", "must be one of header, csv_current, csv_pll")
+        raise InputError("kind", code="not_choice", choices="header, csv_current, csv_pll",
+                         got=shown(kind))
     except InputError as e:
         return _fail(e)
 
@@ -190,10 +204,11 @@ def sweep_json(text: str) -> str:
             elif op == "merge":
                 summaries = req.get("summaries")
                 if not isinstance(summaries, list):
-                    raise InputError("sweep.summaries", "must be a list of chunk summaries")
+                    raise InputError("sweep.summaries", code="summaries_list")
                 out = {"summary": sw.merge(plan, summaries)}
             else:
-                raise InputError("sweep.op", "must be one of sweep, plan, chunk, merge")
+                raise InputError("sweep.op", code="not_choice", choices="sweep, plan, chunk, merge",
+                                 got=shown(op))
         return json.dumps({"ok": True, **out}, allow_nan=False)
     except InputError as e:
         return _fail(e)
@@ -212,13 +227,13 @@ def batch_json(text: str) -> str:
     try:
         req = parse(text, "batch")
         if not isinstance(req, dict):
-            raise InputError("batch", "must be an object")
+            raise InputError("batch", code="not_object", got=shown(req))
         columns, rows = bt.read_table(req.get("csv"))
         start, count = req.get("start", 0), req.get("count", len(rows))
         for name, v, hi in (("start", start, len(rows)), ("count", count, None)):
             if isinstance(v, bool) or not isinstance(v, int) or v < 0 or (hi is not None and v > hi):
-                raise InputError(f"batch.{name}", f"must be 0..{hi if hi is not None else 'N'}, "
-                                 f"got {v!r}")
+                raise InputError(f"batch.{name}", code="integer_range", lo=0,
+                                 hi=hi if hi is not None else "N", got=shown(v))
         names = bt.output_columns(columns)
         out = bt.batch_rows(req["csv"], start, count)
         return json.dumps({"ok": True, "total": len(rows), "columns": names,
@@ -227,7 +242,7 @@ def batch_json(text: str) -> str:
     except InputError as e:
         return _fail(e)
     except ValueError as e:
-        return _fail(InputError("input", f"not valid JSON: {e}"))
+        return _fail(InputError("input", code="json_invalid", detail=" ".join(str(e).split())))
 
 
 def trace_json(text: str) -> str:
@@ -246,19 +261,16 @@ def trace_json(text: str) -> str:
     from .ctrace import TraceError, compile_code, trace_checked
     checked = None
     try:
-        try:
-            req = json.loads(text)
-        except ValueError as e:
-            raise InputError("input", f"not valid JSON: {e}") from None
+        req = parse(text)
         if not isinstance(req, dict):
-            raise InputError("input", "must be an object")
+            raise InputError("input", code="not_object", got=shown(req))
         unknown = set(req) - {"code", "target", "set", "global_q"}
         if unknown:
-            raise InputError(sorted(unknown)[0], "unknown field (expected one of: code, "
-                             "target, set, global_q)")
+            raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
+                             expected="code, target, set, global_q")
         sets = req.get("set") or {}
         if not isinstance(sets, dict):
-            raise InputError("set", "must be an object")
+            raise InputError("set", code="not_object", got=shown(sets))
         checked = compile_code(req.get("code", ""), req.get("target", "c28x"))
         return json.dumps(trace_checked(checked, sets, req.get("global_q")), allow_nan=False)
     except InputError as e:
@@ -301,21 +313,22 @@ def vendors_json(text: str) -> str:
     try:
         req = parse(text)
         if not isinstance(req, dict):
-            raise InputError("request", "must be a JSON object")
+            raise InputError("request", code="not_json_object")
         inp = req.get("input")
         if not isinstance(inp, dict):
-            raise InputError("input", "must be a JSON object")
+            raise InputError("input", code="not_json_object")
         action = req.get("action")
         if action == "header":
             name = req.get("profile")
             if name not in profiles.NAMES:
-                raise InputError("profile", f"must be one of {', '.join(profiles.NAMES)}, "
-                                 f"got {shown(name)}")
+                raise InputError("profile", code="not_choice", choices=", ".join(profiles.NAMES),
+                                 got=shown(name))
             r = report({**inp, "profiles": inp.get("profiles") or {}})
             return json.dumps({"ok": True, "text": profiles.header(r, name)})
         if action == "translate":
             t = translate(inp, req.get("from"), req.get("axis", "q"), req.get("values"))
             return json.dumps({"ok": True, "translation": t}, allow_nan=False)
-        raise InputError("action", "must be one of header, translate")
+        raise InputError("action", code="not_choice", choices="header, translate",
+                         got=shown(action))
     except InputError as e:
         return _fail(e)

@@ -1,8 +1,8 @@
 """Benchmarks of the core, the same code in CPython and in Pyodide (prints numbers).
 
 ``PYTHONPATH=py python3 -m pulab.benchmark [--json]`` times :func:`pulab.report`
-on every golden-style motor below (issue 2's target: under 5 ms per full report
-in Pyodide) and the current-loop simulation (:mod:`pulab.analyses.sim.bench`; issue 3's
+on every golden-style motor below (target: under 5 ms per full report
+in Pyodide) and the current-loop simulation (:mod:`pulab.analyses.sim.bench`;
 target: 20 000 steps of the three variants under 0.5 s in CPython, 1 s in
 Pyodide).  The Pyodide runner (``tests/bench/pyodide.bench.ts``) calls
 :func:`run` and prints the Pyodide/CPython ratio.
@@ -46,7 +46,7 @@ def report_timing(n: int = 200) -> dict:
 
 
 def loop_timing(n: int = 30) -> dict:
-    """Median milliseconds of the full report with the loop analysis and Bode data (issue 11).
+    """Median milliseconds of the full report with the loop analysis and Bode data.
 
     ``"analysis": {"bode": true}`` on every motor: margins, poles, bandwidth of the current
     loop (design gains, firmware integers, delay-aware design and the continuous design),
@@ -66,7 +66,7 @@ def loop_timing(n: int = 30) -> dict:
     return out
 
 
-#: Issue 10's benchmark: 30 lines of firmware scaling code (the seed's blocks, one scope).
+#: The tracer's benchmark: 30 lines of firmware scaling code (the seed's blocks, one scope).
 TRACE_SNIPPET = """\
 Uint16 gMotorExtInfo.RsPm, gMotorInfo.Current, gMotorInfo.Voltage, gBasePar.FullFreq01;
 Uint16 gMotorExtInfo.LD, gMotorInfo.FreqRated01, gMotorExtInfo.BemfVolt, gUDC.uDCFilter;

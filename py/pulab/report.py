@@ -16,7 +16,7 @@ from .profiles.inovance_magic import magic_constants
 from .model.datasheet import mechanical
 from .model.gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .schema.inputs import normalize
-from .schema.messages import to_zh
+from .schema.catalog import render
 from .analyses.review import review
 from .analyses.slices import finish
 from .profiles.inovance_code import current_pi_step, raw_from_si, vendor_results
@@ -25,17 +25,17 @@ __all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", 
 
 
 def _profile_warnings(prof: dict) -> list:
-    """One warning per profile constant the firmware could not store as intended."""
-    w = [f"profiles.ti: USER_checkForErrors would set {code} ({why})"
-         for code, why in prof["ti"]["checks"]]
+    """One warning per profile constant the firmware could not store as intended, as
+    ``(catalog code, params)`` pairs."""
+    w = [("warning.ti_check", {"code": code, "why": why}) for code, why in prof["ti"]["checks"]]
     for name, p in prof.items():
         for k, c in p["constants"].items():
+            params = {"path": f"profiles.{name}.{k}", "ideal": c["ideal"], "format": c["format"],
+                      "value": c["value"]}
             if "out_of_range" in c["flags"] or "saturate" in c["flags"]:
-                w.append(f"profiles.{name}.{k}: {c['ideal']:.6g} does not fit {c['format']}; "
-                         f"stored {c['value']}")
+                w.append(("warning.profile_overflow", params))
             elif c["value"] == 0 and c["ideal"] != 0:
-                w.append(f"profiles.{name}.{k}: rounds to 0 in {c['format']} "
-                         f"(ideal {c['ideal']:.6g})")
+                w.append(("warning.profile_zero", params))
     return w
 
 
@@ -85,7 +85,7 @@ def report(inp: dict) -> dict:
 
 
 def report_steps(inp: dict):
-    """Compute the report for one motor and drive, in slices (issue 14).
+    """Compute the report for one motor and drive, in slices.
 
     Parameters
     ----------
@@ -142,7 +142,7 @@ def report_steps(inp: dict):
     if prof is not None:
         out["profiles"] = prof
     if n["analysis"] is not None:
-        # issue 11, only when asked (like "sim"): plain reports stay within their time budget
+        # only when asked (like "sim"): plain reports stay within their time budget
         from .analyses import loop as _loop
         out["loop"] = _loop.analyze(out, n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
@@ -156,8 +156,8 @@ def report_steps(inp: dict):
     extra = _profile_warnings(prof) if prof is not None else []
     if "loop" in out:
         extra += _loop.warnings(out["loop"])
-    out["warnings"] += extra
-    out["warnings_zh"] += [to_zh(w) for w in extra]
+    out["warnings"] += [render(code, params, "en") for code, params in extra]
+    out["warnings_zh"] += [render(code, params, "zh") for code, params in extra]
     return out
 
 
@@ -167,7 +167,7 @@ def _table(title: str, rows: list) -> list:
 
 
 def _loop_rows(loop: dict) -> list:
-    """PM/GM/crossover/bandwidth lines of the loop section (issue 11), 'none' where absent."""
+    """PM/GM/crossover/bandwidth lines of the loop section, 'none' where absent."""
     def fmt(x, unit):
         return "none" if x is None else f"{x:.4g} {unit}"
     cases = [(f"current {a}", loop["current"][a]) for a in ("d", "q")]

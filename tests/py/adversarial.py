@@ -16,6 +16,8 @@ import json
 import random
 
 from conftest import SEED_INPUT
+from pulab.profiles import MODULES
+from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
 
 __all__ = ["cases", "FIELDS"]
 
@@ -23,20 +25,9 @@ BASE = copy.deepcopy(SEED_INPUT)
 # A short run keeps valid cases cheap; mutations of these two reach the caps.
 BASE["sim"] = {"current": {"duration_s": 2e-3}, "pll": {"duration_s": 2e-3}}
 
-#: Every field path of the contract's input (docs/contract.md), the sim section included.
-FIELDS = [
-    *(("motor", k) for k in ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm",
-                             "ld_h", "lq_h", "bemf_v", "pole_pairs")),
-    *(("drive", k) for k in ("base_freq_hz", "udc_v", "ts_s")),
-    *(("conventions", k) for k in ("base", "base_voltage_v", "base_current_a", "angle_base",
-                                   "inductance_unit")),
-    *(("current_loop", k) for k in ("method", "bandwidth_hz", "damping", "kp", "ki", "pm_kp",
-                                    "pm_ki")),
-    *(("pll", k) for k in ("bandwidth_hz", "damping")),
-    *(("raw", k) for k in ("Rpm", "LD", "LQ", "BEMF", "UDC")),
-    *(("sim", "current", k) for k in ("axis", "step_a", "duration_s", "speed_hz", "delay")),
-    *(("sim", "pll", k) for k in ("speed_hz", "angle_step_deg", "ramp_hz_per_s", "duration_s")),
-]
+#: Every field path of the input: the schema's fields (every section) and each vendor profile's options.
+FIELDS = [tuple(f.path.split(".")) for f in SCHEMA_FIELDS] + [
+    ("profiles", name, opt[0]) for name, mod in MODULES.items() for opt in mod.OPTIONS]
 
 NASTY_TEXT = ["", " ", "\n", "a\nb", "\r", "\x00", "\u2028", "\u2029", "\ud800", "\udfff",
               "\u202e", "\ufeff", "😀", "电机", "'", '"', "\\", "motor.rs_ohm", "[0]", "toString",
@@ -134,7 +125,15 @@ def _mutate(rng: random.Random, inp: dict) -> tuple:
             ("sim", {"current": {"duration_s": duration, "step_a": other}, "pll": {"duration_s": duration}}),
             ("sim", {"pll": {"duration_s": 1e-3, "ramp_hz_per_s": marker, "speed_hz": other}}),
             ("drive", {"udc_v": marker, "ts_s": other}),
+            ("datasheet", {"speed_rpm": marker, "ke_v_per_krpm": other, "ke_measure": "peak"}),
+            ("datasheet", {"kt_nm_per_a": marker, "rs_line_ohm": other, "winding": "delta"}),
+            ("analysis", {"speed": {"inertia_kg_m2": marker, "ts_s": other, "response": True}}),
+            ("analysis", {"design": "bandwidth", "target_bandwidth_hz": marker, "bode": True}),
+            ("profiles", {rng.choice(list(MODULES)): {rng.choice(FIELDS)[-1]: marker}}),
         ])
+        if section == "datasheet" and isinstance(inp.get("motor"), dict):
+            for k in ("rated_freq_hz", "bemf_v", "rs_ohm", "ld_h", "lq_h"):  # the datasheet's to fill
+                inp["motor"].pop(k, None)
         inp[section] = value
     else:  # unicode in keys and strings
         if rng.random() < 0.5:

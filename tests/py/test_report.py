@@ -8,10 +8,9 @@ import sys
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from conftest import ROOT, SEED_INPUT
+from conftest import ROOT, SEED_INPUT, chinese
 from pulab import InputError, report
 from pulab.api import qcalc_json
-from pulab.schema.messages import has_chinese
 
 
 def test_seed_bases_and_per_unit(seed_input):
@@ -136,10 +135,10 @@ def test_fuzzed_input_raises_only_input_error(section, key, value):
         r = report(inp)
     except InputError as e:
         assert e.field and "\n" not in e.message
-        assert has_chinese(e.message), e.message
+        assert chinese(e.message_zh), e.message
         return
     json.dumps(r, allow_nan=False)
-    assert all(has_chinese(w) for w in r["warnings"]), r["warnings"]
+    assert all(chinese(w) for w in r["warnings_zh"]), r["warnings_zh"]
 
 
 @pytest.mark.parametrize("pm_kp, pm_ki", [(1180, 4720), (1, 1), (123456, 7)])

@@ -13,15 +13,12 @@ import { REPO, runJsonCPython, seedKey } from '../../web/build/prerender';
 import { SNAPSHOT_MAX_BYTES, makeSnapshot, pulabFiles } from '../../web/build/snapshot';
 import { createRuntimeHost, fastOrFull, idleTimeout, type PyodideLike, type PyodideLoader } from '../../web/src/worker-logic';
 import { PULAB_FILES } from '../../web/src/pysources';
-import { effectiveInput } from '../../web/src/fields';
-import { reportInput, type Input } from '../../web/src/state';
+import { reportKey, type Input } from '../../web/src/state';
 import type { WorkerToMain } from '../../web/src/protocol';
 
 const GOLDEN = fileURLToPath(new URL('../golden/', import.meta.url));
-/** The key the page sends for an input (numbers.ts reportKey). */
-const keyOf = (input: Input): string => JSON.stringify(reportInput(effectiveInput(input)));
 const goldenKeys = readdirSync(GOLDEN).filter((f) => /^\d\d_.*\.json$/.test(f))
-  .map((f) => [f, keyOf(JSON.parse(readFileSync(`${GOLDEN}${f}`, 'utf8')).input as Input)] as const);
+  .map((f) => [f, reportKey(JSON.parse(readFileSync(`${GOLDEN}${f}`, 'utf8')).input as Input)] as const);
 
 let p: NodePulab;
 beforeAll(async () => {

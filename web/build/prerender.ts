@@ -5,14 +5,13 @@ import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { effectiveInput } from '../src/fields';
-import { SEED_INPUT, reportInput } from '../src/state';
+import { SEED_INPUT, reportKey } from '../src/state';
 
 export const REPO = fileURLToPath(new URL('../../', import.meta.url));
 
 /** The JSON text the page sends for the seed input (`reportInput(effectiveInput(input))`). */
 export function seedKey(): string {
-  return JSON.stringify(reportInput(effectiveInput(SEED_INPUT)));
+  return reportKey(SEED_INPUT);
 }
 
 /** The project's Python (the venv if made, else python3 from PATH); pulab needs only the standard library. */

@@ -11,6 +11,7 @@ import { fieldNotes, stateBanner } from './state-notice';
 import type { PanelContext, PanelId } from './panels/panel';
 import { PANELS, panelById } from './panels/registry';
 import { openChapter } from './panels/docs';
+import { pageEnv } from './page/env';
 import { ComputeSession } from './page/session';
 import { InputForm } from './page/form';
 import { Layout } from './page/layout';
@@ -55,7 +56,7 @@ export class App {
       sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
-    });
+    }, pageEnv());
     this.form = new InputForm(root, this.session);
     this.layout = new Layout(root, this.embed);
     this.session.wantsSim = PANELS.some((p) => p.usesSim && (this.embed === null || p.id === this.embed));

@@ -72,7 +72,7 @@ const REPLACED = new Set(['INPUT', 'SELECT', 'TEXTAREA', 'OPTION', 'DETAILS', 'I
 /**
  * Make `old`'s children equal to `fresh`'s by patching in place: nodes of the same kind are kept
  * and only changed text and attributes are written, so a new report costs the browser a layout of
- * the numbers that changed instead of the whole panel (issue 8: input → numbers). Elements with
+ * the numbers that changed instead of the whole panel (input → numbers). Elements with
  * equal `data-tex` (the same cached formula) are not descended into; form controls are replaced;
  * elements with handlers carry `data-on` (their event types) and get the new handlers; an element
  * with the same `data-keep` as the old one (a figure its panel draws itself) is kept as it is.

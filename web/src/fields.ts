@@ -1,4 +1,8 @@
-// The input form: one element per field of the CLI input, `name` = its JSON path.
+// The input form: one element per field of the CLI input, `name` = its JSON path. The fields, their
+// kinds, units, choices, labels and when they apply come from pulab's input schema
+// (generated/schema.json, written by the build from py/pulab/schema/fields.py); this file adds only
+// what the page alone knows (display units, placeholders, section layout).
+import schema from './generated/schema.json';
 import type { UnitId } from './units';
 import type { Input } from './state';
 import type { Key } from './i18n';
@@ -6,6 +10,8 @@ import type { Key } from './i18n';
 export interface FieldSpec {
   path: string;
   kind: 'number' | 'int' | 'select' | 'bool';
+  /** English and Chinese label. */
+  label: [string, string];
   /** Unit shown when there is no choice. */
   unit?: string;
   /** Display-unit choices (first = default). */
@@ -26,123 +32,109 @@ export interface SectionSpec {
   collapsed?: boolean;
 }
 
-const conv = (inp: Input, k: string): unknown => inp.conventions?.[k];
+/** One field of pulab's input schema (py/pulab/schema/fields.py, written here by the build). */
+interface SchemaField {
+  path: string;
+  kind: string;
+  unit: string;
+  default: unknown;
+  derived: string;
+  choices: string[];
+  only_with: string[];
+  /** English, Chinese. */
+  label: string[];
+}
+
+const FIELDS: SchemaField[] = schema.fields;
+const KIND: Record<string, FieldSpec['kind']> = { number: 'number', integer: 'int', choice: 'select', flag: 'bool' };
+
+const value = (inp: Input, path: string): unknown => {
+  const [s, ...rest] = path.split('.');
+  let v: unknown = inp[s];
+  for (const k of rest) v = v && typeof v === 'object' ? (v as Record<string, unknown>)[k] : undefined;
+  return v;
+};
 const loop = (inp: Input): string => String(inp.current_loop?.method ?? 'bandwidth');
 const design = (inp: Input): string => String(inp.analysis?.design ?? 'phase_margin');
 
-export const RAW_NAMES = ['Voltage', 'Current', 'FullFreq01', 'FreqRated01', 'RsPm', 'LD', 'LQ', 'BemfVolt', 'uDCFilter'];
-const RAW_UNIT: Record<string, string> = {
-  Voltage: '1 V', Current: '0.01 A', FullFreq01: '0.01 Hz', FreqRated01: '0.01 Hz', RsPm: 'mΩ', LD: 'LSB', LQ: 'LSB', BemfVolt: '0.1 V', uDCFilter: '0.1 V',
+/** What only the page knows about a field: display units, the report value shown when empty, and
+ * when it is greyed out beyond the schema's own `only_with`. */
+const PAGE: Record<string, Partial<FieldSpec>> = {
+  'motor.rated_voltage_v': { placeholderFrom: 'input.motor.rated_voltage_v' },
+  'motor.rated_freq_hz': { placeholderFrom: 'input.motor.rated_freq_hz' },
+  'motor.rs_ohm': { placeholderFrom: 'input.motor.rs_ohm' },
+  'motor.ld_h': { units: ['µH', 'mH', 'H'], placeholderFrom: 'input.motor.ld_h' },
+  'motor.lq_h': { units: ['µH', 'mH', 'H'], placeholderFrom: 'input.motor.lq_h' },
+  'motor.bemf_v': { placeholderFrom: 'input.motor.bemf_v' },
+  'datasheet.l_line_h': { units: ['mH', 'µH', 'H'] },
+  'datasheet.ld_line_h': { units: ['mH', 'µH', 'H'] },
+  'datasheet.lq_line_h': { units: ['mH', 'µH', 'H'] },
+  'drive.base_freq_hz': { placeholderFrom: 'base.f_b' },
+  'drive.ts_s': { units: ['µs', 'kHz', 's'] },
+  'current_loop.bandwidth_hz': { enabled: (i) => loop(i) === 'bandwidth' || loop(i) === 'damping' },
+  'current_loop.damping': { enabled: (i) => loop(i) === 'damping' },
+  'current_loop.kp': { placeholderFrom: 'current_pi.d.kp' },
+  'current_loop.ki': { placeholderFrom: 'current_pi.d.ki' },
+  'current_loop.pm_kp': { placeholderFrom: 'current_pi.d.pm_kp' },
+  'current_loop.pm_ki': { placeholderFrom: 'current_pi.d.pm_ki' },
+  'sim.current.duration_s': { units: ['ms', 's'] },
+  'sim.pll.duration_s': { units: ['ms', 's'] },
+  'analysis.target_phase_margin_deg': { enabled: (i) => design(i) === 'phase_margin' },
+  'analysis.target_bandwidth_hz': { enabled: (i) => design(i) === 'bandwidth', placeholderFrom: 'current_pi.bandwidth_hz' },
+  'analysis.speed.ts_s': { units: ['µs', 'kHz', 's'] },
 };
+/** Set by panels, not typed into the form. */
+const NOT_IN_FORM = new Set(['analysis.bode', 'analysis.speed.response']);
+// A field renamed or removed in the schema must not leave page settings behind (fails the build).
+for (const p of [...Object.keys(PAGE), ...NOT_IN_FORM]) {
+  if (!FIELDS.some((f) => f.path === p)) throw new Error(`web/src/fields.ts: ${p} is not in the input schema`);
+}
 
-export const SECTIONS: SectionSpec[] = [
-  {
-    id: 'motor', title: 'sec_motor', fields: [
-      // Empty = derived from the datasheet section (placeholder: the derived value).
-      { path: 'motor.rated_voltage_v', kind: 'number', unit: 'V', optional: true, placeholderFrom: 'input.motor.rated_voltage_v' },
-      { path: 'motor.rated_current_a', kind: 'number', unit: 'A' },
-      { path: 'motor.rated_freq_hz', kind: 'number', unit: 'Hz', optional: true, placeholderFrom: 'input.motor.rated_freq_hz' },
-      { path: 'motor.rs_ohm', kind: 'number', unit: 'Ω', optional: true, placeholderFrom: 'input.motor.rs_ohm' },
-      { path: 'motor.ld_h', kind: 'number', units: ['µH', 'mH', 'H'], optional: true, placeholderFrom: 'input.motor.ld_h' },
-      { path: 'motor.lq_h', kind: 'number', units: ['µH', 'mH', 'H'], optional: true, placeholderFrom: 'input.motor.lq_h' },
-      { path: 'motor.bemf_v', kind: 'number', unit: 'V', optional: true, placeholderFrom: 'input.motor.bemf_v' },
-      { path: 'motor.pole_pairs', kind: 'int' },
-    ],
-  },
-  {
-    // pulab.model.datasheet: what datasheets print; each value fills a motor field left empty.
-    id: 'datasheet', title: 'sec_datasheet', hint: 'datasheetHint', collapsed: true, fields: [
-      { path: 'datasheet.speed_rpm', kind: 'number', unit: 'rpm', optional: true },
-      { path: 'datasheet.ke_v_per_krpm', kind: 'number', unit: 'V/krpm', optional: true },
-      { path: 'datasheet.ke_v_s_per_rad', kind: 'number', unit: 'V·s/rad', optional: true },
-      { path: 'datasheet.ke_measure', kind: 'select', options: ['', 'rms', 'peak'], optional: true },
-      { path: 'datasheet.kt_nm_per_a', kind: 'number', unit: 'N·m/A', optional: true },
-      { path: 'datasheet.kt_current', kind: 'select', options: ['', 'rms', 'peak'], optional: true },
-      { path: 'datasheet.psi_wb', kind: 'number', unit: 'Wb', optional: true },
-      { path: 'datasheet.rs_line_ohm', kind: 'number', unit: 'Ω', optional: true },
-      { path: 'datasheet.l_line_h', kind: 'number', units: ['mH', 'µH', 'H'], optional: true },
-      { path: 'datasheet.ld_line_h', kind: 'number', units: ['mH', 'µH', 'H'], optional: true },
-      { path: 'datasheet.lq_line_h', kind: 'number', units: ['mH', 'µH', 'H'], optional: true },
-      { path: 'datasheet.winding', kind: 'select', options: ['', 'star', 'delta'], optional: true },
-      { path: 'datasheet.dc_bus_v', kind: 'number', unit: 'V', optional: true },
-    ],
-  },
-  {
-    id: 'drive', title: 'sec_drive', fields: [
-      { path: 'drive.base_freq_hz', kind: 'number', unit: 'Hz', optional: true, placeholderFrom: 'base.f_b' },
-      { path: 'drive.udc_v', kind: 'number', unit: 'V' },
-      { path: 'drive.ts_s', kind: 'number', units: ['µs', 'kHz', 's'] },
-    ],
-  },
-  {
-    id: 'conventions', title: 'sec_conventions', fields: [
-      { path: 'conventions.base', kind: 'select', options: ['rms', 'peak', 'custom'] },
-      { path: 'conventions.base_voltage_v', kind: 'number', unit: 'V', optional: true, enabled: (i) => conv(i, 'base') === 'custom' },
-      { path: 'conventions.base_current_a', kind: 'number', unit: 'A', optional: true, enabled: (i) => conv(i, 'base') === 'custom' },
-      { path: 'conventions.angle_base', kind: 'select', options: ['pi', '2pi'] },
-      { path: 'conventions.inductance_unit', kind: 'select', options: ['10uH', 'uH'] },
-    ],
-  },
-  {
-    id: 'current_loop', title: 'sec_current_loop', fields: [
-      { path: 'current_loop.method', kind: 'select', options: ['bandwidth', 'damping', 'manual', 'integers'] },
-      { path: 'current_loop.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true, enabled: (i) => loop(i) === 'bandwidth' || loop(i) === 'damping' },
-      { path: 'current_loop.damping', kind: 'number', optional: true, enabled: (i) => loop(i) === 'damping' },
-      { path: 'current_loop.kp', kind: 'number', unit: 'Ω', optional: true, enabled: (i) => loop(i) === 'manual', placeholderFrom: 'current_pi.d.kp' },
-      { path: 'current_loop.ki', kind: 'number', unit: 'Ω/s', optional: true, enabled: (i) => loop(i) === 'manual', placeholderFrom: 'current_pi.d.ki' },
-      { path: 'current_loop.pm_kp', kind: 'int', unit: 'Q12', optional: true, enabled: (i) => loop(i) === 'integers', placeholderFrom: 'current_pi.d.pm_kp' },
-      { path: 'current_loop.pm_ki', kind: 'int', unit: 'Q16', optional: true, enabled: (i) => loop(i) === 'integers', placeholderFrom: 'current_pi.d.pm_ki' },
-    ],
-  },
-  {
-    id: 'pll', title: 'sec_pll', fields: [
-      { path: 'pll.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true },
-      { path: 'pll.damping', kind: 'number', optional: true },
-    ],
-  },
-  {
-    id: 'raw', title: 'sec_raw', hint: 'rawHint', collapsed: true,
-    fields: RAW_NAMES.map((n) => ({ path: `raw.${n}`, kind: 'int' as const, unit: RAW_UNIT[n], optional: true, placeholderFrom: `vendor.raw.${n}` })),
-  },
-  {
-    id: 'sim.current', title: 'sec_sim_current', collapsed: true, fields: [
-      { path: 'sim.current.axis', kind: 'select', options: ['d', 'q'] },
-      { path: 'sim.current.step_a', kind: 'number', unit: 'A', optional: true },
-      { path: 'sim.current.duration_s', kind: 'number', units: ['ms', 's'], optional: true },
-      { path: 'sim.current.speed_hz', kind: 'number', unit: 'Hz', optional: true },
-      { path: 'sim.current.delay', kind: 'bool' },
-    ],
-  },
-  {
-    id: 'sim.pll', title: 'sec_sim_pll', collapsed: true, fields: [
-      { path: 'sim.pll.speed_hz', kind: 'number', unit: 'Hz', optional: true },
-      { path: 'sim.pll.angle_step_deg', kind: 'number', unit: '°', optional: true },
-      { path: 'sim.pll.ramp_hz_per_s', kind: 'number', unit: 'Hz/s', optional: true },
-      { path: 'sim.pll.duration_s', kind: 'number', units: ['ms', 's'], optional: true },
-    ],
-  },
-  {
-    id: 'analysis', title: 'sec_analysis', collapsed: true, fields: [
-      { path: 'analysis.delay', kind: 'select', options: ['computation_pwm', 'computation', 'none'] },
-      { path: 'analysis.design', kind: 'select', options: ['phase_margin', 'bandwidth'] },
-      { path: 'analysis.target_phase_margin_deg', kind: 'number', unit: '°', optional: true, enabled: (i) => design(i) === 'phase_margin' },
-      { path: 'analysis.target_bandwidth_hz', kind: 'number', unit: 'Hz', optional: true, enabled: (i) => design(i) === 'bandwidth', placeholderFrom: 'current_pi.bandwidth_hz' },
-    ],
-  },
-  {
-    id: 'analysis.speed', title: 'sec_speed', collapsed: true, fields: [
-      { path: 'analysis.speed.inertia_kg_m2', kind: 'number', unit: 'kg·m²' },
-      { path: 'analysis.speed.friction_nm_s', kind: 'number', unit: 'N·m·s/rad', optional: true },
-      { path: 'analysis.speed.bandwidth_hz', kind: 'number', unit: 'Hz', optional: true },
-      { path: 'analysis.speed.damping', kind: 'number', optional: true },
-      { path: 'analysis.speed.filter_hz', kind: 'number', unit: 'Hz', optional: true },
-      { path: 'analysis.speed.ts_s', kind: 'number', units: ['µs', 'kHz', 's'], optional: true },
-      { path: 'analysis.speed.current_limit_a', kind: 'number', unit: 'A', optional: true },
-      { path: 'analysis.speed.step_pu', kind: 'number', unit: 'pu', optional: true },
-      { path: 'analysis.speed.load_pu', kind: 'number', unit: 'pu', optional: true },
-    ],
-  },
+function spec(f: SchemaField, emptyChoice: boolean): FieldSpec {
+  const page = PAGE[f.path] ?? {};
+  const kind = KIND[f.kind];
+  if (!kind) throw new Error(`schema field ${f.path}: unknown kind ${f.kind}`);
+  const out: FieldSpec = { path: f.path, kind, label: [f.label[0], f.label[1]] };
+  if (f.unit && !page.units) out.unit = f.unit;
+  if (f.kind === 'choice') {
+    const rest = f.choices.filter((c) => c !== f.default);
+    out.options = emptyChoice ? ['', ...f.choices] : f.default === null ? f.choices : [String(f.default), ...rest];
+  }
+  if (f.default !== 'required' || f.derived || f.only_with.length > 0) out.optional = true;
+  if (f.only_with.length > 0) {
+    const [on, want] = f.only_with;
+    out.enabled = (inp) => String(value(inp, on) ?? FIELDS.find((x) => x.path === on)?.default) === want;
+  }
+  if (f.path.startsWith('raw.')) out.placeholderFrom = `vendor.${f.path}`;
+  return { ...out, ...page };
+}
+
+/** The form's sections, in the page's order: each shows its schema section's fields. */
+const LAYOUT: Omit<SectionSpec, 'fields'>[] = [
+  { id: 'motor', title: 'sec_motor' },
+  { id: 'datasheet', title: 'sec_datasheet', hint: 'datasheetHint', collapsed: true },
+  { id: 'drive', title: 'sec_drive' },
+  { id: 'conventions', title: 'sec_conventions' },
+  { id: 'current_loop', title: 'sec_current_loop' },
+  { id: 'pll', title: 'sec_pll' },
+  { id: 'raw', title: 'sec_raw', hint: 'rawHint', collapsed: true },
+  { id: 'sim.current', title: 'sec_sim_current', collapsed: true },
+  { id: 'sim.pll', title: 'sec_sim_pll', collapsed: true },
+  { id: 'analysis', title: 'sec_analysis', collapsed: true },
+  { id: 'analysis.speed', title: 'sec_speed', collapsed: true },
 ];
+
+export const SECTIONS: SectionSpec[] = LAYOUT.map((s) => ({
+  ...s,
+  // A datasheet value is given or not: its choices start with "not given".
+  fields: FIELDS.filter((f) => f.path.slice(0, f.path.lastIndexOf('.')) === s.id && !NOT_IN_FORM.has(f.path))
+    .map((f) => spec(f, s.id === 'datasheet')),
+}));
+
+/** A field's label in the page's language. */
+export function fieldLabel(f: FieldSpec, lang: 'en' | 'zh'): string {
+  return f.label[lang === 'zh' ? 1 : 0];
+}
 
 export const ALL_FIELDS: FieldSpec[] = SECTIONS.flatMap((s) => s.fields);
 

@@ -20,7 +20,7 @@ export type ApiKind = keyof typeof API_FUNCTIONS;
  * Entry points that compute in slices: `pulab.api.<fn>(text)` returns a Python generator that
  * yields between slices and returns the same JSON text as the API_FUNCTIONS entry. A call of
  * such a kind on a channel runs slice by slice, and a newer call on its channel cancels it
- * (`superseded`) between two slices (issue 14).
+ * (`superseded`) between two slices.
  */
 export const STEPPED_FUNCTIONS = { report: 'run_json_steps' } as const satisfies Partial<Record<ApiKind, string>>;
 export type SteppedKind = keyof typeof STEPPED_FUNCTIONS;
@@ -28,7 +28,7 @@ export type SteppedKind = keyof typeof STEPPED_FUNCTIONS;
 /**
  * The channel of the page's own numbers: a queued call on it is computed before every other
  * queued call (the code panel's traces, the vendors' report, another frame's sweep), so a panel
- * asking Python for something never delays the numbers (issue 8).
+ * asking Python for something never delays the numbers.
  */
 export const PRIORITY_CHANNEL = 'report';
 
@@ -54,7 +54,12 @@ export type BootFrom = 'snapshot' | 'full';
 
 /** What pulab.api returns (parsed). */
 export type ApiOk = { ok: true; [k: string]: Json };
-export type ApiErr = { ok: false; field: string; message: string; message_zh?: string };
+/** An error as data (docs/contract.md, Errors): `code` and `params` from pulab's catalog, the text in
+ * both languages made from them. Worker-side failures (no reply from Python) have no code. */
+export type ApiErr = {
+  ok: false; field: string; message: string; message_zh?: string;
+  code?: string; params?: Record<string, Json>;
+};
 export type ApiResult = ApiOk | ApiErr;
 
 /** Worker → main thread. */

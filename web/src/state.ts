@@ -1,6 +1,7 @@
-// The page state is the CLI input JSON (docs/contract.md) plus the "sim" section of issue 3.
+// The page state is the CLI input JSON (docs/contract.md) plus the "sim" section.
 // It lives in the URL (#in=…), in localStorage, and in the form.
 import type { Json } from './protocol';
+import { effectiveInput } from './fields';
 import { checkInputText, type StateProblem } from './state-check';
 
 export type Input = { [section: string]: { [k: string]: Json } };
@@ -17,7 +18,7 @@ export const SEED_INPUT: Input = {
   raw: {},
   // Empty fields take pulab.analyses.sim's motor-dependent defaults (step 0.5·I_b, duration from ω_c, …).
   sim: { current: { axis: 'd', delay: false }, pll: {} },
-  // Loop analysis (issue 11): sent with the simulation request only (Bode data and the speed
+  // Loop analysis: sent with the simulation request only (Bode data and the speed
   // response are heavy); J is a placeholder inertia for a small servo, to be replaced.
   analysis: { delay: 'computation_pwm', design: 'phase_margin', target_phase_margin_deg: 60, speed: { inertia_kg_m2: 0.00001 } },
 };
@@ -119,6 +120,11 @@ export function reportInput(inp: Input): Input {
     out[k] = v;
   }
   return out;
+}
+
+/** The JSON text the worker hands to pulab.api.run_json for `input`: the identity of a report. */
+export function reportKey(inp: Input): string {
+  return JSON.stringify(reportInput(effectiveInput(inp)));
 }
 
 /** The input with the simulation section (the sim request), and the loop analysis with its

@@ -161,7 +161,7 @@ const now = (): number => (typeof performance !== 'undefined' ? performance.now(
  * (results dropped, one per macrotask, never ahead of a queued call). The engine optimizes the
  * Python interpreter's wasm code only once it has run for a while: the first keystrokes after a
  * boot took 10–25 ms in Python instead of 2–5 ms (with the engine told to optimize everything at
- * once, `--no-wasm-dynamic-tiering`, they took 2 ms from the first; issue 8).
+ * once, `--no-wasm-dynamic-tiering`, they took 2 ms from the first).
  */
 export function createRuntimeHost(load: PyodideLoader, files: Record<string, string>, opts: { warmRuns?: number } = {}): RuntimeHost {
   let api: PyApi | null = null;

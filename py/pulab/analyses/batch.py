@@ -38,7 +38,7 @@ import re
 from decimal import Decimal, InvalidOperation
 
 from ..schema.errors import InputError
-from ..schema.messages import to_zh
+from ..schema.validate import shown
 from ..report import report
 from ..profiles.inovance_code import RAW_FIELDS, VENDOR_RESULTS
 
@@ -75,16 +75,17 @@ def _column(cell: str, k: int) -> tuple:
     name, unit = (m[1], m[2]) if m else (cell.strip(), None)
     where = f"csv.header.{k + 1}"
     if not name:
-        raise InputError(where, f"empty column name {cell!r}")
+        raise InputError(where, code="empty_column", got=shown(cell))
     if unit is None:
         return name, 0
     if "." not in name:
-        raise InputError(where, f"a unit is only converted for an input path, not {name!r}")
+        raise InputError(where, code="unit_not_path", got=shown(name))
     dim = name.rsplit("_", 1)[-1]
     table = UNITS.get(dim, {})
     if unit not in table:
-        allowed = ", ".join(table) if table else "none (give the value in the unit its name ends in)"
-        raise InputError(where, f"unknown unit [{unit}] for {name} (allowed: {allowed})")
+        if not table:
+            raise InputError(where, code="unit_none", unit=unit, name=name)
+        raise InputError(where, code="unit_unknown", unit=unit, name=name, allowed=", ".join(table))
     return name, table[unit]
 
 
@@ -111,7 +112,7 @@ def read_table(text: str) -> tuple:
         ``csv`` when there is no header, ``csv.header.K`` for a bad column K (1-based).
     """
     if not isinstance(text, str):
-        raise InputError("csv", "must be text")
+        raise InputError("csv", code="not_string", got=shown(text))
     if _LAST[0] == text:
         return _LAST[1]
     table = _parse(text)
@@ -126,39 +127,43 @@ def _parse(text: str) -> tuple:
     try:
         table = [r for r in reader if any(c.strip() for c in r)]
     except csv.Error as e:
-        raise InputError("csv", f"not readable as CSV: {e}") from None
+        raise InputError("csv", code="csv_unreadable", detail=str(e)) from None
     if not table:
-        raise InputError("csv", "no header row")
+        raise InputError("csv", code="no_header")
     columns = [_column(c, k) for k, c in enumerate(table[0])]
     seen: dict = {}
     for k, (name, _) in enumerate(columns):
         if name in seen:
-            raise InputError(f"csv.header.{k + 1}", f"duplicate column {name} "
-                             f"(also column {seen[name] + 1})")
+            raise InputError(f"csv.header.{k + 1}", code="duplicate_column", name=name,
+                             other=seen[name] + 1)
         seen[name] = k
     width = len(columns)
     rows = [r + [""] * (width - len(r)) for r in table[1:]]
     return columns, rows
 
 
+#: Longer integer cells are read as decimals (int() refuses over 4300 digits; no field needs 400).
+_INT_DIGITS = 400
+
+
 def _number(text: str, power: int, field: str):
     """A cell as a number: integers stay int, decimals become the nearest double."""
-    if power == 0 and _INT.fullmatch(text):
+    if power == 0 and _INT.fullmatch(text) and len(text) <= _INT_DIGITS:
         return int(text)
     try:
         d = Decimal(text)
     except InvalidOperation:
         if power:
-            raise InputError(field, f"must be a number, got {text!r}") from None
+            raise InputError(field, code="not_number", got=shown(text)) from None
         return text  # a choice (conventions.base …) or a mistake normalize will name
     if not d.is_finite():
-        raise InputError(field, "must be finite")
+        raise InputError(field, code="not_finite")
     return float(d.scaleb(power))
 
 
 def _row_input(columns: list, cells: list) -> dict:
     if len(cells) > len(columns):
-        raise InputError("row", f"{len(cells)} cells, the header has {len(columns)}")
+        raise InputError("row", code="ragged_row", cells=len(cells), columns=len(columns))
     inp: dict = {}
     for (name, power), cell in zip(columns, cells):
         cell = cell.strip()
@@ -172,7 +177,7 @@ def _row_input(columns: list, cells: list) -> dict:
 def findings_counts(r: dict) -> dict:
     """Review findings per severity (``error``, ``warning``, ``note``) of a report.
 
-    The graded review (issue 9) gives ``review.counts`` (or at least ``review.findings``
+    The graded review gives ``review.counts`` (or at least ``review.findings``
     with a ``severity`` each); a report without one counts its ``warnings``, all of them
     warnings.
     """
@@ -239,19 +244,54 @@ def batch_rows(text: str, start: int = 0, count: int | None = None) -> list:
         try:
             rec.update(_report_cells(report(_row_input(columns, cells))), error="", error_zh="")
         except InputError as e:
-            rec.update(error=f"{e.field}: {e.message}", error_zh=f"{e.field}: {to_zh(e.message)}")
+            rec.update(error=f"{e.field}: {e.message}", error_zh=f"{e.field}: {e.message_zh}")
         out.append(rec)
     return out
 
 
+#: First characters that make a spreadsheet read a cell as a formula (OWASP, CSV injection).
+FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
+_PLAIN_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+
+
+def spreadsheet_safe(cell) -> str:
+    """A CSV cell a spreadsheet shows as text, never runs as a formula.
+
+    A cell starting with ``= + - @``, tab or carriage return gets a leading ``'``
+    (the OWASP rule), unless the whole cell is a plain decimal number such as
+    ``-0.5`` or ``-1e-3``, which stays a number.
+
+    Examples
+    --------
+    >>> for cell in ['=HYPERLINK("http://x","a")', "-1.5e-3", "-1+2", "@SUM(A1)", "seed"]:
+    ...     print(spreadsheet_safe(cell))
+    '=HYPERLINK("http://x","a")
+    -1.5e-3
+    '-1+2
+    '@SUM(A1)
+    seed
+    """
+    text = str(cell)
+    if text.startswith(FORMULA_START) and not _PLAIN_NUMBER.fullmatch(text):
+        return "'" + text
+    return text
+
+
 def to_csv(names: list, rows: list, header: bool = True) -> str:
-    """CSV text of output rows (dicts) in the column order ``names``, header first if asked."""
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, names, restval="", lineterminator="\n")
-    if header:
-        w.writeheader()
-    w.writerows(rows)
-    return buf.getvalue()
+    """CSV text of output rows (dicts) in the column order ``names``, header first if asked.
+
+    Every cell, the header's included, goes through :func:`spreadsheet_safe`.
+    """
+    lines = [[spreadsheet_safe(n) for n in names]] if header else []
+    lines += [[spreadsheet_safe(r.get(n, "")) for n in names] for r in rows]
+    return "".join(",".join(_quoted(c) for c in line) + "\n" for line in lines)
+
+
+def _quoted(cell: str) -> str:
+    # The csv module leaves a lone CR unquoted when the line ends in LF; readers then split there.
+    if any(c in cell for c in ',"\r\n'):
+        return '"' + cell.replace('"', '""') + '"'
+    return cell
 
 
 def batch_csv(text: str) -> str:

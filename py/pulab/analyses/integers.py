@@ -23,7 +23,7 @@ the report (``vendor.LD``, ``current_pi.d.pm_ki``) and gets one status:
 Profiles select the set of integers.  ``inovance`` (alias ``vendor``) is the
 seed's Inovance C2000 code: the ``vendor`` results of seed 1.4 and 2.2 and the
 current-PI integers of seed 2.2-9.  Any other name is looked up in the report's
-``profiles.NAME.constants`` (issue 12's contract), through the full report.
+``profiles.NAME.constants``, through the full report.
 
 Examples
 --------
@@ -45,7 +45,7 @@ from __future__ import annotations
 from ..schema.errors import InputError
 from ..model.gains import pi_integer_ideals
 from ..schema.inputs import normalize
-from ..schema.messages import to_zh
+from ..schema.validate import shown
 from ..report import current_pi_section, input_bases, input_raw, report
 from ..profiles.inovance_code import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS
 
@@ -86,7 +86,7 @@ def _computed(value: int, ideal: float, error_pct: float, flags) -> dict:
 def _failed(e: InputError) -> dict:
     status = "div0" if "divides by zero" in e.message else "invalid"
     return {"status": status, "value": None, "ideal": None, "error_pct": None,
-            "message": f"{e.field}: {e.message}", "message_zh": f"{e.field}: {to_zh(e.message)}"}
+            "message": f"{e.field}: {e.message}", "message_zh": f"{e.field}: {e.message_zh}"}
 
 
 def _pi_integers(n: dict, out: dict, names) -> None:
@@ -157,11 +157,11 @@ def _inovance(inp: dict, only) -> dict:
 
 
 def _from_report(inp: dict, profile: str, only) -> dict:
-    # Issue 12's profiles are computed only when the input asks (a "profiles" section).
+    # Profiles are computed only when the input asks (a "profiles" section).
     r = report({**inp, "profiles": inp.get("profiles") or {}})
     constants = r.get("profiles", {}).get(profile, {}).get("constants")
     if constants is None:
-        raise InputError("sweep.profile", f"unknown profile {profile!r}")
+        raise InputError("sweep.profile", code="unknown_profile", got=shown(profile))
     out = {}
     for key, c in constants.items():
         name = f"profiles.{profile}.constants.{key}"

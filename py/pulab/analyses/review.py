@@ -28,7 +28,7 @@ from __future__ import annotations
 
 import math
 
-from ..schema.messages import to_zh
+from ..schema.catalog import render
 from ..profiles.inovance_code import RAW_FIELDS, raw_source
 
 __all__ = ["THRESHOLDS", "SEVERITIES", "grade", "review", "headroom"]
@@ -66,11 +66,14 @@ def grade(value: float, bounds: dict) -> str | None:
 
 
 def _finding(out: list, severity: str | None, code: str, key: str, field: str,
-             value, message: str) -> None:
+             value, text: str | None = None, /, **params) -> None:
+    """Add a finding; its words are catalog entry ``finding.<text or code>`` with ``params``."""
     if severity is None:
         return
+    entry = f"finding.{text or code}"
     out.append({"severity": severity, "code": code, "key": key, "field": field,
-                "value": value, "message": message, "message_zh": to_zh(message)})
+                "value": value, "message": render(entry, params, "en"),
+                "message_zh": render(entry, params, "zh")})
 
 
 def headroom(n: dict, vendor: dict) -> dict:
@@ -130,14 +133,12 @@ def _constants(f: list, vendor: dict, unit: str) -> None:
         field = "conventions.inductance_unit" if "unit_uH" in res["flags"] \
             else _CONSTANT_FIELD[name]
         if {"wrap", "store"} & set(res["flags"]):
-            _finding(f, "error", "constant_wrap", key, field, res["value"],
-                     f"vendor.{name} = {res['value']}: the firmware arithmetic wrapped "
-                     f"(exact value {res['ideal']:.6g}); change {field}")
+            _finding(f, "error", "constant_wrap", key, field, res["value"], name=name,
+                     value=res["value"], ideal=res["ideal"], field=field)
         else:
             _finding(f, grade(res["error_pct"], q), "constant_error", key, field,
-                     res["error_pct"],
-                     f"vendor.{name} = {res['value']} is {res['error_pct']:+.3g} % off the "
-                     f"exact value {res['ideal']:.6g}; change {field}")
+                     res["error_pct"], name=name, value=res["value"], pct=res["error_pct"],
+                     ideal=res["ideal"], field=field)
 
 
 def _raw_rounding(f: list, n: dict, raw: dict) -> None:
@@ -150,14 +151,13 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         si = n[section][key]
         exact = si * scale
         if raw[name] == 0:
-            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", path, 0,
-                     f"raw.{name} = 0: {path} = {si:g} is below the firmware resolution")
+            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", path, 0, name=name, path=path,
+                     si=si)
             continue
         pct = 100.0 * (raw[name] - exact) / exact
         _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
-                 f"vendor.raw.{name}", path, pct,
-                 f"raw.{name} = {raw[name]}: rounding {path} = {si:g} to the firmware unit "
-                 f"changes it by {pct:+.2f} %")
+                 f"vendor.raw.{name}", path, pct, name=name, value=raw[name], path=path, si=si,
+                 pct=pct)
 
 
 def _pi(f: list, n: dict, pi: dict) -> None:
@@ -166,17 +166,14 @@ def _pi(f: list, n: dict, pi: dict) -> None:
     for axis in ("d", "q"):
         g = pi[axis]
         if g["pm_ki"] == 0:
-            _finding(f, "error", "pi_zero", f"current_pi.{axis}.pm_ki", field, 0,
-                     f"current_pi.{axis}.pm_ki rounds to 0: the integral action is lost "
-                     f"(ki·Ts is below one Q16 LSB of the per-unit gain)")
+            _finding(f, "error", "pi_zero", f"current_pi.{axis}.pm_ki", field, 0, axis=axis)
         for k in ("kp", "ki"):
             if g[f"pm_{k}"] == 0 or loop["method"] == "integers":
                 continue  # given integers are exact by definition
             pct = 100.0 * (g["from_integers"][k] - g[k]) / g[k]
             _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "pi_rounding",
-                     f"current_pi.{axis}.pm_{k}", "current_loop.bandwidth_hz", pct,
-                     f"current_pi.{axis}.pm_{k} = {g[f'pm_{k}']}: coarse, rounding changes "
-                     f"{k} by {pct:+.1f} %")
+                     f"current_pi.{axis}.pm_{k}", "current_loop.bandwidth_hz", pct, axis=axis,
+                     k=k, value=g[f"pm_{k}"], pct=pct)
 
 
 def _wc_ts(f: list, n: dict, pi: dict) -> None:
@@ -191,15 +188,11 @@ def _wc_ts(f: list, n: dict, pi: dict) -> None:
         else f"current_loop.{'kp' if loop['method'] == 'manual' else 'pm_kp'}"
     ok_hz = limit["warning"] / (2.0 * math.pi * ts)
     if sev == "error":
-        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts,
-                 f"current-loop ω_c·Ts = {wc_ts:.3f} ≥ {limit['error']:g}: the 1.5·Ts loop "
-                 f"delay leaves a phase margin below 5°; lower the bandwidth to {ok_hz:.4g} Hz "
-                 f"or less ({field})")
+        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts, "wc_ts_error",
+                 wc_ts=wc_ts, limit=limit["error"], ok_hz=ok_hz, field=field)
     elif sev == "warning":
-        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts,
-                 f"current-loop ω_c·Ts = {wc_ts:.3f} > {limit['warning']:g}: the "
-                 f"continuous-time design is far from the discrete loop's behaviour; lower "
-                 f"the bandwidth to {ok_hz:.4g} Hz or less ({field})")
+        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts, "wc_ts_warning",
+                 wc_ts=wc_ts, limit=limit["warning"], ok_hz=ok_hz, field=field)
 
 
 def _base_frequency(f: list, raw: dict) -> None:
@@ -207,10 +200,7 @@ def _base_frequency(f: list, raw: dict) -> None:
     # typed 633.33 Hz vs 633.333 Hz that both store 63333 is no finding.
     if raw["FullFreq01"] < raw["FreqRated01"]:
         _finding(f, "warning", "base_below_rated", "vendor.FreqPer.value", "drive.base_freq_hz",
-                 raw["FullFreq01"],
-                 f"raw.FullFreq01 = {raw['FullFreq01']} < raw.FreqRated01 = "
-                 f"{raw['FreqRated01']}: base frequency below rated frequency, FreqPer > 1.0 "
-                 f"in Q15; raise drive.base_freq_hz to motor.rated_freq_hz or more")
+                 raw["FullFreq01"], full=raw["FullFreq01"], rated=raw["FreqRated01"])
 
 
 def _voltage(f: list, h: dict, n: dict) -> None:
@@ -223,26 +213,17 @@ def _voltage(f: list, h: dict, n: dict) -> None:
 
     if lim <= 0 or ratio(h["need_rated_fn_v"]) > THRESHOLDS["voltage_ratio"]["warning"]:
         _finding(f, "warning", "voltage_rated", "review.headroom.need_rated_fn_v", "drive.udc_v",
-                 ratio(h["need_rated_fn_v"]),
-                 f"at rated current and rated frequency the motor needs "
-                 f"{h['need_rated_fn_v']:.4g} V (line RMS), above the voltage limit "
-                 f"{lim:.4g} V; raise drive.udc_v")
+                 ratio(h["need_rated_fn_v"]), need=h["need_rated_fn_v"], limit=lim)
     if h["field_weakening_from_hz"] is not None:
         # Above the rated frequency, field weakening is the usual constant-power range;
         # below it the motor cannot reach its rated speed without it.
         below_rated = h["field_weakening_from_hz"] < n["motor"]["rated_freq_hz"]
         _finding(f, "warning" if below_rated else "note", "voltage_bemf", "review.headroom.bemf_fb_v", "drive.base_freq_hz",
-                 ratio(h["bemf_fb_v"]),
-                 f"back-EMF at f_b = {f_b:g} Hz is {h['bemf_fb_v']:.4g} V (line RMS), above "
-                 f"the voltage limit {lim:.4g} V: field weakening needed above "
-                 f"{h['field_weakening_from_hz']:.4g} Hz; raise drive.udc_v or lower "
-                 f"drive.base_freq_hz")
+                 ratio(h["bemf_fb_v"]), f_b=f_b, bemf=h["bemf_fb_v"], limit=lim,
+                 from_hz=h["field_weakening_from_hz"])
     elif h["field_weakening"]:
         _finding(f, "note", "voltage_fb", "review.headroom.need_rated_fb_v", "drive.base_freq_hz",
-                 ratio(h["need_rated_fb_v"]),
-                 f"at rated current and f_b = {f_b:g} Hz the motor needs "
-                 f"{h['need_rated_fb_v']:.4g} V (line RMS), above the voltage limit "
-                 f"{lim:.4g} V: full current up to f_b needs field weakening")
+                 ratio(h["need_rated_fb_v"]), f_b=f_b, need=h["need_rated_fb_v"], limit=lim)
 
 
 def _pll(f: list, sim: dict | None) -> None:
@@ -255,14 +236,11 @@ def _pll(f: list, sim: dict | None) -> None:
         key = f"sim.pll.metrics.{variant}"
         if not m["locked"]:
             _finding(f, "error", "pll_unlocked", f"{key}.locked", "pll.bandwidth_hz", False,
-                     f"{key}: not locked (|θ − θ̂| ≥ 2° in the last 20 % of the run); change "
-                     f"pll.bandwidth_hz")
+                     key=key)
         elif m.get("steady_angle_error_deg") is not None:
             x = m["steady_angle_error_deg"]
             _finding(f, grade(x, THRESHOLDS["pll_steady_deg"]), "pll_steady",
-                     f"{key}.steady_angle_error_deg", "pll.bandwidth_hz", x,
-                     f"{key}.steady_angle_error_deg = {x:.3g}°: angle error after lock; "
-                     f"change pll.bandwidth_hz")
+                     f"{key}.steady_angle_error_deg", "pll.bandwidth_hz", x, key=key, value=x)
         return  # the firmware's variant when present, else the next one
 
 
@@ -293,14 +271,9 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None) 
     _voltage(f, h, n)
     _pll(f, sim)
     if unit == "uH":
-        _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit,
-                 "LD/LQ taken in µH: the vendor code was written for 0.01 mH, so "
-                 "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (seed 1.4-6, the '×10' "
-                 "puzzle)")
+        _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":
-        _finding(f, "note", "custom_bases", "base.U_b", "conventions.base", "custom",
-                 "custom bases: the vendor integers (Rpm, LD, …) always use the Inovance rms "
-                 "bases U_LL/√3 and I_rms; the PI integers use the custom bases")
+        _finding(f, "note", "custom_bases", "base.U_b", "conventions.base", "custom")
     f.sort(key=lambda x: SEVERITIES.index(x["severity"]))
     return {"findings": f, "counts": {s: sum(x["severity"] == s for x in f) for s in SEVERITIES},
             "thresholds": THRESHOLDS, "headroom": h}

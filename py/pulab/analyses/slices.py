@@ -1,4 +1,4 @@
-"""Resumable computations: generators that yield between slices of work (issue 14).
+"""Resumable computations: generators that yield between slices of work.
 
 A long simulation runs as a generator that yields ``None`` every
 :data:`SLICE_STEPS` controller periods and finally returns its result.  The

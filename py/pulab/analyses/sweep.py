@@ -38,11 +38,15 @@ Examples
 
 from __future__ import annotations
 
+import math
+
 from typing import NamedTuple
 
 from ..schema.errors import InputError
-from ..schema.inputs import _CHOICES, SECTIONS, real
-from ..schema.messages import to_zh
+from ..schema.fields import FIELD
+from .loop.inputs import validate as check_analysis
+from ..schema.inputs import SECTIONS
+from ..schema.validate import object_fields, real, shown
 from .integers import RAW_ONLY_NAMES, STATUSES, evaluate, integer_names, profile_name
 from ..profiles.inovance_code import raw_value, round_half_away
 
@@ -86,31 +90,35 @@ class Plan(NamedTuple):
 
 def _axis(spec, field: str) -> Axis:
     if not isinstance(spec, dict):
-        raise InputError(field, "must be an object")
-    for key in spec:
-        if key not in ("path", "start", "stop", "n", "scale"):
-            raise InputError(f"{field}.{key}", "unknown field (expected one of: path, start, "
-                             "stop, n, scale)")
+        raise InputError(field, code="not_object", got=shown(spec))
+    object_fields(spec, field, ("path", "start", "stop", "n", "scale"))
     path = spec.get("path")
     section, _, key = path.partition(".") if isinstance(path, str) else ("", "", "")
-    if key not in SECTIONS.get(section, ()) or path in _CHOICES:
-        raise InputError(f"{field}.path", f"not a numeric input path: {path!r}")
+    if key not in SECTIONS.get(section, ()) or FIELD[path].kind not in ("number", "integer"):
+        raise InputError(f"{field}.path", code="not_numeric_path", got=shown(path))
     start = real(spec.get("start"), f"{field}.start")
     stop = real(spec.get("stop"), f"{field}.stop")
     n = spec.get("n", 200)
     if isinstance(n, bool) or not isinstance(n, int) or not 2 <= n <= MAX_AXIS_POINTS:
-        raise InputError(f"{field}.n", f"must be 2..{MAX_AXIS_POINTS}, got {n!r}")
+        raise InputError(f"{field}.n", code="integer_range", lo=2, hi=MAX_AXIS_POINTS, got=shown(n))
     scale = spec.get("scale", "linear")
     if scale not in _SCALES:
-        raise InputError(f"{field}.scale", f"must be one of {', '.join(_SCALES)}, got {scale!r}")
+        raise InputError(f"{field}.scale", code="not_choice", choices=", ".join(_SCALES),
+                         got=shown(scale))
     if scale == "log":
         for name, v in (("start", start), ("stop", stop)):
             if v <= 0:
-                raise InputError(f"{field}.{name}", f"must be > 0 for a log scale, got {v:g}")
+                raise InputError(f"{field}.{name}", code="log_not_positive", value=v)
         ratio = stop / start
-        values = [start * ratio ** (k / (n - 1)) for k in range(n)]
-    else:
+        if math.isfinite(ratio):
+            values = [start * ratio ** (k / (n - 1)) for k in range(n)]
+        else:  # the ratio overflows: interpolate the logarithms
+            lo, hi = math.log(start), math.log(stop)
+            values = [math.exp(lo * (1 - k / (n - 1)) + hi * (k / (n - 1))) for k in range(n)]
+    elif math.isfinite((stop - start) * (n - 1)):
         values = [start + (stop - start) * k / (n - 1) for k in range(n)]
+    else:  # the span times k overflows: weighted sums stay finite
+        values = [start * (1 - k / (n - 1)) + stop * (k / (n - 1)) for k in range(n)]
     values[-1] = stop  # exactly the range asked for, whatever the rounding above
     integer = section == "raw" or path in _INTEGER_PATHS
     if integer:
@@ -136,26 +144,31 @@ def make_plan(req: dict) -> Plan:
         Naming ``sweep.x.start`` etc. (the base input is checked point by point instead).
     """
     if not isinstance(req, dict):
-        raise InputError("sweep", "must be an object")
+        raise InputError("sweep", code="not_object", got=shown(req))
     inp = req.get("input")
     if not isinstance(inp, dict):
-        raise InputError("input", "must be a JSON object")
+        raise InputError("input", code="not_json_object")
+    # Simulations do not change a firmware integer: dropped, not echoed with each worst case.
+    inp = {k: v for k, v in inp.items() if k != "sim"}
+    # The loop analysis is echoed too but checked by no point of an Inovance sweep.
+    check_analysis(inp.get("analysis"))
     x = _axis(req.get("x"), "sweep.x")
     y = None if req.get("y") is None else _axis(req["y"], "sweep.y")
     if y is not None and y.path == x.path:
-        raise InputError("sweep.y.path", f"must differ from sweep.x.path ({x.path})")
-    profile = profile_name(req.get("profile"))
-    if not isinstance(profile, str):
-        raise InputError("sweep.profile", f"unknown profile {profile!r}")
+        raise InputError("sweep.y.path", code="same_as", other="sweep.x.path", value=x.path)
+    profile = req.get("profile")
+    if profile is not None and not isinstance(profile, str):
+        raise InputError("sweep.profile", code="unknown_profile", got=shown(profile))
+    profile = profile_name(profile)
     try:
         names = integer_names(inp, profile)
     except InputError as e:
         if e.field == "sweep.profile":
             raise
-        raise InputError("sweep.profile", f"unknown profile {profile!r}") from None
+        raise InputError("sweep.profile", code="unknown_profile", got=shown(profile)) from None
     plan = Plan(inp, x, y, profile, names)
     if plan.total > MAX_POINTS:
-        raise InputError("sweep", f"the sweep has {plan.total} points; at most {MAX_POINTS}")
+        raise InputError("sweep", code="too_many_points", total=plan.total, limit=MAX_POINTS)
     return plan
 
 
@@ -188,7 +201,7 @@ def _evaluate(plan: Plan, inp: dict, only=None) -> _Point:
     except InputError as err:
         msg = f"{err.field}: {err.message}"
         failed = {"status": "invalid", "value": None, "ideal": None, "error_pct": None,
-                  "message": msg, "message_zh": f"{err.field}: {to_zh(err.message)}"}
+                  "message": msg, "message_zh": f"{err.field}: {err.message_zh}"}
         return _Point({name: failed for name in (only or plan.names)}, None, {}, msg,
                       failed["message_zh"])
     return _Point(e["integers"], e["raw"], e["intermediates"], None, None,
@@ -299,11 +312,12 @@ def chunk(plan: Plan, start: int = 0, count: int | None = None) -> dict:
     """
     total = plan.total
     if isinstance(start, bool) or not isinstance(start, int) or not 0 <= start <= total:
-        raise InputError("sweep.chunk.start", f"must be 0..{total}, got {start!r}")
+        raise InputError("sweep.chunk.start", code="integer_range", lo=0, hi=total, got=shown(start))
     if count is None:
         count = total - start
     if isinstance(count, bool) or not isinstance(count, int) or not 0 <= count <= total - start:
-        raise InputError("sweep.chunk.count", f"must be 0..{total - start}, got {count!r}")
+        raise InputError("sweep.chunk.count", code="integer_range", lo=0, hi=total - start,
+                         got=shown(count))
     nx = len(plan.x.values)
     ys = plan.y.values if plan.y else (None,)
     cache: dict = {}
@@ -398,7 +412,7 @@ def merge(plan: Plan, summaries: list) -> dict:
         return _merge(plan, summaries)
     except (KeyError, TypeError, AttributeError, ValueError):
         # Summaries come back from a page: anything but chunk summaries of this plan is refused.
-        raise InputError("sweep.summaries", "must be a list of chunk summaries") from None
+        raise InputError("sweep.summaries", code="summaries_list") from None
 
 
 def _new_stats(plan: Plan) -> dict:

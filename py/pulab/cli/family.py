@@ -22,6 +22,7 @@ import sys
 
 from ..schema.errors import InputError
 from ..schema.jsontext import parse
+from ..schema.validate import shown
 
 __all__ = ["add_family_commands", "read_text", "read_json", "parse_axis", "format_sweep_text",
            "sweep_csv"]
@@ -40,11 +41,11 @@ def read_text(path: str) -> str:
             with open(path, "rb") as f:
                 data = f.read()
     except OSError as e:
-        raise InputError("input", f"cannot read {path!a}: {e.strerror}") from None
+        raise InputError("input", code="cannot_read", path=ascii(path), why=e.strerror) from None
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as e:
-        raise InputError("input", f"not UTF-8 text (byte {e.start})") from None
+        raise InputError("input", code="not_utf8", byte=e.start) from None
 
 
 def read_json(path: str):
@@ -70,7 +71,7 @@ def parse_axis(text: str, field: str) -> dict:
             else:
                 axis["n"] = int(p)
     except ValueError:
-        raise InputError(field, f"expected PATH=START:STOP[:N][:log], got {text!r}") from None
+        raise InputError(field, code="axis_syntax", got=shown(text)) from None
     return axis
 
 

@@ -12,6 +12,7 @@ import json
 import sys
 
 from ..schema.errors import InputError
+from ..schema.validate import shown
 from ..ctrace.tracing import trace
 from ..ctrace.types import TARGETS
 
@@ -41,7 +42,7 @@ def parse_sets(items: list) -> dict:
     for item in items:
         name, eq, value = item.partition("=")
         if not eq or not name.strip():
-            raise InputError("set", f"--set needs NAME=VALUE, got {item!r}")
+            raise InputError("set", code="set_syntax", got=shown(item))
         out[name.strip()] = value
     return out
 
@@ -64,8 +65,8 @@ def trace_main(args: argparse.Namespace) -> int:
             try:
                 gq = int(args.global_q)
             except ValueError:
-                raise InputError("global_q", f"must be an integer 1..30, got "
-                                             f"{args.global_q!r}") from None
+                raise InputError("global_q", code="integer_range", lo=1, hi=30,
+                                 got=shown(args.global_q)) from None
         result = trace(code, args.target, parse_sets(args.set), gq)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)

@@ -1,4 +1,4 @@
-"""A C-subset interpreter with each target's exact integer semantics (issue 10).
+"""A C-subset interpreter with each target's exact integer semantics.
 
 Paste firmware scaling code, pick a target, give the inputs: :func:`trace`
 returns every intermediate value with its C type after the usual arithmetic

@@ -17,6 +17,7 @@ from .evaluate import Evaluator, hex_of
 from .parser import parse
 from .types import TARGETS
 from ..schema.errors import InputError
+from ..schema.validate import key_path, shown
 
 __all__ = ["trace", "trace_checked", "compile_code", "run_checked", "DEFAULT_GLOBAL_Q"]
 
@@ -35,10 +36,11 @@ def compile_code(code: str, target: str = "c28x") -> Checked:
 def _input_values(checked: Checked, inputs: dict) -> dict:
     out = {}
     for name, value in inputs.items():
-        field = f"set.{name}"
+        field = key_path("set", name)
         sym = checked.symbols.get(name)
         if sym is None:
-            raise InputError(field, f"no variable {name} is declared in the code")
+            shown_name = name if field == f"set.{name}" else shown(name)
+            raise InputError(field, f"no variable {shown_name} is declared in the code")
         if sym.initialized:
             raise InputError(field, f"{name} has an initializer in the code")
         if isinstance(value, str):

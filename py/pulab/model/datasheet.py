@@ -33,22 +33,19 @@ from __future__ import annotations
 
 import math
 
-from ..schema import inputs as _inputs  # module, not names: inputs imports this module
 from ..schema.errors import InputError
+from ..schema.fields import FIELD, section_fields
+from ..schema.validate import value
 
 __all__ = ["FIELDS", "KE_FIELDS", "apply", "mechanical"]
 
 SQRT2 = math.sqrt(2.0)
 SQRT3 = math.sqrt(3.0)
 
-#: Datasheet keys; units in the names (contract "Datasheet entry").
-FIELDS = ("speed_rpm", "ke_v_per_krpm", "ke_v_s_per_rad", "ke_measure", "kt_nm_per_a",
-          "kt_current", "psi_wb", "rs_line_ohm", "l_line_h", "ld_line_h", "lq_line_h",
-          "winding", "dc_bus_v")
+#: Datasheet keys; units in the names (the schema's ``datasheet`` section).
+FIELDS = tuple(f.key for f in section_fields("datasheet"))
 #: The back-EMF sources, in order of preference; more than one is an error.
 KE_FIELDS = ("ke_v_per_krpm", "ke_v_s_per_rad", "kt_nm_per_a", "psi_wb")
-_CHOICES = {"ke_measure": ("rms", "peak"), "kt_current": ("rms", "peak"),
-            "winding": ("star", "delta")}
 #: Which motor field each datasheet value sets (for the "both given" error).
 _SETS = {"speed_rpm": ("rated_freq_hz",), "ke_v_per_krpm": ("bemf_v",),
          "ke_v_s_per_rad": ("bemf_v",), "kt_nm_per_a": ("bemf_v",), "psi_wb": ("bemf_v",),
@@ -57,27 +54,16 @@ _SETS = {"speed_rpm": ("rated_freq_hz",), "ke_v_per_krpm": ("bemf_v",),
 
 
 def _positive(ds: dict, key: str) -> float:
-    v = ds[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise InputError(f"datasheet.{key}", f"must be a number, got {_inputs.shown(v)}")
-    v = float(v)
-    if not math.isfinite(v):
-        raise InputError(f"datasheet.{key}", "must be finite")
-    if v <= 0:
-        raise InputError(f"datasheet.{key}", f"must be > 0, got {v:g}")
-    if not 1e-9 <= v <= 1e9:
-        raise InputError(f"datasheet.{key}", f"must be between 1e-09 and 1e+09, got {v:g}")
-    return v
+    return value(FIELD[f"datasheet.{key}"], ds[key])
 
 
-def _choice(ds: dict, key: str, default: str | None) -> str:
-    v = ds.get(key, default)
-    if v is None:
-        raise InputError(f"datasheet.{key}", f"is required (one of {', '.join(_CHOICES[key])})")
-    if v not in _CHOICES[key]:
-        raise InputError(f"datasheet.{key}", f"must be one of {', '.join(_CHOICES[key])}, "
-                         f"got {_inputs.shown(v)}")
-    return v
+def _choice(ds: dict, key: str) -> str:
+    f = FIELD[f"datasheet.{key}"]
+    if key in ds:
+        return value(f, ds[key])
+    if f.default is None:
+        raise InputError(f.path, code="required_choice", choices=", ".join(f.choices))
+    return f.default
 
 
 def _step(field: str, label: str, label_zh: str, formula: str, value: float, unit: str,
@@ -118,26 +104,21 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
         if key in ds:
             for t in targets:
                 if t in motor:
-                    raise InputError(f"datasheet.{key}", f"and motor.{t} both given; "
-                                     "give one of them")
+                    raise InputError(f"datasheet.{key}", code="both_given", other=f"motor.{t}")
     sources = [k for k in KE_FIELDS if k in ds]
     if len(sources) > 1:
-        raise InputError(f"datasheet.{sources[1]}", f"and datasheet.{sources[0]} both give "
-                         "the back-EMF; give one of them")
+        raise InputError(f"datasheet.{sources[1]}", code="both_bemf", other=f"datasheet.{sources[0]}")
     if "ke_measure" in ds and not {"ke_v_per_krpm", "ke_v_s_per_rad"} & set(ds):
-        raise InputError("datasheet.ke_measure", "is only used with datasheet.ke_v_per_krpm "
-                         "or ke_v_s_per_rad")
+        raise InputError("datasheet.ke_measure", code="used_with_either",
+                         a="datasheet.ke_v_per_krpm", b="ke_v_s_per_rad")
     if "kt_current" in ds and "kt_nm_per_a" not in ds:
-        raise InputError("datasheet.kt_current", "is only used with datasheet.kt_nm_per_a")
+        raise InputError("datasheet.kt_current", code="used_with", other="datasheet.kt_nm_per_a")
     conv: list = []
     p = motor.get("pole_pairs")
     if "speed_rpm" in ds or sources:
         if p is None:
-            raise InputError("motor.pole_pairs", "is required")
-        if isinstance(p, bool) or not isinstance(p, (int, float)) or \
-                (isinstance(p, float) and not p.is_integer()) or not 1 <= p <= 1000:
-            raise InputError("motor.pole_pairs", f"must be 1..1000, got {_inputs.shown(p)}")
-        p = int(p)
+            raise InputError("motor.pole_pairs", code="required")
+        p = value(FIELD["motor.pole_pairs"], p)
     if "speed_rpm" in ds:
         n = _positive(ds, "speed_rpm")
         motor["rated_freq_hz"] = n * p / 60.0
@@ -146,18 +127,16 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
                           ["datasheet.speed_rpm", "motor.pole_pairs"]))
     if sources:
         if "rated_freq_hz" not in motor:
-            raise InputError("datasheet.speed_rpm", f"is required to convert datasheet."
-                             f"{sources[0]} (or give motor.rated_freq_hz)")
-        f_n = motor["rated_freq_hz"]
-        if isinstance(f_n, bool) or not isinstance(f_n, (int, float)) or not \
-                (math.isfinite(f_n) and f_n > 0):
-            raise InputError("motor.rated_freq_hz", f"must be > 0, got {_inputs.shown(f_n)}")
+            raise InputError("datasheet.speed_rpm", code="required_to_convert",
+                             source=f"datasheet.{sources[0]}", other="motor.rated_freq_hz")
+        # Only the sign here: a value out of range is named where it came from, by normalize.
+        f_n = value(FIELD["motor.rated_freq_hz"]._replace(lo=None, hi=None), motor["rated_freq_hz"])
         n = 60.0 * f_n / p  # rpm at rated frequency
         w_m = 2.0 * math.pi * n / 60.0
         src = sources[0]
         x = _positive(ds, src)
         if src in ("ke_v_per_krpm", "ke_v_s_per_rad"):
-            measure = _choice(ds, "ke_measure", None)
+            measure = _choice(ds, "ke_measure")
             k = 1.0 if measure == "rms" else 1.0 / SQRT2
             if src == "ke_v_per_krpm":
                 e = x * n / 1000.0 * k
@@ -169,7 +148,7 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
                           + ("" if k == 1 else "/√2")
             sources_used = [f"datasheet.{src}", "datasheet.ke_measure"]
         elif src == "kt_nm_per_a":
-            k = 1.0 if _choice(ds, "kt_current", "rms") == "rms" else SQRT2
+            k = 1.0 if _choice(ds, "kt_current") == "rms" else SQRT2
             e = x * k / SQRT3 * w_m
             formula = f"E_LL = kT{'' if k == 1 else '·√2'}/√3·2π·n/60 = {_g(x)}" \
                       f"{'' if k == 1 else '·√2'}/√3·2π·{_g(n)}/60"
@@ -183,14 +162,13 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
                           "额定频率下的线反电势（有效值）", formula, e, "V",
                           sources_used + (["datasheet.speed_rpm"] if "speed_rpm" in ds
                                           else ["motor.rated_freq_hz"]) + ["motor.pole_pairs"]))
-    winding = _choice(ds, "winding", "star")
+    winding = _choice(ds, "winding")
     if "winding" in ds and not {"rs_line_ohm", "l_line_h", "ld_line_h", "lq_line_h"} & set(ds):
-        raise InputError("datasheet.winding", "is only used with datasheet.rs_line_ohm or "
-                         "l_line_h")
+        raise InputError("datasheet.winding", code="used_with_either", a="datasheet.rs_line_ohm",
+                         b="l_line_h")
     if "l_line_h" in ds and ({"ld_line_h", "lq_line_h"} & set(ds)):
         other = "ld_line_h" if "ld_line_h" in ds else "lq_line_h"
-        raise InputError(f"datasheet.{other}", "and datasheet.l_line_h both given; give one "
-                         "of them")
+        raise InputError(f"datasheet.{other}", code="both_given", other="datasheet.l_line_h")
     delta = "" if winding == "star" else "  (delta: R_Δ = 3·R_LL/2, star equivalent R_Δ/3)"
     for key, fields, sym in (("rs_line_ohm", ("rs_ohm",), "R"), ("l_line_h", ("ld_h", "lq_h"), "L"),
                              ("ld_line_h", ("ld_h",), "L_d"), ("lq_line_h", ("lq_h",), "L_q")):

@@ -59,8 +59,7 @@ def current_pi_si(method: str, rs_ohm: float, l_h: float, bandwidth_hz: float,
         w = 2.0 * math.pi * bandwidth_hz
         k = 2.0 * damping * w * l_h - rs_ohm
         if k <= 0:
-            raise InputError("current_loop.bandwidth_hz",
-                             f"too low for damping design: kp = 2ζω0·L − Rs = {k:.4g} Ω ≤ 0")
+            raise InputError("current_loop.bandwidth_hz", code="damping_kp_low", kp=k)
         return k, w * w * l_h
     return float(kp), float(ki)
 
@@ -81,7 +80,7 @@ def gains_from_integers(pm_kp: int, pm_ki: int, u_b: float, i_b: float,
 def _int32(x: float, what: str) -> int:
     v = round_half_away(x)
     if not INT32_MIN <= v <= INT32_MAX:
-        raise InputError("current_loop", f"{what} = {v} does not fit a 32-bit long")
+        raise InputError("current_loop", code="long_overflow", what=what, value=v)
     return v
 
 

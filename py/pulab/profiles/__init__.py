@@ -28,7 +28,8 @@ from __future__ import annotations
 
 from ..model.bases import flux_linkage
 from ..schema.errors import InputError
-from ..schema.inputs import _integer, object_fields, real, shown  # the report's own checks
+from ..schema.fields import Field
+from ..schema.validate import integer, object_fields, shown, value
 from . import inovance, microchip, nxp, st, ti
 from .common import SQRT2
 
@@ -41,6 +42,8 @@ MODULES = {"inovance": inovance, "ti": ti, "nxp": nxp, "st": st, "microchip": mi
 _INTEGERS = {"global_q": (1, 30), "f1": (1, 32767), "tf_kpdiv": (1, 32768),
              "tf_kidiv": (1, 32768)}
 _BOOLEANS = {"trapezoidal", "round_u_max"}
+#: Every other option: a positive number in the input's plausibility range.
+_OPTION_NUMBER = Field("profiles.NAME.OPTION", "number", sign=">0", lo=1e-9, hi=1e9)
 
 
 def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
@@ -72,19 +75,14 @@ def _option(name: str, key: str, v):
     path = f"profiles.{name}.{key}"
     if key in _BOOLEANS:
         if not isinstance(v, bool):
-            raise InputError(path, f"must be true or false, got {shown(v)}")
+            raise InputError(path, code="not_flag", got=shown(v))
         return v
     if key in _INTEGERS:
-        v = _integer(v, path, *_INTEGERS[key])
+        v = integer(v, path, *_INTEGERS[key])
         if key.startswith("tf_") and v & (v - 1):
-            raise InputError(path, f"must be a power of two, got {v}")
+            raise InputError(path, code="power_of_two", got=v)
         return v
-    x = real(v, path)
-    if x <= 0:
-        raise InputError(path, f"must be > 0, got {x:g}")
-    if not 1e-9 <= x <= 1e9:
-        raise InputError(path, f"must be between 1e-09 and 1e+09, got {x:g}")
-    return x
+    return value(_OPTION_NUMBER, v, path)
 
 
 def options(section, ctx: dict) -> dict:
@@ -140,7 +138,7 @@ def header(r: dict, name: str) -> str:
         Inovance's header is the report's own (:func:`pulab.export.c_header`).
     """
     if name not in NAMES:
-        raise InputError("profile", f"must be one of {', '.join(NAMES)}, got {shown(name)}")
+        raise InputError("profile", code="not_choice", choices=", ".join(NAMES), got=shown(name))
     if name == "inovance":
         from ..export import c_header
         return c_header(r)

@@ -36,6 +36,7 @@ from typing import NamedTuple
 
 from ..fixedpoint.cint import INT32, UINT16, UINT32, CDivisionByZero, CInt, CType
 from ..schema.errors import InputError
+from ..schema.fields import RAW_FIELDS
 from ..fixedpoint.qformat import iqsat
 
 __all__ = [
@@ -47,9 +48,7 @@ __all__ = [
 SQRT3 = math.sqrt(3.0)
 TWO_PI = 2.0 * math.pi
 
-#: Raw firmware fields, the SI input each comes from, and SI → raw scale.
-RAW_FIELDS = ("Voltage", "Current", "FullFreq01", "FreqRated01", "RsPm", "LD", "LQ",
-              "BemfVolt", "uDCFilter")
+#: The SI input each raw firmware field (the schema's RAW_FIELDS) comes from, and SI → raw scale.
 RAW_SCALE = {
     "Voltage": ("motor.rated_voltage_v", 1.0),
     "Current": ("motor.rated_current_a", 100.0),
@@ -106,8 +105,9 @@ def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
         path = RAW_SCALE[name][0]
         v = given[name] if name in given else raw_value(name, si[path], inductance_unit)
         if not 0 <= v <= 0xFFFF:
-            src = "given" if name in given else f"from {path}"
-            raise InputError(f"raw.{name}", f"{v} ({src}) is outside Uint16 0..65535")
+            if name in given:
+                raise InputError(f"raw.{name}", code="raw_outside_given", value=v)
+            raise InputError(f"raw.{name}", code="raw_outside_from", value=v, source=path)
         raw[name] = v
     return raw
 
@@ -150,7 +150,7 @@ def _divide(a: CInt, b: CInt, field: str, why: str) -> CInt:
     try:
         return a // b
     except CDivisionByZero:
-        raise InputError(f"raw.{field}", f"the firmware divides by zero: {why}") from None
+        raise InputError(f"raw.{field}", code="firmware_div0", why=why) from None
 
 
 def _bases(raw: dict) -> tuple[float, float, float]:
@@ -203,8 +203,8 @@ def inductance(raw: dict, axis: str, unit: str = "10uH") -> dict:
     if base.value == 0:
         # Blame the divisor that made m_BaseL truncate to zero.
         culprit = "Current" if b.trace[0]["value"] == 0 else "FullFreq01"
-        raise InputError(f"raw.{culprit}", "the firmware divides by zero: m_BaseL = "
-                         "Voltage·3678/Current·5000/FullFreq01 = 0")
+        raise InputError(f"raw.{culprit}", code="firmware_div0",
+                         why="m_BaseL = Voltage·3678/Current·5000/FullFreq01 = 0")
     m = b.let("m_Ulong = m_Ulong / m_BaseL;", "m_Ulong", UINT32, m // base,
               "10·L_pu·2^13")
     b.let(f"gMotorExtPer.{name} = m_Ulong / 10; // Q13", f"gMotorExtPer.{name}", UINT16,

@@ -31,7 +31,7 @@ Examples
 from __future__ import annotations
 
 from ..schema.errors import InputError
-from ..schema.inputs import _integer, object_fields, shown  # the report's own checks
+from ..schema.validate import integer, object_fields, shown
 from ..report import report
 from . import MODULES, NAMES, context_of, options
 
@@ -68,10 +68,10 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
         Naming ``translate.from``, ``translate.axis`` or ``translate.values.NAME``.
     """
     if source not in NAMES:
-        raise InputError("translate.from",
-                         f"must be one of {', '.join(NAMES)}, got {shown(source)}")
+        raise InputError("translate.from", code="not_choice", choices=", ".join(NAMES),
+                         got=shown(source))
     if axis not in ("d", "q"):
-        raise InputError("translate.axis", f"must be one of d, q, got {shown(axis)}")
+        raise InputError("translate.axis", code="not_choice", choices="d, q", got=shown(axis))
     mod = MODULES[source]
     kp_name, ki_name = mod.gain_fields(axis)
     given = object_fields(values, "translate.values", (kp_name, ki_name))
@@ -79,10 +79,10 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     ints = {}
     for k in (kp_name, ki_name):
         if k not in given:
-            raise InputError(f"translate.values.{k}", "is required")
-        ints[k] = _integer(given[k], f"translate.values.{k}", lo, hi)
+            raise InputError(f"translate.values.{k}", code="required")
+        ints[k] = integer(given[k], f"translate.values.{k}", lo, hi)
     if ints[kp_name] == 0:
-        raise InputError(f"translate.values.{kp_name}", "must not be 0")
+        raise InputError(f"translate.values.{kp_name}", code="zero")
     # The report without profiles gives the SI context; only the options are needed here,
     # not the five profiles' constants (which cost ten times the rest in Pyodide).
     r = report({k: v for k, v in inp.items() if k != "profiles"})
@@ -94,8 +94,12 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     start = NAMES.index(source)
     order = [NAMES[(start + i) % len(NAMES)] for i in range(1, len(NAMES) + 1)]
     chain, k_p, k_i = [], kp, ki
-    for name in order:
-        step = _encode(name, k_p, k_i, ctx, opts, axis)
+    for prev, name in zip([source] + order, order):
+        try:
+            step = _encode(name, k_p, k_i, ctx, opts, axis)
+        except ZeroDivisionError:  # kp rounded to 0 in `prev`, and TI's series Ki = ki·T/kp
+            raise InputError(f"translate.values.{kp_name}", code="chain_kp_zero",
+                             profile=prev) from None
         step["profile"] = name
         step["drift_pct"] = {"kp": 100.0 * (step["si"]["kp"] - kp) / kp,
                              "ki": 100.0 * (step["si"]["ki"] - ki) / ki if ki else 0.0}

@@ -1,4 +1,18 @@
-"""The one error that bad input produces."""
+"""The one error that bad input produces: a code, the field's JSON path, parameters.
+
+Its text in English and Chinese comes from one catalog (:mod:`.catalog`), so the
+CLI, the JSON API and the page show the same words.
+
+Examples
+--------
+>>> e = InputError("motor.rs_ohm", code="not_positive", value=-1.0)
+>>> e.field, e.code, e.params
+('motor.rs_ohm', 'not_positive', {'value': -1.0})
+>>> e.message, e.message_zh
+('must be > 0, got -1', '必须大于 0，当前为 -1')
+>>> str(e)
+'motor.rs_ohm: must be > 0, got -1'
+"""
 
 __all__ = ["InputError"]
 
@@ -10,11 +24,30 @@ class InputError(ValueError):
     ----------
     field : str
         JSON path of the offending input field, e.g. ``motor.rs_ohm``.
-    message : str
-        What is wrong with it, one line.
+    message : str, optional
+        Free text, for errors that have no catalog code yet (code ``text``; its
+        Chinese comes from :func:`pulab.schema.messages.to_zh`).
+    code : str, optional
+        Catalog code (:data:`pulab.schema.catalog.MESSAGES`); ``params`` fill its text.
     """
 
-    def __init__(self, field: str, message: str) -> None:
-        super().__init__(f"{field}: {message}")
+    def __init__(self, field: str, message: str | None = None, *, code: str | None = None,
+                 **params) -> None:
+        from .catalog import render  # the catalog imports nothing of this module's users
+        if code is None:
+            code, params = "text", {"text": message}
         self.field = field
-        self.message = message
+        self.code = code
+        self.params = params
+        self.message = render(code, params, "en")
+        super().__init__(f"{field}: {self.message}")
+
+    @property
+    def message_zh(self) -> str:
+        """The Chinese text of :attr:`message`."""
+        from .catalog import render
+        return render(self.code, self.params, "zh")
+
+    def as_dict(self) -> dict:
+        """``{"code", "params"}``: the error as data (nested errors included)."""
+        return {"code": self.code, "params": self.params}

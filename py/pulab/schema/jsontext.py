@@ -55,7 +55,7 @@ def parse(text: str, field: str = "input"):
         ``field: not valid JSON: …`` (one line) or ``field: nested deeper than 32 levels``.
     """
     if not isinstance(text, str):
-        raise InputError(field, "not valid JSON: the input is not text")
+        raise InputError(field, code="json_not_text")
     depth = 0
     for m in _TOKEN.finditer(text):
         c = m[0][0]
@@ -63,8 +63,8 @@ def parse(text: str, field: str = "input"):
             continue
         depth += 1 if c in "[{" else -1
         if depth > MAX_DEPTH:
-            raise InputError(field, f"nested deeper than {MAX_DEPTH} levels")
+            raise InputError(field, code="json_too_deep", depth=MAX_DEPTH)
     try:
         return json.loads(text)
     except ValueError as e:  # JSONDecodeError, or an integer literal over 4300 digits
-        raise InputError(field, f"not valid JSON: {' '.join(str(e).split())}") from None
+        raise InputError(field, code="json_invalid", detail=" ".join(str(e).split())) from None

@@ -24,7 +24,7 @@ import re
 import unicodedata
 
 from .errors import InputError
-from .inputs import real, shown
+from .validate import real, shown
 
 __all__ = ["ascii_text", "parse_real", "parse_int"]
 
@@ -43,22 +43,21 @@ def parse_real(v, path: str) -> float:
     if isinstance(v, str):
         s = ascii_text(v)
         if len(s) > 400:
-            raise InputError(path, f"must be a number, got {shown(v)}")
+            raise InputError(path, code="not_number", got=shown(v))
         if re.fullmatch(r"[+-]?\d+,\d{3}", s):
-            raise InputError(path, f"must be a number, got {shown(v)} (ambiguous: a decimal comma "
-                             "or a thousands separator?)")
+            raise InputError(path, code="number_ambiguous", got=shown(v))
         if re.fullmatch(r"[+-]?\d+,\d+", s):
             s = s.replace(",", ".")
         if not re.fullmatch(r"[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?", s):
-            raise InputError(path, f"must be a number, got {shown(v)}")
+            raise InputError(path, code="not_number", got=shown(v))
         return real(float(s), path)
-    raise InputError(path, f"must be a number, got {shown(v)}")
+    raise InputError(path, code="not_number", got=shown(v))
 
 
 def parse_int(v, path: str) -> int:
     """An integer from a JSON integer or a typed string: decimal, ``0x…`` hex, ``0b…`` binary."""
     if isinstance(v, bool):
-        raise InputError(path, f"must be an integer, got {shown(v)}")
+        raise InputError(path, code="not_integer", got=shown(v))
     if isinstance(v, int):
         return v
     if isinstance(v, float) and v.is_integer():
@@ -70,4 +69,4 @@ def parse_int(v, path: str) -> int:
         m = len(s) <= 80 and re.fullmatch(r"([+-]?)(0x[0-9a-f]+|0b[01]+|\d+)", s)
         if m:
             return int(m[1] + m[2], 0)
-    raise InputError(path, f"must be an integer (decimal, 0x… hex or 0b… binary), got {shown(v)}")
+    raise InputError(path, code="not_register", got=shown(v))

@@ -1,4 +1,4 @@
-// Sweep figures (issue 13): 1-D error curves with the chosen integer's status regions and
+// Sweep figures: 1-D error curves with the chosen integer's status regions and
 // boundaries; 2-D status map. Every number drawn comes from pulab.analyses.sweep; nothing is computed here.
 import { h } from '../dom';
 import { t, type Key } from '../i18n';

@@ -2,7 +2,7 @@
 // error message at each field. Edits go into the compute session's input.
 import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
-import { ALL_FIELDS, SECTIONS, effectiveInput, type FieldSpec } from '../fields';
+import { ALL_FIELDS, SECTIONS, effectiveInput, fieldLabel, type FieldSpec } from '../fields';
 import { errText, getLang, has, t, type Key } from '../i18n';
 import type { ApiErr } from '../protocol';
 import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
@@ -11,9 +11,10 @@ import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
 import { checkUnits } from '../state-check';
 
-/** The SI field a raw firmware value was converted from, as Python's message names it. */
+/** The SI field a raw firmware value was converted from (the error's `source` parameter). */
 export function sourceField(e: ApiErr): string | null {
-  return e.field.startsWith('raw.') ? /\(from ([\w.]+)\)/.exec(e.message)?.[1] ?? null : null;
+  const source = e.code === 'raw_outside_from' ? e.params?.source : undefined;
+  return typeof source === 'string' ? source : null;
 }
 
 export class InputForm {
@@ -42,7 +43,7 @@ export class InputForm {
     const input = this.session.input;
     const v = getPath(input, f.path);
     const enabled = f.enabled ? f.enabled(input) : true;
-    const label = h('span', { class: 'lbl' }, t(`f.${f.path}` as Key));
+    const label = h('span', { class: 'lbl' }, fieldLabel(f, getLang()));
     let control: HTMLElement;
     if (f.kind === 'select') {
       control = h('select', { name: f.path, disabled: !enabled, onchange: (ev: Event) => this.onSelect(f, (ev.target as HTMLSelectElement).value) },

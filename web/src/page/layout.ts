@@ -149,7 +149,7 @@ export class Layout {
   /**
    * Render the pure panels `runs` more times into detached elements, one run per idle period (the
    * first builds, the others patch: the code paths of a keystroke). The first keystrokes' renders
-   * ran up to twice as long as later ones: JavaScript not yet optimized by the engine (issue 8).
+   * ran up to twice as long as later ones: JavaScript not yet optimized by the engine.
    */
   private warmRenders(ctx: PanelContext, runs: number): void {
     let bodies: Map<PanelId, HTMLElement> | undefined;
@@ -165,7 +165,7 @@ export class Layout {
    * remove it in the same task (nothing can see its numbers). A page opened without any known
    * numbers (a share link) has only placeholders to lay out while Python boots; its first live
    * render then paid ≈ 0.2–0.3 s of font lookups and text shaping on the main thread. Done here,
-   * that work overlaps the boot (issue 8).
+   * that work overlaps the boot.
    */
   warmUp(ctx: PanelContext): void {
     const host = this.root.querySelector('main.panels');

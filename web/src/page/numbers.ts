@@ -1,4 +1,4 @@
-// Where the numbers on screen come from (issue 8), published as <html data-numbers> (contract:
+// Where the numbers on screen come from, published as <html data-numbers> (contract:
 // docs/contract.md, "Instant start"):
 //   build  — the seed report prerendered by CPython at build time, for the input in the form;
 //   cached — a report kept in localStorage from an earlier visit, for the input in the form;
@@ -6,17 +6,10 @@
 //   stale  — numbers on screen are of an earlier input (typing, an error, Python not ready yet);
 //   none   — no numbers yet.
 import { PULAB_HASH, SEED_KEY, SEED_RESULT } from 'virtual:pulab-build';
-import { effectiveInput } from '../fields';
 import type { Report } from '../report-types';
-import { reportInput, type Input } from '../state';
 import { load, store } from './storage';
 
 export type NumbersSource = 'none' | 'build' | 'cached' | 'live' | 'stale';
-
-/** The JSON text the worker hands to pulab.api.run_json for `input`: the identity of a report. */
-export function reportKey(input: Input): string {
-  return JSON.stringify(reportInput(effectiveInput(input)));
-}
 
 const CACHE_KEY = 'pulab.reports.v1';
 /** Reports kept (newest first): the last input of the page and of a few embeds. */

@@ -1,15 +1,35 @@
 // The compute session: the input in the form, the reports computed from it, and the scheduling
-// of report and simulation calls to the Python workers. Knows nothing of the DOM except the
-// timing attributes on <html> (reportMs, workerMs, renderMs, updateMs: the benchmark reads them).
+// of report and simulation calls to the Python workers. It knows nothing of the DOM: what it
+// publishes (<html data-*>, the address bar, stored input and reports) goes through the
+// SessionEnv it is given (page/env.ts for the page; plain objects in tests/web/session.test.ts).
 import { effectiveInput } from '../fields';
 import { errText, t } from '../i18n';
 import { Superseded, type PulabClient } from '../rpc';
 import type { ApiErr } from '../protocol';
 import type { Report } from '../report-types';
-import { STORAGE_KEY, decodeUnits, encodeHash, initialInput, reportInput, simInput, type Input } from '../state';
-import { store } from './storage';
-import { mark } from './marks';
-import { keepReport, knownReport, reportKey, showSource, type NumbersSource } from './numbers';
+import { decodeUnits, encodeHash, initialInput, reportKey, simInput, type Input } from '../state';
+import type { NumbersSource } from './numbers';
+
+/** What the session needs from the page around it. */
+export interface SessionEnv {
+  /** <html data-*>: the timings (reportMs, workerMs, renderMs, updateMs) and counters
+   * (busy, simPosted, simDone, simSuperseded) that the benchmark and tests read. */
+  attrs: Record<string, string | undefined>;
+  /** Publish where the numbers on screen come from (<html data-numbers>). */
+  showSource(source: NumbersSource): void;
+  /** Record the first time of a boot step (<html data-t-…>). */
+  mark(step: string): void;
+  /** A report known without Python (prerendered or cached) for a report key, and keeping one. */
+  known(key: string): { report: Report; source: 'build' | 'cached' } | null;
+  keep(key: string, report: Report): void;
+  /** The address bar's fragment, and replacing it without a history entry. */
+  hash(): string;
+  replaceHash(hash: string): void;
+  /** Keep the input for the next visit. */
+  storeInput(json: string): void;
+  /** Call `retry` when the network comes back. */
+  onOnline(retry: () => void): void;
+}
 
 /** What the page does when the session's state changes. */
 export interface SessionEvents {
@@ -70,11 +90,11 @@ export class ComputeSession {
   private wroteHash: string | null = null;
   private simTimer: ReturnType<typeof setTimeout> | undefined;
 
-  constructor(input: Input, private embed: boolean, private events: SessionEvents) {
+  constructor(input: Input, private embed: boolean, private events: SessionEvents, private env: SessionEnv) {
     this.input = input;
     this.paintKnown(reportKey(input));
     // A simulation that failed for want of a network is tried again when it returns.
-    window.addEventListener('online', () => {
+    env.onOnline(() => {
       if (this.simWorkerFailed) this.retrySim();
     });
   }
@@ -98,7 +118,7 @@ export class ComputeSession {
 
   /** Numbers without Python: the build's seed report or a cached one, if one is for `key`. */
   private paintKnown(key: string): boolean {
-    const known = knownReport(key);
+    const known = this.env.known(key);
     if (!known) return false;
     this.report = known.report;
     this.reportFor = key;
@@ -110,9 +130,9 @@ export class ComputeSession {
   private updateSource(): void {
     const current = !this.localErrors.size && this.reportFor === reportKey(this.input);
     const source = this.report === null ? 'none' : current ? this.source : 'stale';
-    showSource(source);
-    if (source !== 'none' && source !== 'stale') mark('numbers');
-    if (source === 'live') mark('live');
+    this.env.showSource(source);
+    if (source !== 'none' && source !== 'stale') this.env.mark('numbers');
+    if (source === 'live') this.env.mark('live');
   }
 
   get ready(): boolean {
@@ -176,7 +196,7 @@ export class ComputeSession {
   private async compute(): Promise<void> {
     if (this.localErrors.size) return this.events.errors();
     const eff = effectiveInput(this.input);
-    const key = JSON.stringify(reportInput(eff));
+    const key = reportKey(this.input);
     if (!this.client?.ready) {
       this.persist(eff);
       // Typing before Python is ready: kept (computed once it is), and painted at once if known.
@@ -185,8 +205,8 @@ export class ComputeSession {
       this.events.busy();
       return this.events.errors();
     }
-    const root = document.documentElement;
-    root.dataset.busy = '1';
+    const root = this.env.attrs;
+    root.busy = '1';
     // The address bar and localStorage are written after the numbers are shown (history.replaceState
     // takes milliseconds); a call superseded by a newer input leaves them to that one.
     let superseded = false;
@@ -201,16 +221,16 @@ export class ComputeSession {
         // Another input may have been typed while Python computed this one.
         this.reportFor = key;
         this.source = 'live';
-        keepReport(key, this.report);
+        this.env.keep(key, this.report);
         const t1 = performance.now();
         this.events.report(same);
         this.events.errors();
         this.updateSource();
         const t2 = performance.now();
-        root.dataset.reportMs = (t1 - t0).toFixed(1);
-        root.dataset.workerMs = ms.toFixed(1);
-        root.dataset.renderMs = (t2 - t1).toFixed(1);
-        if (this.inputAt) root.dataset.updateMs = (t2 - this.inputAt).toFixed(1);
+        root.reportMs = (t1 - t0).toFixed(1);
+        root.workerMs = ms.toFixed(1);
+        root.renderMs = (t2 - t1).toFixed(1);
+        if (this.inputAt) root.updateMs = (t2 - this.inputAt).toFixed(1);
         clearTimeout(this.simTimer);
         this.simTimer = setTimeout(() => void this.computeSim(eff), SIM_PAUSE_MS);
       } else {
@@ -225,7 +245,7 @@ export class ComputeSession {
       if (!superseded) console.warn('report call failed:', e);
     } finally {
       if (!superseded) this.persist(eff);
-      delete root.dataset.busy;
+      delete root.busy;
       this.events.busy();
     }
   }
@@ -256,11 +276,11 @@ export class ComputeSession {
     if (!sc) return;
     // <html data-sim-posted/-done/-superseded>: counters of simulation requests, results and
     // requests cancelled by a newer one (the fault suite measures the cancellation latency).
-    const root = document.documentElement;
+    const root = this.env.attrs;
     try {
-      root.dataset.simPosted = String(Number(root.dataset.simPosted ?? 0) + 1);
+      root.simPosted = String(Number(root.simPosted ?? 0) + 1);
       const { result } = await sc.call('report', simInput(eff), 'sim', SIM_LOST_MS);
-      root.dataset.simDone = String(Number(root.dataset.simDone ?? 0) + 1);
+      root.simDone = String(Number(root.simDone ?? 0) + 1);
       if (result.ok) {
         this.simReport = result.report as unknown as Report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
@@ -274,7 +294,7 @@ export class ComputeSession {
       this.events.sim();
     } catch (e) {
       if (e instanceof Superseded) {
-        root.dataset.simSuperseded = String(Number(root.dataset.simSuperseded ?? 0) + 1);
+        root.simSuperseded = String(Number(root.simSuperseded ?? 0) + 1);
         return;
       }
       // The simulation worker could not start or died: say so at the plots, with a retry.
@@ -291,10 +311,11 @@ export class ComputeSession {
    * first live numbers of a share link (≈ 0.2 s).
    */
   private linkSays(eff: Input): boolean {
-    const linked = initialInput(location.hash, null);
+    const hash = this.env.hash();
+    const linked = initialInput(hash, null);
     return linked.source === 'url' && linked.problems.length === 0
       && JSON.stringify(effectiveInput(linked.input)) === JSON.stringify(eff)
-      && JSON.stringify(decodeUnits(location.hash) ?? {}) === JSON.stringify(this.units);
+      && JSON.stringify(decodeUnits(hash) ?? {}) === JSON.stringify(this.units);
   }
 
   /** The input goes into the URL (#in=) and localStorage; embeds leave both to their host page. */
@@ -303,10 +324,11 @@ export class ComputeSession {
     const hash = encodeHash(eff, this.units);
     // Whether an opened link already says this input is asked only while it is in the address bar
     // (decoding and checking a link took 0.2–11 ms of every keystroke).
-    if (location.hash !== hash && !this.keepLink && (location.hash === this.wroteHash || !this.linkSays(eff))) {
-      history.replaceState(null, '', hash);
+    const now = this.env.hash();
+    if (now !== hash && !this.keepLink && (now === this.wroteHash || !this.linkSays(eff))) {
+      this.env.replaceHash(hash);
       this.wroteHash = hash;
     }
-    store(STORAGE_KEY, JSON.stringify(eff));
+    this.env.storeInput(JSON.stringify(eff));
   }
 }

@@ -1,4 +1,4 @@
-// The Batch panel (issue 13): a CSV of motors → every motor's firmware integers, errors and
+// The Batch panel: a CSV of motors → every motor's firmware integers, errors and
 // findings, computed by pulab.analyses.batch in the worker chunk by chunk (progress, cancel). The CSV
 // downloaded is the text Python wrote, the same as `pulab batch motors.csv`.
 import { h, num } from '../dom';

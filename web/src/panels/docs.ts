@@ -1,7 +1,7 @@
-// Explainer chapters (docs/zh, docs/en, docs/index.json, issue 5) rendered with the current
+// Explainer chapters (docs/zh, docs/en, docs/index.json) rendered with the current
 // report: {{path}} values, {{panel:NAME}} and {{plot:NAME}} embeds, links back to the panels.
 import { h, morph, num, patch, scrollToEl, table } from '../dom';
-import { SECTIONS } from '../fields';
+import { SECTIONS, fieldLabel } from '../fields';
 import { fmtNum } from '../format';
 import { fromSI } from '../units';
 import { getLang, t } from '../i18n';
@@ -95,7 +95,7 @@ function inputsSummary(ctx: PanelContext): HTMLElement {
       const u = f.units?.[0];
       const shown = typeof v !== 'number' ? t(`o.${String(v)}` as never)
         : num(`input.${f.path}`, v, u ? { unit: u, text: fmtNum(fromSI(v, u), 6) } : { unit: f.unit });
-      return [[t(`f.${f.path}` as never), shown]];
+      return [[fieldLabel(f, getLang()), shown]];
     }));
   return table([t('quantity'), t('value')], rows, 'doc-inputs');
 }

@@ -1,4 +1,4 @@
-// Loop design as firmware runs it (issue 11): margins with the delay, the delay-aware design
+// Loop design as firmware runs it: margins with the delay, the delay-aware design
 // beside the continuous one, Bode plots, the PLL's scaled vs naive margins, the speed loop.
 // Everything shown comes from the report's "loop" section (sent with the simulation request).
 import { h, num, patch, table } from '../dom';

@@ -31,6 +31,6 @@ export interface Panel {
    * layout may also render it into a scratch element (Layout.warmUp). */
   pure?: boolean;
   /** Render into `el` (called on every new report and on a language switch). A panel shows a
-   * new report by `patch` (dom.ts): only the numbers that changed are laid out again (issue 8). */
+   * new report by `patch` (dom.ts): only the numbers that changed are laid out again. */
   render(el: HTMLElement, ctx: PanelContext): void;
 }

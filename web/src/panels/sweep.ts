@@ -1,4 +1,4 @@
-// The Sweep panel (issue 13): one or two inputs of the current motor over a range, every
+// The Sweep panel: one or two inputs of the current motor over a range, every
 // firmware integer's error and status, boundaries bisected in Python (pulab.analyses.sweep), worst cases
 // that open as the current motor. Computed chunk by chunk in the worker, with progress and cancel.
 import { h, num, table } from '../dom';
@@ -44,7 +44,7 @@ function defaultAxis(ctx: PanelContext, path: string, lo: number, hi: number, n:
   return { path, start: fmt(v * lo), stop: fmt(v * hi), n: String(n), scale: 'log' };
 }
 
-/** The seed's Inovance code, and every profile the report carries (issue 12: `profiles.NAME`). */
+/** The seed's Inovance code, and every profile the report carries (`profiles.NAME`). */
 function profiles(ctx: PanelContext): string[] {
   const more = Object.keys((ctx.report as unknown as { profiles?: Record<string, unknown> } | null)?.profiles ?? {});
   return ['inovance', ...more.filter((p) => p !== 'inovance')];

@@ -1,12 +1,12 @@
 import { flagChips, h, num, patch, table } from '../dom';
+import { ALL_FIELDS } from '../fields';
 import { t } from '../i18n';
 import { VENDOR_NAMES, type TraceStep, type VendorResult } from '../report-types';
 import type { Panel } from './panel';
 
-const RAW_UNITS: Record<string, string> = {
-  Voltage: '1 V', Current: '0.01 A', FullFreq01: '0.01 Hz', FreqRated01: '0.01 Hz', RsPm: 'mΩ',
-  LD: '0.01 mH | µH', LQ: '0.01 mH | µH', BemfVolt: '0.1 V', uDCFilter: '0.1 V',
-};
+/** Each raw firmware parameter's unit, from the input schema (`raw.*`). */
+const RAW_UNITS: Record<string, string> = Object.fromEntries(
+  ALL_FIELDS.filter((f) => f.path.startsWith('raw.')).map((f) => [f.path.slice(4), f.unit ?? '']));
 
 const VAR: Record<string, string> = {
   Rpm: 'gMotorExtPer.Rpm', LD: 'gMotorExtPer.LD', LQ: 'gMotorExtPer.LQ', FreqPer: 'gMotorInfo.FreqPer',

@@ -1,4 +1,4 @@
-"""Loop design as firmware runs it: discrete margins, delays, PLL, speed loop (issue 11).
+"""Loop design as firmware runs it: discrete margins, delays, PLL, speed loop.
 
 Pure standard library (runs in a bare Pyodide).  When the input has an
 ``"analysis"`` object (``{}`` = every default), :func:`pulab.report` calls
@@ -91,8 +91,7 @@ def _speed_config(report: dict, s: dict) -> dict:
         s["ts_s"] = 10.0 * ts
     ratio = s["ts_s"] / ts
     if abs(ratio - round(ratio)) > 1e-6 * ratio or not 1 <= round(ratio) <= 1000:
-        raise InputError("analysis.speed.ts_s", f"must be 1..1000 times drive.ts_s = {ts:g} s, "
-                         f"got {ratio:.6g} times")
+        raise InputError("analysis.speed.ts_s", code="speed_ts_multiple", ts=ts, ratio=ratio)
     s["ratio"] = int(round(ratio))
     s["ts_s"] = s["ratio"] * ts
     if s["filter_hz"] is None:
@@ -100,9 +99,8 @@ def _speed_config(report: dict, s: dict) -> dict:
     if s["current_limit_a"] is None:
         s["current_limit_a"] = 2.0 * i_b
     if s["current_limit_a"] >= 8.0 * i_b:
-        raise InputError("analysis.speed.current_limit_a",
-                         f"{s['current_limit_a']:g} A is not below 8·I_b = {8 * i_b:g} A "
-                         f"(the Q12 current reference is an int16)")
+        raise InputError("analysis.speed.current_limit_a", code="speed_limit_q12",
+                         value=s["current_limit_a"], limit=8 * i_b)
     return s
 
 
@@ -226,26 +224,24 @@ def analyze(report: dict, analysis) -> dict:
 
 
 def warnings(loop: dict) -> list:
-    """Report warnings for loops that are unstable or close to it with the chosen delay."""
+    """Report warnings for loops that are unstable or close to it with the chosen delay, as
+    ``(catalog code, params)`` pairs (:mod:`pulab.schema.catalog`)."""
     w = []
     delay = loop["delay"]
     for axis in ("d", "q"):
         for path, r in ((f"loop.current.{axis}", loop["current"][axis]),
                         (f"loop.current.{axis}.firmware", loop["current"][axis]["firmware"])):
             if not r["stable"]:
-                w.append(f"{path}: the closed current loop is unstable with the {delay} delay "
-                         f"(largest |pole| {r['spectral_radius']:.4g})")
+                w.append(("warning.current_unstable", {"path": path, "delay": delay,
+                                                       "radius": r["spectral_radius"]}))
             elif r["phase_margin_deg"] is not None and r["phase_margin_deg"] < 30.0:
-                w.append(f"{path}: phase margin {r['phase_margin_deg']:.1f}° with the {delay} "
-                         f"delay (below 30°: strong overshoot and ringing)")
+                w.append(("warning.current_low_pm", {"path": path, "delay": delay,
+                                                      "pm": r["phase_margin_deg"]}))
     sp = loop["speed"]
     if sp is not None:
         if not sp["stable"]:
-            w.append(f"loop.speed: the closed speed loop is unstable (largest |pole| "
-                     f"{sp['spectral_radius']:.4g})")
+            w.append(("warning.speed_unstable", {"radius": sp["spectral_radius"]}))
         ratio = sp["inner_bandwidth_ratio"]
         if ratio is not None and ratio < 5.0:
-            w.append(f"loop.speed: the current loop's bandwidth is only {ratio:.2g}× the speed "
-                     f"crossover; the speed margins (inner loop as one period of delay) are "
-                     f"optimistic")
+            w.append(("warning.speed_inner_slow", {"ratio": ratio}))
     return w

@@ -1,4 +1,4 @@
-"""The current loop as the firmware runs it: ZOH plant, PI form, delays (issue 11).
+"""The current loop as the firmware runs it: ZOH plant, PI form, delays.
 
 Per axis, on the zero-speed plant G(s) = 1/(R_s + s·L) (L = L_d or L_q; the
 cross-coupling ω_e·L vanishes at standstill), discretized exactly for a
@@ -158,9 +158,8 @@ def design(rs: float, l_h: float, ts: float, delay: str, by: str, target: float)
     if by == "bandwidth":
         theta = 2.0 * math.pi * target * ts
         if theta >= math.pi:
-            raise InputError("analysis.target_bandwidth_hz",
-                             f"{target:g} Hz is not below the Nyquist frequency "
-                             f"1/(2·Ts) = {0.5 / ts:g} Hz")
+            raise InputError("analysis.target_bandwidth_hz", code="above_nyquist", value=target,
+                             nyquist=0.5 / ts)
         v = s(theta)
         kp = (v.real + math.sqrt(v.real * v.real + abs(v) ** 2)) / abs(v) ** 2
         return kp, kp * (1.0 / a - 1.0) / ts
@@ -175,9 +174,7 @@ def design(rs: float, l_h: float, ts: float, delay: str, by: str, target: float)
             break
         low, pm_low = t, pm
     if high is None:
-        raise InputError("analysis.target_phase_margin_deg",
-                         f"{target:g}° is not reached below the Nyquist frequency "
-                         f"(the loop keeps more phase margin)")
+        raise InputError("analysis.target_phase_margin_deg", code="pm_unreachable", value=target)
     for _ in range(48):                       # bracket π/64 → below 1e-16 rad
         mid = 0.5 * (low + high)
         pm_mid = _phase_margin_at(s, mid, pm_low)

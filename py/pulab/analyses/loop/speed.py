@@ -100,8 +100,7 @@ def design(kt: float, inertia: float, friction: float, bandwidth_hz: float,
     wn = 2.0 * math.pi * bandwidth_hz
     kp = (2.0 * damping * wn * inertia - friction) / kt
     if kp <= 0:
-        raise InputError("analysis.speed.bandwidth_hz",
-                         f"too low for the friction: kp = (2ζωn·J − B)/Kt = {kp:.4g} ≤ 0")
+        raise InputError("analysis.speed.bandwidth_hz", code="speed_kp_low", kp=kp)
     return kp, wn * wn * inertia / kt
 
 
@@ -118,8 +117,8 @@ def integers(kp: float, ki: float, w_mb: float, i_b: float, ts: float) -> dict:
     pm_ki = round_half_away(ki_pu * ts * 65536.0)
     for name, v in (("pm_kp", pm_kp), ("pm_ki", pm_ki)):
         if not INT32_MIN <= v <= INT32_MAX:
-            raise InputError("analysis.speed.bandwidth_hz",
-                             f"speed {name} = {v} does not fit a 32-bit long")
+            raise InputError("analysis.speed.bandwidth_hz", code="long_overflow", what=f"speed {name}",
+                             value=v)
     return {"kp": kp, "ki": ki, "kp_pu": kp_pu, "ki_pu": ki_pu, "pm_kp": pm_kp, "pm_ki": pm_ki,
             "from_integers": {"kp": pm_kp / 4096.0 * i_b / w_mb,
                               "ki": pm_ki / 65536.0 / ts * i_b / w_mb}}

@@ -1,4 +1,4 @@
-"""Time-domain simulations for the report's ``"sim"`` section (issue 3).
+"""Time-domain simulations for the report's ``"sim"`` section.
 
 Pure standard library (runs in a bare Pyodide).  :func:`pulab.report` calls
 :func:`validate` on the input's ``"sim"`` and :func:`simulate` on the finished

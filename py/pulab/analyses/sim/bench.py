@@ -3,7 +3,7 @@
 ``PYTHONPATH=py python3 -m pulab.analyses.sim.bench [STEPS]`` runs STEPS controller
 periods (default 20 000) of each current-loop variant on the seed's motor with a
 step at t = 0 (so the run is mostly steady state, as a real step response is)
-and prints seconds and steps per second.  Issue 3's target: the three variants
+and prints seconds and steps per second.  Target: the three variants
 together under 0.5 s in CPython, under 1 s in Pyodide.  :func:`bench` returns the
 numbers, so a Pyodide runner can call it and compute the Pyodide/CPython ratio.
 """

@@ -292,13 +292,13 @@ def run_steps(report: dict, cfg: dict):
     n = periods(duration, ts, MAX_STEPS, "sim.current.duration_s")
     step = cfg["step_a"] if cfg["step_a"] is not None else 0.5 * i_b
     if abs(step / i_b) >= Q12_CURRENT_LIMIT_PU:
-        raise InputError("sim.current.step_a", f"{step:g} A is {step / i_b:.3g} pu; the Q12 "
-                         f"current (int16) holds less than ±8 pu (±{8 * i_b:.4g} A)")
+        raise InputError("sim.current.step_a", code="step_q12", value=step, pu=step / i_b,
+                         limit=8 * i_b)
     ref_d, ref_q = (step, 0.0) if axis == "d" else (0.0, step)
     if abs(cfg["speed_hz"]) * ts >= 0.5:
         # Beyond Nyquist the sampled dq model is meaningless (and ω_e·Ts is unbounded).
-        raise InputError("sim.current.speed_hz", f"|{cfg['speed_hz']:g}| Hz is not below half "
-                         f"the control frequency 1/(2·Ts) = {0.5 / ts:g} Hz")
+        raise InputError("sim.current.speed_hz", code="speed_nyquist", value=abs(cfg["speed_hz"]),
+                         nyquist=0.5 / ts)
     omega = 2.0 * math.pi * cfg["speed_hz"]
     maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
     umax_pu, imax_pu = maxout / 4096.0, maxu / 16777216.0

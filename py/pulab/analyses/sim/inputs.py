@@ -5,25 +5,10 @@ absent field, booleans are not numbers, unknown keys are errors, and every
 error is an :class:`pulab.schema.errors.InputError` naming the JSON path
 (``sim.current.step_a``).
 
-Fields (defaults marked *motor* are resolved by :func:`pulab.analyses.sim.simulate`
-from the report, so they stay ``None`` here):
-
-======================== ======================================== ==================
-field                    unit, range                              default
-======================== ======================================== ==================
-current.axis             ``"d"`` or ``"q"``: the stepped reference ``"d"``
-current.step_a           A (dq scale of ``conventions.base``),    *motor*: 0.5·I_b
-                         finite, ≠ 0, |step| < 8·I_b (Q12 int16)
-current.duration_s       s, > 0, at most 200 000 periods          *motor*: 30/ω_c,
-                                                                  ≥ 200 periods
-current.speed_hz         electrical Hz, finite (0 = locked rotor) 0
-current.delay            bool: one-sample computation delay       false
-pll.speed_hz             electrical Hz of the input angle, finite *motor*: rated_freq_hz
-pll.angle_step_deg       deg, −180..180: θ(0) while θ̂(0) = 0      30
-pll.ramp_hz_per_s        Hz/s, finite: speed ramp of the input    0
-pll.duration_s           s, > 0, at most 500 000 periods          *motor*: 60/(ζω_n),
-                                                                  ≥ 2000 periods
-======================== ======================================== ==================
+The fields, their ranges and defaults are the schema's ``sim.current`` and
+``sim.pll`` sections (:mod:`pulab.schema.fields`), checked by
+:func:`pulab.schema.validate.read`.  Defaults that depend on the motor stay
+``None`` here and are resolved by :func:`pulab.analyses.sim.simulate`.
 
 Examples
 --------
@@ -39,34 +24,13 @@ from __future__ import annotations
 
 
 from ...schema.errors import InputError
-from ...schema.inputs import object_fields, real, shown
+from ...schema.fields import section_fields
+from ...schema.validate import read
 
 __all__ = ["validate", "periods", "FIELDS"]
 
 #: Allowed keys per subsection.
-FIELDS = {
-    "current": ("axis", "step_a", "duration_s", "speed_hz", "delay"),
-    "pll": ("speed_hz", "angle_step_deg", "ramp_hz_per_s", "duration_s"),
-}
-
-
-def _section(sim: dict, name: str) -> dict:
-    return object_fields(sim.get(name), f"sim.{name}", FIELDS[name])
-
-
-def _num(sec: dict, path: str, key: str, default, positive: bool = False,
-         nonzero: bool = False, lo: float | None = None, hi: float | None = None):
-    if key not in sec:
-        return default
-    full = f"{path}.{key}"
-    v = real(sec[key], full)
-    if positive and v <= 0:
-        raise InputError(full, f"must be > 0, got {v:g}")
-    if nonzero and v == 0:
-        raise InputError(full, "must not be 0")
-    if (lo is not None and v < lo) or (hi is not None and v > hi):
-        raise InputError(full, f"must be {lo:g}..{hi:g}, got {v:g}")
-    return v
+FIELDS = {name: tuple(f.key for f in section_fields(f"sim.{name}")) for name in ("current", "pll")}
 
 
 def periods(duration: float, ts: float, cap: int, field: str) -> int:
@@ -93,7 +57,7 @@ def periods(duration: float, ts: float, cap: int, field: str) -> int:
     q = duration / ts
     if not q <= cap + 0.5:  # also catches q = inf
         count = f"{q:.4g}" if q < float("inf") else ">1.8e308"
-        raise InputError(field, f"{duration:g} s is {count} control periods; at most {cap}")
+        raise InputError(field, code="too_many_periods", value=duration, count=count, limit=cap)
     return max(int(round(q)), 1)
 
 
@@ -117,22 +81,5 @@ def validate(sim_input) -> dict:
     pulab.InputError
         Naming the JSON path of the first bad field.
     """
-    sim = object_fields(sim_input, "sim", FIELDS)
-    c = _section(sim, "current")
-    p = _section(sim, "pll")
-    axis = c.get("axis", "d")
-    if axis not in ("d", "q"):
-        raise InputError("sim.current.axis", f"must be one of d, q, got {shown(axis)}")
-    delay = c.get("delay", False)
-    if not isinstance(delay, bool):
-        raise InputError("sim.current.delay", f"must be true or false, got {shown(delay)}")
-    cur = {"axis": axis,
-           "step_a": _num(c, "sim.current", "step_a", None, nonzero=True),
-           "duration_s": _num(c, "sim.current", "duration_s", None, positive=True),
-           "speed_hz": _num(c, "sim.current", "speed_hz", 0.0),
-           "delay": delay}
-    pll = {"speed_hz": _num(p, "sim.pll", "speed_hz", None),
-           "angle_step_deg": _num(p, "sim.pll", "angle_step_deg", 30.0, lo=-180.0, hi=180.0),
-           "ramp_hz_per_s": _num(p, "sim.pll", "ramp_hz_per_s", 0.0),
-           "duration_s": _num(p, "sim.pll", "duration_s", None, positive=True)}
-    return {"current": cur, "pll": pll}
+    sim = read("sim", sim_input)
+    return {"current": read("sim.current", sim.get("current")), "pll": read("sim.pll", sim.get("pll"))}

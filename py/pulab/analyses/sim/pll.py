@@ -173,8 +173,7 @@ def q15_gains(kp: float, ki: float, w_b: float, f_b: float, ts: float) -> dict:
            "g": round_half_away(2.0 * f_b * ts * 8388608.0)}
     for name, v in out.items():
         if not _I32_MIN <= v <= _I32_MAX:
-            raise InputError("pll.bandwidth_hz", f"q15 PLL gain {name} = {v} does not fit int32 "
-                             f"(Q24 allows per-unit gains below 128)")
+            raise InputError("pll.bandwidth_hz", code="pll_q24_overflow", name=name, value=v)
     return out
 
 
@@ -259,8 +258,7 @@ def run_steps(report: dict, cfg: dict):
     if top * ts >= 0.5:
         # An angle sampled at Ts cannot show a speed at or above Nyquist.
         field = "sim.pll.ramp_hz_per_s" if abs(speed) * ts < 0.5 else "sim.pll.speed_hz"
-        raise InputError(field, f"the input speed reaches {top:g} Hz, not below half the "
-                         f"control frequency 1/(2·Ts) = {0.5 / ts:g} Hz")
+        raise InputError(field, code="input_speed_nyquist", value=top, nyquist=0.5 / ts)
     theta, omega = yield from input_angle_steps(n, ts, speed, cfg["ramp_hz_per_s"],
                                                 math.radians(cfg["angle_step_deg"]))
     v = {}

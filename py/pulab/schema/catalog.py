@@ -1,0 +1,226 @@
+"""The texts of input errors, English and Chinese, by code (one catalog).
+
+An error is data (:class:`pulab.schema.errors.InputError`: code, field, params);
+this table gives its words.  A parameter that is itself an error
+(``{"code": …, "params": …}``) is rendered in the same language, so a derived
+value's error reads as one sentence in either language.
+
+Adding an error: one entry here; ``tests/py/test_schema.py`` renders every code
+in both languages.
+
+Examples
+--------
+>>> render("out_of_range", {"lo": 1e-9, "hi": 1.0, "value": 2.0}, "zh")
+'必须在 1e-09 与 1 之间，当前为 2'
+>>> render("derived_invalid", {"target": "motor.rs_ohm", "value": 1e12,
+...     "reason": {"code": "out_of_range", "params": {"lo": 1e-9, "hi": 1e9, "value": 1e12}}}, "en")
+'gives motor.rs_ohm = 1e+12, which must be between 1e-09 and 1e+09, got 1e+12'
+"""
+
+from __future__ import annotations
+
+__all__ = ["MESSAGES", "render"]
+
+#: code → (English, Chinese); ``str.format`` fields name the error's params.
+MESSAGES = {
+    "required": ("is required", "必填"),
+    "required_choice": ("is required (one of {choices})", "必填（以下之一：{choices}）"),
+    "not_json_object": ("must be a JSON object", "必须是 JSON 对象"),
+    "not_object": ("must be an object, got {got}", "必须是对象，当前为 {got}"),
+    "unknown_field": ("unknown field (expected one of: {expected})",
+                      "未知字段（应为以下之一：{expected}）"),
+    "unknown_section": ("unknown section (expected one of: {expected})",
+                        "未知分节（应为以下之一：{expected}）"),
+    "not_number": ("must be a number, got {got}", "必须是数字，当前为 {got}"),
+    "not_finite": ("must be finite", "必须是有限数"),
+    "not_positive": ("must be > 0, got {value:g}", "必须大于 0，当前为 {value:g}"),
+    "negative": ("must be ≥ 0, got {value:g}", "必须大于等于 0，当前为 {value:g}"),
+    "zero": ("must not be 0", "不能为 0"),
+    "out_of_range": ("must be between {lo:g} and {hi:g}, got {value:g}",
+                     "必须在 {lo:g} 与 {hi:g} 之间，当前为 {value:g}"),
+    "too_large": ("must be at most {hi:g}, got {value:g}", "必须不大于 {hi:g}，当前为 {value:g}"),
+    "too_small": ("must be at least {lo:g}, got {value:g}", "必须不小于 {lo:g}，当前为 {value:g}"),
+    "not_integer": ("must be an integer, got {got}", "必须是整数，当前为 {got}"),
+    "integer_range": ("must be {lo}..{hi}, got {got}", "必须在 {lo}..{hi} 之间，当前为 {got}"),
+    "not_choice": ("must be one of {choices}, got {got}", "必须是以下之一：{choices}；当前为 {got}"),
+    "not_flag": ("must be true or false, got {got}", "必须是 true 或 false，当前为 {got}"),
+    "only_with": ("is only used with {key} = {value}", "仅在 {key} = {value} 时使用"),
+    "derived_invalid": ("gives {target} = {value:g}, which {reason}",
+                        "得到 {target} = {value:g}，{reason}"),
+    "chain_kp_zero": ("gives kp = 0 in profile {profile}, so the round trip through the "
+                      "other profiles stops (a series Ki = ki·T/kp needs kp ≠ 0)",
+                      "在厂商配置 {profile} 中 kp 取整为 0，无法继续在其他配置间往返换算"
+                      "（串联式 Ki = ki·T/kp 要求 kp ≠ 0）"),
+    "not_string": ("must be a string, got {got}", "必须是字符串，当前为 {got}"),
+    "number_ambiguous": ("must be a number, got {got} (ambiguous: a decimal comma or a thousands "
+                         "separator?)", "必须是数字，当前为 {got}（有歧义：是小数逗号还是千位分隔符？）"),
+    "not_register": ("must be an integer (decimal, 0x… hex or 0b… binary), got {got}",
+                     "必须是整数（十进制、0x… 十六进制或 0b… 二进制），当前为 {got}"),
+    "power_of_two": ("must be a power of two, got {got}", "必须是 2 的幂，当前为 {got}"),
+    "q_too_wide": ("{name} does not fit {bits} word bits", "{name} 放不进 {bits} 位字长"),
+    "not_q_format": ("not a Q format: {got} (use Qm.n, UQm.n, or Qn with word_bits)",
+                     "不是 Q 格式：{got}（请用 Qm.n、UQm.n，或 Qn 并给出 word_bits）"),
+    "q_outside": ("{value} is outside {fmt} [{lo}, {hi}]", "{value} 超出 {fmt} 的范围 [{lo}, {hi}]"),
+    "raw_range_for": ("must be {lo}..{hi} for {fmt}", "对 {fmt} 必须在 {lo}..{hi} 之间"),
+    "no_simulation": ("the input asks for no {kind} simulation", "输入中没有 {kind} 仿真"),
+    "summaries_list": ("must be a list of chunk summaries", "必须是分块摘要的列表"),
+    "both_given": ("and {other} both given; give one of them", "与 {other} 不能同时给出；请只给其中一个"),
+    "both_bemf": ("and {other} both give the back-EMF; give one of them",
+                  "与 {other} 都给出反电势；请只给其中一个"),
+    "used_with": ("is only used with {other}", "仅与 {other} 一起使用"),
+    "used_with_either": ("is only used with {a} or {b}", "仅与 {a} 或 {b} 一起使用"),
+    "required_to_convert": ("is required to convert {source} (or give {other})",
+                            "换算 {source} 时必填（或给出 {other}）"),
+    "damping_kp_low": ("too low for damping design: kp = 2ζω0·L − Rs = {kp:.4g} Ω ≤ 0",
+                       "对阻尼比设计而言过低：kp = 2ζω0·L − Rs = {kp:.4g} Ω ≤ 0"),
+    "long_overflow": ("{what} = {value} does not fit a 32-bit long", "{what} = {value} 超出 32 位 long 的范围"),
+    "raw_outside_given": ("{value} (given) is outside Uint16 0..65535",
+                          "{value}（直接给定）超出 Uint16 范围 0..65535"),
+    "raw_outside_from": ("{value} (from {source}) is outside Uint16 0..65535",
+                         "{value}（由 {source} 换算）超出 Uint16 范围 0..65535"),
+    "firmware_div0": ("the firmware divides by zero: {why}", "固件出现除以零：{why}"),
+    "cannot_read": ("cannot read {path}: {why}", "无法读取 {path}：{why}"),
+    "not_utf8": ("not UTF-8 text (byte {byte})", "不是 UTF-8 文本（第 {byte} 字节）"),
+    "axis_syntax": ("expected PATH=START:STOP[:N][:log], got {got}",
+                    "格式应为 PATH=START:STOP[:N][:log]，当前为 {got}"),
+    "not_numeric_path": ("not a numeric input path: {got}", "不是数值输入路径：{got}"),
+    "log_not_positive": ("must be > 0 for a log scale, got {value:g}", "对数刻度要求大于 0，当前为 {value:g}"),
+    "same_as": ("must differ from {other} ({value})", "必须不同于 {other}（{value}）"),
+    "unknown_profile": ("unknown profile {got}", "未知的厂商配置：{got}"),
+    "too_many_points": ("the sweep has {total} points; at most {limit}", "扫描共有 {total} 个点；最多 {limit} 个"),
+    "empty_column": ("empty column name {got}", "列名为空：{got}"),
+    "unit_not_path": ("a unit is only converted for an input path, not {got}",
+                      "只有输入路径列才换算单位，{got} 不是"),
+    "unit_none": ("unknown unit [{unit}] for {name} (allowed: none (give the value in the unit its "
+                  "name ends in))", "{name} 的单位 [{unit}] 未知（此列不换算单位：请按列名结尾的单位给值）"),
+    "unit_unknown": ("unknown unit [{unit}] for {name} (allowed: {allowed})",
+                     "{name} 的单位 [{unit}] 未知（可用：{allowed}）"),
+    "csv_unreadable": ("not readable as CSV: {detail}", "无法按 CSV 读取：{detail}"),
+    "no_header": ("no header row", "没有表头行"),
+    "duplicate_column": ("duplicate column {name} (also column {other})",
+                         "列 {name} 重复（与第 {other} 列相同）"),
+    "ragged_row": ("{cells} cells, the header has {columns}", "该行有 {cells} 个单元格，表头只有 {columns} 列"),
+    "speed_ts_multiple": ("must be 1..1000 times drive.ts_s = {ts:g} s, got {ratio:.6g} times",
+                          "必须是 drive.ts_s = {ts:g} s 的 1..1000 整数倍，当前为 {ratio:.6g} 倍"),
+    "speed_limit_q12": ("{value:g} A is not below 8·I_b = {limit:g} A (the Q12 current reference is an "
+                        "int16)", "{value:g} A 未低于 8·I_b = {limit:g} A（Q12 电流给定是 int16）"),
+    "above_nyquist": ("{value:g} Hz is not below the Nyquist frequency 1/(2·Ts) = {nyquist:g} Hz",
+                      "{value:g} Hz 未低于奈奎斯特频率 1/(2·Ts) = {nyquist:g} Hz"),
+    "pm_unreachable": ("{value:g}° is not reached below the Nyquist frequency (the loop keeps more "
+                       "phase margin)", "在奈奎斯特频率以下达不到 {value:g}°（环路的相位裕度始终更大）"),
+    "speed_kp_low": ("too low for the friction: kp = (2ζωn·J − B)/Kt = {kp:.4g} ≤ 0",
+                     "相对摩擦过低：kp = (2ζωn·J − B)/Kt = {kp:.4g} ≤ 0"),
+    "step_q12": ("{value:g} A is {pu:.3g} pu; the Q12 current (int16) holds less than ±8 pu "
+                 "(±{limit:.4g} A)", "{value:g} A 即 {pu:.3g} pu；Q12 电流（int16）只能表示 ±8 pu 以内（±{limit:.4g} A）"),
+    "speed_nyquist": ("|{value:g}| Hz is not below half the control frequency 1/(2·Ts) = {nyquist:g} Hz",
+                      "|{value:g}| Hz 未低于控制频率的一半 1/(2·Ts) = {nyquist:g} Hz"),
+    "too_many_periods": ("{value:g} s is {count} control periods; at most {limit}",
+                         "{value:g} s 等于 {count} 个控制周期；最多 {limit} 个"),
+    "pll_q24_overflow": ("q15 PLL gain {name} = {value} does not fit int32 (Q24 allows per-unit gains "
+                         "below 128)", "q15 锁相环增益 {name} = {value} 超出 int32（Q24 只允许小于 128 的标幺增益）"),
+    "input_speed_nyquist": ("the input speed reaches {value:g} Hz, not below half the control frequency "
+                            "1/(2·Ts) = {nyquist:g} Hz",
+                            "输入转速达到 {value:g} Hz，未低于控制频率的一半 1/(2·Ts) = {nyquist:g} Hz"),
+    # findings of the design review (pulab.analyses.review), by finding code
+    "finding.constant_wrap": ("vendor.{name} = {value}: the firmware arithmetic wrapped (exact value "
+                              "{ideal:.6g}); change {field}",
+                              "vendor.{name} = {value}：固件运算发生回绕（精确值 {ideal:.6g}）；请修改 {field}"),
+    "finding.constant_error": ("vendor.{name} = {value} is {pct:+.3g} % off the exact value {ideal:.6g}; "
+                               "change {field}",
+                               "vendor.{name} = {value} 与精确值 {ideal:.6g} 相差 {pct:+.3g} %；请修改 {field}"),
+    "finding.raw_zero": ("raw.{name} = 0: {path} = {si:g} is below the firmware resolution",
+                         "raw.{name} = 0：{path} = {si:g} 低于固件分辨率"),
+    "finding.raw_rounding": ("raw.{name} = {value}: rounding {path} = {si:g} to the firmware unit "
+                             "changes it by {pct:+.2f} %",
+                             "raw.{name} = {value}：把 {path} = {si:g} 取整到固件单位，改变了 {pct:+.2f} %"),
+    "finding.pi_zero": ("current_pi.{axis}.pm_ki rounds to 0: the integral action is lost (ki·Ts is "
+                        "below one Q16 LSB of the per-unit gain)",
+                        "current_pi.{axis}.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）"),
+    "finding.pi_rounding": ("current_pi.{axis}.pm_{k} = {value}: coarse, rounding changes {k} by "
+                            "{pct:+.1f} %", "current_pi.{axis}.pm_{k} = {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"),
+    "finding.wc_ts_error": ("current-loop ω_c·Ts = {wc_ts:.3f} ≥ {limit:g}: the 1.5·Ts loop delay "
+                            "leaves a phase margin below 5°; lower the bandwidth to {ok_hz:.4g} Hz "
+                            "or less ({field})",
+                            "电流环 ω_c·Ts = {wc_ts:.3f} ≥ {limit:g}：1.5·Ts 的环路延迟使相位裕度低于 5°；"
+                            "请把带宽降到 {ok_hz:.4g} Hz 以下（{field}）"),
+    "finding.wc_ts_warning": ("current-loop ω_c·Ts = {wc_ts:.3f} > {limit:g}: the continuous-time "
+                              "design is far from the discrete loop's behaviour; lower the bandwidth "
+                              "to {ok_hz:.4g} Hz or less ({field})",
+                              "电流环 ω_c·Ts = {wc_ts:.3f} > {limit:g}：连续域设计与离散环路的实际行为相差较大；"
+                              "请把带宽降到 {ok_hz:.4g} Hz 以下（{field}）"),
+    "finding.base_below_rated": ("raw.FullFreq01 = {full} < raw.FreqRated01 = {rated}: base frequency "
+                                 "below rated frequency, FreqPer > 1.0 in Q15; raise "
+                                 "drive.base_freq_hz to motor.rated_freq_hz or more",
+                                 "raw.FullFreq01 = {full} < raw.FreqRated01 = {rated}：基值频率低于额定频率，"
+                                 "Q15 的 FreqPer > 1.0；请把 drive.base_freq_hz 提高到不低于 motor.rated_freq_hz"),
+    "finding.voltage_rated": ("at rated current and rated frequency the motor needs {need:.4g} V (line "
+                              "RMS), above the voltage limit {limit:.4g} V; raise drive.udc_v",
+                              "额定电流、额定频率下电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
+                              "{limit:.4g} V；请提高 drive.udc_v"),
+    "finding.voltage_bemf": ("back-EMF at f_b = {f_b:g} Hz is {bemf:.4g} V (line RMS), above the "
+                             "voltage limit {limit:.4g} V: field weakening needed above {from_hz:.4g} "
+                             "Hz; raise drive.udc_v or lower drive.base_freq_hz",
+                             "f_b = {f_b:g} Hz 时反电势为 {bemf:.4g} V（线电压有效值），超过电压限幅 "
+                             "{limit:.4g} V：{from_hz:.4g} Hz 以上需要弱磁；请提高 drive.udc_v 或降低 "
+                             "drive.base_freq_hz"),
+    "finding.voltage_fb": ("at rated current and f_b = {f_b:g} Hz the motor needs {need:.4g} V (line "
+                           "RMS), above the voltage limit {limit:.4g} V: full current up to f_b needs "
+                           "field weakening",
+                           "额定电流、f_b = {f_b:g} Hz 时电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
+                           "{limit:.4g} V：满电流运行到 f_b 需要弱磁"),
+    "finding.pll_unlocked": ("{key}: not locked (|θ − θ̂| ≥ 2° in the last 20 % of the run); change "
+                             "pll.bandwidth_hz", "{key}：未锁定（仿真最后 20 % 内 |θ − θ̂| ≥ 2°）；请修改 pll.bandwidth_hz"),
+    "finding.pll_steady": ("{key}.steady_angle_error_deg = {value:.3g}°: angle error after lock; change "
+                           "pll.bandwidth_hz", "{key}.steady_angle_error_deg = {value:.3g}°：锁定后的角度误差；"
+                           "请修改 pll.bandwidth_hz"),
+    "finding.unit_uH": ("LD/LQ taken in µH: the vendor code was written for 0.01 mH, so "
+                        "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (seed 1.4-6, the "
+                        "'×10' puzzle)", "原始 LD/LQ 按 µH 输入：汇川代码按 0.01 mH 编写，因此 "
+                        "gMotorExtPer.LD/LQ 是 Q13 标幺电感的 10 倍（式 1.4-6 的“×10”之谜）"),
+    "finding.custom_bases": ("custom bases: the vendor integers (Rpm, LD, …) always use the Inovance "
+                             "rms bases U_LL/√3 and I_rms; the PI integers use the custom bases",
+                             "自定义基值：汇川整数（Rpm、LD 等）始终使用汇川 rms 基值 U_LL/√3 与 I_rms；"
+                             "PI 整数使用自定义基值"),
+    # report warnings beyond the review's findings
+    "warning.current_unstable": ("{path}: the closed current loop is unstable with the {delay} delay "
+                                 "(largest |pole| {radius:.4g})",
+                                 "{path}：计入 {delay} 延时后电流闭环不稳定（最大极点模 {radius:.4g}）"),
+    "warning.current_low_pm": ("{path}: phase margin {pm:.1f}° with the {delay} delay (below 30°: "
+                               "strong overshoot and ringing)",
+                               "{path}：计入 {delay} 延时后相位裕度只有 {pm:.1f}°（低于 30°：超调与振荡明显）"),
+    "warning.speed_unstable": ("loop.speed: the closed speed loop is unstable (largest |pole| "
+                               "{radius:.4g})", "loop.speed：速度闭环不稳定（最大极点模 {radius:.4g}）"),
+    "warning.speed_inner_slow": ("loop.speed: the current loop's bandwidth is only {ratio:.2g}× the "
+                                 "speed crossover; the speed margins (inner loop as one period of "
+                                 "delay) are optimistic",
+                                 "loop.speed：电流环带宽只有速度环穿越频率的 {ratio:.2g} 倍；速度环裕度"
+                                 "（把内环当作一个周期的延时）偏乐观"),
+    "warning.ti_check": ("profiles.ti: USER_checkForErrors would set {code} ({why})",
+                         "profiles.ti：USER_checkForErrors 会置位 {code}（{why}）"),
+    "warning.profile_overflow": ("{path}: {ideal:.6g} does not fit {format}; stored {value}",
+                                 "{path}：{ideal:.6g} 超出 {format} 的范围；实际存储 {value}"),
+    "warning.profile_zero": ("{path}: rounds to 0 in {format} (ideal {ideal:.6g})",
+                             "{path}：在 {format} 中取整为 0（理想值 {ideal:.6g}）"),
+    "set_syntax": ("--set needs NAME=VALUE, got {got}", "--set 需要 NAME=VALUE，当前为 {got}"),
+    "json_invalid": ("not valid JSON: {detail}", "不是合法的 JSON：{detail}"),
+    "json_not_text": ("not valid JSON: the input is not text", "不是合法的 JSON：输入不是文本"),
+    "json_too_deep": ("nested deeper than {depth} levels", "嵌套超过 {depth} 层"),
+    "json_too_long": ("longer than {limit} characters", "超过 {limit} 个字符"),
+}
+
+
+def render(code: str, params: dict, lang: str) -> str:
+    """The text of error ``code`` with ``params`` in ``lang`` (``'en'`` or ``'zh'``).
+
+    Code ``text`` is free English text (``params["text"]``), translated by
+    :func:`pulab.schema.messages.to_zh` for ``zh``.
+    """
+    if code == "text":
+        if lang == "en":
+            return params["text"]
+        from .messages import to_zh
+        return to_zh(params["text"])
+    en, zh = MESSAGES[code]
+    values = {k: render(v["code"], v["params"], lang) if isinstance(v, dict) and "code" in v
+              else v for k, v in params.items()}
+    return (en if lang == "en" else zh).format(**values)

@@ -1,0 +1,353 @@
+"""The input schema: every field of the report input, once, as data.
+
+Each :class:`Field` names its JSON path, its kind, the unit of its JSON value,
+its range, its default and its label and help in English and Chinese.
+Everything else is derived from this table: the checks (:mod:`.validate`), the
+page's form and its field checks (``web/src/generated/schema.json``, written by
+the build from :func:`schema_json`), the contract's input tables (``tests/py/test_schema.py``
+compares them) and the fuzzer's field list (``tests/py/adversarial.py``).
+
+Adding an input field is one entry here, in the section it belongs to.  A
+section's fields are checked in table order, so a field named by another's
+``only_with`` comes first.  Rules that tie several fields together (the
+datasheet's "give one of them") stay in the code that converts them.
+
+Kinds: ``number`` (finite JSON number, booleans refused), ``integer``
+(integral JSON number), ``choice`` (one of ``choices``), ``flag`` (true/false).
+``sign`` is checked before the range: ``'>0'``, ``'>=0'`` or ``'!=0'``.
+``default`` is a value, :data:`REQUIRED`, or ``None`` (absent; ``derived``
+says what the report uses instead).  ``only_with = (path, value)``: the field
+is used only while that field has that value (else giving it is an error and
+the page disables it).
+
+Examples
+--------
+>>> FIELD["drive.ts_s"].unit, FIELD["drive.ts_s"].hi
+('s', 1.0)
+>>> [f.path for f in section_fields("pll")]
+['pll.bandwidth_hz', 'pll.damping']
+>>> FIELD["current_loop.kp"].only_with
+('current_loop.method', 'manual')
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import NamedTuple
+
+__all__ = ["Field", "Section", "REQUIRED", "FIELDS", "FIELD", "SECTIONS", "RAW_FIELDS",
+           "section_fields", "schema_json", "markdown"]
+
+
+class _Required:
+    def __repr__(self) -> str:
+        return "REQUIRED"
+
+
+#: Default of a field that must be given.
+REQUIRED = _Required()
+
+
+class Field(NamedTuple):
+    """One input field (see the module docstring for the meaning of each part)."""
+
+    path: str
+    kind: str
+    unit: str = ""
+    sign: str = ""
+    lo: float | None = None
+    hi: float | None = None
+    hi_open: bool = False
+    default: object = None
+    derived: str = ""
+    choices: tuple = ()
+    only_with: tuple = ()
+    label: tuple = ("", "")
+    help: tuple = ("", "")
+
+    @property
+    def section(self) -> str:
+        return self.path.rsplit(".", 1)[0]
+
+    @property
+    def key(self) -> str:
+        return self.path.rsplit(".", 1)[1]
+
+
+class Section(NamedTuple):
+    """A JSON object of the input: its path and its title (en, zh)."""
+
+    path: str
+    title: tuple
+
+
+F = Field
+DAMPING = math.sqrt(0.5)
+INT32_MAX = (1 << 31) - 1
+
+#: The Inovance firmware's raw Uint16 parameters (seed 1.4), in the order of its code.
+RAW_FIELDS = ("Voltage", "Current", "FullFreq01", "FreqRated01", "RsPm", "LD", "LQ",
+              "BemfVolt", "uDCFilter")
+#: Firmware unit of each raw parameter (LD/LQ: conventions.inductance_unit).
+RAW_UNITS = {"Voltage": "1 V", "Current": "0.01 A", "FullFreq01": "0.01 Hz",
+             "FreqRated01": "0.01 Hz", "RsPm": "1 mΩ", "LD": "0.01 mH or 1 µH",
+             "LQ": "0.01 mH or 1 µH", "BemfVolt": "0.1 V", "uDCFilter": "0.1 V"}
+RAW_LABELS = {
+    "Voltage": ("Voltage — rated line V", "Voltage — 额定线电压 V"),
+    "Current": ("Current — rated A·100", "Current — 额定电流·100"),
+    "FullFreq01": ("FullFreq01 — f_b·100", "FullFreq01 — f_b·100"),
+    "FreqRated01": ("FreqRated01 — f_n·100", "FreqRated01 — f_n·100"),
+    "RsPm": ("RsPm — Rs in mΩ", "RsPm — 电阻 mΩ"),
+    "LD": ("LD — 0.01 mH (or µH)", "LD — 0.01 mH（或 µH）"),
+    "LQ": ("LQ — 0.01 mH (or µH)", "LQ — 0.01 mH（或 µH）"),
+    "BemfVolt": ("BemfVolt — E_LL·10", "BemfVolt — 反电势·10"),
+    "uDCFilter": ("uDCFilter — Udc·10", "uDCFilter — 母线电压·10"),
+}
+
+#: Sections and fields in order: a Section entry, then its fields.
+TABLE = (
+    Section('motor', ('the motor (SI, per phase of the equivalent star)', '电机（SI，等效星形每相）')),
+    F('motor.rated_voltage_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      derived='from datasheet.dc_bus_v when not given',
+      label=('Rated voltage (line RMS)', '额定电压（线电压有效值）')),
+    F('motor.rated_current_a', 'number', 'A', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      label=('Rated current (RMS)', '额定电流（有效值）')),
+    F('motor.rated_freq_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      derived='from datasheet.speed_rpm when not given',
+      label=('Rated frequency', '额定频率')),
+    F('motor.rs_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      derived='from datasheet.rs_line_ohm when not given',
+      label=('Stator resistance Rs (phase)', '定子电阻 Rs（相）')),
+    F('motor.ld_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      derived='from datasheet.l_line_h or ld_line_h when not given',
+      label=('d-axis inductance Ld', 'd 轴电感 Ld')),
+    F('motor.lq_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      derived='from datasheet.l_line_h or lq_line_h when not given',
+      label=('q-axis inductance Lq', 'q 轴电感 Lq')),
+    F('motor.bemf_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      derived='from datasheet Ke, kT or ψ when not given',
+      label=('Back-EMF at rated freq. (line RMS)', '额定频率反电势（线电压有效值）')),
+    F('motor.pole_pairs', 'integer', '', lo=1, hi=1000, default=REQUIRED,
+      label=('Pole pairs', '极对数')),
+    Section('drive', ('the drive', '驱动器')),
+    F('drive.base_freq_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9,
+      derived='motor.rated_freq_hz',
+      label=('Base frequency f_b (drive max.)', '频率基值 f_b（最大频率）')),
+    F('drive.udc_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      label=('DC bus voltage Udc', '母线电压 Udc')),
+    F('drive.ts_s', 'number', 's', sign='>0', lo=1e-9, hi=1.0, default=REQUIRED,
+      label=('Control period Ts', '控制周期 Ts')),
+    Section('conventions', ('per-unit conventions', '标幺约定')),
+    F('conventions.base', 'choice', '', choices=('rms', 'peak', 'custom'), default='rms',
+      label=('Voltage/current bases', '电压/电流基值')),
+    F('conventions.base_voltage_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      only_with=('conventions.base', 'custom'),
+      label=('Custom voltage base U_b', '自定义电压基值 U_b')),
+    F('conventions.base_current_a', 'number', 'A', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      only_with=('conventions.base', 'custom'),
+      label=('Custom current base I_b', '自定义电流基值 I_b')),
+    F('conventions.angle_base', 'choice', '', choices=('pi', '2pi'), default='pi',
+      label=('Angle base θ_b', '角度基值 θ_b')),
+    F('conventions.inductance_unit', 'choice', '', choices=('10uH', 'uH'), default='10uH',
+      label=('Unit of raw LD/LQ', '原始 LD/LQ 单位')),
+    Section('current_loop', ('the current-loop PI', '电流环 PI')),
+    F('current_loop.method', 'choice', '', choices=('bandwidth', 'damping', 'manual', 'integers'),
+      default='bandwidth',
+      label=('Method', '设计方法')),
+    F('current_loop.bandwidth_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, default=500.0,
+      label=('Bandwidth', '带宽')),
+    F('current_loop.damping', 'number', '', sign='>0', lo=1e-3, hi=100.0, default=DAMPING,
+      label=('Damping ζ', '阻尼比 ζ')),
+    F('current_loop.kp', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      only_with=('current_loop.method', 'manual'),
+      label=('kp (phase)', 'kp（相值）')),
+    F('current_loop.ki', 'number', 'Ω/s', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
+      only_with=('current_loop.method', 'manual'),
+      label=('ki (phase)', 'ki（相值）')),
+    F('current_loop.pm_kp', 'integer', 'Q12', lo=1, hi=INT32_MAX, default=REQUIRED,
+      only_with=('current_loop.method', 'integers'),
+      label=('pm_kp (firmware)', 'pm_kp（固件）')),
+    F('current_loop.pm_ki', 'integer', 'Q16', lo=1, hi=INT32_MAX, default=REQUIRED,
+      only_with=('current_loop.method', 'integers'),
+      label=('pm_ki (firmware)', 'pm_ki（固件）')),
+    Section('pll', ('the PLL', '锁相环')),
+    F('pll.bandwidth_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, default=50.0,
+      label=('Bandwidth', '带宽')),
+    F('pll.damping', 'number', '', sign='>0', lo=1e-3, hi=100.0, default=DAMPING,
+      label=('Damping ζ', '阻尼比 ζ')),
+    Section('raw',
+            ("the Inovance firmware's raw Uint16 parameters (each overrides the value from SI)",
+             '汇川固件的原始 Uint16 参数（各自覆盖由 SI 换算的值）')),
+    *(F(f"raw.{n}", "integer", RAW_UNITS[n], lo=0, hi=0xFFFF, derived="from SI (below)",
+        label=RAW_LABELS[n])
+      for n in RAW_FIELDS),
+    Section('datasheet',
+            ('values as a datasheet prints them; each fills a motor field left empty',
+             '按数据手册填写的值；各自填入留空的电机字段')),
+    F('datasheet.speed_rpm', 'number', 'rpm', sign='>0', lo=1e-9, hi=1e9,
+      label=('Rated speed', '额定转速')),
+    F('datasheet.ke_v_per_krpm', 'number', 'V/krpm', sign='>0', lo=1e-9, hi=1e9,
+      label=('Back-EMF constant Ke (line-to-line)', '反电势常数 Ke（线间）')),
+    F('datasheet.ke_v_s_per_rad', 'number', 'V·s/rad', sign='>0', lo=1e-9, hi=1e9,
+      label=('Ke in V·s/rad (line-to-line)', 'Ke，单位 V·s/rad（线间）')),
+    F('datasheet.ke_measure', 'choice', '', choices=('rms', 'peak'), derived='required with a Ke',
+      label=('Ke measured as', 'Ke 的测量方式')),
+    F('datasheet.kt_nm_per_a', 'number', 'N·m/A', sign='>0', lo=1e-9, hi=1e9,
+      label=('Torque constant kT (sinusoidal)', '转矩常数 kT（正弦波）')),
+    F('datasheet.kt_current', 'choice', '', choices=('rms', 'peak'), default='rms',
+      label=('kT per ampere', 'kT 的电流单位')),
+    F('datasheet.psi_wb', 'number', 'Wb', sign='>0', lo=1e-9, hi=1e9,
+      label=('Magnet flux ψ (phase amplitude)', '永磁磁链 ψ（相幅值）')),
+    F('datasheet.rs_line_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9,
+      label=('Resistance, terminal to terminal', '线间电阻（两端子之间）')),
+    F('datasheet.l_line_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
+      label=('Inductance, terminal to terminal', '线间电感（两端子之间）')),
+    F('datasheet.ld_line_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
+      label=('Ld, terminal to terminal', '线间 Ld（两端子之间）')),
+    F('datasheet.lq_line_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
+      label=('Lq, terminal to terminal', '线间 Lq（两端子之间）')),
+    F('datasheet.winding', 'choice', '', choices=('star', 'delta'), default='star',
+      label=('Winding', '绕组接法')),
+    F('datasheet.dc_bus_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9,
+      label=('DC bus voltage (DC-bus motor)', '直流母线电压（直流供电电机）')),
+    Section('sim', ('the simulations (absent: none)', '仿真（不填则不仿真）')),
+    Section('sim.current', ('the current-loop step simulation', '电流环阶跃仿真')),
+    F('sim.current.axis', 'choice', '', choices=('d', 'q'), default='d', label=('Axis', '轴')),
+    F('sim.current.step_a', 'number', 'A', sign='!=0', derived='0.5·I_b',
+      label=('Reference step', '给定阶跃')),
+    F('sim.current.duration_s', 'number', 's', sign='>0', derived='30/ω_c, at least 200 periods',
+      label=('Duration', '时长')),
+    F('sim.current.speed_hz', 'number', 'Hz', default=0.0, label=('Electrical speed', '电角频率')),
+    F('sim.current.delay', 'flag', '', default=False,
+      label=('One-sample computation delay', '一拍计算延时')),
+    Section('sim.pll', ('the PLL simulation', '锁相环仿真')),
+    F('sim.pll.speed_hz', 'number', 'Hz', derived='motor.rated_freq_hz',
+      label=('Electrical speed', '电角频率')),
+    F('sim.pll.angle_step_deg', 'number', '°', lo=-180.0, hi=180.0, default=30.0,
+      label=('Angle step', '角度阶跃')),
+    F('sim.pll.ramp_hz_per_s', 'number', 'Hz/s', default=0.0, label=('Speed ramp', '速度斜坡')),
+    F('sim.pll.duration_s', 'number', 's', sign='>0', derived='60/(ζω_n), at least 2000 periods',
+      label=('Duration', '时长')),
+    Section('profiles', ("vendor profiles: each vendor's options are its module's OPTIONS "
+                         "(pulab.profiles)", '厂商配置：各厂商的选项见其模块的 OPTIONS（pulab.profiles）')),
+    Section('analysis', ('loop analysis', '环路分析')),
+    F('analysis.delay', 'choice', '', choices=('computation_pwm', 'computation', 'none'),
+      default='computation_pwm',
+      label=('Delay model', '延时模型')),
+    F('analysis.design', 'choice', '', choices=('phase_margin', 'bandwidth'),
+      default='phase_margin',
+      label=('Design the current PI for', '电流 PI 设计目标')),
+    F('analysis.target_phase_margin_deg', 'number', '°', sign='>0', hi=90.0, hi_open=True,
+      default=60.0,
+      label=('Target phase margin', '目标相位裕度')),
+    F('analysis.target_bandwidth_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9,
+      derived='current_loop.bandwidth_hz',
+      label=('Target closed-loop bandwidth', '目标闭环带宽')),
+    F('analysis.bode', 'flag', '', default=False,
+      label=('Add the Bode data (loop.bode)', '加入伯德图数据（loop.bode）')),
+    Section('analysis.speed', ('the speed loop (absent: not analysed)', '速度环（不填则不分析）')),
+    F('analysis.speed.inertia_kg_m2', 'number', 'kg·m²', sign='>0', lo=1e-9, hi=1e9,
+      default=REQUIRED,
+      label=('Inertia J (motor + load)', '转动惯量 J（电机 + 负载）')),
+    F('analysis.speed.friction_nm_s', 'number', 'N·m·s/rad', sign='>=0', hi=1e9, default=0.0,
+      label=('Viscous friction B', '粘滞摩擦系数 B')),
+    F('analysis.speed.bandwidth_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9, default=20.0,
+      label=('Speed-loop natural frequency', '速度环自然频率')),
+    F('analysis.speed.damping', 'number', '', sign='>0', lo=1e-3, hi=100.0, default=DAMPING,
+      label=('Speed-loop damping ζ', '速度环阻尼比 ζ')),
+    F('analysis.speed.filter_hz', 'number', 'Hz', sign='>0', lo=1e-9, hi=1e9,
+      derived='5·analysis.speed.bandwidth_hz',
+      label=('Speed-filter corner', '速度滤波器截止频率')),
+    F('analysis.speed.ts_s', 'number', 's', sign='>0', lo=1e-9, hi=1.0, derived='10·drive.ts_s',
+      label=('Speed-loop period', '速度环周期')),
+    F('analysis.speed.current_limit_a', 'number', 'A', sign='>0', lo=1e-9, hi=1e9, derived='2·I_b',
+      label=('i_q limit', 'i_q 限幅')),
+    F('analysis.speed.response', 'flag', '', default=False,
+      label=('Add the step and load-step responses (loop.speed.response)',
+             '加入阶跃与负载阶跃响应（loop.speed.response）')),
+    F('analysis.speed.step_pu', 'number', 'pu', sign='!=0', lo=-1.0, hi=1.0, default=0.1,
+      label=('Speed step (pu of ω_b)', '速度阶跃（ω_b 的标幺值）')),
+    F('analysis.speed.load_pu', 'number', 'pu', default=0.5,
+      label=('Load step (pu of T_b)', '负载阶跃（T_b 的标幺值）')),
+)
+
+SECTIONS = {e.path: e for e in TABLE if isinstance(e, Section)}
+FIELDS = tuple(e for e in TABLE if isinstance(e, Field))
+FIELD = {f.path: f for f in FIELDS}
+
+
+def section_fields(path: str) -> list:
+    """The fields directly inside the section at ``path``, in table order."""
+    return [f for f in FIELDS if f.section == path]
+
+
+def _plain(f: Field) -> dict:
+    d = f._asdict()
+    d["default"] = "required" if f.default is REQUIRED else f.default
+    d["choices"], d["only_with"] = list(f.choices), list(f.only_with)
+    d["label"], d["help"] = list(f.label), list(f.help)
+    return d
+
+
+def schema_json() -> str:
+    """The schema as JSON text (``web/src/generated/schema.json``, what the page is built from)."""
+    sections = [{"path": s.path, "title": list(s.title)} for s in SECTIONS.values()]
+    return json.dumps({"sections": sections, "fields": [_plain(f) for f in FIELDS]},
+                      ensure_ascii=False, indent=1) + "\n"
+
+
+def _g(x) -> str:
+    return f"{x:g}" if isinstance(x, float) else str(x)
+
+
+def _range(f: Field) -> str:
+    if f.kind == "choice":
+        return ", ".join(f"`{c}`" for c in f.choices)
+    if f.kind == "flag":
+        return "`true`, `false`"
+    parts = [f.unit] if f.unit else []
+    if f.kind == "integer":
+        parts.append(f"integer {_g(f.lo)}..{_g(f.hi)}")
+        return ", ".join(parts)
+    parts.append({">0": "> 0", ">=0": "≥ 0", "!=0": "≠ 0"}.get(f.sign, "finite"))
+    if f.lo is not None or f.hi is not None:
+        lo = _g(f.lo) if f.lo is not None else ""
+        parts.append(f"{lo}..{_g(f.hi)}" + (" (excl.)" if f.hi_open else "") if lo else
+                     f"< {_g(f.hi)}" if f.hi_open else f"≤ {_g(f.hi)}")
+    return ", ".join(parts)
+
+
+def _default(f: Field) -> str:
+    if f.default is REQUIRED:
+        text = "required" + (f"; {f.derived}" if f.derived else "")
+    elif f.default is None:
+        text = f.derived or "absent"
+    elif isinstance(f.default, bool):
+        text = "`true`" if f.default else "`false`"
+    elif isinstance(f.default, str):
+        text = f"`{f.default}`"
+    else:
+        text = "1/√2" if f.default == DAMPING else _g(f.default)
+    if f.only_with:
+        text += f" (only with {f.only_with[0]} = `{f.only_with[1]}`)"
+    return text
+
+
+def markdown() -> str:
+    """The input tables of docs/contract.md, one per section (``tests/py/test_schema.py``
+    checks the contract against this text)."""
+    out = []
+    for sec in SECTIONS.values():
+        fields = section_fields(sec.path)
+        out.append(f"**`{sec.path}`** — {sec.title[0]}\n")
+        if not fields:
+            out.append("Its fields are in the sections below it." if sec.path == "sim" else
+                       "Documented under Vendor profiles.")
+            out.append("")
+            continue
+        out.append("| field | meaning | type, unit, range | default |\n|---|---|---|---|")
+        for f in fields:
+            out.append(f"| {f.path} | {f.label[0] or '—'} | {_range(f)} | {_default(f)} |")
+        out.append("")
+    return "\n".join(out)

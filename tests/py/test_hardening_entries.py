@@ -1,0 +1,151 @@
+"""Every other entry point under hostile input: the CLI subcommands sweep, batch, trace, header
+and translate, and the worker's request kinds sweep_json, batch_json and trace_json.
+
+``report`` and ``run_json`` get the 10,000 cases of test_hardening.py; qcalc, export and vendors
+requests their own fuzz there and in test_profiles_hardening.py. The contract is the same
+everywhere: exit 0 with strict JSON (or the asked-for text), ``batch`` exit 1 with one stderr
+line per bad row, or exit 2 with one line ``error: FIELD: MESSAGE``; an API reply is strict JSON,
+``ok`` true or a printable one-line ``field``/``message``/``message_zh`` with ``code`` and
+``params``.
+"""
+import contextlib
+import io
+import json
+import random
+import sys
+from collections import Counter
+
+from adversarial import BASE, FIELDS, NASTY_TEXT, NUMBER_LITERALS, _value, cases
+from pulab.__main__ import main
+from pulab.api import batch_json, sweep_json, trace_json
+from pulab.profiles import NAMES
+from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
+from test_hardening import _one_line, _strict
+
+PER_COMMAND = 600
+PLAIN = {k: v for k, v in BASE.items() if k != "sim"}
+CODE = ["Uint16 v; long x = v*10;", "int a = 1; a = a / 0;", "long y = 0x7fffffffL + 1;",
+        "#define K 3\nUint16 v; Uint16 w = v * K;", "x = 1 +;", "{" * 500, "(" * 5000 + "1",
+        "Uint16 v; // @q 15\n", "#define A A\nint x = A;", "int x = 1" + " + 1" * 3000 + ";",
+        "long q = _IQmpy(1, 2);", "Uint16 v; if (v) { v = v >> 1; } else v = 0;", ""]
+
+
+def _run(argv: list, stdin: bytes) -> tuple:
+    saved = sys.stdin
+    sys.stdin = io.TextIOWrapper(io.BytesIO(stdin), encoding="utf-8")
+    out, err = io.StringIO(), io.StringIO()
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            code = main(argv)
+    finally:
+        sys.stdin = saved
+    return code, out.getvalue(), err.getvalue()
+
+
+def _check(command: str, code: int, stdout: str, stderr: str, json_out: bool) -> str:
+    if code == 0:
+        assert stderr == "", (command, stderr[:300])
+        if json_out:
+            _strict(stdout)
+        return "ok"
+    if code == 1 and command == "batch":
+        lines = stderr.splitlines()
+        assert lines and all(_one_line(x) and x.startswith("row ") for x in lines), stderr[:300]
+        return "rows"
+    assert code == 2 and stdout == "", (command, code, stdout[:200])
+    line = stderr[:-1]
+    assert stderr.endswith("\n") and _one_line(line) and line.startswith("error: "), \
+        (command, repr(stderr[:300]))
+    return "error"
+
+
+def _number(rng) -> str:
+    return rng.choice(NUMBER_LITERALS + ["1", "2", "10", "0.5", "1e-3"])
+
+
+def _text(rng) -> str:
+    return rng.choice(NASTY_TEXT + NUMBER_LITERALS + ['=HYPERLINK("http://x","a")', "+1", "@a"])
+
+
+def _argv(rng, command: str) -> tuple:
+    """argv and stdin bytes of one hostile invocation of ``command``."""
+    inputs = cases(1, seed=rng.randrange(10 ** 9))
+    data = next(inputs) if rng.random() < 0.5 else json.dumps(PLAIN).encode()
+    if command == "sweep":
+        path = ".".join(rng.choice(FIELDS)) if rng.random() < 0.8 else _text(rng)
+        axis = f"{path}={_number(rng)}:{_number(rng)}:{rng.choice(['2', '5', '0', '-1', 'x', '20000'])}"
+        argv = ["sweep", "-", f"--x={axis}", f"--format={rng.choice(['json', 'csv', 'text'])}"]
+        if rng.random() < 0.3:
+            argv.append(f"--y={'.'.join(rng.choice(FIELDS))}={_number(rng)}:{_number(rng)}:3")
+        if rng.random() < 0.3:
+            argv.append(f"--profile={rng.choice(list(NAMES) + [_text(rng)])}")
+        return argv, data
+    if command == "batch":
+        cols = ["name"] + [rng.choice(SCHEMA_FIELDS).path for _ in range(rng.randrange(1, 6))]
+        if rng.random() < 0.2:
+            cols.append(_text(rng))
+        rows = [",".join(json.dumps(_text(rng)) if rng.random() < 0.3 else _number(rng)
+                         for _ in cols) for _ in range(rng.randrange(0, 4))]
+        sep = rng.choice([",", ";", "\t"])
+        return ["batch", "-"], (sep.join(cols) + "\n" + "\n".join(r.replace(",", sep) for r in rows)
+                                ).encode("utf-8", "surrogatepass")
+    if command == "trace":
+        argv = ["trace", "-", f"--target={rng.choice(['c28x', 'c28x', 'arm', _text(rng)])}"]
+        for _ in range(rng.randrange(3)):
+            argv.append(f"--set={rng.choice(['v', 'w', 'x', _text(rng)])}={_text(rng)}")
+        if rng.random() < 0.2:
+            argv.append(f"--global-q={_text(rng)}")
+        return argv, rng.choice(CODE + [_text(rng)]).encode("utf-8", "surrogatepass")
+    if command == "header":
+        return ["header", f"--profile={rng.choice(list(NAMES) + [_text(rng)])}", "-"], data
+    return (["translate", f"--from={rng.choice(list(NAMES) + [_text(rng)])}",
+             f"--axis={rng.choice(['d', 'q', _text(rng)])}", f"--kp={_number(rng)}",
+             f"--ki={_number(rng)}", "-"], data)
+
+
+def test_fuzzed_subcommands_keep_the_cli_contract():
+    rng = random.Random(19)
+    seen = Counter()
+    for command in ("sweep", "batch", "trace", "header", "translate"):
+        for _ in range(PER_COMMAND):
+            argv, stdin = _argv(rng, command)
+            json_out = command in ("trace", "translate") or "--format=json" in argv
+            seen[command, _check(command, *_run(argv, stdin), json_out)] += 1
+    print(f"\nsubcommand fuzz: {dict(seen)}")
+    for command in ("sweep", "batch", "trace", "header", "translate"):
+        # Each must reach both outcomes, or the generator tests little.
+        assert seen[command, "ok"] + seen[command, "rows"] > 0 and seen[command, "error"] > 0, seen
+
+
+def _api_reply(text: str) -> str:
+    out = _strict(text)
+    if out["ok"] is True:
+        return "ok"
+    assert _one_line(out["field"]) and _one_line(out["message"]) and _one_line(out["message_zh"]), out
+    assert isinstance(out["code"], str) and isinstance(out["params"], dict), out
+    return "error"
+
+
+def test_fuzzed_worker_requests_keep_the_api_contract():
+    rng = random.Random(20)
+    seen = Counter()
+    for _ in range(PER_COMMAND):
+        path = ".".join(rng.choice(FIELDS))
+        sweep = {"input": rng.choice([PLAIN, _value(rng)]),
+                 "x": rng.choice([{"path": path, "start": 1, "stop": 2, "n": 3}, _value(rng)]),
+                 "op": rng.choice(["sweep", "plan", "chunk", "merge", _text(rng)]),
+                 rng.choice(["start", "count", "summaries", "profile", "y"]): _value(rng)}
+        seen["sweep", _api_reply(sweep_json(json.dumps(sweep)))] += 1
+        csv = f"name,{path}\n{_text(rng)},{_number(rng)}\n"
+        batch = {"csv": rng.choice([csv, _value(rng)]), "start": rng.choice([0, 1, -1, _value(rng)]),
+                 "count": rng.choice([1, 5, _value(rng)])}
+        seen["batch", _api_reply(batch_json(json.dumps(batch)))] += 1
+        trace = {"code": rng.choice(CODE + [_value(rng)]), "target": rng.choice(["c28x", _value(rng)]),
+                 "set": rng.choice([{"v": _value(rng)}, _value(rng)]),
+                 "global_q": rng.choice([None, 15, _value(rng)])}
+        text = json.dumps(trace)
+        if rng.random() < 0.1:
+            text = '{"set": ' + "[" * 5000 + "]" * 5000 + "}"
+        seen["trace", _api_reply(trace_json(text))] += 1
+    print(f"\nworker request fuzz: {dict(seen)}")
+    assert all(seen[k, "error"] > 0 for k in ("sweep", "batch", "trace")), seen
