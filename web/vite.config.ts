@@ -127,5 +127,11 @@ export default defineConfig({
     target: 'es2022',
     chunkSizeWarningLimit: 1500,
     assetsInlineLimit: 0,
+    rollupOptions: {
+      // embed.js: the docs pages' one script tag, at a name that never changes (it is not hashed,
+      // so servers must revalidate it: docs/deploy.md).
+      input: { index: resolve(here, 'index.html'), embed: resolve(here, 'src/embed/element.ts') },
+      output: { entryFileNames: (c) => (c.name === 'embed' ? 'embed.js' : 'assets/[name]-[hash].js') },
+    },
   },
 });

@@ -3,15 +3,17 @@
 // BENCH_RUNS times (default 5), medians with min–max, the machine's load average before/after:
 //   default page cold (fresh profile) and warm (reload), share link cold (#in=, not the seed),
 //   a page with 6 different ?embed= iframes (runtimes started, time to all live, PSS of Chromium),
+//   a docs page of another origin with 12 <pu-lab-panel> (the same numbers),
 //   input → all numbers updated (in page, dataset.updateMs), typed by Playwright fill and by keyboard events.
 // Each boot is printed in phases (ms since navigation) from <html data-t-…> marks.
-// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=cold,warm,share,nosnap,embeds,input
+// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=cold,warm,share,nosnap,embeds,elements,input
 // picks scenarios (nosnap: cold with the snapshot refused, the fallback boot).
 import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { join } from 'node:path';
 import { loadavg, tmpdir } from 'node:os';
+import { createServer } from 'node:http';
 import { serve } from './serve.mjs';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
@@ -21,7 +23,7 @@ if (!existsSync(CHROMIUM)) {
   process.exit(0);
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
-const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,nosnap,embeds,input').split(','));
+const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,nosnap,embeds,elements,input').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
 if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--configLoader', 'runner', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
@@ -132,14 +134,30 @@ function pssOfBrowser(mark) {
   return { kb, processes: mine.size };
 }
 
+const SIX = ['bases', 'pu', 'vendor', 'constants', 'current', 'pll'];
+const TWELVE = [...SIX, 'loop', 'qcalc', 'conventions', 'datasheet', 'review', 'vendors'];
+/** A docs page of another origin (same site) with 12 <pu-lab-panel>, every other one another motor. */
+// A real server on its own port: a page answered by a route has no address, and Chromium refuses
+// its requests to the loopback site (local network access).
+const elementsServer = createServer((req, res) => res.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' }).end(elementsHost()));
+await new Promise((r) => elementsServer.listen(0, '127.0.0.1', r));
+const ELEMENTS_HOST = `http://127.0.0.1:${elementsServer.address().port}/docs.html`;
+function elementsHost() {
+  const other = JSON.stringify({ motor: { rated_voltage_v: 380, rated_current_a: 14.5, rated_freq_hz: 50, pole_pairs: 2, rs_ohm: 0.42, ld_h: 0.0085, lq_h: 0.0135, bemf_v: 335 }, drive: { udc_v: 540, ts_s: 0.000125 } });
+  return `<!doctype html><meta charset="utf-8"><title>docs</title><script type="module" src="${url}embed.js"></script>`
+    + TWELVE.map((p, i) => `<h2>${p}</h2><pu-lab-panel panel="${p}"${i % 2 ? ` input='${other}'` : ''}></pu-lab-panel>`).join('');
+}
+
 /**
- * 6 different ?embed= iframes on one host page, in a fresh browser context: runtimes started,
- * time to first and to all-live numbers, PSS of every Chromium process 3 s after all are live.
+ * Embedded panels on one host page, in a fresh browser context: 6 different ?embed= iframes of
+ * the site's origin, or (`elements`) 12 <pu-lab-panel> on a page of another origin. Runtimes
+ * started, time to first and to all-live numbers, PSS of every Chromium process 3 s after all are live.
  */
-async function embedsRun(ctx, cdp, mark) {
-  const panels = ['bases', 'pu', 'vendor', 'constants', 'current', 'pll'];
-  const host = `<!doctype html><meta charset="utf-8"><title>embeds</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="900" height="400"></iframe>`).join('')}`;
-  await ctx.route(`${url}embed-host.html`, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
+async function embedsRun(ctx, cdp, mark, elements = false) {
+  const panels = elements ? TWELVE : SIX;
+  const hostUrl = elements ? ELEMENTS_HOST : `${url}embed-host.html`;
+  const host = elements ? null : `<!doctype html><meta charset="utf-8"><title>embeds</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="900" height="400"></iframe>`).join('')}`;
+  if (!elements) await ctx.route(hostUrl, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
   const workers = new Set();
   cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
     if (t.type === 'shared_worker' || t.type === 'worker') workers.add(t.targetId);
@@ -147,10 +165,10 @@ async function embedsRun(ctx, cdp, mark) {
   await cdp.send('Target.setDiscoverTargets', { discover: true });
   const p = ctx.pages()[0] ?? await ctx.newPage();
   const t0 = Date.now();
-  await p.goto(`${url}embed-host.html`, { waitUntil: 'commit' });
-  await p.waitForFunction(() => document.querySelectorAll('iframe').length === 6);
+  await p.goto(hostUrl, { waitUntil: 'commit' });
+  await p.waitForFunction((n) => document.querySelectorAll('iframe').length === n, panels.length, { timeout: 60_000 });
   const frames = () => p.frames().filter((f) => f !== p.mainFrame());
-  while (frames().length < 6) await p.waitForTimeout(20);
+  while (frames().length < panels.length) await p.waitForTimeout(20);
   const first = await Promise.all(frames().map((f) => f.waitForFunction(() => /^(build|cached|live)$/.test(document.documentElement.dataset.numbers ?? '') || !!document.querySelector('[data-key][data-value]'), null, { timeout: 240_000, polling: 20 }))).then(() => Date.now() - t0, () => Infinity);
   // A build that starts 12 runtimes may not get there under load: recorded as not live.
   const live = await Promise.all(frames().map((f) => f.waitForFunction(isLive, null, { timeout: 240_000, polling: 20 })))
@@ -161,25 +179,31 @@ async function embedsRun(ctx, cdp, mark) {
   await cdp.detach();
   return { first, live, runtimes: workers.size, pssMB: mem.kb / 1024, processes: mem.processes };
 }
-function reportEmbeds(name, runs) {
-  console.log(`page: 6 ?embed= iframes, cold, ${name.padEnd(22)} first numbers ${stat(runs.map((r) => r.first))}   all live ${stat(runs.map((r) => r.live))}`);
+function reportEmbeds(name, runs, what = '6 ?embed= iframes') {
+  console.log(`page: ${what}, cold, ${name.padEnd(22)} first numbers ${stat(runs.map((r) => r.first))}   all live ${stat(runs.map((r) => r.live))}`);
   console.log(`      Python runtimes (workers) started ${runs.map((r) => r.runtimes).join(', ')};  PSS of all Chromium processes ${stat(runs.map((r) => r.pssMB)).replace(/ ms/g, '')} MB (${runs[0].processes} processes)`);
 }
 
-if (SCEN.has('embeds')) {
-  // A user's browser: a fresh profile on disk (its HTTP cache and the offline cache on disk).
-  // Alone: another Chromium would share (and halve the PSS of) the binary's pages.
+/**
+ * embedsRun RUNS times, each in a fresh profile on disk (a user's browser: HTTP cache and offline
+ * cache on disk), each Chromium alone (another would share, and halve the PSS of, the binary's pages).
+ */
+async function freshProfiles(elements) {
   await browser.close();
-  const disk = [];
+  const runs = [];
   for (let i = 0; i < RUNS; i++) {
     const dir = mkdtempSync(join(tmpdir(), 'pulab-bench-profile-'));
     const ctx = await chromium.launchPersistentContext(dir, { executablePath: CHROMIUM, args: CHROMIUM_ARGS, viewport: { width: 1366, height: 768 } });
-    disk.push(await embedsRun(ctx, await ctx.newCDPSession(ctx.pages()[0]), dir));
+    runs.push(await embedsRun(ctx, await ctx.newCDPSession(ctx.pages()[0]), dir, elements));
     await ctx.close();
     rmSync(dir, { recursive: true, force: true });
   }
-  reportEmbeds('fresh profile on disk', disk);
   browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  return runs;
+}
+
+if (SCEN.has('embeds')) {
+  reportEmbeds('fresh profile on disk', await freshProfiles(false));
   // An incognito-like context (Playwright's default, the other scenarios): the browser keeps the
   // HTTP cache and the offline cache (≈ 45 MB of runtime files) in memory.
   const otr = [];
@@ -189,6 +213,10 @@ if (SCEN.has('embeds')) {
     await ctx.close();
   }
   reportEmbeds('incognito context', otr);
+}
+
+if (SCEN.has('elements')) {
+  reportEmbeds('fresh profile on disk', await freshProfiles(true), '12 <pu-lab-panel>, other origin');
 }
 
 if (SCEN.has('input')) {
@@ -239,5 +267,6 @@ if (SCEN.has('input')) {
 await browser.close();
 server.close();
 nosnap.server.close();
+elementsServer.close();
 const load1 = loadavg();
 console.log(`page: load average before ${load0.map((x) => x.toFixed(2)).join(' ')}, after ${load1.map((x) => x.toFixed(2)).join(' ')} (2 cores; ${RUNS} runs per scenario)`);

@@ -19,6 +19,9 @@ const MIME = {
 /** Files whose name carries a content hash (Vite's assets/, the snapshot) never change under that name. */
 export const HASHED = /(^|\/)(assets\/.*-[\w-]{8,}\.\w+|pyodide\/snapshot-[0-9a-f]{12}\.bin)$/;
 
+/** Files other origins' pages load directly (not through a frame of this site). */
+export const CROSS_ORIGIN = /^embed\.js$/;
+
 /** Which stored variant to send: brotli, then gzip, then the file itself. */
 async function variant(file, acceptEncoding) {
   const accepts = (enc) => new RegExp(`(^|[,\\s])${enc}(;q=(?!0(\\.0*)?(,|$))[\\d.]+)?(,|$|\\s)`).test(acceptEncoding ?? '');
@@ -62,6 +65,8 @@ export function serve(root, prefix = '/', port = 0, faults = {}) {
         ETag: etag,
         'Last-Modified': v.stat.mtime.toUTCString(),
         Vary: 'Accept-Encoding',
+        // embed.js is a module script loaded by docs pages of other origins: CORS (docs/deploy.md).
+        ...(CROSS_ORIGIN.test(rel) ? { 'Access-Control-Allow-Origin': '*' } : {}),
         ...(v.encoding ? { 'Content-Encoding': v.encoding } : {}),
       };
       const inm = req.headers['if-none-match'];

@@ -22,6 +22,7 @@ import { LANG_KEY, load, store } from './page/storage';
 import { registerOffline } from './offline';
 import { mark } from './page/marks';
 import { seedReport } from './page/numbers';
+import { applyTheme, linkToHost, themeParam } from './page/frame-link';
 
 /** Panels that call Python themselves: rendered again when it becomes ready. */
 const PYTHON_PANELS = PANELS.filter((p) => p.needsPython).map((p) => p.id);
@@ -41,6 +42,8 @@ export class App {
     this.embed = panelById(params.get('embed'))?.id ?? null;
     const chapter = params.get('chapter');
     if (chapter) openChapter(chapter, params.get('anchor') ?? '');
+    const theme = themeParam(params);
+    if (theme) applyTheme(theme);
     const langParam = params.get('lang');
     setLang(langParam === 'zh' || langParam === 'en' ? langParam : defaultLang(navigator.languages, load(LANG_KEY)));
     this.init = initialInput(location.hash, this.embed ? null : load(STORAGE_KEY));
@@ -60,6 +63,7 @@ export class App {
     this.session.simGate = this.layout.simPanelNear;
     this.status = new StatusLine(root, this.session);
     this.useInitial(this.init);
+    if (this.embed) linkToHost(this.embed, () => this.session.report);
     window.addEventListener('hashchange', () => {
       const next = initialInput(location.hash, null);
       if (next.source === 'url' && JSON.stringify(effectiveInput(next.input)) !== JSON.stringify(effectiveInput(this.session.input))) {

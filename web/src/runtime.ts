@@ -1,6 +1,7 @@
 // Starting a Python runtime from the page: one SharedWorker per kind, shared by every tab and
 // iframe of the origin (an embed connects to a runtime that is already up), or a dedicated Worker
-// where SharedWorker does not exist (Chrome for Android). <html data-runtime> says which.
+// where SharedWorker does not exist (Chrome for Android) or is denied (a frame of another site in a
+// browser that blocks third-party storage). <html data-runtime> says which.
 import { PulabClient, type WorkerLike } from './rpc';
 import type { MainToWorker } from './protocol';
 
@@ -36,6 +37,42 @@ function dedicatedWorker(name: string): WorkerLike {
 }
 
 /**
+ * A SharedWorker, or a dedicated Worker when the shared one fails before it has said anything: a
+ * browser that blocks third-party storage (Chromium's default for a frame of another site, e.g. an
+ * embed in a docs page) denies SharedWorker there. What was posted meanwhile is posted again.
+ */
+function sharedOrDedicated(name: string): WorkerLike {
+  let target = sharedWorker(name);
+  let answered = false;
+  const sent: MainToWorker[] = [];
+  const w: WorkerLike = {
+    postMessage: (m) => {
+      if (!answered) sent.push(m);
+      target.postMessage(m);
+    },
+    onmessage: null,
+    onerror: null,
+  };
+  const follow = (t: WorkerLike): void => {
+    t.onmessage = (ev) => {
+      answered = true;
+      sent.length = 0;
+      w.onmessage?.(ev);
+    };
+  };
+  follow(target);
+  target.onerror = (ev) => {
+    if (answered) return w.onerror?.(ev);
+    document.documentElement.dataset.runtime = 'dedicated';
+    target = dedicatedWorker(name);
+    follow(target);
+    target.onerror = (e) => w.onerror?.(e);
+    for (const m of sent) target.postMessage(m);
+  };
+  return w;
+}
+
+/**
  * A client of the `kind` runtime. `generation` > 0 after a lost runtime: a new name, so a hung
  * SharedWorker (which the page cannot terminate) is not joined again.
  */
@@ -43,7 +80,7 @@ export function startRuntime(kind: RuntimeKind, generation = 0): PulabClient {
   const shared = typeof SharedWorker === 'function';
   const name = generation ? `pulab-${kind}-${generation}` : `pulab-${kind}`;
   document.documentElement.dataset.runtime = shared ? 'shared' : 'dedicated';
-  const client = new PulabClient(shared ? sharedWorker(name) : dedicatedWorker(name), {}, `pulab-alive-${name}`);
+  const client = new PulabClient(shared ? sharedOrDedicated(name) : dedicatedWorker(name), {}, `pulab-alive-${name}`);
   client.init(new URL('pyodide/', document.baseURI).href, BOOT_IDLE_MS);
   return client;
 }

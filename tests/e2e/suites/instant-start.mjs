@@ -3,28 +3,13 @@
 // embeds sharing one runtime per kind, and the server's compression and validators.
 import { readdirSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { watchWorkers } from '../workers.mjs';
 
 /** A gate for the Python runtime's files: requests under pyodide/ wait until open() is called. */
 function gate() {
   let open;
   const opened = new Promise((r) => (open = r));
   return { hold: (rel) => (rel.startsWith('pyodide/') ? opened : undefined), open: () => open() };
-}
-/**
- * Python runtimes (shared or dedicated workers) created in `page`'s browser context from now on
- * (other suites' contexts may still run workers). Returns {kinds, stop()}.
- */
-async function watchWorkers(browser, page) {
-  const own = await page.context().newCDPSession(page);
-  const { targetInfo } = await own.send('Target.getTargetInfo');
-  await own.detach();
-  const cdp = await browser.newBrowserCDPSession();
-  const kinds = [];
-  cdp.on('Target.targetCreated', ({ targetInfo: t }) => {
-    if ((t.type === 'shared_worker' || t.type === 'worker') && t.browserContextId === targetInfo.browserContextId) kinds.push(t.type);
-  });
-  await cdp.send('Target.setDiscoverTargets', { discover: true });
-  return { kinds, stop: async () => { await cdp.send('Target.setDiscoverTargets', { discover: false }); await cdp.detach(); } };
 }
 const numbersIs = (page, v, timeout = 60_000) =>
   page.waitForFunction((want) => document.documentElement.dataset.numbers === want, v, { timeout, polling: 20 });
