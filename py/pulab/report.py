@@ -148,7 +148,7 @@ def report_steps(inp: dict):
         out["input"]["analysis"] = _loop.validate(n["analysis"])
     if sim_in is not None:
         out["sim"] = yield from _sim.simulate_steps(out, sim_in)
-    out["review"] = review(n, raw, vendor, pi, out.get("sim"))
+    out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"))
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]

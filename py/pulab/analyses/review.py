@@ -244,7 +244,19 @@ def _pll(f: list, sim: dict | None) -> None:
         return  # the firmware's variant when present, else the next one
 
 
-def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None) -> dict:
+def _robust(f: list, loop: dict | None) -> None:
+    """The nominal gains lose a margin on the hot, saturated or low-bus motor: a warning whose
+    remedy is the designed bandwidth (the safe band is in the message)."""
+    if not loop or loop.get("robust") is None:
+        return
+    from .loop.robust import losses
+    for name, value, params in losses(loop["robust"]):
+        _finding(f, "warning", "robust_margin", f"loop.robust.{name}", "current_loop.bandwidth_hz",
+                 value, **params)
+
+
+def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
+           loop: dict | None = None) -> dict:
     """All findings for one report, most severe first.
 
     Parameters
@@ -252,6 +264,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None) 
     n : dict — normalized input ; raw : dict — raw integers used
     vendor : dict — vendor results ; pi : dict — ``current_pi``
     sim : dict or None — the ``sim`` output, for the PLL checks
+    loop : dict or None — the ``loop`` output, for the robustness check
 
     Returns
     -------
@@ -270,6 +283,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None) 
     h = headroom(n, vendor)
     _voltage(f, h, n)
     _pll(f, sim)
+    _robust(f, loop)
     if unit == "uH":
         _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":

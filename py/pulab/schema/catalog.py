@@ -195,7 +195,7 @@ MESSAGES = {
                                  "delay) are optimistic",
                                  "loop.speed：电流环带宽只有速度环穿越频率的 {ratio:.2g} 倍；速度环裕度"
                                  "（把内环当作一个周期的延时）偏乐观"),
-    "warning.robust_margin": ("loop.robust.{name}: {what} {shown} on the {axis} axis at {temp_c:g} °C, "
+    "finding.robust_margin": ("loop.robust.{name}: {what} {shown} on the {axis} axis at {temp_c:g} °C, "
                               "{current_a:.4g} A, U_dc {udc_v:.4g} V (below {threshold}; the firmware "
                               "gains are tuned for the nominal motor); {fix}",
                               "loop.robust.{name}：{axis} 轴{what} {shown}，工况 {temp_c:g} °C、"

@@ -249,6 +249,4 @@ def warnings(loop: dict) -> list:
         ratio = sp["inner_bandwidth_ratio"]
         if ratio is not None and ratio < 5.0:
             w.append(("warning.speed_inner_slow", {"ratio": ratio}))
-    if loop.get("robust") is not None:
-        w += _robust.warnings(loop["robust"])
     return w

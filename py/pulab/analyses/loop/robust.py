@@ -571,10 +571,15 @@ def study_row(report: dict, cfg: dict, delay: str, samples: int, seed: int,
                                          if v is not None), default=None)}
 
 
-def warnings(rob: dict) -> list:
-    """A design that loses its margin somewhere in the box: one warning naming the case."""
+def losses(rob: dict) -> list:
+    """Where the nominal gains lose a margin in the box: ``(name, value, params)`` per margin.
+
+    ``name`` is ``worst`` (phase) or ``worst_gain``; ``value`` the margin (None when that
+    case is unstable); ``params`` those of catalog entry ``finding.robust_margin``.  The
+    review turns each into a finding that points at the designed bandwidth.
+    """
     cfg = rob["config"]
-    w = []
+    out = []
     for name, key, thr, unit in (("worst", "phase_margin_deg", cfg["min_phase_margin_deg"], "°"),
                                  ("worst_gain", "gain_margin_db", cfg["min_gain_margin_db"], " dB")):
         c = rob[name]
@@ -583,13 +588,12 @@ def warnings(rob: dict) -> list:
         if r["stable"] and (v is None or v >= thr):
             continue
         band = rob["safe_bandwidth_hz"]
-        w.append(("warning.robust_margin", {
+        out.append((name, v if r["stable"] else None, {
             "name": name, "axis": c["axis"], "temp_c": c["temperature_c"],
             "current_a": c["current_a"], "udc_v": c["udc_v"], "threshold": f"{thr:g}{unit}",
-            "what": {"code": f"robust.{key[:-4] if key.endswith('_deg') else key[:-3]}",
-                     "params": {}},
+            "what": {"code": f"robust.{key.rsplit('_', 1)[0]}", "params": {}},
             "shown": {"code": "robust.unstable", "params": {}} if not r["stable"] else
             f"{v:.1f}{unit}",
             "fix": {"code": "robust.no_band", "params": {}} if band is None else
             {"code": "robust.band", "params": {"lo": band[0], "hi": band[1]}}}))
-    return w
+    return out
