@@ -15,6 +15,7 @@ import sys
 import pytest
 
 import pulab
+from pulab.api import run_json
 from pulab.schema.errors import InputError
 from pulab.analyses.loop import robust
 
@@ -272,14 +273,15 @@ def test_cli_study_progress_on_stderr(tmp_path):
                                    {"inductance_table": [[0, 1e-3, 1e-3], [0, 1e-3, 1e-3]]},
                                    {"inductance_table": [[0, 1e-3, 1e-3], [1, 1e-3]]},
                                    {"inductance_table": [[0, 1e-3, 1e-3], [1, 0, 1e-3]]},
-                                   {"magnet": "alnico"}, {"samples": 0.5}])
+                                   {"magnet": "alnico"}, {"samples": 0.5}, {"magnet": 5},
+                                   {"samples": -1}, {"grid": 100}, {"peak_current_a": -1},
+                                   {"reference_c": 1000}, {"seed": -1}, "x"])
 def test_errors_have_chinese(value):
-    from pulab.schema.messages import has_chinese
     inp = copy.deepcopy(SEED)
     inp["analysis"]["robust"] = value
-    with pytest.raises(InputError) as e:
-        pulab.report(inp)
-    assert has_chinese(e.value.message), e.value.message
+    r = json.loads(run_json(json.dumps(inp)))
+    assert r["ok"] is False and r["field"].startswith("analysis.robust"), r
+    assert any("\u4e00" <= ch <= "\u9fff" for ch in r["message_zh"]), r
 
 
 def test_warnings_have_chinese():

@@ -91,7 +91,7 @@ def _number(sec: dict, key: str, default: float, lo: float, hi: float) -> float:
         return default
     v = real(sec[key], f"analysis.robust.{key}")
     if not lo <= v <= hi:
-        raise InputError(f"analysis.robust.{key}", f"must be between {lo:g} and {hi:g}, got {v:g}")
+        raise InputError(f"analysis.robust.{key}", code="out_of_range", lo=lo, hi=hi, value=v)
     return v
 
 
@@ -102,7 +102,7 @@ def _integer(sec: dict, key: str, default: int, lo: int, hi: int) -> int:
     if isinstance(v, bool) or not isinstance(v, (int, float)) or v != int(v):
         raise InputError(f"analysis.robust.{key}", f"must be an integer, got {v!r}")
     if not lo <= v <= hi:
-        raise InputError(f"analysis.robust.{key}", f"must be {lo}..{hi}, got {int(v)}")
+        raise InputError(f"analysis.robust.{key}", code="integer_range", lo=lo, hi=hi, got=int(v))
     return int(v)
 
 
@@ -152,7 +152,7 @@ def validate(value) -> dict:
     else:
         beta = real(magnet, f"{path}.magnet")
         if not -1.0 <= beta <= 1.0:
-            raise InputError(f"{path}.magnet", f"must be between -1 and 1, got {beta:g}")
+            raise InputError(f"{path}.magnet", code="out_of_range", lo=-1.0, hi=1.0, value=beta)
     compensated = s.get("bus_compensated", True)
     if not isinstance(compensated, bool):
         raise InputError(f"{path}.bus_compensated", f"must be true or false, got {compensated!r}")
@@ -160,7 +160,7 @@ def validate(value) -> dict:
     if peak is not None:
         peak = real(peak, f"{path}.peak_current_a")
         if peak <= 0:
-            raise InputError(f"{path}.peak_current_a", f"must be > 0, got {peak:g}")
+            raise InputError(f"{path}.peak_current_a", code="not_positive", value=peak)
     return {"temperature_c": [lo, hi],
             "reference_c": _number(s, "reference_c", 20.0, -273.15, 400.0),
             "copper_alpha_per_k": _number(s, "copper_alpha_per_k", 0.00393, 0.0, 0.1),
