@@ -19,9 +19,11 @@ from .schema.inputs import normalize
 from .schema.catalog import render
 from .analyses.review import review
 from .analyses.slices import finish
-from .profiles.inovance_code import current_pi_step, raw_from_si, vendor_results
+from .profiles import limits
+from .profiles.inovance_code import current_pi_step, raw_from_si, raw_split, vendor_split
 
-__all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "current_pi_section"]
+__all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "input_raw_split",
+           "current_pi_section"]
 
 
 def _profile_warnings(prof: dict) -> list:
@@ -37,6 +39,10 @@ def _profile_warnings(prof: dict) -> list:
             elif c["value"] == 0 and c["ideal"] != 0:
                 w.append(("warning.profile_zero", params))
     return w
+
+
+#: The vendor results the firmware's voltage limits come from (the PI's clamps).
+_LIMITS = frozenset(("maxu", "pm_maxout_vol"))
 
 
 def _pi_example(g: dict, vendor: dict) -> dict:
@@ -55,10 +61,20 @@ def input_bases(n: dict) -> dict:
                  c["base_voltage_v"], c["base_current_a"], c["angle_base"])
 
 
+def _si(n: dict) -> dict:
+    return {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
+
+
 def input_raw(n: dict) -> dict:
-    """The raw firmware integers (contract ``vendor.raw``) of a normalized input."""
-    si = {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
-    return raw_from_si(si, n["conventions"]["inductance_unit"], n["raw"])
+    """The raw firmware integers (contract ``vendor.raw``) of a normalized input, every one
+    required to fit its Uint16 (raises :class:`InputError` naming ``raw.NAME``)."""
+    return raw_from_si(_si(n), n["conventions"]["inductance_unit"], n["raw"])
+
+
+def input_raw_split(n: dict) -> tuple[dict, dict]:
+    """The raw firmware integers that fit, and those the firmware cannot hold
+    (:func:`pulab.profiles.inovance_code.raw_split`)."""
+    return raw_split(_si(n), n["conventions"]["inductance_unit"], n["raw"])
 
 
 def current_pi_section(n: dict, b: dict) -> dict:
@@ -116,16 +132,21 @@ def report_steps(inp: dict):
     b = input_bases(n)
     psi = flux_linkage(c["base"], m["bemf_v"], m["rated_freq_hz"])
     pu = per_unit(b, m["rs_ohm"], m["ld_h"], m["lq_h"], psi, d["ts_s"])
-    raw = input_raw(n)
-    vendor = vendor_results(raw, c["inductance_unit"])
+    # The Inovance integers are one firmware's view: what it cannot hold is reported in
+    # ``firmware.inovance``, and the physics goes on without it.
+    raw, outside = input_raw_split(n)
+    vendor, failed = vendor_split(raw, c["inductance_unit"])
+    firmware = {"inovance": limits.status(limits.inovance(outside, failed,
+                                                          c["inductance_unit"]))}
     pi = current_pi_section(n, b)
-    pi["step_example"] = _pi_example(pi["d"], vendor)
+    pi["step_example"] = _pi_example(pi["d"], vendor) if _LIMITS <= vendor.keys() else None
     prof = None
     if "profiles" in n:  # only when asked: the five profiles cost more than the rest
         from . import profiles as _profiles
-        ctx = _profiles.context(n, raw, vendor, pi)
+        ctx = _profiles.context(n, raw, vendor, pi, firmware["inovance"]["problems"])
         n["profiles"] = _profiles.options(n["profiles"], ctx)
         prof = _profiles.profiles(ctx, n["profiles"])
+        firmware.update({name: p.pop("status") for name, p in prof.items()})
     out = {
         "input": {k: v for k, v in n.items() if k not in ("sim", "analysis", "datasheet")},
         "base": b,
@@ -136,6 +157,7 @@ def report_steps(inp: dict):
                          b["theta_b"]),
         "constants": magic_constants(),
         "mechanical": mechanical(m, b, psi, c["base"]),
+        "firmware": firmware,
     }
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
@@ -148,7 +170,7 @@ def report_steps(inp: dict):
         out["input"]["analysis"] = _loop.validate(n["analysis"])
     if sim_in is not None:
         out["sim"] = yield from _sim.simulate_steps(out, sim_in)
-    out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"))
+    out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"), firmware)
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]

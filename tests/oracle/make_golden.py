@@ -120,6 +120,23 @@ CASES = [
                                 raw={"Voltage": 380, "Current": 1450, "FullFreq01": 5000,
                                      "FreqRated01": 5000, "RsPm": 420, "LD": 850,
                                      "LQ": 1350, "BemfVolt": 3350, "uDCFilter": 5400})),
+    # Beyond the Inovance firmware, physics intact (firmware.inovance lists what it cannot
+    # hold or compute; the other results are computed):
+    # 7000 V bus → uDCFilter 70000 > Uint16: no pm_maxout_vol/maxu.
+    ("19_limit_udc_7000v", with_(SEED, drive={"udc_v": 7000})),
+    # FreqPer = (1<<15)/40000 = 0, then FluxRotor divides by it.
+    ("20_limit_freqper_zero", with_(SEED, drive={"base_freq_hz": 400}, raw={"FreqRated01": 1})),
+    # Voltage*10 = 327680 ≡ 0 (mod 65536): the 16-bit product is zero, FluxRotor divides by it.
+    ("21_limit_voltage_32768", with_(SEED, raw={"Voltage": 32768})),
+    # Voltage 0: Rpm, the inductances, FluxRotor and the voltage limits all divide by zero.
+    ("22_limit_voltage_0", with_(SEED, raw={"Voltage": 0})),
+    # A 24 V, 7-pole-pair, 28,000 rpm robot motor: 3266.67 Hz needs FullFreq01 and
+    # FreqRated01 = 326667 (0.01 Hz units) > 65535.
+    ("23_limit_robot_28krpm", {"motor": {"rated_voltage_v": 24, "rated_current_a": 10,
+                                         "rated_freq_hz": 3266.67, "rs_ohm": 0.05,
+                                         "ld_h": 2e-5, "lq_h": 2e-5, "bemf_v": 16,
+                                         "pole_pairs": 7},
+                               "drive": {"udc_v": 24, "ts_s": 2.5e-5}}),
 ]
 
 
@@ -139,8 +156,6 @@ ERRORS = [
     (with_(SEED, motor={"pole_pairs": 0}), "motor.pole_pairs"),
     (with_(SEED, raw={"LD": 70000}), "raw.LD"),
     (with_(SEED, raw={"Current": -1}), "raw.Current"),
-    # converted from SI out of range: 7000 V → uDCFilter 70000
-    (with_(SEED, drive={"udc_v": 7000}), "raw.uDCFilter"),
     (with_(SEED, motor={"colour": "red"}), "motor.colour"),
     (with_(SEED, raw={"Rs": 1500}), "raw.Rs"),
     (with_(SEED, conventions={"base": "custom", "base_current_a": 10.0}),
@@ -151,11 +166,6 @@ ERRORS = [
     (with_(SEED, current_loop={"method": "damping", "bandwidth_hz": 10}),
      "current_loop.bandwidth_hz"),
     (with_(SEED, current_loop={"method": "manual", "kp": 1e9, "ki": 100.0}), "current_loop"),
-    # FreqPer = (1<<15)/40000 = 0, then FluxRotor divides by it
-    (with_(SEED, drive={"base_freq_hz": 400}, raw={"FreqRated01": 1}), "raw.FreqRated01"),
-    # Voltage*10 = 327680 ≡ 0 (mod 65536): 16-bit int product is zero, FluxRotor divides by it
-    (with_(SEED, raw={"Voltage": 32768}), "raw.Voltage"),
-    (with_(SEED, raw={"Voltage": 0}), "raw.Voltage"),
 ]
 
 

@@ -157,11 +157,16 @@ def parse(inp: dict) -> dict:
         "BemfVolt": (P["bemf_v"], 10.0),
         "uDCFilter": (P["udc_v"], 10.0),
     }
-    raw = {}
+    raw, outside = {}, {}
     for name in RAW_NAMES:
         v = r.get(name)
         if v is None:
             v = _round_half_away(float(si[name][0]) * si[name][1])
+            if not 0 <= v <= 65535:
+                # A value the motor needs but the firmware's Uint16 cannot hold: a limit of
+                # that firmware, reported in firmware.inovance, not an input error.
+                outside[name] = v
+                continue
         else:
             if not _is_number(v):
                 raise OracleInputError(f"raw.{name}", "not a number")
@@ -171,7 +176,7 @@ def parse(inp: dict) -> dict:
         if not 0 <= v <= 65535:
             raise OracleInputError(f"raw.{name}", "outside Uint16 0..65535")
         raw[name] = v
-    P["raw"] = raw
+    P["raw"], P["outside"] = raw, outside
     return P
 
 
@@ -255,58 +260,76 @@ def _result(value, ideal: float, q: int, ctype: str, si: float, trace: list) -> 
 U32, I32, U16 = np.uint32, np.int32, np.uint16
 
 
-def vendor(P: dict) -> dict:
-    raw = P["raw"]
-    V, I, FF, FR = raw["Voltage"], raw["Current"], raw["FullFreq01"], raw["FreqRated01"]
-    out = {"raw": dict(raw)}
-    # Real-valued bases from the raw integers (vendor path is the rms convention, seed 1.4-13).
-    Ub = V / SQRT3
-    Ib = I / 100.0
-    fb = FF / 100.0
-    Zb = Ub / Ib
-    Lb = Ub / (2.0 * math.pi * fb * Ib)
-    psib = Ub / (2.0 * math.pi * fb)
+#: The raw parameters each vendor block below reads (from its C statements).
+READS = {"Rpm": ("RsPm", "Current", "Voltage"),
+         "LD": ("Voltage", "Current", "FullFreq01", "LD"),
+         "LQ": ("Voltage", "Current", "FullFreq01", "LQ"),
+         "FreqPer": ("FreqRated01", "FullFreq01"),
+         "FluxRotor": ("BemfVolt", "Voltage", "FreqRated01", "FullFreq01"),
+         "pm_maxout_vol": ("uDCFilter", "Voltage"), "maxu": ("uDCFilter", "Voltage")}
 
+
+def _rpm(P: dict) -> dict:
+    raw = P["raw"]
+    V, I = raw["Voltage"], raw["Current"]
+    Zb = (V / SQRT3) / (I / 100.0)
     # --- Rpm (seed 1.4-1, 1.4-2): Q16 ---
     s1 = Step()
     m_UData = s1.div(s1.mul(U32(raw["RsPm"]), U32(I)), U32(V), "raw.Voltage")
     s2 = Step()
     rpm = s2.store(s2.shr(s2.mul(U32(m_UData), U32(18597)), 14), "Uint16")
     ideal = (raw["RsPm"] / 1000.0) / ((V / SQRT3) / (I / 100.0)) * 2.0 ** 16
-    out["Rpm"] = _result(rpm, ideal, 16, "Uint16", int(rpm) / 2.0 ** 16 * Zb, [
+    return _result(rpm, ideal, 16, "Uint16", int(rpm) / 2.0 ** 16 * Zb, [
         _trace("m_UData", "Ulong", m_UData, s1), _trace("gMotorExtPer.Rpm", "Uint16", rpm, s2)])
 
+
+def _inductance(P: dict, name: str) -> dict:
+    raw = P["raw"]
+    V, I, FF = raw["Voltage"], raw["Current"], raw["FullFreq01"]
+    Lb = (V / SQRT3) / (2.0 * math.pi * (FF / 100.0) * (I / 100.0))
     # --- LD, LQ (seed 1.4-3 … 1.4-15): Q13, ×10 when the raw unit is µH ---
-    for name in ("LD", "LQ"):
-        a = Step()
-        baseL1 = a.div(a.mul(U32(V), U32(3678)), U32(I), "raw.Current")
-        b = Step()
-        # m_BaseL == 0 after this would only surface at the next division; name FullFreq01
-        # when it is this step that zeroed it, Current when the first step already did.
-        baseL2 = b.div(b.mul(U32(baseL1), U32(5000)), U32(FF), "raw.FullFreq01")
-        c = Step()
-        m1 = c.add(c.shl(U32(raw[name]), 14), c.shr(U32(baseL2), 1))
-        d = Step()
-        zero_field = "raw.Current" if int(baseL1) == 0 else "raw.FullFreq01"
-        m2 = d.div(U32(m1), U32(baseL2), zero_field)
-        e = Step()
-        res = e.store(e.div(U32(m2), U32(10), name), "Uint16")
-        extra = ("unit_uH",) if P["inductance_unit"] == "uH" else ()
-        L = raw[name] * (1e-5 if P["inductance_unit"] == "10uH" else 1e-6)
-        ideal = L / Lb * 2.0 ** 13
-        out[name] = _result(res, ideal, 13, "Uint16", int(res) / 2.0 ** 13 * Lb, [
-            _trace("m_BaseL", "Ulong", baseL1, a), _trace("m_BaseL", "Ulong", baseL2, b),
-            _trace("m_Ulong", "Ulong", m1, c), _trace("m_Ulong", "Ulong", m2, d),
-            # unit_uH rides on the store step, so result flags stay the union of step flags.
-            _trace(f"gMotorExtPer.{name}", "Uint16", res, e, extra)])
+    a = Step()
+    baseL1 = a.div(a.mul(U32(V), U32(3678)), U32(I), "raw.Current")
+    b = Step()
+    # m_BaseL == 0 after this would only surface at the next division; name FullFreq01
+    # when it is this step that zeroed it, Current when the first step already did.
+    baseL2 = b.div(b.mul(U32(baseL1), U32(5000)), U32(FF), "raw.FullFreq01")
+    c = Step()
+    m1 = c.add(c.shl(U32(raw[name]), 14), c.shr(U32(baseL2), 1))
+    d = Step()
+    zero_field = "raw.Current" if int(baseL1) == 0 else "raw.FullFreq01"
+    m2 = d.div(U32(m1), U32(baseL2), zero_field)
+    e = Step()
+    res = e.store(e.div(U32(m2), U32(10), name), "Uint16")
+    extra = ("unit_uH",) if P["inductance_unit"] == "uH" else ()
+    L = raw[name] * (1e-5 if P["inductance_unit"] == "10uH" else 1e-6)
+    ideal = L / Lb * 2.0 ** 13
+    return _result(res, ideal, 13, "Uint16", int(res) / 2.0 ** 13 * Lb, [
+        _trace("m_BaseL", "Ulong", baseL1, a), _trace("m_BaseL", "Ulong", baseL2, b),
+        _trace("m_Ulong", "Ulong", m1, c), _trace("m_Ulong", "Ulong", m2, d),
+        # unit_uH rides on the store step, so result flags stay the union of step flags.
+        _trace(f"gMotorExtPer.{name}", "Uint16", res, e, extra)])
 
-    # --- FreqPer: Q15 ---
+
+def _freqper_int(P: dict):
+    raw = P["raw"]
     s = Step()
-    freqper = s.store(s.div(s.shl(U32(FR), 15), U32(FF), "raw.FullFreq01"), "Uint16")
-    out["FreqPer"] = _result(freqper, FR / FF * 2.0 ** 15, 15, "Uint16",
-                             int(freqper) / 2.0 ** 15 * fb,
-                             [_trace("gMotorInfo.FreqPer", "Uint16", freqper, s)])
+    return s.store(s.div(s.shl(U32(raw["FreqRated01"]), 15), U32(raw["FullFreq01"]),
+                         "raw.FullFreq01"), "Uint16"), s
 
+
+def _freqper(P: dict) -> dict:
+    FR, FF = P["raw"]["FreqRated01"], P["raw"]["FullFreq01"]
+    # --- FreqPer: Q15 ---
+    freqper, s = _freqper_int(P)
+    return _result(freqper, FR / FF * 2.0 ** 15, 15, "Uint16", int(freqper) / 2.0 ** 15 * FF / 100.0,
+                   [_trace("gMotorInfo.FreqPer", "Uint16", freqper, s)])
+
+
+def _flux(P: dict) -> dict:
+    raw = P["raw"]
+    V, FF, FR = raw["Voltage"], raw["FullFreq01"], raw["FreqRated01"]
+    psib = (V / SQRT3) / (2.0 * math.pi * FF / 100.0)
     # --- FluxRotor (seed 1.4-23 … 1.4-25): Q12 ---
     s1 = Step()
     with np.errstate(over="ignore"):
@@ -316,27 +339,60 @@ def vendor(P: dict) -> dict:
     num = s1.shl(I32(raw["BemfVolt"]), 12)
     q = s1.div(num, I32(int(v10)), "raw.Voltage")  # unsigned int promoted to long
     m_Ulong = s1.store(q, "Ulong")
+    freqper, _ = _freqper_int(P)
     s2 = Step()
     flux = s2.store(s2.div(s2.shl(U32(m_Ulong), 15), U32(int(freqper)), "raw.FreqRated01"),
                     "Uint16")
     ideal = (raw["BemfVolt"] / 10.0) / V * FF / FR * 2.0 ** 12
-    out["FluxRotor"] = _result(flux, ideal, 12, "Uint16", int(flux) / 2.0 ** 12 * psib, [
+    return _result(flux, ideal, 12, "Uint16", int(flux) / 2.0 ** 12 * psib, [
         _trace("m_Ulong", "Ulong", m_Ulong, s1),
         _trace("gMotorExtPer.FluxRotor", "Uint16", flux, s2)])
 
+
+def _limits(P: dict) -> tuple[dict, dict]:
+    raw = P["raw"]
+    V = raw["Voltage"]
     # --- pm_maxout_vol, maxu (seed 2.2-2): Q12, Q24, long ---
     s1 = Step()
     data1 = s1.shr(s1.mul(I32(raw["uDCFilter"]), I32(2316)), 15)
     s2 = Step()
     pmv = s2.div(s2.shl(I32(data1), 12), I32(V), "raw.Voltage")
     ideal = (raw["uDCFilter"] / 10.0 / SQRT2) / V * 2.0 ** 12
-    out["pm_maxout_vol"] = _result(pmv, ideal, 12, "long", int(pmv) / 2.0 ** 12 * V, [
+    out = _result(pmv, ideal, 12, "long", int(pmv) / 2.0 ** 12 * V, [
         _trace("data1", "long", data1, s1), _trace("pm_maxout_vol", "long", pmv, s2)])
     s3 = Step()
     maxu = s3.shl(I32(pmv), 12)
-    out["maxu"] = _result(maxu, ideal * 2.0 ** 12, 24, "long", int(maxu) / 2.0 ** 24 * V,
-                          [_trace("maxu", "long", maxu, s3)])
-    return out
+    return out, _result(maxu, ideal * 2.0 ** 12, 24, "long", int(maxu) / 2.0 ** 24 * V,
+                        [_trace("maxu", "long", maxu, s3)])
+
+
+BLOCKS = {"Rpm": _rpm, "LD": lambda P: _inductance(P, "LD"),
+          "LQ": lambda P: _inductance(P, "LQ"), "FreqPer": _freqper, "FluxRotor": _flux,
+          "pm_maxout_vol": lambda P: _limits(P)[0], "maxu": lambda P: _limits(P)[1]}
+
+
+def vendor(P: dict) -> tuple[dict, dict]:
+    """The vendor results the firmware computes, and the firmware's own limit entries:
+    each block runs alone; one that reads a raw parameter beyond Uint16 or divides by zero
+    is not computed and its field is listed (docs/contract.md "Firmware limits")."""
+    out = {"raw": dict(P["raw"])}
+    failed: dict = {}
+    for name, block in BLOCKS.items():
+        missing = [k for k in READS[name] if k in P["outside"]]
+        if missing:
+            failed.setdefault(f"raw.{missing[0]}", []).append(name)
+            continue
+        try:
+            out[name] = block(P)
+        except OracleInputError as e:
+            failed.setdefault(e.field, []).append(name)
+    problems = []
+    for name, value in P["outside"].items():
+        problems.append({"field": f"raw.{name}", "value": value, "stored": value % 65536,
+                         "results": sorted(failed.pop(f"raw.{name}", []))})
+    problems += [{"field": f, "value": None, "stored": None, "results": sorted(r)}
+                 for f, r in failed.items()]
+    return out, {"representable": not problems, "problems": problems}
 
 
 # ----------------------------------------------------------------------------------------
@@ -419,7 +475,7 @@ def oracle_report(inp: dict) -> dict:
     """The compared fields of pulab.report(inp); raises OracleInputError on bad input."""
     P = parse(inp)
     B = bases(P)
-    V = vendor(P)
+    V, F = vendor(P)
     C = current_pi(P, B)
     return {"base": B, "pu": per_unit(P, B), "vendor": V, "current_pi": C,
-            "pll": pll(P, B), "constants": constants()}
+            "pll": pll(P, B), "constants": constants(), "firmware": {"inovance": F}}

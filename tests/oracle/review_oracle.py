@@ -14,8 +14,8 @@ Three real motors, numbers as printed in public datasheets:
   block commutation: line-to-line peak), terminal resistance phase to phase 0.608 Ω,
   terminal inductance phase to phase 0.463 mH, nominal current 3.21 A, no-load speed
   6110 rpm at 24 V (taken as the rated speed: the speed the 24 V bus allows; 815 Hz
-  electrical does not fit the firmware's FullFreq01 in 0.01 Hz, so the report is an error
-  naming raw.FullFreq01, and only the conversions are compared);
+  electrical does not fit the Inovance firmware's FullFreq01 in 0.01 Hz, so its review
+  has the ``unrepresentable`` finding and no FreqPer/FluxRotor/LD/LQ checks);
 - HEIDENHAIN SRP 5000 torque motor (Betriebsanleitung 5/2017, 11.2 "Motor
   characteristics"): DC 48 V, 20 poles (10 pole pairs), back-EMF constant
   0.397 V_rms/(rad/s), torque constant 0.668 N·m/A_rms, R20 9.06 Ω, L1 2.42 mH (taken as
@@ -38,7 +38,7 @@ import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from golden_files import golden_dir, sync  # noqa: E402
-from oracle import OracleInputError, oracle_report  # noqa: E402  (pulab-free)
+from oracle import oracle_report  # noqa: E402  (pulab-free)
 
 GOLDEN = pathlib.Path(__file__).resolve().parents[1] / "golden" / "review"
 REL, ABS = 1e-12, 1e-15  # closed-form float64 arithmetic (see golden_files.py)
@@ -124,6 +124,8 @@ def findings(inp: dict) -> tuple[list, dict]:
         si = m.get(key, d.get(key, m["rated_freq_hz"] if key == "base_freq_hz" else None))
         x = si * k
         raw[name] = int(math.floor(x + 0.5))
+        if raw[name] > 65535:
+            continue  # the firmware cannot be given it: firmware.inovance, not a rounding
         if raw[name] == 0:
             out.append(("error", "raw_zero", f"vendor.raw.{name}"))
         elif _q(100 * (raw[name] - x) / x):
@@ -141,10 +143,14 @@ def findings(inp: dict) -> tuple[list, dict]:
         out.append(("error", "wc_ts", "current_pi.bandwidth_hz"))
     elif wc_ts >= WC_TS_WARN:
         out.append(("warning", "wc_ts", "current_pi.bandwidth_hz"))
-    if raw["FullFreq01"] < raw["FreqRated01"]:
+    if raw["FullFreq01"] <= 65535 and raw["FullFreq01"] < raw["FreqRated01"] <= 65535:
         out.append(("warning", "base_below_rated", "vendor.FreqPer.value"))
-    # the firmware's voltage limit, pm_maxout_vol (Q12 of the rated line voltage)
-    limit = r["vendor"]["pm_maxout_vol"]["value"] / 4096.0 * raw["Voltage"]
+    if not r["firmware"]["inovance"]["representable"]:
+        out.append(("warning", "unrepresentable", "firmware.inovance"))
+    # the firmware's voltage limit, pm_maxout_vol (Q12 of the rated line voltage); the
+    # physical U_dc/√2 when the firmware cannot compute it
+    limit = (r["vendor"]["pm_maxout_vol"]["value"] / 4096.0 * raw["Voltage"]
+             if "pm_maxout_vol" in r["vendor"] else d["udc_v"] / math.sqrt(2.0))
     h = headroom(m, d, limit)
     if h["need_rated_fn_v"] > limit:
         out.append(("warning", "voltage_rated", "review.headroom.need_rated_fn_v"))
@@ -196,11 +202,7 @@ def case(inp: dict) -> dict:
     d.setdefault("udc_v", inp["datasheet"].get("dc_bus_v"))
     plain = {"motor": m, "drive": d, "current_loop": inp["current_loop"]}
     out = {"input.motor": m, "mechanical": mechanical(m)}
-    try:
-        f, h = findings(plain)
-    except OracleInputError as e:
-        # e.g. 815 Hz does not fit FullFreq01 in 0.01 Hz (Uint16 ≤ 655.35 Hz)
-        return {**out, "error_field": e.field}
+    f, h = findings(plain)
     return {**out, "review.headroom": h, "review.findings": [list(x) for x in f]}
 
 

@@ -98,7 +98,8 @@ def _cli(tmp_path, inp: dict):
                           capture_output=True, text=True, env=env, cwd=ROOT)
 
 
-@pytest.mark.parametrize("name", ["01_seed_motor", "13_wrap_6600v", "15_store_lq_uH"])
+@pytest.mark.parametrize("name", ["01_seed_motor", "13_wrap_6600v", "15_store_lq_uH",
+                                  "23_limit_robot_28krpm"])
 def test_cli_report(tmp_path, name):
     inp = _load(GOLDEN / f"{name}.json")["input"]
     r = _cli(tmp_path, inp)
@@ -107,7 +108,7 @@ def test_cli_report(tmp_path, name):
     assert json.loads(r.stdout) == json.loads(json.dumps(pulab.report(inp)))
 
 
-@pytest.mark.parametrize("idx", [0, 7, 18])
+@pytest.mark.parametrize("idx", [0, 7, -1])
 def test_cli_error(tmp_path, idx):
     case = ERRORS[idx]
     r = _cli(tmp_path, case["input"])

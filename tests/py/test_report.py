@@ -71,8 +71,6 @@ def test_bandwidth_design_round_trips_through_the_integers(seed_input):
     ({"current_loop": {"method": "manual"}}, "current_loop.kp"),
     ({"raw": {"Voltage": 70000}}, "raw.Voltage"),
     ({"raw": {"Voltage": -1}}, "raw.Voltage"),
-    ({"raw": {"FreqRated01": 0}}, "raw.FreqRated01"),
-    ({"motor": {"rated_current_a": 700}}, "raw.Current"),
     ({"current_loop": {"method": "damping", "bandwidth_hz": 1}}, "current_loop.bandwidth_hz"),
 ])
 def test_bad_input_names_the_field(seed_input, patch, field):
@@ -81,6 +79,25 @@ def test_bad_input_names_the_field(seed_input, patch, field):
     with pytest.raises(InputError) as e:
         report(seed_input)
     assert e.value.field == field
+
+
+@pytest.mark.parametrize("patch, field, missing", [
+    # FreqPer = 0 and FluxRotor divides by it: a property of the vendor code
+    ({"raw": {"FreqRated01": 0}}, "raw.FreqRated01", ["FluxRotor"]),
+    # 700 A needs Current = 70000 (0.01 A): beyond the Uint16 parameter
+    ({"motor": {"rated_current_a": 700}}, "raw.Current", ["LD", "LQ", "Rpm"]),
+])
+def test_firmware_limits_leave_the_physics(seed_input, patch, field, missing):
+    for sec, vals in patch.items():
+        seed_input.setdefault(sec, {}).update(vals)
+    r = report(seed_input)
+    st = r["firmware"]["inovance"]
+    assert not st["representable"] and st["problems"][0]["field"] == field
+    assert st["problems"][0]["results"] == missing
+    assert not set(missing) & set(r["vendor"]) and r["base"]["I_b"] > 0
+    assert any(f["code"] == "unrepresentable" for f in r["review"]["findings"])
+    p = _cli("report", "-", stdin=json.dumps(seed_input))
+    assert p.returncode == 0 and json.loads(p.stdout)["firmware"]["inovance"] == st
 
 
 def test_missing_field(seed_input):

@@ -12,7 +12,8 @@ CSV contract (docs/contract.md, "Batch"):
   columns, ``error`` (``field: message``, empty when the row computed) and ``error_zh``,
   then columns named by report JSON paths (:data:`REPORT_COLUMNS`) and the number of
   review findings per severity (``review.counts.error``, ``review.counts.warning``,
-  ``review.counts.note``: the graded review's report path).
+  ``review.counts.note``: the graded review's report path), ``firmware`` (each firmware
+  that cannot hold the motor, with the raw fields it cannot hold or compute).
 - A bad row is reported in its ``error`` cell and the others are still computed; only an
   unreadable header stops the batch (:class:`pulab.InputError` naming the column).
 
@@ -209,10 +210,14 @@ def _report_cells(r: dict) -> dict:
     for path in REPORT_COLUMNS:
         v = r
         for part in path.split("."):
-            v = v[part]
+            # an integer the firmware cannot compute for this motor: empty (firmware.*)
+            v = v.get(part) if isinstance(v, dict) else None
         out[path] = _cell(v)
     for sev, n in findings_counts(r).items():
         out[f"review.counts.{sev}"] = str(n)
+    out["firmware"] = "; ".join(f"{name}: {' '.join(p['field'] for p in st['problems'])}"
+                                for name, st in r.get("firmware", {}).items()
+                                if not st["representable"])
     return out
 
 
@@ -220,7 +225,7 @@ def output_columns(columns: list) -> list:
     """The output header for an input header (see the module docstring)."""
     labels = [name for name, _ in columns if "." not in name]
     return (["row"] + labels + ["error", "error_zh"] + list(REPORT_COLUMNS)
-            + [f"review.counts.{s}" for s in SEVERITIES])
+            + [f"review.counts.{s}" for s in SEVERITIES] + ["firmware"])
 
 
 def batch_rows(text: str, start: int = 0, count: int | None = None) -> list:

@@ -114,7 +114,8 @@ def headroom(n: dict, vendor: dict) -> dict:
         w = 2.0 * math.pi * f
         return SQRT3 * math.hypot(m["rs_ohm"] * i + w * psi, w * m["lq_h"] * i)
 
-    limit = vendor["pm_maxout_vol"]["si"]
+    # Without the firmware's own limit (it cannot hold this drive), the physical one: U_dc/√2.
+    limit = vendor["pm_maxout_vol"]["si"] if "pm_maxout_vol" in vendor else d["udc_v"] / SQRT2
     f_b = d["base_freq_hz"]
     bemf_fb = m["bemf_v"] * f_b / m["rated_freq_hz"]
     f_fw = limit / m["bemf_v"] * m["rated_freq_hz"]
@@ -144,7 +145,7 @@ def _constants(f: list, vendor: dict, unit: str) -> None:
 def _raw_rounding(f: list, n: dict, raw: dict) -> None:
     unit = n["conventions"]["inductance_unit"]
     for name in RAW_FIELDS:
-        if name in n["raw"]:
+        if name in n["raw"] or name not in raw:  # typed, or beyond the firmware: firmware.*
             continue
         path, scale = raw_source(name, unit)
         section, key = path.split(".")
@@ -198,7 +199,7 @@ def _wc_ts(f: list, n: dict, pi: dict) -> None:
 def _base_frequency(f: list, raw: dict) -> None:
     # On the integers the firmware divides (FreqPer = FreqRated01·2^15/FullFreq01), so a
     # typed 633.33 Hz vs 633.333 Hz that both store 63333 is no finding.
-    if raw["FullFreq01"] < raw["FreqRated01"]:
+    if {"FullFreq01", "FreqRated01"} <= raw.keys() and raw["FullFreq01"] < raw["FreqRated01"]:
         _finding(f, "warning", "base_below_rated", "vendor.FreqPer.value", "drive.base_freq_hz",
                  raw["FullFreq01"], full=raw["FullFreq01"], rated=raw["FreqRated01"])
 
@@ -255,8 +256,21 @@ def _robust(f: list, loop: dict | None) -> None:
                  value, **params)
 
 
+def _firmware(f: list, firmware: dict) -> None:
+    for name, st in firmware.items():
+        if st["representable"]:
+            continue
+        p = st["problems"]
+        results = sorted({r for x in p for r in x["results"]})
+        _finding(f, "warning", "unrepresentable", f"firmware.{name}", "profiles", name,
+                 profile=name, fields=", ".join(x["field"] for x in p),
+                 results=", ".join(results), advice={"code": p[0]["code"] + "_advice"
+                 if p[0]["code"].startswith("limit.") else "limit.constant_advice",
+                 "params": p[0]["params"]})
+
+
 def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
-           loop: dict | None = None) -> dict:
+           loop: dict | None = None, firmware: dict | None = None) -> dict:
     """All findings for one report, most severe first.
 
     Parameters
@@ -265,6 +279,8 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     vendor : dict — vendor results ; pi : dict — ``current_pi``
     sim : dict or None — the ``sim`` output, for the PLL checks
     loop : dict or None — the ``loop`` output, for the robustness check
+    firmware : dict or None — the ``firmware`` output: one finding per firmware that cannot
+        hold this motor
 
     Returns
     -------
@@ -284,6 +300,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     _voltage(f, h, n)
     _pll(f, sim)
     _robust(f, loop)
+    _firmware(f, firmware or {})
     if unit == "uH":
         _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":

@@ -30,7 +30,7 @@ from ..model.bases import flux_linkage
 from ..schema.errors import InputError
 from ..schema.fields import Field
 from ..schema.validate import integer, object_fields, shown, value
-from . import inovance, microchip, nxp, st, ti
+from . import inovance, limits, microchip, nxp, st, ti
 from .common import SQRT2
 
 __all__ = ["NAMES", "MODULES", "context", "context_of", "options", "profiles", "bases_table",
@@ -46,7 +46,7 @@ _BOOLEANS = {"trapezoidal", "round_u_max"}
 _OPTION_NUMBER = Field("profiles.NAME.OPTION", "number", sign=">0", lo=1e-9, hi=1e9)
 
 
-def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
+def context(n: dict, raw: dict, vendor: dict, pi: dict, problems: list = ()) -> dict:
     """Everything a profile needs from the normalized input and the report, in SI.
 
     Parameters
@@ -58,6 +58,8 @@ def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
     pi : dict
         The report's ``current_pi``; its SI kp [V/A], ki [V/(A·s)] per axis are the
         gains every profile stores (a V/A ratio is the same in peak and RMS).
+    problems : list
+        What the Inovance firmware cannot hold (``firmware.inovance.problems``).
     """
     m, d = n["motor"], n["drive"]
     return {"rs": m["rs_ohm"], "ld": m["ld_h"], "lq": m["lq_h"], "pp": m["pole_pairs"],
@@ -68,7 +70,8 @@ def context(n: dict, raw: dict, vendor: dict, pi: dict) -> dict:
             "psi_rms": flux_linkage("rms", m["bemf_v"], m["rated_freq_hz"]),
             "u_limit": d["udc_v"] / SQRT2,
             "gains": {a: (pi[a]["kp"], pi[a]["ki"]) for a in ("d", "q")},
-            "vendor": vendor, "raw": raw, "inductance_unit": n["conventions"]["inductance_unit"]}
+            "vendor": vendor, "raw": raw, "inductance_unit": n["conventions"]["inductance_unit"],
+            "firmware_problems": list(problems)}
 
 
 def _option(name: str, key: str, v):
@@ -111,12 +114,21 @@ def bases_table(name: str, ctx: dict, p: dict) -> dict:
 
 
 def profiles(ctx: dict, opts: dict) -> dict:
-    """Every profile: ``inputs`` (options used), ``constants``, ``bases``."""
+    """Every profile: ``inputs`` (options used), ``constants``, ``bases``, ``files`` and
+    ``status`` (:func:`pulab.profiles.limits.status`: what this firmware cannot hold).
+
+    Each profile is a lens that fails on its own: a constant that does not fit its word is
+    a problem of that profile, never an error of the report.
+    """
     out = {}
     for name in NAMES:
         p = MODULES[name].profile(ctx, opts[name])
         p["bases"] = bases_table(name, ctx, p)
         p["files"] = MODULES[name].FILES
+        problems = ctx["firmware_problems"] if name == "inovance" else []
+        problems = problems + [limits.constant_problem(name, c) for c in p["constants"].values()
+                               if "out_of_range" in c["flags"] or "saturate" in c["flags"]]
+        p["status"] = limits.status(problems)
         out[name] = p
     return out
 
@@ -124,7 +136,8 @@ def profiles(ctx: dict, opts: dict) -> dict:
 def context_of(r: dict) -> dict:
     """:func:`context` rebuilt from a finished report (which carries every piece of it)."""
     return context(r["input"], r["vendor"]["raw"],
-                   {k: v for k, v in r["vendor"].items() if k != "raw"}, r["current_pi"])
+                   {k: v for k, v in r["vendor"].items() if k != "raw"}, r["current_pi"],
+                   r["firmware"]["inovance"]["problems"])
 
 
 def header(r: dict, name: str) -> str:
@@ -139,6 +152,11 @@ def header(r: dict, name: str) -> str:
     """
     if name not in NAMES:
         raise InputError("profile", code="not_choice", choices=", ".join(NAMES), got=shown(name))
+    problems = r["firmware"]["inovance"]["problems"]
+    if name == "inovance" and problems:
+        raise InputError("profile", code="profile_unrepresentable", profile=name,
+                         reason={"code": problems[0]["code"],
+                                                      "params": problems[0]["params"]})
     if name == "inovance":
         from ..export import c_header
         return c_header(r)

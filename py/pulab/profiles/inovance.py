@@ -93,6 +93,8 @@ def profile(ctx: dict, opt: dict) -> dict:
     """The seed's integers for this motor, as profile constants."""
     out = {}
     for name, (si_key, expr) in _VENDOR.items():
+        if name not in ctx["vendor"]:
+            continue  # the firmware cannot compute it for this motor: firmware.inovance
         r = ctx["vendor"][name]
         out[name] = {"name": name, "value": r["value"], "ideal": r["ideal"],
                      "error_pct": r["error_pct"], "format": f"Q{r['q']} ({r['type']})",

@@ -40,7 +40,8 @@ from ..schema.fields import RAW_FIELDS
 from ..fixedpoint.qformat import iqsat
 
 __all__ = [
-    "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_from_si", "round_half_away",
+    "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_split", "raw_from_si",
+    "round_half_away", "vendor_split",
     "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
     "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "current_pi_step", "PiStep", "to_si",
 ]
@@ -84,8 +85,9 @@ def round_half_away(x: float) -> int:
     return int(math.copysign(math.floor(abs(x) + 0.5), x))
 
 
-def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
-    """Firmware integers from SI inputs; values in ``given`` override.
+def raw_split(si: dict, inductance_unit: str, given: dict) -> tuple[dict, dict]:
+    """Firmware integers from SI inputs, split into those a Uint16 parameter holds and those
+    it cannot; values in ``given`` override.
 
     Parameters
     ----------
@@ -95,20 +97,48 @@ def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
     given : dict
         Raw values the user entered directly.
 
+    Returns
+    -------
+    raw : dict
+        name → integer in 0..65535.
+    outside : dict
+        name → integer the SI value needs but Uint16 cannot hold (a limit of the firmware,
+        not of the motor).
+
+    Raises
+    ------
+    InputError
+        Naming ``raw.NAME`` when a value the user typed is outside Uint16.
+
+    Examples
+    --------
+    >>> raw, outside = raw_split({"drive.base_freq_hz": 3266.67}, "10uH", {})  # doctest: +SKIP
+    """
+    raw, outside = {}, {}
+    for name in RAW_FIELDS:
+        path = RAW_SCALE[name][0]
+        v = given[name] if name in given else raw_value(name, si[path], inductance_unit)
+        if 0 <= v <= 0xFFFF:
+            raw[name] = v
+        elif name in given:
+            raise InputError(f"raw.{name}", code="raw_outside_given", value=v)
+        else:
+            outside[name] = v
+    return raw, outside
+
+
+def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
+    """Firmware integers from SI inputs, every one required to fit (see :func:`raw_split`).
+
     Raises
     ------
     InputError
         Naming ``raw.NAME`` when a value is outside Uint16 (0..65535).
     """
-    raw = {}
-    for name in RAW_FIELDS:
-        path = RAW_SCALE[name][0]
-        v = given[name] if name in given else raw_value(name, si[path], inductance_unit)
-        if not 0 <= v <= 0xFFFF:
-            if name in given:
-                raise InputError(f"raw.{name}", code="raw_outside_given", value=v)
-            raise InputError(f"raw.{name}", code="raw_outside_from", value=v, source=path)
-        raw[name] = v
+    raw, outside = raw_split(si, inductance_unit, given)
+    for name, v in outside.items():
+        raise InputError(f"raw.{name}", code="raw_outside_from", value=v,
+                         source=RAW_SCALE[name][0])
     return raw
 
 
@@ -154,12 +184,17 @@ def _divide(a: CInt, b: CInt, field: str, why: str) -> CInt:
 
 
 def _bases(raw: dict) -> tuple[float, float, float]:
-    """U_b (phase RMS), I_b and f_b as the firmware's raw values define them (seed 1.4-13)."""
-    return raw["Voltage"] / SQRT3, raw["Current"] / 100.0, raw["FullFreq01"] / 100.0
+    """U_b (phase RMS), I_b and f_b as the firmware's raw values define them (seed 1.4-13);
+    NaN for a parameter the firmware does not hold (no result that needs it is computed)."""
+    return (raw.get("Voltage", math.nan) / SQRT3, raw.get("Current", math.nan) / 100.0,
+            raw.get("FullFreq01", math.nan) / 100.0)
 
 
 def rpm(raw: dict) -> dict:
     """Stator resistance per unit, Q16 (seed 1.4-1, 1.4-2)."""
+    if raw["Current"] == 0:
+        # The C code computes 0, but per unit of Z_b = U_b/0 the number means nothing.
+        raise InputError("raw.Current", code="firmware_div0", why="Z_b = U_b/I_b with Current = 0")
     b = _Block()
     m = b.let("m_UData = ((Ulong)gMotorExtInfo.RsPm * (Ulong)gMotorInfo.Current)"
               "/gMotorInfo.Voltage;", "m_UData", UINT32,
@@ -302,6 +337,32 @@ VENDOR_READS = {
 def vendor_results(raw: dict, inductance_unit: str) -> dict:
     """Every vendor result of seed 1.4 and 2.2, keyed as in the report contract."""
     return {name: f(raw, inductance_unit) for name, f in VENDOR_RESULTS.items()}
+
+
+def vendor_split(raw: dict, inductance_unit: str) -> tuple[dict, dict]:
+    """The vendor results the firmware can compute from ``raw``, and why the others cannot be.
+
+    A result is left out when a raw field it reads is missing from ``raw`` (it did not fit
+    Uint16) or when its C code divides by zero.
+
+    Returns
+    -------
+    results : dict
+        name → result, as :func:`vendor_results`.
+    failed : dict
+        name → :class:`InputError` (``raw.NAME``, the field that stops it).
+    """
+    results, failed = {}, {}
+    for name, f in VENDOR_RESULTS.items():
+        missing = [k for k in VENDOR_READS[name] if k not in raw]
+        if missing:
+            failed[name] = InputError(f"raw.{missing[0]}", code="raw_missing", name=missing[0])
+            continue
+        try:
+            results[name] = f(raw, inductance_unit)
+        except InputError as e:
+            failed[name] = e
+    return results, failed
 
 
 def to_si(name: str, value: int, raw: dict, inductance_unit: str = "10uH") -> float:

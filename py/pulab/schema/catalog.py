@@ -201,6 +201,31 @@ MESSAGES = {
                               "loop.robust.{name}：{axis} 轴{what} {shown}，工况 {temp_c:g} °C、"
                               "{current_a:.4g} A、U_dc {udc_v:.4g} V（低于 {threshold}；固件增益按标称"
                               "电机整定）；{fix}"),
+    "finding.unrepresentable": ("the {profile} firmware cannot hold this motor ({fields}): {results} "
+                                "are not computed. {advice}",
+                                "{profile} 固件无法表示这台电机（{fields}）：{results} 无法计算。{advice}"),
+    "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and {source} = "
+                     "{si:g} {si_unit} needs {value}; a 16-bit parameter would keep {stored} "
+                     "({stored_si:g} {si_unit}). Not computed: {results}",
+                     "{name} 是以 {unit} 为单位的 Uint16，最大只能表示 {max:g} {si_unit}；{source} = "
+                     "{si:g} {si_unit} 需要 {value}，16 位参数只会存下 {stored}（{stored_si:g} "
+                     "{si_unit}）。无法计算：{results}"),
+    "limit.uint16_advice": ("This is a limit of the vendor's code, not of the motor or of your inputs: "
+                            "ship a profile that holds it, or change the unit of {name} in the "
+                            "firmware (a coarser one).",
+                            "这是厂商代码的限制，不是电机或输入的问题：请选用能表示它的配置，"
+                            "或在固件中把 {name} 改用更粗的单位。"),
+    "limit.code": ("{reason}; not computed: {results}", "{reason}；无法计算：{results}"),
+    "limit.code_advice": ("The vendor's C code cannot compute these integers for this motor (a value "
+                          "truncates to 0 before it divides); this is a property of the code: ship a "
+                          "profile that holds it, or change the firmware's units.",
+                          "厂商 C 代码无法为这台电机计算这些整数（某个值在作除数前截断为 0）；"
+                          "这是代码本身的性质：请选用能表示它的配置，或修改固件的单位。"),
+    "limit.constant_advice": ("Change what scales it: the profile's base (full-scale value) or its Q "
+                              "format.", "请修改它的缩放：该配置的基值（满量程值）或 Q 格式。"),
+    "profile_unrepresentable": ("the {profile} firmware cannot hold this motor: {reason}",
+                                "{profile} 固件无法表示这台电机：{reason}"),
+    "raw_missing": ("{name} does not fit its Uint16 parameter", "{name} 超出其 Uint16 参数范围"),
     "robust.phase_margin": ("phase margin", "相位裕度"),
     "robust.gain_margin": ("gain margin", "增益裕度"),
     "robust.unstable": ("unstable", "不稳定"),
