@@ -66,6 +66,7 @@ export interface Report {
   warnings_zh: string[];
   sim?: { current?: SimCurrent; pll?: SimPll };
   mechanical: Record<string, number>;
+  firmware: Record<string, FirmwareStatus>;
   review: Review;
   datasheet?: { given: Record<string, unknown>; conversions: Conversion[] };
   loop?: LoopReport;
@@ -170,6 +171,24 @@ export interface Finding {
   message: string;
   message_zh: string;
 }
+/** One thing a firmware cannot hold or compute for this motor (docs/contract.md "Firmware limits"). */
+export type FirmwareProblem = {
+  field: string;
+  code: string;
+  params: Record<string, unknown>;
+  message: string;
+  message_zh: string;
+  advice: string;
+  advice_zh: string;
+  results: string[];
+  value: number | null;
+  stored: number | null;
+  max_si: number | null;
+};
+export type FirmwareStatus = {
+  representable: boolean;
+  problems: FirmwareProblem[];
+};
 export interface Review {
   findings: Finding[];
   counts: { error: number; warning: number; note: number };

@@ -75,5 +75,28 @@ export default async function vendors({ check, assert, newPage, subSrv, ready, w
     assert((await p2.$$('section.panel')).length === 1, 'one panel');
     await p2.context().close();
   });
+  await check('vendors: a motor beyond Inovance\'s Uint16 shows the physics and the other firmware; the limit sits at the Inovance panel', async () => {
+    const robot = golden('23_limit_robot_28krpm.json');
+    const want = cpython({ ...robot.input, profiles: {} });
+    const p3 = await newPage();
+    await p3.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(robot.input))}`);
+    await ready(p3);
+    await p3.waitForSelector('#panel-vendor .firmware-limits [data-field="raw.FullFreq01"]', { timeout: 30_000 });
+    assert(await p3.evaluate(() => document.documentElement.dataset.numbers) === 'live', 'data-numbers live');
+    assert(await valueOf(p3, 'base.U_b') === want.base.U_b, 'U_b shown');
+    assert(await valueOf(p3, 'vendor.Rpm.value') === want.vendor.Rpm.value, 'Rpm still computed');
+    const fieldErr = await p3.$eval('[data-err-for="drive.base_freq_hz"]', (e) => e.textContent ?? '').catch(() => '');
+    assert(fieldErr === '', `an input error at drive.base_freq_hz: ${fieldErr}`);
+    await p3.$eval('#panel-vendors', (e) => e.scrollIntoView());
+    await p3.waitForSelector('#panel-vendors [data-key="profiles.ti.constants.Kp_Iq.value"][data-value]', { timeout: 60_000 });
+    assert(await valueOf(p3, 'profiles.ti.constants.Kp_Iq.value') === want.profiles.ti.constants.Kp_Iq.value, 'TI Kp_Iq');
+    for (const w of [390, 1366]) {
+      await p3.setViewportSize({ width: w, height: 900 });
+      await p3.$eval('#panel-vendor', (e) => e.scrollIntoView());
+      await p3.waitForTimeout(150);
+      await p3.screenshot({ path: join(SHOTS, `vendor-limits-en-${w}.png`) });
+    }
+    await p3.context().close();
+  });
   await page.context().close();
 }

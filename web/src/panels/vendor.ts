@@ -2,6 +2,7 @@ import { flagChips, h, num, patch, table } from '../dom';
 import { ALL_FIELDS } from '../fields';
 import { t } from '../i18n';
 import { VENDOR_NAMES, type TraceStep, type VendorResult } from '../report-types';
+import { limitsBox } from './limits';
 import type { Panel } from './panel';
 
 /** Each raw firmware parameter's unit, from the input schema (`raw.*`). */
@@ -28,7 +29,13 @@ export function cCode(code: string): HTMLElement {
   return el;
 }
 
-function resultRow(name: string, v: VendorResult | undefined): HTMLElement {
+/** A result the firmware cannot compute for this motor (its reason is in the limits box). */
+function notHeldRow(name: string): HTMLElement {
+  return h('tr', { class: 'na' }, h('td', {}, h('code', {}, VAR[name])), h('td', { colspan: 8 }, t('fw_not_computed')));
+}
+
+function resultRow(name: string, v: VendorResult | undefined, missing: boolean): HTMLElement {
+  if (missing) return notHeldRow(name);
   const p = `vendor.${name}`;
   const bad = v?.flags.some((f) => f === 'wrap' || f === 'store');
   return h(
@@ -85,16 +92,20 @@ export const vendorPanel: Panel = {
   render(el, { report }) {
     const vd = report?.vendor;
     const raw = vd?.raw ?? {};
+    const status = report?.firmware?.inovance;
+    const missing = new Set(status?.problems.flatMap((p) => p.results) ?? []);
     patch(el,
+      limitsBox('inovance', status),
       h('div', { class: 'raw-used' }, h('span', { class: 'lbl' }, `${t('raw')}: `),
-        Object.keys(RAW_UNITS).map((k) => h('span', { class: 'rawchip', title: RAW_UNITS[k] }, h('code', {}, k), ' = ', num(`vendor.raw.${k}`, raw[k], { kind: 'int' })))),
+        Object.keys(RAW_UNITS).map((k) => h('span', { class: 'rawchip', title: RAW_UNITS[k] }, h('code', {}, k), ' = ',
+          report && !(k in raw) ? h('span', { class: 'num na' }, t('fw_not_held')) : num(`vendor.raw.${k}`, raw[k], { kind: 'int' })))),
       table(
         [t('name'), t('value'), t('hex'), t('q'), t('ideal'), t('errorPct'), t('si'), t('type'), t('flags')],
-        VENDOR_NAMES.map((n) => resultRow(n, vd?.[n] as VendorResult | undefined)),
+        VENDOR_NAMES.map((n) => resultRow(n, vd?.[n] as VendorResult | undefined, missing.has(n))),
         'vendor',
       ),
       h('h3', {}, t('p_trace')),
-      h('div', { class: 'traces' }, VENDOR_NAMES.map((n) => traceBlock(n, vd?.[n] as VendorResult | undefined))),
+      h('div', { class: 'traces' }, VENDOR_NAMES.filter((n) => !missing.has(n)).map((n) => traceBlock(n, vd?.[n] as VendorResult | undefined))),
     );
   },
 };

@@ -6,6 +6,8 @@ import { effectiveInput } from '../fields';
 import { parseNumber } from '../format';
 import { errText, getLang, t, type Key } from '../i18n';
 import { reportInput, type Input } from '../state';
+import type { FirmwareStatus } from '../report-types';
+import { limitsBox } from './limits';
 import type { Panel, PanelContext } from './panel';
 
 export const VENDORS = ['inovance', 'ti', 'nxp', 'st', 'microchip'] as const;
@@ -56,6 +58,7 @@ export interface VendorsState {
 export const vstate: VendorsState = { hw: {}, from: 'inovance', axis: 'q', kp: '', ki: '' };
 
 let profiles: Record<Vendor, Profile> | null = null;
+let firmware: Record<string, FirmwareStatus> = {};
 let profErr: Fail | null = null;
 let translation: Translation | null = null;
 let transErr: Fail | null = null;
@@ -116,7 +119,7 @@ function refresh(ctx: PanelContext): void {
   void ctx.client.call('report', inp, 'vendors').then(({ result }) => {
     if (JSON.stringify(inp) !== lastKey) return;
     if (result.ok) {
-      profiles = (result.report as { profiles: Record<Vendor, Profile> }).profiles;
+      ({ profiles, firmware } = result.report as { profiles: Record<Vendor, Profile>; firmware: Record<string, FirmwareStatus> });
       profErr = null;
       if (vstate.kp === '' && vstate.ki === '') seedTranslator();
     } else profErr = result as unknown as Fail;
@@ -237,6 +240,7 @@ function constantsBlock(ctx: PanelContext, v: Vendor, el: HTMLElement): HTMLElem
     h('summary', {}, t(`vd_${v}` as Key), ' ',
       h('button', { type: 'button', 'data-header': v, onclick: (ev: Event) => { ev.preventDefault(); void downloadHeader(ctx, v, el); } }, t('vd_header')),
       h('span', { class: 'err', 'data-err-for': `header.${v}` })),
+    limitsBox(v, firmware[v]),
     table([t('vd_const'), t('value'), t('vd_format'), t('vd_ideal'), t('vd_error'), t('vd_si'), t('flags'), t('vd_source')], rows, 'vendors-constants'),
     piExample(v),
     profiles?.[v]?.files ? h('p', { class: 'hint' }, t('vd_rounding_read'), ' ', profiles[v].files?.rounding ?? '', '. ',

@@ -1,0 +1,16 @@
+// What one firmware cannot hold for this motor (report.firmware.NAME, docs/contract.md
+// "Firmware limits"): shown at that firmware's own panel, never as an input error.
+import { h } from '../dom';
+import { getLang, t } from '../i18n';
+import type { FirmwareStatus } from '../report-types';
+
+/** The box listing a firmware's problems, or null when it holds the motor. */
+export function limitsBox(name: string, status: FirmwareStatus | undefined): HTMLElement | null {
+  if (!status || status.representable) return null;
+  const zh = getLang() === 'zh';
+  return h('div', { class: 'firmware-limits', role: 'note', 'data-firmware': name },
+    h('p', { class: 'lbl' }, t('fw_cannot_hold')),
+    h('ul', {}, status.problems.map((p) => h('li', { 'data-field': p.field },
+      h('code', {}, p.field), ' ', zh ? p.message_zh : p.message,
+      h('div', { class: 'hint' }, zh ? p.advice_zh : p.advice)))));
+}
