@@ -39,6 +39,7 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from golden_files import golden_dir, sync  # noqa: E402
 from oracle import oracle_report  # noqa: E402  (pulab-free)
+from loop_oracle import current_loop, measure  # noqa: E402  (python-control, pulab-free)
 
 GOLDEN = pathlib.Path(__file__).resolve().parents[1] / "golden" / "review"
 REL, ABS = 1e-12, 1e-15  # closed-form float64 arithmetic (see golden_files.py)
@@ -46,7 +47,8 @@ TWO_PI = 2.0 * math.pi
 
 # docs/contract.md "Design review"
 Q_NOTE, Q_WARN, Q_ERR = 0.1, 1.0, 5.0
-WC_TS_WARN, WC_TS_ERR = 0.2, 1.0
+C_NOTE, C_WARN, C_ERR = 0.1, 10.0, 50.0   # a firmware constant against its exact value, %
+PM_WARN, PM_ERR = 45.0, 20.0               # current-loop phase margin with the PWM delay, degrees
 
 
 def motor_from_datasheet(ds: dict, motor: dict) -> dict:
@@ -113,8 +115,12 @@ def findings(inp: dict) -> tuple[list, dict]:
             continue
         if {"wrap", "store"} & set(res["flags"]):
             out.append(("error", "constant_wrap", f"vendor.{name}.value"))
-        elif _q(res["error_pct"]):
-            out.append((_q(res["error_pct"]), "constant_error", f"vendor.{name}.value"))
+        else:
+            a = abs(res["error_pct"])
+            sev = "error" if a >= C_ERR else "warning" if a >= C_WARN else \
+                "note" if a >= C_NOTE else None
+            if sev:
+                out.append((sev, "constant_error", f"vendor.{name}.value"))
     scale = {"Voltage": ("rated_voltage_v", 1), "Current": ("rated_current_a", 100),
              "FullFreq01": ("base_freq_hz", 100), "FreqRated01": ("rated_freq_hz", 100),
              "RsPm": ("rs_ohm", 1000), "LD": ("ld_h", 1e5), "LQ": ("lq_h", 1e5),
@@ -138,11 +144,18 @@ def findings(inp: dict) -> tuple[list, dict]:
             if g[f"pm_{k}"] and _q(100 * (g["from_integers"][k] - g[k]) / g[k]):
                 out.append((_q(100 * (g["from_integers"][k] - g[k]) / g[k]), "pi_rounding",
                             f"current_pi.{axis}.pm_{k}"))
-    wc_ts = TWO_PI * inp.get("current_loop", {}).get("bandwidth_hz", 500.0) * d["ts_s"]
-    if wc_ts >= WC_TS_ERR:
-        out.append(("error", "wc_ts", "current_pi.bandwidth_hz"))
-    elif wc_ts >= WC_TS_WARN:
-        out.append(("warning", "wc_ts", "current_pi.bandwidth_hz"))
+    # The firmware gains' discrete loop with the computation and PWM delay (python-control).
+    worst = None
+    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
+        g = r["current_pi"][axis]["from_integers"]
+        mg = measure(current_loop(m["rs_ohm"], l_h, d["ts_s"], g["kp"], g["ki"],
+                                  "computation_pwm"), d["ts_s"])
+        pm = mg["phase_margin_deg"] if mg["stable"] else -math.inf
+        if worst is None or pm < worst[1]:
+            worst = (axis, pm)
+    if worst[1] < PM_WARN:
+        out.append(("error" if worst[1] < PM_ERR else "warning", "phase_margin",
+                    f"current_pi.{worst[0]}.pm_kp"))
     if raw["FullFreq01"] <= 65535 and raw["FullFreq01"] < raw["FreqRated01"] <= 65535:
         out.append(("warning", "base_below_rated", "vendor.FreqPer.value"))
     if not r["firmware"]["inovance"]["representable"]:
@@ -153,7 +166,9 @@ def findings(inp: dict) -> tuple[list, dict]:
              if "pm_maxout_vol" in r["vendor"] else d["udc_v"] / math.sqrt(2.0))
     h = headroom(m, d, limit)
     if h["need_rated_fn_v"] > limit:
-        out.append(("warning", "voltage_rated", "review.headroom.need_rated_fn_v"))
+        # beyond U_dc/√2 a warning; beyond only the firmware's truncated limit a note
+        sev = "warning" if h["need_rated_fn_v"] > d["udc_v"] / math.sqrt(2.0) else "note"
+        out.append((sev, "voltage_rated", "review.headroom.need_rated_fn_v"))
     if h["field_weakening_from_hz"] is not None:
         sev = "warning" if h["field_weakening_from_hz"] < m["rated_freq_hz"] else "note"
         out.append((sev, "voltage_bemf", "review.headroom.bemf_fb_v"))

@@ -46,11 +46,11 @@ def test_units_convert_exactly_and_integers_match_the_oracle():
         for key in ("pm_kp", "pm_ki"):
             assert int(row[f"current_pi.{axis}.{key}"]) == ref["current_pi"][axis][key]
     assert row["vendor.raw.LD"] == "60" and row["vendor.raw.RsPm"] == "1500"
-    # The graded review (issue 9, its own golden tests in test_review.py): the batch passes its
-    # counts through. The seed motor: pm_maxout_vol and maxu −5.7 % (errors), ω_c·Ts = 0.31 and
-    # the rated point above the 16 V limit (warnings), LD, LQ and f_b headroom (notes).
+    # The graded review (its own golden tests in test_review.py): the batch passes its counts
+    # through. The seed motor: notes only — pm_maxout_vol and maxu −5.7 % (the vendor code's
+    # whole volts), the rated point above the firmware's 16 V limit, LD, LQ, f_b headroom.
     assert (row["review.counts.error"], row["review.counts.warning"],
-            row["review.counts.note"]) == ("2", "2", "3")
+            row["review.counts.note"]) == ("0", "0", "6")
 
 
 def test_bad_rows_are_reported_with_row_and_field_and_the_others_computed():

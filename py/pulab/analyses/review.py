@@ -11,7 +11,8 @@ Checks:
   from the same raw integers (seed 1.4, 2.2); any wrap or Uint16 store change is an error;
 - each raw integer converted from SI: the rounding to the firmware unit;
 - the current-PI integers pm_kp (Q12), pm_ki (Q16): their rounding (seed 2.2-9);
-- ω_c·Ts of the current loop;
+- the current loop's phase margin with the loop delay (the firmware gains, the loop
+  analysis' discrete model and its delay-aware design for the advice);
 - f_b against the rated frequency, compared on the firmware integers FullFreq01 and
   FreqRated01 (what FreqPer is computed from), not on the typed floats;
 - voltage headroom: back-EMF at f_b, and R·I and ω·L·I at rated current, against the
@@ -29,6 +30,8 @@ from __future__ import annotations
 import math
 
 from ..schema.catalog import render
+from ..schema.errors import InputError
+from ..schema.fields import FIELDS
 from ..profiles.inovance_code import RAW_FIELDS, raw_source
 
 __all__ = ["THRESHOLDS", "SEVERITIES", "grade", "review", "headroom"]
@@ -37,12 +40,18 @@ SQRT3 = math.sqrt(3.0)
 SQRT2 = math.sqrt(2.0)
 
 SEVERITIES = ("error", "warning", "note")
+#: The form label (en, zh) of each input a finding may point at; ``profiles``: the firmware picker.
+_LABELS = {fd.path: fd.label for fd in FIELDS if fd.label[0]}
+_LABELS["profiles"] = ("Firmware profile", "固件配置")
 #: Lower bounds of each severity (|value| ≥ bound); docs/contract.md "Design review".
 THRESHOLDS = {
-    # relative error of a firmware constant, a raw integer or a PI integer, in %
+    # relative error of a raw integer or a PI integer (a rounding of the user's value), in %
     "quantization_pct": {"note": 0.1, "warning": 1.0, "error": 5.0},
-    # ω_c·Ts of the current loop (dimensionless)
-    "wc_ts": {"warning": 0.2, "error": 1.0},
+    # relative error of a firmware constant against the exact value of the same raw integers,
+    # in %: a property of the vendor's code, graded by what it costs
+    "constant_pct": {"note": 0.1, "warning": 10.0, "error": 50.0},
+    # phase margin of the current loop's firmware gains with the loop delay, degrees (below)
+    "phase_margin_deg": {"warning": 45.0, "error": 20.0},
     # needed / available voltage (line RMS)
     # needed / available voltage (line RMS): a warning at the rated point or when the
     # back-EMF alone exceeds the limit below the rated frequency, a note above it
@@ -51,10 +60,14 @@ THRESHOLDS = {
     "pll_steady_deg": {"note": 0.5, "warning": 2.0},
 }
 
-#: What to change when a firmware constant is off (the input it mostly depends on).
-_CONSTANT_FIELD = {"Rpm": "motor.rs_ohm", "LD": "motor.ld_h", "LQ": "motor.lq_h",
-                   "FreqPer": "drive.base_freq_hz", "FluxRotor": "drive.base_freq_hz",
-                   "pm_maxout_vol": "drive.udc_v", "maxu": "drive.udc_v"}
+#: For each firmware constant: the design choice that moves its quantization (None: only the
+#: vendor's code does) and the catalog entry saying what it costs.
+_CONSTANT_COST = {"Rpm": (None, "cost.rpm"), "LD": ("drive.base_freq_hz", "cost.inductance"),
+                  "LQ": ("drive.base_freq_hz", "cost.inductance"),
+                  "FreqPer": ("drive.base_freq_hz", "cost.freq"),
+                  "FluxRotor": ("drive.base_freq_hz", "cost.freq"),
+                  "pm_maxout_vol": ("drive.udc_v", "cost.voltage"),
+                  "maxu": ("drive.udc_v", "cost.voltage")}
 
 
 def grade(value: float, bounds: dict) -> str | None:
@@ -71,9 +84,13 @@ def _finding(out: list, severity: str | None, code: str, key: str, field: str,
     if severity is None:
         return
     entry = f"finding.{text or code}"
+    label = _LABELS.get(field, ("", ""))
+    params = {**params, "label": label[0] or field}
+    params_zh = {**params, "label": label[1] or field}
     out.append({"severity": severity, "code": code, "key": key, "field": field,
+                "label": label[0] or field, "label_zh": label[1] or field,
                 "value": value, "message": render(entry, params, "en"),
-                "message_zh": render(entry, params, "zh")})
+                "message_zh": render(entry, params_zh, "zh")})
 
 
 def headroom(n: dict, vendor: dict) -> dict:
@@ -126,20 +143,22 @@ def headroom(n: dict, vendor: dict) -> dict:
 
 
 def _constants(f: list, vendor: dict, unit: str) -> None:
-    q = THRESHOLDS["quantization_pct"]
+    q = THRESHOLDS["constant_pct"]
     for name, res in vendor.items():
         if name == "raw":
             continue
         key = f"vendor.{name}.value"
-        field = "conventions.inductance_unit" if "unit_uH" in res["flags"] \
-            else _CONSTANT_FIELD[name]
+        field, cost = _CONSTANT_COST[name]
+        if "unit_uH" in res["flags"]:
+            field = "conventions.inductance_unit"
         if {"wrap", "store"} & set(res["flags"]):
-            _finding(f, "error", "constant_wrap", key, field, res["value"], name=name,
-                     value=res["value"], ideal=res["ideal"], field=field)
+            _finding(f, "error", "constant_wrap", key, field or "profiles", res["value"],
+                     name=name, value=res["value"], ideal=res["ideal"],
+                     why={"code": cost, "params": {"pct": res["error_pct"]}})
         else:
-            _finding(f, grade(res["error_pct"], q), "constant_error", key, field,
+            _finding(f, grade(res["error_pct"], q), "constant_error", key, field or "profiles",
                      res["error_pct"], name=name, value=res["value"], pct=res["error_pct"],
-                     ideal=res["ideal"], field=field)
+                     ideal=res["ideal"], why={"code": cost, "params": {"pct": res["error_pct"]}})
 
 
 def _raw_rounding(f: list, n: dict, raw: dict) -> None:
@@ -177,23 +196,42 @@ def _pi(f: list, n: dict, pi: dict) -> None:
                      k=k, value=g[f"pm_{k}"], pct=pct)
 
 
-def _wc_ts(f: list, n: dict, pi: dict) -> None:
-    ts = n["drive"]["ts_s"]
-    loop = n["current_loop"]
-    bw = loop["bandwidth_hz"] if loop["method"] in ("bandwidth", "damping") \
-        else pi["d"]["from_integers"]["bandwidth_hz"]
-    wc_ts = 2.0 * math.pi * bw * ts
-    limit = THRESHOLDS["wc_ts"]
-    sev = grade(wc_ts, limit)
-    field = "current_loop.bandwidth_hz" if loop["method"] in ("bandwidth", "damping") \
-        else f"current_loop.{'kp' if loop['method'] == 'manual' else 'pm_kp'}"
-    ok_hz = limit["warning"] / (2.0 * math.pi * ts)
-    if sev == "error":
-        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts, "wc_ts_error",
-                 wc_ts=wc_ts, limit=limit["error"], ok_hz=ok_hz, field=field)
-    elif sev == "warning":
-        _finding(f, sev, "wc_ts", "current_pi.bandwidth_hz", field, wc_ts, "wc_ts_warning",
-                 wc_ts=wc_ts, limit=limit["warning"], ok_hz=ok_hz, field=field)
+def _phase_margin(f: list, n: dict, pi: dict) -> None:
+    """The current loop's firmware gains with the loop delay: the same discrete model and
+    delay-aware design as the loop analysis (:mod:`pulab.analyses.loop.current`)."""
+    from .loop import current as _current  # the review's only loop computation
+    m, ts = n["motor"], n["drive"]["ts_s"]
+    analysis = n.get("analysis") or {}
+    delay = analysis.get("delay", "computation_pwm")
+    target = analysis.get("target_phase_margin_deg", 60.0)
+    worst = None
+    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
+        back = pi[axis]["from_integers"]
+        if back["kp"] <= 0:
+            continue  # pm_kp rounds to 0: pi_rounding says so
+        mg = _current.axis_loop(m["rs_ohm"], l_h, ts, back["kp"], back["ki"], delay)
+        pm = mg["phase_margin_deg"] if mg["stable"] else -math.inf
+        if pm is not None and (worst is None or pm < worst[1]):
+            worst = (axis, pm, l_h)
+    limit = THRESHOLDS["phase_margin_deg"]
+    if worst is None or worst[1] >= limit["warning"]:
+        return
+    axis, pm, l_h = worst
+    method = n["current_loop"]["method"]
+    field = {"bandwidth": "current_loop.bandwidth_hz", "damping": "current_loop.bandwidth_hz",
+             "manual": "current_loop.kp", "integers": "current_loop.pm_kp"}[method]
+    sev = "error" if pm < limit["error"] else "warning"
+    text = "phase_margin_unstable" if math.isinf(pm) else "phase_margin"
+    try:
+        kp, ki = _current.design(m["rs_ohm"], l_h, ts, delay, "phase_margin", target)
+        fix = {"code": "finding.phase_margin_fix", "params": {
+            "target": target, "ok_hz": kp / (2.0 * math.pi * l_h), "kp": kp, "ki": ki}}
+    except (InputError, ArithmeticError):
+        # No gain reaches the target (or the plant's pole underflows): say what to lower.
+        fix = {"code": "finding.phase_margin_lower", "params": {}}
+    _finding(f, sev, "phase_margin", f"current_pi.{axis}.pm_kp", field,
+             None if math.isinf(pm) else pm, text, axis=axis, pm=pm, limit=limit["warning"],
+             delay=delay, fix=fix)
 
 
 def _base_frequency(f: list, raw: dict) -> None:
@@ -213,8 +251,13 @@ def _voltage(f: list, h: dict, n: dict) -> None:
         return need / lim if lim > 0 else None
 
     if lim <= 0 or ratio(h["need_rated_fn_v"]) > THRESHOLDS["voltage_ratio"]["warning"]:
-        _finding(f, "warning", "voltage_rated", "review.headroom.need_rated_fn_v", "drive.udc_v",
-                 ratio(h["need_rated_fn_v"]), need=h["need_rated_fn_v"], limit=lim)
+        # Above U_dc/√2 no firmware reaches the rated point; above only the firmware's
+        # truncated limit it is the vendor code that costs the difference.
+        physical = h["need_rated_fn_v"] > h["udc_limit_v"]
+        _finding(f, "warning" if physical else "note", "voltage_rated",
+                 "review.headroom.need_rated_fn_v", "drive.udc_v", ratio(h["need_rated_fn_v"]),
+                 None if physical else "voltage_rated_firmware", need=h["need_rated_fn_v"],
+                 limit=lim, udc_limit=h["udc_limit_v"])
     if h["field_weakening_from_hz"] is not None:
         # Above the rated frequency, field weakening is the usual constant-power range;
         # below it the motor cannot reach its rated speed without it.
@@ -294,7 +337,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     _constants(f, vendor, unit)
     _raw_rounding(f, n, raw)
     _pi(f, n, pi)
-    _wc_ts(f, n, pi)
+    _phase_margin(f, n, pi)
     _base_frequency(f, raw)
     h = headroom(n, vendor)
     _voltage(f, h, n)

@@ -123,11 +123,28 @@ MESSAGES = {
                             "输入转速达到 {value:g} Hz，未低于控制频率的一半 1/(2·Ts) = {nyquist:g} Hz"),
     # findings of the design review (pulab.analyses.review), by finding code
     "finding.constant_wrap": ("vendor.{name} = {value}: the firmware arithmetic wrapped (exact value "
-                              "{ideal:.6g}); change {field}",
-                              "vendor.{name} = {value}：固件运算发生回绕（精确值 {ideal:.6g}）；请修改 {field}"),
-    "finding.constant_error": ("vendor.{name} = {value} is {pct:+.3g} % off the exact value {ideal:.6g}; "
-                               "change {field}",
-                               "vendor.{name} = {value} 与精确值 {ideal:.6g} 相差 {pct:+.3g} %；请修改 {field}"),
+                              "{ideal:.6g}), so the firmware uses a wrong number. {why}",
+                              "vendor.{name} = {value}：固件运算发生回绕（精确值 {ideal:.6g}），固件用的是错误的数。{why}"),
+    "finding.constant_error": ("vendor.{name} = {value} is {pct:+.3g} % off the exact value {ideal:.6g}. "
+                               "{why}",
+                               "vendor.{name} = {value} 与精确值 {ideal:.6g} 相差 {pct:+.3g} %。{why}"),
+    "cost.rpm": ("A property of the vendor's code (its integer divisions truncate): the firmware's R_s is "
+                 "{pct:+.3g} % off, which shifts the resistive drop its model expects; no input changes it.",
+                 "这是厂商代码的性质（整数除法截断）：固件中的 R_s 偏差 {pct:+.3g} %，改变其模型中的电阻压降；"
+                 "任何输入都无法改变它。"),
+    "cost.inductance": ("A property of the vendor's code: m_BaseL counts L_b in coarse integer steps "
+                        "(≈ 2·10⁴·L_b), so L per unit is {pct:+.3g} % off; a lower base frequency "
+                        "(Base frequency f_b, not below the rated frequency) makes the count finer.",
+                        "这是厂商代码的性质：m_BaseL 以粗整数步长计数 L_b（约 2·10⁴·L_b），因此标幺电感偏差 "
+                        "{pct:+.3g} %；降低基值频率（基值频率 f_b，不低于额定频率）可使计数更细。"),
+    "cost.freq": ("It comes from the ratio of the rated and base frequency in the vendor's integer code; "
+                  "the Base frequency f_b is the design choice that moves it.",
+                  "它来自厂商整数代码中额定频率与基值频率之比；能改变它的设计选择是基值频率 f_b。"),
+    "cost.voltage": ("A property of the vendor's code: data1 keeps U_dc/√2 in whole volts, so the "
+                     "firmware's voltage limit is {pct:+.3g} % off U_dc/√2 (it matters on low-voltage "
+                     "buses; the voltage headroom below uses the firmware's limit).",
+                     "这是厂商代码的性质：data1 以整伏保存 U_dc/√2，因此固件的电压限幅与 U_dc/√2 相差 "
+                     "{pct:+.3g} %（低压母线上才明显；下面的电压裕量按固件限幅计算）。"),
     "finding.raw_zero": ("raw.{name} = 0: {path} = {si:g} is below the firmware resolution",
                          "raw.{name} = 0：{path} = {si:g} 低于固件分辨率"),
     "finding.raw_rounding": ("raw.{name} = {value}: rounding {path} = {si:g} to the firmware unit "
@@ -138,41 +155,49 @@ MESSAGES = {
                         "current_pi.{axis}.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）"),
     "finding.pi_rounding": ("current_pi.{axis}.pm_{k} = {value}: coarse, rounding changes {k} by "
                             "{pct:+.1f} %", "current_pi.{axis}.pm_{k} = {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"),
-    "finding.wc_ts_error": ("current-loop ω_c·Ts = {wc_ts:.3f} ≥ {limit:g}: the 1.5·Ts loop delay "
-                            "leaves a phase margin below 5°; lower the bandwidth to {ok_hz:.4g} Hz "
-                            "or less ({field})",
-                            "电流环 ω_c·Ts = {wc_ts:.3f} ≥ {limit:g}：1.5·Ts 的环路延迟使相位裕度低于 5°；"
-                            "请把带宽降到 {ok_hz:.4g} Hz 以下（{field}）"),
-    "finding.wc_ts_warning": ("current-loop ω_c·Ts = {wc_ts:.3f} > {limit:g}: the continuous-time "
-                              "design is far from the discrete loop's behaviour; lower the bandwidth "
-                              "to {ok_hz:.4g} Hz or less ({field})",
-                              "电流环 ω_c·Ts = {wc_ts:.3f} > {limit:g}：连续域设计与离散环路的实际行为相差较大；"
-                              "请把带宽降到 {ok_hz:.4g} Hz 以下（{field}）"),
+    "finding.phase_margin": ("current loop, {axis} axis: phase margin {pm:.3g}° with the {delay} delay "
+                             "(below {limit:g}°: overshoot and ringing); {fix}",
+                             "电流环 {axis} 轴：计入 {delay} 延时后相位裕度为 {pm:.3g}°（低于 {limit:g}°："
+                             "超调与振荡）；{fix}"),
+    "finding.phase_margin_unstable": ("current loop, {axis} axis: unstable with the {delay} delay; {fix}",
+                                      "电流环 {axis} 轴：计入 {delay} 延时后不稳定；{fix}"),
+    "finding.phase_margin_fix": ("for the {target:g}° design of the Loop design panel set {label} to "
+                                 "{ok_hz:.4g} Hz (kp = {kp:.4g} Ω, ki = {ki:.4g} Ω/s)",
+                                 "按“环路设计”面板的 {target:g}° 设计，请把{label}设为 {ok_hz:.4g} Hz"
+                                 "（kp = {kp:.4g} Ω，ki = {ki:.4g} Ω/s）"),
+    "finding.phase_margin_lower": ("lower {label}", "请降低{label}"),
     "finding.base_below_rated": ("raw.FullFreq01 = {full} < raw.FreqRated01 = {rated}: base frequency "
                                  "below rated frequency, FreqPer > 1.0 in Q15; raise "
-                                 "drive.base_freq_hz to motor.rated_freq_hz or more",
+                                 "{label} to the rated frequency or more",
                                  "raw.FullFreq01 = {full} < raw.FreqRated01 = {rated}：基值频率低于额定频率，"
-                                 "Q15 的 FreqPer > 1.0；请把 drive.base_freq_hz 提高到不低于 motor.rated_freq_hz"),
+                                 "Q15 的 FreqPer > 1.0；请把{label}提高到不低于额定频率"),
     "finding.voltage_rated": ("at rated current and rated frequency the motor needs {need:.4g} V (line "
-                              "RMS), above the voltage limit {limit:.4g} V; raise drive.udc_v",
+                              "RMS), above the voltage limit {limit:.4g} V; raise {label}",
                               "额定电流、额定频率下电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
-                              "{limit:.4g} V；请提高 drive.udc_v"),
+                              "{limit:.4g} V；请提高{label}"),
+    "finding.voltage_rated_firmware": ("at rated current and rated frequency the motor needs {need:.4g} V "
+                                       "(line RMS): within U_dc/√2 = {udc_limit:.4g} V, but above the "
+                                       "firmware's limit {limit:.4g} V (U_dc/√2 in whole volts, a "
+                                       "property of the vendor's code); the rated point needs a little "
+                                       "field weakening, or a higher {label}",
+                                       "额定电流、额定频率下电机需要 {need:.4g} V（线电压有效值）：未超过 "
+                                       "U_dc/√2 = {udc_limit:.4g} V，但超过固件限幅 {limit:.4g} V（U_dc/√2 "
+                                       "取整伏，厂商代码的性质）；额定点需要少量弱磁，或提高{label}"),
     "finding.voltage_bemf": ("back-EMF at f_b = {f_b:g} Hz is {bemf:.4g} V (line RMS), above the "
                              "voltage limit {limit:.4g} V: field weakening needed above {from_hz:.4g} "
-                             "Hz; raise drive.udc_v or lower drive.base_freq_hz",
+                             "Hz; lower {label} or raise the DC bus voltage Udc",
                              "f_b = {f_b:g} Hz 时反电势为 {bemf:.4g} V（线电压有效值），超过电压限幅 "
-                             "{limit:.4g} V：{from_hz:.4g} Hz 以上需要弱磁；请提高 drive.udc_v 或降低 "
-                             "drive.base_freq_hz"),
+                             "{limit:.4g} V：{from_hz:.4g} Hz 以上需要弱磁；请降低{label}或提高直流母线电压 Udc"),
     "finding.voltage_fb": ("at rated current and f_b = {f_b:g} Hz the motor needs {need:.4g} V (line "
                            "RMS), above the voltage limit {limit:.4g} V: full current up to f_b needs "
                            "field weakening",
                            "额定电流、f_b = {f_b:g} Hz 时电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
                            "{limit:.4g} V：满电流运行到 f_b 需要弱磁"),
     "finding.pll_unlocked": ("{key}: not locked (|θ − θ̂| ≥ 2° in the last 20 % of the run); change "
-                             "pll.bandwidth_hz", "{key}：未锁定（仿真最后 20 % 内 |θ − θ̂| ≥ 2°）；请修改 pll.bandwidth_hz"),
+                             "{label}", "{key}：未锁定（仿真最后 20 % 内 |θ − θ̂| ≥ 2°）；请修改{label}"),
     "finding.pll_steady": ("{key}.steady_angle_error_deg = {value:.3g}°: angle error after lock; change "
-                           "pll.bandwidth_hz", "{key}.steady_angle_error_deg = {value:.3g}°：锁定后的角度误差；"
-                           "请修改 pll.bandwidth_hz"),
+                           "{label}", "{key}.steady_angle_error_deg = {value:.3g}°：锁定后的角度误差；"
+                           "请修改{label}"),
     "finding.unit_uH": ("LD/LQ taken in µH: the vendor code was written for 0.01 mH, so "
                         "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (seed 1.4-6, the "
                         "'×10' puzzle)", "原始 LD/LQ 按 µH 输入：汇川代码按 0.01 mH 编写，因此 "
@@ -258,6 +283,8 @@ def render(code: str, params: dict, lang: str) -> str:
         from .messages import to_zh
         return to_zh(params["text"])
     en, zh = MESSAGES[code]
-    values = {k: render(v["code"], v["params"], lang) if isinstance(v, dict) and "code" in v
-              else v for k, v in params.items()}
+    # A nested error sees the outer params it does not set itself (e.g. a finding's label).
+    plain = {k: v for k, v in params.items() if not (isinstance(v, dict) and "code" in v)}
+    values = {k: render(v["code"], {**plain, **v["params"]}, lang)
+              if isinstance(v, dict) and "code" in v else v for k, v in params.items()}
     return (en if lang == "en" else zh).format(**values)
