@@ -167,6 +167,9 @@ export interface Finding {
   code: string;
   key: string;
   field: string;
+  /** The form label of `field` (en, zh); absent in reports made before labels. */
+  label?: string;
+  label_zh?: string;
   value: unknown;
   message: string;
   message_zh: string;

@@ -124,8 +124,8 @@ export default async function core(ctx) {
     assert(/标幺/.test(txt), 'header not Chinese');
     assert(/额定电压/.test(await page.textContent('aside.inputs')), 'labels not Chinese');
     assert((await valueOf(page, 'vendor.Rpm.value')) === 15022, 'numbers lost');
-    // the seed motor's review (24 V bus truncates pm_maxout_vol; report.warnings_zh)
-    assert(/相差 .* %；请修改/.test(await page.textContent('.warnings')), 'warning not Chinese');
+    // the seed motor's review in Chinese (24 V bus: pm_maxout_vol in whole volts, the vendor's cost)
+    assert(/厂商代码的性质/.test(await page.textContent('.panel-review')), 'review not Chinese');
     await page.$eval('#panel-vendor', (e) => e.scrollIntoView());
     await page.screenshot({ path: join(SHOTS, '07-zh.png') });
     await page.click('button[data-lang="en"]');

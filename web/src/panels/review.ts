@@ -17,7 +17,8 @@ export function findingItem(f: Finding): HTMLElement {
   return h('li', { class: `finding sev-${f.severity}`, 'data-finding': f.key },
     h('span', { class: `sev sev-${f.severity}` }, t(`sev_${f.severity}` as Key)), ' ',
     h('span', { class: 'msg' }, findingText(f)), ' ',
-    h('a', { class: 'change', href: '#app', 'data-field': f.field, title: `${t('reviewChange')}: ${f.field}` }, '→ ', h('code', {}, f.field)));
+    h('a', { class: 'change', href: '#app', 'data-field': f.field, title: `${t('reviewChange')}: ${f.field}` }, '→ ',
+      (getLang() === 'zh' ? f.label_zh : f.label) ?? h('code', {}, f.field)));
 }
 
 /**
