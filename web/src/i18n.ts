@@ -1,7 +1,10 @@
-// Every label, unit and message in Chinese and English.
+// Every label, unit and message in Chinese and English: the page's own labels here, each
+// feature's in its own file under i18n/ (a new feature adds a file and one line below).
+import qcalc from './i18n/qcalc';
+
 export type Lang = 'en' | 'zh';
 
-const en = {
+const page = {
   title: 'pu-lab',
   subtitle: 'Per-unit & Q-format scaling of Inovance C2000 PMSM firmware',
   preset: 'Preset',
@@ -119,20 +122,6 @@ const en = {
   variant_naive: 'naive (SI gains)',
   error: 'error',
   time: 'time',
-  qFormat: 'Format',
-  qFormatHint: 'Qm.n or UQm.n, e.g. Q3.12, UQ0.16, Q15 (16-bit word unless word bits say otherwise), IQmath iq24 / _IQ15 (32-bit); raw readings may be hex (0x8000) or unsigned register values (40000 as Q15)',
-  qWordBits: 'Word bits (for Qn)',
-  qMode: 'Direction',
-  qEncode: 'real → integer',
-  qDecode: 'integer → real',
-  qValue: 'Real value',
-  qRaw: 'Integer',
-  qRounding: 'Rounding',
-  qOverflow: 'Overflow',
-  qRange: 'Range',
-  qResolution: 'Resolution (1 LSB)',
-  qResult: 'Result',
-  qError: 'Quantization error',
   warnings: 'Warnings',
   flag_wrap: 'wrap',
   flag_truncation: 'truncation',
@@ -418,13 +407,6 @@ const en = {
   texDrive: 'drive',
   texRms: 'rms',
   texPeakCustom: 'peak, custom',
-  qr_nearest: 'nearest (ties away)',
-  qr_convergent: 'convergent (ties even)',
-  qr_floor: 'floor',
-  qr_zero: 'toward zero',
-  qo_saturate: 'saturate',
-  qo_wrap: 'wrap',
-  qo_error: 'error',
   'o.': '—',
   'o.star': 'star (Y)',
   'o.delta': 'delta (Δ)',
@@ -434,9 +416,12 @@ const en = {
   'o.datasheet.kt_current.peak': 'A peak',
 };
 
+const en = { ...page, ...qcalc.en };
+
 export type Key = keyof typeof en;
 
 const zh: Record<Key, string> = {
+  ...qcalc.zh,
   title: 'pu-lab',
   subtitle: '汇川 C2000 永磁同步电机固件的标幺化与 Q 格式定标',
   preset: '预设',
@@ -553,20 +538,6 @@ const zh: Record<Key, string> = {
   variant_naive: '朴素（SI 增益）',
   error: '误差',
   time: '时间',
-  qFormat: '格式',
-  qFormatHint: 'Qm.n 或 UQm.n，例如 Q3.12、UQ0.16、Q15（默认 16 位字长，可另给字长）、IQmath 的 iq24 / _IQ15（32 位）；原始值可为十六进制（0x8000）或无符号寄存器读数（Q15 下的 40000）',
-  qWordBits: '字长（用于 Qn）',
-  qMode: '方向',
-  qEncode: '实数 → 整数',
-  qDecode: '整数 → 实数',
-  qValue: '实数值',
-  qRaw: '整数',
-  qRounding: '舍入',
-  qOverflow: '溢出',
-  qRange: '范围',
-  qResolution: '分辨率（1 LSB）',
-  qResult: '结果',
-  qError: '量化误差',
   warnings: '警告',
   flag_wrap: '回绕',
   flag_truncation: '截断',
@@ -852,13 +823,6 @@ const zh: Record<Key, string> = {
   texDrive: '驱动器最高频率',
   texRms: '有效值约定',
   texPeakCustom: '峰值、自定义约定',
-  qr_nearest: '就近（平局远离零）',
-  qr_convergent: '收敛（平局取偶）',
-  qr_floor: '向下取整',
-  qr_zero: '向零取整',
-  qo_saturate: '饱和',
-  qo_wrap: '回绕',
-  qo_error: '报错',
   'o.': '—',
   'o.star': '星形（Y）',
   'o.delta': '三角形（Δ）',
