@@ -43,7 +43,8 @@ __all__ = [
     "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_split", "raw_from_si",
     "round_half_away", "vendor_split",
     "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
-    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "current_pi_step", "PiStep", "to_si",
+    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "VENDOR_CODE", "Block",
+    "current_pi_step", "PiStep", "to_si",
 ]
 
 SQRT3 = math.sqrt(3.0)
@@ -142,7 +143,7 @@ def raw_from_si(si: dict, inductance_unit: str, given: dict) -> dict:
     return raw
 
 
-class _Block:
+class Block:
     """Runs the statements of one vendor code block and records the trace."""
 
     def __init__(self) -> None:
@@ -173,7 +174,9 @@ class _Block:
 
 
 def _u16(raw: dict, name: str) -> CInt:
-    return CInt(raw[name], UINT16)
+    v = raw[name]
+    # A prover passes an interval of the parameter (pulab.fixedpoint.interval), already a CInt.
+    return v if isinstance(v, CInt) else CInt(v, UINT16)
 
 
 def _divide(a: CInt, b: CInt, field: str, why: str) -> CInt:
@@ -195,7 +198,15 @@ def rpm(raw: dict) -> dict:
     if raw["Current"] == 0:
         # The C code computes 0, but per unit of Z_b = U_b/0 the number means nothing.
         raise InputError("raw.Current", code="firmware_div0", why="Z_b = U_b/I_b with Current = 0")
-    b = _Block()
+    b = Block()
+    _rpm_code(b, raw)
+    u_b, i_b, _ = _bases(raw)
+    z_b = u_b / i_b if i_b else math.inf
+    ideal = (raw["RsPm"] / 1000.0) / z_b * 65536.0
+    return b.result(16, ideal, b.trace[-1]["value"] / 65536.0 * z_b, "Ω")
+
+
+def _rpm_code(b: Block, raw: dict) -> None:
     m = b.let("m_UData = ((Ulong)gMotorExtInfo.RsPm * (Ulong)gMotorInfo.Current)"
               "/gMotorInfo.Voltage;", "m_UData", UINT32,
               _divide(_u16(raw, "RsPm").cast(UINT32) * _u16(raw, "Current").cast(UINT32),
@@ -203,13 +214,9 @@ def rpm(raw: dict) -> dict:
               "R_s[mΩ]·I_b[0.01 A]/U_LL[V] = 10^5/√3 · R_pu")
     b.let("gMotorExtPer.Rpm = ((Ulong)m_UData * 18597)>>14;", "gMotorExtPer.Rpm", UINT16,
           (m * CInt(18597, INT32).cast(UINT32)) >> 14, "R_pu·2^16 (Q16)")
-    u_b, i_b, _ = _bases(raw)
-    z_b = u_b / i_b if i_b else math.inf
-    ideal = (raw["RsPm"] / 1000.0) / z_b * 65536.0
-    return b.result(16, ideal, b.trace[-1]["value"] / 65536.0 * z_b, "Ω")
 
 
-def _base_l_steps(b: _Block, raw: dict) -> CInt:
+def _base_l_steps(b: Block, raw: dict) -> CInt:
     m = b.let("m_BaseL = ((Ulong)gMotorInfo.Voltage * 3678)/gMotorInfo.Current;",
               "m_BaseL", UINT32,
               _divide(_u16(raw, "Voltage").cast(UINT32) * CInt(3678, INT32).cast(UINT32),
@@ -230,12 +237,21 @@ def inductance(raw: dict, axis: str, unit: str = "10uH") -> dict:
     value — the seed's "×10" puzzle — and is flagged ``unit_uH``.
     """
     name = "LD" if axis == "d" else "LQ"
-    b = _Block()
+    b = Block()
+    _inductance_code(b, raw, name, unit)
+    u_b, i_b, f_b = _bases(raw)
+    l_b = u_b / (TWO_PI * f_b * i_b) if f_b * i_b else math.inf
+    l_si = raw[name] * (1e-6 if unit == "uH" else 1e-5)
+    ideal = l_si / l_b * 8192.0
+    return b.result(13, ideal, b.trace[-1]["value"] / 8192.0 * l_b, "H")
+
+
+def _inductance_code(b: Block, raw: dict, name: str, unit: str) -> None:
     base = _base_l_steps(b, raw)
     m = b.let(f"m_Ulong = ((Ulong)gMotorExtInfo.{name} <<14) + (m_BaseL >>1);", "m_Ulong",
               UINT32, (_u16(raw, name).cast(UINT32) << 14) + (base >> 1),
               f"{name}·2^14 + m_BaseL/2")
-    if base.value == 0:
+    if base.value == 0:  # (an interval's value is a pair: its division flags div0 instead)
         # Blame the divisor that made m_BaseL truncate to zero.
         culprit = "Current" if b.trace[0]["value"] == 0 else "FullFreq01"
         raise InputError(f"raw.{culprit}", code="firmware_div0",
@@ -246,29 +262,37 @@ def inductance(raw: dict, axis: str, unit: str = "10uH") -> dict:
           m // CInt(10, INT32).cast(UINT32),
           "10·L_pu·2^13 (µH ≠ 0.01 mH)" if unit == "uH"
           else "L_pu·2^13 (Q13)", ("unit_uH",) if unit == "uH" else ())
-    u_b, i_b, f_b = _bases(raw)
-    l_b = u_b / (TWO_PI * f_b * i_b) if f_b * i_b else math.inf
-    l_si = raw[name] * (1e-6 if unit == "uH" else 1e-5)
-    ideal = l_si / l_b * 8192.0
-    return b.result(13, ideal, b.trace[-1]["value"] / 8192.0 * l_b, "H")
 
 
 def freq_per(raw: dict) -> dict:
     """Rated frequency per unit, Q15."""
-    b = _Block()
-    b.let("gMotorInfo.FreqPer = ((Ulong)gMotorInfo.FreqRated01<<15)/gBasePar.FullFreq01;",
-          "gMotorInfo.FreqPer", UINT16,
-          _divide(_u16(raw, "FreqRated01").cast(UINT32) << 15, _u16(raw, "FullFreq01"),
-                  "FullFreq01", "FullFreq01 = 0"),
-          "f_n/f_b·2^15 (Q15)")
+    b = Block()
+    _freq_per_code(b, raw)
     ideal = raw["FreqRated01"] / raw["FullFreq01"] * 32768.0
     return b.result(15, ideal, b.trace[-1]["value"] / 32768.0 * raw["FullFreq01"] / 100.0,
                     "Hz")
 
 
+def _freq_per_code(b: Block, raw: dict) -> CInt:
+    return b.let("gMotorInfo.FreqPer = ((Ulong)gMotorInfo.FreqRated01<<15)/gBasePar.FullFreq01;",
+          "gMotorInfo.FreqPer", UINT16,
+          _divide(_u16(raw, "FreqRated01").cast(UINT32) << 15, _u16(raw, "FullFreq01"),
+                  "FullFreq01", "FullFreq01 = 0"),
+          "f_n/f_b·2^15 (Q15)")
+
+
 def flux_rotor(raw: dict, freq_per_value: int) -> dict:
     """Permanent-magnet flux per unit, Q12 (seed 1.4-23 … 1.4-25)."""
-    b = _Block()
+    b = Block()
+    _flux_code(b, raw, CInt(freq_per_value, UINT16))
+    ideal = (raw["BemfVolt"] / 10.0) / raw["Voltage"] * raw["FullFreq01"] \
+        / raw["FreqRated01"] * 4096.0
+    u_b, _, f_b = _bases(raw)
+    psi_b = u_b / (TWO_PI * f_b)
+    return b.result(12, ideal, b.trace[-1]["value"] / 4096.0 * psi_b, "Wb")
+
+
+def _flux_code(b: Block, raw: dict, freq_per: CInt) -> None:
     # Voltage*10 is unsigned int (16-bit) arithmetic on C2000, then promoted to long.
     v10 = _u16(raw, "Voltage") * CInt(10, UINT16)
     m = b.let("m_Ulong = ((Long)gMotorExtInfo.BemfVolt <<12) / (gMotorInfo.Voltage *10); //Q12",
@@ -278,33 +302,36 @@ def flux_rotor(raw: dict, freq_per_value: int) -> dict:
               "2π·f_n·ψ_r/U_b·2^12")
     b.let("gMotorExtPer.FluxRotor = (m_Ulong << 15) / gMotorInfo.FreqPer; //Q12",
           "gMotorExtPer.FluxRotor", UINT16,
-          _divide(m << 15, CInt(freq_per_value, UINT16), "FreqRated01",
+          _divide(m << 15, freq_per, "FreqRated01",
                   "FreqPer = 0 (FreqRated01·2^15 < FullFreq01, or ≡ 0 mod 2^16)"),
           "ψ_r/ψ_b·2^12 (Q12)")
-    ideal = (raw["BemfVolt"] / 10.0) / raw["Voltage"] * raw["FullFreq01"] \
-        / raw["FreqRated01"] * 4096.0
-    u_b, _, f_b = _bases(raw)
-    psi_b = u_b / (TWO_PI * f_b)
-    return b.result(12, ideal, b.trace[-1]["value"] / 4096.0 * psi_b, "Wb")
 
 
 def max_output_voltage(raw: dict) -> tuple[dict, dict]:
     """pm_maxout_vol (Q12) and maxu (Q24), seed 2.2-1, 2.2-2."""
-    b = _Block()
-    d = b.let("data1 = ((long)gUDC.uDCFilter * 2316L)>>15; // Udc/sqrt(2)/10", "data1", INT32,
-              (_u16(raw, "uDCFilter").cast(INT32) * CInt(2316, INT32)) >> 15,
-              "U_dc/√2 [V] (2316 ≈ 2^15/(10·√2))")
-    mo = b.let("pm_maxout_vol = (data1<<12)/gMotorInfo.Voltage;", "pm_maxout_vol", INT32,
-               _divide(d << 12, _u16(raw, "Voltage"), "Voltage", "Voltage = 0"),
-               "(U_dc/√2)/U_LL·2^12 (Q12)")
+    b = Block()
+    mo = _max_vol_code(b, raw)
     ideal = (raw["uDCFilter"] / 10.0 / math.sqrt(2.0)) / raw["Voltage"] * 4096.0
     vol = b.result(12, ideal, mo.value / 4096.0 * raw["Voltage"], "V")
-    b2 = _Block()
-    b2.let("maxu = (long)pm_maxout_vol<<12;", "maxu", INT32, mo << 12,
-           "(U_dc/√2)/U_LL·2^24 (Q24)")
+    b2 = Block()
+    _maxu_code(b2, mo)
     maxu = b2.result(24, ideal * 4096.0, b2.trace[-1]["value"] / 16777216.0 * raw["Voltage"],
                      "V")
     return vol, maxu
+
+
+def _max_vol_code(b: Block, raw: dict) -> CInt:
+    d = b.let("data1 = ((long)gUDC.uDCFilter * 2316L)>>15; // Udc/sqrt(2)/10", "data1", INT32,
+              (_u16(raw, "uDCFilter").cast(INT32) * CInt(2316, INT32)) >> 15,
+              "U_dc/√2 [V] (2316 ≈ 2^15/(10·√2))")
+    return b.let("pm_maxout_vol = (data1<<12)/gMotorInfo.Voltage;", "pm_maxout_vol", INT32,
+                 _divide(d << 12, _u16(raw, "Voltage"), "Voltage", "Voltage = 0"),
+                 "(U_dc/√2)/U_LL·2^12 (Q12)")
+
+
+def _maxu_code(b: Block, mo: CInt) -> None:
+    b.let("maxu = (long)pm_maxout_vol<<12;", "maxu", INT32, mo << 12,
+          "(U_dc/√2)/U_LL·2^24 (Q24)")
 
 
 #: Each vendor result of seed 1.4 and 2.2, in report order, computed from the raw integers
@@ -318,6 +345,20 @@ VENDOR_RESULTS = {
     "FluxRotor": lambda raw, unit: flux_rotor(raw, freq_per(raw)["value"]),
     "pm_maxout_vol": lambda raw, unit: max_output_voltage(raw)[0],
     "maxu": lambda raw, unit: max_output_voltage(raw)[1],
+}
+
+
+#: The C statements alone of each vendor result, run on a block ``b`` (its ``trace`` gets one
+#: step per statement) over raw integers or over intervals of them
+#: (:mod:`pulab.fixedpoint.interval`): the code a prover evaluates is the code the report runs.
+VENDOR_CODE = {
+    "Rpm": lambda b, raw, unit: _rpm_code(b, raw),
+    "LD": lambda b, raw, unit: _inductance_code(b, raw, "LD", unit),
+    "LQ": lambda b, raw, unit: _inductance_code(b, raw, "LQ", unit),
+    "FreqPer": lambda b, raw, unit: _freq_per_code(b, raw),
+    "FluxRotor": lambda b, raw, unit: _flux_code(b, raw, _freq_per_code(Block(), raw)),
+    "pm_maxout_vol": lambda b, raw, unit: _max_vol_code(b, raw),
+    "maxu": lambda b, raw, unit: _maxu_code(b, _max_vol_code(Block(), raw)),
 }
 
 

@@ -1,0 +1,444 @@
+"""Prove a product family's firmware integers in range, or find a motor that breaks one.
+
+A sweep (:mod:`pulab.analyses.sweep`) samples one or two inputs; this module decides
+for *every* input in a box (any numeric input paths, each with a range) whether each
+firmware integer of the seed's Inovance code stays in range.  Per integer the
+verdict is
+
+``proven``
+    for every input in the box: no wrap, no store that changes the number, no
+    division by zero, no zero where a gain is meant, every raw parameter fits its
+    Uint16;
+``violated``
+    with a counterexample: an input inside the box (a motor the page can open) for
+    which :func:`pulab.report` shows the failure, and the C statement that fails;
+``unknown``
+    the work budget ran out; ``proven_fraction`` of the box is proven.
+
+Soundness by construction: SI inputs map to the firmware's raw integers by a
+monotone rounding (``round(x·scale)``), so a range of an input is exactly a range
+of raw integers.  The vendor code itself (:data:`~pulab.profiles.inovance_code.VENDOR_CODE`,
+the statements the report runs) is evaluated over intervals of those integers
+(:class:`~pulab.fixedpoint.interval.ICInt`, the exact C semantics on ``[lo, hi]``),
+so its result encloses every value and flag of every point.  A box whose
+enclosure raises nothing is proven; otherwise its corners and centre are run
+concretely (a failure there is the counterexample), and else it is split in two
+along its relatively widest raw input.  A box of one raw point is evaluated
+exactly, so the split ends.
+
+Not analysed here: the current-PI integers ``pm_kp``/``pm_ki`` (floating-point
+design formulas, not this integer code) — they are listed in ``not_analysed``.
+
+Examples
+--------
+>>> seed = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
+...     "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
+...     "drive": {"udc_v": 24, "ts_s": 1e-4}}
+>>> r = prove({"input": seed, "ranges": {"motor.rated_current_a": [1, 4],
+...                                      "motor.rs_ohm": [0.5, 2]}})
+>>> r["verdict"], r["integers"]["vendor.LD"]["range"], r["integers"]["vendor.Rpm"]["range"]
+('proven', [692, 2808], [3338, 53414])
+>>> r = prove({"input": seed, "ranges": {"motor.rated_current_a": [1, 100]}})
+>>> ld = r["integers"]["vendor.LD"]
+>>> ld["verdict"], ld["kind"], ld["counterexample"]["motor"]["rated_current_a"] >= 69.475
+('violated', 'store', True)
+"""
+
+from __future__ import annotations
+
+import heapq
+import math
+
+from ..fixedpoint.cint import UINT16, CDivisionByZero
+from ..fixedpoint.interval import ICInt
+from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR_READS,
+                                      VENDOR_RESULTS, Block, raw_source, raw_value)
+from ..schema.errors import InputError
+from ..schema.fields import FIELD
+from ..schema.inputs import SECTIONS, normalize
+from ..schema.validate import real, shown
+from .integers import profile_name
+from .slices import finish
+
+__all__ = ["prove", "prove_steps", "make_problem", "Problem", "VERDICTS", "KINDS",
+           "DEFAULT_BUDGET", "MAX_BUDGET"]
+
+VERDICTS = ("proven", "violated", "unknown")
+#: What breaks an integer: wrapped mid-way, changed by its Uint16 store, divided by zero,
+#: zero (all resolution lost), or a raw parameter the Uint16 cannot hold.
+KINDS = ("wrap", "store", "div0", "zero", "outside")
+#: Interval evaluations (boxes) allowed per integer.
+DEFAULT_BUDGET = 4000
+MAX_BUDGET = 1_000_000
+_UINT16_MAX = 0xFFFF
+_PI_NAMES = tuple(f"current_pi.{a}.{k}" for a in ("d", "q") for k in ("pm_kp", "pm_ki"))
+#: Boxes evaluated between two yields of :func:`prove_steps`.
+_SLICE_BOXES = 200
+
+
+class Problem:
+    """A checked proof request: the base input, the raw-integer box, and how to map back.
+
+    Attributes
+    ----------
+    input : dict — the base input (points outside the box keep its values)
+    ranges : dict — path → (lo, hi), as given
+    unit : str — the inductance unit
+    box : dict — raw field → (lo, hi) raw integers over the whole box (fixed fields: lo = hi)
+    sources : dict — raw field → the box path it comes from (SI or ``raw.NAME``)
+    budget : int
+    """
+
+    def __init__(self, inp: dict, ranges: dict, unit: str, box: dict, sources: dict,
+                 budget: int) -> None:
+        self.input, self.ranges, self.unit = inp, ranges, unit
+        self.box, self.sources, self.budget = box, sources, budget
+
+
+def _numeric_path(path, field: str) -> str:
+    section, _, key = path.partition(".") if isinstance(path, str) else ("", "", "")
+    if key not in SECTIONS.get(section, ()) or FIELD[path].kind not in ("number", "integer"):
+        raise InputError(field, code="not_numeric_path", got=shown(path))
+    return path
+
+
+def _set(inp: dict, path: str, value) -> dict:
+    section, _, key = path.partition(".")
+    return {**inp, section: {**(inp.get(section) or {}), key: value}}
+
+
+def make_problem(req) -> Problem:
+    """Check a proof request.
+
+    Parameters
+    ----------
+    req : dict
+        ``input`` (a report input), ``ranges`` ({path: [lo, hi]}, numeric input paths,
+        lo ≤ hi; a raw path takes integers), optional ``profile`` (``inovance``, the
+        default, or its alias ``vendor``) and ``budget`` (boxes per integer,
+        1..1000000, default 4000).
+
+    Raises
+    ------
+    pulab.InputError
+        Naming ``prove.ranges.PATH`` (or the input field that a range end makes invalid).
+    """
+    if not isinstance(req, dict):
+        raise InputError("prove", code="not_object", got=shown(req))
+    inp = req.get("input")
+    if not isinstance(inp, dict):
+        raise InputError("input", code="not_json_object")
+    inp = {k: v for k, v in inp.items() if k not in ("sim", "analysis", "profiles")}
+    profile = req.get("profile")
+    if profile is not None and (not isinstance(profile, str) or profile_name(profile) != "inovance"):
+        raise InputError("prove.profile", code="prove_profile", got=shown(profile))
+    budget = req.get("budget", DEFAULT_BUDGET)
+    if isinstance(budget, bool) or not isinstance(budget, int) or not 1 <= budget <= MAX_BUDGET:
+        raise InputError("prove.budget", code="integer_range", lo=1, hi=MAX_BUDGET,
+                         got=shown(budget))
+    ranges = req.get("ranges")
+    if not isinstance(ranges, dict) or not ranges:
+        raise InputError("prove.ranges", code="prove_no_ranges")
+    checked = {}
+    for path, pair in ranges.items():
+        field = f"prove.ranges.{path}"
+        _numeric_path(path, field)
+        if not isinstance(pair, (list, tuple)) or len(pair) != 2:
+            raise InputError(field, code="prove_pair", got=shown(pair))
+        lo, hi = (real(v, field) for v in pair)
+        if FIELD[path].kind == "integer":
+            if lo != int(lo) or hi != int(hi):
+                raise InputError(field, code="prove_pair", got=shown(pair))
+            lo, hi = int(lo), int(hi)
+        if not lo <= hi:
+            raise InputError(field, code="prove_order", lo=lo, hi=hi)
+        checked[path] = (lo, hi)
+    # Both ends of every range are real inputs (each field's own limits hold between them).
+    n_lo = normalize(_with(inp, checked, 0))
+    normalize(_with(inp, checked, 1))
+    unit = n_lo["conventions"]["inductance_unit"]
+    given = n_lo["raw"]
+    box, sources = {}, {}
+    for name in RAW_FIELDS:
+        path = RAW_SCALE[name][0]
+        if f"raw.{name}" in checked:
+            sources[name] = f"raw.{name}"
+            box[name] = checked[f"raw.{name}"]
+        elif name in given:
+            box[name] = (given[name], given[name])
+        else:
+            lo_si, hi_si = checked.get(path, (None, None))
+            if lo_si is None:
+                v = normalize(inp)
+                lo_si = hi_si = v[path.split(".")[0]][path.split(".")[1]]
+            else:
+                sources[name] = path
+            box[name] = (raw_value(name, lo_si, unit), raw_value(name, hi_si, unit))
+    return Problem(inp, checked, unit, box, sources, budget)
+
+
+def _with(inp: dict, ranges: dict, end: int) -> dict:
+    for path, pair in ranges.items():
+        inp = _set(inp, path, pair[end])
+    return inp
+
+
+def _si_for(problem: Problem, name: str, k: int):
+    """An input value in the box whose raw integer is ``k`` (None if none is found)."""
+    path = problem.sources[name]
+    lo, hi = problem.ranges[path]
+    if path.startswith("raw."):
+        return k
+    unit = problem.unit
+    if raw_value(name, lo, unit) == k:
+        return lo
+    if raw_value(name, hi, unit) == k:
+        return hi
+    x = k / raw_source(name, unit)[1]
+    # k/scale rounds back to k except at a double's edge: step a few doubles either way.
+    for step in (math.inf, -math.inf):
+        y = x
+        for _ in range(64):
+            if lo <= y <= hi and raw_value(name, y, unit) == k:
+                return y
+            y = math.nextafter(y, step)
+    return None
+
+
+def counterexample(problem: Problem, point: dict) -> dict | None:
+    """The input JSON for a raw point of the box (None if no input in the box gives it)."""
+    inp = problem.input
+    for name, path in problem.sources.items():
+        v = _si_for(problem, name, point[name])
+        if v is None:
+            return None
+        inp = _set(inp, path, v)
+    return inp
+
+
+def _reproduces(inp: dict, name: str) -> bool:
+    """Whether the report of ``inp`` shows integer ``name`` failing (the counterexample check)."""
+    from ..report import report  # the whole report: what a user sees when opening the input
+    try:
+        r = report(inp)
+    except InputError:
+        return False
+    section, _, key = name.partition(".")
+    if section == "raw":
+        return key not in r["vendor"]["raw"]
+    v = r["vendor"].get(key)
+    return v is None or bool({"wrap", "store"} & set(v["flags"])) or v["value"] == 0
+
+
+def _point(name: str, pt: dict, unit: str) -> tuple:
+    """(kind or None, value, error_pct, statement) of vendor result ``name`` at a raw point."""
+    if any(pt[k] > _UINT16_MAX for k in VENDOR_READS[name]):
+        return "outside", None, None, None
+    try:
+        r = VENDOR_RESULTS[name](pt, unit)
+    except InputError as e:
+        return "div0", None, None, e.message
+    for s in r["trace"]:
+        bad = {"wrap", "store"} & set(s["flags"])
+        if bad:
+            return sorted(bad)[-1], r["value"], r["error_pct"], s["code"]
+    if r["value"] == 0:
+        return "zero", 0, r["error_pct"], r["trace"][-1]["code"]
+    return None, r["value"], r["error_pct"], None
+
+
+def _enclose(name: str, box: dict, unit: str) -> tuple:
+    """(kinds, (lo, hi), word) of vendor result ``name`` over a raw box, by interval evaluation."""
+    kinds = set()
+    raw = {}
+    for k in VENDOR_READS[name]:
+        lo, hi = box[k]
+        if hi > _UINT16_MAX:
+            kinds.add("outside")
+        if lo > _UINT16_MAX:
+            return kinds, None, None
+        raw[k] = ICInt(lo, min(hi, _UINT16_MAX), UINT16)
+    b = Block()
+    try:
+        VENDOR_CODE[name](b, raw, unit)
+    except (InputError, CDivisionByZero):
+        return kinds | {"div0"}, None, None
+    for s in b.trace:
+        kinds |= {"wrap", "store", "div0"} & set(s["flags"])
+    lo, hi = b.trace[-1]["value"]
+    if lo <= 0 <= hi:
+        kinds.add("zero")
+    return kinds, (lo, hi), b.trace[-1]["type"]
+
+
+def _volume(box: dict, dims) -> int:
+    v = 1
+    for k in dims:
+        v *= box[k][1] - box[k][0] + 1
+    return v
+
+
+def _corners(box: dict, dims) -> list:
+    pts = [dict(box_lo(box))]
+    for k in dims:
+        lo, hi = box[k]
+        if hi != lo:
+            pts += [{**p, k: hi} for p in pts]
+    mid = {k: (lo + hi) // 2 for k, (lo, hi) in box.items()}
+    return pts + [mid]
+
+
+def box_lo(box: dict) -> dict:
+    return {k: lo for k, (lo, _) in box.items()}
+
+
+def _split(box: dict, dims) -> tuple:
+    # Relatively widest first: the code multiplies and divides, so ratios matter.
+    k = max((k for k in dims if box[k][1] > box[k][0]),
+            key=lambda k: (box[k][1] - box[k][0]) / (box[k][0] + 1))
+    lo, hi = box[k]
+    mid = (lo + hi) // 2
+    return {**box, k: (lo, mid)}, {**box, k: (mid + 1, hi)}
+
+
+_WORDS = {"Uint16": (0, _UINT16_MAX), "long": (-(1 << 31), (1 << 31) - 1),
+          "Ulong": (0, (1 << 32) - 1)}
+
+
+def _prove_vendor(problem: Problem, name: str):
+    """Decide one vendor result over the box (a slice generator returning its entry)."""
+    unit = problem.unit
+    dims = [k for k in VENDOR_READS[name] if problem.box[k][0] != problem.box[k][1]]
+    total = _volume(problem.box, dims)
+    heap = [(-total, 0, problem.box)]
+    order = 1
+    proven_volume = 0
+    rng = None
+    word = None
+    worst = None  # (|error_pct|, error_pct, raw point) over the points run
+    evaluated = 0
+    while heap:
+        if evaluated >= problem.budget:
+            break
+        if evaluated and evaluated % _SLICE_BOXES == 0:
+            yield
+        neg_vol, _, box = heapq.heappop(heap)
+        evaluated += 1
+        kinds, enc, w = _enclose(name, box, unit)
+        word = word or w
+        if enc is not None:
+            rng = enc if rng is None else (min(rng[0], enc[0]), max(rng[1], enc[1]))
+        if not kinds:
+            proven_volume += -neg_vol
+            for pt in (box_lo(box), {k: hi for k, (_, hi) in box.items()}):
+                worst = _worse(worst, _point(name, pt, unit), pt)
+            continue
+        for pt in _corners(box, dims):
+            got = _point(name, pt, unit)
+            if got[0] is not None:
+                inp = counterexample(problem, pt)
+                if inp is not None and _reproduces(inp, name):
+                    return _entry("violated", rng, word, proven_volume / total, worst,
+                                  kind=got[0], statement=got[3],
+                                  raw={k: pt[k] for k in VENDOR_READS[name]},
+                                  counterexample=inp)
+            else:
+                worst = _worse(worst, got, pt)
+        if _volume(box, dims) == 1:
+            # A single point evaluates exactly: its failure did not reproduce as an input.
+            break
+        for half in _split(box, dims):
+            heapq.heappush(heap, (-_volume(half, dims), order, half))
+            order += 1
+    if not heap and proven_volume == total:
+        return _entry("proven", rng, word, 1.0, worst)
+    return _entry("unknown", rng, word, proven_volume / total, worst)
+
+
+def _worse(worst, got, pt):
+    err = got[2]
+    if got[0] is not None or err is None or (worst is not None and abs(err) <= worst[0]):
+        return worst
+    return abs(err), err, dict(pt)
+
+
+def _entry(verdict: str, rng, word, fraction: float, worst, **extra) -> dict:
+    out = {"verdict": verdict, "range": list(rng) if rng else None, "type": word,
+           "word": list(_WORDS[word]) if word else None, "proven_fraction": fraction,
+           "worst_error_pct": None if worst is None else worst[1],
+           "worst_error_raw": None if worst is None else worst[2]}
+    out.update(extra)
+    return out
+
+
+def _prove_raw(problem: Problem, name: str) -> dict:
+    """A raw parameter: the range is exact (a monotone rounding), so is the verdict."""
+    lo, hi = problem.box[name]
+    scale = raw_source(name, problem.unit)[1]
+    path = problem.sources.get(name)
+    # |round(x·s) − x·s| ≤ 1/2, so the relative error is worst at the low end.
+    worst = None
+    if path is not None and not path.startswith("raw."):
+        x_lo = problem.ranges[path][0] * scale
+        worst = 50.0 / x_lo if x_lo > 0 else None
+    if hi <= _UINT16_MAX:
+        out = _entry("proven", (lo, hi), "Uint16", 1.0, None)
+    else:
+        k = max(lo, _UINT16_MAX + 1)
+        inp = counterexample(problem, {**box_lo(problem.box), name: k})
+        fraction = max(0, _UINT16_MAX - lo + 1) / (hi - lo + 1)
+        out = _entry("violated" if inp is not None else "unknown", (lo, hi), "Uint16",
+                     fraction, None, kind="outside", raw={name: k},
+                     statement=f"gMotorInfo.{name} (Uint16) = {k}")
+        if inp is not None:
+            out["counterexample"] = inp
+    out["worst_error_pct"] = worst
+    out["error_bound"] = worst is not None
+    return out
+
+
+def prove_steps(req):
+    """:func:`prove` in slices: yields None between slices of boxes; closing it cancels."""
+    problem = make_problem(req)
+    integers = {}
+    for name in RAW_FIELDS:
+        integers[f"raw.{name}"] = _prove_raw(problem, name)
+    for name in VENDOR_CODE:
+        entry = yield from _prove_vendor(problem, name)
+        entry["error_bound"] = False
+        integers[f"vendor.{name}"] = entry
+    verdicts = {e["verdict"] for e in integers.values()}
+    verdict = ("violated" if "violated" in verdicts else
+               "unknown" if "unknown" in verdicts else "proven")
+    first = next((n for n, e in integers.items() if e["verdict"] == "violated"), None)
+    out = {"verdict": verdict, "profile": "inovance",
+           "ranges": {p: list(v) for p, v in problem.ranges.items()},
+           "raw_box": {k: list(v) for k, v in problem.box.items()},
+           "integers": integers, "not_analysed": list(_PI_NAMES)}
+    if first is not None:
+        out["counterexample"] = integers[first]["counterexample"]
+        out["first_violated"] = first
+    return out
+
+
+def prove(req) -> dict:
+    """Decide every firmware integer over a box of inputs.
+
+    Parameters
+    ----------
+    req : dict
+        See :func:`make_problem`.
+
+    Returns
+    -------
+    dict
+        ``verdict`` (proven | violated | unknown: the worst over the integers),
+        ``integers`` {name: {verdict, range [lo, hi] (a sound enclosure of every value over
+        the box where the code completes), type and word [min, max] of its C type,
+        proven_fraction, worst_error_pct (raw parameters: a bound; vendor results: the
+        worst at the points run, error_bound false), and when violated: kind (wrap, store,
+        div0, zero, outside), statement, raw (the raw point) and counterexample (an input
+        JSON inside the box)}}, ``counterexample`` (the first violated integer's),
+        ``raw_box`` and ``not_analysed``.
+    """
+    return finish(prove_steps(req))

@@ -1,0 +1,167 @@
+"""C integer arithmetic over intervals: every value an expression takes for a box of inputs.
+
+:class:`ICInt` is a :class:`~pulab.fixedpoint.cint.CInt` whose value is an interval
+``[lo, hi]`` of its C type.  It implements the same operators with the same C
+semantics (usual arithmetic conversions, modulo wrap, truncating division,
+arithmetic right shift), so code written for ``CInt`` — the vendor profiles —
+runs unchanged over a whole box of inputs.  The result is sound: every value
+the concrete code computes for a point of the box lies in ``[lo, hi]``, and every
+flag it raises (``wrap``, ``truncation``) is in ``flags``.  Flags here mean
+"some point may raise it".  A division whose divisor interval holds 0 but is
+not {0} adds ``div0`` and bounds the quotient over the non-zero divisors; a
+divisor that is exactly {0} raises :class:`CDivisionByZero` as the concrete code
+does, since then every point divides by zero.
+
+As a subclass, an ``ICInt`` on the right of a ``CInt`` operator takes over
+(Python tries a subclass's reflected method first), so ``CInt(5000, ...) * x``
+works too.
+
+Examples
+--------
+>>> from pulab.fixedpoint.cint import UINT16, INT16
+>>> v = ICInt(17, 7000, UINT16)
+>>> p = v * CInt(10, INT16)          # Uint16 arithmetic on C2000: may wrap
+>>> p.value, sorted(p.flags)
+((0, 65535), ['wrap'])
+>>> q = ICInt(100, 200, UINT16) // ICInt(0, 3, UINT16)
+>>> q.value, sorted(q.flags)
+((33, 200), ['div0', 'truncation'])
+"""
+
+from __future__ import annotations
+
+from .cint import CDivisionByZero, CInt, CType, _common, trunc_div, wrap_to
+
+__all__ = ["ICInt", "lift", "DIV0"]
+
+_NO_FLAGS = frozenset()
+_WRAP = frozenset({"wrap"})
+_TRUNC = frozenset({"truncation"})
+#: The flag of a division whose divisor may be zero (the concrete code raises there).
+DIV0 = frozenset({"div0"})
+
+
+def _fit(lo: int, hi: int, t: CType, flags: frozenset) -> "ICInt":
+    """The exact interval [lo, hi] stored in ``t``: unchanged, or wrapped and flagged."""
+    if t.min <= lo and hi <= t.max:
+        return ICInt(lo, hi, t, flags)
+    flags = flags | _WRAP
+    if hi - lo + 1 >= 1 << t.bits:
+        return ICInt(t.min, t.max, t, flags)
+    wl, wh = wrap_to(lo, t), wrap_to(hi, t)
+    # Shorter than 2^bits: the image is one piece exactly when it does not cross the seam.
+    return ICInt(wl, wh, t, flags) if wl <= wh else ICInt(t.min, t.max, t, flags)
+
+
+def lift(x: CInt) -> "ICInt":
+    """``x`` as an interval (a point for a plain :class:`CInt`)."""
+    return x if isinstance(x, ICInt) else ICInt(x.value, x.value, x.ctype, x.flags)
+
+
+def _convert(x: "ICInt", t: CType) -> "ICInt":
+    """An operand converted to the common type; as in :class:`CInt`, this adds no flag."""
+    if x.ctype is t or (t.min <= x.lo and x.hi <= t.max):
+        return x
+    y = _fit(x.lo, x.hi, t, x.flags)
+    return ICInt(y.lo, y.hi, t, x.flags)
+
+
+class ICInt(CInt):
+    """Every value of a C integer expression over a box: ``[lo, hi]`` in ``ctype``.
+
+    Parameters
+    ----------
+    lo, hi : int, ctype.min ≤ lo ≤ hi ≤ ctype.max
+    ctype : CType
+    flags : frozenset of str
+        Flags some point of the box may raise (``wrap``, ``truncation``, ``div0``).
+
+    Notes
+    -----
+    ``value`` is the pair ``(lo, hi)``: code that compares a ``CInt``'s value to a
+    number sees "not certainly that number", and a store that changes any value is
+    seen as a change.
+    """
+
+    __slots__ = ("lo", "hi")
+
+    def __init__(self, lo: int, hi: int, ctype: CType, flags: frozenset = _NO_FLAGS) -> None:
+        if not ctype.min <= lo <= hi <= ctype.max:
+            raise ValueError(f"[{lo}, {hi}] is not an interval of {ctype.name}")
+        self.lo, self.hi = lo, hi
+        self.value = (lo, hi)
+        self.ctype = ctype
+        self.flags = flags
+
+    def __repr__(self) -> str:
+        return f"ICInt({self.lo}, {self.hi}, {self.ctype.name}, {sorted(self.flags)})"
+
+    def cast(self, ctype: CType) -> "ICInt":
+        return _fit(self.lo, self.hi, ctype, self.flags)
+
+    def clean(self) -> "ICInt":
+        """Read back from a variable: only ``div0`` stays, since a value that may come from a
+        division by zero (where the concrete code stops) may not exist at all."""
+        return ICInt(self.lo, self.hi, self.ctype, self.flags & DIV0)
+
+    def _arith(self, other: CInt, op: str) -> "ICInt":
+        o = lift(other)
+        t = self.ctype if self.ctype is o.ctype else _common(self.ctype, o.ctype)
+        a, b = _convert(self, t), _convert(o, t)
+        flags = a.flags | b.flags
+        if op == "*":
+            c = (a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi)
+            return _fit(min(c), max(c), t, flags)
+        if op == "+":
+            return _fit(a.lo + b.lo, a.hi + b.hi, t, flags)
+        if op == "-":
+            return _fit(a.lo - b.hi, a.hi - b.lo, t, flags)
+        return _divide(a, b, t, flags)
+
+    def _rarith(self, other: CInt, op: str) -> "ICInt":
+        return lift(other)._arith(self, op)
+
+    def __rmul__(self, other: CInt) -> "ICInt":
+        return self._rarith(other, "*")
+
+    def __radd__(self, other: CInt) -> "ICInt":
+        return self._rarith(other, "+")
+
+    def __rsub__(self, other: CInt) -> "ICInt":
+        return self._rarith(other, "-")
+
+    def __rfloordiv__(self, other: CInt) -> "ICInt":
+        return self._rarith(other, "/")
+
+    def __neg__(self) -> "ICInt":
+        return _fit(-self.hi, -self.lo, self.ctype, self.flags)
+
+    def __lshift__(self, n: int) -> "ICInt":
+        return _fit(self.lo << n, self.hi << n, self.ctype, self.flags)
+
+    def __rshift__(self, n: int) -> "ICInt":
+        exact = self.lo == self.hi and not self.lo & ((1 << n) - 1)
+        return ICInt(self.lo >> n, self.hi >> n, self.ctype,
+                     self.flags if exact or n == 0 else self.flags | _TRUNC)
+
+    def __int__(self) -> int:
+        raise TypeError("an interval has no single integer value")
+
+
+def _divide(a: ICInt, b: ICInt, t: CType, flags: frozenset) -> ICInt:
+    """C ``/`` over intervals: trunc(x/y) is monotone in x and, on each sign of y, in y,
+    so its extremes over a rectangle are at the corners of each non-zero piece of b."""
+    if b.lo == b.hi == 0:
+        raise CDivisionByZero("integer division by zero")
+    pieces = []
+    if b.lo < 0:
+        pieces.append((b.lo, min(b.hi, -1)))
+    if b.hi > 0:
+        pieces.append((max(b.lo, 1), b.hi))
+    if b.lo <= 0 <= b.hi:
+        flags = flags | DIV0
+    q = [trunc_div(x, y) for lo, hi in pieces for x in (a.lo, a.hi) for y in (lo, hi)]
+    point = a.lo == a.hi and b.lo == b.hi
+    if not (point and q[0] * b.lo == a.lo) and not (b.lo == b.hi == 1):
+        flags = flags | _TRUNC
+    return _fit(min(q), max(q), t, flags)

@@ -1,0 +1,116 @@
+"""Family proofs: verdicts at the seed motor's known boundaries, counterexamples that reproduce,
+budgets and bad requests.  (Soundness against an enumeration that does not import pulab:
+tests/py/test_prove_oracle.py.)"""
+import pytest
+
+from pulab import report
+from pulab.analyses.prove import prove
+from pulab.schema.errors import InputError
+
+SEED = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
+                  "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
+        "drive": {"udc_v": 24, "ts_s": 1e-4}}
+
+
+def _prove(ranges, **kw):
+    return prove({"input": SEED, "ranges": ranges, **kw})
+
+
+def test_ld_boundary_of_the_seed_motor_is_where_the_sweep_found_it():
+    # The sweep's bisection (pulab.analyses.sweep docs): LD's store wraps from raw Current
+    # 6948, i.e. from 69.47500000000001 A; 69.47 A is still Current 6947.
+    below = _prove({"motor.rated_current_a": [1, 69.47]})["integers"]["vendor.LD"]
+    assert below["verdict"] == "proven" and below["proven_fraction"] == 1.0
+    above = _prove({"motor.rated_current_a": [1, 69.48]})["integers"]["vendor.LD"]
+    assert above["verdict"] == "violated" and above["kind"] == "store"
+    ce = above["counterexample"]
+    assert 69.475 < ce["motor"]["rated_current_a"] <= 69.48
+    r = report(ce)
+    assert "store" in r["vendor"]["LD"]["flags"]
+    assert above["statement"] == "gMotorExtPer.LD = m_Ulong / 10; // Q13"
+
+
+def test_every_counterexample_reproduces_and_lies_in_the_box():
+    ranges = {"motor.rated_current_a": [0.5, 130], "motor.rated_voltage_v": [5, 400],
+              "drive.base_freq_hz": [50, 1000], "motor.rated_freq_hz": [50, 1000],
+              "motor.bemf_v": [1, 400], "drive.udc_v": [12, 800]}
+    r = _prove(ranges)
+    assert r["verdict"] == "violated"
+    seen = 0
+    for name, e in r["integers"].items():
+        if e["verdict"] != "violated":
+            continue
+        seen += 1
+        ce = e["counterexample"]
+        for path, (lo, hi) in ranges.items():
+            sec, key = path.split(".")
+            assert lo <= ce[sec][key] <= hi, (name, path)
+        out = report(ce)
+        field = name.split(".")[1]
+        if name.startswith("raw."):
+            assert field not in out["vendor"]["raw"]
+        else:
+            v = out["vendor"].get(field)
+            assert v is None or v["value"] == 0 or {"wrap", "store"} & set(v["flags"]), name
+    assert seen >= 3
+
+
+def test_a_small_family_is_proven_with_exact_end_values():
+    r = _prove({"motor.rated_current_a": [1, 4], "motor.rs_ohm": [0.5, 2]})
+    assert r["verdict"] == "proven" and "counterexample" not in r
+    rpm = r["integers"]["vendor.Rpm"]
+    # Ends by hand from seed 1.4-1: (500·100/17 = 2941)·18597 >> 14 = 3338 and
+    # (2000·400/17 = 47058)·18597 >> 14 = 53414.
+    assert rpm["range"] == [3338, 53414] and rpm["word"] == [0, 65535]
+    assert r["integers"]["raw.Current"]["range"] == [100, 400]
+    # |round(x) − x| ≤ 1/2 of raw Current 100 (1 A): 0.5 %.
+    assert r["integers"]["raw.Current"]["worst_error_pct"] == pytest.approx(0.5, abs=1e-12)
+
+
+def test_a_raw_parameter_beyond_uint16_is_violated_at_65536():
+    e = _prove({"motor.rated_current_a": [600, 700]})["integers"]["raw.Current"]
+    assert e["verdict"] == "violated" and e["kind"] == "outside" and e["raw"] == {"Current": 65536}
+    assert e["counterexample"]["motor"]["rated_current_a"] == pytest.approx(655.36)
+    assert "Current" not in report(e["counterexample"])["vendor"]["raw"]
+
+
+def test_a_violation_inside_the_box_is_found_by_splitting_and_a_tiny_budget_says_unknown():
+    # f_b ≤ 110 Hz makes FreqPer = f_n/f_b·2^15 ≥ 2^16 for the seed's f_n = 220 Hz: its Uint16
+    # store wraps to a small number and FluxRotor, divided by it, overflows — but only just
+    # below 110 Hz: at 101.9 Hz FreqPer wraps to 5207 and FluxRotor still fits (18192).
+    ranges = {"drive.base_freq_hz": [101.9, 348]}
+    flux = _prove(ranges)["integers"]["vendor.FluxRotor"]
+    assert flux["verdict"] == "violated" and flux["kind"] == "store"
+    f_b = flux["counterexample"]["drive"]["base_freq_hz"]
+    assert 101.9 < f_b <= 110
+    assert "store" in report(flux["counterexample"])["vendor"]["FluxRotor"]["flags"]
+    short = _prove(ranges, budget=1)["integers"]["vendor.FluxRotor"]
+    assert short["verdict"] == "unknown" and short["proven_fraction"] == 0.0
+
+
+def test_division_by_zero_is_a_counterexample():
+    # FullFreq01 = 0 from f_b < 0.005 Hz is refused by the input checks, so divide by a
+    # Voltage·10 that wraps to 0 in 16-bit unsigned int: 32768·10 = 5·65536 ≡ 0.
+    r = _prove({"motor.rated_voltage_v": [32768, 32768]})
+    flux = r["integers"]["vendor.FluxRotor"]
+    assert flux["verdict"] == "violated" and flux["kind"] == "div0"
+    assert "FluxRotor" not in report(flux["counterexample"])["vendor"]
+
+
+@pytest.mark.parametrize("req, field", [
+    ({"input": SEED}, "prove.ranges"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [2, 1]}}, "prove.ranges.motor.rs_ohm"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [1]}}, "prove.ranges.motor.rs_ohm"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [1, "x"]}}, "prove.ranges.motor.rs_ohm"),
+    ({"input": SEED, "ranges": {"motor.name": [1, 2]}}, "prove.ranges.motor.name"),
+    ({"input": SEED, "ranges": {"raw.Current": [1.5, 2]}}, "prove.ranges.raw.Current"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [-1, 2]}}, "motor.rs_ohm"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "profile": "ti"}, "prove.profile"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "budget": 0}, "prove.budget"),
+    ({"ranges": {"motor.rs_ohm": [1, 2]}}, "input"),
+    ([], "prove"),
+])
+def test_bad_requests_name_the_field(req, field):
+    with pytest.raises(InputError) as e:
+        prove(req)
+    assert e.value.field == field
