@@ -1,5 +1,6 @@
 """Command line: ``python -m pulab report INPUT.json [--format json|text]``, ``sweep``, ``batch``,
 ``python -m pulab trace FILE.c --target c28x --set NAME=VALUE …``,
+``python -m pulab prove INPUT.json --range PATH=LO:HI …`` (a family proof),
 ``python -m pulab header --profile NAME INPUT.json`` (one vendor's C header) and
 ``python -m pulab translate --from NAME [--axis d|q] --kp INT --ki INT INPUT.json``
 (docs/contract.md, "Vendor profiles").
@@ -21,6 +22,7 @@ from .schema.validate import shown
 from .report import format_text, report
 from .cli.trace import add_trace_parser, trace_main
 from .cli.robust import add_robust_parser
+from .cli.prove import add_prove_parser
 
 
 def main(argv: list | None = None) -> int:
@@ -33,6 +35,7 @@ def main(argv: list | None = None) -> int:
     add_family_commands(sub)
     add_trace_parser(sub)
     add_robust_parser(sub)
+    add_prove_parser(sub)
     _add_vendor_commands(sub)
     args = p.parse_args(argv)
     if args.command == "trace":

@@ -29,7 +29,8 @@ from .analyses.slices import finish
 from .schema.textnum import ascii_text, parse_int, parse_real
 
 __all__ = ["run_json", "run_json_steps", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
-           "trace_json", "trace_examples_json", "vendors_json"]
+           "trace_json", "trace_examples_json", "vendors_json", "prove_json",
+           "prove_json_steps"]
 
 
 def _fail(e: InputError) -> str:
@@ -212,6 +213,70 @@ def sweep_json(text: str) -> str:
         return json.dumps({"ok": True, **out}, allow_nan=False)
     except InputError as e:
         return _fail(e)
+
+
+def prove_json(text: str) -> str:
+    """A family proof (:mod:`pulab.analyses.prove`) on a JSON string: :func:`prove_json_steps`
+    run to the end."""
+    return finish(prove_json_steps(text))
+
+
+def prove_json_steps(text: str):
+    """A family proof in slices (a generator; closing it cancels).
+
+    The request is a proof request (``input``, ``ranges``, optional ``profile``, ``budget``)
+    with ``op``: ``"prove"`` (default: every integer), ``"plan"`` (the integer names and the
+    raw box, nothing proven), ``"integer"`` with ``name`` (that integer's entry: a page
+    proves integer by integer to show progress), or ``"summary"`` with ``integers`` (the
+    entries → the whole result, as ``"prove"`` gives it).
+
+    >>> import json
+    >>> seed = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
+    ...     "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
+    ...     "drive": {"udc_v": 24, "ts_s": 1e-4}}
+    >>> req = {"input": seed, "ranges": {"motor.rated_current_a": [1, 4]}}
+    >>> json.loads(prove_json(json.dumps({**req, "op": "integer", "name": "vendor.LD"})))[
+    ...     "integer"]["range"]
+    [692, 2808]
+    """
+    from .analyses import prove as pv  # imported on first use: report-only pages stay lean
+    try:
+        req = parse(text, "prove")
+        op = req.get("op", "prove") if isinstance(req, dict) else None
+        if isinstance(req, dict):
+            req = {k: v for k, v in req.items() if k not in ("op", "name", "integers")}
+        if op == "prove":
+            out = {"proof": (yield from pv.prove_steps(req))}
+        else:
+            problem = pv.make_problem(req)
+            if op == "plan":
+                out = {"plan": {"names": list(pv.integer_names()),
+                                "raw_box": {k: list(v) for k, v in problem.box.items()}}}
+            elif op == "integer":
+                out = {"integer": (yield from pv.integer_steps(problem, _name(text)))}
+            elif op == "summary":
+                out = {"proof": pv.summary(problem, _entries(text))}
+            else:
+                raise InputError("prove.op", code="not_choice",
+                                 choices="prove, plan, integer, summary", got=shown(op))
+        return json.dumps({"ok": True, **out}, allow_nan=False)
+    except InputError as e:
+        return _fail(e)
+
+
+def _name(text: str) -> str:
+    name = parse(text, "prove").get("name")
+    if not isinstance(name, str):
+        raise InputError("prove.name", code="not_string", got=shown(name))
+    return name
+
+
+def _entries(text: str) -> dict:
+    entries = parse(text, "prove").get("integers")
+    if not isinstance(entries, dict) or not all(isinstance(e, dict) and "verdict" in e
+                                                for e in entries.values()):
+        raise InputError("prove.integers", code="not_object", got=shown(entries))
+    return entries
 
 
 def batch_json(text: str) -> str:

@@ -1,9 +1,15 @@
 """Family proofs: verdicts at the seed motor's known boundaries, counterexamples that reproduce,
 budgets and bad requests.  (Soundness against an enumeration that does not import pulab:
 tests/py/test_prove_oracle.py.)"""
+import json
+import os
+import subprocess
+import sys
+
 import pytest
 
 from pulab import report
+from pulab.api import prove_json
 from pulab.analyses.prove import prove
 from pulab.schema.errors import InputError
 
@@ -114,3 +120,44 @@ def test_bad_requests_name_the_field(req, field):
     with pytest.raises(InputError) as e:
         prove(req)
     assert e.value.field == field
+
+
+def _cli(tmp_path, *args):
+    f = tmp_path / "seed.json"
+    f.write_text(json.dumps(SEED))
+    return subprocess.run([sys.executable, "-m", "pulab", "prove", str(f), *args],
+                          capture_output=True, text=True, env={**os.environ, "PYTHONPATH": "py"})
+
+
+def test_cli_exit_status_is_the_verdict(tmp_path):
+    ok = _cli(tmp_path, "--range", "motor.rated_current_a=1:4", "--range", "motor.rs_ohm=0.5:2")
+    assert ok.returncode == 0 and json.loads(ok.stdout)["verdict"] == "proven"
+    bad = _cli(tmp_path, "--range", "motor.rated_current_a=1:100", "--format", "text")
+    assert bad.returncode == 1 and "vendor.LD              violated" in bad.stdout
+    unknown = _cli(tmp_path, "--range", "drive.base_freq_hz=101.9:348", "--budget", "1")
+    assert unknown.returncode == 1
+    assert json.loads(unknown.stdout)["integers"]["vendor.FluxRotor"]["verdict"] == "unknown"
+
+
+@pytest.mark.parametrize("args, line", [
+    (("--range", "motor.rs_ohm=1"), "error: prove.ranges: expected PATH=LO:HI, got 'motor.rs_ohm=1'"),
+    (("--range", "motor.rs_ohm=2:1"), "error: prove.ranges.motor.rs_ohm: lo must be ≤ hi, got 2 > 1"),
+    ((), "error: prove.ranges: give at least one input range (PATH=LO:HI)"),
+    (("--range", "motor.rs_ohm=1:2", "--profile", "ti"),
+     "error: prove.profile: a proof covers the inovance profile only, got 'ti'"),
+])
+def test_cli_bad_request_is_one_line_and_exit_2(tmp_path, args, line):
+    r = _cli(tmp_path, *args)
+    assert r.returncode == 2 and r.stderr == line + "\n" and r.stdout == ""
+
+
+def test_api_by_integer_then_summary_equals_the_whole_proof():
+    req = {"input": SEED, "ranges": {"motor.rated_current_a": [1, 100]}}
+    whole = json.loads(prove_json(json.dumps(req)))["proof"]
+    plan = json.loads(prove_json(json.dumps({**req, "op": "plan"})))["plan"]
+    entries = {n: json.loads(prove_json(json.dumps({**req, "op": "integer", "name": n})))["integer"]
+               for n in plan["names"]}
+    merged = json.loads(prove_json(json.dumps({**req, "op": "summary", "integers": entries})))
+    assert merged["proof"] == whole
+    err = json.loads(prove_json(json.dumps({**req, "op": "integer", "name": "vendor.X"})))
+    assert err["ok"] is False and err["field"] == "prove.name"

@@ -60,7 +60,8 @@ from ..schema.validate import real, shown
 from .integers import profile_name
 from .slices import finish
 
-__all__ = ["prove", "prove_steps", "make_problem", "Problem", "VERDICTS", "KINDS",
+__all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "integer_steps",
+           "summary", "VERDICTS", "KINDS",
            "DEFAULT_BUDGET", "MAX_BUDGET"]
 
 VERDICTS = ("proven", "violated", "unknown")
@@ -397,16 +398,36 @@ def _prove_raw(problem: Problem, name: str) -> dict:
     return out
 
 
-def prove_steps(req):
-    """:func:`prove` in slices: yields None between slices of boxes; closing it cancels."""
-    problem = make_problem(req)
-    integers = {}
-    for name in RAW_FIELDS:
-        integers[f"raw.{name}"] = _prove_raw(problem, name)
-    for name in VENDOR_CODE:
-        entry = yield from _prove_vendor(problem, name)
-        entry["error_bound"] = False
-        integers[f"vendor.{name}"] = entry
+def integer_names() -> tuple:
+    """The integers a proof decides, in report order (raw parameters, then vendor results).
+
+    >>> integer_names()[-1]
+    'vendor.maxu'
+    """
+    return tuple(f"raw.{k}" for k in RAW_FIELDS) + tuple(f"vendor.{k}" for k in VENDOR_CODE)
+
+
+def integer_steps(problem: Problem, name: str):
+    """Decide one integer (a slice generator returning its entry).
+
+    Raises
+    ------
+    pulab.InputError
+        Naming ``prove.name`` for a name not in :func:`integer_names`.
+    """
+    if name not in integer_names():
+        raise InputError("prove.name", code="not_choice", choices=", ".join(integer_names()),
+                         got=shown(name))
+    section, _, key = name.partition(".")
+    if section == "raw":
+        return _prove_raw(problem, key)
+    entry = yield from _prove_vendor(problem, key)
+    entry["error_bound"] = False
+    return entry
+
+
+def summary(problem: Problem, integers: dict) -> dict:
+    """The proof result from each integer's entry (see :func:`prove`)."""
     verdicts = {e["verdict"] for e in integers.values()}
     verdict = ("violated" if "violated" in verdicts else
                "unknown" if "unknown" in verdicts else "proven")
@@ -419,6 +440,15 @@ def prove_steps(req):
         out["counterexample"] = integers[first]["counterexample"]
         out["first_violated"] = first
     return out
+
+
+def prove_steps(req):
+    """:func:`prove` in slices: yields None between slices of boxes; closing it cancels."""
+    problem = make_problem(req)
+    integers = {}
+    for name in integer_names():
+        integers[name] = yield from integer_steps(problem, name)
+    return summary(problem, integers)
 
 
 def prove(req) -> dict:
