@@ -87,13 +87,15 @@ class Problem:
     unit : str — the inductance unit
     box : dict — raw field → (lo, hi) raw integers over the whole box (fixed fields: lo = hi)
     sources : dict — raw field → the box path it comes from (SI or ``raw.NAME``)
+    ties : dict — raw field → the raw field it always equals (FullFreq01 → FreqRated01 when
+        f_b defaults to a ranging f_n); split and sampled with it, never on its own
     budget : int
     """
 
     def __init__(self, inp: dict, ranges: dict, unit: str, box: dict, sources: dict,
-                 budget: int) -> None:
+                 ties: dict, budget: int) -> None:
         self.input, self.ranges, self.unit = inp, ranges, unit
-        self.box, self.sources, self.budget = box, sources, budget
+        self.box, self.sources, self.ties, self.budget = box, sources, ties, budget
 
 
 def _numeric_path(path, field: str) -> str:
@@ -154,28 +156,48 @@ def make_problem(req) -> Problem:
         if not lo <= hi:
             raise InputError(field, code="prove_order", lo=lo, hi=hi)
         checked[path] = (lo, hi)
+    inp = _explicit(inp)
     # Both ends of every range are real inputs (each field's own limits hold between them).
     n_lo = normalize(_with(inp, checked, 0))
     normalize(_with(inp, checked, 1))
+    base = normalize(inp)
     unit = n_lo["conventions"]["inductance_unit"]
     given = n_lo["raw"]
-    box, sources = {}, {}
+    box, sources, ties = {}, {}, {}
     for name in RAW_FIELDS:
         path = RAW_SCALE[name][0]
+        section, _, key = path.partition(".")
         if f"raw.{name}" in checked:
             sources[name] = f"raw.{name}"
             box[name] = checked[f"raw.{name}"]
         elif name in given:
             box[name] = (given[name], given[name])
-        else:
-            lo_si, hi_si = checked.get(path, (None, None))
-            if lo_si is None:
-                v = normalize(inp)
-                lo_si = hi_si = v[path.split(".")[0]][path.split(".")[1]]
-            else:
-                sources[name] = path
+        elif path in checked:
+            sources[name] = path
+            lo_si, hi_si = checked[path]
             box[name] = (raw_value(name, lo_si, unit), raw_value(name, hi_si, unit))
-    return Problem(inp, checked, unit, box, sources, budget)
+        else:
+            v = raw_value(name, base[section][key], unit)
+            box[name] = (v, v)
+    if (sources.get("FreqRated01") == "motor.rated_freq_hz" and "FullFreq01" not in sources
+            and "FullFreq01" not in given
+            and (inp.get("drive") or {}).get("base_freq_hz") is None):
+        # f_b defaults to f_n: the same SI value at the same scale, so the same raw integer.
+        ties["FullFreq01"] = "FreqRated01"
+        box["FullFreq01"] = box["FreqRated01"]
+    return Problem(inp, checked, unit, box, sources, ties, budget)
+
+
+def _explicit(inp: dict) -> dict:
+    """The input with a datasheet's conversions made once, at the base input: ranges then
+    apply to the motor and drive values it gave."""
+    if "datasheet" not in inp:
+        return inp
+    n = normalize(inp)
+    drive = {k: v for k, v in n["drive"].items()
+             if v is not None and (k != "base_freq_hz" or (inp.get("drive") or {}).get(k))}
+    return {**{k: v for k, v in inp.items() if k != "datasheet"}, "motor": n["motor"],
+            "drive": drive}
 
 
 def _with(inp: dict, ranges: dict, end: int) -> dict:
@@ -279,27 +301,32 @@ def _volume(box: dict, dims) -> int:
     return v
 
 
-def _corners(box: dict, dims) -> list:
+def _tie(x: dict, ties: dict) -> dict:
+    """A point or box with every tied raw field set to its leader's."""
+    return {**x, **{f: x[lead] for f, lead in ties.items()}} if ties else x
+
+
+def _corners(box: dict, dims, ties: dict) -> list:
     pts = [dict(box_lo(box))]
     for k in dims:
         lo, hi = box[k]
         if hi != lo:
             pts += [{**p, k: hi} for p in pts]
     mid = {k: (lo + hi) // 2 for k, (lo, hi) in box.items()}
-    return pts + [mid]
+    return [_tie(p, ties) for p in pts + [mid]]
 
 
 def box_lo(box: dict) -> dict:
     return {k: lo for k, (lo, _) in box.items()}
 
 
-def _split(box: dict, dims) -> tuple:
+def _split(box: dict, dims, ties: dict) -> tuple:
     # Relatively widest first: the code multiplies and divides, so ratios matter.
     k = max((k for k in dims if box[k][1] > box[k][0]),
             key=lambda k: (box[k][1] - box[k][0]) / (box[k][0] + 1))
     lo, hi = box[k]
     mid = (lo + hi) // 2
-    return {**box, k: (lo, mid)}, {**box, k: (mid + 1, hi)}
+    return _tie({**box, k: (lo, mid)}, ties), _tie({**box, k: (mid + 1, hi)}, ties)
 
 
 _WORDS = {"Uint16": (0, _UINT16_MAX), "long": (-(1 << 31), (1 << 31) - 1),
@@ -309,7 +336,10 @@ _WORDS = {"Uint16": (0, _UINT16_MAX), "long": (-(1 << 31), (1 << 31) - 1),
 def _prove_vendor(problem: Problem, name: str):
     """Decide one vendor result over the box (a slice generator returning its entry)."""
     unit = problem.unit
-    dims = [k for k in VENDOR_READS[name] if problem.box[k][0] != problem.box[k][1]]
+    ties = problem.ties
+    # A tied field is split and sampled through its leader.
+    dims = list(dict.fromkeys(ties.get(k, k) for k in VENDOR_READS[name]
+                              if problem.box[k][0] != problem.box[k][1]))
     total = _volume(problem.box, dims)
     heap = [(-total, 0, problem.box)]
     order = 1
@@ -331,10 +361,10 @@ def _prove_vendor(problem: Problem, name: str):
             rng = enc if rng is None else (min(rng[0], enc[0]), max(rng[1], enc[1]))
         if not kinds:
             proven_volume += -neg_vol
-            for pt in (box_lo(box), {k: hi for k, (_, hi) in box.items()}):
+            for pt in (box_lo(box), {k: hi for k, (_, hi) in box.items()}):  # tied: equal ends
                 worst = _worse(worst, _point(name, pt, unit), pt)
             continue
-        for pt in _corners(box, dims):
+        for pt in _corners(box, dims, problem.ties):
             got = _point(name, pt, unit)
             if got[0] is not None:
                 inp = counterexample(problem, pt)
@@ -348,7 +378,7 @@ def _prove_vendor(problem: Problem, name: str):
         if _volume(box, dims) == 1:
             # A single point evaluates exactly: its failure did not reproduce as an input.
             break
-        for half in _split(box, dims):
+        for half in _split(box, dims, problem.ties):
             heapq.heappush(heap, (-_volume(half, dims), order, half))
             order += 1
     if not heap and proven_volume == total:
@@ -376,7 +406,7 @@ def _prove_raw(problem: Problem, name: str) -> dict:
     """A raw parameter: the range is exact (a monotone rounding), so is the verdict."""
     lo, hi = problem.box[name]
     scale = raw_source(name, problem.unit)[1]
-    path = problem.sources.get(name)
+    path = problem.sources.get(problem.ties.get(name, name))
     # |round(x·s) − x·s| ≤ 1/2, so the relative error is worst at the low end.
     worst = None
     if path is not None and not path.startswith("raw."):
@@ -386,7 +416,8 @@ def _prove_raw(problem: Problem, name: str) -> dict:
         out = _entry("proven", (lo, hi), "Uint16", 1.0, None)
     else:
         k = max(lo, _UINT16_MAX + 1)
-        inp = counterexample(problem, {**box_lo(problem.box), name: k})
+        lead = problem.ties.get(name, name)
+        inp = counterexample(problem, {**box_lo(problem.box), lead: k, name: k})
         fraction = max(0, _UINT16_MAX - lo + 1) / (hi - lo + 1)
         out = _entry("violated" if inp is not None else "unknown", (lo, hi), "Uint16",
                      fraction, None, kind="outside", raw={name: k},

@@ -1,0 +1,75 @@
+"""Family proofs against exhaustive enumeration (tests/oracle/prove_oracle.py, never imports
+pulab): no "proven" contradicted, every range encloses every value, every counterexample
+fails in the oracle too, and no small box is left unknown."""
+import random
+import sys
+
+import pytest
+
+from conftest import ROOT, SEED_INPUT
+from pulab.analyses.prove import prove
+
+sys.path.insert(0, str(ROOT / "tests/oracle"))
+import prove_oracle as po  # noqa: E402
+
+# Each input with a span of raw values small enough to enumerate (≤ 121 raw steps per input),
+# centred where the seed's code is at its limits (stores near 65535, m_BaseL near 0, …).
+PATHS = {
+    "motor.rated_voltage_v": [(5, 60), (6500, 6600), (14, 25), (300, 420)],
+    "motor.rated_current_a": [(0.5, 1.5), (69.0, 70.0), (125.0, 125.5), (1, 2)],
+    "drive.base_freq_hz": [(109.5, 110.5), (219.5, 220.5), (20, 21), (3000, 3001)],
+    "motor.rated_freq_hz": [(219.5, 220.5), (40, 41), (1000, 1001)],
+    "motor.rs_ohm": [(0.05, 0.15), (1.4, 1.5), (0.0001, 0.002)],
+    "motor.ld_h": [(5e-4, 8.5e-4), (1e-5, 3e-5)],
+    "motor.bemf_v": [(1, 10), (100, 110)],
+    "drive.udc_v": [(12, 22), (600, 610)],
+}
+CASES = 120
+
+
+def _boxes():
+    rng = random.Random(2026)
+    for _ in range(CASES):
+        paths = rng.sample(sorted(PATHS), rng.choice([1, 2, 2, 3]))
+        yield {p: list(rng.choice(PATHS[p])) for p in paths}
+
+
+def test_no_proven_verdict_is_contradicted_and_every_counterexample_fails():
+    tally = {"proven": 0, "violated": 0, "unknown": 0, "points": 0, "exact_range": 0}
+    for ranges in _boxes():
+        r = prove({"input": SEED_INPUT, "ranges": ranges})
+        box = po.raw_box(SEED_INPUT, ranges)
+        assert r["raw_box"] == {k: list(v) for k, v in box.items()}, ranges
+        for name in po.READS:
+            e = r["integers"][f"vendor.{name}"]
+            truth = po.enumerate_box(name, box, po.dimensions(SEED_INPUT, ranges))
+            tally[e["verdict"]] += 1
+            tally["points"] += truth["points"]
+            where = (name, ranges)
+            if e["verdict"] == "proven":
+                assert truth["fails"] == 0, (where, truth["first_fail"])
+                assert e["range"][0] <= truth["min"] and truth["max"] <= e["range"][1], where
+                tally["exact_range"] += e["range"] == [truth["min"], truth["max"]]
+            elif e["verdict"] == "violated":
+                ce = e["counterexample"]
+                for path, (lo, hi) in ranges.items():
+                    sec, key = path.split(".")
+                    assert lo <= ce[sec][key] <= hi, where
+                assert po.fails_at(name, po.raw_point(ce)), where
+            else:
+                pytest.fail(f"unknown on a small box: {where}")
+    print(tally)
+    # The cases must exercise both verdicts, or the test proves nothing.
+    assert tally["proven"] > 100 and tally["violated"] > 50
+
+
+def test_raw_parameters_agree_with_the_oracle_mapping():
+    ranges = {"motor.rated_current_a": [600, 700], "motor.rs_ohm": [0.5, 70]}
+    r = prove({"input": SEED_INPUT, "ranges": ranges})
+    box = po.raw_box(SEED_INPUT, ranges)
+    for name in ("Current", "RsPm"):
+        e = r["integers"][f"raw.{name}"]
+        assert e["range"] == list(box[name])
+        assert e["verdict"] == ("violated" if box[name][1] > 0xFFFF else "proven")
+        if e["verdict"] == "violated":
+            assert po.raw_point(e["counterexample"])[name] > 0xFFFF
