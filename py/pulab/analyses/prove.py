@@ -370,6 +370,7 @@ def _prove_vendor(problem: Problem, name: str):
                 inp = counterexample(problem, pt)
                 if inp is not None and _reproduces(inp, name):
                     return _entry("violated", rng, word, proven_volume / total, worst,
+                                  boxes=evaluated,
                                   kind=got[0], statement=got[3],
                                   raw={k: pt[k] for k in VENDOR_READS[name]},
                                   counterexample=inp)
@@ -382,8 +383,8 @@ def _prove_vendor(problem: Problem, name: str):
             heapq.heappush(heap, (-_volume(half, dims), order, half))
             order += 1
     if not heap and proven_volume == total:
-        return _entry("proven", rng, word, 1.0, worst)
-    return _entry("unknown", rng, word, proven_volume / total, worst)
+        return _entry("proven", rng, word, 1.0, worst, boxes=evaluated)
+    return _entry("unknown", rng, word, proven_volume / total, worst, boxes=evaluated)
 
 
 def _worse(worst, got, pt):

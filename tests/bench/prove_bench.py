@@ -1,0 +1,76 @@
+"""Benchmark of family proofs: 6-dimensional boxes over the seed's Inovance code, medians
+printed (numbers, not tests).
+
+    PYTHONPATH=py python3 tests/bench/prove_bench.py
+
+``tests/bench/prove.bench.ts`` runs :func:`prove_timing` of this file in Pyodide/Node.
+Target: a 6-dimensional box decided (every integer proven or violated) in ≤ 2 s in CPython
+and ≤ 10 s in Pyodide.
+"""
+
+from __future__ import annotations
+
+import os
+import statistics
+import time
+
+SEED = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
+                  "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
+        "drive": {"udc_v": 24, "ts_s": 1e-4}}
+SERVO = {"motor": {"rated_voltage_v": 220, "rated_current_a": 5, "rated_freq_hz": 200,
+                   "rs_ohm": 1.5, "ld_h": 6e-3, "lq_h": 6e-3, "bemf_v": 150, "pole_pairs": 4},
+         "drive": {"udc_v": 310, "ts_s": 1e-4, "base_freq_hz": 250}}
+BOXES = {
+    # A 220 V servo range: every integer proven.
+    "servo 6-D (V, I, f_n, R, L_d, E)": (SERVO, {
+        "motor.rated_voltage_v": [180, 240], "motor.rated_current_a": [1, 10],
+        "motor.rated_freq_hz": [100, 250], "motor.rs_ohm": [0.3, 10],
+        "motor.ld_h": [2e-3, 40e-3], "motor.bemf_v": [60, 220]}),
+    # The seed's 24 V motor widened: FluxRotor breaks only inside the box (f_b just below
+    # f_n/2 wraps FreqPer), found by splitting.
+    "seed 6-D (V, I, f_b, R, E, U_dc)": (SEED, {
+        "motor.rated_voltage_v": [12, 48], "motor.rated_current_a": [0.5, 5],
+        "drive.base_freq_hz": [101.9, 348], "motor.rs_ohm": [0.1, 3],
+        "motor.bemf_v": [5, 30], "drive.udc_v": [12, 60]}),
+    "seed 6-D (V, I, f_b, f_n, E, U_dc)": (SEED, {
+        "motor.rated_voltage_v": [12, 48], "motor.rated_current_a": [0.5, 5],
+        "drive.base_freq_hz": [100, 348], "motor.rated_freq_hz": [100, 300],
+        "motor.bemf_v": [5, 30], "drive.udc_v": [12, 60]}),
+}
+
+
+def prove_timing(repeat: int = 7) -> dict:
+    """{name: (wall median s, CPU median s, verdict, decided, boxes)} for :data:`BOXES`."""
+    from pulab.analyses.prove import prove
+    out = {}
+    for name, (inp, ranges) in BOXES.items():
+        req = {"input": inp, "ranges": ranges}
+        r = prove(req)  # warm-up (lazy imports)
+        wall, cpu = [], []
+        for _ in range(repeat):
+            t0, c0 = time.perf_counter(), time.process_time()
+            prove(req)
+            wall.append(time.perf_counter() - t0)
+            cpu.append(time.process_time() - c0)
+        decided = all(e["verdict"] != "unknown" for e in r["integers"].values())
+        boxes = sum(e.get("boxes", 0) for e in r["integers"].values())
+        out[name] = (statistics.median(wall), statistics.median(cpu), r["verdict"], decided, boxes)
+    return out
+
+
+def format_proofs(t: dict, runtime: str, target: str) -> str:
+    load = os.getloadavg() if hasattr(os, "getloadavg") else None
+    lines = [f"  {name}: median {w:.3f} s wall, {c:.3f} s CPU; {v}, "
+             f"{'every integer decided' if d else 'SOME UNKNOWN'}, {b} boxes (target {target})"
+             for name, (w, c, v, d, b) in t.items()]
+    if load is not None:
+        lines.append(f"  machine load (1/5/15 min): {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} "
+                     f"on {os.cpu_count()} cores")
+    return "\n".join(lines)
+
+
+if __name__ == "__main__":
+    import platform
+    runtime = f"CPython {platform.python_version()}"
+    print(f"family proof benchmark ({runtime}):")
+    print(format_proofs(prove_timing(), runtime, "≤ 2 s"))
