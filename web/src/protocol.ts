@@ -13,6 +13,7 @@ export const API_FUNCTIONS = {
   sweep: 'sweep_json', batch: 'batch_json',
   trace: 'trace_json',
   traceExamples: 'trace_examples_json',
+  prove: 'prove_json',
 } as const;
 export type ApiKind = keyof typeof API_FUNCTIONS;
 
@@ -22,7 +23,7 @@ export type ApiKind = keyof typeof API_FUNCTIONS;
  * such a kind on a channel runs slice by slice, and a newer call on its channel cancels it
  * (`superseded`) between two slices.
  */
-export const STEPPED_FUNCTIONS = { report: 'run_json_steps' } as const satisfies Partial<Record<ApiKind, string>>;
+export const STEPPED_FUNCTIONS = { report: 'run_json_steps', prove: 'prove_json_steps' } as const satisfies Partial<Record<ApiKind, string>>;
 export type SteppedKind = keyof typeof STEPPED_FUNCTIONS;
 
 /**

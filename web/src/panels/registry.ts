@@ -14,6 +14,7 @@ import { qcalcPanel } from './qcalc';
 import { codePanel } from './code';
 import { conventionsPanel } from './conventions';
 import { sweepPanel } from './sweep';
+import { provePanel } from './prove';
 import { batchPanel } from './batch';
 import { vendorsPanel } from './vendors';
 import { docsPanel, setPanelRegistry } from './docs';
@@ -32,6 +33,7 @@ export const PANELS: Panel[] = [
   codePanel,
   conventionsPanel,
   sweepPanel,
+  provePanel,
   batchPanel,
   vendorsPanel,
   docsPanel, // last: the explainer chapters

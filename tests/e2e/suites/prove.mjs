@@ -1,0 +1,106 @@
+// The Prove view: a proof over a range of the seed motor's current shows the same verdicts and
+// proven ranges as CPython's `pulab prove`; a counterexample opens as the page input and breaks
+// the integer there; cancel stops the job; a bad range is reported at its row; screenshots.
+import { execFileSync } from 'node:child_process';
+import { join } from 'node:path';
+
+export default async function prove(ctx) {
+  const { check, assert, newPage, subSrv, ready, waitValue, golden, ROOT, SHOTS } = ctx;
+  const seed = golden('01_seed_motor.json');
+  const py = (args, input) => {
+    try {
+      return execFileSync('python3', ['-m', 'pulab', ...args], {
+        cwd: ROOT, env: { ...process.env, PYTHONPATH: join(ROOT, 'py') }, input, maxBuffer: 64 << 20,
+      }).toString();
+    } catch (e) {
+      if (e.status === 1) return e.stdout.toString(); // violated or unknown: the JSON is still there
+      throw e;
+    }
+  };
+  const page = await newPage();
+  const setRows = async (rows) => {
+    // Remove down to one row, add as needed, then fill.
+    while ((await page.$$('.pr-range')).length > 1) await page.click('.pr-range button.pr-remove');
+    for (let i = 1; i < rows.length; i++) await page.click('button.pr-add');
+    for (const [i, [path, lo, hi]] of rows.entries()) {
+      await page.selectOption(`select[name="prove.ranges.${i}.path"]`, path);
+      await page.fill(`input[name="prove.ranges.${i}.lo"]`, String(lo));
+      await page.fill(`input[name="prove.ranges.${i}.hi"]`, String(hi));
+    }
+  };
+  const runProof = async () => {
+    await page.evaluate(() => delete document.documentElement.dataset.proveDone);
+    await page.click('button.run-prove');
+    await page.waitForFunction(() => document.documentElement.dataset.proveDone !== undefined, null, { timeout: 60_000 });
+  };
+  const rows = [['motor.rated_current_a', 1, 100], ['drive.base_freq_hz', 150, 300]];
+
+  await check('prove: verdicts and proven ranges equal CPython\'s pulab prove', async () => {
+    await page.goto(subSrv.url);
+    await ready(page);
+    await page.$eval('#panel-prove', (e) => e.scrollIntoView());
+    await setRows(rows);
+    await runProof();
+    const want = JSON.parse(py(['prove', '-', ...rows.flatMap(([p, a, b]) => ['--range', `${p}=${a}:${b}`])], JSON.stringify(seed.input)));
+    assert(await page.evaluate(() => document.documentElement.dataset.proveDone) === want.verdict, 'overall verdict');
+    for (const [name, e] of Object.entries(want.integers)) {
+      const shown = await page.$eval(`[data-verdict-for="${name}"]`, (el) => el.textContent);
+      const verdict = await page.$eval(`[data-verdict-for="${name}"]`, (el) => el.className.match(/pr-(\w+)/)[1]);
+      assert(verdict === e.verdict, `${name}: page ${verdict} (${shown}), CPython ${e.verdict}`);
+      if (e.range) {
+        const lo = await page.$eval(`[data-key="prove.integers.${name}.range.0"]`, (el) => JSON.parse(el.dataset.value));
+        const hi = await page.$eval(`[data-key="prove.integers.${name}.range.1"]`, (el) => JSON.parse(el.dataset.value));
+        assert(lo === e.range[0] && hi === e.range[1], `${name}: page [${lo}, ${hi}], CPython ${e.range}`);
+      }
+    }
+    assert(want.integers['vendor.LD'].verdict === 'violated', 'the box must break LD for the next check');
+    await page.$eval('.prove-table', (e) => e.scrollIntoView());
+    await page.screenshot({ path: join(SHOTS, 'prove-table.png') });
+  });
+
+  await check('prove: a counterexample opens as the page input, where LD breaks', async () => {
+    const ce = JSON.parse(await page.$eval('a[data-open-ce="vendor.LD"]', (a) => decodeURIComponent(a.getAttribute('href').replace(/^#in=/, ''))));
+    await page.click('a[data-open-ce="vendor.LD"]');
+    await page.waitForFunction((v) => Number(document.querySelector('input[name="motor.rated_current_a"]')?.value) === v, ce.motor.rated_current_a, { timeout: 20_000 });
+    const want = JSON.parse(py(['report', '-'], JSON.stringify(ce)));
+    if (want.vendor.LD) await waitValue(page, 'vendor.LD.value', want.vendor.LD.value, 0, 20_000);
+    assert(!want.vendor.LD || want.vendor.LD.flags.includes('store') || want.vendor.LD.flags.includes('wrap') || want.vendor.LD.value === 0, `LD of the counterexample: ${JSON.stringify(want.vendor.LD)}`);
+  });
+
+  await check('prove: cancel stops between integers; a bad range is reported at its row', async () => {
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(seed.input))}`);
+    await ready(page);
+    await page.$eval('#panel-prove', (e) => e.scrollIntoView());
+    await setRows(rows);
+    await page.evaluate(() => {
+      delete document.documentElement.dataset.proveDone;
+      document.querySelector('button.run-prove').click();
+      document.querySelector('button.cancel-prove').click();
+    });
+    await page.waitForFunction(() => document.documentElement.dataset.proveDone === 'cancelled', null, { timeout: 30_000 });
+    const note = await page.$eval('.prove-note', (e) => e.textContent);
+    assert(/Cancelled after \d+ of 16/.test(note), `note: ${note}`);
+    await setRows([['motor.rated_current_a', 5, 2]]);
+    await page.click('button.run-prove');
+    await page.waitForFunction(() => document.querySelector('[data-err-for="prove.ranges.motor.rated_current_a"]')?.textContent, null, { timeout: 30_000 });
+    const err = await page.$eval('[data-err-for="prove.ranges.motor.rated_current_a"]', (e) => e.textContent);
+    assert(err.includes('lo must be ≤ hi'), `error: ${err}`);
+  });
+
+  await check('prove: screenshots at 390/900/1366 px, zh and en', async () => {
+    await setRows(rows);
+    await runProof();
+    for (const lang of ['en', 'zh']) {
+      for (const w of [390, 900, 1366]) {
+        await page.setViewportSize({ width: w, height: 900 });
+        await page.click(`button[data-lang="${lang}"]`);
+        await page.$eval('#panel-prove', (e) => e.scrollIntoView());
+        await page.waitForTimeout(200);
+        await page.screenshot({ path: join(SHOTS, `prove-${lang}-${w}.png`) });
+      }
+    }
+    const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
+    assert(overflow <= 1, `page scrolls sideways by ${overflow} px`);
+  });
+  await page.context().close();
+}

@@ -1,0 +1,183 @@
+// The Prove panel: ranges of inputs of the current motor, and for every firmware integer a verdict
+// over the whole box (pulab.analyses.prove) — proven with its range drawn against its C word, or
+// violated with a motor that opens as the page input. Computed integer by integer in the worker,
+// with progress and cancel.
+import { h, num, table } from '../dom';
+import { effectiveInput } from '../fields';
+import { errText, getLang, t, type Key } from '../i18n';
+import { encodeHash, getPath, type Input } from '../state';
+import type { ApiErr } from '../protocol';
+import type { Panel, PanelContext } from './panel';
+import { sweepPaths } from './sweep';
+
+type Verdict = 'proven' | 'violated' | 'unknown';
+type Kind = 'wrap' | 'store' | 'div0' | 'zero' | 'outside';
+
+/** One integer's entry (docs/contract.md, "Family proof"). */
+interface Entry {
+  verdict: Verdict;
+  range: [number, number] | null;
+  type: string | null;
+  word: [number, number] | null;
+  proven_fraction: number;
+  worst_error_pct: number | null;
+  error_bound: boolean;
+  kind?: Kind;
+  statement?: string;
+  raw?: Record<string, number>;
+  counterexample?: Input;
+}
+
+interface Proof {
+  verdict: Verdict;
+  integers: Record<string, Entry>;
+  not_analysed: string[];
+}
+
+interface RangeRow { path: string; lo: string; hi: string }
+
+interface Job { cancelled: boolean }
+
+const st = {
+  rows: null as RangeRow[] | null,
+  job: null as Job | null,
+  names: [] as string[],
+  entries: {} as Record<string, Entry>,
+  proof: null as Proof | null,
+  error: null as ApiErr | null,
+  note: null as null | { key: Key; vars: Record<string, string | number> },
+};
+
+/** The channel of this panel's calls: the worker runs them slice by slice. */
+const CHANNEL = 'prove';
+
+function defaultRow(ctx: PanelContext, path: string, lo: number, hi: number): RangeRow {
+  const v = Number(getPath(ctx.report?.input, path) ?? getPath(ctx.input, path) ?? 1);
+  const fmt = (x: number) => String(Number(x.toPrecision(3)));
+  return { path, lo: fmt(v * lo), hi: fmt(v * hi) };
+}
+
+function request(input: Input): Record<string, unknown> {
+  const ranges: Record<string, [number, number]> = {};
+  for (const r of st.rows ?? []) ranges[r.path] = [Number(r.lo), Number(r.hi)];
+  return { input, ranges };
+}
+
+async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
+  if (!ctx.client) return;
+  const client = ctx.client;
+  const req = request(effectiveInput(ctx.input));
+  const job: Job = { cancelled: false };
+  Object.assign(st, { job, names: [], entries: {}, proof: null, error: null, note: null });
+  delete document.documentElement.dataset.proveDone;
+  provePanel.render(el, ctx);
+  const t0 = performance.now();
+  const fail = (e: ApiErr) => {
+    Object.assign(st, { job: null, error: e });
+    provePanel.render(el, ctx);
+  };
+  const plan = await client.call('prove', { ...req, op: 'plan' }, CHANNEL);
+  if (!plan.result.ok) return fail(plan.result);
+  st.names = (plan.result.plan as unknown as { names: string[] }).names;
+  provePanel.render(el, ctx);
+  for (const name of st.names) {
+    if (job.cancelled) break;
+    const r = await client.call('prove', { ...req, op: 'integer', name }, CHANNEL);
+    if (!r.result.ok) return fail(r.result);
+    st.entries[name] = r.result.integer as unknown as Entry;
+    provePanel.render(el, ctx);
+  }
+  const done = Object.keys(st.entries).length;
+  if (done === st.names.length) {
+    const s = await client.call('prove', { ...req, op: 'summary', integers: st.entries }, CHANNEL);
+    if (!s.result.ok) return fail(s.result);
+    st.proof = s.result.proof as unknown as Proof;
+    st.note = { key: 'prDone', vars: { n: done, s: ((performance.now() - t0) / 1000).toFixed(2) } };
+  } else {
+    st.note = { key: 'prCancelled', vars: { done, total: st.names.length } };
+  }
+  st.job = null;
+  document.documentElement.dataset.proveDone = st.proof?.verdict ?? 'cancelled';
+  provePanel.render(el, ctx);
+}
+
+const chip = (v: Verdict, name: string) => h('span', { class: `flag pr-${v}`, 'data-verdict-for': name }, t(`v_${v}` as Key));
+
+/** The proven range as a bar inside the word's limits (linear; a sliver at least, so it shows). */
+function bar(e: Entry): HTMLElement | null {
+  if (!e.range || !e.word) return null;
+  const [w0, w1] = e.word;
+  const span = w1 - w0;
+  const left = ((e.range[0] - w0) / span) * 100;
+  const width = Math.max(0.6, ((e.range[1] - e.range[0]) / span) * 100);
+  return h('div', { class: 'pr-bar', title: `${e.type} [${w0}, ${w1}]` },
+    h('span', { class: `pr-fill pr-${e.verdict}`, style: `left:${Math.min(left, 99.4)}%;width:${Math.min(width, 100 - Math.min(left, 99.4))}%` }));
+}
+
+function row(name: string, e: Entry | undefined): HTMLElement {
+  if (!e) return h('tr', { class: 'pending' }, h('td', {}, h('code', {}, name)), h('td', { colspan: 5 }, '…'));
+  const key = `prove.integers.${name}`;
+  const why = e.verdict === 'violated'
+    ? h('div', {}, `${t(`k_${e.kind}` as Key)}: `, h('code', {}, e.statement ?? ''),
+      e.raw ? h('div', { class: 'hint' }, Object.entries(e.raw).map(([k, v]) => `${k} = ${v}`).join(', ')) : null,
+      e.counterexample ? h('a', { href: encodeHash(e.counterexample), class: 'open-motor', 'data-open-ce': name }, t('prOpen')) : null)
+    : e.verdict === 'unknown' ? t('prUnknownShare', { pct: (100 * e.proven_fraction).toFixed(1) }) : '';
+  return h('tr', { class: e.verdict === 'proven' ? '' : 'bad' },
+    h('td', {}, h('code', {}, name)),
+    h('td', {}, chip(e.verdict, name)),
+    h('td', { class: 'r' }, e.range ? h('span', {}, '[', num(`${key}.range.0`, e.range[0], { kind: 'int' }), ', ', num(`${key}.range.1`, e.range[1], { kind: 'int' }), ']') : '—'),
+    h('td', { class: 'pr-bar-cell' }, bar(e)),
+    h('td', { class: 'r' }, e.worst_error_pct === null ? '—' : h('span', {}, e.error_bound ? '≤ ' : '', num(`${key}.worst_error_pct`, e.worst_error_pct, { kind: 'pct' }))),
+    h('td', { class: 'pr-why' }, why));
+}
+
+function rangeRows(el: HTMLElement, ctx: PanelContext): HTMLElement {
+  const rows = st.rows as RangeRow[];
+  const paths = sweepPaths(ctx.input);
+  const err = (path: string) => (st.error && st.error.field === `prove.ranges.${path}` ? errText(st.error) : '');
+  return h('div', { class: 'pr-ranges' }, rows.map((r, i) => {
+    const set = (k: keyof RangeRow) => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; };
+    return h('div', { class: 'pr-range' },
+      h('select', { name: `prove.ranges.${i}.path`, 'aria-label': t('prPath'), onchange: (ev: Event) => { r.path = (ev.target as HTMLSelectElement).value; } },
+        paths.map((p) => h('option', { value: p, selected: p === r.path }, p))),
+      h('label', {}, t('prLo'), ' ', h('input', { name: `prove.ranges.${i}.lo`, value: r.lo, inputmode: 'decimal', oninput: set('lo') })),
+      h('label', {}, t('prHi'), ' ', h('input', { name: `prove.ranges.${i}.hi`, value: r.hi, inputmode: 'decimal', oninput: set('hi') })),
+      h('button', { type: 'button', class: 'pr-remove', disabled: rows.length < 2, onclick: () => { rows.splice(i, 1); provePanel.render(el, ctx); } }, t('prRemove')),
+      h('span', { class: 'err', 'data-err-for': `prove.ranges.${r.path}` }, err(r.path)));
+  }), h('button', { type: 'button', class: 'pr-add', onclick: () => {
+    const used = new Set(rows.map((r) => r.path));
+    rows.push(defaultRow(ctx, paths.find((p) => !used.has(p)) ?? paths[0], 0.5, 2));
+    provePanel.render(el, ctx);
+  } }, t('prAdd')));
+}
+
+export const provePanel: Panel = {
+  id: 'prove',
+  title: 'p_prove',
+  needsPython: true,
+  render(el, ctx) {
+    if (!st.rows) st.rows = [defaultRow(ctx, 'motor.rated_current_a', 0.5, 2), defaultRow(ctx, 'motor.rated_voltage_v', 0.5, 2)];
+    // Typing in the motor re-renders every panel; this one is rebuilt only for its own state.
+    const key = [getLang(), !!ctx.client, !!st.job, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
+    if (el.querySelector('.prove') && el.dataset.rendered === key) return;
+    const running = st.job !== null;
+    const done = Object.keys(st.entries).length;
+    const otherErr = st.error && !st.error.field.startsWith('prove.ranges.') ? `${st.error.field}: ${errText(st.error)}` : null;
+    el.replaceChildren(h('div', { class: 'prove' },
+      h('p', { class: 'hint' }, t('prIntro')),
+      rangeRows(el, ctx),
+      h('div', { class: 'sweep-run' },
+        h('button', { type: 'button', class: 'run-prove', disabled: running || !ctx.client, onclick: () => void run(el, ctx) }, t('prRun')),
+        h('button', { type: 'button', class: 'cancel-prove', disabled: !running, onclick: () => { if (st.job) st.job.cancelled = true; } }, t('prCancel')),
+        h('progress', { class: 'prove-progress', max: Math.max(1, st.names.length), value: done }),
+        h('span', { class: 'prove-count' }, st.names.length ? `${done} / ${st.names.length}` : ''),
+        h('span', { class: 'hint prove-note' }, st.note ? t(st.note.key, st.note.vars) : '')),
+      otherErr ? h('p', { class: 'err' }, otherErr) : null,
+      st.proof ? h('p', { class: `pr-overall pr-${st.proof.verdict}`, 'data-verdict': st.proof.verdict }, t('prOverall', { verdict: t(`v_${st.proof.verdict}` as Key) })) : null,
+      st.names.length ? h('div', { class: 'scroll' }, table([t('prInteger'), t('prVerdict'), t('prRange'), t('prBar'), t('prWorst'), t('prWhere')],
+        st.names.map((n) => row(n, st.entries[n])), 'prove-table')) : null,
+      st.names.length ? h('p', { class: 'hint' }, t('prWorstHint')) : null,
+      st.proof?.not_analysed.length ? h('p', { class: 'hint' }, t('prNotAnalysed', { names: st.proof.not_analysed.join(', ') })) : null));
+    el.dataset.rendered = key;
+  },
+};
