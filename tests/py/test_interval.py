@@ -5,7 +5,7 @@ import random
 import pytest
 
 from pulab.fixedpoint.cint import INT16, INT32, UINT16, UINT32, CDivisionByZero, CInt
-from pulab.fixedpoint.interval import ICInt
+from pulab.fixedpoint.interval import ICInt, RInterval, Undecided
 
 TYPES = (INT16, UINT16, INT32, UINT32)
 OPS = {"*": lambda a, b: a * b, "+": lambda a, b: a + b, "-": lambda a, b: a - b,
@@ -77,3 +77,27 @@ def test_read_back_keeps_only_a_possible_division_by_zero():
     q = ICInt(10, 20, UINT16) // ICInt(0, 2, UINT16)
     assert q.flags == {"div0", "truncation"} and q.clean().flags == {"div0"}
     assert CInt(3, UINT16).clean().flags == frozenset()
+
+
+def test_real_intervals_enclose_the_doubles_the_concrete_code_computes():
+    rng = random.Random(7)
+    ops = {"+": lambda a, b: a + b, "-": lambda a, b: a - b, "*": lambda a, b: a * b,
+           "/": lambda a, b: a / b}
+    for _ in range(2000):
+        a0 = rng.uniform(-1e3, 1e3)
+        b0 = rng.uniform(0.1, 1e3) * rng.choice([-1, 1])
+        a = RInterval(a0, a0 + abs(a0) * rng.choice([0, 1e-15, 1e-3, 1.0]))
+        b = RInterval(b0, b0 + abs(b0) * rng.choice([0, 1e-15, 1e-3, 0.5]))
+        for op, f in ops.items():
+            got = f(a, b)
+            for x in (a.lo, a.hi, (a.lo + a.hi) / 2):
+                for y in (b.lo, b.hi, (b.lo + b.hi) / 2):
+                    assert got.lo <= f(x, y) <= got.hi, (op, a, b, x, y)
+    assert (3.0 * RInterval(1.0, 2.0) - 1.0) > 1.9
+    with pytest.raises(Undecided):
+        RInterval(-1.0, 1.0) > 0
+    with pytest.raises(Undecided):
+        bool(RInterval(0.0, 1.0))
+    with pytest.raises(Undecided):
+        RInterval(1.0, 2.0) / RInterval(-1.0, 1.0)
+    assert RInterval(-2.5, 2.5).round_half_away().value == (-3, 3)

@@ -1,6 +1,7 @@
 """Family proofs against exhaustive enumeration (tests/oracle/prove_oracle.py, never imports
 pulab): no "proven" contradicted, every range encloses every value, every counterexample
 fails in the oracle too, and no small box is left unknown."""
+import itertools
 import random
 import sys
 
@@ -10,6 +11,7 @@ from conftest import ROOT, SEED_INPUT
 from pulab.analyses.prove import prove
 
 sys.path.insert(0, str(ROOT / "tests/oracle"))
+import oracle  # noqa: E402
 import prove_oracle as po  # noqa: E402
 
 # Each input with a span of raw values small enough to enumerate (≤ 121 raw steps per input),
@@ -73,3 +75,66 @@ def test_raw_parameters_agree_with_the_oracle_mapping():
         assert e["verdict"] == ("violated" if box[name][1] > 0xFFFF else "proven")
         if e["verdict"] == "violated":
             assert po.raw_point(e["counterexample"])[name] > 0xFFFF
+
+
+# The current-PI integers are designed in floating point: a dense oracle (tests/oracle/oracle.py's
+# seed 2.2-9 formulas, its own parse and bases) on a grid of every box, ends included.
+PI_BOXES = [
+    ({}, {"motor.rs_ohm": [0.001, 0.05], "drive.ts_s": [1e-6, 1e-5]}),           # pm_ki → 0
+    ({}, {"current_loop.bandwidth_hz": [1000, 5000], "motor.ld_h": [0.1, 1],
+          "motor.rated_current_a": [50, 200]}),                                   # beyond int32
+    ({}, {"motor.rated_current_a": [0.5, 10], "motor.ld_h": [1e-4, 1e-2]}),      # proven
+    ({}, {"current_loop.bandwidth_hz": [10, 50], "motor.ld_h": [1e-6, 1e-5],
+          "motor.rated_voltage_v": [100, 400]}),                                  # pm_kp → 0
+    ({"current_loop": {"method": "damping", "bandwidth_hz": 300}},
+     {"motor.rs_ohm": [0.5, 3], "motor.lq_h": [2e-4, 8e-4]}),                     # kp ≤ 0: refused
+    ({}, {"drive.ts_s": [5e-5, 2e-4], "current_loop.bandwidth_hz": [200, 2000],
+          "motor.rated_voltage_v": [12, 48]}),                                    # proven
+]
+
+
+def _oracle_pi(inp):
+    """{name: value} of the four PI integers, or the oracle's refusal as a string."""
+    try:
+        p = oracle.parse(inp)
+        g = oracle.current_pi(p, oracle.bases(p))
+    except oracle.OracleInputError as e:
+        return f"{e.field}: {e.message}"
+    return {f"current_pi.{a}.{k}": g[a][k] for a in ("d", "q") for k in ("pm_kp", "pm_ki")}
+
+
+def _grid(ranges, n=7):
+    axes = [[lo + (hi - lo) * k / (n - 1) for k in range(n)] for lo, hi in ranges.values()]
+    for values in itertools.product(*axes):
+        yield dict(zip(ranges, values))
+
+
+def _at(base, point):
+    inp = {s: dict(v) for s, v in base.items()}
+    for path, v in point.items():
+        sec, key = path.split(".")
+        inp.setdefault(sec, {})[key] = v
+    return inp
+
+
+@pytest.mark.parametrize("extra, ranges", PI_BOXES)
+def test_pi_integers_agree_with_a_dense_oracle(extra, ranges):
+    base = {**SEED_INPUT, **extra}
+    r = prove({"input": base, "ranges": ranges})
+    truth = [_oracle_pi(_at(base, pt)) for pt in _grid(ranges)]
+    for name in ("current_pi.d.pm_kp", "current_pi.d.pm_ki", "current_pi.q.pm_kp",
+                 "current_pi.q.pm_ki"):
+        e = r["integers"][name]
+        assert e["verdict"] != "unknown", name
+        if e["verdict"] == "proven":
+            for t in truth:
+                assert isinstance(t, dict), (name, t)
+                assert t[name] != 0 and e["range"][0] <= t[name] <= e["range"][1], (name, t)
+        else:
+            ce = _oracle_pi(e["counterexample"])
+            assert isinstance(ce, str) or ce[name] == 0, (name, ce)
+            for path, (lo, hi) in ranges.items():
+                sec, key = path.split(".")
+                assert lo <= e["counterexample"][sec][key] <= hi
+    verdicts = {r["integers"][n]["verdict"] for n in r["integers"] if n.startswith("current_pi")}
+    assert verdicts <= {"proven", "violated"}

@@ -26,8 +26,11 @@ concretely (a failure there is the counterexample), and else it is split in two
 along its relatively widest raw input.  A box of one raw point is evaluated
 exactly, so the split ends.
 
-Not analysed here: the current-PI integers ``pm_kp``/``pm_ki`` (floating-point
-design formulas, not this integer code) — they are listed in ``not_analysed``.
+The current-PI integers ``pm_kp``/``pm_ki`` (seed 2.2-9) are designed in floating
+point: the report's design code runs over intervals of the ranged inputs themselves
+(:class:`~pulab.fixedpoint.interval.RInterval`, rounded outward so that it encloses the
+double the code computes), a branch or comparison that differs inside a box splits it,
+and the rounding to the integer is monotone.
 
 Examples
 --------
@@ -50,7 +53,7 @@ import heapq
 import math
 
 from ..fixedpoint.cint import UINT16, CDivisionByZero
-from ..fixedpoint.interval import ICInt
+from ..fixedpoint.interval import ICInt, RInterval, Undecided
 from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR_READS,
                                       VENDOR_RESULTS, Block, raw_source, raw_value)
 from ..schema.errors import InputError
@@ -65,9 +68,10 @@ __all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "
            "DEFAULT_BUDGET", "MAX_BUDGET"]
 
 VERDICTS = ("proven", "violated", "unknown")
-#: What breaks an integer: wrapped mid-way, changed by its Uint16 store, divided by zero,
-#: zero (all resolution lost), or a raw parameter the Uint16 cannot hold.
-KINDS = ("wrap", "store", "div0", "zero", "outside")
+#: What breaks an integer: wrapped mid-way (a PI gain: beyond long, which the report refuses),
+#: changed by its Uint16 store, divided by zero, zero (all resolution lost), a raw parameter
+#: the Uint16 cannot hold, or a PI design the report refuses (damping with kp ≤ 0).
+KINDS = ("wrap", "store", "div0", "zero", "outside", "invalid")
 #: Interval evaluations (boxes) allowed per integer.
 DEFAULT_BUDGET = 4000
 MAX_BUDGET = 1_000_000
@@ -96,6 +100,7 @@ class Problem:
                  ties: dict, budget: int) -> None:
         self.input, self.ranges, self.unit = inp, ranges, unit
         self.box, self.sources, self.ties, self.budget = box, sources, ties, budget
+        self.normalized = normalize(inp)
 
 
 def _numeric_path(path, field: str) -> str:
@@ -430,13 +435,130 @@ def _prove_raw(problem: Problem, name: str) -> dict:
     return out
 
 
+def _pi_at(n: dict, name: str):
+    """One current-PI integer of a normalized input whose values may be intervals: the
+    report's own design code (``current_pi_section``), run once more."""
+    from ..report import current_pi_section, input_bases
+    _, axis, key = name.split(".")
+    return current_pi_section(n, input_bases(n))[axis][key]
+
+
+def _pi_input(problem: Problem, box: dict) -> dict:
+    """The normalized base input with each ranged input an interval (a point where the
+    box is flat: a point evaluates exactly)."""
+    n = {s: dict(v) if isinstance(v, dict) else v for s, v in problem.normalized.items()}
+    for path, (lo, hi) in box.items():
+        sec, key = path.split(".")
+        n[sec][key] = lo if lo == hi else RInterval(lo, hi)
+    if problem.ties:  # f_b follows a ranging f_n
+        n["drive"]["base_freq_hz"] = n["motor"]["rated_freq_hz"]
+    return n
+
+
+def _pi_enclose(problem: Problem, name: str, box: dict) -> tuple:
+    """(kinds, (lo, hi)) of a current-PI integer over an SI box; ``undecided`` when a branch
+    or comparison of the design code differs inside the box."""
+    try:
+        v = _pi_at(_pi_input(problem, box), name)
+    except Undecided:
+        return {"undecided"}, None
+    except InputError as e:  # raised only when every point of the box fails the same way
+        return {"wrap" if e.code == "long_overflow" else "invalid"}, None
+    lo, hi = v.value if isinstance(v, RInterval) else (v, v)
+    return ({"zero"} if lo <= 0 <= hi else set()), (lo, hi)
+
+
+def _pi_point(problem: Problem, name: str, pt: dict) -> tuple:
+    """(kind or None, value, error_pct, input) of a current-PI integer at an SI point."""
+    from ..model.gains import pi_integer_ideals
+    from ..report import current_pi_section, input_bases
+    inp = _with(problem.input, {p: (v, v) for p, v in pt.items()}, 0)
+    try:
+        n = normalize(inp)
+        _, axis, key = name.split(".")
+        g = current_pi_section(n, input_bases(n))[axis]
+    except InputError as e:
+        return ("wrap" if e.code == "long_overflow" else "invalid"), None, None, inp
+    ideal = dict(zip(("pm_kp", "pm_ki"), pi_integer_ideals(g["kp_pu"], g["ki_pu"],
+                                                           n["drive"]["ts_s"])))[key]
+    err = 0.0 if ideal == 0 else 100.0 * (g[key] - ideal) / ideal
+    return ("zero" if g[key] == 0 else None), g[key], err, inp
+
+
+def _pi_reproduces(inp: dict, name: str, kind: str) -> bool:
+    from ..report import report
+    _, axis, key = name.split(".")
+    try:
+        r = report(inp)
+    except InputError as e:
+        return kind in ("wrap", "invalid") and e.field.startswith("current_loop")
+    return kind == "zero" and r["current_pi"][axis][key] == 0
+
+
+#: Smallest share of the whole box a float box is split down to (about 2^-40 per input).
+_MIN_SHARE = 1e-12
+
+
+def _prove_pi(problem: Problem, name: str):
+    """Decide one current-PI integer over the SI box (a slice generator returning its entry).
+
+    The design is floating point, so the box is split in the ranged inputs themselves; a
+    box's corners (all of them up to 6 inputs) and centre are run concretely.
+    """
+    full = {p: r for p, r in problem.ranges.items()
+            if not p.startswith("raw.") and r[0] != r[1]}
+    dims = list(full)
+    heap = [(-1.0, 0, dict(full))]
+    order, evaluated, proven_share = 1, 0, 0.0
+    rng, worst = None, None
+    statement = f"{name.split('.')[-1]} = round(…) (seed 2.2-9)"
+    while heap and evaluated < problem.budget:
+        if evaluated and evaluated % _SLICE_BOXES == 0:
+            yield
+        neg_share, _, box = heapq.heappop(heap)
+        evaluated += 1
+        kinds, enc = _pi_enclose(problem, name, box)
+        if enc is not None:
+            rng = enc if rng is None else (min(rng[0], enc[0]), max(rng[1], enc[1]))
+        if not kinds:
+            proven_share += -neg_share
+            for end in (0, 1):
+                pt = {p: r[end] for p, r in box.items()}
+                worst = _worse(worst, _pi_point(problem, name, pt)[:3], pt)
+            continue
+        corners = [{}]
+        for p in dims if len(dims) <= 6 else ():
+            corners = [{**c, p: e} for c in corners for e in box[p]]
+        centre = {p: (lo + hi) / 2 for p, (lo, hi) in box.items()}
+        for pt in [{**{p: lo for p, (lo, _) in box.items()}, **c} for c in corners] + [centre]:
+            kind, value, err, inp = _pi_point(problem, name, pt)
+            if kind is not None and _pi_reproduces(inp, name, kind):
+                return _entry("violated", rng, "long", proven_share, worst, boxes=evaluated,
+                              kind=kind, statement=statement, raw={"value": value},
+                              counterexample=inp)
+            worst = _worse(worst, (kind, value, err), pt)
+        if -neg_share < _MIN_SHARE or not dims:
+            continue
+        p = max(dims, key=lambda q: (box[q][1] - box[q][0]) / (full[q][1] - full[q][0]))
+        lo, hi = box[p]
+        mid = lo + (hi - lo) / 2
+        for half in ((lo, mid), (mid, hi)):
+            heapq.heappush(heap, (neg_share / 2, order, {**box, p: half}))
+            order += 1
+    if not heap and proven_share >= 1.0 - 1e-9:
+        return _entry("proven", rng, "long", 1.0, worst, boxes=evaluated)
+    return _entry("unknown", rng, "long", min(proven_share, 1.0), worst, boxes=evaluated)
+
+
 def integer_names() -> tuple:
-    """The integers a proof decides, in report order (raw parameters, then vendor results).
+    """The integers a proof decides, in report order (raw parameters, vendor results, then
+    the current-PI gains).
 
     >>> integer_names()[-1]
-    'vendor.maxu'
+    'current_pi.q.pm_ki'
     """
-    return tuple(f"raw.{k}" for k in RAW_FIELDS) + tuple(f"vendor.{k}" for k in VENDOR_CODE)
+    return (tuple(f"raw.{k}" for k in RAW_FIELDS) + tuple(f"vendor.{k}" for k in VENDOR_CODE)
+            + _PI_NAMES)
 
 
 def integer_steps(problem: Problem, name: str):
@@ -453,7 +575,10 @@ def integer_steps(problem: Problem, name: str):
     section, _, key = name.partition(".")
     if section == "raw":
         return _prove_raw(problem, key)
-    entry = yield from _prove_vendor(problem, key)
+    if section == "current_pi":
+        entry = yield from _prove_pi(problem, name)
+    else:
+        entry = yield from _prove_vendor(problem, key)
     entry["error_bound"] = False
     return entry
 
@@ -467,7 +592,7 @@ def summary(problem: Problem, integers: dict) -> dict:
     out = {"verdict": verdict, "profile": "inovance",
            "ranges": {p: list(v) for p, v in problem.ranges.items()},
            "raw_box": {k: list(v) for k, v in problem.box.items()},
-           "integers": integers, "not_analysed": list(_PI_NAMES)}
+           "integers": integers, "not_analysed": []}
     if first is not None:
         out["counterexample"] = integers[first]["counterexample"]
         out["first_violated"] = first

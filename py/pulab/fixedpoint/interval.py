@@ -30,9 +30,11 @@ Examples
 
 from __future__ import annotations
 
+import math
+
 from .cint import CDivisionByZero, CInt, CType, _common, trunc_div, wrap_to
 
-__all__ = ["ICInt", "lift", "DIV0"]
+__all__ = ["ICInt", "lift", "DIV0", "RInterval", "Undecided"]
 
 _NO_FLAGS = frozenset()
 _WRAP = frozenset({"wrap"})
@@ -165,3 +167,120 @@ def _divide(a: ICInt, b: ICInt, t: CType, flags: frozenset) -> ICInt:
     if not (point and q[0] * b.lo == a.lo) and not (b.lo == b.hi == 1):
         flags = flags | _TRUNC
     return _fit(min(q), max(q), t, flags)
+
+
+class Undecided(ArithmeticError):
+    """A comparison or branch whose answer differs across a box: split the box and ask again."""
+
+
+def _down(x: float) -> float:
+    return math.nextafter(x, -math.inf)
+
+
+def _up(x: float) -> float:
+    return math.nextafter(x, math.inf)
+
+
+def _real(x) -> "RInterval":
+    return x if isinstance(x, RInterval) else RInterval(x, x)
+
+
+class RInterval:
+    """Every value a floating-point expression takes over a box: ``[lo, hi]``, rounded outward.
+
+    Each operation widens its result by one unit in the last place each way, so it holds the
+    exact real result and the correctly rounded double the concrete code computes (IEEE
+    arithmetic is monotone in each operand).  Constants (``math.pi``, ``SQRT3``) enter as
+    the same doubles the concrete code uses.  A comparison answers only when every point of
+    the box gives the same answer, and raises :class:`Undecided` otherwise; so does ``bool``.
+
+    Examples
+    --------
+    >>> x = RInterval(1.0, 2.0) * 3.0 + 1.0
+    >>> x.lo < 4.0 and x.hi > 7.0, x > 3.0
+    (True, True)
+    >>> RInterval(0.4, 0.6).round_half_away().value
+    (0, 1)
+    """
+
+    __slots__ = ("lo", "hi")
+
+    def __init__(self, lo, hi) -> None:
+        if not lo <= hi:
+            raise ValueError(f"[{lo}, {hi}] is not an interval")
+        self.lo, self.hi = lo, hi
+
+    def __repr__(self) -> str:
+        return f"RInterval({self.lo!r}, {self.hi!r})"
+
+    @property
+    def value(self) -> tuple:
+        return self.lo, self.hi
+
+    def _out(self, lo: float, hi: float) -> "RInterval":
+        return RInterval(_down(lo), _up(hi))
+
+    def __add__(self, o) -> "RInterval":
+        o = _real(o)
+        return self._out(self.lo + o.lo, self.hi + o.hi)
+
+    __radd__ = __add__
+
+    def __sub__(self, o) -> "RInterval":
+        o = _real(o)
+        return self._out(self.lo - o.hi, self.hi - o.lo)
+
+    def __rsub__(self, o) -> "RInterval":
+        return _real(o) - self
+
+    def __neg__(self) -> "RInterval":
+        return RInterval(-self.hi, -self.lo)
+
+    def __mul__(self, o) -> "RInterval":
+        o = _real(o)
+        c = (self.lo * o.lo, self.lo * o.hi, self.hi * o.lo, self.hi * o.hi)
+        return self._out(min(c), max(c))
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, o) -> "RInterval":
+        o = _real(o)
+        if o.lo <= 0 <= o.hi:
+            if o.lo == o.hi:
+                raise ZeroDivisionError("float division by zero")
+            raise Undecided("the divisor may be 0")
+        c = (self.lo / o.lo, self.lo / o.hi, self.hi / o.lo, self.hi / o.hi)
+        return self._out(min(c), max(c))
+
+    def __rtruediv__(self, o) -> "RInterval":
+        return _real(o) / self
+
+    def _compare(self, o, certainly_true: bool, certainly_false: bool) -> bool:
+        if certainly_true:
+            return True
+        if certainly_false:
+            return False
+        raise Undecided(f"{self!r} compared with {o!r}")
+
+    def __lt__(self, o) -> bool:
+        o = _real(o)
+        return self._compare(o, self.hi < o.lo, self.lo >= o.hi)
+
+    def __le__(self, o) -> bool:
+        o = _real(o)
+        return self._compare(o, self.hi <= o.lo, self.lo > o.hi)
+
+    def __gt__(self, o) -> bool:
+        return _real(o) < self
+
+    def __ge__(self, o) -> bool:
+        return _real(o) <= self
+
+    def __bool__(self) -> bool:
+        return self._compare(0, self.lo > 0 or self.hi < 0, self.lo == self.hi == 0)
+
+    def round_half_away(self) -> "RInterval":
+        """The integers ``round(x)`` (ties away from zero) takes: monotone, so the ends'."""
+        def r(x: float) -> int:
+            return int(math.copysign(math.floor(abs(x) + 0.5), x))
+        return RInterval(r(self.lo), r(self.hi))

@@ -83,6 +83,8 @@ def raw_value(name: str, si_value: float, inductance_unit: str) -> int:
 
 def round_half_away(x: float) -> int:
     """Round to nearest, ties away from zero (not Python's banker's ``round``)."""
+    if not isinstance(x, (int, float)):
+        return x.round_half_away()  # an interval of reals (pulab.fixedpoint.interval)
     return int(math.copysign(math.floor(abs(x) + 0.5), x))
 
 

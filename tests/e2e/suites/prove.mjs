@@ -79,7 +79,7 @@ export default async function prove(ctx) {
     });
     await page.waitForFunction(() => document.documentElement.dataset.proveDone === 'cancelled', null, { timeout: 30_000 });
     const note = await page.$eval('.prove-note', (e) => e.textContent);
-    assert(/Cancelled after \d+ of 16/.test(note), `note: ${note}`);
+    assert(/Cancelled after \d+ of 20/.test(note), `note: ${note}`);
     await setRows([['motor.rated_current_a', 5, 2]]);
     await page.click('button.run-prove');
     await page.waitForFunction(() => document.querySelector('[data-err-for="prove.ranges.motor.rated_current_a"]')?.textContent, null, { timeout: 30_000 });

@@ -11,7 +11,7 @@ import type { Panel, PanelContext } from './panel';
 import { sweepPaths } from './sweep';
 
 type Verdict = 'proven' | 'violated' | 'unknown';
-type Kind = 'wrap' | 'store' | 'div0' | 'zero' | 'outside';
+type Kind = 'wrap' | 'store' | 'div0' | 'zero' | 'outside' | 'invalid';
 
 /** One integer's entry (docs/contract.md, "Family proof"). */
 interface Entry {
