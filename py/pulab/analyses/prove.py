@@ -260,8 +260,9 @@ def _reproduces(inp: dict, name: str) -> bool:
 
 def _point(name: str, pt: dict, unit: str) -> tuple:
     """(kind or None, value, error_pct, statement) of vendor result ``name`` at a raw point."""
-    if any(pt[k] > _UINT16_MAX for k in VENDOR_READS[name]):
-        return "outside", None, None, None
+    for k in VENDOR_READS[name]:
+        if pt[k] > _UINT16_MAX:
+            return "outside", None, None, _outside_statement(k, pt[k])
     try:
         r = VENDOR_RESULTS[name](pt, unit)
     except InputError as e:
@@ -273,6 +274,10 @@ def _point(name: str, pt: dict, unit: str) -> tuple:
     if r["value"] == 0:
         return "zero", 0, r["error_pct"], r["trace"][-1]["code"]
     return None, r["value"], r["error_pct"], None
+
+
+def _outside_statement(name: str, value: int) -> str:
+    return f"gMotorInfo.{name} (Uint16) = {value}: does not fit"
 
 
 def _enclose(name: str, box: dict, unit: str) -> tuple:
@@ -427,7 +432,7 @@ def _prove_raw(problem: Problem, name: str) -> dict:
         fraction = max(0, _UINT16_MAX - lo + 1) / (hi - lo + 1)
         out = _entry("violated" if inp is not None else "unknown", (lo, hi), "Uint16",
                      fraction, None, kind="outside", raw={name: k},
-                     statement=f"gMotorInfo.{name} (Uint16) = {k}")
+                     statement=_outside_statement(name, k))
         if inp is not None:
             out["counterexample"] = inp
     out["worst_error_pct"] = worst
