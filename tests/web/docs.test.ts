@@ -12,7 +12,7 @@ import { fillPlaceholders, parseChapter, type Chapter } from '../../web/src/docs
 const ROOT = resolve(__dirname, '../..');
 const DOCS = join(ROOT, 'docs');
 const LANGS = ['zh', 'en'] as const;
-const PANELS = ['inputs', 'bases', 'pu', 'vendor', 'constants', 'current', 'pll', 'qcalc', 'conventions', 'vendors', 'sweep', 'batch', 'loop'];
+const PANELS = ['inputs', 'bases', 'pu', 'vendor', 'constants', 'current', 'pll', 'qcalc', 'conventions', 'vendors', 'sweep', 'batch', 'prove', 'loop'];
 const PLOTS = ['current', 'pll'];
 
 interface Index {
