@@ -250,7 +250,7 @@ def prove_json_steps(text: str):
         else:
             problem = pv.make_problem(req)
             if op == "plan":
-                out = {"plan": {"names": list(pv.integer_names()),
+                out = {"plan": {"names": list(problem.names),
                                 "raw_box": {k: list(v) for k, v in problem.box.items()}}}
             elif op == "integer":
                 out = {"integer": (yield from pv.integer_steps(problem, _name(text)))}

@@ -138,3 +138,32 @@ def test_pi_integers_agree_with_a_dense_oracle(extra, ranges):
                 assert lo <= e["counterexample"][sec][key] <= hi
     verdicts = {r["integers"][n]["verdict"] for n in r["integers"] if n.startswith("current_pi")}
     assert verdicts <= {"proven", "violated"}
+
+
+# TI MotorWare's IQ constants: the profiles oracle (tests/oracle/profiles_oracle.py, never imports
+# pulab) on the same kind of grid. A constant fails where it leaves int32 or is 0 (ideal ≠ 0).
+TI_BOXES = [
+    {"motor.rated_current_a": [0.1, 100], "drive.ts_s": [1e-5, 2e-4], "motor.ld_h": [1e-5, 1e-1]},
+    {"motor.rated_current_a": [1, 4], "motor.rs_ohm": [0.5, 2]},
+    {"motor.rs_ohm": [1e-9, 1e-6], "drive.udc_v": [12, 600]},
+]
+
+
+@pytest.mark.parametrize("ranges", TI_BOXES)
+def test_ti_constants_agree_with_the_profiles_oracle(ranges):
+    import profiles_oracle
+    r = prove({"input": SEED_INPUT, "ranges": ranges, "profile": "ti"})
+    truth = [profiles_oracle.profiles({**_at(SEED_INPUT, pt), "profiles": {"ti": {}}})["ti"]
+             for pt in _grid(ranges, 5)]
+    fails = lambda c: not -2 ** 31 <= c["value"] < 2 ** 31 or (c["value"] == 0 and c["ideal"] != 0)  # noqa: E731
+    assert r["integers"], "no TI constants"
+    for name, e in r["integers"].items():
+        key = name.split(".")[-1]
+        assert e["verdict"] != "unknown", name
+        if e["verdict"] == "proven":
+            for t in truth:
+                assert not fails(t[key]) and e["range"][0] <= t[key]["value"] <= e["range"][1], \
+                    (name, t[key])
+        else:
+            ce = e["counterexample"]
+            assert fails(profiles_oracle.profiles({**ce, "profiles": {"ti": {}}})["ti"][key]), name

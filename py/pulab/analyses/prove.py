@@ -30,7 +30,9 @@ The current-PI integers ``pm_kp``/``pm_ki`` (seed 2.2-9) are designed in floatin
 point: the report's design code runs over intervals of the ranged inputs themselves
 (:class:`~pulab.fixedpoint.interval.RInterval`, rounded outward so that it encloses the
 double the code computes), a branch or comparison that differs inside a box splits it,
-and the rounding to the integer is monotone.
+and the rounding to the integer is monotone.  TI MotorWare's IQ constants (``profile``
+``ti``) run the same way through that profile's own code (:func:`pulab.profiles.ti.constants`):
+encoding into IQ is monotone, so the ends of an interval bound its integers.
 
 Examples
 --------
@@ -51,6 +53,7 @@ from __future__ import annotations
 
 import heapq
 import math
+from typing import NamedTuple
 
 from ..fixedpoint.cint import UINT16, CDivisionByZero
 from ..fixedpoint.interval import ICInt, RInterval, Undecided
@@ -64,14 +67,17 @@ from .integers import profile_name
 from .slices import finish
 
 __all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "integer_steps",
+           "PROFILES",
            "summary", "VERDICTS", "KINDS",
            "DEFAULT_BUDGET", "MAX_BUDGET"]
 
 VERDICTS = ("proven", "violated", "unknown")
+#: The profiles a proof covers: the seed's Inovance code, and TI MotorWare's IQ constants.
+PROFILES = ("inovance", "ti")
 #: What breaks an integer: wrapped mid-way (a PI gain: beyond long, which the report refuses),
 #: changed by its Uint16 store, divided by zero, zero (all resolution lost), a raw parameter
 #: the Uint16 cannot hold, or a PI design the report refuses (damping with kp ≤ 0).
-KINDS = ("wrap", "store", "div0", "zero", "outside", "invalid")
+KINDS = ("wrap", "store", "div0", "zero", "outside", "saturate", "invalid")
 #: Interval evaluations (boxes) allowed per integer.
 DEFAULT_BUDGET = 4000
 MAX_BUDGET = 1_000_000
@@ -123,7 +129,7 @@ def make_problem(req) -> Problem:
     req : dict
         ``input`` (a report input), ``ranges`` ({path: [lo, hi]}, numeric input paths,
         lo ≤ hi; a raw path takes integers), optional ``profile`` (``inovance``, the
-        default, or its alias ``vendor``) and ``budget`` (boxes per integer,
+        default, or its alias ``vendor``; or ``ti``) and ``budget`` (boxes per integer,
         1..1000000, default 4000).
 
     Raises
@@ -138,8 +144,13 @@ def make_problem(req) -> Problem:
         raise InputError("input", code="not_json_object")
     inp = {k: v for k, v in inp.items() if k not in ("sim", "analysis", "profiles")}
     profile = req.get("profile")
-    if profile is not None and (not isinstance(profile, str) or profile_name(profile) != "inovance"):
-        raise InputError("prove.profile", code="prove_profile", got=shown(profile))
+    if profile is not None and (not isinstance(profile, str)
+                                or profile_name(profile) not in PROFILES):
+        raise InputError("prove.profile", code="prove_profile", got=shown(profile),
+                         choices=", ".join(PROFILES))
+    profile = profile_name(profile)
+    options = ((req["input"].get("profiles") or {}).get(profile) or {}) \
+        if profile != "inovance" and isinstance(req["input"].get("profiles"), dict) else {}
     budget = req.get("budget", DEFAULT_BUDGET)
     if isinstance(budget, bool) or not isinstance(budget, int) or not 1 <= budget <= MAX_BUDGET:
         raise InputError("prove.budget", code="integer_range", lo=1, hi=MAX_BUDGET,
@@ -190,7 +201,17 @@ def make_problem(req) -> Problem:
         # f_b defaults to f_n: the same SI value at the same scale, so the same raw integer.
         ties["FullFreq01"] = "FreqRated01"
         box["FullFreq01"] = box["FreqRated01"]
-    return Problem(inp, checked, unit, box, sources, ties, budget)
+    problem = Problem(inp, checked, unit, box, sources, ties, budget)
+    problem.profile, problem.options, problem.constants = profile, {}, {}
+    if profile == "inovance":
+        problem.names = integer_names()
+    else:
+        from ..report import report  # checks the options and names the constants
+        r = report({**inp, "profiles": {profile: options}})["profiles"][profile]
+        problem.options = {k: r["inputs"][k] for k in options}
+        problem.constants = r["constants"]
+        problem.names = tuple(f"profiles.{profile}.constants.{k}" for k in r["constants"])
+    return problem
 
 
 def _explicit(inp: dict) -> dict:
@@ -340,6 +361,7 @@ def _split(box: dict, dims, ties: dict) -> tuple:
 
 
 _WORDS = {"Uint16": (0, _UINT16_MAX), "long": (-(1 << 31), (1 << 31) - 1),
+          "int16": (-(1 << 15), (1 << 15) - 1),
           "Ulong": (0, (1 << 32) - 1)}
 
 
@@ -354,7 +376,7 @@ def _prove_vendor(problem: Problem, name: str):
     heap = [(-total, 0, problem.box)]
     order = 1
     proven_volume = 0
-    rng = None
+    rng = rng_proven = None  # hull of every box's enclosure, of the proven boxes' only
     word = None
     worst = None  # (|error_pct|, error_pct, raw point) over the points run
     evaluated = 0
@@ -367,9 +389,9 @@ def _prove_vendor(problem: Problem, name: str):
         evaluated += 1
         kinds, enc, w = _enclose(name, box, unit)
         word = word or w
-        if enc is not None:
-            rng = enc if rng is None else (min(rng[0], enc[0]), max(rng[1], enc[1]))
+        rng = _hull(rng, enc)
         if not kinds:
+            rng_proven = _hull(rng_proven, enc)
             proven_volume += -neg_vol
             for pt in (box_lo(box), {k: hi for k, (_, hi) in box.items()}):  # tied: equal ends
                 worst = _worse(worst, _point(name, pt, unit), pt)
@@ -393,8 +415,18 @@ def _prove_vendor(problem: Problem, name: str):
             heapq.heappush(heap, (-_volume(half, dims), order, half))
             order += 1
     if not heap and proven_volume == total:
-        return _entry("proven", rng, word, 1.0, worst, boxes=evaluated)
+        return _entry("proven", rng_proven, word, 1.0, worst, boxes=evaluated)
     return _entry("unknown", rng, word, proven_volume / total, worst, boxes=evaluated)
+
+
+def _log_width(r: tuple) -> float:
+    """How wide a range is for splitting: its ratio for positive ranges, else its width."""
+    return math.log(r[1] / r[0]) if r[0] > 0 else r[1] - r[0]
+
+
+def _hull(a, b):
+    """The smallest interval holding both (either may be None)."""
+    return b if a is None else a if b is None else (min(a[0], b[0]), max(a[1], b[1]))
 
 
 def _worse(worst, got, pt):
@@ -504,55 +536,141 @@ def _pi_reproduces(inp: dict, name: str, kind: str) -> bool:
 _MIN_SHARE = 1e-12
 
 
-def _prove_pi(problem: Problem, name: str):
-    """Decide one current-PI integer over the SI box (a slice generator returning its entry).
+def _profile_constants(n: dict, problem: Problem) -> dict:
+    """A vendor profile's constants for a normalized input whose values may be intervals:
+    the profile's own code (its ``constants``, what its ``profile`` reports), with the
+    options the input gives and the others at their defaults for this motor."""
+    from ..profiles import MODULES, context
+    from ..report import current_pi_section, input_bases
+    ctx = context(n, {}, {}, current_pi_section(n, input_bases(n)))
+    mod = MODULES[problem.profile]
+    opt = {k: problem.options[k] if k in problem.options else default(ctx)
+           for k, default, _ in mod.OPTIONS}
+    return mod.constants(ctx, opt)
 
-    The design is floating point, so the box is split in the ranged inputs themselves; a
-    box's corners (all of them up to 6 inputs) and centre are run concretely.
+
+def _profile_enclose(problem: Problem, name: str, box: dict) -> tuple:
+    """(kinds, (lo, hi)) of a profile constant over an SI box (see :func:`_pi_enclose`)."""
+    try:
+        c = _profile_constants(_pi_input(problem, box), problem)[name.split(".")[-1]]
+    except Undecided:
+        return {"undecided"}, None
+    except InputError as e:
+        return {"wrap" if e.code == "long_overflow" else "invalid"}, None
+    v = c["value"]
+    lo, hi = v.value if isinstance(v, RInterval) else (v, v)
+    kinds = {_PROFILE_FLAGS[f] for f in c["flags"] if f in _PROFILE_FLAGS}
+    return kinds | ({"zero"} if lo <= 0 <= hi else set()), (lo, hi)
+
+
+#: A profile constant's flags that break it: the vendor's macro clamped, or C's cast of an
+#: out-of-range float (undefined behaviour).
+_PROFILE_FLAGS = {"saturate": "saturate", "out_of_range": "outside"}
+
+
+def _profile_kind(c: dict):
+    bad = [_PROFILE_FLAGS[f] for f in c["flags"] if f in _PROFILE_FLAGS]
+    return bad[0] if bad else "zero" if c["value"] == 0 and c["ideal"] != 0 else None
+
+
+def _profile_point(problem: Problem, name: str, pt: dict) -> tuple:
+    """(kind or None, value, error_pct, input) of a profile constant at an SI point (the
+    input carries this profile's options, so the report gives the same constant)."""
+    inp = _with(problem.input, {p: (v, v) for p, v in pt.items()}, 0)
+    inp = {**inp, "profiles": {problem.profile: problem.options}}
+    try:
+        c = _profile_constants(normalize(inp), problem)[name.split(".")[-1]]
+    except InputError as e:
+        return ("wrap" if e.code == "long_overflow" else "invalid"), None, None, inp
+    return _profile_kind(c), c["value"], c["error_pct"], inp
+
+
+def _profile_reproduces(inp: dict, name: str, kind: str) -> bool:
+    from ..report import report
+    _, profile, _, key = name.split(".")
+    try:
+        c = report(inp)["profiles"][profile]["constants"][key]
+    except InputError as e:
+        return kind in ("wrap", "invalid") and e.field.startswith("current_loop")
+    return _profile_kind(c) == kind
+
+
+class _Float(NamedTuple):
+    """How to decide one integer computed in floating point (a PI gain, a profile constant)."""
+
+    enclose: object
+    point: object
+    reproduces: object
+    word: str
+    statement: str
+
+
+def _float_spec(problem: Problem, name: str) -> _Float:
+    if name.startswith("current_pi."):
+        return _Float(_pi_enclose, _pi_point, _pi_reproduces, "long",
+                      f"{name.split('.')[-1]} = round(…) (seed 2.2-9)")
+    c = problem.constants[name.split(".")[-1]]
+    word = {16: "int16", 32: "long"}[c["word_bits"]] if c["format"] else "long"
+    return _Float(_profile_enclose, _profile_point, _profile_reproduces, word,
+                  f"{c['name']} = {c['format']}({c['expression']})")
+
+
+def _prove_float(problem: Problem, name: str):
+    """Decide one integer computed in floating point over the SI box (a slice generator
+    returning its entry).
+
+    The box is split in the ranged inputs themselves; a box's corners (all of them up to 6
+    inputs) and centre are run concretely.
     """
+    spec = _float_spec(problem, name)
     full = {p: r for p, r in problem.ranges.items()
             if not p.startswith("raw.") and r[0] != r[1]}
     dims = list(full)
     heap = [(-1.0, 0, dict(full))]
     order, evaluated, proven_share = 1, 0, 0.0
-    rng, worst = None, None
-    statement = f"{name.split('.')[-1]} = round(…) (seed 2.2-9)"
+    rng = rng_proven = worst = None
+    statement = spec.statement
     while heap and evaluated < problem.budget:
         if evaluated and evaluated % _SLICE_BOXES == 0:
             yield
         neg_share, _, box = heapq.heappop(heap)
         evaluated += 1
-        kinds, enc = _pi_enclose(problem, name, box)
-        if enc is not None:
-            rng = enc if rng is None else (min(rng[0], enc[0]), max(rng[1], enc[1]))
+        kinds, enc = spec.enclose(problem, name, box)
+        rng = _hull(rng, enc)
         if not kinds:
+            rng_proven = _hull(rng_proven, enc)
             proven_share += -neg_share
             for end in (0, 1):
                 pt = {p: r[end] for p, r in box.items()}
-                worst = _worse(worst, _pi_point(problem, name, pt)[:3], pt)
+                worst = _worse(worst, spec.point(problem, name, pt)[:3], pt)
             continue
+        # Every corner of the whole box (a monotone design breaks at one); the centre of each
+        # smaller box, where a break inside the box is closed in on.
         corners = [{}]
-        for p in dims if len(dims) <= 6 else ():
+        for p in dims if len(dims) <= 6 and evaluated == 1 else ():
             corners = [{**c, p: e} for c in corners for e in box[p]]
         centre = {p: (lo + hi) / 2 for p, (lo, hi) in box.items()}
         for pt in [{**{p: lo for p, (lo, _) in box.items()}, **c} for c in corners] + [centre]:
-            kind, value, err, inp = _pi_point(problem, name, pt)
-            if kind is not None and _pi_reproduces(inp, name, kind):
-                return _entry("violated", rng, "long", proven_share, worst, boxes=evaluated,
+            kind, value, err, inp = spec.point(problem, name, pt)
+            if kind is not None and spec.reproduces(inp, name, kind):
+                return _entry("violated", rng, spec.word, proven_share, worst, boxes=evaluated,
                               kind=kind, statement=statement, raw={"value": value},
                               counterexample=inp)
             worst = _worse(worst, (kind, value, err), pt)
         if -neg_share < _MIN_SHARE or not dims:
             continue
-        p = max(dims, key=lambda q: (box[q][1] - box[q][0]) / (full[q][1] - full[q][0]))
+        p = max(dims, key=lambda q: _log_width(box[q]) / _log_width(full[q]))
         lo, hi = box[p]
-        mid = lo + (hi - lo) / 2
+        # Ratios of inputs (I_max/I_FS …) narrow by the ratio hi/lo: split at the geometric
+        # mean while it is large.
+        mid = math.sqrt(lo * hi) if lo > 0 and hi > 4 * lo else lo + (hi - lo) / 2
         for half in ((lo, mid), (mid, hi)):
-            heapq.heappush(heap, (neg_share / 2, order, {**box, p: half}))
+            share = neg_share * (half[1] - half[0]) / (hi - lo)
+            heapq.heappush(heap, (share, order, {**box, p: half}))
             order += 1
     if not heap and proven_share >= 1.0 - 1e-9:
-        return _entry("proven", rng, "long", 1.0, worst, boxes=evaluated)
-    return _entry("unknown", rng, "long", min(proven_share, 1.0), worst, boxes=evaluated)
+        return _entry("proven", rng_proven, spec.word, 1.0, worst, boxes=evaluated)
+    return _entry("unknown", rng, spec.word, min(proven_share, 1.0), worst, boxes=evaluated)
 
 
 def integer_names() -> tuple:
@@ -574,14 +692,14 @@ def integer_steps(problem: Problem, name: str):
     pulab.InputError
         Naming ``prove.name`` for a name not in :func:`integer_names`.
     """
-    if name not in integer_names():
-        raise InputError("prove.name", code="not_choice", choices=", ".join(integer_names()),
+    if name not in problem.names:
+        raise InputError("prove.name", code="not_choice", choices=", ".join(problem.names),
                          got=shown(name))
     section, _, key = name.partition(".")
     if section == "raw":
         return _prove_raw(problem, key)
-    if section == "current_pi":
-        entry = yield from _prove_pi(problem, name)
+    if section in ("current_pi", "profiles"):
+        entry = yield from _prove_float(problem, name)
     else:
         entry = yield from _prove_vendor(problem, key)
     entry["error_bound"] = False
@@ -594,7 +712,7 @@ def summary(problem: Problem, integers: dict) -> dict:
     verdict = ("violated" if "violated" in verdicts else
                "unknown" if "unknown" in verdicts else "proven")
     first = next((n for n, e in integers.items() if e["verdict"] == "violated"), None)
-    out = {"verdict": verdict, "profile": "inovance",
+    out = {"verdict": verdict, "profile": problem.profile,
            "ranges": {p: list(v) for p, v in problem.ranges.items()},
            "raw_box": {k: list(v) for k, v in problem.box.items()},
            "integers": integers, "not_analysed": []}
@@ -608,7 +726,7 @@ def prove_steps(req):
     """:func:`prove` in slices: yields None between slices of boxes; closing it cancels."""
     problem = make_problem(req)
     integers = {}
-    for name in integer_names():
+    for name in problem.names:
         integers[name] = yield from integer_steps(problem, name)
     return summary(problem, integers)
 

@@ -3,7 +3,7 @@
 ::
 
     pulab prove INPUT.json --range motor.rated_current_a=1:60 --range drive.base_freq_hz=100:400
-                [--profile inovance] [--budget N] [--format json|text]
+                [--profile inovance|ti] [--budget N] [--format json|text]
 
 INPUT.json is the base motor; each ``--range PATH=LO:HI`` makes that input range over
 ``[LO, HI]`` (:mod:`pulab.analyses.prove`).  Exit status: 0 when every integer is proven,
@@ -29,7 +29,8 @@ def add_prove_parser(sub) -> None:
     p.add_argument("input", help="the base input JSON ('-' = stdin)")
     p.add_argument("--range", dest="ranges", action="append", default=[],
                    metavar="PATH=LO:HI", help="an input's range (repeat for each input)")
-    p.add_argument("--profile", default=None, help="inovance (the seed's code; the default)")
+    p.add_argument("--profile", default=None,
+                   help="inovance (the seed's code; the default) or ti (MotorWare's IQ constants)")
     p.add_argument("--budget", type=int, default=None, help="boxes per integer (default 4000)")
     p.add_argument("--format", choices=("json", "text"), default="json")
     p.set_defaults(run=_run)

@@ -27,7 +27,8 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ..fixedpoint.qformat import QFormat, encode
+from ..fixedpoint.interval import RInterval
+from ..fixedpoint.qformat import QEncoded, QFormat, encode
 
 __all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "SOURCES",
            "derived"]
@@ -64,7 +65,14 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
         (ST's C5 uses the truncated MAX_VOLTAGE); ``ideal`` stays the exact value.
     """
     q = QFormat(word_bits, frac_bits, signed)
-    e = encode(ideal, q, rounding, "saturate")
+    if isinstance(ideal, RInterval):
+        # Over a box of inputs (pulab.analyses.prove): encoding is monotone, so the ends'
+        # integers bound every point's, and the ends alone can saturate.
+        ends = [encode(x, q, rounding, "saturate") for x in ideal.value]
+        e = QEncoded(RInterval(ends[0].raw, ends[1].raw), None, None,
+                     sorted({f for end in ends for f in end.flags}))
+    else:
+        e = encode(ideal, q, rounding, "saturate")
     exact = ideal * 2.0 ** frac_bits
     raw = e.raw if value is None else value
     inexact = "rounded" in e.flags if value is None else \

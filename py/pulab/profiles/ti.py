@@ -30,7 +30,8 @@ from .common import SOURCES, SQRT2, derived, fixed
 from .headers import define, define_float, guard
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
-           "gain_range", "gains_to_ints", "ints_to_gains", "check_for_errors", "profile", "header"]
+           "gain_range", "gains_to_ints", "ints_to_gains", "check_for_errors", "profile", "constants",
+           "header"]
 
 #: (input name, default from the motor and drive, meaning)
 OPTIONS = (
@@ -133,6 +134,11 @@ def check_for_errors(ctx: dict, opt: dict) -> list:
 
 def profile(ctx: dict, opt: dict) -> dict:
     """TI constants for this motor: the user's current PI, MotorWare's defaults, Rs_pu."""
+    return {"inputs": opt, "constants": constants(ctx, opt), "checks": check_for_errors(ctx, opt)}
+
+
+def constants(ctx: dict, opt: dict) -> dict:
+    """The IQ integers of :func:`profile` alone (without MotorWare's error checks)."""
     v, i, f, t = (opt["full_scale_voltage_v"], opt["full_scale_current_a"],
                   opt["full_scale_freq_hz"], ctx["ts"])
     out = {}
@@ -152,7 +158,7 @@ def profile(ctx: dict, opt: dict) -> dict:
                                 "2·I_max·F_FS·T/I_FS (series)", SOURCES["ti_ctrl"])
     out["Rs_pu"] = _iq("Rs_pu", ctx["rs"] * i / v, opt, v / i, "Ω", "R_s·I_FS/V_FS",
                        derived("TI per unit of V_FS/I_FS; MotorWare keeps USER_MOTOR_Rs in Ω"))
-    return {"inputs": opt, "constants": out, "checks": check_for_errors(ctx, opt)}
+    return out
 
 
 def header(p: dict, ctx: dict) -> str:

@@ -11,7 +11,10 @@ import type { Panel, PanelContext } from './panel';
 import { sweepPaths } from './sweep';
 
 type Verdict = 'proven' | 'violated' | 'unknown';
-type Kind = 'wrap' | 'store' | 'div0' | 'zero' | 'outside' | 'invalid';
+/** The profiles a proof covers (pulab.analyses.prove.PROFILES). */
+const PROFILES = ['inovance', 'ti'] as const;
+type Profile = (typeof PROFILES)[number];
+type Kind = 'wrap' | 'store' | 'div0' | 'zero' | 'outside' | 'saturate' | 'invalid';
 
 /** One integer's entry (docs/contract.md, "Family proof"). */
 interface Entry {
@@ -40,6 +43,7 @@ interface Job { cancelled: boolean }
 
 const st = {
   rows: null as RangeRow[] | null,
+  profile: 'inovance' as Profile,
   job: null as Job | null,
   names: [] as string[],
   entries: {} as Record<string, Entry>,
@@ -60,7 +64,7 @@ function defaultRow(ctx: PanelContext, path: string, lo: number, hi: number): Ra
 function request(input: Input): Record<string, unknown> {
   const ranges: Record<string, [number, number]> = {};
   for (const r of st.rows ?? []) ranges[r.path] = [Number(r.lo), Number(r.hi)];
-  return { input, ranges };
+  return { input, ranges, profile: st.profile };
 }
 
 async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
@@ -165,6 +169,9 @@ export const provePanel: Panel = {
     const otherErr = st.error && !st.error.field.startsWith('prove.ranges.') ? `${st.error.field}: ${errText(st.error)}` : null;
     el.replaceChildren(h('div', { class: 'prove' },
       h('p', { class: 'hint' }, t('prIntro')),
+      h('label', { class: 'field inline' }, h('span', { class: 'lbl' }, t('prProfile')), ' ',
+        h('select', { name: 'prove.profile', onchange: (ev: Event) => { st.profile = (ev.target as HTMLSelectElement).value as Profile; } },
+          PROFILES.map((p) => h('option', { value: p, selected: p === st.profile }, p)))),
       rangeRows(el, ctx),
       h('div', { class: 'sweep-run' },
         h('button', { type: 'button', class: 'run-prove', disabled: running || !ctx.client, onclick: () => void run(el, ctx) }, t('prRun')),
