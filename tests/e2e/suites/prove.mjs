@@ -58,6 +58,23 @@ export default async function prove(ctx) {
     await page.screenshot({ path: join(SHOTS, 'prove-table.png') });
   });
 
+  await check('prove: TI MotorWare\'s IQ constants, verdicts equal CPython\'s --profile ti', async () => {
+    await page.selectOption('select[name="prove.profile"]', 'ti');
+    const tiRows = [['motor.rated_current_a', 0.5, 100], ['motor.ld_h', 1e-5, 0.05]];
+    await setRows(tiRows);
+    await runProof();
+    const want = JSON.parse(py(['prove', '-', '--profile', 'ti', ...tiRows.flatMap(([p, a, b]) => ['--range', `${p}=${a}:${b}`])], JSON.stringify(seed.input)));
+    const names = Object.keys(want.integers);
+    assert(names.length > 5 && names.every((n) => n.startsWith('profiles.ti.constants.')), `names ${names}`);
+    for (const [name, e] of Object.entries(want.integers)) {
+      const verdict = await page.$eval(`[data-verdict-for="${name}"]`, (el) => el.className.match(/pr-(\w+)/)[1]);
+      assert(verdict === e.verdict, `${name}: page ${verdict}, CPython ${e.verdict}`);
+    }
+    await page.selectOption('select[name="prove.profile"]', 'inovance');
+    await setRows(rows);
+    await runProof();
+  });
+
   await check('prove: a counterexample opens as the page input, where LD breaks', async () => {
     const ce = JSON.parse(await page.$eval('a[data-open-ce="vendor.LD"]', (a) => decodeURIComponent(a.getAttribute('href').replace(/^#in=/, ''))));
     await page.click('a[data-open-ce="vendor.LD"]');
