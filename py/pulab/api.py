@@ -228,7 +228,8 @@ def prove_json_steps(text: str):
     with ``op``: ``"prove"`` (default: every integer), ``"plan"`` (the integer names and the
     raw box, nothing proven), ``"integer"`` with ``name`` (that integer's entry: a page
     proves integer by integer to show progress), or ``"summary"`` with ``integers`` (the
-    entries → the whole result, as ``"prove"`` gives it).
+    entries → the whole result, as ``"prove"`` gives it) or, for profile ``ti``, ``"propose"``
+    (the finest GLOBAL_Q proven over the box: :func:`pulab.analyses.prove.propose_global_q`).
 
     >>> import json
     >>> seed = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
@@ -256,9 +257,13 @@ def prove_json_steps(text: str):
                 out = {"integer": (yield from pv.integer_steps(problem, _name(text)))}
             elif op == "summary":
                 out = {"proof": pv.summary(problem, _entries(text))}
+            elif op == "propose" and problem.profile == "ti":
+                out = {"proposal": pv.propose_global_q(req)}
+            elif op == "propose":
+                raise InputError("prove.propose", code="prove_propose_ti")
             else:
                 raise InputError("prove.op", code="not_choice",
-                                 choices="prove, plan, integer, summary", got=shown(op))
+                                 choices="prove, plan, integer, summary, propose", got=shown(op))
         return json.dumps({"ok": True, **out}, allow_nan=False)
     except InputError as e:
         return _fail(e)

@@ -167,3 +167,21 @@ def test_ti_constants_agree_with_the_profiles_oracle(ranges):
         else:
             ce = e["counterexample"]
             assert fails(profiles_oracle.profiles({**ce, "profiles": {"ti": {}}})["ti"][key]), name
+
+
+def test_proposed_global_q_is_the_finest_the_oracle_accepts():
+    import profiles_oracle
+    from pulab.analyses.prove import propose_global_q
+    ranges = {"motor.rated_current_a": [0.5, 100], "motor.ld_h": [1e-5, 0.05]}
+    q = propose_global_q({"input": SEED_INPUT, "ranges": ranges})["global_q"]
+    assert q is not None and q < 24  # MotorWare's default IQ24 does not hold this family
+    fails = lambda c: not -2 ** 31 <= c["value"] < 2 ** 31 or (c["value"] == 0 and c["ideal"] != 0)  # noqa: E731
+    for pt in _grid(ranges, 9):
+        ti = profiles_oracle.profiles({**_at(SEED_INPUT, pt), "profiles": {"ti": {"global_q": q}}})["ti"]
+        assert not any(fails(c) for c in ti.values()), pt
+    finer = prove({"input": {**SEED_INPUT, "profiles": {"ti": {"global_q": q + 1}}},
+                   "ranges": ranges, "profile": "ti"})
+    ce = finer["counterexample"]
+    ti = profiles_oracle.profiles({**{k: v for k, v in ce.items() if k != "profiles"},
+                                   "profiles": {"ti": {"global_q": q + 1}}})["ti"]
+    assert any(fails(c) for c in ti.values())

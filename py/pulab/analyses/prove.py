@@ -67,7 +67,7 @@ from .integers import profile_name
 from .slices import finish
 
 __all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "integer_steps",
-           "PROFILES",
+           "PROFILES", "propose_global_q", "headroom_bits",
            "summary", "VERDICTS", "KINDS",
            "DEFAULT_BUDGET", "MAX_BUDGET"]
 
@@ -436,11 +436,27 @@ def _worse(worst, got, pt):
     return abs(err), err, dict(pt)
 
 
+def headroom_bits(rng, word) -> int:
+    """How many more fractional bits the word holds for every value of a proven range: the
+    largest k with (hi + 1)·2^k − 1 ≤ max and lo·2^k ≥ min.
+
+    >>> headroom_bits((3338, 53414), (0, 65535)), headroom_bits((692, 2808), (0, 65535))
+    (0, 4)
+    """
+    lo, hi = rng
+    k = 0
+    while k < 62 and (hi + 1) << (k + 1) <= word[1] + 1 and lo << (k + 1) >= word[0]:
+        k += 1
+    return k
+
+
 def _entry(verdict: str, rng, word, fraction: float, worst, **extra) -> dict:
     out = {"verdict": verdict, "range": list(rng) if rng else None, "type": word,
            "word": list(_WORDS[word]) if word else None, "proven_fraction": fraction,
            "worst_error_pct": None if worst is None else worst[1],
-           "worst_error_raw": None if worst is None else worst[2]}
+           "worst_error_raw": None if worst is None else worst[2],
+           "headroom_bits": headroom_bits(rng, _WORDS[word])
+           if verdict == "proven" and rng and word else None}
     out.update(extra)
     return out
 
@@ -729,6 +745,27 @@ def prove_steps(req):
     for name in problem.names:
         integers[name] = yield from integer_steps(problem, name)
     return summary(problem, integers)
+
+
+def propose_global_q(req) -> dict:
+    """TI's GLOBAL_Q with the finest resolution for which every IQ constant is proven over the
+    box: each candidate from 30 down is a whole proof (``profiles.ti.global_q`` set).
+
+    Returns
+    -------
+    dict
+        ``global_q`` (None when no Q from 30 to 1 is proven) and ``tried``: {q: verdict}.
+    """
+    inp = req.get("input") if isinstance(req, dict) else None
+    tried = {}
+    for q in range(30, 0, -1):
+        profiles = {**((inp or {}).get("profiles") or {})}
+        profiles["ti"] = {**(profiles.get("ti") or {}), "global_q": q}
+        r = prove({**req, "profile": "ti", "input": {**(inp or {}), "profiles": profiles}})
+        tried[q] = r["verdict"]
+        if r["verdict"] == "proven":
+            return {"global_q": q, "tried": tried}
+    return {"global_q": None, "tried": tried}
 
 
 def prove(req) -> dict:

@@ -32,6 +32,8 @@ def add_prove_parser(sub) -> None:
     p.add_argument("--profile", default=None,
                    help="inovance (the seed's code; the default) or ti (MotorWare's IQ constants)")
     p.add_argument("--budget", type=int, default=None, help="boxes per integer (default 4000)")
+    p.add_argument("--propose", action="store_true",
+                   help="with --profile ti: the finest GLOBAL_Q proven over the box")
     p.add_argument("--format", choices=("json", "text"), default="json")
     p.set_defaults(run=_run)
 
@@ -64,6 +66,8 @@ def format_prove_text(r: dict) -> str:
         rng = "—" if e["range"] is None else f"[{e['range'][0]}, {e['range'][1]}]"
         word = "" if e["word"] is None else f" of {e['type']} [{e['word'][0]}, {e['word'][1]}]"
         line = f"  {name:<22} {e['verdict']:<8} {rng}{word}"
+        if e.get("headroom_bits"):
+            line += f"  (+{e['headroom_bits']} fractional bits would still fit)"
         if e["verdict"] == "violated":
             line += f"  {e['kind']} at raw {e['raw']}: {e['statement']}"
         elif e["verdict"] == "unknown":
@@ -71,6 +75,9 @@ def format_prove_text(r: dict) -> str:
         lines.append(line)
     if r["not_analysed"]:
         lines += ["", "Not analysed: " + ", ".join(r["not_analysed"])]
+    if "proposal" in r:
+        lines += ["", f"Proposed GLOBAL_Q: {r['proposal']['global_q']} (the finest proven over "
+                      "the box)"]
     if "counterexample" in r:
         lines += ["", f"Counterexample ({r['first_violated']}):",
                   json.dumps(r["counterexample"], ensure_ascii=False)]
@@ -89,6 +96,11 @@ def _run(args) -> int:
         if args.budget is not None:
             req["budget"] = args.budget
         r = prove(req)
+        if args.propose:
+            if r["profile"] != "ti":
+                raise InputError("prove.propose", code="prove_propose_ti")
+            from ..analyses.prove import propose_global_q
+            r["proposal"] = propose_global_q(req)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
