@@ -345,8 +345,11 @@ def _firmware(f: list, firmware: dict, shipped: str) -> None:
             continue
         p = st["problems"]
         results = sorted({r for x in p for r in x["results"]})
+        # a raw input or a division the code cannot do: integers missing; else words too small
+        missing = any(x["code"].startswith("limit.") for x in p)
         _finding(f, "warning" if name == shipped else "note", "unrepresentable",
                  f"firmware.{name}", _FIRMWARE, name,
+                 None if missing else "unrepresentable_constants",
                  profile=name, fields=", ".join(x["field"] for x in p),
                  results=", ".join(results), advice={"code": p[0]["code"] + "_advice"
                  if p[0]["code"].startswith("limit.") else "limit.constant_advice",

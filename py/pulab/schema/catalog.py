@@ -262,6 +262,11 @@ MESSAGES = {
     "finding.unrepresentable": ("the {profile} firmware cannot hold this motor ({fields}): {results} "
                                 "are not computed. {advice}",
                                 "{profile} 固件无法表示这台电机（{fields}）：{results} 无法计算。{advice}"),
+    "finding.unrepresentable_constants": ("the {profile} firmware cannot hold this motor: {results} do "
+                                          "not fit their words and keep the largest integer instead. "
+                                          "{advice}",
+                                          "{profile} 固件无法表示这台电机：{results} 超出其字长，只能存下"
+                                          "最大整数。{advice}"),
     "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and {source} = "
                      "{si:g} {si_unit} needs {value}; a 16-bit parameter would keep {stored} "
                      "({stored_si:g} {si_unit}). Not computed: {results}",
@@ -279,8 +284,11 @@ MESSAGES = {
                           "profile that holds it, or change the firmware's units.",
                           "厂商 C 代码无法为这台电机计算这些整数（某个值在作除数前截断为 0）；"
                           "这是代码本身的性质：请选用能表示它的配置，或修改固件的单位。"),
-    "limit.constant_advice": ("Change what scales it: the profile's base (full-scale value) or its Q "
-                              "format.", "请修改它的缩放：该配置的基值（满量程值）或 Q 格式。"),
+    "limit.constant_advice": ("It needs {factor:.3g}× what {format} holds: store it with {bits} "
+                              "fewer fractional bits (Q{q_new}), or change what scales it ({options}) "
+                              "so that it is {factor:.3g}× smaller.",
+                              "它需要 {format} 所能表示范围的 {factor:.3g} 倍：请少用 {bits} 位小数"
+                              "（Q{q_new}）存储，或修改它的缩放（{options}），使其缩小 {factor:.3g} 倍。"),
     "profile_unrepresentable": ("the {profile} firmware cannot hold this motor: {reason}",
                                 "{profile} 固件无法表示这台电机：{reason}"),
     "raw_missing": ("{name} does not fit its Uint16 parameter", "{name} 超出其 Uint16 参数范围"),
