@@ -186,13 +186,13 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         fix = {"code": "fix.inductance_unit" if finer else "fix.parameter_unit",
                "params": {"unit": count}}
         if raw[name] == 0:
-            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name, path=path,
-                     si=si, fix=fix)
+            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name,
+                     path={"label": path}, si=si, fix=fix)
             continue
         pct = 100.0 * (raw[name] - exact) / exact
         _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
-                 f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path=path, si=si,
-                 pct=pct, fix=fix)
+                 f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path={"label": path},
+                 si=si, pct=pct, fix=fix)
 
 
 def _bemf_check(f: list, n: dict) -> None:
