@@ -87,7 +87,7 @@ export default async function sweep(ctx) {
     await page.screenshot({ path: join(SHOTS, 'sweep-2d.png') });
   });
 
-  await check('batch: the 1,000-motor catalogue gives the same CSV as `pulab batch`, bad rows reported', async () => {
+  await check('batch: the 1,000-motor catalogue gives the same CSV as `pulab batch`, rows beyond the firmware marked', async () => {
     const file = join(ROOT, 'tests/data/motors-1000.csv');
     const cli = spawnSync('python3', ['-m', 'pulab', 'batch', file], { cwd: ROOT, env: { ...process.env, PYTHONPATH: join(ROOT, 'py') }, maxBuffer: 64 << 20 });
     // Rows the Inovance firmware cannot hold still compute (their `firmware` cell says why): exit 0.
