@@ -40,12 +40,12 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
     Object.assign(st, { job: null, error: first.result });
     return batchPanel.render(el, ctx);
   }
-  st.total = first.result.total as number;
-  st.columns = first.result.columns as string[];
+  st.total = first.result.total;
+  st.columns = first.result.columns;
   const t0 = performance.now();
   const end = await runChunks(client, 'batch', st.total, CHUNK, (start, count) => ({ csv: st.text, start, count }), (r, done) => {
-    st.rows.push(...(r.rows as string[][]));
-    st.csv.push(r.csv as string);
+    st.rows.push(...r.rows);
+    st.csv.push(r.csv);
     st.done = done;
     const bar = el.querySelector<HTMLProgressElement>('progress.batch-progress');
     if (bar) {
@@ -54,7 +54,7 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
     }
   }, job);
   if (end !== 'done' && end !== 'cancelled') st.error = end;
-  if (st.total === 0) st.csv = [first.result.csv as string];
+  if (st.total === 0) st.csv = [first.result.csv];
   const bad = st.rows.filter((r) => r[st.columns.indexOf('error')]).length;
   st.note = end === 'cancelled' ? { key: 'swCancelled', vars: { done: st.done, total: st.total } }
     : { key: 'btDone', vars: { n: st.total, bad, s: ((performance.now() - t0) / 1000).toFixed(2) } };
