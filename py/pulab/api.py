@@ -301,7 +301,7 @@ def sweep_json(text: str) -> str:
     [1.0, 1.5, 2.0]
     >>> json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": 0, "count": 2})))[
     ...     "chunk"]["points"]["error"][0]
-    'motor.rated_voltage_v: is required'
+    'motor.rated_voltage_v: is required (or give datasheet.dc_bus_v)'
     """
     return _by_key(text, "sweep.op", "op", "sweep", {"sweep": "sweep", "plan": "sweep.plan",
                    "chunk": "sweep.chunk", "merge": "sweep.merge"}, _sweep_plan)
