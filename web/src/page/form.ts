@@ -2,7 +2,7 @@
 // error message at each field. Edits go into the compute session's input.
 import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
-import { ALL_FIELDS, SECTIONS, effectiveInput, fieldLabel, type FieldSpec } from '../fields';
+import { ALL_FIELDS, SECTIONS, effectiveInput, fieldLabel, unitSiblings, type FieldSpec } from '../fields';
 import { errText, getLang, has, t, type Key } from '../i18n';
 import type { ApiErr } from '../protocol';
 import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
@@ -197,7 +197,7 @@ export class InputForm {
   }
 
   private onUnit(f: FieldSpec, u: UnitId): void {
-    this.units[f.path] = u;
+    for (const g of unitSiblings(f)) this.units[g.path] = u;
     store(UNITS_KEY, JSON.stringify(this.units));
     this.render();
     this.session.schedule(); // the link (#in=…&u=…) carries the units too
