@@ -93,7 +93,7 @@ export class App {
 
   /** Attach to a client that may already be booting (main.ts starts the worker first). */
   start(client: PulabClient, restart?: (generation: number) => PulabClient): void {
-    handleLinks(this.root, this.embed, () => this.renderPanels(['docs']));
+    handleLinks(this.root, this.embed, () => this.renderPanels(['docs']), (id) => this.layout.showView(id));
     this.attach(client, restart, 0);
     this.renderAll();
     // No numbers to show before Python (a share link): the seed's panels warm the fonts meanwhile.

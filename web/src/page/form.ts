@@ -10,6 +10,7 @@ import { fromSI, toSI, type UnitId } from '../units';
 import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
 import { checkUnits } from '../state-check';
+import { closeInputs } from './drawer';
 
 /** The SI field a raw firmware value was converted from (the error's `source` parameter). */
 export function sourceField(e: ApiErr): string | null {
@@ -76,11 +77,18 @@ export class InputForm {
     const open = new Set([...host.querySelectorAll<HTMLDetailsElement>('details[open]')].map((d) => d.dataset.section));
     const first = !host.childElementCount;
     host.replaceChildren(
-      h('div', { class: 'inputs-head' }, h('h2', {}, t('inputs')),
+      h('div', { class: 'inputs-head' },
+        h('div', { class: 'inputs-title' }, h('h2', {}, t('inputs')),
+          h('button', { type: 'button', class: 'inputs-close', onclick: closeInputs }, t('inputsClose'))),
+        // The reason the numbers are stale, where the user types (the banner over the panels may be
+        // off screen or under the drawer).
+        h('div', { class: 'stale-note', role: 'status' }),
         h('label', { class: 'preset' }, h('span', {}, t('preset')),
           h('select', { name: 'preset', onchange: (ev: Event) => this.onPreset((ev.target as HTMLSelectElement).value) },
             h('option', { value: '' }, t('presetCustom')),
-            PRESETS.map((p) => h('option', { value: p.id, selected: this.matchesPreset(p.input) }, p.label[getLang()]))))),
+            PRESETS.map((p) => h('option', { value: p.id, selected: this.matchesPreset(p.input) }, p.label[getLang()])))),
+        h('button', { type: 'button', class: 'from-datasheet', title: t('fromDatasheetTitle'), onclick: () => this.onFromDatasheet() }, t('fromDatasheet')),
+        this.blank ? h('p', { class: 'hint blank-start' }, t('fromDatasheetStarted')) : null),
       // The datasheet and raw sections start collapsed, but open when the input uses them.
       ...SECTIONS.map((s) => h('details', { class: 'section', 'data-section': s.id, open: (first ? !s.collapsed : open.has(s.id)) || ((s.id === 'datasheet' || s.id === 'raw') && Object.keys(this.session.input[s.id] ?? {}).length > 0) },
         h('summary', {}, t(s.title), h('span', { class: 'err', 'data-err-for': s.id })),
@@ -206,8 +214,22 @@ export class InputForm {
   private onPreset(id: string): void {
     const p = PRESETS.find((x) => x.id === id);
     if (!p) return;
+    this.blank = false;
     this.session.replaceInput(clone(p.input));
     this.render();
+  }
+
+  /** Started from a blank datasheet (until a preset is chosen): says so in the form's head. */
+  private blank = false;
+
+  /** A blank form with the datasheet section open: nothing of the example motor is kept. */
+  private onFromDatasheet(): void {
+    this.blank = true;
+    this.session.replaceInput({ datasheet: {} });
+    this.render();
+    const sec = this.host?.querySelector<HTMLDetailsElement>('details[data-section="datasheet"]');
+    if (sec) sec.open = true;
+    sec?.querySelector<HTMLElement>('input, select')?.focus();
   }
 
   private syncPresetSelect(): void {

@@ -42,8 +42,8 @@ function ownKey(v: Vendor, name: string, axis: 'd' | 'q'): string {
 const BASE_ROWS = ['voltage_base', 'current_base', 'line_or_phase', 'rms_or_peak', 'clarke_k', 'inductance_base', 'pi_form', 'rounding'] as const;
 const BASE_NUMS: [string, string][] = [['U_b', 'V'], ['I_b', 'A'], ['Z_b', 'Ω'], ['L_b', 'H']];
 
-type Constant = { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string };
-type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[]; checks?: [string, string][]; files?: { rounding: string; worked_numbers: string[] } };
+export type Constant = { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string };
+export type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[]; checks?: [string, string][]; files?: { rounding: string; worked_numbers: string[] } };
 type Fail = { ok: false; field: string; message: string; message_zh?: string };
 type Step = { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: Vendor; drift_pct?: { kp: number; ki: number } };
 type Translation = { si: { kp: number; ki: number }; profiles: Record<Vendor, Step>; chain: Step[]; round_trip: { values: Record<string, number>; delta: Record<string, number> } };
@@ -101,8 +101,22 @@ function watch(el: HTMLElement): void {
   io.observe(el);
 }
 
+/** Told when new profiles arrive: the page's answer strip, which shows the chosen profile's integers. */
+let onProfiles: (() => void) | null = null;
+
 function rerender(): void {
   if (lastCtx) vendorsPanel.render(lastCtx.el, lastCtx.ctx);
+}
+
+/**
+ * The profiles for the input in `ctx` (with this panel's hardware inputs), computed even while the
+ * panel is off screen: for a reader who picked a profile other than Inovance. `changed` is called
+ * when they arrive; until then the last ones (or null) are returned.
+ */
+export function profilesFor(ctx: PanelContext, changed: () => void): Record<Vendor, Profile> | null {
+  onProfiles = changed;
+  refresh(ctx);
+  return profiles;
 }
 
 function refresh(ctx: PanelContext): void {
@@ -125,6 +139,7 @@ function refresh(ctx: PanelContext): void {
     } else profErr = result as unknown as Fail;
     translate(ctx);
     rerender();
+    onProfiles?.();
   }, () => undefined);
 }
 

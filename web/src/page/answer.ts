@@ -1,0 +1,83 @@
+// The answer at the top of every screen: the integers of the firmware the reader ships (picked
+// here, remembered) and the review's summary. Numbers are mirrors (data-mirror-of) of those in the
+// panels; a firmware that cannot hold the motor says why here too, with the same box as its panel.
+import { h, num, patch } from '../dom';
+import { t, type Key } from '../i18n';
+import { VENDOR_NAMES } from '../report-types';
+import type { PanelContext } from '../panels/panel';
+import { limitsBox } from '../panels/limits';
+import { VENDORS, profilesFor, type Vendor } from '../panels/vendors';
+import { allFindings, findingItem, reviewCounts } from '../panels/review';
+import { load, store } from './storage';
+
+const PROFILE_KEY = 'pulab.profile';
+
+let profile: Vendor = ((): Vendor => {
+  const v = load(PROFILE_KEY);
+  return (VENDORS as readonly string[]).includes(v ?? '') ? (v as Vendor) : 'inovance';
+})();
+
+/** The profile the reader ships. */
+export function shippedProfile(): Vendor {
+  return profile;
+}
+
+function chip(name: string, path: string, value: number | undefined, bad = false): HTMLElement {
+  return h('span', { class: `int-chip${bad ? ' bad' : ''}` }, h('code', {}, name), ' ', num(path, value, { kind: 'int', mirror: true }));
+}
+
+function notHeld(name: string): HTMLElement {
+  return h('span', { class: 'int-chip na' }, h('code', {}, name), ' ', h('span', { class: 'num na' }, t('fw_not_held')));
+}
+
+/** Inovance: the vendor integers and the current PI integers of the page's own report. */
+function inovanceChips(ctx: PanelContext): HTMLElement[] {
+  const r = ctx.report;
+  const missing = new Set(r?.firmware?.inovance?.problems.flatMap((p) => p.results) ?? []);
+  const ints = VENDOR_NAMES.map((n) => (missing.has(n) ? notHeld(n)
+    : chip(n, `vendor.${n}.value`, r?.vendor?.[n]?.value, r?.vendor?.[n]?.flags.some((f) => f === 'wrap' || f === 'store'))));
+  const pi = (['pm_kp', 'pm_ki'] as const).map((k) => chip(k, `current_pi.d.${k}`, r?.current_pi?.d?.[k]));
+  return [...ints, ...pi];
+}
+
+/** Another vendor: every constant of its profile (a report of its own, see vendors.ts). */
+function profileChips(ctx: PanelContext, v: Vendor, again: () => void): HTMLElement[] {
+  const consts = profilesFor(ctx, again)?.[v]?.constants;
+  if (!consts) return [h('span', { class: 'num pending' }, t('answerPending'))];
+  return Object.entries(consts).map(([k, c]) => chip(k, `profiles.${v}.constants.${k}.value`, c.value, c.flags.some((f) => f === 'out_of_range' || f === 'saturate')));
+}
+
+/** The review in one line (the counts) and its errors and warnings (class `warnings`: empty when none). */
+function reviewSummary(ctx: PanelContext): HTMLElement {
+  const all = allFindings(ctx);
+  const serious = all.filter((f) => f.severity !== 'note');
+  const listed = ctx.report !== null && serious.length > 0;
+  return h('div', { class: 'answer-review' },
+    // The counts once: in the list's title when there is a list.
+    listed ? null : h('a', { class: 'counts', href: '#panel-review', 'data-nav': 'review' }, `${t('answerReview')}: `, ctx.report ? reviewCounts(all) : '…'),
+    h('div', { class: 'warnings' }, listed ? [
+      h('strong', {}, `${t('p_review')}: `), h('a', { href: '#panel-review', 'data-nav': 'review', class: 'counts' }, reviewCounts(all)),
+      h('ul', { class: 'findings' }, serious.map(findingItem))] : []));
+}
+
+/** Render the strip into `el`; `again` renders it once more (a profile's report arrived). */
+export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => void): void {
+  const v = profile;
+  const pick = h('select', {
+    name: 'answer.profile', 'aria-label': t('answerProfile'),
+    onchange: (ev: Event) => {
+      profile = (ev.target as HTMLSelectElement).value as Vendor;
+      store(PROFILE_KEY, profile);
+      again();
+    },
+  }, VENDORS.map((x) => h('option', { value: x, selected: x === v }, t(`vd_${x}` as Key))));
+  patch(el,
+    h('div', { class: 'answer-head' },
+      h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), pick),
+      reviewSummary(ctx)),
+    h('div', { class: 'answer-ints', 'data-profile': v },
+      limitsBox(v, ctx.report?.firmware?.[v]),
+      h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(ctx, v, again),
+        h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers')))),
+  );
+}
