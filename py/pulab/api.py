@@ -187,7 +187,7 @@ def sweep_json(text: str) -> str:
     [1.0, 1.5, 2.0]
     >>> json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": 0, "count": 2})))[
     ...     "chunk"]["points"]["error"][0]
-    'motor.rated_voltage_v: is required'
+    'motor.rated_voltage_v: is required (or give datasheet.dc_bus_v)'
     """
     from .analyses import sweep as sw  # imported on first use: report-only pages stay lean
     try:

@@ -189,7 +189,8 @@ def _without(*keys, **extra):
 @pytest.mark.parametrize("ds, field", [
     (_without("ke_measure"), "datasheet.ke_measure"),
     (_without(ke_measure="avg"), "datasheet.ke_measure"),
-    (_without(psi_wb=0.1), "datasheet.psi_wb"),
+    (_without(bemf_from="psi_wb"), "datasheet.bemf_from"),
+    (_without(rs_phase_ohm=1.5), "datasheet.rs_phase_ohm"),
     (_without("ke_v_per_krpm", psi_wb=0.1), "datasheet.ke_measure"),
     (_without(kt_current="rms"), "datasheet.kt_current"),
     (_without(winding="wye"), "datasheet.winding"),
@@ -253,8 +254,9 @@ def test_every_finding_has_chinese_and_names_a_field():
     assert {"error", "warning", "note"} == {x["severity"] for x in r["review"]["findings"]}
     for x in r["review"]["findings"]:
         assert chinese(x["message_zh"]), x["message"]
-        assert x["field"].split(".")[0] in ("motor", "drive", "conventions", "current_loop",
-                                            "pll"), x
+        # a design choice (never a motor's property such as its resistance)
+        assert x["field"].split(".")[0] in ("drive", "conventions", "current_loop", "pll",
+                                            "profiles", "datasheet"), x
     assert r["warnings_zh"] == [x["message_zh"] for x in r["review"]["findings"]
                                 if x["severity"] != "note"]
 
@@ -279,4 +281,16 @@ def test_cli_both_given_exits_2_naming_the_field(tmp_path):
     out = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)],
                          capture_output=True, text=True, env={"PYTHONPATH": str(ROOT / "py")})
     assert out.returncode == 2
-    assert out.stderr.startswith("error: datasheet.speed_rpm: and motor.rated_freq_hz both given")
+    assert out.stderr == ("error: datasheet.speed_rpm: Rated speed (datasheet.speed_rpm) and Rated "
+                          "frequency (motor.rated_freq_hz) both set the motor's Rated frequency: "
+                          "give only one of them.\n")
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "tests/golden").glob("[0-9]*.json")),
+                         ids=lambda p: p.stem)
+def test_no_finding_asks_to_change_the_motor(path):
+    """Every golden motor: each finding points at a design choice, with its form label."""
+    r = report(json.loads(path.read_text())["input"])
+    for x in r["review"]["findings"]:
+        assert not x["field"].startswith("motor."), x
+        assert x["label"] != x["field"] and chinese(x["label_zh"]), x

@@ -58,6 +58,10 @@ THRESHOLDS = {
     "voltage_ratio": {"warning": 1.0},
     # PLL angle error after lock, degrees
     "pll_steady_deg": {"note": 0.5, "warning": 2.0},
+    # spread of the back-EMF that a datasheet's Ke, Kv, kT, ψ imply, in % of the one used:
+    # kT is often printed hot or at rated current and Ke cold (magnets lose about 0.1 %/K),
+    # while a mixed-up convention is 41 % (RMS/peak) or 73 % (line/phase)
+    "bemf_spread_pct": {"note": 0.0, "warning": 10.0, "error": 25.0},
 }
 
 #: For each firmware constant: the design choice that moves its quantization (None: only the
@@ -162,6 +166,8 @@ def _constants(f: list, vendor: dict, unit: str) -> None:
 
 
 def _raw_rounding(f: list, n: dict, raw: dict) -> None:
+    """The firmware's parameter units: the motor's values are not design choices, so the
+    finding points at the inductance unit (LD/LQ in 10 µH) or at the firmware profile."""
     unit = n["conventions"]["inductance_unit"]
     for name in RAW_FIELDS:
         if name in n["raw"] or name not in raw:  # typed, or beyond the firmware: firmware.*
@@ -170,14 +176,43 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         section, key = path.split(".")
         si = n[section][key]
         exact = si * scale
+        finer = name in ("LD", "LQ") and unit == "10uH"
+        field = "conventions.inductance_unit" if finer else "profiles"
+        count = "1 µH" if name in ("LD", "LQ") and unit == "uH" else _PARAMETER_UNITS[name]
+        fix = {"code": "fix.inductance_unit" if finer else "fix.parameter_unit",
+               "params": {"unit": count}}
         if raw[name] == 0:
-            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", path, 0, name=name, path=path,
-                     si=si)
+            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name, path=path,
+                     si=si, fix=fix)
             continue
         pct = 100.0 * (raw[name] - exact) / exact
         _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
-                 f"vendor.raw.{name}", path, pct, name=name, value=raw[name], path=path, si=si,
-                 pct=pct)
+                 f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path=path, si=si,
+                 pct=pct, fix=fix)
+
+
+def _bemf_check(f: list, n: dict) -> None:
+    """Several of Ke, Kv, kT, ψ on one datasheet: how far apart their back-EMFs are."""
+    check = n.get("datasheet", {}).get("bemf_check")
+    if check is None:
+        return
+    spread = check["spread_pct"]
+    sev = grade(spread, THRESHOLDS["bemf_spread_pct"])
+    listed = ", ".join(f"{_SYMBOLS[s['field']]} {s['bemf_v']:.4g} V" for s in check["sources"])
+    _finding(f, sev, "bemf_spread", "datasheet.bemf_check.spread_pct", "datasheet.bemf_from",
+             spread, spread=spread, rpm=check["rated_speed_rpm"], listed=listed,
+             used=_SYMBOLS[check["used"]],
+             why={"code": f"bemf_spread.{sev}", "params": {}})
+
+
+#: Each Inovance raw parameter's unit (one count).
+_PARAMETER_UNITS = {"Voltage": "1 V", "Current": "0.01 A", "FullFreq01": "0.01 Hz",
+                    "FreqRated01": "0.01 Hz", "RsPm": "1 mΩ", "LD": "0.01 mH", "LQ": "0.01 mH",
+                    "BemfVolt": "0.1 V", "uDCFilter": "0.1 V"}
+#: The symbol a datasheet prints for each back-EMF source (the same in both languages).
+_SYMBOLS = {"datasheet.ke_v_per_krpm": "Ke", "datasheet.ke_v_s_per_rad": "Ke",
+            "datasheet.kv_rpm_per_v": "Kv", "datasheet.kt_nm_per_a": "kT",
+            "datasheet.psi_wb": "ψ"}
 
 
 def _pi(f: list, n: dict, pi: dict) -> None:
@@ -336,6 +371,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     unit = n["conventions"]["inductance_unit"]
     _constants(f, vendor, unit)
     _raw_rounding(f, n, raw)
+    _bemf_check(f, n)
     _pi(f, n, pi)
     _phase_margin(f, n, pi)
     _base_frequency(f, raw)
