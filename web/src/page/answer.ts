@@ -47,17 +47,18 @@ function profileChips(ctx: PanelContext, v: Vendor, again: () => void): HTMLElem
   return Object.entries(consts).map(([k, c]) => chip(k, `profiles.${v}.constants.${k}.value`, c.value, c.flags.some((f) => f === 'out_of_range' || f === 'saturate')));
 }
 
-/** The review in one line (the counts) and its errors and warnings (class `warnings`: empty when none). */
-function reviewSummary(ctx: PanelContext): HTMLElement {
+/** The review: its counts (a link to the panel) when there are only notes, else its errors and
+ * warnings under their counts (class `warnings`, empty when none). */
+function reviewParts(ctx: PanelContext): [HTMLElement | null, HTMLElement] {
   const all = allFindings(ctx);
   const serious = all.filter((f) => f.severity !== 'note');
   const listed = ctx.report !== null && serious.length > 0;
-  return h('div', { class: 'answer-review' },
-    // The counts once: in the list's title when there is a list.
+  return [
     listed ? null : h('a', { class: 'counts', href: '#panel-review', 'data-nav': 'review' }, `${t('answerReview')}: `, ctx.report ? reviewCounts(all) : '…'),
     h('div', { class: 'warnings' }, listed ? [
       h('strong', {}, `${t('p_review')}: `), h('a', { href: '#panel-review', 'data-nav': 'review', class: 'counts' }, reviewCounts(all)),
-      h('ul', { class: 'findings' }, serious.map(findingItem))] : []));
+      h('ul', { class: 'findings' }, serious.map(findingItem))] : []),
+  ];
 }
 
 /** Render the strip into `el`; `again` renders it once more (a profile's report arrived). */
@@ -71,13 +72,17 @@ export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => vo
       again();
     },
   }, VENDORS.map((x) => h('option', { value: x, selected: x === v }, t(`vd_${x}` as Key))));
+  const [counts, list] = reviewParts(ctx);
+  // The integers first, then why a firmware cannot hold the motor, then the review's errors and
+  // warnings: on a phone the integers and the review's counts fit the first screen.
   patch(el,
     h('div', { class: 'answer-head' },
       h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), pick),
-      reviewSummary(ctx)),
+      counts),
     h('div', { class: 'answer-ints', 'data-profile': v },
-      limitsBox(v, ctx.report?.firmware?.[v]),
       h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(ctx, v, again),
-        h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers')))),
+        h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers'))),
+      limitsBox(v, ctx.report?.firmware?.[v])),
+    list,
   );
 }

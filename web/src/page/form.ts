@@ -18,6 +18,12 @@ export function sourceField(e: ApiErr): string | null {
   return typeof source === 'string' ? source : null;
 }
 
+/** The other field of a conflict (two fields that set the same motor value): marked as well. */
+export function otherField(e: ApiErr): string | null {
+  const other = e.code === 'both_given' ? e.params?.other : undefined;
+  return typeof other === 'string' ? other : null;
+}
+
 export class InputForm {
   constructor(private root: HTMLElement, private session: ComputeSession) {
     // A shared link's units (&u=) win over the ones this browser chose last; both checked.
@@ -107,11 +113,12 @@ export class InputForm {
    */
   showErrors(): void {
     const { localErrors, remoteError, simFieldError, stateNotes } = this.session;
-    const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f);
+    const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f || otherField(e) === f);
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
       let msg = localErrors.get(f) ?? '';
-      if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
+      // A conflict's sentence names both fields itself; a raw value's names the field it came from.
+      if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f || otherField(remoteError) ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
       // A value from the link that could not be used: a note, not an error (the default is used).
       const note = msg ? '' : stateNotes.get(f) ?? '';
