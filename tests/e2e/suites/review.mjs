@@ -64,6 +64,7 @@ export default async function review(ctx) {
   });
 
   await check('review: Q calculator reads 0x8000, 40000 as Q15 and iq24', async () => {
+    await page.$eval('#panel-qcalc', (e) => e.scrollIntoView()); // its view (Tools) shown
     await page.selectOption('select[name="qcalc.mode"]', 'decode');
     await page.fill('input[name="qcalc.format"]', 'Q15');
     await page.fill('input[name="qcalc.raw"]', '0x8000');
