@@ -294,3 +294,16 @@ def test_no_finding_asks_to_change_the_motor(path):
     for x in r["review"]["findings"]:
         assert not x["field"].startswith("motor."), x
         assert x["label"] != x["field"] and chinese(x["label_zh"]), x
+
+
+def test_the_firmware_shipped_grades_the_others_limits_as_notes():
+    """The 28,000 rpm robot motor: a warning while Inovance is shipped; with TI shipped a note,
+    and the voltage headroom is the physical U_dc/√2, not Inovance's whole-volt limit."""
+    inp = json.loads((ROOT / "tests/golden/23_limit_robot_28krpm.json").read_text())["input"]
+    sev = {x["code"]: x["severity"] for x in report(inp)["review"]["findings"]}
+    assert sev["unrepresentable"] == "warning"
+    r = report({**inp, "conventions": {"firmware": "ti"}})
+    x = [x for x in r["review"]["findings"] if x["code"] == "unrepresentable"]
+    assert x[0]["severity"] == "note" and x[0]["field"] == "conventions.firmware"
+    assert x[0]["label"] == "Firmware you ship" and x[0]["label_zh"] == "所用固件"
+    assert r["review"]["headroom"]["limit_v"] == 24 / math.sqrt(2)

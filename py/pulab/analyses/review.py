@@ -40,9 +40,10 @@ SQRT3 = math.sqrt(3.0)
 SQRT2 = math.sqrt(2.0)
 
 SEVERITIES = ("error", "warning", "note")
-#: The form label (en, zh) of each input a finding may point at; ``profiles``: the firmware picker.
+#: The form label (en, zh) of each input a finding may point at.
 _LABELS = {fd.path: fd.label for fd in FIELDS if fd.label[0]}
-_LABELS["profiles"] = ("Firmware profile", "固件配置")
+#: The design choice behind what only the vendor's code decides: which firmware to ship.
+_FIRMWARE = "conventions.firmware"
 #: Lower bounds of each severity (|value| ≥ bound); docs/contract.md "Design review".
 THRESHOLDS = {
     # relative error of a raw integer or a PI integer (a rounding of the user's value), in %
@@ -135,8 +136,11 @@ def headroom(n: dict, vendor: dict) -> dict:
         w = 2.0 * math.pi * f
         return SQRT3 * math.hypot(m["rs_ohm"] * i + w * psi, w * m["lq_h"] * i)
 
-    # Without the firmware's own limit (it cannot hold this drive), the physical one: U_dc/√2.
-    limit = vendor["pm_maxout_vol"]["si"] if "pm_maxout_vol" in vendor else d["udc_v"] / SQRT2
+    # Inovance's own limit when it is the firmware shipped and holds this drive; else the
+    # physical one, U_dc/√2.
+    inovance = n.get("conventions", {}).get("firmware", "inovance") == "inovance"
+    limit = vendor["pm_maxout_vol"]["si"] if inovance and "pm_maxout_vol" in vendor \
+        else d["udc_v"] / SQRT2
     f_b = d["base_freq_hz"]
     bemf_fb = m["bemf_v"] * f_b / m["rated_freq_hz"]
     f_fw = limit / m["bemf_v"] * m["rated_freq_hz"]
@@ -156,11 +160,11 @@ def _constants(f: list, vendor: dict, unit: str) -> None:
         if "unit_uH" in res["flags"]:
             field = "conventions.inductance_unit"
         if {"wrap", "store"} & set(res["flags"]):
-            _finding(f, "error", "constant_wrap", key, field or "profiles", res["value"],
+            _finding(f, "error", "constant_wrap", key, field or _FIRMWARE, res["value"],
                      name=name, value=res["value"], ideal=res["ideal"],
                      why={"code": cost, "params": {"pct": res["error_pct"]}})
         else:
-            _finding(f, grade(res["error_pct"], q), "constant_error", key, field or "profiles",
+            _finding(f, grade(res["error_pct"], q), "constant_error", key, field or _FIRMWARE,
                      res["error_pct"], name=name, value=res["value"], pct=res["error_pct"],
                      ideal=res["ideal"], why={"code": cost, "params": {"pct": res["error_pct"]}})
 
@@ -177,7 +181,7 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         si = n[section][key]
         exact = si * scale
         finer = name in ("LD", "LQ") and unit == "10uH"
-        field = "conventions.inductance_unit" if finer else "profiles"
+        field = "conventions.inductance_unit" if finer else _FIRMWARE
         count = "1 µH" if name in ("LD", "LQ") and unit == "uH" else _PARAMETER_UNITS[name]
         fix = {"code": "fix.inductance_unit" if finer else "fix.parameter_unit",
                "params": {"unit": count}}
@@ -334,13 +338,15 @@ def _robust(f: list, loop: dict | None) -> None:
                  value, **params)
 
 
-def _firmware(f: list, firmware: dict) -> None:
+def _firmware(f: list, firmware: dict, shipped: str) -> None:
+    """A firmware that cannot hold the motor: a warning for the one shipped, a note for others."""
     for name, st in firmware.items():
         if st["representable"]:
             continue
         p = st["problems"]
         results = sorted({r for x in p for r in x["results"]})
-        _finding(f, "warning", "unrepresentable", f"firmware.{name}", "profiles", name,
+        _finding(f, "warning" if name == shipped else "note", "unrepresentable",
+                 f"firmware.{name}", _FIRMWARE, name,
                  profile=name, fields=", ".join(x["field"] for x in p),
                  results=", ".join(results), advice={"code": p[0]["code"] + "_advice"
                  if p[0]["code"].startswith("limit.") else "limit.constant_advice",
@@ -379,7 +385,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     _voltage(f, h, n)
     _pll(f, sim)
     _robust(f, loop)
-    _firmware(f, firmware or {})
+    _firmware(f, firmware or {}, n["conventions"]["firmware"])
     if unit == "uH":
         _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":
