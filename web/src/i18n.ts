@@ -2,6 +2,7 @@
 // feature's in its own file under i18n/ (a new feature adds a file and one line below).
 import qcalc from './i18n/qcalc';
 import screens from './i18n/screens';
+import datasheet from './i18n/datasheet';
 
 export type Lang = 'en' | 'zh';
 
@@ -417,13 +418,14 @@ const page = {
   'o.datasheet.kt_current.peak': 'A peak',
 };
 
-const en = { ...page, ...qcalc.en, ...screens.en };
+const en = { ...page, ...qcalc.en, ...screens.en, ...datasheet.en };
 
 export type Key = keyof typeof en;
 
 const zh: Record<Key, string> = {
   ...qcalc.zh,
   ...screens.zh,
+  ...datasheet.zh,
   title: 'pu-lab',
   subtitle: '汇川 C2000 永磁同步电机固件的标幺化与 Q 格式定标',
   preset: '预设',

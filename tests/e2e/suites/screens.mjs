@@ -100,6 +100,10 @@ export default async function screens(ctx) {
       assert(shown.length === names.length && bad.length === 0, `${v}: ${shown.length} of ${names.length} shown, differing ${bad}`);
       const limited = !want.firmware[v].representable;
       assert((await p.$('section.answer .firmware-limits')) !== null === limited, `${v}: limits box ${limited ? 'missing' : 'shown'}`);
+      // the pick is the input's conventions.firmware: the form follows, the review grades by it
+      assert((await p.inputValue('select[name="conventions.firmware"]')) === v, `${v}: form field`);
+      const rv = cpython({ ...robot.input, conventions: { ...robot.input.conventions, firmware: v } }).review.counts;
+      await p.waitForFunction((c) => (document.querySelector('section.answer .counts')?.textContent ?? '').includes(`${c.error} errors, ${c.warning} warnings, ${c.note} notes`), rv, { timeout: 10_000 });
     }
     await p.screenshot({ path: join(SHOTS, 'screens-profile-microchip.png') });
     // the choice is remembered

@@ -8,18 +8,11 @@ import type { PanelContext } from '../panels/panel';
 import { limitsBox } from '../panels/limits';
 import { VENDORS, profilesFor, type Vendor } from '../panels/vendors';
 import { allFindings, findingItem, reviewCounts } from '../panels/review';
-import { load, store } from './storage';
 
-const PROFILE_KEY = 'pulab.profile';
-
-let profile: Vendor = ((): Vendor => {
-  const v = load(PROFILE_KEY);
-  return (VENDORS as readonly string[]).includes(v ?? '') ? (v as Vendor) : 'inovance';
-})();
-
-/** The profile the reader ships. */
-export function shippedProfile(): Vendor {
-  return profile;
+/** The firmware the reader ships: the input's `conventions.firmware` (the review grades by it). */
+export function shippedProfile(ctx: Pick<PanelContext, 'input'>): Vendor {
+  const v = ctx.input.conventions?.firmware;
+  return (VENDORS as readonly unknown[]).includes(v) ? (v as Vendor) : 'inovance';
 }
 
 function chip(name: string, path: string, value: number | undefined, bad = false): HTMLElement {
@@ -61,23 +54,20 @@ function reviewParts(ctx: PanelContext): [HTMLElement | null, HTMLElement] {
   ];
 }
 
-/** Render the strip into `el`; `again` renders it once more (a profile's report arrived). */
-export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => void): void {
-  const v = profile;
-  const pick = h('select', {
+/** Render the strip into `el`; `again` renders it once more (a profile's report arrived); `pick`
+ * sets the shipped firmware in the input. */
+export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => void, pick: (v: Vendor) => void): void {
+  const v = shippedProfile(ctx);
+  const picker = h('select', {
     name: 'answer.profile', 'aria-label': t('answerProfile'),
-    onchange: (ev: Event) => {
-      profile = (ev.target as HTMLSelectElement).value as Vendor;
-      store(PROFILE_KEY, profile);
-      again();
-    },
+    onchange: (ev: Event) => pick((ev.target as HTMLSelectElement).value as Vendor),
   }, VENDORS.map((x) => h('option', { value: x, selected: x === v }, t(`vd_${x}` as Key))));
   const [counts, list] = reviewParts(ctx);
   // The integers first, then why a firmware cannot hold the motor, then the review's errors and
   // warnings: on a phone the integers and the review's counts fit the first screen.
   patch(el,
     h('div', { class: 'answer-head' },
-      h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), pick),
+      h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), picker),
       counts),
     h('div', { class: 'answer-ints', 'data-profile': v },
       h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(ctx, v, again),

@@ -8,6 +8,7 @@ import { docTarget, docsAvailable } from '../panels/docs';
 import { allFindings, markFindings } from '../panels/review';
 import { viewsFor, type View } from '../panels/views';
 import { renderAnswer } from './answer';
+import type { Vendor } from '../panels/vendors';
 import { closeInputs, openInputs, wireDrawer } from './drawer';
 import type { ComputeSession } from './session';
 
@@ -182,11 +183,13 @@ export class Layout {
   /** Render every panel (or only those in `only`), the review's findings at the top (on a full
    * render or with the review), and the marks at the values they concern. */
   private lastCtx: PanelContext | null = null;
+  /** The answer strip's firmware picker (the page sets it into the input). */
+  onPickProfile: (v: Vendor) => void = () => undefined;
 
   /** The answer strip (page/answer.ts), with the last context; again when a profile's report arrives. */
   private renderAnswer = (): void => {
     const el = this.root.querySelector<HTMLElement>('section.answer');
-    if (el && this.lastCtx) renderAnswer(el, this.lastCtx, this.renderAnswer);
+    if (el && this.lastCtx) renderAnswer(el, this.lastCtx, this.renderAnswer, (v) => this.onPickProfile(v));
   };
 
   renderPanels(ctx: PanelContext, only?: PanelId[]): void {
