@@ -4,12 +4,13 @@
 // data-numbers and the stale note while typing; sweep boundaries as typed decimals; one inductance
 // unit; a datasheet conflict marks both fields; a blank datasheet start.
 // Run alone: node tests/e2e/run.mjs screens   (E2E_NO_BUILD=1 to reuse dist/)
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 const WIDTHS = [[390, 844], [900, 900], [1366, 768]];
 
 export default async function screens(ctx) {
-  const { check, assert, newPage, subSrv, ready, waitValue, cpython, golden, SHOTS } = ctx;
+  const { check, assert, newPage, subSrv, ready, waitValue, cpython, golden, ROOT, SHOTS } = ctx;
   const seed = golden('01_seed_motor.json');
   const link = (inp) => `${subSrv.url}#in=${encodeURIComponent(JSON.stringify(inp))}`;
   /** The rectangle of the first element matching `sel` (null when absent or not rendered). */
@@ -193,6 +194,55 @@ export default async function screens(ctx) {
     await page.selectOption('select[name="preset"]', 'seed');
     await waitValue(page, 'vendor.Rpm.value', 15022);
   });
+
+  // Five real motors (tests/golden/datasheets, hand calculations by a pulab-free oracle): typed into
+  // a blank form as the datasheet prints them, inductances in mH, Ts in µs.
+  const DATASHEETS = ['siemens_1ft7044_ak7', 'rexroth_mhd041a_144', 'rexroth_mhp112a_024', 'maxon_ec45flat_50w_24v', 'maxon_ec45flat_70w_411812'];
+  const typed = (path, v) => String(Number((/_h$/.test(path) ? v * 1e3 : path === 'drive.ts_s' ? v * 1e6 : v).toPrecision(12)));
+  const flat = (o, p = '', out = []) => {
+    if (o && typeof o === 'object' && !Array.isArray(o)) for (const [k, v] of Object.entries(o)) flat(v, p ? `${p}.${k}` : k, out);
+    else if (typeof o === 'number') out.push([p, o]);
+    return out;
+  };
+  const same = (a, e) => (Number.isInteger(e) ? a === e : Math.abs(a - e) <= 1e-9 * Math.max(Math.abs(a), Math.abs(e)));
+  for (const name of DATASHEETS) {
+    await check(`screens: ${name} typed from a blank datasheet gives the hand calculation, every firmware's integers or its limits`, async () => {
+      const g = JSON.parse(readFileSync(join(ROOT, `tests/golden/datasheets/${name}.json`), 'utf8'));
+      await page.click('button.from-datasheet');
+      await page.selectOption('select[data-unit-for="datasheet.l_line_h"]', 'mH');
+      for (const [section, fields] of Object.entries(g.input)) {
+        for (const [k, v] of Object.entries(fields)) {
+          const path = `${section}.${k}`;
+          if (typeof v === 'string') await page.selectOption(`select[name="${path}"]`, v);
+          else await page.fill(`input[name="${path}"]`, typed(path, v));
+        }
+      }
+      await page.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 15_000 });
+      const shown = new Map(await page.$$eval('[data-key][data-value]', (els) => els.map((e) => [e.dataset.key, JSON.parse(e.dataset.value)])));
+      const want = flat(Object.fromEntries(Object.entries(g.expected).filter(([k]) => !['profiles', 'firmware.inovance'].includes(k))));
+      const hits = want.filter(([k]) => shown.has(k));
+      const bad = hits.filter(([k, e]) => !same(shown.get(k), e)).map(([k, e]) => `${k}: page ${shown.get(k)}, by hand ${e}`);
+      assert(hits.length >= 40 && bad.length === 0, `${hits.length} compared; ${bad.slice(0, 5).join('; ')}`);
+      // Inovance: the problems by hand, or its integers
+      const limits = await page.$$eval('section.answer .firmware-limits [data-field]', (els) => els.map((e) => e.dataset.field));
+      assert(JSON.stringify(limits) === JSON.stringify(g.expected['firmware.inovance'].problems.map((x) => x.field)), `Inovance limits ${limits}`);
+      for (const [v, consts] of Object.entries(g.expected.profiles)) {
+        await page.selectOption('select[name="answer.profile"]', v);
+        const first = Object.keys(consts)[0];
+        await page.waitForFunction(([p, x]) => {
+          const e = document.querySelector(`section.answer [data-mirror-of="${p}"][data-value]`);
+          return e && JSON.parse(e.dataset.value) === x;
+        }, [`profiles.${v}.constants.${first}.value`, consts[first].value], { timeout: 15_000 });
+        const chips = new Map(await page.$$eval('section.answer [data-mirror-of][data-value]', (els) => els.map((e) => [e.dataset.mirrorOf, JSON.parse(e.dataset.value)])));
+        const off = Object.entries(consts).filter(([k, c]) => chips.get(`profiles.${v}.constants.${k}.value`) !== c.value);
+        assert(off.length === 0, `${v}: ${off.map(([k, c]) => `${k} page ${chips.get(`profiles.${v}.constants.${k}.value`)} by hand ${c.value}`).join(', ')}`);
+      }
+      await page.selectOption('select[name="answer.profile"]', 'inovance');
+      await page.screenshot({ path: join(SHOTS, `screens-datasheet-${name}.png`) });
+      console.log(`      ${hits.length} numbers and ${Object.keys(g.expected.profiles).length} firmware equal the hand calculation`);
+    });
+  }
+  await page.selectOption('select[data-unit-for="motor.ld_h"]', 'µH');
 
   await check('screens: sweep boundaries print the decimal a user would type, the exact double in data-value', async () => {
     await page.$eval('#panel-sweep', (e) => e.scrollIntoView());
