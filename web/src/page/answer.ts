@@ -7,7 +7,7 @@ import { VENDOR_NAMES } from '../report-types';
 import type { PanelContext } from '../panels/panel';
 import { limitsBox } from '../panels/limits';
 import { VENDORS, profilesFor, type Vendor } from '../panels/vendors';
-import { allFindings, findingItem, reviewCounts } from '../panels/review';
+import { allFindings, reviewCounts } from '../panels/review';
 
 /** The firmware the reader ships: the input's `conventions.firmware` (the review grades by it). */
 export function shippedProfile(ctx: Pick<PanelContext, 'input'>): Vendor {
@@ -40,18 +40,16 @@ function profileChips(ctx: PanelContext, v: Vendor, again: () => void): HTMLElem
   return Object.entries(consts).map(([k, c]) => chip(k, `profiles.${v}.constants.${k}.value`, c.value, c.flags.some((f) => f === 'out_of_range' || f === 'saturate')));
 }
 
-/** The review: its counts (a link to the panel) when there are only notes, else its errors and
- * warnings under their counts (class `warnings`, empty when none). */
-function reviewParts(ctx: PanelContext): [HTMLElement | null, HTMLElement] {
+/**
+ * The review in one line, a link to its panel: plain with notes only; with errors or warnings
+ * marked as a warning (class `warnings`, empty otherwise). The findings themselves are listed once,
+ * in the review panel (first in the first view, right below).
+ */
+function reviewLine(ctx: PanelContext): HTMLElement[] {
   const all = allFindings(ctx);
-  const serious = all.filter((f) => f.severity !== 'note');
-  const listed = ctx.report !== null && serious.length > 0;
-  return [
-    listed ? null : h('a', { class: 'counts', href: '#panel-review', 'data-nav': 'review' }, `${t('answerReview')}: `, ctx.report ? reviewCounts(all) : '…'),
-    h('div', { class: 'warnings' }, listed ? [
-      h('strong', {}, `${t('p_review')}: `), h('a', { href: '#panel-review', 'data-nav': 'review', class: 'counts' }, reviewCounts(all)),
-      h('ul', { class: 'findings' }, serious.map(findingItem))] : []),
-  ];
+  const serious = ctx.report !== null && all.some((f) => f.severity !== 'note');
+  const line = h('a', { class: 'counts', href: '#panel-review', 'data-nav': 'review' }, `${t('answerReview')}: `, ctx.report ? reviewCounts(all) : '…');
+  return serious ? [h('div', { class: 'warnings' }, line)] : [line, h('div', { class: 'warnings' })];
 }
 
 /** Render the strip into `el`; `again` renders it once more (a profile's report arrived); `pick`
@@ -62,17 +60,14 @@ export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => vo
     name: 'answer.profile', 'aria-label': t('answerProfile'),
     onchange: (ev: Event) => pick((ev.target as HTMLSelectElement).value as Vendor),
   }, VENDORS.map((x) => h('option', { value: x, selected: x === v }, t(`vd_${x}` as Key))));
-  const [counts, list] = reviewParts(ctx);
-  // The integers first, then why a firmware cannot hold the motor, then the review's errors and
-  // warnings: on a phone the integers and the review's counts fit the first screen.
+  // The picker and the review's line, the integers, then why the firmware cannot hold the motor.
   patch(el,
     h('div', { class: 'answer-head' },
       h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), picker),
-      counts),
+      reviewLine(ctx)),
     h('div', { class: 'answer-ints', 'data-profile': v },
       h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(ctx, v, again),
         h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers'))),
       limitsBox(v, ctx.report?.firmware?.[v])),
-    list,
   );
 }
