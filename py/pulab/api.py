@@ -246,12 +246,14 @@ def batch_json(text: str) -> str:
 
 
 def trace_json(text: str) -> str:
-    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q",
-    "define": ["NAME[=VALUE]", …]}`` (``define`` as a compiler's ``-D``).
+    """The "Your code" tracer: ``{"code", "target", "entry", "set": {NAME: VALUE}, "global_q",
+    "define": ["NAME[=VALUE]", …], "zero_unset": bool}`` (``define`` as a compiler's ``-D``,
+    ``entry`` the function to run).
 
     Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",
     "message_zh"}`` with ``line`` and ``column`` when the code is at fault, and
-    ``inputs`` whenever the code compiled (so the page can offer input fields).
+    ``inputs`` whenever the code compiled (so the page can offer input fields) and
+    ``functions`` whenever it parsed (so the page can offer the entry functions).
 
     >>> r = json.loads(trace_json('{"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}}'))
     >>> r["vars"]["x"]["value"], r["target"]
@@ -260,30 +262,45 @@ def trace_json(text: str) -> str:
     "1:8: expected a value, got ';'"
     """
     from .ctrace import TraceError, compile_code, trace_checked
+    from .ctrace.parser import parse as parse_c
     checked = None
+    code = ""
     try:
         req = parse(text)
         if not isinstance(req, dict):
             raise InputError("input", code="not_object", got=shown(req))
-        unknown = set(req) - {"code", "target", "set", "global_q", "define"}
+        unknown = set(req) - {"code", "target", "set", "global_q", "define", "entry",
+                              "zero_unset"}
         if unknown:
             raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
-                             expected="code, target, set, global_q, define")
+                             expected="code, target, entry, set, global_q, define, zero_unset")
+        zero_unset = req.get("zero_unset", False)
+        if not isinstance(zero_unset, bool):
+            raise InputError("zero_unset", f"must be true or false, got {shown(zero_unset)}")
         defines = req.get("define") or []
         if not isinstance(defines, list):
             raise InputError("define", "must be a list of NAME[=VALUE] texts")
         sets = req.get("set") or {}
         if not isinstance(sets, dict):
             raise InputError("set", code="not_object", got=shown(sets))
-        checked = compile_code(req.get("code", ""), req.get("target", "c28x"), defines,
-                               req.get("global_q"))
-        return json.dumps(trace_checked(checked, sets, req.get("global_q")), allow_nan=False)
+        code = req.get("code", "")
+        checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
+                               req.get("entry") or None)
+        return json.dumps(trace_checked(checked, sets, req.get("global_q"), zero_unset),
+                          allow_nan=False)
     except InputError as e:
         reply = json.loads(_fail(e))
         if isinstance(e, TraceError):
             reply.update(line=e.line, column=e.column)
         if checked is not None:
             reply["inputs"] = checked.inputs
+            reply["functions"] = list(checked.functions)
+        elif isinstance(code, str) and e.field in ("entry", "set") or (
+                isinstance(e, TraceError) and e.field.startswith("set.")):
+            try:  # the code parses: offer its functions so the user can pick one
+                reply["functions"] = list(parse_c(code).functions)
+            except InputError:
+                pass
         return json.dumps(reply)
 
 
