@@ -224,12 +224,13 @@ class Evaluator:
                 sym = var.sym
                 t, key = sym.ctype, sym.key
                 if init is None:
-                    if key in self.inputs:
-                        v = self.inputs[key]
-                        self.mem[key] = v
-                        self.step(s, code, key, v, t, spelling=sym.spelling, input=True)
-                    elif key in self.mem and self.active:
-                        del self.mem[key]  # a local declared again (in a loop) has no value
+                    for path, lt, spelling in leaves(key, t, sym.spelling):
+                        if path in self.inputs:
+                            v = self.inputs[path]
+                            self.mem[path] = v
+                            self.step(s, code, path, v, lt, spelling=spelling, input=True)
+                        elif self.active:
+                            self.mem.pop(path, None)  # a local declared again has no value
                     continue
                 if isinstance(t, (StructT, ArrT)):
                     self.aggregate(key, t, init)

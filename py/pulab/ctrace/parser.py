@@ -835,6 +835,8 @@ class _Parser:
             if self.is_op("(") or self.is_op("["):
                 raise _fail(self.peek(), f"typedef {name.text}: function and array typedefs "
                                          "are not supported")
+            if isinstance(base, StructDef) and base.name.startswith("<"):
+                base.name = name.text  # typedef struct { … } NAME: messages call it NAME
             if pointer and isinstance(base, StructDef):
                 self.aliases[name.text] = Ptr(base)
             else:
