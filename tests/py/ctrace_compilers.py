@@ -165,17 +165,18 @@ def _compile_and_run(chunks: list, target: str, workdir: str, index: int) -> lis
     return _run_program(_program(chunks, target), chunks, target, workdir, index)
 
 
-def _run_program(text: str, chunks: list, target: str, workdir: str, index: int) -> list:
+def _run_program(text: str, chunks: list, target: str, workdir: str, index: int,
+                 flags: tuple = ()) -> list:
     src = os.path.join(workdir, f"p{index}.c")
     exe = os.path.join(workdir, f"p{index}.{'elf' if target == 'avr' else 'out'}")
     with open(src, "w") as f:
         f.write(text)
     if target == "avr":
-        cmd = ["avr-gcc", "-mmcu=atmega2560", "-Os", "-fwrapv", "-std=gnu11", "-w", src,
-               "-o", exe]
+        cmd = ["avr-gcc", "-mmcu=atmega2560", "-Os", "-fwrapv", "-std=gnu11", "-w", *flags,
+               src, "-o", exe]
     else:
-        cmd = ["gcc", "-m32", "-O1", "-fwrapv", "-funsigned-char", "-std=gnu11", "-w", src,
-               "-o", exe]
+        cmd = ["gcc", "-m32", "-O1", "-fwrapv", "-funsigned-char", "-std=gnu11", "-w", *flags,
+               src, "-o", exe]
     cc = subprocess.run(cmd, capture_output=True, text=True)
     if cc.returncode:
         raise RuntimeError(f"{cmd[0]} failed on {src}:\n{cc.stderr[:4000]}")
@@ -238,7 +239,8 @@ class Unit:
 
     ``code`` is pasted at file scope unchanged; ``entry`` is called once per vector with
     ``params`` [(C spelling, name)]: a ``T *`` parameter gets the address of a zeroed local
-    ``T`` (``name.FIELD`` or ``*name`` inputs and outputs address it), any other its value.
+    ``T`` (``name.FIELD`` or ``*name`` inputs and outputs address it), ``T [N]`` a zeroed
+    local array (``name[i]``), any other its value.
     ``inputs``/``outputs`` are [(spelling, name)]; names are ``return``, parameter names,
     ``p.FIELD``, ``*p`` and globals; ``prelude`` is C placed before the code (the vendor
     type names and IQmath the code expects from headers it does not paste).
@@ -257,15 +259,16 @@ def _unit_c_name(unit: Unit, name: str) -> str:
     """The C expression for an input/output name inside the driver."""
     if name == "return":
         return "ret"
-    pointers = {n for s, n in unit.params if s.rstrip().endswith("*")}
-    scalars = {n for s, n in unit.params if not s.rstrip().endswith("*")}
+    pointers = {n for s, n in unit.params if s.rstrip()[-1:] in "*]"}
+    scalars = {n for s, n in unit.params if s.rstrip()[-1:] not in "*]"}
     if name.startswith("*") and name[1:] in pointers:
         return f"o_{name[1:]}"
-    head, dot, rest = name.partition(".")
+    head = re.match(r"\w+", name)[0]
+    rest = name[len(head):]
     if head in pointers:
-        return f"o_{head}{dot}{rest}"
+        return f"o_{head}{rest}"
     if head in scalars:
-        return f"v_{head}{dot}{rest}"
+        return f"v_{head}{rest}"
     return name
 
 
@@ -280,7 +283,11 @@ def _unit_source(unit: Unit, vectors: list, target: str) -> str:
         rows.append("{" + ", ".join(vals or ["0"]) + "}")
     decls, args = [], []
     for spelling, name in unit.params:
-        if spelling.rstrip().endswith("*"):
+        if spelling.rstrip().endswith("]"):  # T p[N]: an array of N
+            base, _, size = spelling.rstrip()[:-1].rpartition("[")
+            decls.append(f"{base} o_{name}[{size}]; memset(o_{name}, 0, sizeof o_{name});")
+            args.append(f"o_{name}")
+        elif spelling.rstrip().endswith("*"):
             base = spelling.rstrip()[:-1]
             decls.append(f"{base} o_{name}; memset(&o_{name}, 0, sizeof o_{name});")
             args.append(f"&o_{name}")
@@ -324,8 +331,9 @@ static long iq_mpy(long a, long b, int q) { return (long)(((long long)a * (long 
 """ + "".join(f"#define _IQ{q}mpy(a, b) iq_mpy((a), (b), {q})\n" for q in range(1, 31))
 
 
-def run_unit(unit: Unit, vectors: list, target: str) -> list:
-    """Final values of ``unit.outputs`` for each vector: a list of {name: value}."""
+def run_unit(unit: Unit, vectors: list, target: str, flags: tuple = ()) -> list:
+    """Final values of ``unit.outputs`` for each vector: a list of {name: value};
+    ``flags`` go to the compiler (``-D``, ``-idirafter`` for headers the code names)."""
     io = _AVR_IO if target == "avr" else _HOST_IO
     init = "UCSR0A = 1 << U2X0; UBRR0 = 0; UCSR0B = 1 << TXEN0;" if target == "avr" else ""
     end = "cli(); sleep_cpu();" if target == "avr" else ""
@@ -337,7 +345,7 @@ def run_unit(unit: Unit, vectors: list, target: str) -> list:
             text = (f"{UNIT_PRELUDE}{io}{_PUT_HEX}{_unit_source(unit, chunk, target)}\n"
                     f"int main(void) {{ {init} case_0(); {end} return 0; }}\n")
             out += _run_program(text, [(_UnitOutputs(unit.outputs), chunk)], target, d,
-                                start)
+                                start, flags)
     return out
 
 

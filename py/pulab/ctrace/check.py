@@ -38,7 +38,7 @@ from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStm
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
-__all__ = ["check", "Checked", "Symbol", "StructT", "PtrT", "ArrT", "VOID", "leaves",
+__all__ = ["check", "Checked", "Symbol", "StructT", "PtrT", "ArrT", "VOID", "leaves", "pointee",
            "MAX_ELEMENTS", "MAX_ANALYSIS"]
 
 #: Larger arrays (and objects with more integers) are refused.
@@ -58,10 +58,12 @@ class StructT:
 
 
 class PtrT:
-    __slots__ = ("to",)
+    """Pointer to ``to``; ``n`` the length of the array a parameter ``T p[N]`` points into."""
 
-    def __init__(self, to) -> None:
-        self.to = to
+    __slots__ = ("to", "n")
+
+    def __init__(self, to, n: int | None = None) -> None:
+        self.to, self.n = to, n
 
     def __eq__(self, other) -> bool:
         return isinstance(other, PtrT) and _same(self.to, other.to)
@@ -188,6 +190,7 @@ class _Checker:
         self.used_keys: set = set()
         self.function: Function | None = None
         self.functions: dict = {}
+        self.broken: dict = {}  # function name -> the TraceError its definition raised
         self.arrays: dict = {}
 
     # -- names and types
@@ -198,9 +201,18 @@ class _Checker:
                 return sym
         return None
 
+    def refused(self, name: str, node) -> None:
+        """Raise the error of a definition outside the subset, at its use."""
+        found = self.program.refused.get(name)
+        if found is not None:
+            err = found[0]
+            raise TraceError(node.line, node.column, f"{name} (at {err.line}:{err.column}) is "
+                             f"outside the subset: {err.reason}")
+
     def symbol(self, var: Var) -> Symbol:
         sym = self.lookup(var.name)
         if sym is None:
+            self.refused(var.name, var)
             raise TraceError(var.line, var.column, f"{var.name} is not declared (declare it "
                              f"with its type, e.g. 'Uint16 {var.name};')")
         return sym
@@ -214,7 +226,13 @@ class _Checker:
             if isinstance(to, PtrT):
                 raise TraceError(node.line, node.column, "pointers to pointers are not "
                                  "supported")
-            return PtrT(to)
+            n = None
+            if desc.size is not None:
+                n = constant_value(desc.size, "an array size")
+                if not 1 <= n <= MAX_ELEMENTS:
+                    raise TraceError(desc.size.line, desc.size.column, f"array of {n} "
+                                     f"elements: at most {MAX_ELEMENTS} integers per object")
+            return PtrT(to, n)
         if isinstance(desc, Arr):
             if desc.size is None:
                 raise TraceError(node.line, node.column, "an array needs a size or an "
@@ -472,6 +490,7 @@ class _Checker:
             return self.long
         f = self.functions.get(e.name)
         if f is None:
+            self.refused(e.name, e)
             known = ", ".join(self.program.functions) or "none"
             raise TraceError(e.line, e.column, f"unknown function {e.name}() (functions of "
                              f"the code: {known}; IQmath: _IQmpy, _IQNmpy, __IQmpy, _IQsat, "
@@ -763,6 +782,10 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         ``entry`` names no function of the code (field ``entry``).
     """
     c = _Checker(program, target)
+    if entry in program.refused or (entry is None and program.refused):
+        # without an entry every statement runs: the first one outside the subset is the error
+        raise program.refused[entry][0] if entry is not None else \
+            next(iter(program.refused.values()))[0]
     if entry is not None and entry not in program.functions:
         known = ", ".join(program.functions) or "none"
         raise InputError("entry", f"no function {entry} in the code (functions: {known})")
@@ -775,9 +798,38 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
     for name, node in program.functions.items():
         c.functions[name] = Function(node, "" if name == entry else f"{name}:")
     for f in c.functions.values():
-        c.signature(f, f.name == entry)
+        try:
+            c.signature(f, f.name == entry)
+        except TraceError as err:
+            if f.name == entry:
+                raise
+            c.broken[f.name] = err
     for f in c.functions.values():
-        c.body(f)
+        if f.name in c.broken:
+            continue
+        try:
+            c.body(f)
+        except TraceError as err:
+            # A function the entry never calls may use what the subset lacks.
+            if f.name == entry or entry is None:
+                raise
+            c.broken[f.name] = err
+            c.scopes[1:] = []
+            c.function = None
+    for name, err in c.broken.items():
+        program.refused[name] = (err, True)
+        del c.functions[name]
+    calls = _calls_of(c.functions[entry].node.body) if entry is not None else set()
+    seen: set = set()
+    while calls - seen:  # a broken function the entry reaches is an error at its call
+        name = (calls - seen).pop()
+        seen.add(name)
+        if name in program.refused and program.refused[name][1]:
+            err = program.refused[name][0]
+            raise TraceError(err.line, err.column, f"{name} (called from {entry}) is outside "
+                             f"the subset: {err.reason}")
+        if name in c.functions:
+            calls |= _calls_of(c.functions[name].node.body)
     # User-facing integers: globals and, for an entry, its parameters, the objects its
     # pointer parameters point to (p.FIELD, *out) and its locals.
     symbols: dict = {}
@@ -798,8 +850,10 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
     if f is not None:
         for p in f.params:
             if isinstance(p.ctype, PtrT):
-                path = p.name if isinstance(p.ctype.to, StructT) else f"*{p.name}"
-                add(path, p.ctype.to, p.spelling, p.line, p.column, False, True)
+                path, t, _ = pointee(p)
+                add(path, t, p.spelling, p.line, p.column, False, True)
+                if isinstance(t, ArrT):
+                    objects[path] = t.n
             else:
                 add(p.key, p.ctype, p.spelling, p.line, p.column, False, True)
         for sym in _entry_locals(f.node.body):
@@ -814,8 +868,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
     if f is not None:
         for p in f.params:  # every integer parameter is an input, in order
             if isinstance(p.ctype, PtrT):
-                analysis.pointers[p.key] = p.name if isinstance(p.ctype.to, StructT) \
-                    else f"*{p.name}"
+                analysis.pointers[p.key] = pointee(p)[2]
             elif isinstance(p.ctype, CType):
                 analysis.read(p.key, p.ctype, set())
                 assigned.add(p.key)
@@ -823,6 +876,42 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         analysis.returns = []
         analysis.block(f.node.body.statements, assigned)
     return Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
+
+
+def pointee(p: Symbol) -> tuple:
+    """The object an entry function's pointer parameter points to: (its path, its type, the
+    pointer's value) — ``p`` for a struct, ``*p`` for an integer, ``p[0]…`` for ``T p[N]``."""
+    t = p.ctype
+    if t.n is not None:
+        return p.name, ArrT(t.to, t.n), f"{p.name}[0]"
+    path = p.name if isinstance(t.to, StructT) else f"*{p.name}"
+    return path, t.to, path
+
+
+def _calls_of(node) -> set:
+    """Names of the functions called anywhere under ``node``."""
+    out: set = set()
+    stack = [node]
+    while stack:
+        n = stack.pop()
+        if isinstance(n, Call) and n.func is not None:
+            out.add(n.name)
+        elif isinstance(n, Call) and n.q is None and n.name not in ("_IQmpy", "_IQsat",
+                                                                      "__IQsat"):
+            out.add(n.name)
+        if isinstance(n, (list, tuple)):
+            stack.extend(n)
+        elif hasattr(n, "__slots__"):
+            for slot in _all_slots(type(n)):
+                if slot not in ("ctype", "operand_type", "sym", "func", "flat"):
+                    v = getattr(n, slot, None)
+                    if isinstance(v, (list, tuple)) or hasattr(v, "__slots__"):
+                        stack.append(v)
+    return out
+
+
+def _all_slots(cls) -> tuple:
+    return tuple(s for k in cls.__mro__ for s in getattr(k, "__slots__", ()))
 
 
 def _entry_locals(body) -> list:

@@ -36,8 +36,8 @@ Examples
 
 from __future__ import annotations
 
-from ..fixedpoint.cint import CInt, CType, trunc_div, wrap_to
-from .check import ArrT, Checked, PtrT, StructT, VOID, leaves
+from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
+from .check import ArrT, Checked, PtrT, StructT, VOID, leaves, pointee
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
                      Index, InitList, Jump, Logical, Loop, Member, Num, Return, Unary, Var)
@@ -185,9 +185,9 @@ class Evaluator:
             inputs = self.inputs
             for p in f.params:
                 if isinstance(p.ctype, PtrT):
-                    obj = p.name if isinstance(p.ctype.to, StructT) else f"*{p.name}"
-                    self.mem[p.key] = obj
-                    given = leaves(obj, p.ctype.to, p.spelling)
+                    obj, t, value = pointee(p)
+                    self.mem[p.key] = value
+                    given = leaves(obj, t, p.spelling)
                 else:
                     given = leaves(p.key, p.ctype, p.spelling)
                 for path, t, spelling in given:
@@ -357,7 +357,7 @@ class Evaluator:
     @staticmethod
     def store(value: int, ctype) -> tuple:
         """Convert to ``ctype`` as an assignment does; flag a changed value."""
-        w = wrap_to(value, ctype)
+        w = convert(value, ctype)
         return w, (["conversion"] if w != value else [])
 
     # -- places (lvalues): the path of the object an expression designates
@@ -581,8 +581,8 @@ class Evaluator:
         for a, p in zip(e.args, f.params):
             v = self.eval(a)
             if isinstance(p.ctype, CType):
-                w = wrap_to(v, p.ctype)
-                if w != v and "conversion" not in flags:
+                w, conv = self.store(v, p.ctype)
+                if conv and "conversion" not in flags:
                     flags.append("conversion")
                 v = w
             args.append(v)

@@ -195,12 +195,12 @@ class StructDef:
 
 
 class Ptr:
-    """Type descriptor: pointer to ``to``."""
+    """Type descriptor: pointer to ``to``; ``size`` the N of a parameter written ``T p[N]``."""
 
-    __slots__ = ("to",)
+    __slots__ = ("to", "size")
 
-    def __init__(self, to) -> None:
-        self.to = to
+    def __init__(self, to, size=None) -> None:
+        self.to, self.size = to, size
 
 
 class Arr:
@@ -310,13 +310,17 @@ class Program:
     """Parsed code: ``statements`` (outside functions), ``functions`` (name → FuncDef, in
     definition order), ``notes`` (name → QNote), ``global_q`` from ``#define``."""
 
-    __slots__ = ("source", "statements", "notes", "global_q", "unresolved", "functions")
+    __slots__ = ("source", "statements", "notes", "global_q", "unresolved", "functions",
+                 "refused")
 
     def __init__(self, source: str, statements: list, notes: dict, global_q: int | None,
-                 functions: dict | None = None) -> None:
+                 functions: dict | None = None, refused: dict | None = None) -> None:
         self.source, self.statements, self.notes, self.global_q = source, statements, notes, \
             global_q
         self.functions = functions or {}
+        #: name -> (TraceError, is a function) of each file-scope definition outside the
+        #: subset (the error is raised where the name is used)
+        self.refused = refused or {}
 
 
 def _fail(tok: Token, message: str) -> TraceError:
@@ -395,6 +399,7 @@ class _Parser:
         self.structs: dict = {}  # struct tag -> StructDef
         self.enums: dict = {}  # enumeration constant -> value
         self.functions: dict = {}  # name -> FuncDef
+        self.refused: dict = {}  # name of a file-scope definition outside the subset -> error
         self.loops = 0  # loops around the statement being parsed
         self.in_function = False
 
@@ -616,7 +621,17 @@ class _Parser:
     def program(self) -> list:
         out = []
         while self.peek().kind != "end":
-            item = self.statement(top=True)
+            start = self.pos
+            try:
+                item = self.statement(top=True)
+            except TraceError as err:
+                # Real files mix integer routines with float helpers: a definition outside
+                # the subset is refused when it is used, not when it is pasted.
+                skipped = self.skip_definition(start)
+                if skipped is None:
+                    raise
+                self.refused[skipped[0]] = (err, skipped[1])
+                continue
             if isinstance(item, FuncDef):
                 prev = self.functions.get(item.name)
                 if prev is not None:
@@ -626,6 +641,44 @@ class _Parser:
             elif item is not None:
                 out.append(item)
         return out
+
+    def skip_definition(self, start: int) -> str | None:
+        """After an error in the file-scope item at ``start``: when it is a function
+        definition or a declaration, move past it and return (its name, whether it is a
+        function), else None."""
+        tokens = self.tokens
+        self.depth = self.height = self.loops = 0
+        self.in_function = False
+        i, level, fname, last, frozen = start, 0, None, None, False
+        while tokens[i].kind != "end":
+            t = tokens[i]
+            if t.kind == "name" and level == 0 and not frozen:
+                last = t.text
+            elif t.kind == "op" and t.text == "=" and level == 0:
+                frozen = True  # the declared name came before the initializer
+            elif t.kind == "op" and t.text in ("(", "[", "{"):
+                if t.text == "{" and level == 0 and fname is not None:
+                    break  # a function body
+                if t.text == "(" and level == 0 and fname is None and last is not None:
+                    fname = last
+                level += 1
+            elif t.kind == "op" and t.text in (")", "]", "}"):
+                level -= 1
+            elif t.kind == "op" and t.text == ";" and level == 0:
+                self.pos = i + 1
+                return (fname, True) if fname is not None and not frozen else \
+                    ((last, False) if last is not None else None)
+            i += 1
+        else:
+            return None
+        depth = 0
+        while tokens[i].kind != "end":
+            depth += (tokens[i].text == "{") - (tokens[i].text == "}")
+            i += 1
+            if depth == 0:
+                self.pos = i
+                return fname, True
+        return None
 
     def block(self) -> Block:
         tok = self.take()
@@ -786,7 +839,7 @@ class _Parser:
             else:
                 pname, d, at = self.declarator(desc)
             if isinstance(d, Arr):
-                d = Ptr(d.of)  # an array parameter is a pointer (C99 6.7.5.3p7)
+                d = Ptr(d.of, d.size)  # an array parameter is a pointer (C99 6.7.5.3p7)
             if d == "void":
                 raise _fail(at, "a parameter cannot have type void")
             params.append((pname, d, spelling, at))
@@ -1076,10 +1129,11 @@ def _is_place(node: Node) -> bool:
 
 
 def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
-          defines: dict | None = None, global_q: int = 24) -> Program:
+          defines: dict | None = None, global_q: int = 24, target=None) -> Program:
     """Parse C code; ``type_names`` are the type spellings the target knows, ``defines``
     the ``-D`` definitions (name → body text, see :mod:`pulab.ctrace.preprocess`),
-    ``global_q`` IQmath's Q for ``_IQ(…)`` and its family when the code defines none.
+    ``global_q`` IQmath's Q for ``_IQ(…)`` and its family when the code defines none,
+    ``target`` (a :class:`~pulab.ctrace.types.Target`) what ``<limits.h>`` defines.
 
     Raises
     ------
@@ -1088,10 +1142,11 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
     """
     if not isinstance(source, str):
         raise TraceError(1, 1, "code must be text")
-    pre = preprocess(tokenize(source), defines, global_q)
+    pre = preprocess(tokenize(source), defines, global_q,
+                     target.limits() if target is not None else None)
     tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names
-    prog = Program(source, p.program(), notes, pre.global_q, p.functions)
+    prog = Program(source, p.program(), notes, pre.global_q, p.functions, p.refused)
     prog.unresolved = pre.unresolved
     return prog

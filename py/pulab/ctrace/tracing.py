@@ -52,7 +52,7 @@ def compile_code(code: str, target: str = "c28x", defines=None,
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
     gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
-    return check(parse(code, defines=_defines(defines), global_q=gq), t,
+    return check(parse(code, defines=_defines(defines), global_q=gq, target=t), t,
                  entry.strip() if entry is not None else None)
 
 

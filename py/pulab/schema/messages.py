@@ -117,6 +117,8 @@ CATALOG = [
     (r"(\S+) is one object, not an element of an array: only index 0 exists",
      r"\1 是单个对象，不是数组元素：只有下标 0"),
     (r"a pointer without a value", "指针没有值"),
+    (r"(\S+) \(at (\S+)\) is outside the subset: (.*)",
+     lambda m: f"{m[1]}（{m[2]}）超出支持的子集：{to_zh(m[3])}"),
     # the preprocessor (pulab.ctrace.preprocess)
     (r"must be a list of NAME\[=VALUE\] texts", "必须是 NAME[=VALUE] 文本的列表"),
     (r"must be text NAME\[=VALUE\], got (.*)", r"必须是文本 NAME[=VALUE]，当前为 \1"),
