@@ -182,6 +182,7 @@ class Evaluator:
             self.statement(s)
         f = self.checked.entry
         if f is not None:
+            self.written = set()  # what the function writes, not the globals' initializers
             inputs = self.inputs
             for p in f.params:
                 if isinstance(p.ctype, PtrT):
