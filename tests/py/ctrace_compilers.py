@@ -316,8 +316,9 @@ static void case_0(void) {{
 """
 
 
-#: What a unit gets before its code: the fixed-width types and the IQmath of TI's
-#: IQmathLib.h (fixed-point build) the tracer knows without a header.
+#: What a unit gets before its code: the fixed-width types, TI's type names and the IQmath
+#: of TI's IQmathLib.h (fixed-point build: _IQN(A) = (long)(A * 2^N), the multiplies, the
+#: Q conversions) that the tracer knows without a header.
 UNIT_PRELUDE = r"""
 #include <stdint.h>
 #include <string.h>
@@ -328,7 +329,20 @@ static long iq_mpy(long a, long b, int q) { return (long)(((long long)a * (long 
 #define _IQmpy(a, b) iq_mpy((a), (b), GLOBAL_Q)
 #define __IQmpy(a, b, q) iq_mpy((a), (b), (q))
 #define _IQsat(x, hi, lo) ((x) > (hi) ? (hi) : ((x) < (lo) ? (lo) : (x)))
-""" + "".join(f"#define _IQ{q}mpy(a, b) iq_mpy((a), (b), {q})\n" for q in range(1, 31))
+#define IQ_CAT(a, b) a##b
+#define IQ_OF(q, A) IQ_CAT(_IQ, q)(A)
+#define _IQ(A) IQ_OF(GLOBAL_Q, A)
+typedef long _iq;
+typedef uint16_t Uint16; typedef int16_t int16; typedef uint32_t Uint32; typedef int32_t int32;
+""" + "".join(f"#define _IQ{q}mpy(a, b) iq_mpy((a), (b), {q})\n"
+              f"#define _IQ{q}(A) ((long)((A) * {float(1 << q)!r}L))\n"
+              f"#define _IQtoIQ{q}(A) (GLOBAL_Q >= {q} ? (long)(A) >> (GLOBAL_Q - {q}) : "
+              f"(long)(A) << ({q} - GLOBAL_Q))\n"
+              f"#define _IQ{q}toIQ(A) (GLOBAL_Q >= {q} ? (long)(A) << (GLOBAL_Q - {q}) : "
+              f"(long)(A) >> ({q} - GLOBAL_Q))\n"
+              f"typedef long _iq{q};\n" for q in range(1, 31)) + "".join(
+    f"#define _IQmpy{k}(A) ((A) << {k.bit_length() - 1})\n#define _IQdiv{k}(A) ((A) >> "
+    f"{k.bit_length() - 1})\n" for k in (2, 4, 8, 16, 32, 64))
 
 
 def run_unit(unit: Unit, vectors: list, target: str, flags: tuple = ()) -> list:

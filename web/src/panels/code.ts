@@ -7,11 +7,11 @@ import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingV
 import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
 
-interface Term { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string }
+interface Term { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string; call?: string; steps?: Step[] }
 interface Step { line: number; column: number; code: string; var: string | null; type: string; value: number; hex: string; flags: string[]; terms: Term[]; spelling?: string; input?: boolean; branch?: string }
 interface VarOut { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
-interface TraceOk { ok: true; target: string; global_q: number; inputs: string[]; vars: Record<string, VarOut>; steps: Step[] }
-interface TraceErr { ok: false; field: string; message: string; message_zh?: string; line?: number; column?: number; inputs?: string[] }
+interface TraceOk { ok: true; target: string; global_q: number; inputs: string[]; vars: Record<string, VarOut>; steps: Step[]; entry?: string | null; functions?: string[] }
+interface TraceErr { ok: false; field: string; message: string; message_zh?: string; line?: number; column?: number; inputs?: string[]; functions?: string[] }
 type Reply = TraceOk | TraceErr;
 interface Example { id: string; title: string; title_zh: string; code: string }
 
@@ -20,6 +20,8 @@ let state: CodeState | null = null;
 let examples: Example[] | null = null;
 let targets: string[] = FALLBACK_TARGETS;
 let inputs: string[] = [];
+/** The functions the pasted code defines (from the last reply that parsed it). */
+let functions: string[] = [];
 let main: Reply | null = null;
 let other: Reply | null = null;
 let lastKey = '';
@@ -70,6 +72,19 @@ function run(ctx: PanelContext): void {
     if (id !== seq) return;
     main = a;
     other = b;
+    const found = a?.functions ?? [];
+    if (JSON.stringify(found) !== JSON.stringify(functions)) {
+      functions = found;
+      builtFor = ''; // the function menu changes
+      const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
+      if (el && lastCtx) codePanel.render(el, lastCtx);
+    }
+    // A file of functions and nothing else to run: start with the last one defined.
+    if (a && !a.ok && a.field === 'entry' && !s.entry && found.length) {
+      s.entry = found[found.length - 1];
+      run(ctx);
+      return;
+    }
     const names = a?.inputs ?? inputs;
     if (JSON.stringify(names) !== JSON.stringify(inputs)) {
       inputs = names;
@@ -125,7 +140,8 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
     const differs = o !== null && o.value !== s.value;
     rows.push(h('tr', { class: `step${differs ? ' differs' : ''}${s.flags.length ? ' flagged' : ''}` },
       h('td', { class: 'pos' }, `${s.line}:${s.column}`),
-      h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null),
+      h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
+        ...s.terms.map((tm, j) => (tm.call && tm.steps ? callSteps(tm, `${k}.terms.${j}`) : null))),
       h('td', {}, s.var ? h('code', {}, s.var) : ''),
       h('td', { class: 'r' }, intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
       h('td', {}, flagChips(s.flags)),
@@ -152,6 +168,20 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
   });
   const head = ['L:C', t('codeSource'), t('codeVariable'), a.target, t('flags'), ...(b ? [b.target, t('flags')] : [])];
   return table(head, rows, 'code-steps');
+}
+
+/** The statements a call ran, under the call (keys follow the JSON path: ….terms.J.steps.K). */
+function callSteps(tm: Term, key: string): HTMLElement {
+  const steps = tm.steps ?? [];
+  const rows = steps.map((s, i) => h('tr', { class: s.flags.length ? 'flagged' : '' },
+    h('td', { class: 'pos' }, `${s.line}:${s.column}`),
+    h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
+      ...s.terms.map((inner, j) => (inner.call && inner.steps ? callSteps(inner, `${key}.steps.${i}.terms.${j}`) : null))),
+    h('td', {}, s.var ? h('code', {}, s.var) : ''),
+    h('td', { class: 'r' }, s.value === null ? '' : intCell(`${key}.steps.${i}.value`, s.value, s.hex), h('div', { class: 'ctype' }, s.type)),
+    h('td', {}, flagChips(s.flags))));
+  return h('details', { class: 'code-call' }, h('summary', {}, t('codeCall', { name: tm.call ?? '', n: steps.length })),
+    table(['L:C', t('codeSource'), t('codeVariable'), '', t('flags')], rows, 'code-steps'));
 }
 
 function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
@@ -246,7 +276,7 @@ export const codePanel: Panel = {
     loadExamples(ctx);
     // Rebuilding the editor reads its scroll position, which forces a layout of the whole page:
     // on a new report (every keystroke in the form) only the inputs and the trace are refreshed.
-    const key = JSON.stringify([getLang(), examples?.length ?? -1, targets, s.target, s.vs]);
+    const key = JSON.stringify([getLang(), examples?.length ?? -1, targets, s.target, s.vs, functions, s.entry]);
     if (builtFor === key && el.querySelector('.code-panel')) {
       update(el, ctx);
       compute(ctx, ctx.report ? 0 : 400);
@@ -285,6 +315,13 @@ export const codePanel: Panel = {
             s.vs = v;
             changed();
           })),
+          functions.length || s.entry ? h('label', { title: t('codeEntryHint') }, `${t('codeEntry')} `,
+            select('entry', s.entry ?? '', [['', t('codeEntryNone')], ...[...new Set([...functions, ...(s.entry ? [s.entry] : [])])].map((x): [string, string] => [x, `${x}()`])], (v) => {
+              s.entry = v;
+              s.set = {};
+              changed();
+            }),
+            h('span', { class: 'err', 'data-err-for': 'entry' }, errorFor('entry'))) : null,
           h('button', { type: 'button', class: 'code-share', onclick: () => void share(document.getElementById('app') ?? document.body, false) }, t('codeShare'))),
         h('div', { class: 'code-grid' },
           h('div', { class: 'code-left' },
