@@ -329,6 +329,7 @@ static long iq_mpy(long a, long b, int q) { return (long)(((long long)a * (long 
 #define _IQmpy(a, b) iq_mpy((a), (b), GLOBAL_Q)
 #define __IQmpy(a, b, q) iq_mpy((a), (b), (q))
 #define _IQsat(x, hi, lo) ((x) > (hi) ? (hi) : ((x) < (lo) ? (lo) : (x)))
+#define _IQabs(A) ((long)(A) < 0 ? -(long)(A) : (long)(A))
 #define IQ_CAT(a, b) a##b
 #define IQ_OF(q, A) IQ_CAT(_IQ, q)(A)
 #define _IQ(A) IQ_OF(GLOBAL_Q, A)

@@ -33,8 +33,9 @@ from __future__ import annotations
 from ..fixedpoint.cint import CType
 from .errors import TraceError
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
-                     If, IncDec, Index, InitList, Jump, Logical, Loop, Member, Num, Program,
-                     Ptr, Return, StructDef, Unary, Var, constant_value)
+                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
+                     Program, Ptr, Return, StructDef, Switch, Unary, Var, constant_value,
+                     IQ_FUNCTIONS)
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
@@ -327,6 +328,24 @@ class _Checker:
                 raise TraceError(s.line, s.column, f"{f.name}() must return a value")
             else:
                 self.scalar(s.value)
+        elif isinstance(s, Switch):
+            self.scalar(s.test)
+            seen: dict = {}
+            for inner in s.body.statements:
+                if isinstance(inner, Label):
+                    k = None if inner.value is None else constant_value(inner.value,
+                                                                        "a case label")
+                    if k in seen:
+                        prev = seen[k]
+                        raise TraceError(inner.line, inner.column, "a case label repeats the "
+                                         f"one at {prev.line}:{prev.column}")
+                    seen[k] = inner
+                    inner.value_int = k
+            self.statement(s.body)
+        elif isinstance(s, Label):
+            if not hasattr(s, "value_int"):
+                raise TraceError(s.line, s.column, "a case label inside a nested statement is "
+                                 "not supported (labels at the top of the switch's block only)")
         elif isinstance(s, Jump):
             pass
         else:
@@ -483,7 +502,7 @@ class _Checker:
         raise AssertionError(kind.__name__)  # the parser makes no other node
 
     def call(self, e: Call) -> object:
-        if e.q is not None or e.name in ("_IQmpy", "_IQsat", "__IQsat"):
+        if e.q is not None or e.name in IQ_FUNCTIONS:
             e.func = None
             for a in e.args:
                 self.scalar(a)
@@ -494,7 +513,7 @@ class _Checker:
             known = ", ".join(self.program.functions) or "none"
             raise TraceError(e.line, e.column, f"unknown function {e.name}() (functions of "
                              f"the code: {known}; IQmath: _IQmpy, _IQNmpy, __IQmpy, _IQsat, "
-                             "__IQsat)")
+                             "__IQsat, _IQabs)")
         e.func = f
         if len(e.args) != len(f.params):
             raise TraceError(e.line, e.column, f"{e.name}() takes {len(f.params)} arguments, "
@@ -757,7 +776,11 @@ class _Inputs:
             if self.returns is not None:
                 self.returns.append(a)
             return None
-        if isinstance(s, Jump):
+        if isinstance(s, Jump) or isinstance(s, Label):
+            return a
+        if isinstance(s, Switch):
+            self.expr(s.test, a)
+            self.statement(s.body, set(a))  # no case may match: nothing is certain after it
             return a
         return self.block(s.statements, a)
 
@@ -896,8 +919,7 @@ def _calls_of(node) -> set:
         n = stack.pop()
         if isinstance(n, Call) and n.func is not None:
             out.add(n.name)
-        elif isinstance(n, Call) and n.q is None and n.name not in ("_IQmpy", "_IQsat",
-                                                                      "__IQsat"):
+        elif isinstance(n, Call) and n.q is None and n.name not in IQ_FUNCTIONS:
             out.add(n.name)
         if isinstance(n, (list, tuple)):
             stack.extend(n)
@@ -927,6 +949,8 @@ def _entry_locals(body) -> list:
         elif isinstance(s, Loop):
             if s.init is not None:
                 walk(s.init)
+            walk(s.body)
+        elif isinstance(s, Switch):
             walk(s.body)
         elif isinstance(s, Block):
             for inner in s.statements:

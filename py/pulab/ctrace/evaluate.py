@@ -40,7 +40,8 @@ from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
 from .check import ArrT, Checked, PtrT, StructT, VOID, leaves, pointee
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
-                     Index, InitList, Jump, Logical, Loop, Member, Num, Return, Unary, Var)
+                     Index, InitList, Jump, Label, Logical, Loop, Member, Num, Return, Switch,
+                     Unary, Var)
 
 __all__ = ["Evaluator", "hex_of", "FLAGS", "MAX_STEPS", "MAX_CALL_DEPTH"]
 
@@ -270,6 +271,10 @@ class Evaluator:
                 self.statement(inner)
         elif kind is Loop:
             self.loop(s)
+        elif kind is Switch:
+            self.switch(s)
+        elif kind is Label:
+            pass
         elif kind is Return:
             f = self.checked.functions[self.active[-1]]
             if s.value is None:
@@ -280,6 +285,34 @@ class Evaluator:
             raise _Return(stored)
         else:
             raise _Jump(s.kind)
+
+    def switch(self, s: Switch) -> None:
+        """Jump to the matching label (the case constants convert to the promoted type of the
+        test, C99 6.8.4.2p5), run on until ``break`` or the end."""
+        t = s.test.ctype
+        v = self.eval(s.test)
+        body = s.body.statements
+        start, default = None, None
+        for i, inner in enumerate(body):
+            if type(inner) is Label:
+                if inner.value_int is None:
+                    default = i
+                elif convert(inner.value_int, t) == v:
+                    start = i
+                    break
+        if start is None:
+            start = default
+        taken = "none" if start is None else ("default" if start == default else f"case {v}")
+        self.step(s, f"switch ({self.source[s.test.start:s.test.end]})", None, v, t,
+                  branch=taken)
+        if start is None:
+            return
+        try:
+            for inner in body[start:]:
+                self.statement(inner)
+        except _Jump as j:
+            if j.kind != "break":
+                raise
 
     def too_long(self, s) -> None:
         at = self.loops[-1] if self.loops else s  # the loop that runs on, when there is one
@@ -623,6 +656,11 @@ class Evaluator:
             v = hi if x > hi else lo if x < lo else x
             if v != x:
                 flags.append("saturate")
+        elif e.name == "_IQabs":  # labs(): |LONG_MIN| does not fit, shown as the wrap
+            v = wrap_to(abs(args[0]), long_t)
+            if v != abs(args[0]):
+                flags.append("signed_overflow")
+                self.undefined.add("signed_overflow")
         else:
             q = self.global_q if e.q is None else e.q
             product = args[0] * args[1]  # exact: the 64-bit product of two longs

@@ -38,7 +38,7 @@ from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
            "Cast", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
-           "If", "Block", "Return", "Loop", "Jump", "FuncDef", "StructDef", "Ptr", "Arr",
+           "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr", "Arr",
            "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
@@ -51,7 +51,7 @@ ALL_TYPE_NAMES = frozenset(n for t in TARGETS.values() for n in t.types)
 _QUALIFIERS = frozenset({"const", "static", "volatile", "register", "extern", "auto", "inline",
                          "__inline", "__inline__"})
 _FLOATING = frozenset({"float", "double"})
-_UNSUPPORTED = frozenset({"switch", "case", "goto", "sizeof", "float", "double", "default"})
+_UNSUPPORTED = frozenset({"goto", "sizeof", "float", "double"})
 #: Words that begin a struct, union or enum type.
 _TAGS = frozenset({"struct", "union", "enum"})
 #: Compiler attributes and storage words that change no integer result (skipped, with a
@@ -66,7 +66,7 @@ _CONST_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
               "^": int.__xor__}
 _IQ_N = re.compile(r"_IQ([1-9]|[12][0-9]|30)mpy")
 #: The IQmath calls understood, with their argument counts.
-IQ_FUNCTIONS = {"_IQmpy": 2, "__IQmpy": 3, "_IQsat": 3, "__IQsat": 3}
+IQ_FUNCTIONS = {"_IQmpy": 2, "__IQmpy": 3, "_IQsat": 3, "__IQsat": 3, "_IQabs": 1}
 
 _PRECEDENCE = {op: level for level, ops in enumerate(
     [("||",), ("&&",), ("|",), ("^",), ("&",), ("==", "!="), ("<", ">", "<=", ">="),
@@ -271,6 +271,26 @@ class Loop(Stmt):
         self.kind, self.init, self.test, self.step, self.body = kind, init, test, step, body
 
 
+class Switch(Stmt):
+    """``switch (test) { case K: … default: … }``: ``body`` is the Block, whose top-level
+    statements include the :class:`Label` markers."""
+
+    __slots__ = ("test", "body")
+
+    def __init__(self, test, body) -> None:
+        self.test, self.body = test, body
+
+
+class Label(Stmt):
+    """``case K:`` (``value`` the constant expression node) or ``default:`` (None);
+    ``value_int`` is set by the checker (the constant, None for default)."""
+
+    __slots__ = ("value", "value_int")
+
+    def __init__(self, value) -> None:
+        self.value = value
+
+
 class Jump(Stmt):
     """``break`` or ``continue``."""
 
@@ -401,6 +421,7 @@ class _Parser:
         self.functions: dict = {}  # name -> FuncDef
         self.refused: dict = {}  # name of a file-scope definition outside the subset -> error
         self.loops = 0  # loops around the statement being parsed
+        self.switches = 0  # switch statements around it
         self.in_function = False
 
     # -- token helpers
@@ -647,7 +668,7 @@ class _Parser:
         definition or a declaration, move past it and return (its name, whether it is a
         function), else None."""
         tokens = self.tokens
-        self.depth = self.height = self.loops = 0
+        self.depth = self.height = self.loops = self.switches = 0
         self.in_function = False
         i, level, fname, last, frozen = start, 0, None, None, False
         while tokens[i].kind != "end":
@@ -719,9 +740,27 @@ class _Parser:
             return If(test, then, other).at(tok, self.last())
         if word in ("while", "for", "do"):
             return self.loop()
+        if word == "switch":
+            self.take()
+            self.expect("(", " after 'switch'")
+            test = self.expression()
+            self.expect(")", " to close the condition")
+            if not self.is_op("{"):
+                raise _fail(self.peek(), "expected '{' after 'switch (…)'")
+            self.switches += 1
+            body = self.block()
+            self.switches -= 1
+            return Switch(test, body).at(tok, self.last())
+        if word in ("case", "default"):
+            self.take()
+            if not self.switches:
+                raise _fail(tok, f"'{word}' outside a switch")
+            value = self.conditional() if word == "case" else None
+            self.expect(":", f" after '{word}'")
+            return Label(value).at(tok, self.last())
         if word in ("break", "continue"):
             self.take()
-            if not self.loops:
+            if not self.loops and (word == "continue" or not self.switches):
                 raise _fail(tok, f"'{word}' outside a loop")
             self.expect(";", f" after '{word}'")
             return Jump(word).at(tok, self.last())

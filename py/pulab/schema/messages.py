@@ -117,6 +117,12 @@ CATALOG = [
     (r"(\S+) is one object, not an element of an array: only index 0 exists",
      r"\1 是单个对象，不是数组元素：只有下标 0"),
     (r"a pointer without a value", "指针没有值"),
+    (r"a case label repeats the one at (\S+)", r"case 标签与 \1 处的重复"),
+    (r"a case label inside a nested statement is not supported \(labels at the top of the "
+     r"switch's block only\)", "不支持嵌套语句中的 case 标签（只支持 switch 块顶层的标签）"),
+    (r"'(\w+)' outside a switch", r"'\1' 不在 switch 内"),
+    (r"expected '\{' after 'switch \(…\)'", "'switch (…)' 之后应为 '{'"),
+    (r"a case label must be an integer constant", "case 标签必须是整数常量"),
     (r"(\S+) \(at (\S+)\) is outside the subset: (.*)",
      lambda m: f"{m[1]}（{m[2]}）超出支持的子集：{to_zh(m[3])}"),
     # the preprocessor (pulab.ctrace.preprocess)
@@ -217,7 +223,8 @@ _WHERE = {"": "", " after 'if'": "（在 'if' 之后）", " to close the conditi
           " after 'continue'": "（在 'continue' 之后）",
           " after 'do … while (…)'": "（在 'do … while (…)' 之后）",
           " after the loop's first clause": "（循环的第一个子句之后）",
-          " after the loop's condition": "（循环条件之后）"}
+          " after the loop's condition": "（循环条件之后）", " after 'switch'": "（在 'switch' 之后）",
+          " after 'case'": "（在 'case' 之后）", " after 'default'": "（在 'default' 之后）"}
 _GOT = {"end of code": "代码结尾"}
 
 
