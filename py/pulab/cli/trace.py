@@ -83,6 +83,9 @@ def format_text(result: dict) -> str:
     ret = result["vars"].get("return")
     if result.get("entry") and ret is not None:
         lines.append(f"return {ret['value']} ({ret['hex']})")
+    for name, r in result.get("rounding", {}).items():
+        lines.append(f"rounding {name}: {r['floor']} toward -inf, {r['toward_zero']} toward zero, "
+                     f"at most {r['max_lost']:g} LSB")
     return "\n".join(lines)
 
 
@@ -107,6 +110,8 @@ def _step_lines(steps: list, lines: list, indent: str) -> None:
             term = next((t for t in s.get("terms", []) if flag in t["flags"]), None)
             if term is not None:
                 flag += f" at {term['line']}:{term['column']} {' '.join(term['expr'].split())}"
+                if flag.startswith("truncation") and "rounding" in term:
+                    flag += f" ({term['rounding'].replace('_', ' ')}, {term['lost']:g} LSB lost)"
             notes.append(flag)
         line = f"{s['line']}:{s['column']}".ljust(pos_w) + "  " + code.ljust(code_w) + "  " + what
         if notes:

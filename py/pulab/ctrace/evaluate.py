@@ -71,6 +71,17 @@ def _overflow(t) -> str:
     return "signed_overflow" if t.signed else "unsigned_wrap"
 
 
+def _rounding(op: str, a: int, b: int, result: int, flags: list) -> dict:
+    """For a result that lost bits: how it rounded (``>>`` toward −∞, ``/`` toward zero,
+    C99 6.5.5p6) and by how much, ``lost`` = exact − result in units of the result's LSB
+    (``[0, 1)`` for floor; ``(−1, 1)`` toward zero, its sign opposite to the exact value's)."""
+    if "truncation" not in flags:
+        return {}
+    if op == ">>":
+        return {"rounding": "floor", "lost": (a - (result << b)) / float(1 << b)}
+    return {"rounding": "toward_zero", "lost": (a - result * b) / b}
+
+
 def _spelling(target) -> str:
     """How the code spells the type of the object ``target`` designates."""
     if isinstance(target, Var):
@@ -537,7 +548,7 @@ class Evaluator:
             else:
                 v, flags = self.arith(op, a, b, t, e.right)
                 flags = pre + flags
-        self.term(e, v, flags)
+        self.term(e, v, flags, **_rounding(op, a, b, v, flags))
         return v
 
     def unary(self, e: Unary) -> int:
@@ -584,9 +595,10 @@ class Evaluator:
                 flags += more
             stored, more = self.store(v, t)
             flags += [f for f in more if f not in flags]
+            extra = _rounding(op, a if op not in ("<<", ">>") else old, b, v, flags)
         self.put(path, stored)
         self.last_path = path
-        self.term(e, stored, flags, var=path)
+        self.term(e, stored, flags, var=path, **(extra if e.op != "=" else {}))
         return stored
 
     def incdec(self, e: IncDec) -> int:
@@ -669,6 +681,6 @@ class Evaluator:
                 flags.append("truncation")
             v, conv = self.store(shifted, long_t)
             flags += conv
-        self.term(e, v, flags, **({"q": self.global_q if e.q is None else e.q}
-                                  if e.name.endswith("mpy") else {}))
+            extra = {"q": q, **_rounding(">>", product, q, shifted, flags)}
+        self.term(e, v, flags, **(extra if e.name.endswith("mpy") else {}))
         return v

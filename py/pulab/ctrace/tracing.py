@@ -21,7 +21,8 @@ from .types import TARGETS
 from ..schema.errors import InputError
 from ..schema.validate import key_path, shown
 
-__all__ = ["trace", "trace_checked", "compile_code", "run_checked", "DEFAULT_GLOBAL_Q"]
+__all__ = ["trace", "trace_checked", "compile_code", "run_checked", "rounding_summary",
+           "DEFAULT_GLOBAL_Q"]
 
 #: IQmath's GLOBAL_Q when neither the code (``#define GLOBAL_Q``) nor the caller sets one.
 DEFAULT_GLOBAL_Q = 24
@@ -108,6 +109,31 @@ def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
     return ev
 
 
+def rounding_summary(steps: list) -> dict:
+    """Per variable given a statement's result (calls included): how many of its terms
+    rounded toward −∞ (``floor``) and toward zero, and the largest ``|lost|`` in LSB.
+
+    >>> r = trace("long x = -5000; long s = x >> 12; long d = x / 4096;", "c28x")
+    >>> r["rounding"]["s"], r["rounding"]["d"]["toward_zero"]
+    ({'floor': 1, 'toward_zero': 0, 'max_lost': 0.779296875}, 1)
+    """
+    out: dict = {}
+
+    def walk(items: list) -> None:
+        for st in items:
+            for t in st.get("terms", ()):
+                if "rounding" in t:
+                    name = st.get("var") or "(no variable)"
+                    d = out.setdefault(name, {"floor": 0, "toward_zero": 0, "max_lost": 0.0})
+                    d[t["rounding"]] += 1
+                    d["max_lost"] = max(d["max_lost"], abs(t["lost"]))
+                if "steps" in t:
+                    walk(t["steps"])
+
+    walk(steps)
+    return out
+
+
 def trace(code: str, target: str = "c28x", inputs: dict | None = None,
           global_q: int | None = None, defines=None, entry: str | None = None,
           zero_unset: bool = False) -> dict:
@@ -191,6 +217,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
                               "hex": hex_of(v, entry.ret.bits), "input": False}
     return {"ok": True, "target": checked.target.name, "global_q": gq,
             "entry": entry.name if entry is not None else None,
+            "rounding": rounding_summary(steps),
             "functions": list(checked.functions),
             "unresolved_includes": list(checked.program.unresolved),
             "inputs": checked.inputs, "vars": out_vars, "steps": steps}
