@@ -343,6 +343,11 @@ class Program:
         self.refused = refused or {}
 
 
+def _unknown_type(tok: Token) -> TraceError:
+    return TraceError(tok.line, tok.column, f"unknown type {tok.text} (is the header that "
+                      "defines it pasted?)")
+
+
 def _fail(tok: Token, message: str) -> TraceError:
     return TraceError(tok.line, tok.column, message)
 
@@ -526,6 +531,8 @@ class _Parser:
         if not words:
             if tok.kind == "name" and tok.text in _FLOATING:
                 raise _fail(tok, f"'{tok.text}' is not supported (integer types only)")
+            if tok.kind == "name":
+                raise _unknown_type(tok)
             raise _fail(first, "expected a type")
         sign = [w for w in words if w in ("signed", "unsigned")]
         longs = words.count("long")
@@ -779,6 +786,10 @@ class _Parser:
             return self.typedef()
         if self.starts_type():
             return self.declaration(top)
+        if word is not None and (self.peek(1).kind == "name" or (
+                self.is_op("*", 1) and self.tokens[self.pos + 2].kind == "name" and
+                self.tokens[self.pos + 3].text in ("=", ",", "["))):
+            raise _unknown_type(tok)  # NAME NAME: a declaration with a type never defined
         expr = self.expression()
         self.expect(";", " at the end of the statement")
         return ExprStmt(expr).at(tok, self.last())

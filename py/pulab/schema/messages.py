@@ -117,6 +117,8 @@ CATALOG = [
     (r"(\S+) is one object, not an element of an array: only index 0 exists",
      r"\1 是单个对象，不是数组元素：只有下标 0"),
     (r"a pointer without a value", "指针没有值"),
+    (r"unknown type (\S+) \(is the header that defines it pasted\?\)",
+     r"未知类型 \1（定义它的头文件粘贴了吗？）"),
     (r"a case label repeats the one at (\S+)", r"case 标签与 \1 处的重复"),
     (r"a case label inside a nested statement is not supported \(labels at the top of the "
      r"switch's block only\)", "不支持嵌套语句中的 case 标签（只支持 switch 块顶层的标签）"),
