@@ -138,13 +138,14 @@ class Symbol:
 class Function:
     """A checked function: its FuncDef, parameter symbols, return type."""
 
-    __slots__ = ("name", "node", "params", "ret", "ret_spelling", "prefix", "scope")
+    __slots__ = ("name", "node", "params", "ret", "ret_spelling", "prefix", "scope", "calls")
 
     def __init__(self, node: FuncDef, prefix: str) -> None:
         self.name, self.node, self.prefix = node.name, node, prefix
         self.params: list = []
         self.ret = VOID
         self.ret_spelling = node.ret_spelling
+        self.calls: set = set()  # names of the functions of the code it calls
 
 
 class Checked:
@@ -515,6 +516,8 @@ class _Checker:
                              f"the code: {known}; IQmath: _IQmpy, _IQNmpy, __IQmpy, _IQsat, "
                              "__IQsat, _IQabs)")
         e.func = f
+        if self.function is not None:
+            self.function.calls.add(f.name)
         if len(e.args) != len(f.params):
             raise TraceError(e.line, e.column, f"{e.name}() takes {len(f.params)} arguments, "
                              f"got {len(e.args)}")
@@ -842,7 +845,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
     for name, err in c.broken.items():
         program.refused[name] = (err, True)
         del c.functions[name]
-    calls = _calls_of(c.functions[entry].node.body) if entry is not None else set()
+    calls = set(c.functions[entry].calls) if entry is not None else set()
     seen: set = set()
     while calls - seen:  # a broken function the entry reaches is an error at its call
         name = (calls - seen).pop()
@@ -852,7 +855,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
             raise TraceError(err.line, err.column, f"{name} (called from {entry}) is outside "
                              f"the subset: {err.reason}")
         if name in c.functions:
-            calls |= _calls_of(c.functions[name].node.body)
+            calls |= c.functions[name].calls
     # User-facing integers: globals and, for an entry, its parameters, the objects its
     # pointer parameters point to (p.FIELD, *out) and its locals.
     symbols: dict = {}
@@ -909,31 +912,6 @@ def pointee(p: Symbol) -> tuple:
         return p.name, ArrT(t.to, t.n), f"{p.name}[0]"
     path = p.name if isinstance(t.to, StructT) else f"*{p.name}"
     return path, t.to, path
-
-
-def _calls_of(node) -> set:
-    """Names of the functions called anywhere under ``node``."""
-    out: set = set()
-    stack = [node]
-    while stack:
-        n = stack.pop()
-        if isinstance(n, Call) and n.func is not None:
-            out.add(n.name)
-        elif isinstance(n, Call) and n.q is None and n.name not in IQ_FUNCTIONS:
-            out.add(n.name)
-        if isinstance(n, (list, tuple)):
-            stack.extend(n)
-        elif hasattr(n, "__slots__"):
-            for slot in _all_slots(type(n)):
-                if slot not in ("ctype", "operand_type", "sym", "func", "flat"):
-                    v = getattr(n, slot, None)
-                    if isinstance(v, (list, tuple)) or hasattr(v, "__slots__"):
-                        stack.append(v)
-    return out
-
-
-def _all_slots(cls) -> tuple:
-    return tuple(s for k in cls.__mro__ for s in getattr(k, "__slots__", ()))
 
 
 def _entry_locals(body) -> list:
