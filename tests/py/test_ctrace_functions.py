@@ -354,3 +354,24 @@ def test_units_match_the_compilers(target):
             assert e == g, f"{name} inputs {vec}: tracer {e} vs compiler {g}"
     print(f"\nunits vs {target}: {pairs} vectors, 0 mismatches")
     assert pairs == VECTORS * len(UNITS)
+
+
+CHAIN = "".join(f"int f{i}(int x) {{ return f{i + 1}(x); }}\n" for i in range(40)) + \
+    "int f40(int x) { return x; } int f(int x) { return f0(x); }"
+TREE = "".join(f"int f{i}(int x) {{ return f{i + 1}(x) + f{i + 1}(x); }}\n" for i in range(24)) + \
+    "int f24(int x) { return x; } int f(int x) { return f0(x); }"
+
+
+@pytest.mark.parametrize("code,text", [
+    ("int t[5000]; int f(int x) { return t[x]; }",
+     "array of 5000 elements: at most 4096 integers per object"),
+    (CHAIN, "calls nested more than 32 deep"),
+    (TREE, "the calls reach more than 200000 expressions: too large to trace"),
+    ("int f(int x) { int i; for (i = 0; i < 30000; i++) x++; return x; }",
+     "more than 10000 statements executed (a loop that does not end?)"),
+])
+def test_each_limit_is_a_one_line_error(code, text):
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", {"x": 1}, entry="f")
+    assert text in e.value.message and "\n" not in e.value.message
+    assert chinese(e.value.message_zh)

@@ -619,9 +619,11 @@ class Evaluator:
     def call_user(self, e: Call):
         """A call of a function of the code: its statements become the call term's ``steps``."""
         f = e.func
-        if f.name in self.active or len(self.active) >= MAX_CALL_DEPTH:
+        if f.name in self.active:
             raise TraceError(e.line, e.column, f"{f.name}() calls itself (recursion is not "
                              "supported)")
+        if len(self.active) >= MAX_CALL_DEPTH:
+            raise TraceError(e.line, e.column, f"calls nested more than {MAX_CALL_DEPTH} deep")
         flags: list = []
         args = []
         for a, p in zip(e.args, f.params):

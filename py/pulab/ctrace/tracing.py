@@ -12,6 +12,8 @@ Examples
 
 from __future__ import annotations
 
+import re
+
 from .check import VOID, Checked, check
 from .evaluate import Evaluator, hex_of
 from .errors import TraceError
@@ -47,8 +49,9 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``; ``global_q`` is the Q the
     IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q;
     ``entry`` the function to run (None: the statements outside functions)."""
-    if entry is not None and (not isinstance(entry, str) or not entry.strip()):
-        raise InputError("entry", f"must be a function name, got {entry!r}")
+    if entry is not None and (not isinstance(entry, str) or
+                              not re.fullmatch(r"[A-Za-z_]\w*", entry.strip())):
+        raise InputError("entry", f"must be a function name, got {shown(entry)}")
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]

@@ -103,6 +103,7 @@ CATALOG = [
     (r"the calls reach more than (\d+) expressions: too large to trace",
      r"调用涉及超过 \1 个表达式：太大，无法追踪"),
     (r"(\w+)\(\) calls itself \(recursion is not supported\)", r"\1() 调用了自身（不支持递归）"),
+    (r"calls nested more than (\d+) deep", r"函数调用嵌套超过 \1 层"),
     (r"no function (\S+) in the code \(functions: (.*)\)", r"代码中没有函数 \1（函数：\2）"),
     (r"choose the function to run \(functions: (.*)\)", r"请选择要运行的函数（函数：\1）"),
     (r"must be a function name, got (.*)", r"必须是函数名，当前为 \1"),
