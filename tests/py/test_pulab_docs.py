@@ -171,3 +171,39 @@ def test_pulab_imports_no_docs_tool():
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          env={**os.environ, "PYTHONPATH": str(ROOT / "py")})
     assert out.stdout.strip() == "[]", out
+
+
+def _snippet(heading: str, lang: str) -> str:
+    """The first ```lang block after `heading` in docs/deploy.md: the snippet users copy."""
+    text = (ROOT / "docs" / "deploy.md").read_text()
+    rest = text[text.index(heading):]
+    start = rest.index(f"```{lang}\n") + len(lang) + 4
+    return rest[start:rest.index("\n```", start)]
+
+
+def _require(tool: str, capsys):
+    if shutil.which(tool):
+        return
+    msg = f"SKIPPED: the {tool} snippet is built with {tool} (apt-get install {tool})"
+    if os.environ.get("CI") == "true":
+        pytest.fail(msg + " — mandatory under CI=true")
+    with capsys.disabled():
+        print(f"\n\n{'!' * len(msg)}\n{msg}\n{'!' * len(msg)}\n", file=sys.stderr)
+    pytest.skip(msg)
+
+
+def test_doxygen_snippet_builds_a_page_with_the_panel(tmp_path, capsys):
+    _require("doxygen", capsys)
+    site = "http://127.0.0.1:9/tools/pu-lab/"
+    (tmp_path / "current_loop.h").write_text(
+        _snippet("### Doxygen", "c").replace("https://intranet/tools/pu-lab/", site)
+        + "\nint current_loop_period; /**< the loop's period in ticks */\n")
+    (tmp_path / "Doxyfile").write_text("INPUT = current_loop.h\nOUTPUT_DIRECTORY = out\n"
+                                       "GENERATE_LATEX = NO\nHAVE_DOT = NO\nQUIET = YES\n"
+                                       "WARN_AS_ERROR = YES\n")
+    out = subprocess.run(["doxygen", "Doxyfile"], cwd=tmp_path, capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    page = Page((tmp_path / "out" / "html" / "current__loop_8h.html").read_text())
+    assert ("script", {"type": "module", "src": site + "embed.js"}) in page.elements
+    (el,) = [a for t, a in page.elements if t == "pu-lab-panel"]
+    assert el["panel"] == "vendor" and json.loads(el["input"]) == CASE["input"]
