@@ -17,7 +17,6 @@ Examples
 
 from __future__ import annotations
 
-import json
 import pathlib
 
 import anywidget
@@ -58,8 +57,3 @@ class PanelWidget(anywidget.AnyWidget):
         if not proposal["value"].endswith("/"):
             raise traitlets.TraitError("site: the pu-lab site's directory, ending in '/'")
         return proposal["value"]
-
-    @property
-    def input_json(self) -> str:
-        """The input as the element's ``input`` attribute holds it."""
-        return json.dumps(self.input, ensure_ascii=False)
