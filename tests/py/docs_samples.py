@@ -70,7 +70,8 @@ def sphinx_project(d: pathlib.Path, site: str) -> pathlib.Path:
 
 def mkdocs_project(d: pathlib.Path, site: str) -> pathlib.Path:
     (d / "docs").mkdir(parents=True, exist_ok=True)
-    (d / "mkdocs.yml").write_text("site_name: Motor notes\n"
+    # highlightjs off: the theme would fetch it from a CDN (this docs site works offline)
+    (d / "mkdocs.yml").write_text("site_name: Motor notes\ntheme:\n  name: mkdocs\n  highlightjs: false\n"
                                   + snippet("### Sphinx and MkDocs", "yaml").replace(DOC_SITE, site) + "\n")
     fence = snippet("### Sphinx and MkDocs", "markdown", "````")
     (d / "docs" / "index.md").write_text(
