@@ -22,11 +22,14 @@ True
 from __future__ import annotations
 
 import json
+import re
 from html import escape
+from urllib.parse import quote
 
 from .report import report
 
-__all__ = ["PANELS", "Report", "report_html", "panel_html", "panel_tables"]
+__all__ = ["PANELS", "Report", "report_html", "panel_html", "panel_tables", "oembed",
+           "oembed_page", "OEMBED_HEIGHT"]
 
 #: The panel ids of ``?embed=`` and ``<pu-lab-panel panel>`` (web/src/panels/registry.ts).
 PANELS = ("review", "datasheet", "bases", "pu", "vendor", "constants", "current", "pll", "loop",
@@ -255,3 +258,68 @@ def panel_html(panel: str, inp: dict | None, *, site: str, lang: str | None = No
             f"pu-lab: {escape(panel)}</a></p>")
     return (f'<script type="module" src="{escape(site)}embed.js"></script>'
             f"<pu-lab-panel{attr_text}>{tables}{link}</pu-lab-panel>")
+
+
+#: The height (CSS px) an oEmbed consumer gives the frame; the frame itself reports its real
+#: height by postMessage (docs/contract.md, "Embedding") to consumers that listen.
+OEMBED_HEIGHT = 640
+
+
+def _frame_url(site: str, panel: str, inp: dict | None) -> str:
+    url = f"{site}?embed={panel}"
+    return url if inp is None else url + "#in=" + quote(json.dumps(inp, ensure_ascii=False),
+                                                        safe="")
+
+
+def _check_site(site: str) -> None:
+    if not re.fullmatch(r"https?://[^/?#\s]+/([^?#\s]*/)?", site):
+        raise ValueError(f"site: {site!r} must be the site's absolute URL, ending in '/'")
+
+
+def oembed(site: str, panel: str, inp: dict | None = None, title: str | None = None) -> dict:
+    """The oEmbed 1.0 response (type ``rich``) of one panel: an iframe of ``?embed=PANEL``.
+
+    Parameters
+    ----------
+    site : str
+        The pu-lab site's absolute URL, ending in ``/`` (the consumer inserts the HTML into
+        another page).
+    panel : str
+        A panel id of :data:`PANELS`.
+    inp : dict or None
+        The input; None: the seed's example motor.
+    title : str or None
+        Shown by consumers; default ``pu-lab: PANEL``.
+
+    Raises
+    ------
+    ValueError
+        ``site: …`` or ``panel: …``.
+    pulab.InputError
+        For a bad input, naming the field.
+    """
+    _check_site(site)
+    if panel not in PANELS:
+        raise ValueError(f"panel: {panel!r} is not a pu-lab panel ({', '.join(PANELS)})")
+    if inp is not None:
+        report(inp)  # a bad input is refused here, naming its field, not shown in a frame later
+    title = title or f"pu-lab: {panel}"
+    frame = (f'<iframe src="{escape(_frame_url(site, panel, inp))}" width="100%" '
+             f'height="{OEMBED_HEIGHT}" style="border:0" scrolling="no" '
+             f'title="{escape(title)}"></iframe>')
+    return {"version": "1.0", "type": "rich", "provider_name": "pu-lab", "provider_url": site,
+            "title": title, "html": frame, "width": 900, "height": OEMBED_HEIGHT}
+
+
+def oembed_page(site: str, panel: str, json_url: str, inp: dict | None = None,
+                title: str | None = None) -> str:
+    """The page a wiki is given the URL of: its oEmbed discovery link, and for a reader who
+    opens it, a link (and a redirect) to the panel."""
+    title = title or f"pu-lab: {panel}"
+    target = escape(_frame_url(site, panel, inp))
+    return ('<!doctype html><html><head><meta charset="utf-8">'
+            f"<title>{escape(title)}</title>"
+            f'<link rel="alternate" type="application/json+oembed" href="{escape(json_url)}" '
+            f'title="{escape(title)}">'
+            f'<meta http-equiv="refresh" content="0; url={target}"></head>'
+            f'<body><p><a href="{target}">{escape(title)}</a></p></body></html>')

@@ -6,7 +6,7 @@
 // the macro's postMessage listener). Screenshots: tests/e2e/screenshots/docs-*.png.
 import { createServer } from 'node:http';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { extname, join, normalize } from 'node:path';
 
@@ -100,6 +100,31 @@ export default async function docsTools(ctx) {
       assert(await vendor.$eval('[data-key="vendor.Rpm.value"][data-value]', (e) => e.dataset.value) === rpm, 'vendor frame not the 7.5 kW motor');
       await page.screenshot({ path: join(SHOTS, 'docs-confluence-1366.png'), fullPage: true });
       await page.context().close();
+    });
+    await check('oEmbed: a consumer discovers a panel\'s description from its page URL and embeds its HTML; the panel goes live', async () => {
+      // `pulab oembed` writes into the deployed site (here dist/, removed afterwards).
+      execFileSync(join(ROOT, '.venv/bin/python'), ['-m', 'pulab', 'oembed', subSrv.url, join(ROOT, 'dist'), '--input', '-', '--name', 'e2e', '--panel', 'vendor'], {
+        cwd: ROOT, env: { ...process.env, PYTHONPATH: join(ROOT, 'py') }, input: JSON.stringify(other.input),
+      });
+      try {
+        const discovery = await (await fetch(`${subSrv.url}oembed/e2e/vendor.html`)).text();
+        const href = /<link rel="alternate" type="application\/json\+oembed" href="([^"]+)"/.exec(discovery)?.[1];
+        assert(href, 'no discovery link');
+        const res = await fetch(href.replaceAll('&amp;', '&'));
+        assert(res.ok && /json/.test(res.headers.get('content-type') ?? ''), `oEmbed JSON: ${res.status} ${res.headers.get('content-type')}`);
+        const doc = await res.json();
+        assert(doc.version === '1.0' && doc.type === 'rich' && doc.height > 0, JSON.stringify(doc));
+        writeFileSync(join(out, 'wiki.html'), `<!doctype html><html><head><meta charset="utf-8"><title>wiki</title></head><body><h1>Wiki page</h1>${doc.html}</body></html>`);
+        const page = await newPage();
+        await page.goto(`${host.url}wiki.html`);
+        const frame = () => page.frames().find((f) => f.url().startsWith(subSrv.url));
+        await page.waitForFunction(() => document.querySelector('iframe') !== null);
+        await frame().waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 120_000, polling: 50 });
+        assert(await frame().$eval('[data-key="vendor.Rpm.value"][data-value]', (e) => e.dataset.value) === rpm, 'oEmbed frame not the 7.5 kW motor');
+        await page.context().close();
+      } finally {
+        rmSync(join(ROOT, 'dist/oembed/e2e'), { recursive: true, force: true });
+      }
     });
   } finally {
     host.server.close();
