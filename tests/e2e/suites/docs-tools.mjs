@@ -61,6 +61,7 @@ export default async function docsTools(ctx) {
         await page.goto(url(tool));
         const shown = await page.$eval('pu-lab-panel[panel="vendor"] [data-key="vendor.Rpm.value"]', (e) => ({ text: e.textContent, visible: e.checkVisibility() }));
         assert(shown.text === rpm && shown.visible, `Rpm shown ${JSON.stringify(shown)}`);
+        await page.screenshot({ path: join(SHOTS, `docs-${tool}-noscript-1366.png`), fullPage: true });
         await page.context().close();
       });
     }
