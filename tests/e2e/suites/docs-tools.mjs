@@ -6,7 +6,7 @@
 // the macro's postMessage listener). Screenshots: tests/e2e/screenshots/docs-*.png.
 import { createServer } from 'node:http';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { copyFileSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { extname, join, normalize } from 'node:path';
 
@@ -100,6 +100,26 @@ export default async function docsTools(ctx) {
       const vendor = frames().find((f) => f.url().includes('embed=vendor'));
       assert(await vendor.$eval('[data-key="vendor.Rpm.value"][data-value]', (e) => e.dataset.value) === rpm, 'vendor frame not the 7.5 kW motor');
       await page.screenshot({ path: join(SHOTS, 'docs-confluence-1366.png'), fullPage: true });
+      await page.context().close();
+    });
+    await check('Jupyter widget front end (pulab_docs/widget.js) with a stand-in anywidget model: the panel goes live and its report reaches the model', async () => {
+      copyFileSync(join(ROOT, 'py/pulab_docs/widget.js'), join(out, 'widget.js'));
+      // What anywidget gives render(): a model (get/set/save_changes/on/off) and an element.
+      writeFileSync(join(out, 'notebook.html'), `<!doctype html><html><head><meta charset="utf-8"><title>notebook</title></head><body><div id="out"></div>
+<script type="module">
+import widget from './widget.js';
+const state = { site: ${JSON.stringify(subSrv.url)}, panel: 'vendor', lang: 'en', input: ${JSON.stringify(other.input)}, report: {}, numbers: '' };
+window.saved = [];
+const model = { get: (k) => state[k], set: (k, v) => { state[k] = v; }, save_changes: () => window.saved.push(state.numbers), on() {}, off() {} };
+window.state = state;
+await widget.render({ model, el: document.getElementById('out') });
+</script></body></html>`);
+      const page = await newPage();
+      await page.goto(`${host.url}notebook.html`);
+      await page.waitForFunction(() => window.state?.numbers === 'live', null, { timeout: 120_000, polling: 50 });
+      const got = await page.evaluate(() => window.state.report.vendor.Rpm.value);
+      assert(String(got) === rpm, `model report Rpm ${got}, oracle ${rpm}`);
+      assert(await page.$eval('pu-lab-panel', (e) => e.getAttribute('panel') === 'vendor' && JSON.parse(e.getAttribute('input')).motor.rated_voltage_v === 380), 'element attributes from the model');
       await page.context().close();
     });
     await check('oEmbed: a consumer discovers a panel\'s description from its page URL and embeds its HTML; the panel goes live', async () => {
