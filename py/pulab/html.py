@@ -46,6 +46,11 @@ _TITLES = {
     "mechanical": ("Mechanical", "机械量"), "warnings": ("Warnings", "警告"),
 }
 _HEAD = {"en": ("quantity", "value", "details"), "zh": ("量", "值", "说明")}
+_WORDS = {("ideal", "en"): "ideal", ("ideal", "zh"): "理想值", ("err", "en"): "err",
+          ("err", "zh"): "误差", ("exact", "en"): "exact", ("exact", "zh"): "精确值",
+          ("rel", "en"): "rel. error", ("rel", "zh"): "相对误差",
+          ("note", "en"): "note", ("note", "zh"): "提示", ("warning", "en"): "warning",
+          ("warning", "zh"): "警告", ("error", "en"): "error", ("error", "zh"): "错误"}
 
 
 def _num(x) -> str:
@@ -57,38 +62,40 @@ def _cell(key: str, value, text: str | None = None) -> tuple:
     return (key, value, _num(value) if text is None else text)
 
 
-def _rows_base(r):
+def _rows_base(r, lang):
     return [(k, _cell(f"base.{k}", v), _BASE_UNITS[k]) for k, v in r["base"].items()]
 
 
-def _rows_pu(r):
+def _rows_pu(r, lang):
     return [(k, _cell(f"pu.{k}", v), "") for k, v in r["pu"].items()]
 
 
-def _rows_raw(r):
+def _rows_raw(r, lang):
     return [(k, _cell(f"vendor.raw.{k}", v), "") for k, v in r["vendor"]["raw"].items()]
 
 
-def _rows_vendor(r):
+def _rows_vendor(r, lang):
     rows = []
     for name, res in r["vendor"].items():
         if name == "raw":
             continue
         flags = " ".join(res["flags"])  # truncation, overflow, wrap: always shown
+        ideal, err = _WORDS["ideal", lang], _WORDS["err", lang]
         rows.append((name, _cell(f"vendor.{name}.value", res["value"]),
-                     f"{res['type']} Q{res['q']}, ideal {res['ideal']:.6g}, "
-                     f"err {res['error_pct']:+.4f} %, = {res['si']:.6g} {res['unit']}"
+                     f"{res['type']} Q{res['q']}, {ideal} {res['ideal']:.6g}, "
+                     f"{err} {res['error_pct']:+.4f} %, = {res['si']:.6g} {res['unit']}"
                      + (f" [{flags}]" if flags else "")))
     return rows
 
 
-def _rows_constants(r):
+def _rows_constants(r, lang):
+    exact, rel = _WORDS["exact", lang], _WORDS["rel", lang]
     return [(k, _cell(f"constants.{k}.value", c["value"]),
-             f"exact {c['exact']:.6f} = {c['expression']}, rel. error {100 * c['rel_error']:+.4f} %")
+             f"{exact} {c['exact']:.6f} = {c['expression']}, {rel} {100 * c['rel_error']:+.4f} %")
             for k, c in r["constants"].items()]
 
 
-def _rows_current(r):
+def _rows_current(r, lang):
     rows = []
     for axis in ("d", "q"):
         g = r["current_pi"][axis]
@@ -98,12 +105,12 @@ def _rows_current(r):
     return rows
 
 
-def _rows_pll(r):
+def _rows_pll(r, lang):
     return [(k, _cell(f"pll.{k}", r["pll"][k]), "")
             for k in ("kp", "ki", "kp_pu", "ki_pu", "integrator_gain")]
 
 
-def _rows_mechanical(r):
+def _rows_mechanical(r, lang):
     units = {"rated_speed_rpm": "rpm", "base_speed_rpm": "rpm", "torque_base_nm": "N·m",
              "kt_nm_per_a": "N·m/A (RMS)", "ke_v_s_per_rad": "V·s/rad (line RMS)",
              "rated_torque_nm": "N·m"}
@@ -112,7 +119,7 @@ def _rows_mechanical(r):
 
 def _rows_review(r, lang):
     msg = "message_zh" if lang == "zh" else "message"
-    return [(x["severity"], _cell(x["key"], x["value"]), x[msg])
+    return [(_WORDS[x["severity"], lang], _cell(x["key"], x["value"]), x[msg])
             for x in r["review"]["findings"] if x.get("value") is not None]
 
 
@@ -122,13 +129,13 @@ _PANEL_SECTIONS = {
     "review": ("review",), "bases": ("base",), "pu": ("pu",), "vendor": ("raw", "vendor"),
     "constants": ("constants",), "current": ("current_pi",), "pll": ("pll",),
 }
-_ROWS = {"base": _rows_base, "pu": _rows_pu, "raw": _rows_raw, "vendor": _rows_vendor,
+_ROWS = {"review": _rows_review, "base": _rows_base, "pu": _rows_pu, "raw": _rows_raw, "vendor": _rows_vendor,
          "constants": _rows_constants, "current_pi": _rows_current, "pll": _rows_pll,
          "mechanical": _rows_mechanical}
 
 
 def _section(name: str, r: dict, lang: str) -> str:
-    rows = _rows_review(r, lang) if name == "review" else _ROWS[name](r)
+    rows = _ROWS[name](r, lang)
     title = _TITLES[name][lang == "zh"]
     head = "".join(f"<th>{h}</th>" for h in _HEAD[lang])
     body = "".join(
@@ -170,7 +177,7 @@ def report_html(r: dict, lang: str = "en") -> str:
         msg = "message_zh" if lang == "zh" else "message"
         parts.insert(0, f'<table class="pu-lab-table"><caption>{_TITLES["review"][lang == "zh"]}'
                         "</caption><tbody>" + "".join(
-                            f'<tr><th scope="row">{escape(x["severity"])}</th>'
+                            f'<tr><th scope="row">{_WORDS[x["severity"], lang]}</th>'
                             f"<td>{escape(x[msg])}</td></tr>" for x in findings)
                         + "</tbody></table>")
     warnings = r["warnings_zh" if lang == "zh" else "warnings"]

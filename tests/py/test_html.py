@@ -89,7 +89,7 @@ def test_element_attributes_carry_the_panel_and_the_input():
     assert el["panel"] == "vendor" and el["lang"] == "zh" and el["theme"] == "dark"
     assert json.loads(el["input"]) == inp
     # zh titles; the firmware's flags are shown with the number (Rpm truncates in the seed code)
-    assert "厂商整数" in "".join(page.text)
+    assert "厂商整数" in "".join(page.text) and "理想值" in "".join(page.text)
     assert re.search(r"Rpm.*\[truncation\]", "".join(page.text))
 
 
@@ -141,7 +141,7 @@ def test_notebook_report_renders_readable_tables():
     for key in ("base.Z_b", "pu.Rs", "vendor.LD.value", "current_pi.q.pm_kp", "pll.kp_pu"):
         assert _same(page.cells[key][0], _at(case["expected"], key)), key
     zh = "".join(Page(Report(case["input"], lang="zh")._repr_html_()).text)
-    assert "基值" in zh and "厂商整数" in zh
+    assert "基值" in zh and "厂商整数" in zh and "提示" in zh  # the 380 V motor's review notes
     with pytest.raises(ValueError, match="^lang: "):
         Report(case["input"], lang="fr")
 
