@@ -98,12 +98,13 @@ def _url_encode(text: str) -> str:
 
 def confluence_macro(site: str, params: dict) -> str:
     """The user macro of docs/deploy.md rendered for ``params`` (Panel, Lang, Input): the subset
-    of Velocity the template uses (## comments, $paramX, #if($paramX)…#end, urlEncode().replace)."""
+    of Velocity the template uses (## comments, $paramX, #if("$!paramX" != "")…#end,
+    urlEncode().replace)."""
     origin = urllib.parse.urlsplit(site)
     tpl = snippet("### Confluence", "velocity").replace(DOC_SITE, site).replace(
         "'https://intranet'", f"'{origin.scheme}://{origin.netloc}'")
     tpl = "\n".join(line for line in tpl.splitlines() if not line.startswith("##"))
-    tpl = re.sub(r"#if\(\$param(\w+)\)(.*?)#end",
+    tpl = re.sub(r'#if\("\$!param(\w+)" != ""\)(.*?)#end',
                  lambda m: m[2] if params.get(m[1]) else "", tpl, flags=re.S)
     tpl = re.sub(r'\$generalUtil\.urlEncode\(\$param(\w+)\)\.replace\("\+", "%20"\)',
                  lambda m: _url_encode(params[m[1]]).replace("+", "%20"), tpl)

@@ -137,8 +137,10 @@ def test_doxygen_snippet_builds_a_page_with_the_panel(tmp_path, capsys):
 
 def test_confluence_macro_renders_an_iframe_of_the_panel():
     from urllib.parse import unquote, urlsplit
-    page = Page(confluence_macro(SITE, {"Panel": "vendor", "Lang": "zh",
-                                        "Input": json.dumps({"motor": {"rs_ohm": "1 + 2"}})}))
+    html = confluence_macro(SITE, {"Panel": "vendor", "Lang": "zh",
+                                   "Input": json.dumps({"motor": {"rs_ohm": "1 + 2"}})})
+    assert "$" not in html and "#if" not in html and "#end" not in html  # all of it rendered
+    page = Page(html)
     (frame,) = [a for t, a in page.elements if t == "iframe"]
     url = urlsplit(frame["src"])
     assert url.query == "embed=vendor&lang=zh"
