@@ -62,7 +62,7 @@ from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.inputs import SECTIONS, normalize
-from ..schema.validate import real, shown
+from ..schema.validate import key_path, real, shown
 from .integers import profile_name
 from .slices import finish
 
@@ -160,7 +160,9 @@ def make_problem(req) -> Problem:
         raise InputError("prove.ranges", code="prove_no_ranges")
     checked = {}
     for path, pair in ranges.items():
-        field = f"prove.ranges.{path}"
+        # A path as typed names its range; anything unprintable is quoted (one-line errors).
+        field = f"prove.ranges.{path}" if isinstance(path, str) and path.isprintable() \
+            and path.strip() == path and 0 < len(path) <= 80 else key_path("prove.ranges", path)
         _numeric_path(path, field)
         if not isinstance(pair, (list, tuple)) or len(pair) != 2:
             raise InputError(field, code="prove_pair", got=shown(pair))

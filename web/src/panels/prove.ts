@@ -7,35 +7,13 @@ import { effectiveInput } from '../fields';
 import { errText, getLang, t, type Key } from '../i18n';
 import { encodeHash, getPath, type Input } from '../state';
 import type { ApiErr } from '../protocol';
+import type { Proof, ProveEntry as Entry, ProveRequest, ProveVerdict as Verdict } from '../api-types';
 import type { Panel, PanelContext } from './panel';
 import { sweepPaths } from './sweep';
 
-type Verdict = 'proven' | 'violated' | 'unknown';
 /** The profiles a proof covers (pulab.analyses.prove.PROFILES). */
 const PROFILES = ['inovance', 'ti'] as const;
 type Profile = (typeof PROFILES)[number];
-type Kind = 'wrap' | 'store' | 'div0' | 'zero' | 'outside' | 'saturate' | 'invalid';
-
-/** One integer's entry (docs/contract.md, "Family proof"). */
-interface Entry {
-  verdict: Verdict;
-  range: [number, number] | null;
-  type: string | null;
-  word: [number, number] | null;
-  proven_fraction: number;
-  worst_error_pct: number | null;
-  error_bound: boolean;
-  kind?: Kind;
-  statement?: string;
-  raw?: Record<string, number>;
-  counterexample?: Input;
-}
-
-interface Proof {
-  verdict: Verdict;
-  integers: Record<string, Entry>;
-  not_analysed: string[];
-}
 
 interface RangeRow { path: string; lo: string; hi: string }
 
@@ -61,7 +39,7 @@ function defaultRow(ctx: PanelContext, path: string, lo: number, hi: number): Ra
   return { path, lo: fmt(v * lo), hi: fmt(v * hi) };
 }
 
-function request(input: Input): Record<string, unknown> {
+function request(input: Input): ProveRequest {
   const ranges: Record<string, [number, number]> = {};
   for (const r of st.rows ?? []) ranges[r.path] = [Number(r.lo), Number(r.hi)];
   return { input, ranges, profile: st.profile };
@@ -80,22 +58,22 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
     Object.assign(st, { job: null, error: e });
     provePanel.render(el, ctx);
   };
-  const plan = await client.call('prove', { ...req, op: 'plan' }, CHANNEL);
+  const plan = await client.call('prove.plan', req, CHANNEL);
   if (!plan.result.ok) return fail(plan.result);
-  st.names = (plan.result.plan as unknown as { names: string[] }).names;
+  st.names = plan.result.plan.names;
   provePanel.render(el, ctx);
   for (const name of st.names) {
     if (job.cancelled) break;
-    const r = await client.call('prove', { ...req, op: 'integer', name }, CHANNEL);
+    const r = await client.call('prove.integer', { ...req, name }, CHANNEL);
     if (!r.result.ok) return fail(r.result);
-    st.entries[name] = r.result.integer as unknown as Entry;
+    st.entries[name] = r.result.integer;
     provePanel.render(el, ctx);
   }
   const done = Object.keys(st.entries).length;
   if (done === st.names.length) {
-    const s = await client.call('prove', { ...req, op: 'summary', integers: st.entries }, CHANNEL);
+    const s = await client.call('prove.summary', { ...req, integers: st.entries }, CHANNEL);
     if (!s.result.ok) return fail(s.result);
-    st.proof = s.result.proof as unknown as Proof;
+    st.proof = s.result.proof;
     st.note = { key: 'prDone', vars: { n: done, s: ((performance.now() - t0) / 1000).toFixed(2) } };
   } else {
     st.note = { key: 'prCancelled', vars: { done, total: st.names.length } };
