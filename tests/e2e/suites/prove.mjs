@@ -86,6 +86,7 @@ export default async function prove(ctx) {
 
   await check('prove: cancel stops between integers; a bad range is reported at its row', async () => {
     await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(seed.input))}`);
+    await page.reload(); // a hash change alone keeps the page (and the panel) it had
     await ready(page);
     await page.$eval('#panel-prove', (e) => e.scrollIntoView());
     await setRows(rows);
