@@ -14,7 +14,7 @@ export const VIEWS: View[] = [
   { id: 'design', panels: ['review', 'vendor', 'bases', 'pu', 'datasheet'] },
   { id: 'firmware', panels: ['vendors', 'constants', 'code'] },
   { id: 'loops', panels: ['current', 'pll', 'loop'] },
-  { id: 'tools', panels: ['qcalc', 'conventions', 'sweep', 'batch'] },
+  { id: 'tools', panels: ['qcalc', 'conventions', 'sweep', 'prove', 'batch'] },
   { id: 'learn', panels: ['docs'] },
 ];
 
