@@ -127,8 +127,9 @@ def test_normalize_names_the_field_at_fault():
         ({**SEED_INPUT, "motors": {}}, "motors", "unknown_section"),
         ({**SEED_INPUT, "drive": {"udc_v": 24}}, "drive.ts_s", "required"),
         # a datasheet value whose conversion is out of range is reported where it was typed
-        ({"motor": {k: v for k, v in SEED_INPUT["motor"].items() if k != "rated_freq_hz"},
-          "drive": SEED_INPUT["drive"], "datasheet": {"speed_rpm": 1e12}}, "datasheet.speed_rpm",
+        ({"motor": {**{k: v for k, v in SEED_INPUT["motor"].items() if k != "rated_freq_hz"},
+                    "pole_pairs": 1000},
+          "drive": SEED_INPUT["drive"], "datasheet": {"speed_rpm": 1e9}}, "datasheet.speed_rpm",
          "derived_invalid"),
     ]
     for inp, field, code in cases:
