@@ -170,8 +170,9 @@ def test_every_finding_has_chinese_and_names_a_field():
     assert {"error", "warning", "note"} == {x["severity"] for x in r["review"]["findings"]}
     for x in r["review"]["findings"]:
         assert chinese(x["message_zh"]), x["message"]
-        assert x["field"].split(".")[0] in ("motor", "drive", "conventions", "current_loop",
-                                            "pll"), x
+        # a design choice (never a motor's property such as its resistance)
+        assert x["field"].split(".")[0] in ("drive", "conventions", "current_loop", "pll",
+                                            "profiles", "datasheet"), x
     assert r["warnings_zh"] == [x["message_zh"] for x in r["review"]["findings"]
                                 if x["severity"] != "note"]
 
@@ -196,4 +197,29 @@ def test_cli_both_given_exits_2_naming_the_field(tmp_path):
     out = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)],
                          capture_output=True, text=True, env={"PYTHONPATH": str(ROOT / "py")})
     assert out.returncode == 2
-    assert out.stderr.startswith("error: datasheet.speed_rpm: and motor.rated_freq_hz both given")
+    assert out.stderr == ("error: datasheet.speed_rpm: Rated speed (datasheet.speed_rpm) and Rated "
+                          "frequency (motor.rated_freq_hz) both set the motor's Rated frequency: "
+                          "give only one of them.\n")
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "tests/golden").glob("[0-9]*.json")),
+                         ids=lambda p: p.stem)
+def test_no_finding_asks_to_change_the_motor(path):
+    """Every golden motor: each finding points at a design choice, with its form label."""
+    r = report(json.loads(path.read_text())["input"])
+    for x in r["review"]["findings"]:
+        assert not x["field"].startswith("motor."), x
+        assert x["label"] != x["field"] and chinese(x["label_zh"]), x
+
+
+def test_the_firmware_shipped_grades_the_others_limits_as_notes():
+    """The 28,000 rpm robot motor: a warning while Inovance is shipped; with TI shipped a note,
+    and the voltage headroom is the physical U_dc/√2, not Inovance's whole-volt limit."""
+    inp = json.loads((ROOT / "tests/golden/23_limit_robot_28krpm.json").read_text())["input"]
+    sev = {x["code"]: x["severity"] for x in report(inp)["review"]["findings"]}
+    assert sev["unrepresentable"] == "warning"
+    r = report({**inp, "conventions": {"firmware": "ti"}})
+    x = [x for x in r["review"]["findings"] if x["code"] == "unrepresentable"]
+    assert x[0]["severity"] == "note" and x[0]["field"] == "conventions.firmware"
+    assert x[0]["label"] == "Firmware you ship" and x[0]["label_zh"] == "所用固件"
+    assert r["review"]["headroom"]["limit_v"] == 24 / math.sqrt(2)

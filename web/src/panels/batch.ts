@@ -74,14 +74,15 @@ function download(): void {
 function resultTable(): HTMLElement {
   const col = (name: string) => st.columns.indexOf(name);
   const labels = st.columns.slice(1, col('error'));
-  const head = ['row', ...labels, 'error', ...TABLE_COLUMNS];
+  const head = ['row', ...labels, 'error', 'firmware', ...TABLE_COLUMNS];
   const errCol = col(getLang() === 'zh' ? 'error_zh' : 'error');
   return h('div', { class: 'scroll' }, h('table', { class: 'grid batch-table' },
     h('thead', {}, h('tr', {}, head.map((c) => h('th', {}, c)))),
-    h('tbody', {}, st.rows.slice(0, SHOWN).map((r, i) => h('tr', { class: r[col('error')] ? 'bad' : '', 'data-row': r[0] },
+    h('tbody', {}, st.rows.slice(0, SHOWN).map((r, i) => h('tr', { class: r[col('error')] ? 'bad' : r[col('firmware')] ? 'limit' : '', 'data-row': r[0] },
       h('td', { class: 'r' }, r[0]),
       labels.map((l) => h('td', {}, r[col(l)])),
       h('td', { class: 'batch-error' }, r[errCol]),
+      h('td', { class: 'batch-firmware' }, r[col('firmware')]),
       TABLE_COLUMNS.map((c) => {
         const v = r[col(c)];
         return h('td', { class: 'r' }, v === '' || c.endsWith('.flags') ? v : num(`batch.rows.${i}.${c}`, Number(v), { text: v }));
