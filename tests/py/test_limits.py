@@ -31,8 +31,13 @@ def test_a_division_by_zero_and_an_overflowing_constant():
     e = error_problem(err, ["Rpm", "LD"])
     assert (e["field"], e["code"], e["results"], e["value"]) == ("raw.Current", "limit.code", ["LD", "Rpm"], None)
     assert e["params"]["reason"] == {"code": "not_positive", "params": {"value": 0.0}}
-    c = constant_problem("ti", {"name": "Kp_Iq", "ideal": 70000.0, "format": "Q15", "value": 32767})
+    c = constant_problem("ti", {"name": "Kp_Iq", "ideal": 70000.0, "format": "Q15", "value": 32767,
+                                "q": 15}, ("full_scale_current_a",))
     assert (c["field"], c["value"], c["stored"]) == ("profiles.ti.Kp_Iq", 70000.0, 32767)
+    # 70000/32767 = 2.14: two fractional bits fewer (Q13 keeps 70000/4 = 17500 ≤ 32767)
+    assert (c["params"]["bits"], c["params"]["q_new"]) == (2, 13)
+    assert c["params"]["factor"] == pytest.approx(70000 / 32767, rel=1e-15)
+    assert c["params"]["options"] == "profiles.ti.full_scale_current_a"
 
 
 def test_one_entry_per_field_with_the_results_it_stops():
