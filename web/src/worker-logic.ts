@@ -158,7 +158,7 @@ export interface RuntimeHost {
 }
 
 /** Boot progress is sent to the pages in steps of this fraction at least (and at each new stage). */
-export const PROGRESS_STEP = 0.01;
+const PROGRESS_STEP = 0.01;
 
 const now = (): number => (typeof performance !== 'undefined' ? performance.now() : Date.now());
 
