@@ -75,18 +75,17 @@ describe('what is sent', () => {
   for (const [name, inp, want] of eff) it(`effectiveInput, ${name}`, () => expect(effectiveInput(inp)).toEqual(want));
 });
 
-describe('presets: current-loop bandwidth suited to Ts (no ω_c·Ts finding from pulab.analyses.review, except the seed example)', () => {
+describe('presets: current-loop bandwidth suited to Ts (no phase-margin finding from pulab.analyses.review\'s delay-aware loop model)', () => {
   let p: NodePulab;
   beforeAll(async () => {
     p = await bootPulab();
   });
   for (const preset of PRESETS)
-    it(`${preset.id}: bandwidth ${String(preset.input.current_loop.bandwidth_hz)} Hz at Ts ${String(preset.input.drive.ts_s)} s → wc_ts finding only for the seed`, async () => {
+    it(`${preset.id}: bandwidth ${String(preset.input.current_loop.bandwidth_hz)} Hz at Ts ${String(preset.input.drive.ts_s)} s → no phase_margin finding`, async () => {
       const { result } = await p.call('report', JSON.stringify(reportInput(preset.input)));
       expect(result.ok).toBe(true);
       const findings = (result as unknown as { report: { review: { findings: { code: string }[] } } }).report.review.findings;
-      // The seed example (the golden default page) keeps its 500 Hz and shows the warning on purpose.
-      expect(findings.filter((f) => f.code === 'wc_ts').length).toBe(preset.id === 'seed' ? 1 : 0);
+      expect(findings.filter((f) => f.code === 'phase_margin')).toEqual([]);
     });
 });
 
