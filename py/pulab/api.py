@@ -29,7 +29,7 @@ from .analyses.slices import finish
 from .schema.textnum import ascii_text, parse_int, parse_real
 
 __all__ = ["run_json", "run_json_steps", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
-           "trace_json", "trace_examples_json", "vendors_json"]
+           "trace_json", "trace_examples_json", "vendors_json", "course_json"]
 
 
 def _fail(e: InputError) -> str:
@@ -335,5 +335,48 @@ def vendors_json(text: str) -> str:
             return json.dumps({"ok": True, "translation": t}, allow_nan=False)
         raise InputError("action", code="not_choice", choices="header, translate",
                          got=shown(action))
+    except InputError as e:
+        return _fail(e)
+
+
+def course_json(text: str) -> str:
+    """The course's exercises (:mod:`pulab.analyses.exercises`; docs/contract.md, "Course").
+
+    ``{"action": "spec"}`` → ``{"ok": true, "exercises": [...]}``;
+    ``{"action": "check", "input": {...}, "id": ID, "answer": A}`` → ``{"ok": true, "result":
+    {"id", "state": "correct"|"wrong", "expected", "tolerance"}}``;
+    ``{"action": "answers", "input": {...}}`` → ``{"ok": true, "answers": {ID: {...}}}``;
+    ``{"action": "trainees", "start": N, "count": K}`` → ``{"ok": true, "trainees": [{"n", "input"}]}``
+    (K ≤ 200); bad input → an error naming the field (``exercise.ID`` for an unreadable answer).
+
+    >>> req = {"action": "check", "input": {"motor": {}}, "id": "vendor-rpm", "answer": "1"}
+    >>> json.loads(course_json(json.dumps(req)))["field"]
+    'motor.rated_voltage_v'
+    """
+    from .analyses import exercises
+    try:
+        req = parse(text)
+        if not isinstance(req, dict):
+            raise InputError("request", code="not_json_object")
+        action = req.get("action")
+        if action == "spec":
+            return json.dumps({"ok": True, "exercises": exercises.spec()})
+        if action == "trainees":
+            start = parse_int(req.get("start", 1), "start")
+            count = parse_int(req.get("count", 10), "count")
+            if not 1 <= count <= 200:
+                raise InputError("count", code="integer_range", lo=1, hi=200, got=shown(count))
+            return json.dumps({"ok": True, "trainees": [{"n": n, "input": exercises.trainee_input(n)}
+                                                        for n in range(start, start + count)]})
+        if action not in ("check", "answers"):
+            raise InputError("action", code="not_choice", choices="spec, check, answers, trainees",
+                             got=shown(action))
+        inp = req.get("input")
+        if not isinstance(inp, dict):
+            raise InputError("input", code="not_json_object")
+        if action == "answers":
+            return json.dumps({"ok": True, "answers": exercises.answers(inp)}, allow_nan=False)
+        return json.dumps({"ok": True, "result": exercises.check(inp, req.get("id"), req.get("answer"))},
+                          allow_nan=False)
     except InputError as e:
         return _fail(e)

@@ -1,0 +1,103 @@
+"""The course's exercises (pulab.analyses.exercises) against tests/oracle/course_oracle.py, which
+recomputes every expected answer without pulab, for several trainee motors."""
+
+from __future__ import annotations
+
+import json
+import math
+import pathlib
+import sys
+
+import pytest
+
+from pulab import api
+from pulab.analyses import exercises
+from pulab.schema.errors import InputError
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "oracle"))
+import course_oracle  # noqa: E402
+
+#: Floats: the oracle and pulab compute the same formulas in another order.
+REL = 1e-9
+
+
+@pytest.mark.parametrize("n", sorted(course_oracle.TRAINEES))
+def test_trainee_motor_is_pinned(n):
+    # a link a trainer handed out must keep its motor
+    assert exercises.trainee_input(n) == course_oracle.TRAINEES[n]
+
+
+@pytest.mark.parametrize("n", sorted(course_oracle.TRAINEES))
+def test_answers_match_oracle(n):
+    inp = course_oracle.TRAINEES[n]
+    want = course_oracle.expected(inp)
+    got = {k: v["expected"] for k, v in exercises.answers(inp).items()}
+    assert set(got) == set(want)
+    for k, w in want.items():
+        g = got[k]
+        if isinstance(w, float):
+            assert isinstance(g, float) and math.isclose(g, w, rel_tol=REL, abs_tol=1e-12), (k, g, w)
+        else:
+            assert type(g) is type(w) and g == w, (k, g, w)
+
+
+def test_every_day_one_chapter_has_five_exercises():
+    by = {}
+    for e in exercises.EXERCISES:
+        by.setdefault(e.chapter, []).append(e.id)
+    day_one = json.loads((pathlib.Path(__file__).resolve().parents[2] / "docs" / "course.json").read_text())["day_one"]
+    for step in day_one:
+        for ch in step["chapters"]:
+            assert len(by.get(ch, [])) >= 5, ch
+
+
+def _perturbed(e, v):
+    """An answer just outside the stated tolerance."""
+    if e.kind == "choice":
+        return next(c for c in e.choices if c != v)
+    if e.kind == "int":
+        return str(v + int(e.tol) + 1)
+    step = e.tol * 1.5 if e.unit == "%" else abs(v) * e.tol * 1.5
+    return repr(v + step)
+
+
+@pytest.mark.parametrize("n", [0, 3, 14])
+def test_check_accepts_oracle_answer_and_rejects_outside_tolerance(n):
+    inp = course_oracle.TRAINEES[n]
+    want = course_oracle.expected(inp)
+    for e in exercises.EXERCISES:
+        w = want[e.id]
+        typed = w if e.kind == "choice" else (str(w) if e.kind == "int" else f"{w:.6g}")
+        assert exercises.check(inp, e.id, typed)["state"] == "correct", (e.id, typed)
+        assert exercises.check(inp, e.id, _perturbed(e, w))["state"] == "wrong", e.id
+
+
+def test_tolerance_edges():
+    inp = course_oracle.TRAINEES[0]
+    assert exercises.check(inp, "pi-pm-kp", "1181")["state"] == "correct"  # ±1 stated
+    assert exercises.check(inp, "pi-pm-kp", "1182")["state"] == "wrong"
+    assert exercises.check(inp, "vendor-rpm", "15023")["state"] == "wrong"  # exact
+    assert exercises.check(inp, "warmup-ub", "9.86")["state"] == "correct"  # ±1 %
+    assert exercises.check(inp, "warmup-ub", "17")["state"] == "wrong"  # the line voltage
+    assert exercises.check(inp, "warmup-ub", "９.８１")["state"] == "correct"  # typed like the form
+
+
+@pytest.mark.parametrize("answer, code", [("", "required"), ("abc", "not_number"), ("1e999", "not_finite")])
+def test_bad_answer_names_the_field(answer, code):
+    with pytest.raises(InputError) as e:
+        exercises.check(course_oracle.TRAINEES[0], "warmup-ub", answer)
+    assert e.value.field == "exercise.warmup-ub" and e.value.code == code
+
+
+def test_api_errors_are_data():
+    inp = course_oracle.TRAINEES[0]
+    r = json.loads(api.course_json(json.dumps({"action": "check", "input": inp, "id": "nope", "answer": 1})))
+    assert r["ok"] is False and r["field"] == "id" and r["code"] == "unknown_exercise"
+    r = json.loads(api.course_json(json.dumps({"action": "check", "input": inp, "id": "q-fit", "answer": "Q99"})))
+    assert r["field"] == "exercise.q-fit" and r["code"] == "not_choice"
+    r = json.loads(api.course_json(json.dumps({"action": "trainees", "start": 1, "count": 0})))
+    assert r["field"] == "count"
+    r = json.loads(api.course_json(json.dumps({"action": "trainees", "start": 9999, "count": 2})))
+    assert r["field"] == "trainee"
+    r = json.loads(api.course_json(json.dumps({"action": "trainees", "start": 1, "count": 3})))
+    assert [t["n"] for t in r["trainees"]] == [1, 2, 3]
