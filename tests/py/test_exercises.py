@@ -101,3 +101,23 @@ def test_api_errors_are_data():
     assert r["field"] == "trainee"
     r = json.loads(api.course_json(json.dumps({"action": "trainees", "start": 1, "count": 3})))
     assert [t["n"] for t in r["trainees"]] == [1, 2, 3]
+
+
+def test_chapters_hold_exactly_the_engines_exercises():
+    # docs/{zh,en}/*.md: `::: exercise ID [choice A B …] [trace]` — each id once per language, in the
+    # chapter pulab files it under, with pulab's choices in pulab's order.
+    import re
+    docs = pathlib.Path(__file__).resolve().parents[2] / "docs"
+    by_id = {e.id: e for e in exercises.EXERCISES}
+    for lang in ("zh", "en"):
+        seen = {}
+        for f in sorted((docs / lang).glob("*.md")):
+            for m in re.finditer(r"^:::\s*exercise\s+(\S+)(.*)$", f.read_text(encoding="utf-8"), re.M):
+                ex_id, opts = m.group(1), m.group(2).split()
+                assert ex_id in by_id and ex_id not in seen, (lang, f.name, ex_id)
+                seen[ex_id] = f.stem
+                e = by_id[ex_id]
+                assert f.stem == e.chapter, (lang, ex_id)
+                choices = tuple(o for o in opts[1:] if o != "trace") if opts[:1] == ["choice"] else ()
+                assert choices == e.choices, (lang, ex_id, choices)
+        assert set(seen) == set(by_id), (lang, set(by_id) - set(seen))

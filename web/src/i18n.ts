@@ -1,6 +1,7 @@
 // Every label, unit and message in Chinese and English: the page's own labels here, each
 // feature's in its own file under i18n/ (a new feature adds a file and one line below).
 import qcalc from './i18n/qcalc';
+import course from './i18n/course';
 
 export type Lang = 'en' | 'zh';
 
@@ -416,12 +417,13 @@ const page = {
   'o.datasheet.kt_current.peak': 'A peak',
 };
 
-const en = { ...page, ...qcalc.en };
+const en = { ...page, ...qcalc.en, ...course.en };
 
 export type Key = keyof typeof en;
 
 const zh: Record<Key, string> = {
   ...qcalc.zh,
+  ...course.zh,
   title: 'pu-lab',
   subtitle: '汇川 C2000 永磁同步电机固件的标幺化与 Q 格式定标',
   preset: '预设',

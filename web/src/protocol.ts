@@ -13,6 +13,7 @@ export const API_FUNCTIONS = {
   sweep: 'sweep_json', batch: 'batch_json',
   trace: 'trace_json',
   traceExamples: 'trace_examples_json',
+  course: 'course_json',
 } as const;
 export type ApiKind = keyof typeof API_FUNCTIONS;
 
