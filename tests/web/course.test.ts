@@ -46,3 +46,33 @@ describe('course markup', () => {
     }
   });
 });
+
+describe('concept figures', () => {
+  const value = (p: string) => ({ 'base.I_b': 1.5, 'base.U_b': 9.815, 'pll.kp_pu': 1.0097, 'pll.ki_pu': 224.3, 'pll.integrator_gain': 440,
+    'vendor.LD.value': 1045, 'current_pi.d.pm_kp': 1180, 'current_pi.d.pm_ki': 4720 } as Record<string, number>)[p];
+  it('each named figure is an SVG with the reader\'s numbers as data-key/data-value', async () => {
+    const { FIGURES } = await import('../../web/src/figures/concepts');
+    for (const name of FIGURES) {
+      const el = document.createElement('div');
+      el.innerHTML = renderMarkdown(`{{figure:${name}}}`, { value });
+      const fig = el.querySelector(`figure[data-figure="${name}"] svg`);
+      expect(fig, name).not.toBeNull();
+      expect(el.querySelectorAll('[data-key][data-value]').length, name).toBeGreaterThan(0);
+    }
+    const el = document.createElement('div');
+    el.innerHTML = renderMarkdown('{{figure:qbits}}', { value });
+    // LD = 1045 = 0b0000010000010101 in the 16 bit cells
+    const bits = [...el.querySelectorAll('rect.fig-bit + text')].slice(0, 16).map((t) => t.textContent).join('');
+    expect(bits).toBe((1045).toString(2).padStart(16, '0'));
+  });
+  it('the chapters name only existing figures', async () => {
+    const { FIGURES } = await import('../../web/src/figures/concepts');
+    const { parseChapter } = await import('../../web/src/docs/parse');
+    const { readdirSync } = await import('node:fs');
+    for (const lang of ['en', 'zh']) {
+      for (const f of readdirSync(resolve(__dirname, `../../docs/${lang}`))) {
+        for (const n of parseChapter(readFileSync(resolve(__dirname, `../../docs/${lang}/${f}`), 'utf8')).figures) expect(FIGURES, `${lang}/${f}`).toContain(n);
+      }
+    }
+  });
+});

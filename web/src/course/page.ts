@@ -16,6 +16,7 @@ import { langSwitch } from '../page/header';
 import { LANG_KEY, load, store } from '../page/storage';
 import type { PulabClient } from '../rpc';
 import type { Json } from '../protocol';
+import { registerOffline } from '../offline';
 import { applyProgress, clearProgress, exportProgress, loadProgress, motorKey, wireExercises } from './exercises';
 
 const CHAPTERS = import.meta.glob('../../../docs/{zh,en}/*.md', { query: '?raw', import: 'default', eager: true }) as Record<string, string>;
@@ -81,6 +82,7 @@ export class CoursePage {
     this.render();
     if (this.params.has('trainer')) return;
     await this.whenReady();
+    registerOffline(); // the course works offline like the calculator (sw.js caches every built file)
     try {
       const { result } = await this.client.call('report', this.input, 'report');
       if (result.ok) this.report = result.report as Report;

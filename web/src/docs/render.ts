@@ -4,6 +4,7 @@ import katex from 'katex';
 import { fillPlaceholders } from './parse';
 import { fmtNum } from '../format';
 import { has, t } from '../i18n';
+import { drawFigure, isFigure } from '../figures/concepts';
 
 export const esc = (s: string): string =>
   s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
@@ -78,6 +79,8 @@ export function renderMarkdown(md: string, opts: RenderOpts): string {
   // 3. embeds and values
   src = src.replace(/\{\{\s*(panel|plot):([A-Za-z0-9_-]+)\s*\}\}/g, (_, kind: string, name: string) =>
     keep(`<div class="doc-embed" data-embed-${kind}="${esc(name)}"></div>`));
+  src = src.replace(/\{\{\s*figure:([A-Za-z0-9_-]+)\s*\}\}/g, (whole, name: string) =>
+    (isFigure(name) ? keep(`<figure class="course-fig" data-figure="${esc(name)}">${drawFigure(name, (p) => opts.value(p))}</figure>`) : whole));
   src = src.replace(/\{\{\s*([^{}\s]+)\s*\}\}/g, (_, path: string) => {
     const v = opts.value(path);
     return keep(`<span class="num doc-val" data-key="${esc(path)}"${typeof v === 'number' ? ` data-value="${esc(JSON.stringify(v))}" title="${esc(String(v))}"` : ''}>${esc(valueText(v))}</span>`);
