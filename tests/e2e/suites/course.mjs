@@ -112,6 +112,19 @@ export default async function course(ctx) {
     await p.context().close();
   });
 
+  await check('course: the answer key (print=key) lists every exercise with the engine\'s answer and opens the solutions', async () => {
+    const p = await newPage();
+    await p.goto(`${subSrv.url}course.html?print=key&lang=en`);
+    await courseReady(p);
+    const rows = await p.$$eval('.course-key-table tbody tr', (r) => r.map((x) => [x.children[1].textContent, x.children[2].textContent]));
+    assert(rows.length === Object.keys(seedAnswers).length, `${rows.length} rows`);
+    const rpm = rows.find(([id]) => id === 'vendor-rpm');
+    assert(rpm && rpm[1].trim() === String(seedAnswers['vendor-rpm']), JSON.stringify(rpm));
+    const closed = await p.$$eval('details.ex-solution:not([open])', (d) => d.length);
+    assert(closed === 0, `${closed} solutions closed in the key`);
+    await p.context().close();
+  });
+
   await check('course: screenshots 390/900/1366 px, zh and en, and the handout layouts', async () => {
     const p = await newPage();
     for (const lang of ['zh', 'en']) {

@@ -204,7 +204,12 @@ export class CoursePage {
     if (st) main.append(st);
     if (print === 'course' || print === 'key') {
       document.documentElement.dataset.print = print;
-      for (const id of DAY_ONE) main.append(renderChapter(id, this.report, this.hash));
+      for (const id of DAY_ONE) {
+        const art = renderChapter(id, this.report, this.hash);
+        // The key keeps each chapter's title and exercises (questions and worked solutions) only.
+        if (print === 'key') for (const c of [...art.children]) if (!c.matches('h1, [data-exercise]')) c.remove();
+        main.append(art);
+      }
       if (print === 'key') {
         main.prepend(this.answerTable());
         for (const d of main.querySelectorAll('details.ex-solution')) d.setAttribute('open', '');
@@ -227,7 +232,7 @@ export class CoursePage {
       typeof a.expected === 'number' ? `${fmtNum(a.expected, 6)} ${a.unit}` : has(`c_${String(a.expected)}`) ? t(`c_${String(a.expected)}` as never) : String(a.expected),
       a.tolerance[getLang()]]);
     return h('section', { class: 'course-key' }, h('h1', {}, t('answerKey')),
-      table([t('trainerChapter'), t('trainerExercise'), t('answerKey'), t('trainerTol')], rows, 'course-key-table'));
+      table([t('trainerChapter'), t('trainerExercise'), t('courseAnswer'), t('trainerTol')], rows, 'course-key-table'));
   }
 }
 

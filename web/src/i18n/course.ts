@@ -44,6 +44,7 @@ export default dict(
     trainerChapter: 'Chapter',
     trainerTol: 'Tolerance',
     answerKey: 'Answer key',
+    courseAnswer: 'Answer',
     goCourse: 'Course',
   },
   {
@@ -88,6 +89,7 @@ export default dict(
     trainerChapter: '章节',
     trainerTol: '容差',
     answerKey: '答案',
+    courseAnswer: '答案',
     goCourse: '课程',
   },
 );
