@@ -121,3 +121,20 @@ def test_chapters_hold_exactly_the_engines_exercises():
                 choices = tuple(o for o in opts[1:] if o != "trace") if opts[:1] == ["choice"] else ()
                 assert choices == e.choices, (lang, ex_id, choices)
         assert set(seen) == set(by_id), (lang, set(by_id) - set(seen))
+
+
+BAD = [None, True, -1, 0, 1e308, float("nan"), "", "x" * 500, "１２", [], {}, [1], {"a": 1}, "0x10", "1,000"]
+
+
+def test_course_json_never_raises_and_names_a_field():
+    # every reply is JSON: ok, or an error with a field (bad input never crashes or hangs)
+    inp = course_oracle.TRAINEES[0]
+    reqs = [{"action": a} for a in BAD] + [{"action": "trainees", "start": s, "count": c} for s in BAD[:6] for c in BAD[:6]]
+    reqs += [{"action": "check", "input": inp, "id": i, "answer": a} for i in BAD[:8] + ["q-fit", "vendor-rpm", "warmup-ub"]
+             for a in BAD]
+    reqs += [{"action": "answers", "input": v} for v in BAD]
+    for r in reqs:
+        text = json.dumps(r, allow_nan=True)
+        out = json.loads(api.course_json(text))
+        assert out["ok"] is True or (isinstance(out["field"], str) and out["field"] and out["message"]), (r, out)
+    assert json.loads(api.course_json("[1, 2"))["ok"] is False
