@@ -23,14 +23,14 @@ from loop_oracle import measure, pi  # noqa: E402
 #: Trainee number → the input of the motor a trainee link carries.
 TRAINEES = {
     0: {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220, "rs_ohm": 1.5, "ld_h": 0.0006, "lq_h": 0.0006, "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 0.0001}},
-    1: {"motor": {"rated_voltage_v": 48, "rated_current_a": 10, "rated_freq_hz": 200, "rs_ohm": 0.44, "ld_h": 0.00175, "lq_h": 0.00198, "bemf_v": 37.7, "pole_pairs": 4}, "drive": {"udc_v": 60, "ts_s": 5e-05, "base_freq_hz": 300.0}, "pll": {"bandwidth_hz": 50}},
-    2: {"motor": {"rated_voltage_v": 220, "rated_current_a": 4.5, "rated_freq_hz": 100, "rs_ohm": 2.734, "ld_h": 0.06781, "lq_h": 0.08536, "bemf_v": 147.5, "pole_pairs": 4}, "drive": {"udc_v": 311, "ts_s": 0.000125, "base_freq_hz": 125.0}, "pll": {"bandwidth_hz": 20}},
-    3: {"motor": {"rated_voltage_v": 380, "rated_current_a": 12, "rated_freq_hz": 50, "rs_ohm": 0.638, "ld_h": 0.04197, "lq_h": 0.05836, "bemf_v": 325.5, "pole_pairs": 2}, "drive": {"udc_v": 540, "ts_s": 6.25e-05, "base_freq_hz": 50}, "pll": {"bandwidth_hz": 10}},
-    4: {"motor": {"rated_voltage_v": 36, "rated_current_a": 20, "rated_freq_hz": 300, "rs_ohm": 0.181, "ld_h": 0.00079, "lq_h": 0.0012, "bemf_v": 26.7, "pole_pairs": 5}, "drive": {"udc_v": 48, "ts_s": 0.0001, "base_freq_hz": 600}, "pll": {"bandwidth_hz": 5}},
-    5: {"motor": {"rated_voltage_v": 380, "rated_current_a": 30, "rated_freq_hz": 150, "rs_ohm": 0.817, "ld_h": 0.005, "lq_h": 0.00525, "bemf_v": 238.3, "pole_pairs": 4}, "drive": {"udc_v": 540, "ts_s": 5e-05, "base_freq_hz": 187.5}, "pll": {"bandwidth_hz": 50}},
-    9: {"motor": {"rated_voltage_v": 380, "rated_current_a": 12, "rated_freq_hz": 50, "rs_ohm": 1.183, "ld_h": 0.02896, "lq_h": 0.04552, "bemf_v": 291.9, "pole_pairs": 2}, "drive": {"udc_v": 540, "ts_s": 5e-05, "base_freq_hz": 50}, "pll": {"bandwidth_hz": 5}},
-    14: {"motor": {"rated_voltage_v": 220, "rated_current_a": 4.5, "rated_freq_hz": 100, "rs_ohm": 4.417, "ld_h": 0.04772, "lq_h": 0.04862, "bemf_v": 175.2, "pole_pairs": 4}, "drive": {"udc_v": 311, "ts_s": 0.000125, "base_freq_hz": 150.0}, "pll": {"bandwidth_hz": 5}},
-    23: {"motor": {"rated_voltage_v": 380, "rated_current_a": 30, "rated_freq_hz": 150, "rs_ohm": 1.471, "ld_h": 0.01148, "lq_h": 0.01826, "bemf_v": 252.1, "pole_pairs": 4}, "drive": {"udc_v": 540, "ts_s": 0.000125, "base_freq_hz": 300}, "pll": {"bandwidth_hz": 5}},
+    1: {"motor": {"rated_voltage_v": 36, "rated_current_a": 10, "rated_freq_hz": 200, "rs_ohm": 0.33, "ld_h": 0.00037, "lq_h": 0.00041, "bemf_v": 25.4, "pole_pairs": 4}, "drive": {"udc_v": 60, "ts_s": 5e-05, "base_freq_hz": 300.0}, "pll": {"bandwidth_hz": 50}},
+    2: {"motor": {"rated_voltage_v": 200, "rated_current_a": 4.5, "rated_freq_hz": 100, "rs_ohm": 2.485, "ld_h": 0.01494, "lq_h": 0.01816, "bemf_v": 121.8, "pole_pairs": 4}, "drive": {"udc_v": 311, "ts_s": 0.000125, "base_freq_hz": 125.0}, "pll": {"bandwidth_hz": 20}},
+    3: {"motor": {"rated_voltage_v": 340, "rated_current_a": 12, "rated_freq_hz": 50, "rs_ohm": 0.571, "ld_h": 0.01084, "lq_h": 0.01437, "bemf_v": 259.7, "pole_pairs": 2}, "drive": {"udc_v": 540, "ts_s": 6.25e-05, "base_freq_hz": 50}, "pll": {"bandwidth_hz": 10}},
+    4: {"motor": {"rated_voltage_v": 24, "rated_current_a": 20, "rated_freq_hz": 300, "rs_ohm": 0.12, "ld_h": 0.00013, "lq_h": 0.00019, "bemf_v": 16.0, "pole_pairs": 5}, "drive": {"udc_v": 48, "ts_s": 0.0001, "base_freq_hz": 600}, "pll": {"bandwidth_hz": 5}},
+    5: {"motor": {"rated_voltage_v": 340, "rated_current_a": 30, "rated_freq_hz": 150, "rs_ohm": 0.731, "ld_h": 0.00134, "lq_h": 0.0014, "bemf_v": 194.7, "pole_pairs": 4}, "drive": {"udc_v": 540, "ts_s": 5e-05, "base_freq_hz": 187.5}, "pll": {"bandwidth_hz": 50}},
+    9: {"motor": {"rated_voltage_v": 340, "rated_current_a": 12, "rated_freq_hz": 50, "rs_ohm": 1.058, "ld_h": 0.00851, "lq_h": 0.01256, "bemf_v": 234.7, "pole_pairs": 2}, "drive": {"udc_v": 540, "ts_s": 5e-05, "base_freq_hz": 50}, "pll": {"bandwidth_hz": 5}},
+    14: {"motor": {"rated_voltage_v": 200, "rated_current_a": 4.5, "rated_freq_hz": 100, "rs_ohm": 4.015, "ld_h": 0.01129, "lq_h": 0.01147, "bemf_v": 142.7, "pole_pairs": 4}, "drive": {"udc_v": 311, "ts_s": 0.000125, "base_freq_hz": 150.0}, "pll": {"bandwidth_hz": 5}},
+    23: {"motor": {"rated_voltage_v": 340, "rated_current_a": 30, "rated_freq_hz": 150, "rs_ohm": 1.316, "ld_h": 0.0025, "lq_h": 0.00373, "bemf_v": 205.0, "pole_pairs": 4}, "drive": {"udc_v": 540, "ts_s": 0.000125, "base_freq_hz": 300}, "pll": {"bandwidth_hz": 5}},
 }
 
 
@@ -38,6 +38,19 @@ def _wrap16(v: int) -> int:
     """Two's complement of a 16-bit int."""
     v &= 0xFFFF
     return v - 0x10000 if v >= 0x8000 else v
+
+
+def fb_max(inp: dict, limit_v: float) -> float:
+    """The largest base frequency (≥ f_n, ≤ 655.35 Hz, the firmware's 0.01 Hz Uint16) at which the
+    motor at rated current (i_d = 0, L_q, RMS flux) needs no more line RMS voltage than the limit:
+    the root of |R·jI − ωL_q·I + jωψ|·√3 = limit, a quadratic in ω; 0 when f_n already needs more."""
+    m = inp["motor"]
+    psi = m["bemf_v"] / math.sqrt(3) / (2 * math.pi * m["rated_freq_hz"])
+    R, Lq, I, V = m["rs_ohm"], m["lq_h"], m["rated_current_a"], limit_v / math.sqrt(3)
+    a, b, c = (Lq * I) ** 2 + psi ** 2, 2 * R * I * psi, (R * I) ** 2 - V ** 2
+    w = (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a) if b * b - 4 * a * c >= 0 else -1.0
+    f = w / (2 * math.pi)
+    return 0.0 if f < m["rated_freq_hz"] else min(f, 655.35)
 
 
 def expected(inp: dict) -> dict:
@@ -51,8 +64,8 @@ def expected(inp: dict) -> dict:
     # the buggy Rpm: Uint16 m_UData * int 18597 is a 16-bit unsigned product on the C2000
     m_udata = raw_rs * raw_i // raw_v
     buggy = ((m_udata * 18597) & 0xFFFF) >> 14
-    ld = pu["Ld"]
-    fit = next((f"Q{q}" for q in (16, 15, 14, 13, 12) if round(ld * 2 ** q) <= 0xFFFF), "none")
+    psi = pu["psi_r"]
+    fit = next((f"Q{q}" for q in (16, 15, 14, 13, 12) if round(psi * 2 ** q) <= 0xFFFF), "none")
     ts = P["ts_s"]
     g_naive = B["w_b"] / B["theta_b"]
     naive = measure(pi(L["kp"], L["ki"], ts) * control.tf([g_naive * ts], [1.0, -1.0], ts), ts)
@@ -86,6 +99,8 @@ def expected(inp: dict) -> dict:
         "pi-pm-ki": C["pm_ki"],
         "pi-line-trap": round(C["kp"] * B["I_b"] / P["rated_voltage_v"] * 4096),
         "pi-ts-half": "halves" if abs(ratio - 0.5) < 0.05 else "doubles" if abs(ratio - 2) < 0.2 else "same",
+        # the firmware's voltage limit pm_maxout_vol is Q12 of the rated line voltage
+        "pi-choose-fb": fb_max(inp, V["pm_maxout_vol"]["value"] / 4096 * raw_v),
         "pll-kp": L["kp"],
         "pll-kp-pu": L["kp_pu"],
         "pll-int-gain": L["integrator_gain"],

@@ -67,7 +67,9 @@ class Exercise:
     """One exercise.
 
     ``kind``: ``int`` (an integer, within ``tol`` counts), ``real`` (within ``tol`` relative),
-    ``choice`` (one of ``choices``). ``expected(ctx)`` reads the report; ``unit`` is shown.
+    ``choice`` (one of ``choices``), ``base`` (a base frequency the review accepts: any f_b from the
+    rated frequency up to ``expected``, or 0 when none does). ``expected(ctx)`` reads the report;
+    ``unit`` is shown.
     """
     id: str
     chapter: str
@@ -88,9 +90,37 @@ def _path(*keys) -> Callable[[_Ctx], object]:
 
 
 def _first_fit(c: _Ctx) -> str:
-    """The Uint16 Q format with the most fraction bits that holds L_d* (Q16 … Q12)."""
-    ld = c.r["pu"]["Ld"]
-    return next((f"Q{q}" for q in (16, 15, 14, 13, 12) if round(ld * 2 ** q) <= 0xFFFF), "none")
+    """The Uint16 Q format with the most fraction bits that holds ψ_r* (Q16 … Q12)."""
+    psi = c.r["pu"]["psi_r"]
+    return next((f"Q{q}" for q in (16, 15, 14, 13, 12) if round(psi * 2 ** q) <= 0xFFFF), "none")
+
+
+#: The review's findings about the voltage at the base frequency (chapter 2's exercise removes them).
+_FB_FINDINGS = ("voltage_fb", "voltage_bemf")
+#: The largest base frequency the firmware's 0.01 Hz Uint16 FullFreq01 holds.
+_FB_TOP = 655.35
+
+
+def _fb_ok(c: _Ctx, f_b: float) -> bool:
+    """Whether the review raises no voltage finding at base frequency ``f_b`` (its own report)."""
+    from ..report import report
+    r = report({**c.input, "drive": {**c.input.get("drive", {}), "base_freq_hz": f_b}})
+    return not any(x["code"] in _FB_FINDINGS for x in r["review"]["findings"])
+
+
+def _fb_max(c: _Ctx) -> float:
+    """The largest base frequency ≥ f_n without a voltage finding (bisection on the review), or 0
+    when even f_b = f_n has one (the motor needs more voltage at its rated point than the limit)."""
+    lo = c.r["input"]["motor"]["rated_freq_hz"]
+    if not _fb_ok(c, lo):
+        return 0.0
+    hi = _FB_TOP
+    if _fb_ok(c, hi):
+        return hi
+    while hi - lo > 1e-9 * hi:
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if _fb_ok(c, mid) else (lo, mid)
+    return lo
 
 
 def _q12_int16(c: _Ctx) -> int:
@@ -147,6 +177,7 @@ EXERCISES: tuple[Exercise, ...] = (
     Exercise("pi-pm-ki", "02-current-pi", "int", _path("current_pi", "d", "pm_ki"), 1),
     Exercise("pi-line-trap", "02-current-pi", "int", _line_trap, 1),
     Exercise("pi-ts-half", "02-current-pi", "choice", _ts_halved, choices=("halves", "same", "doubles")),
+    Exercise("pi-choose-fb", "02-current-pi", "base", _fb_max, unit="Hz"),
     # step 5: the PLL
     Exercise("pll-kp", "03-pll", "real", _path("pll", "kp"), 0.01, "1/s"),
     Exercise("pll-kp-pu", "03-pll", "real", _path("pll", "kp_pu"), 0.01),
@@ -163,6 +194,9 @@ def _tolerance(e: Exercise) -> dict:
     """The stated tolerance, as data and as text in both languages."""
     if e.kind == "choice":
         return {"kind": "exact", "en": "one choice", "zh": "单选"}
+    if e.kind == "base":
+        return {"kind": "range", "en": "any f_b from the rated frequency up to the largest (0 if none)",
+                "zh": "从额定频率到最大值之间的任一 f_b（都不行时填 0）"}
     if e.kind == "int":
         if e.tol == 0:
             return {"kind": "exact", "value": 0, "en": "exact integer", "zh": "整数，须完全一致"}
@@ -186,7 +220,7 @@ def _exercise(ex_id) -> Exercise:
     return e
 
 
-def _judge(e: Exercise, expected, answer) -> bool:
+def _judge(e: Exercise, c: _Ctx, expected, answer) -> bool:
     field_ = f"exercise.{e.id}"
     if e.kind == "choice":
         if answer not in e.choices:
@@ -197,6 +231,10 @@ def _judge(e: Exercise, expected, answer) -> bool:
     if e.kind == "int":
         return abs(parse_int(answer, field_) - expected) <= e.tol
     a = parse_real(answer, field_)
+    if e.kind == "base":
+        if expected == 0:
+            return a == 0
+        return c.r["input"]["motor"]["rated_freq_hz"] <= a <= _FB_TOP and _fb_ok(c, a)
     if _tolerance(e)["kind"] == "abs":
         return abs(a - expected) <= e.tol
     return abs(a - expected) <= e.tol * abs(expected)
@@ -227,8 +265,9 @@ def check(inp: dict, ex_id: str, answer) -> dict:
         field for a bad motor.
     """
     e = _exercise(ex_id)
-    expected = e.expected(_Ctx(inp))
-    ok = _judge(e, expected, answer)
+    c = _Ctx(inp)
+    expected = e.expected(c)
+    ok = _judge(e, c, expected, answer)
     return {"id": e.id, "state": "correct" if ok else "wrong", "expected": expected,
             "tolerance": _tolerance(e)}
 
@@ -242,8 +281,8 @@ def answers(inp: dict) -> dict:
 
 
 #: Motor families a trainee can get: (rated line V, rated A, rated Hz, pole pairs, U_dc V).
-_FAMILIES = ((17, 1.5, 220, 4, 24), (48, 10, 200, 4, 60), (220, 4.5, 100, 4, 311),
-             (380, 12, 50, 2, 540), (36, 20, 300, 5, 48), (380, 30, 150, 4, 540))
+_FAMILIES = ((17, 1.5, 220, 4, 24), (36, 10, 200, 4, 60), (200, 4.5, 100, 4, 311),
+             (340, 12, 50, 2, 540), (24, 20, 300, 5, 48), (340, 30, 150, 4, 540))
 
 
 def trainee_input(n: int) -> dict:
@@ -267,9 +306,9 @@ def trainee_input(n: int) -> dict:
     z_b = u / math.sqrt(3) / i
     w_b = 2 * math.pi * f
     rs = round(z_b * (0.02 + 0.2 * frac[0]), 3) or 0.001
-    ld = round(z_b / w_b * (0.08 + 1.5 * frac[1]), 5) or 1e-5
-    lq = round(ld * (1 + 0.6 * frac[2]), 5)
-    bemf = round(u * (0.6 + 0.3 * frac[3]), 1)
+    ld = round(z_b / w_b * (0.08 + 0.3 * frac[1]), 5) or 1e-5
+    lq = round(ld * (1 + 0.5 * frac[2]), 5)
+    bemf = round(u * (0.55 + 0.25 * frac[3]), 1)
     ts = (0.0001, 0.0000625, 0.000125, 0.00005)[(h >> 4) % 4]
     f_b = f * (1, 1.25, 1.5, 2)[(h >> 6) % 4]
     pll_hz = (50, 20, 10, 5)[(h >> 9) % 4]
