@@ -22,9 +22,14 @@ named at the end)::
     ctrace/       the C tracer: a user's own fixed-point code  lexer, parser, check, evaluate…
     analyses/     what is computed from a model                loop/, sim/, review, sweep,
                                                                integers, batch, slices
-    (top level)   the ways in and out                          report (dict → dict), api
-                                                               (JSON text → JSON text),
+    (top level)   the ways in and out                          report (dict → dict), qcalc
+                                                               (the Q calculator, dict →
+                                                               dict), api (JSON text → JSON
+                                                               text: call_json, one kind
+                                                               per request),
                                                                export (C header, CSV),
+                                                               html (notebook tables,
+                                                               docs panels),
                                                                benchmark, __main__ (the
                                                                command line: parser, main,
                                                                report, header, translate)
@@ -52,6 +57,7 @@ rounding and raw fields of ``profiles.inovance_code``; ``analyses.integers`` and
 
 from .schema.errors import InputError
 from .report import format_text, report
+from .html import Report
 
-__all__ = ["report", "format_text", "InputError", "__version__"]
+__all__ = ["report", "format_text", "Report", "InputError", "__version__"]
 __version__ = "0.1.0"

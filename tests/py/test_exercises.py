@@ -95,18 +95,26 @@ def test_bad_answer_names_the_field(answer, code):
     assert e.value.field == "exercise.warmup-ub" and e.value.code == code
 
 
+def _call(kind, req):
+    return json.loads(api.call_json(kind, json.dumps(req, allow_nan=True)))
+
+
 def test_api_errors_are_data():
     inp = course_oracle.TRAINEES[0]
-    r = json.loads(api.course_json(json.dumps({"action": "check", "input": inp, "id": "nope", "answer": 1})))
+    r = _call("course.check", {"input": inp, "id": "nope", "answer": 1})
     assert r["ok"] is False and r["field"] == "id" and r["code"] == "unknown_exercise"
-    r = json.loads(api.course_json(json.dumps({"action": "check", "input": inp, "id": "q-fit", "answer": "Q99"})))
+    r = _call("course.check", {"input": inp, "id": "q-fit", "answer": "Q99"})
     assert r["field"] == "exercise.q-fit" and r["code"] == "not_choice"
-    r = json.loads(api.course_json(json.dumps({"action": "trainees", "start": 1, "count": 0})))
+    r = _call("course.check", {"input": {"motor": {}}, "id": "vendor-rpm", "answer": "1"})
+    assert r["field"] == "motor.rated_voltage_v"
+    r = _call("course.trainees", {"start": 1, "count": 0})
     assert r["field"] == "count"
-    r = json.loads(api.course_json(json.dumps({"action": "trainees", "start": 9999, "count": 2})))
+    r = _call("course.trainees", {"start": 9999, "count": 2})
     assert r["field"] == "trainee"
-    r = json.loads(api.course_json(json.dumps({"action": "trainees", "start": 1, "count": 3})))
+    r = _call("course.trainees", {"start": 1, "count": 3})
     assert [t["n"] for t in r["trainees"]] == [1, 2, 3]
+    assert len(_call("course.spec", {})["exercises"]) == len(exercises.EXERCISES)
+    assert _call("course.answers", {"input": inp})["answers"]["vendor-rpm"]["expected"] == 15022
 
 
 def test_chapters_hold_exactly_the_engines_exercises():
@@ -132,15 +140,15 @@ def test_chapters_hold_exactly_the_engines_exercises():
 BAD = [None, True, -1, 0, 1e308, float("nan"), "", "x" * 500, "１２", [], {}, [1], {"a": 1}, "0x10", "1,000"]
 
 
-def test_course_json_never_raises_and_names_a_field():
+def test_course_kinds_never_raise_and_name_a_field():
     # every reply is JSON: ok, or an error with a field (bad input never crashes or hangs)
     inp = course_oracle.TRAINEES[0]
-    reqs = [{"action": a} for a in BAD] + [{"action": "trainees", "start": s, "count": c} for s in BAD[:6] for c in BAD[:6]]
-    reqs += [{"action": "check", "input": inp, "id": i, "answer": a} for i in BAD[:8] + ["q-fit", "vendor-rpm", "warmup-ub"]
-             for a in BAD]
-    reqs += [{"action": "answers", "input": v} for v in BAD]
-    for r in reqs:
-        text = json.dumps(r, allow_nan=True)
-        out = json.loads(api.course_json(text))
-        assert out["ok"] is True or (isinstance(out["field"], str) and out["field"] and out["message"]), (r, out)
-    assert json.loads(api.course_json("[1, 2"))["ok"] is False
+    reqs = [("course.trainees", v) for v in BAD] + [("course.answers", v) for v in BAD]
+    reqs += [("course.trainees", {"start": s, "count": c}) for s in BAD[:6] for c in BAD[:6]]
+    reqs += [("course.check", {"input": inp, "id": i, "answer": a})
+             for i in BAD[:8] + ["q-fit", "vendor-rpm", "warmup-ub", "pi-choose-fb"] for a in BAD]
+    reqs += [("course.answers", {"input": v}) for v in BAD]
+    for kind, r in reqs:
+        out = _call(kind, r)
+        assert out["ok"] is True or (isinstance(out["field"], str) and out["field"] and out["message"]), (kind, r, out)
+    assert json.loads(api.call_json("course.check", "[1, 2"))["ok"] is False

@@ -1,5 +1,5 @@
 """Every other entry point under hostile input: the CLI subcommands sweep, batch, trace, header
-and translate, and the worker's request kinds sweep_json, batch_json and trace_json.
+and translate, and every request kind of the worker's ``pulab.api.call_json``.
 
 ``report`` and ``run_json`` get the 10,000 cases of test_hardening.py; qcalc, export and vendors
 requests their own fuzz there and in test_profiles_hardening.py. The contract is the same
@@ -17,7 +17,7 @@ from collections import Counter
 
 from adversarial import BASE, FIELDS, NASTY_TEXT, NUMBER_LITERALS, _value, cases
 from pulab.__main__ import main
-from pulab.api import batch_json, sweep_json, trace_json
+from pulab.api import KINDS, batch_json, call_json, sweep_json, trace_json
 from pulab.profiles import NAMES
 from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
 from test_hardening import _one_line, _strict
@@ -27,7 +27,18 @@ PLAIN = {k: v for k, v in BASE.items() if k != "sim"}
 CODE = ["Uint16 v; long x = v*10;", "int a = 1; a = a / 0;", "long y = 0x7fffffffL + 1;",
         "#define K 3\nUint16 v; Uint16 w = v * K;", "x = 1 +;", "{" * 500, "(" * 5000 + "1",
         "Uint16 v; // @q 15\n", "#define A A\nint x = A;", "int x = 1" + " + 1" * 3000 + ";",
-        "long q = _IQmpy(1, 2);", "Uint16 v; if (v) { v = v >> 1; } else v = 0;", ""]
+        "long q = _IQmpy(1, 2);", "Uint16 v; if (v) { v = v >> 1; } else v = 0;", "",
+        # whole files through an entry function, at each limit of the tracer
+        "int f(int x) { return f(x); }", "int f(int x) { for (;;) {} return x; }",
+        "int t[5000]; int f(int x) { return t[x]; }",
+        "typedef struct { int a; } S; int f(S *p, int x) { return p->a / x; }",
+        "int f(int x) { switch (x) { case 1: return 1; default: x++; } return x; }",
+        "int f(int *p) { while (*p) (*p)--; return 1; }",
+        "float h(float x) { return x; } int f(int x) { return h(x); }",
+        "".join(f"int f{i}(int x) {{ return f{i + 1}(x) + f{i + 1}(x); }}\n" for i in range(24))
+        + "int f24(int x) { return x; } int f(int x) { return f0(x); }",
+        "".join(f"int f{i}(int x) {{ return f{i + 1}(x); }}\n" for i in range(40))
+        + "int f40(int x) { return x; } int f(int x) { return f0(x); }"]
 
 
 def _run(argv: list, stdin: bytes) -> tuple:
@@ -95,6 +106,10 @@ def _argv(rng, command: str) -> tuple:
             argv.append(f"--set={rng.choice(['v', 'w', 'x', _text(rng)])}={_text(rng)}")
         if rng.random() < 0.2:
             argv.append(f"--global-q={_text(rng)}")
+        if rng.random() < 0.5:
+            argv.append(f"--entry={rng.choice(['f', 'f', 'g', _text(rng)])}")
+        if rng.random() < 0.3:
+            argv.append("--zero-unset")
         return argv, rng.choice(CODE + [_text(rng)]).encode("utf-8", "surrogatepass")
     if command == "header":
         return ["header", f"--profile={rng.choice(list(NAMES) + [_text(rng)])}", "-"], data
@@ -142,10 +157,54 @@ def test_fuzzed_worker_requests_keep_the_api_contract():
         seen["batch", _api_reply(batch_json(json.dumps(batch)))] += 1
         trace = {"code": rng.choice(CODE + [_value(rng)]), "target": rng.choice(["c28x", _value(rng)]),
                  "set": rng.choice([{"v": _value(rng)}, _value(rng)]),
-                 "global_q": rng.choice([None, 15, _value(rng)])}
+                 "global_q": rng.choice([None, 15, _value(rng)]),
+                 "entry": rng.choice([None, "f", _value(rng)]),
+                 "zero_unset": rng.choice([True, False, _value(rng)])}
         text = json.dumps(trace)
         if rng.random() < 0.1:
             text = '{"set": ' + "[" * 5000 + "]" * 5000 + "}"
         seen["trace", _api_reply(trace_json(text))] += 1
     print(f"\nworker request fuzz: {dict(seen)}")
     assert all(seen[k, "error"] > 0 for k in ("sweep", "batch", "trace")), seen
+
+
+#: The keys each kind reads (anything else is ignored or refused by the kind).
+KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "raw", "rounding", "overflow"],
+             "export.header": ["input"], "export.csv_current": ["input"], "export.csv_pll": ["input"],
+             "sweep": ["input", "x", "y", "profile"], "sweep.plan": ["input", "x", "y", "profile"],
+             "sweep.chunk": ["input", "x", "start", "count"], "sweep.merge": ["input", "x", "summaries"],
+             "batch": ["csv", "start", "count"], "trace": ["code", "target", "set", "global_q", "define"],
+             "trace.examples": ["x"], "vendors.header": ["input", "profile"],
+             "vendors.translate": ["input", "from", "axis", "values"]}
+
+
+def test_fuzzed_kinds_keep_the_api_contract():
+    """Every kind of call_json (and unknown kinds) on a valid request with one key made hostile,
+    a request that is not an object, or a text that is not JSON."""
+    assert sorted(KIND_KEYS) == sorted(KINDS)
+    rng = random.Random(21)
+    valid = {"input": PLAIN, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3},
+             "format": "Q3.12", "value": 0.5, "csv": "name,motor.rs_ohm\na,1\n", "code": CODE[0],
+             "profile": "ti", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
+             "summaries": [], "start": 0, "count": 1}
+    seen = Counter()
+    for _ in range(60):
+        for kind in list(KINDS) + [_text(rng)]:
+            keys = KIND_KEYS.get(kind, ["input"])
+            req = PLAIN if kind == "report" else {k: valid[k] for k in keys if k in valid}
+            if kind.startswith("export.csv"):
+                req = {"input": BASE}
+            r = rng.random()
+            if r < 0.2:
+                text = json.dumps(req)
+            elif r < 0.7:
+                req = {**req, rng.choice(keys): _value(rng)}
+                text = json.dumps(req)
+            elif r < 0.85:
+                text = json.dumps(_value(rng))
+            else:
+                text = rng.choice(["", "{", "[" * 5000, '{"a": 1,}', "nul", json.dumps(req)[:20]])
+            seen[kind if kind in KINDS else "?", _api_reply(call_json(kind, text))] += 1
+    print(f"\nkind fuzz: {dict(seen)}")
+    assert all(seen[k, "error"] > 0 for k in list(KINDS) + ["?"]), seen
+    assert all(seen[k, "ok"] > 0 for k in KINDS), seen

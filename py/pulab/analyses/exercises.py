@@ -2,7 +2,7 @@
 
 A trainee's answer is checked here, never in the page: :func:`check` computes the report of the
 trainee's motor, takes the expected value an exercise names, and compares with the stated
-tolerance (:data:`EXERCISES`). :func:`answers` gives every expected value (the trainer's answer
+tolerance (:data:`EXERCISES`); the worker asks through ``pulab.api.call_json("course.check", …)``. :func:`answers` gives every expected value (the trainer's answer
 sheet); :func:`trainee_input` makes the different, deterministic motor a trainer hands to trainee
 ``n`` (``n = 0`` is the source document's motor).
 

@@ -3,7 +3,8 @@
 // reader's motor), and the element gets data-exercise-state = correct | wrong. Progress is kept in
 // localStorage per motor and can be exported.
 import type { PulabClient } from '../rpc';
-import type { Json } from '../protocol';
+import type { Json, Tolerance } from '../protocol';
+import type { Input } from '../state';
 import { getLang, t } from '../i18n';
 import { fmtNum } from '../format';
 import { load, store } from '../page/storage';
@@ -45,7 +46,7 @@ export const motorKey = (input: unknown): string => JSON.stringify(input ?? null
 
 export interface ExerciseEnv {
   /** The input pulab computes the expected answers from (the reader's motor). */
-  input(): unknown;
+  input(): Input;
   /** The normalized input of the shown report (the progress key), or null before the first report. */
   reportInput(): unknown;
   /** Raw firmware inputs of the shown report (the tracer's variables), if any. */
@@ -53,13 +54,6 @@ export interface ExerciseEnv {
   client(): PulabClient | null;
   /** Called after an answer was checked (the course page updates its progress count). */
   changed?(): void;
-}
-
-interface Tolerance {
-  kind: string;
-  value?: number;
-  en: string;
-  zh: string;
 }
 
 const shown = (v: unknown): string => (typeof v === 'number' ? fmtNum(v, 6) : String(v));
@@ -111,10 +105,10 @@ async function checkOne(el: HTMLElement, env: ExerciseEnv): Promise<void> {
   el.setAttribute('aria-busy', 'true');
   const answer = field.value;
   try {
-    const { result } = await client.call('course', { action: 'check', input: env.input(), id, answer }, `exercise-${id}`);
+    const { result } = await client.call('course.check', { input: env.input(), id, answer }, `exercise-${id}`);
     if (!result.ok) return fieldError(el, getLang() === 'zh' ? (result.message_zh ?? result.message) : result.message);
     fieldError(el, null);
-    const r = result.result as unknown as { state: ExerciseState; expected: unknown; tolerance: Tolerance };
+    const r = result.result;
     const a: Attempt = { state: r.state, answer, at: new Date().toISOString() };
     show(el, a, r.expected, r.tolerance);
     const ri = env.reportInput();
@@ -149,10 +143,10 @@ async function runTrace(el: HTMLElement, env: ExerciseEnv): Promise<void> {
     out.textContent = result.message;
     return;
   }
-  const steps = (result.steps as Array<{ line: number; var: string; value: number; flags: string[]; input?: boolean }>).filter((s) => !s.input);
+  const steps = result.steps.filter((s) => !s.input);
   out.replaceChildren(...steps.map((s) => {
     const li = document.createElement('li');
-    li.textContent = `${t('exTraceLine', { line: s.line, var: s.var, value: s.value })}${s.flags.length ? `  ⚠ ${s.flags.join(', ')}` : ''}`;
+    li.textContent = `${t('exTraceLine', { line: s.line, var: s.var ?? s.code, value: s.value })}${s.flags.length ? `  ⚠ ${s.flags.join(', ')}` : ''}`;
     if (s.flags.some((f) => f !== 'truncation')) li.className = 'flagged';
     return li;
   }));

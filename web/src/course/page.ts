@@ -85,11 +85,11 @@ export class CoursePage {
     registerOffline(); // the course works offline like the calculator (sw.js caches every built file)
     try {
       const { result } = await this.client.call('report', this.input, 'report');
-      if (result.ok) this.report = result.report as Report;
+      if (result.ok) this.report = result.report as unknown as Report;
       else this.error = `${result.field}: ${getLang() === 'zh' ? result.message_zh ?? result.message : result.message}`;
       if (this.params.get('print') === 'key') {
-        const a = await this.client.call('course', { action: 'answers', input: this.input });
-        if (a.result.ok) this.answers = a.result.answers as unknown as Answers;
+        const a = await this.client.call('course.answers', { input: this.input });
+        if (a.result.ok) this.answers = a.result.answers;
       }
     } catch (e) {
       this.error = e instanceof Error ? e.message : String(e);
@@ -246,15 +246,15 @@ class TrainerView {
     const count = h('input', { name: 'trainer.count', value: p.get('count') ?? '8', inputmode: 'numeric', size: '5' }) as HTMLInputElement;
     const out = h('div', { class: 'trainer-out' });
     const make = async (): Promise<void> => {
-      const { result } = await this.client.call('course', { action: 'trainees', start: first.value, count: count.value });
+      const { result } = await this.client.call('course.trainees', { start: first.value, count: count.value });
       if (!result.ok) {
         out.replaceChildren(h('p', { class: 'error', role: 'alert' }, `${result.field}: ${getLang() === 'zh' ? result.message_zh ?? result.message : result.message}`));
         return;
       }
-      const trainees = result.trainees as unknown as { n: number; input: Input }[];
+      const trainees = result.trainees;
       const sheets = await Promise.all(trainees.map(async (tr) => {
-        const a = await this.client.call('course', { action: 'answers', input: tr.input });
-        return a.result.ok ? (a.result.answers as unknown as Answers) : null;
+        const a = await this.client.call('course.answers', { input: tr.input });
+        return a.result.ok ? a.result.answers : null;
       }));
       const base = new URL('./course.html', location.href).href;
       const links = trainees.map((tr) => {

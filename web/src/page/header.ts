@@ -6,7 +6,7 @@ import { errText, getLang, t, type Lang } from '../i18n';
 import { encodeHash, reportInput, simInput } from '../state';
 import type { ComputeSession } from './session';
 import { copyLinkToast, toast } from './toast';
-import type { ApiResult } from '../protocol';
+import type { Reply } from '../protocol';
 
 export function langSwitch(onSwitch: (l: Lang) => void): HTMLElement {
   return h('div', { class: 'lang', role: 'group' },
@@ -24,21 +24,21 @@ function download(name: string, text: string, type: string): void {
 
 type PyExport = 'header' | 'csv_current' | 'csv_pll';
 
-/** Files made by Python (pulab.api.export_json): the C header from the report worker, CSVs from the simulation worker. */
+/** Files made by Python (the export.* kinds of pulab.api.call_json): the C header from the report worker, CSVs from the simulation worker. */
 async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExport): Promise<void> {
   if (!session.client?.ready) return;
   const eff = effectiveInput(session.input);
   const c = kind === 'header' ? session.client : session.simWorker() ?? session.client;
-  let result: ApiResult;
+  let result: Reply['export.header'];
   try {
-    ({ result } = await c.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind }));
+    ({ result } = await c.call(`export.${kind}`, { input: kind === 'header' ? reportInput(eff) : simInput(eff) }));
   } catch (e) {
     // The worker died or a newer call replaced this one: say so, never an unhandled rejection.
     return toast(root, t('exportFailed', { m: e instanceof Error ? e.message : String(e) }));
   }
   if (result.ok) {
     const name = kind === 'header' ? 'pulab_params.h' : `pulab_${kind.slice(4)}.csv`;
-    download(name, String(result.text), kind === 'header' ? 'text/x-c' : 'text/csv');
+    download(name, result.text, kind === 'header' ? 'text/x-c' : 'text/csv');
   } else toast(root, `${result.field}: ${errText(result)}`);
 }
 
@@ -62,9 +62,32 @@ async function copyLink(root: HTMLElement, session: ComputeSession): Promise<voi
   document.documentElement.dataset.shareLink = url;
 }
 
+/** Menus (`details.menu-host`) close as menus do: an item chosen, a click outside, Esc. Listening
+ * on the document once: the header is rebuilt on a language switch. */
+let menusWired = false;
+function wireMenus(): void {
+  if (menusWired) return;
+  menusWired = true;
+  const openMenus = () => [...document.querySelectorAll<HTMLDetailsElement>('details.menu-host[open]')];
+  document.addEventListener('click', (ev) => {
+    const target = ev.target as Element;
+    for (const d of openMenus()) {
+      if (!d.contains(target) || target.closest('.menu button')) d.open = false;
+    }
+  });
+  document.addEventListener('keydown', (ev) => {
+    if (ev.key !== 'Escape') return;
+    for (const d of openMenus()) {
+      d.open = false;
+      d.querySelector<HTMLElement>('summary')?.focus();
+    }
+  });
+}
+
 export function renderHeader(root: HTMLElement, session: ComputeSession, lang: HTMLElement): HTMLElement {
   const exportButton = (kind: PyExport, label: Parameters<typeof t>[0]) =>
     h('button', { type: 'button', 'data-export': kind, onclick: () => void exportPy(root, session, kind) }, t(label));
+  wireMenus();
   return h('header', { class: 'top' },
     h('div', { class: 'brand' }, h('strong', {}, 'pu-lab'), h('span', { class: 'sub' }, t('subtitle'))),
     // The course is its own page (course.html), with the reader's motor.
@@ -74,7 +97,7 @@ export function renderHeader(root: HTMLElement, session: ComputeSession, lang: H
     h('div', { class: 'status' }),
     h('div', { class: 'actions' },
       h('button', { type: 'button', class: 'copy-link', onclick: () => void copyLink(root, session) }, t('copyLink')),
-      h('details', { class: 'export' }, h('summary', {}, t('export')),
+      h('details', { class: 'export menu-host' }, h('summary', {}, t('export')),
         h('div', { class: 'menu' },
           h('button', { type: 'button', 'data-export': 'json', onclick: () => { const j = exportReport(session); if (j) download('pulab_report.json', j, 'application/json'); } }, t('exportJson')),
           exportButton('header', 'exportHeader'),

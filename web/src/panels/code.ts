@@ -1,25 +1,24 @@
 // "Your code": paste C scaling code, pick a target (and one to compare with), and see every
 // intermediate integer with its C type, hex and flags. Everything comes from
-// pulab.api.trace_json in the worker; the state lives in the URL query (code-share.ts).
+// the trace kind of pulab.api.call_json in the worker; the state lives in the URL query (code-share.ts).
 import { flagChips, focusedInput, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
+import type { TraceExample, TraceLine, TraceTerm } from '../api-types';
+import type { ApiErr, Ok } from '../protocol';
 
-interface Term { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string }
-interface Step { line: number; column: number; code: string; var: string | null; type: string; value: number; hex: string; flags: string[]; terms: Term[]; spelling?: string; input?: boolean; branch?: string }
-interface VarOut { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
-interface TraceOk { ok: true; target: string; global_q: number; inputs: string[]; vars: Record<string, VarOut>; steps: Step[] }
-interface TraceErr { ok: false; field: string; message: string; message_zh?: string; line?: number; column?: number; inputs?: string[] }
-type Reply = TraceOk | TraceErr;
-interface Example { id: string; title: string; title_zh: string; code: string }
+type TraceOk = Ok<'trace'>;
+type Reply = TraceOk | ApiErr;
 
 const FALLBACK_TARGETS = ['c28x', 'avr', 'msp430', 'arm'];
 let state: CodeState | null = null;
-let examples: Example[] | null = null;
+let examples: TraceExample[] | null = null;
 let targets: string[] = FALLBACK_TARGETS;
 let inputs: string[] = [];
+/** The functions the pasted code defines (from the last reply that parsed it). */
+let functions: string[] = [];
 let main: Reply | null = null;
 let other: Reply | null = null;
 let lastKey = '';
@@ -64,12 +63,25 @@ function run(ctx: PanelContext): void {
   lastKey = key;
   const id = ++seq;
   const one = (target: string, channel: string) =>
-    ctx.client!.call('trace', traceRequest(s, target, inputs, report), channel).then(({ result }) => result as unknown as Reply);
+    ctx.client!.call('trace', traceRequest(s, target, inputs, report), channel).then(({ result }) => result);
   const calls = [one(s.target, 'trace'), s.vs && s.vs !== s.target ? one(s.vs, 'trace-vs') : Promise.resolve(null)];
   void Promise.all(calls).then(([a, b]) => {
     if (id !== seq) return;
     main = a;
     other = b;
+    const found = a?.functions ?? [];
+    if (JSON.stringify(found) !== JSON.stringify(functions)) {
+      functions = found;
+      builtFor = ''; // the function menu changes
+      const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
+      if (el && lastCtx) codePanel.render(el, lastCtx);
+    }
+    // A file of functions and nothing else to run: start with the last one defined.
+    if (a && !a.ok && a.field === 'entry' && !s.entry && found.length) {
+      s.entry = found[found.length - 1];
+      run(ctx);
+      return;
+    }
     const names = a?.inputs ?? inputs;
     if (JSON.stringify(names) !== JSON.stringify(inputs)) {
       inputs = names;
@@ -113,7 +125,7 @@ function renderInputs(box: HTMLElement, ctx: PanelContext): void {
 }
 
 function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
-  const pair = (i: number): Step | null => {
+  const pair = (i: number): TraceLine | null => {
     const x = a.steps[i];
     const y = b?.steps[i];
     return y && y.code === x.code && y.line === x.line && y.column === x.column ? y : null;
@@ -125,7 +137,8 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
     const differs = o !== null && o.value !== s.value;
     rows.push(h('tr', { class: `step${differs ? ' differs' : ''}${s.flags.length ? ' flagged' : ''}` },
       h('td', { class: 'pos' }, `${s.line}:${s.column}`),
-      h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null),
+      h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
+        ...s.terms.map((tm, j) => (tm.call && tm.steps ? callSteps(tm, `${k}.terms.${j}`) : null))),
       h('td', {}, s.var ? h('code', {}, s.var) : ''),
       h('td', { class: 'r' }, intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
       h('td', {}, flagChips(s.flags)),
@@ -152,6 +165,20 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
   });
   const head = ['L:C', t('codeSource'), t('codeVariable'), a.target, t('flags'), ...(b ? [b.target, t('flags')] : [])];
   return table(head, rows, 'code-steps');
+}
+
+/** The statements a call ran, under the call (keys follow the JSON path: ….terms.J.steps.K). */
+function callSteps(tm: TraceTerm, key: string): HTMLElement {
+  const steps = tm.steps ?? [];
+  const rows = steps.map((s, i) => h('tr', { class: s.flags.length ? 'flagged' : '' },
+    h('td', { class: 'pos' }, `${s.line}:${s.column}`),
+    h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
+      ...s.terms.map((inner, j) => (inner.call && inner.steps ? callSteps(inner, `${key}.steps.${i}.terms.${j}`) : null))),
+    h('td', {}, s.var ? h('code', {}, s.var) : ''),
+    h('td', { class: 'r' }, s.value === null ? '' : intCell(`${key}.steps.${i}.value`, s.value, s.hex), h('div', { class: 'ctype' }, s.type)),
+    h('td', {}, flagChips(s.flags))));
+  return h('details', { class: 'code-call' }, h('summary', {}, t('codeCall', { name: tm.call ?? '', n: steps.length })),
+    table(['L:C', t('codeSource'), t('codeVariable'), '', t('flags')], rows, 'code-steps'));
 }
 
 function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
@@ -188,7 +215,7 @@ function update(el: HTMLElement, ctx: PanelContext): void {
   el.querySelector('.code-trace')?.classList.toggle('stale', !(main?.ok));
   const a = main?.ok ? main : null;
   const b = other?.ok ? other : null;
-  const other_err = [main, other].find((r) => r && !r.ok && r.field !== 'code' && !r.field.startsWith('set.')) as TraceErr | undefined;
+  const other_err = [main, other].find((r): r is ApiErr => r !== null && !r.ok && r.field !== 'code' && !r.field.startsWith('set.'));
   out.querySelector('.code-global-err')?.remove();
   if (!a) {
     out.classList.add('stale');
@@ -222,10 +249,10 @@ async function share(root: HTMLElement, embed: boolean): Promise<void> {
 function loadExamples(ctx: PanelContext): void {
   if (examples !== null || !ctx.client) return;
   examples = [];
-  void ctx.client.call('traceExamples', {}).then(({ result }) => {
-    const r = result as unknown as { ok: boolean; examples: Example[]; targets: string[] };
-    examples = r.examples;
-    targets = r.targets;
+  void ctx.client.call('trace.examples', {}).then(({ result }) => {
+    if (!result.ok) return;
+    examples = result.examples;
+    targets = result.targets;
     const s = st();
     if (!s.code) s.code = examples.find((e) => e.id === 'flux')?.code ?? '';
     const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
@@ -246,7 +273,7 @@ export const codePanel: Panel = {
     loadExamples(ctx);
     // Rebuilding the editor reads its scroll position, which forces a layout of the whole page:
     // on a new report (every keystroke in the form) only the inputs and the trace are refreshed.
-    const key = JSON.stringify([getLang(), examples?.length ?? -1, targets, s.target, s.vs]);
+    const key = JSON.stringify([getLang(), examples?.length ?? -1, targets, s.target, s.vs, functions, s.entry]);
     if (builtFor === key && el.querySelector('.code-panel')) {
       update(el, ctx);
       compute(ctx, ctx.report ? 0 : 400);
@@ -285,6 +312,13 @@ export const codePanel: Panel = {
             s.vs = v;
             changed();
           })),
+          functions.length || s.entry ? h('label', { title: t('codeEntryHint') }, `${t('codeEntry')} `,
+            select('entry', s.entry ?? '', [['', t('codeEntryNone')], ...[...new Set([...functions, ...(s.entry ? [s.entry] : [])])].map((x): [string, string] => [x, `${x}()`])], (v) => {
+              s.entry = v;
+              s.set = {};
+              changed();
+            }),
+            h('span', { class: 'err', 'data-err-for': 'entry' }, errorFor('entry'))) : null,
           h('button', { type: 'button', class: 'code-share', onclick: () => void share(document.getElementById('app') ?? document.body, false) }, t('codeShare'))),
         h('div', { class: 'code-grid' },
           h('div', { class: 'code-left' },
