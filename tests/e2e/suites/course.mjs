@@ -60,6 +60,10 @@ export default async function course(ctx) {
     await page.waitForSelector('[data-exercise="pi-pm-kp"]');
     assert(await answer(page, 'pi-pm-kp', seedAnswers['pi-pm-kp'] + 1) === 'correct', 'pm_kp + 1 within ±1');
     assert(await answer(page, 'pi-line-trap', seedAnswers['pi-line-trap']) === 'correct', 'the line-voltage trap');
+    // choose a base: the seed motor needs more than the firmware's limit already at f_n, so 0
+    assert(seedAnswers['pi-choose-fb'] === 0, `seed pi-choose-fb ${seedAnswers['pi-choose-fb']}`);
+    assert(await answer(page, 'pi-choose-fb', '220') === 'wrong', 'f_b = f_n keeps the voltage finding');
+    assert(await answer(page, 'pi-choose-fb', '0') === 'correct', 'none possible → 0');
     await page.click('[data-course-chapter="03-pll"]');
     await page.waitForSelector('[data-exercise="pll-naive-locks"]');
     assert(seedAnswers['pll-naive-locks'] === 'no', 'the seed motor\'s naive PLL does not lock (19.5 > 2)');
@@ -87,6 +91,12 @@ export default async function course(ctx) {
     assert(t3Answers['vendor-rpm'] !== seedAnswers['vendor-rpm'], 'trainee 3 has another motor');
     assert(await answer(p, 'vendor-rpm', seedAnswers['vendor-rpm']) === 'wrong', 'the seed\'s Rpm is wrong for trainee 3');
     assert(await answer(p, 'vendor-rpm', t3Answers['vendor-rpm']) === 'correct', 'trainee 3\'s Rpm');
+    await p.click('[data-course-chapter="02-current-pi"]');
+    await p.waitForSelector('[data-exercise="pi-choose-fb"]');
+    const top = t3Answers['pi-choose-fb'];
+    assert(top > t3.motor.rated_freq_hz, `trainee 3 can choose an f_b: ${top}`);
+    assert(await answer(p, 'pi-choose-fb', (top * 0.999).toFixed(3)) === 'correct', 'an f_b just below the largest: the review rerun has no voltage finding');
+    assert(await answer(p, 'pi-choose-fb', (top * 1.05).toFixed(3)) === 'wrong', 'above it: the finding is back');
     assert((await p.$eval('.course-motor', (e) => e.textContent)).includes('学员 3'), 'the header names the trainee');
     await p.context().close();
   });
@@ -133,8 +143,15 @@ export default async function course(ctx) {
         await p.goto(`${subSrv.url}course.html?lang=${lang}&chapter=02-current-pi`);
         await courseReady(p);
         await p.screenshot({ path: join(SHOTS, `course-${lang}-${w}.png`) });
+        // the calculator's header with its Course link
+        await p.goto(`${subSrv.url}?lang=${lang}`);
+        await p.waitForSelector('header.top a[data-course-link]');
+        await (await p.$('header.top')).screenshot({ path: join(SHOTS, `course-link-${lang}-${w}.png`) });
       }
     }
+    await p.click('header.top a[data-course-link]');
+    await courseReady(p);
+    assert(p.url().includes('course.html') && p.url().includes('#in='), `the Course link carries the motor: ${p.url()}`);
     await p.context().close();
   });
   await page.context().close();
