@@ -162,14 +162,17 @@ export class CoursePage {
       setTimeout(() => URL.revokeObjectURL(url), 5000);
     } }, t('courseExport'));
     const reset = h('button', { type: 'button', onclick: () => { clearProgress(); this.render(); } }, t('courseReset'));
+    // The trainer's page is about many motors: no reader's motor or progress there.
+    const trainer = this.params.has('trainer');
     return h('header', { class: 'top course-top' },
       h('div', { class: 'brand' }, h('strong', {}, 'pu-lab'), h('span', { class: 'sub' }, t('courseTitle'))),
-      h('div', { class: 'course-motor' }, `${t('courseMotor')}${trainee ? ` (${t('courseTrainee', { n: trainee })})` : ''}: ${motor}`),
+      trainer ? null : h('div', { class: 'course-motor' }, `${t('courseMotor')}${trainee ? ` (${t('courseTrainee', { n: trainee })})` : ''}: ${motor}`),
       h('div', { class: 'actions' },
         h('a', { href: `./${this.hash}`, class: 'course-site' }, t('courseSite')),
-        h('span', { class: 'course-progress' }, this.progressText()),
-        exportBtn, reset,
-        h('a', { href: `./course.html?trainer&lang=${getLang()}`, class: 'course-trainer-link' }, t('courseTrainer')),
+        trainer ? null : [h('span', { class: 'course-progress' }, this.progressText()), exportBtn, reset],
+        trainer
+          ? h('a', { href: `./course.html?lang=${getLang()}`, class: 'course-trainer-link' }, t('goCourse'))
+          : h('a', { href: `./course.html?trainer&lang=${getLang()}`, class: 'course-trainer-link' }, t('courseTrainer')),
         h('button', { type: 'button', onclick: () => window.print() }, t('coursePrint')),
         langSwitch((l) => this.switchLang(l))));
   }
