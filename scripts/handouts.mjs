@@ -57,9 +57,16 @@ try {
   await browser.close();
   srv.server.close();
 }
+/** The page count by pdfinfo (apt poppler-utils), or '?' without it. */
+const pages = (file) => {
+  try {
+    return /Pages:\s+(\d+)/.exec(execFileSync('pdfinfo', [file]).toString())?.[1] ?? '?';
+  } catch {
+    return '?';
+  }
+};
 for (const f of made) {
-  const info = execFileSync('pdfinfo', [join(OUT, f)]).toString();
-  console.log(`handouts: dist/handouts/${f} — ${/Pages:\s+(\d+)/.exec(info)?.[1] ?? '?'} pages`);
+  console.log(`handouts: dist/handouts/${f} — ${pages(join(OUT, f))} pages`);
   if (process.env.HANDOUTS_PNG) execFileSync('pdftoppm', ['-png', '-r', '60', join(OUT, f), join(OUT, f.replace(/\.pdf$/, ''))]);
 }
 if (process.env.HANDOUTS_PNG) console.log(`handouts: ${readdirSync(OUT).filter((f) => f.endsWith('.png')).length} PNG pages in dist/handouts/`);
