@@ -16,6 +16,7 @@ import { langSwitch } from '../page/header';
 import { LANG_KEY, load, store } from '../page/storage';
 import type { PulabClient } from '../rpc';
 import type { Json } from '../protocol';
+import type { Report } from '../report-types';
 import { registerOffline } from '../offline';
 import { applyProgress, clearProgress, exportProgress, loadProgress, motorKey, wireExercises } from './exercises';
 
@@ -28,7 +29,6 @@ const COURSE = Object.values(import.meta.glob('../../../docs/course.json', { imp
   reference: string[];
 };
 
-type Report = Record<string, unknown> & { input?: unknown; vendor?: { raw?: Record<string, number> } };
 type Answers = Record<string, { chapter: string; expected: Json; unit: string; tolerance: { en: string; zh: string } }>;
 
 const DAY_ONE = COURSE.day_one.flatMap((s) => s.chapters);
@@ -85,7 +85,7 @@ export class CoursePage {
     registerOffline(); // the course works offline like the calculator (sw.js caches every built file)
     try {
       const { result } = await this.client.call('report', this.input, 'report');
-      if (result.ok) this.report = result.report as unknown as Report;
+      if (result.ok) this.report = result.report;
       else this.error = `${result.field}: ${getLang() === 'zh' ? result.message_zh ?? result.message : result.message}`;
       if (this.params.get('print') === 'key') {
         const a = await this.client.call('course.answers', { input: this.input });
