@@ -1,4 +1,4 @@
-"""Seeded generator of adversarial report inputs (issue 14), as JSON text or raw bytes.
+"""Seeded generator of adversarial report inputs, as JSON text or raw bytes.
 
 Each case starts from a valid input (the seed motor, with a short simulation so
 valid cases stay fast) and applies one or two mutations from four families:

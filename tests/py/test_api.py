@@ -25,7 +25,9 @@ def test_kinds_are_the_documented_ones():
         "report", "qcalc", "export.header", "export.csv_current", "export.csv_pll", "sweep",
         "sweep.plan", "sweep.chunk", "sweep.merge", "batch", "trace", "trace.examples",
         "vendors.header", "vendors.translate", "prove", "prove.plan", "prove.integer",
-        "prove.summary", "prove.propose"])
+        "prove.summary", "prove.propose",
+        "course.check", "course.answers", "course.spec",
+        "course.trainees"])
 
 
 # Each kind on a request with a known answer (values checked elsewhere against oracles; here

@@ -1,4 +1,4 @@
-"""The CLI and pulab.api keep their contract for every input (issue 14).
+"""The CLI and pulab.api keep their contract for every input.
 
 Contract (docs/contract.md): exit 0 with strict JSON on stdout, or exit 2 with
 exactly one stderr line ``error: FIELD: MESSAGE``; the api returns

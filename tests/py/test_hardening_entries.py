@@ -179,7 +179,9 @@ KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "r
              "prove": ["input", "ranges", "budget"], "prove.plan": ["input", "ranges"],
              "prove.integer": ["input", "ranges", "name"],
              "prove.summary": ["input", "ranges", "integers"],
-             "prove.propose": ["input", "ranges", "profile"]}
+             "prove.propose": ["input", "ranges", "profile"],
+             "course.check": ["input", "id", "answer"], "course.answers": ["input"], "course.spec": ["x"],
+             "course.trainees": ["start", "count"]}
 
 
 def test_fuzzed_kinds_keep_the_api_contract():
@@ -191,7 +193,8 @@ def test_fuzzed_kinds_keep_the_api_contract():
              "format": "Q3.12", "value": 0.5, "csv": "name,motor.rs_ohm\na,1\n", "code": CODE[0],
              "profile": "ti", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
              "summaries": [], "start": 0, "count": 1, "ranges": {"motor.rs_ohm": [1, 2]},
-             "budget": 20, "name": "vendor.Rpm", "integers": {}}
+             "budget": 20, "name": "vendor.Rpm", "integers": {},
+             "id": "vendor-rpm", "answer": "1"}
     seen = Counter()
     for _ in range(60):
         for kind in list(KINDS) + [_text(rng)]:

@@ -1,4 +1,4 @@
-"""pulab.analyses.loop (issue 11): discrete margins, delays, design, PLL, speed loop — against the
+"""pulab.analyses.loop: discrete margins, delays, design, PLL, speed loop — against the
 python-control oracle tests/oracle/loop_oracle.py (golden files tests/golden/loop) and by
 properties that follow from the mathematics."""
 

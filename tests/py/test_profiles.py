@@ -1,4 +1,4 @@
-"""Vendor profiles, their headers (compiled with gcc) and the translator (issue 12).
+"""Vendor profiles, their headers (compiled with gcc) and the translator .
 
 Expected integers come from the vendors' own published files where one exists
 (Microchip motor_params.h/foc_params.h, NXP m1_pmsm_appconfig.h, ST drive_parameters.h),
@@ -526,7 +526,7 @@ def test_header_compiles_where_int_is_16_bits(tmp_path, name):
 
 @pytest.mark.parametrize("name", ["ti", "nxp", "st", "microchip"])
 def test_the_family_sweep_reads_each_profile(seed_input, name):
-    """pulab.analyses.integers (issue 13) looks integers up in profiles.NAME.constants."""
+    """pulab.analyses.integers looks integers up in profiles.NAME.constants."""
     from pulab.analyses.integers import evaluate
     e = evaluate(seed_input, name)
     consts = report(_with_profiles(seed_input))["profiles"][name]["constants"]

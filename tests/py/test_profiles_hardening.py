@@ -1,4 +1,4 @@
-"""The vendor-profile entry points keep the hardening contract (docs/contract.md, issue 14).
+"""The vendor-profile entry points keep the hardening contract (docs/contract.md).
 
 ``python -m pulab header`` and ``translate`` on the seeded adversarial inputs of
 tests/py/adversarial.py, and ``api.vendors_json`` with hostile ``profiles`` sections and

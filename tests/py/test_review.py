@@ -1,4 +1,4 @@
-"""Datasheet entry and the graded design review (issue 9).
+"""The graded design review (the datasheet conversions: test_datasheet.py).
 
 Golden vectors: tests/golden/review, written by tests/oracle/review_oracle.py (pulab-free)
 for three real motors' datasheets and the issue's contract example."""
@@ -130,7 +130,7 @@ def test_base_equal_rated_compared_on_integers():
 
 
 def test_voltage_headroom_needs_field_weakening():
-    # 400 V servo whose back-EMF at f_b is 1.28 pu against a ≈0.95 pu limit (issue 9)
+    # 400 V servo whose back-EMF at f_b is 1.28 pu against a ≈0.95 pu limit
     inp = {"motor": {"rated_voltage_v": 400, "rated_current_a": 10, "rated_freq_hz": 250,
                      "rs_ohm": 0.5, "ld_h": 0.008, "lq_h": 0.008, "bemf_v": 320,
                      "pole_pairs": 5},

@@ -97,3 +97,42 @@ def test_contract_input_tables_are_the_schema():
     """docs/contract.md's input tables are the schema's text; after a schema edit paste the output of
     ``PYTHONPATH=py python3 -c "from pulab.schema.fields import markdown; print(markdown(), end='')"``."""
     assert _contract_rows().split("\n", 1)[1] == markdown()
+
+
+def test_normalize_fills_every_default_from_the_schema():
+    from conftest import SEED_INPUT
+    from pulab.schema.inputs import SECTIONS as NORMALIZED, normalize
+    out = normalize(SEED_INPUT)
+    for sec, keys in NORMALIZED.items():
+        for k in keys:
+            f = FIELD[f"{sec}.{k}"]
+            given = SEED_INPUT.get(sec, {}).get(k)
+            if sec == "raw":
+                assert k not in out["raw"]  # raw holds only the values given
+            elif given is not None:
+                assert out[sec][k] == given
+            elif f.only_with and out[sec][f.only_with[0].rsplit(".", 1)[1]] != f.only_with[1]:
+                assert out[sec][k] is None
+            elif f.default is not None and f.default is not REQUIRED:
+                assert out[sec][k] == f.default, f.path
+    assert out["drive"]["base_freq_hz"] == SEED_INPUT["motor"]["rated_freq_hz"]  # f_b defaults to f_n
+    assert normalize({k: v for k, v in out.items() if k != "analysis"}) == out  # its own fixed point
+
+
+def test_normalize_names_the_field_at_fault():
+    from conftest import SEED_INPUT
+    from pulab.schema.inputs import normalize
+    cases = [
+        ([], "input", "not_json_object"),
+        ({**SEED_INPUT, "motors": {}}, "motors", "unknown_section"),
+        ({**SEED_INPUT, "drive": {"udc_v": 24}}, "drive.ts_s", "required"),
+        # a datasheet value whose conversion is out of range is reported where it was typed
+        ({"motor": {**{k: v for k, v in SEED_INPUT["motor"].items() if k != "rated_freq_hz"},
+                    "pole_pairs": 1000},
+          "drive": SEED_INPUT["drive"], "datasheet": {"speed_rpm": 1e9}}, "datasheet.speed_rpm",
+         "derived_invalid"),
+    ]
+    for inp, field, code in cases:
+        with pytest.raises(InputError) as e:
+            normalize(inp)
+        assert (e.value.field, e.value.code) == (field, code)

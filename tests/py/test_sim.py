@@ -1,4 +1,4 @@
-"""pulab.analyses.sim (issue 3): plant discretization, the three current-loop variants, the PLL
+"""pulab.analyses.sim: plant discretization, the three current-loop variants, the PLL
 variants, metrics, validation, and the golden trajectories of tests/oracle/sim_oracle.py."""
 
 import cmath

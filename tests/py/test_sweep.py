@@ -198,7 +198,7 @@ def test_2d_boundaries_along_x_match_the_oracle_on_every_row():
     ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 1000},
       "y": {"path": "motor.ld_h", "start": 1, "stop": 2, "n": 1000}}, "sweep"),
     ({"input": SEED_INPUT, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2},
-      "profile": "infineon"}, "sweep.profile"),  # nxp is a profile since issue 12 landed
+      "profile": "infineon"}, "sweep.profile"),  # nxp is a profile
     ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "op": "chunk",
       "start": 500}, "sweep.chunk.start"),
     ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "op": "merge",
@@ -277,8 +277,8 @@ def test_vendor_reads_lists_every_raw_field_a_result_depends_on():
 
 
 def test_another_profile_is_swept_through_the_report(monkeypatch):
-    # Issue 12's profiles (report["profiles"][NAME]["constants"]) are not in this branch yet; a
-    # report wrapped with one synthetic profile checks the path a real one will take.
+    # A report wrapped with one synthetic profile checks the lookup through
+    # report["profiles"][NAME]["constants"], independent of the real profiles' numbers.
     from pulab.analyses import integers
     from pulab.report import report as real_report
 

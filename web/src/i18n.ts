@@ -14,12 +14,13 @@ import screens from './i18n/screens';
 import datasheet from './i18n/datasheet';
 import ctrace from './i18n/ctrace';
 import prove from './i18n/prove';
+import course from './i18n/course';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en };
+  ...ctrace.en, ...prove.en, ...course.en };
 
 export type Key = keyof typeof en;
 
@@ -38,6 +39,7 @@ const zh: Record<Key, string> = {
   ...datasheet.zh,
   ...ctrace.zh,
   ...prove.zh,
+  ...course.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

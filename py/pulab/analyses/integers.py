@@ -84,7 +84,7 @@ def _computed(value: int, ideal: float, error_pct: float, flags) -> dict:
 
 
 def _failed(e: InputError) -> dict:
-    status = "div0" if "divides by zero" in e.message else "invalid"
+    status = "div0" if e.code == "firmware_div0" else "invalid"
     return {"status": status, "value": None, "ideal": None, "error_pct": None,
             "message": f"{e.field}: {e.message}", "message_zh": f"{e.field}: {e.message_zh}"}
 

@@ -111,6 +111,7 @@ MESSAGES = {
                          "Q 格式建议只用于 --profile ti（其 GLOBAL_Q）"),
     "prove_range_syntax": ("expected PATH=LO:HI, got {got}", "格式应为 PATH=LO:HI，当前为 {got}"),
     "prove_order": ("lo must be ≤ hi, got {lo:g} > {hi:g}", "lo 必须 ≤ hi，当前 {lo:g} > {hi:g}"),
+    "unknown_exercise": ("unknown exercise {got}", "未知的练习：{got}"),
     "too_many_points": ("the sweep has {total} points; at most {limit}", "扫描共有 {total} 个点；最多 {limit} 个"),
     "empty_column": ("empty column name {got}", "列名为空：{got}"),
     "unit_not_path": ("a unit is only converted for an input path, not {got}",

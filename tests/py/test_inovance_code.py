@@ -1,4 +1,5 @@
-"""The vendor code of seed 1.4 and 2.2, against the seed's own numbers and hand arithmetic."""
+"""pulab.profiles.inovance_code: the vendor code of seed 1.4 and 2.2, against the seed's own
+numbers and hand arithmetic."""
 import math
 
 import pytest

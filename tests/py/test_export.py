@@ -1,4 +1,4 @@
-"""CSV exports name each column's unit (issue 9)."""
+"""pulab.export: CSV exports name each column's unit."""
 import pytest
 
 from conftest import SEED_INPUT

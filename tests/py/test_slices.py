@@ -1,4 +1,5 @@
-"""Issue 14: the stepped report (run_json_steps) is the report, cut into slices that can be cancelled."""
+"""pulab.analyses.slices: the stepped report (run_json_steps) is the report, cut into slices
+that can be cancelled."""
 
 import json
 
