@@ -187,6 +187,8 @@ export default async function screens(ctx) {
     await page.waitForFunction(() => document.documentElement.dataset.numbers === 'stale');
     const left = await page.$$eval('aside.inputs input[type="text"]', (els) => els.filter((e) => e.value !== '').map((e) => `${e.name}=${e.value}`));
     assert(left.length === 0, `seed values left: ${left.join(', ')}`);
+    const hints = await page.$$eval('aside.inputs input[type="text"]', (els) => els.filter((e) => e.placeholder !== '').map((e) => `${e.name} ${e.placeholder}`));
+    assert(hints.length === 0, `placeholders of the example motor: ${hints.join(', ')}`);
     assert(await page.$eval('details[data-section="datasheet"]', (d) => d.open), 'datasheet section not open');
     assert(await page.isVisible('aside.inputs .blank-start'), 'no note that the form is blank');
     assert(!(await page.evaluate(() => location.hash.includes('rated_voltage_v'))), 'seed still in the link');

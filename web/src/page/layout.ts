@@ -81,7 +81,7 @@ export class Layout {
       return;
     }
     this.views = viewsFor(panels.map((p) => p.id));
-    if (!this.views.some((v) => v.id === this.view)) this.view = this.views[0]?.id ?? '';
+    if (!this.views.some((v) => v.id === this.view)) this.view = (this.openOn && this.viewOf(this.openOn)) || (this.views[0]?.id ?? '');
     for (const sec of sections) this.revealOnScroll(sec);
     // Bases and per-unit values side by side on wide screens.
     const ib = panels.findIndex((p) => p.id === 'bases');
@@ -111,6 +111,8 @@ export class Layout {
   }
 
   private resizeWired = false;
+  /** The panel whose view the page opens on (a link that carries that panel's state), else the first view. */
+  openOn: PanelId | null = null;
   /** The views (tabs) of this page, and the one shown. */
   private views: View[] = [];
   private view = '';
