@@ -212,3 +212,18 @@ def test_the_input_echo_feeds_back():
     r = report(_blank(kt_nm_per_a=0.66))
     assert "datasheet" not in r["input"]
     assert pulab.report(r["input"])["vendor"]["raw"] == r["vendor"]["raw"]
+
+
+def test_cli_text_shows_the_cross_check_and_what_a_firmware_cannot_hold(tmp_path):
+    for name, want in (("rexroth_mhd041a_144", ["Back-EMF cross-check at 4000 rpm (spread 5.99 %)",
+                                                "datasheet.ke_v_per_krpm (used)",
+                                                "= 143.646 V  (-5.99 %)"]),
+                       ("maxon_ec45flat_50w_24v", ["Firmware inovance: cannot hold this motor",
+                                                   "a 16-bit parameter would keep 3397"])):
+        f = tmp_path / f"{name}.json"
+        f.write_text(json.dumps(json.loads((ROOT / f"tests/golden/datasheets/{name}.json")
+                                           .read_text())["input"]), encoding="utf-8")
+        out = _run("-m", "pulab", "report", str(f), "--format", "text")
+        assert out.returncode == 0, out.stderr
+        for text in want:
+            assert text in out.stdout, text

@@ -111,7 +111,8 @@ export interface LoopReport {
       reference_rpm: number;
       variants: Record<string, { speed_rpm: number[]; iq_a: number[]; iq_ref_a: number[] }>;
       metrics: Record<string, unknown>;
-      fixed_vs_float_max_rpm: number;
+      /** null when the Inovance firmware cannot hold the drive (no fixed-point run). */
+      fixed_vs_float_max_rpm: number | null;
     };
   });
   robust?: RobustReport;
@@ -157,8 +158,9 @@ export interface RobustReport {
   safe: boolean;
   safe_bandwidth_hz: [number, number] | null;
   safe_bandwidth_scan_hz: [number, number];
-  step?: { case: number; axis: 'd' | 'q'; ref_a: number; t: number[]; float: number[]; fixed: number[];
-    metrics: Record<'float' | 'fixed', Record<string, number | null>>; fixed_vs_float_max_a: number };
+  /** `fixed` null when the Inovance firmware cannot hold the drive (no fixed-point run). */
+  step?: { case: number; axis: 'd' | 'q'; ref_a: number; t: number[]; float: number[]; fixed: number[] | null;
+    metrics: { float: Record<string, number | null>; fixed: Record<string, number | null> | null }; fixed_vs_float_max_a: number | null };
   monte_carlo?: { samples: number; seed: number; fraction_below: number; phase_margin_deg: Record<'d' | 'q', Histogram> };
 }
 /** pulab.analyses.review: one graded finding; `key` = the report path of the value, `field` = the input to change. */

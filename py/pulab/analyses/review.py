@@ -186,13 +186,13 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         fix = {"code": "fix.inductance_unit" if finer else "fix.parameter_unit",
                "params": {"unit": count}}
         if raw[name] == 0:
-            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name, path=path,
-                     si=si, fix=fix)
+            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name,
+                     path={"label": path}, si=si, fix=fix)
             continue
         pct = 100.0 * (raw[name] - exact) / exact
         _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
-                 f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path=path, si=si,
-                 pct=pct, fix=fix)
+                 f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path={"label": path},
+                 si=si, pct=pct, fix=fix)
 
 
 def _bemf_check(f: list, n: dict) -> None:
@@ -345,8 +345,11 @@ def _firmware(f: list, firmware: dict, shipped: str) -> None:
             continue
         p = st["problems"]
         results = sorted({r for x in p for r in x["results"]})
+        # a raw input or a division the code cannot do: integers missing; else words too small
+        missing = any(x["code"].startswith("limit.") for x in p)
         _finding(f, "warning" if name == shipped else "note", "unrepresentable",
                  f"firmware.{name}", _FIRMWARE, name,
+                 None if missing else "unrepresentable_constants",
                  profile=name, fields=", ".join(x["field"] for x in p),
                  results=", ".join(results), advice={"code": p[0]["code"] + "_advice"
                  if p[0]["code"].startswith("limit.") else "limit.constant_advice",

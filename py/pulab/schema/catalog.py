@@ -158,9 +158,9 @@ MESSAGES = {
                              "{fix}"),
     "fix.parameter_unit": ("A property of the vendor's parameter table (one count is {unit}), not "
                            "of your inputs: it costs this much accuracy in every value the firmware "
-                           "derives from it; only another “{label}” changes it.",
+                           "derives from it; only another choice under “{label}” changes it.",
                            "这是厂商参数表的性质（一个计数为 {unit}），不是输入的问题：固件由它导出的每个值"
-                           "都损失这么多精度；只有换用其他“{label}”才能改变。"),
+                           "都损失这么多精度；只有改选“{label}”才能改变。"),
     "fix.inductance_unit": ("Set “{label}” to µH: the counts become 10× finer (the firmware must read "
                             "LD/LQ in µH too).",
                             "把“{label}”设为 µH：计数细 10 倍（固件也须按 µH 读取 LD/LQ）。"),
@@ -184,10 +184,15 @@ MESSAGES = {
                           "超出温度或饱和所能解释的范围：多半混淆了约定（有效值与峰值差 41 %，线与相差 "
                           "73 %）；请核对 Ke 的测量方式/测量端、Kv 的电压单位与 kT 的电流单位。"),
     "finding.pi_zero": ("current_pi.{axis}.pm_ki rounds to 0: the integral action is lost (ki·Ts is "
-                        "below one Q16 LSB of the per-unit gain)",
-                        "current_pi.{axis}.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）"),
+                        "below one Q16 LSB of the per-unit gain); a longer {label} or a higher "
+                        "current-loop bandwidth makes it count",
+                        "current_pi.{axis}.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）；"
+                        "加长{label}或提高电流环带宽可使其不为 0"),
     "finding.pi_rounding": ("current_pi.{axis}.pm_{k} = {value}: coarse, rounding changes {k} by "
-                            "{pct:+.1f} %", "current_pi.{axis}.pm_{k} = {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"),
+                            "{pct:+.1f} % (the vendor's Q12/Q16 gain format; a higher {label} gives "
+                            "larger, finer integers)",
+                            "current_pi.{axis}.pm_{k} = {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"
+                            "（厂商的 Q12/Q16 增益格式；提高{label}可得到更大、更细的整数）"),
     "finding.phase_margin": ("current loop, {axis} axis: phase margin {pm:.3g}° with the {delay} delay "
                              "(below {limit:g}°: overshoot and ringing); {fix}",
                              "电流环 {axis} 轴：计入 {delay} 延时后相位裕度为 {pm:.3g}°（低于 {limit:g}°："
@@ -223,9 +228,9 @@ MESSAGES = {
                              "{limit:.4g} V：{from_hz:.4g} Hz 以上需要弱磁；请降低{label}或提高直流母线电压 Udc"),
     "finding.voltage_fb": ("at rated current and f_b = {f_b:g} Hz the motor needs {need:.4g} V (line "
                            "RMS), above the voltage limit {limit:.4g} V: full current up to f_b needs "
-                           "field weakening",
+                           "field weakening (or a lower {label}, or a higher DC bus voltage Udc)",
                            "额定电流、f_b = {f_b:g} Hz 时电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
-                           "{limit:.4g} V：满电流运行到 f_b 需要弱磁"),
+                           "{limit:.4g} V：满电流运行到 f_b 需要弱磁（或降低{label}、提高直流母线电压 Udc）"),
     "finding.pll_unlocked": ("{key}: not locked (|θ − θ̂| ≥ 2° in the last 20 % of the run); change "
                              "{label}", "{key}：未锁定（仿真最后 20 % 内 |θ − θ̂| ≥ 2°）；请修改{label}"),
     "finding.pll_steady": ("{key}.steady_angle_error_deg = {value:.3g}°: angle error after lock; change "
@@ -262,6 +267,11 @@ MESSAGES = {
     "finding.unrepresentable": ("the {profile} firmware cannot hold this motor ({fields}): {results} "
                                 "are not computed. {advice}",
                                 "{profile} 固件无法表示这台电机（{fields}）：{results} 无法计算。{advice}"),
+    "finding.unrepresentable_constants": ("the {profile} firmware cannot hold this motor: {results} do "
+                                          "not fit their words and keep the largest integer instead. "
+                                          "{advice}",
+                                          "{profile} 固件无法表示这台电机：{results} 超出其字长，只能存下"
+                                          "最大整数。{advice}"),
     "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and {source} = "
                      "{si:g} {si_unit} needs {value}; a 16-bit parameter would keep {stored} "
                      "({stored_si:g} {si_unit}). Not computed: {results}",
@@ -279,8 +289,11 @@ MESSAGES = {
                           "profile that holds it, or change the firmware's units.",
                           "厂商 C 代码无法为这台电机计算这些整数（某个值在作除数前截断为 0）；"
                           "这是代码本身的性质：请选用能表示它的配置，或修改固件的单位。"),
-    "limit.constant_advice": ("Change what scales it: the profile's base (full-scale value) or its Q "
-                              "format.", "请修改它的缩放：该配置的基值（满量程值）或 Q 格式。"),
+    "limit.constant_advice": ("It needs {factor:.3g}× what {format} holds: store it with {bits} "
+                              "fewer fractional bits (Q{q_new}), or change what scales it ({options}) "
+                              "so that it is {factor:.3g}× smaller.",
+                              "它需要 {format} 所能表示范围的 {factor:.3g} 倍：请少用 {bits} 位小数"
+                              "（Q{q_new}）存储，或修改它的缩放（{options}），使其缩小 {factor:.3g} 倍。"),
     "profile_unrepresentable": ("the {profile} firmware cannot hold this motor: {reason}",
                                 "{profile} 固件无法表示这台电机：{reason}"),
     "raw_missing": ("{name} does not fit its Uint16 parameter", "{name} 超出其 Uint16 参数范围"),

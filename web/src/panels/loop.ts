@@ -167,7 +167,7 @@ function robustSection(loop: LoopReport): HTMLElement[] {
     figure('robust-map'),
     ...(r.step ? [h('h3', {}, t('robustStep', { a: r.step.axis })), figure('robust-step'),
       h('p', { class: 'note' }, `${t('overshoot')}: `, num('loop.robust.step.metrics.float.overshoot_pct', r.step.metrics.float.overshoot_pct, { sig: 3, unit: '%' }),
-        ` (${t('variant_float')}), `, num('loop.robust.step.metrics.fixed.overshoot_pct', r.step.metrics.fixed.overshoot_pct, { sig: 3, unit: '%' }),
+        ` (${t('variant_float')}), `, num('loop.robust.step.metrics.fixed.overshoot_pct', r.step.metrics.fixed?.overshoot_pct ?? null, { sig: 3, unit: '%' }),
         ` (${t('variant_fixed')}); ${t('fixedVsFloat')}: `, num('loop.robust.step.fixed_vs_float_max_a', r.step.fixed_vs_float_max_a, { sig: 3, unit: 'A' }))] : []),
     ...(mc ? [h('h3', {}, t('robustHist', { n: String(mc.samples), f: `${(100 * mc.fraction_below).toFixed(1)} %` })), figure('robust-hist')] : []),
   ];

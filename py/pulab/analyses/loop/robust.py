@@ -64,7 +64,7 @@ from ...profiles.inovance_code import round_half_away
 from ...schema.errors import InputError
 from ...schema.validate import object_fields, real
 from ..sim import decimate_indices
-from ..sim.current import default_duration, run_fixed, run_float
+from ..sim.current import default_duration, run_fixed, run_float, voltage_limits
 from ..sim.metrics import step_metrics
 from ..sim.plant import zoh
 from . import current as _current
@@ -448,30 +448,36 @@ def worst_step(report: dict, case: dict, delay: str) -> dict:
     period is in the margins, not in this time response).  Run length as the simulation's
     default for the nominal motor (30/ω_c, at least 200 periods); at most 400 points kept.
     """
-    inp, b, vendor, pi = report["input"], report["base"], report["vendor"], report["current_pi"]
+    inp, b, pi = report["input"], report["base"], report["current_pi"]
     ts = inp["drive"]["ts_s"]
     u_b, i_b = b["U_b"], b["I_b"]
     axis = case["axis"]
     n = int(math.ceil(default_duration(report, axis) / ts))
     step = 0.5 * i_b
     ref_d, ref_q = (step, 0.0) if axis == "d" else (0.0, step)
-    maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
+    umax_pu, imax_pu, ints = voltage_limits(report)
     z = zoh(case["rs_ohm"], case["ld_h"], case["lq_h"], case["psi_wb"], 0.0, ts)
     with_delay = delay != "none"
     gd, gq = pi["d"]["from_integers"], pi["q"]["from_integers"]
-    fl = run_float(z, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts, maxout / 4096.0 * u_b,
-                   maxu / 16777216.0 * u_b, ref_d, ref_q, 0.0, n, with_delay)
-    fx = run_fixed(z, i_b, u_b, pi["d"]["pm_kp"], pi["d"]["pm_ki"], pi["q"]["pm_kp"],
-                   pi["q"]["pm_ki"], maxu, maxout, round_half_away(ref_d / i_b * 4096.0),
-                   round_half_away(ref_q / i_b * 4096.0), 0, n, with_delay)
+    fl = run_float(z, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts, umax_pu * u_b,
+                   imax_pu * u_b, ref_d, ref_q, 0.0, n, with_delay)
     t = [k * ts for k in range(n + 1)]
     key = "id" if axis == "d" else "iq"
     keep = decimate_indices(n + 1)
-    return {"case": case["case"], "axis": axis, "ref_a": step, "t": [t[k] for k in keep],
-            "float": [fl[key][k] for k in keep], "fixed": [fx[key][k] for k in keep],
-            "metrics": {"float": step_metrics(t, list(fl[key]), step, list(fl["sat"]), ts),
-                        "fixed": step_metrics(t, list(fx[key]), step, list(fx["sat"]), ts)},
-            "fixed_vs_float_max_a": max(abs(a - c) for a, c in zip(fl[key], fx[key]))}
+    out = {"case": case["case"], "axis": axis, "ref_a": step, "t": [t[k] for k in keep],
+           "float": [fl[key][k] for k in keep], "fixed": None,
+           "metrics": {"float": step_metrics(t, list(fl[key]), step, list(fl["sat"]), ts),
+                       "fixed": None}, "fixed_vs_float_max_a": None}
+    if ints is None:  # the Inovance firmware cannot hold this drive: no fixed-point run
+        return out
+    maxout, maxu = ints
+    fx = run_fixed(z, i_b, u_b, pi["d"]["pm_kp"], pi["d"]["pm_ki"], pi["q"]["pm_kp"],
+                   pi["q"]["pm_ki"], maxu, maxout, round_half_away(ref_d / i_b * 4096.0),
+                   round_half_away(ref_q / i_b * 4096.0), 0, n, with_delay)
+    out["fixed"] = [fx[key][k] for k in keep]
+    out["metrics"]["fixed"] = step_metrics(t, list(fx[key]), step, list(fx["sat"]), ts)
+    out["fixed_vs_float_max_a"] = max(abs(a - c) for a, c in zip(fl[key], fx[key]))
+    return out
 
 
 # ---- Monte Carlo ------------------------------------------------------------------------
