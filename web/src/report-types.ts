@@ -70,7 +70,20 @@ export interface Report {
   review: Review;
   datasheet?: { given: Record<string, unknown>; conversions: Conversion[] };
   loop?: LoopReport;
+  /** Present when the input has a `profiles` section (docs/contract.md, "Output: profiles.NAME"). */
+  profiles?: Record<string, ProfileReport>;
 }
+
+/** One vendor profile of the report: its inputs, constants and bases. */
+export interface ProfileReport {
+  inputs: Record<string, unknown>;
+  constants: Record<string, ProfileConstant>;
+  bases: Record<string, string | number | null | Record<string, string>>;
+  pi_example?: { error: number; shift: number; misra: number }[];
+  checks?: [string, string][];
+  files?: { rounding: string; worked_numbers: string[] };
+}
+export interface ProfileConstant { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string }
 
 /** Margins of one discrete loop (docs/contract.md, "Loop analysis"); null = does not exist. */
 export interface Margins {
@@ -104,6 +117,8 @@ export interface LoopReport {
   pll: { correct: Margins; naive: Margins; boundary_kp_ts_gain: number };
   speed: null | (Margins & {
     firmware: Margins;
+    /** The speed PI: SI, per unit, and the firmware's integers. */
+    kp: number; ki: number; kp_pu: number; ki_pu: number; pm_kp: number; pm_ki: number;
     bases: Record<string, number>;
     response?: {
       t: number[];
