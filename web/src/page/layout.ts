@@ -96,7 +96,7 @@ export class Layout {
         h('div', { class: 'content' },
           h('nav', { class: 'tabs', 'aria-label': t('viewsLabel') },
             h('button', { type: 'button', class: 'inputs-toggle', 'aria-controls': 'inputs', onclick: openInputs }, t('inputsOpen')),
-            this.views.map((v) => h('a', { href: `#panel-${v.panels[0]}`, 'data-view': v.id, role: 'tab' }, t(`view_${v.id}` as Key)))),
+            this.views.map((v) => h('a', { href: `#panel-${v.panels[0]}`, 'data-view': v.id }, t(`view_${v.id}` as Key)))),
           h('nav', { class: 'subtabs' }),
           h('main', { class: this.settled === 'yes' ? 'panels settled' : 'panels' }, h('div', { class: 'stale-banner', role: 'status' }), h('div', { class: 'global-error' }),
             h('section', { class: 'answer', 'aria-label': t('answerIntegers') }), ...body))),
@@ -128,7 +128,8 @@ export class Layout {
     }
     for (const a of this.root.querySelectorAll<HTMLElement>('nav.tabs a[data-view]')) {
       a.classList.toggle('on', a.dataset.view === id);
-      a.setAttribute('aria-selected', String(a.dataset.view === id));
+      if (a.dataset.view === id) a.setAttribute('aria-current', 'true');
+      else a.removeAttribute('aria-current');
     }
     this.markScrollersSoon();
     this.root.querySelector('nav.subtabs')?.replaceChildren(...(view.panels.length > 1
