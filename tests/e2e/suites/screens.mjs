@@ -37,6 +37,8 @@ export default async function screens(ctx) {
         }
         assert(await inView('section.answer .counts'), 'review summary not on the first screen');
         assert(await inView('select[name="answer.profile"]'), 'profile picker not on the first screen');
+        const tabs = await p.$$eval('nav.tabs a[data-view]', (as) => as.map((a) => a.getBoundingClientRect().right));
+        assert(tabs.every((r) => r <= w), `a tab off screen: ${tabs.map(Math.round)} at ${w}`);
         const doc = await p.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.scrollHeight]);
         assert(doc[0] <= w, `page ${doc[0]} px wide at ${w}`);
         await p.screenshot({ path: join(SHOTS, `screens-${w}-${lang}-first.png`) });
