@@ -23,7 +23,7 @@ import tempfile
 
 from ctrace_gen import TYPE_BITS
 
-__all__ = ["available", "run_cases", "PRELUDE"]
+__all__ = ["available", "run_cases", "run_unit", "Unit", "PRELUDE", "UNIT_PRELUDE"]
 
 #: Firmware type names and IQmath as TI defines them (DSP28x_Project.h, IQmathLib.h);
 #: _IQmpy = (long)(((long long)a * b) >> GLOBAL_Q), __IQsat(x, hi, lo) clamps.
@@ -162,16 +162,21 @@ def _batches(cases: list, target: str) -> list:
 
 
 def _compile_and_run(chunks: list, target: str, workdir: str, index: int) -> list:
+    return _run_program(_program(chunks, target), chunks, target, workdir, index)
+
+
+def _run_program(text: str, chunks: list, target: str, workdir: str, index: int,
+                 flags: tuple = ()) -> list:
     src = os.path.join(workdir, f"p{index}.c")
     exe = os.path.join(workdir, f"p{index}.{'elf' if target == 'avr' else 'out'}")
     with open(src, "w") as f:
-        f.write(_program(chunks, target))
+        f.write(text)
     if target == "avr":
-        cmd = ["avr-gcc", "-mmcu=atmega2560", "-Os", "-fwrapv", "-std=gnu99", "-w", src,
-               "-o", exe]
+        cmd = ["avr-gcc", "-mmcu=atmega2560", "-Os", "-fwrapv", "-std=gnu11", "-w", *flags,
+               src, "-o", exe]
     else:
-        cmd = ["gcc", "-m32", "-O1", "-fwrapv", "-funsigned-char", "-std=gnu99", "-w", src,
-               "-o", exe]
+        cmd = ["gcc", "-m32", "-O1", "-fwrapv", "-funsigned-char", "-std=gnu11", "-w", *flags,
+               src, "-o", exe]
     cc = subprocess.run(cmd, capture_output=True, text=True)
     if cc.returncode:
         raise RuntimeError(f"{cmd[0]} failed on {src}:\n{cc.stderr[:4000]}")
@@ -227,3 +232,138 @@ def run_cases(cases: list, target: str, jobs: int = 2) -> tuple:
         results.append(flat[pos:pos + len(vectors)])
         pos += len(vectors)
     return results, len(programs)
+
+
+class Unit:
+    """A translation unit run through one function, for the compilers.
+
+    ``code`` is pasted at file scope unchanged; ``entry`` is called once per vector with
+    ``params`` [(C spelling, name)]: a ``T *`` parameter gets the address of a zeroed local
+    ``T`` (``name.FIELD`` or ``*name`` inputs and outputs address it), ``T [N]`` a zeroed
+    local array (``name[i]``), any other its value.
+    ``inputs``/``outputs`` are [(spelling, name)]; names are ``return``, parameter names,
+    ``p.FIELD``, ``*p`` and globals; ``prelude`` is C placed before the code (the vendor
+    type names and IQmath the code expects from headers it does not paste).
+    """
+
+    def __init__(self, code: str, entry: str, params: list, inputs: list, outputs: list,
+                 prelude: str = "") -> None:
+        self.code, self.entry, self.params = code, entry, params
+        self.inputs, self.outputs, self.prelude = inputs, outputs, prelude
+
+    def input_decls(self) -> list:
+        return self.inputs
+
+
+def _unit_c_name(unit: Unit, name: str) -> str:
+    """The C expression for an input/output name inside the driver."""
+    if name == "return":
+        return "ret"
+    pointers = {n for s, n in unit.params if s.rstrip()[-1:] in "*]"}
+    scalars = {n for s, n in unit.params if s.rstrip()[-1:] not in "*]"}
+    if name.startswith("*") and name[1:] in pointers:
+        return f"o_{name[1:]}"
+    head = re.match(r"\w+", name)[0]
+    rest = name[len(head):]
+    if head in pointers:
+        return f"o_{head}{rest}"
+    if head in scalars:
+        return f"v_{head}{rest}"
+    return name
+
+
+def _unit_source(unit: Unit, vectors: list, target: str) -> str:
+    fields = " ".join(f"{t} f{i};" for i, (t, _) in enumerate(unit.inputs)) or "char unused;"
+    rows = []
+    for vec in vectors:
+        vals = []
+        for spelling, name in unit.inputs:
+            bits, _ = TYPE_BITS(spelling, target)
+            vals.append(f"({spelling})0x{vec[name] & ((1 << bits) - 1):X}ULL")
+        rows.append("{" + ", ".join(vals or ["0"]) + "}")
+    decls, args = [], []
+    for spelling, name in unit.params:
+        if spelling.rstrip().endswith("]"):  # T p[N]: an array of N
+            base, _, size = spelling.rstrip()[:-1].rpartition("[")
+            decls.append(f"{base} o_{name}[{size}]; memset(o_{name}, 0, sizeof o_{name});")
+            args.append(f"o_{name}")
+        elif spelling.rstrip().endswith("*"):
+            base = spelling.rstrip()[:-1]
+            decls.append(f"{base} o_{name}; memset(&o_{name}, 0, sizeof o_{name});")
+            args.append(f"&o_{name}")
+        else:
+            decls.append(f"{spelling} v_{name}; memset(&v_{name}, 0, sizeof v_{name});")
+            args.append(f"v_{name}")
+    load = " ".join(f"{_unit_c_name(unit, n)} = in.f{i};" for i, (_, n) in enumerate(unit.inputs))
+    ret = [s for s, n in unit.outputs if n == "return"]
+    call = f"{ret[0]} ret = {unit.entry}({', '.join(args)});" if ret else \
+        f"{unit.entry}({', '.join(args)});"
+    prints = " ".join(f"put(' '); put_hex((uint64_t)({_unit_c_name(unit, n)}), "
+                      f"sizeof({_unit_c_name(unit, n)}));" for _, n in unit.outputs)
+    return f"""
+{unit.prelude}
+{unit.code}
+struct in_0 {{ {fields} }};
+static const struct in_0 tbl_0[] TABLE = {{ {", ".join(rows)} }};
+static void case_0(void) {{
+  uint16_t i;
+  for (i = 0; i < {len(vectors)}; i++) {{
+    struct in_0 in; LOAD(in, tbl_0[i]);
+    {{ {" ".join(decls)} {load} {call}
+    put('@'); put_hex(0, 2); put(' '); put_hex(i, 2); {prints} put('\\n'); }}
+  }}
+}}
+"""
+
+
+#: What a unit gets before its code: the fixed-width types, TI's type names and the IQmath
+#: of TI's IQmathLib.h (fixed-point build: _IQN(A) = (long)(A * 2^N), the multiplies, the
+#: Q conversions) that the tracer knows without a header.
+UNIT_PRELUDE = r"""
+#include <stdint.h>
+#include <string.h>
+#ifndef GLOBAL_Q
+#define GLOBAL_Q 24
+#endif
+static long iq_mpy(long a, long b, int q) { return (long)(((long long)a * (long long)b) >> q); }
+#define _IQmpy(a, b) iq_mpy((a), (b), GLOBAL_Q)
+#define __IQmpy(a, b, q) iq_mpy((a), (b), (q))
+#define _IQsat(x, hi, lo) ((x) > (hi) ? (hi) : ((x) < (lo) ? (lo) : (x)))
+#define _IQabs(A) ((long)(A) < 0 ? -(long)(A) : (long)(A))
+#define IQ_CAT(a, b) a##b
+#define IQ_OF(q, A) IQ_CAT(_IQ, q)(A)
+#define _IQ(A) IQ_OF(GLOBAL_Q, A)
+typedef long _iq;
+typedef uint16_t Uint16; typedef int16_t int16; typedef uint32_t Uint32; typedef int32_t int32;
+""" + "".join(f"#define _IQ{q}mpy(a, b) iq_mpy((a), (b), {q})\n"
+              f"#define _IQ{q}(A) ((long)((A) * {float(1 << q)!r}L))\n"
+              f"#define _IQtoIQ{q}(A) (GLOBAL_Q >= {q} ? (long)(A) >> (GLOBAL_Q - {q}) : "
+              f"(long)(A) << ({q} - GLOBAL_Q))\n"
+              f"#define _IQ{q}toIQ(A) (GLOBAL_Q >= {q} ? (long)(A) << (GLOBAL_Q - {q}) : "
+              f"(long)(A) >> ({q} - GLOBAL_Q))\n"
+              f"typedef long _iq{q};\n" for q in range(1, 31)) + "".join(
+    f"#define _IQmpy{k}(A) ((A) << {k.bit_length() - 1})\n#define _IQdiv{k}(A) ((A) >> "
+    f"{k.bit_length() - 1})\n" for k in (2, 4, 8, 16, 32, 64))
+
+
+def run_unit(unit: Unit, vectors: list, target: str, flags: tuple = ()) -> list:
+    """Final values of ``unit.outputs`` for each vector: a list of {name: value};
+    ``flags`` go to the compiler (``-D``, ``-idirafter`` for headers the code names)."""
+    io = _AVR_IO if target == "avr" else _HOST_IO
+    init = "UCSR0A = 1 << U2X0; UBRR0 = 0; UCSR0B = 1 << TXEN0;" if target == "avr" else ""
+    end = "cli(); sleep_cpu();" if target == "avr" else ""
+    out = []
+    with tempfile.TemporaryDirectory(prefix=f"ctrace-unit-{target}-") as d:
+        per = max(1, _TABLE_BYTES // _row_bytes(unit, target))
+        for start in range(0, len(vectors), per):
+            chunk = vectors[start:start + per]
+            text = (f"{UNIT_PRELUDE}{io}{_PUT_HEX}{_unit_source(unit, chunk, target)}\n"
+                    f"int main(void) {{ {init} case_0(); {end} return 0; }}\n")
+            out += _run_program(text, [(_UnitOutputs(unit.outputs), chunk)], target, d,
+                                start, flags)
+    return out
+
+
+class _UnitOutputs:
+    def __init__(self, outputs: list) -> None:
+        self.outputs = outputs

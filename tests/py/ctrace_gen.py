@@ -28,6 +28,7 @@ TYPES = {
     "unsigned short": (16, 16, False, False), "int": (16, 32, True, True),
     "long": (32, 32, True, True), "unsigned long": (32, 32, False, False),
     "long long": (64, 64, True, True), "unsigned long long": (64, 64, False, False),
+    "unsigned int": (16, 32, False, False),
     "int8_t": (8, 8, True, True), "uint8_t": (8, 8, False, False),
     "char": (8, 8, True, False), "signed char": (8, 8, True, True),
     "unsigned char": (8, 8, False, False), "_iq": (32, 32, True, True),

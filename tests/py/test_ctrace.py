@@ -131,7 +131,8 @@ def test_flux_lines_differ_between_c28x_and_arm():
     ("long a = 1;\nlong b = a % (a - 1);", 2, 14, "remainder by zero"),
     ("x = 1;", 1, 1, "x is not declared"),
     ("long a = 1 +;", 1, 13, "expected a value"),
-    ("for (;;) {}", 1, 1, "'for' is not supported"),
+    ("for (;;) {}", 1, 1, "more than 10000 statements executed"),
+    ("goto out;", 1, 1, "'goto' is not supported"),
     ("int8_t a = 1;", 1, 1, "int8_t does not exist on c28x"),
     ("long a = 1.5;", 1, 10, "only integer constants"),
     ("long a = 99999999999999999999;", 1, 10, "too large"),
@@ -273,6 +274,9 @@ def test_cli_text_format_is_one_line_per_statement(tmp_path):
     lines = run.stdout.splitlines()
     assert lines[0] == "target arm, GLOBAL_Q 24; inputs: e"
     # e, acc, acc += …, the if (not taken): 4 statements, 4 lines
-    assert len(lines) == 5
+    assert len(lines) == 6
     assert "acc = -6 (0xFFFFFFFA)" in lines[3] and "truncation at 3:8" in lines[3]
     assert lines[4].endswith("-> none")
+    # >> rounds toward -inf: -21 >> 2 = -6 loses 0.75 LSB (-21/4 = -5.25)
+    assert "(floor, 0.75 LSB lost)" in lines[3]
+    assert lines[5] == "rounding acc: 1 toward -inf, 0 toward zero, at most 0.75 LSB"

@@ -134,7 +134,7 @@ def _seed_case(name: str, target: str) -> tuple:
     decls = [(s.spelling, s.name) for s in checked.symbols.values() if not s.initialized]
     body = code
     for stmt in checked.program.statements:  # the harness declares these (dotted → struct)
-        if isinstance(stmt, Decl) and all(init is None for _, init in stmt.items):
+        if isinstance(stmt, Decl) and all(item[1] is None for item in stmt.items):
             body = body.replace(code[stmt.start:stmt.end], "", 1)
     return Case(decls, body, decls, checked.inputs), checked
 

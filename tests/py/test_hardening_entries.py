@@ -27,7 +27,18 @@ PLAIN = {k: v for k, v in BASE.items() if k != "sim"}
 CODE = ["Uint16 v; long x = v*10;", "int a = 1; a = a / 0;", "long y = 0x7fffffffL + 1;",
         "#define K 3\nUint16 v; Uint16 w = v * K;", "x = 1 +;", "{" * 500, "(" * 5000 + "1",
         "Uint16 v; // @q 15\n", "#define A A\nint x = A;", "int x = 1" + " + 1" * 3000 + ";",
-        "long q = _IQmpy(1, 2);", "Uint16 v; if (v) { v = v >> 1; } else v = 0;", ""]
+        "long q = _IQmpy(1, 2);", "Uint16 v; if (v) { v = v >> 1; } else v = 0;", "",
+        # whole files through an entry function, at each limit of the tracer
+        "int f(int x) { return f(x); }", "int f(int x) { for (;;) {} return x; }",
+        "int t[5000]; int f(int x) { return t[x]; }",
+        "typedef struct { int a; } S; int f(S *p, int x) { return p->a / x; }",
+        "int f(int x) { switch (x) { case 1: return 1; default: x++; } return x; }",
+        "int f(int *p) { while (*p) (*p)--; return 1; }",
+        "float h(float x) { return x; } int f(int x) { return h(x); }",
+        "".join(f"int f{i}(int x) {{ return f{i + 1}(x) + f{i + 1}(x); }}\n" for i in range(24))
+        + "int f24(int x) { return x; } int f(int x) { return f0(x); }",
+        "".join(f"int f{i}(int x) {{ return f{i + 1}(x); }}\n" for i in range(40))
+        + "int f40(int x) { return x; } int f(int x) { return f0(x); }"]
 
 
 def _run(argv: list, stdin: bytes) -> tuple:
@@ -95,6 +106,10 @@ def _argv(rng, command: str) -> tuple:
             argv.append(f"--set={rng.choice(['v', 'w', 'x', _text(rng)])}={_text(rng)}")
         if rng.random() < 0.2:
             argv.append(f"--global-q={_text(rng)}")
+        if rng.random() < 0.5:
+            argv.append(f"--entry={rng.choice(['f', 'f', 'g', _text(rng)])}")
+        if rng.random() < 0.3:
+            argv.append("--zero-unset")
         return argv, rng.choice(CODE + [_text(rng)]).encode("utf-8", "surrogatepass")
     if command == "header":
         return ["header", f"--profile={rng.choice(list(NAMES) + [_text(rng)])}", "-"], data
@@ -142,7 +157,9 @@ def test_fuzzed_worker_requests_keep_the_api_contract():
         seen["batch", _api_reply(batch_json(json.dumps(batch)))] += 1
         trace = {"code": rng.choice(CODE + [_value(rng)]), "target": rng.choice(["c28x", _value(rng)]),
                  "set": rng.choice([{"v": _value(rng)}, _value(rng)]),
-                 "global_q": rng.choice([None, 15, _value(rng)])}
+                 "global_q": rng.choice([None, 15, _value(rng)]),
+                 "entry": rng.choice([None, "f", _value(rng)]),
+                 "zero_unset": rng.choice([True, False, _value(rng)])}
         text = json.dumps(trace)
         if rng.random() < 0.1:
             text = '{"set": ' + "[" * 5000 + "]" * 5000 + "}"

@@ -5,17 +5,19 @@ describe('codeStateFromSearch: the "Your code" state from ?code=…', () => {
   const cases: [string, CodeState | null][] = [
     ['', null],
     ['?embed=vendor', null],
-    ['?code=long%20a%20%3D%201%3B', { code: 'long a = 1;', target: 'c28x', vs: 'arm', set: {} }],
-    ['?code=x&target=arm&vs=&set.gMotorInfo.Voltage=6554', { code: 'x', target: 'arm', vs: '', set: { 'gMotorInfo.Voltage': '6554' } }],
-    ['?code=x&set.=1&set.a=0x10', { code: 'x', target: 'c28x', vs: 'arm', set: { a: '0x10' } }],
+    ['?code=long%20a%20%3D%201%3B', { code: 'long a = 1;', target: 'c28x', vs: 'arm', set: {}, entry: '' }],
+    ['?code=x&target=arm&vs=&set.gMotorInfo.Voltage=6554', { code: 'x', target: 'arm', vs: '', set: { 'gMotorInfo.Voltage': '6554' }, entry: '' }],
+    ['?code=x&set.=1&set.a=0x10', { code: 'x', target: 'c28x', vs: 'arm', set: { a: '0x10' }, entry: '' }],
+    ['?code=x&entry=pi_step&set.s.kp=3', { code: 'x', target: 'c28x', vs: 'arm', set: { 's.kp': '3' }, entry: 'pi_step' }],
   ];
   for (const [search, want] of cases) it(`${search || '(empty)'} → ${JSON.stringify(want)}`, () => expect(codeStateFromSearch(search)).toEqual(want));
 });
 
 describe('codeSearch round-trips through codeStateFromSearch', () => {
   const states: CodeState[] = [
-    { code: 'Uint16 v;\nlong x = v * 10; // 100% & more?', target: 'c28x', vs: 'arm', set: { v: '6554' } },
-    { code: '#define K (1<<4)\n', target: 'msp430', vs: '', set: {} },
+    { code: 'Uint16 v;\nlong x = v * 10; // 100% & more?', target: 'c28x', vs: 'arm', set: { v: '6554' }, entry: '' },
+    { code: '#define K (1<<4)\n', target: 'msp430', vs: '', set: {}, entry: '' },
+    { code: 'int f(int *p) { return *p; }', target: 'arm', vs: '', set: { '*p': '-1' }, entry: 'f' },
   ];
   for (const s of states) it(`${JSON.stringify(s.code)} on ${s.target}`, () => expect(codeStateFromSearch(codeSearch(s))).toEqual(s));
   it('embed=code first, empty values dropped', () => {

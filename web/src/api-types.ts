@@ -21,11 +21,14 @@ export interface TraceRequest {
   set?: Record<string, string | number>;
   global_q?: number;
   define?: string[];
+  entry?: string;
+  zero_unset?: boolean;
 }
-export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string }
+/** A term of a statement; a call of a function of the pasted code carries its statements. */
+export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string; call?: string; steps?: TraceLine[] }
 export interface TraceLine { line: number; column: number; code: string; var: string | null; type: string; value: number; hex: string; flags: string[]; terms: TraceTerm[]; spelling?: string; input?: boolean; branch?: string }
 export interface TraceVar { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
-export interface Trace { target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[] }
+export interface Trace { target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[]; entry?: string | null; functions?: string[] }
 export interface TraceExample { id: string; title: string; title_zh: string; code: string }
 
 /** `vendors.translate`: a vendor's two current-loop integers in every other vendor's scaling. */

@@ -1,5 +1,5 @@
 // The "Your code" panel's state without DOM: reading and writing it in the URL's query
-// (?code=…&target=…&vs=…&set.NAME=…, beside #in= which keeps the motor), the trace request,
+// (?code=…&target=…&vs=…&entry=…&set.NAME=…, beside #in= which keeps the motor), the trace request,
 // and the inputs prefilled from the report's integers.
 
 export interface CodeState {
@@ -9,6 +9,8 @@ export interface CodeState {
   vs: string;
   /** Input values the user typed (text, sent as is: pulab checks them). */
   set: Record<string, string>;
+  /** The function of the code to run, or '' for the statements outside functions. */
+  entry?: string;
 }
 
 export const DEFAULT_TARGET = 'c28x';
@@ -21,7 +23,7 @@ export function codeStateFromSearch(search: string): CodeState | null {
   if (code === null) return null;
   const set: Record<string, string> = {};
   for (const [k, v] of p) if (k.startsWith('set.') && k.length > 4) set[k.slice(4)] = v;
-  return { code, target: p.get('target') ?? DEFAULT_TARGET, vs: p.get('vs') ?? DEFAULT_VS, set };
+  return { code, target: p.get('target') ?? DEFAULT_TARGET, vs: p.get('vs') ?? DEFAULT_VS, set, entry: p.get('entry') ?? '' };
 }
 
 /** The query string that reproduces `s` (with `embed=code` when asked). */
@@ -31,6 +33,7 @@ export function codeSearch(s: CodeState, embed = false): string {
   p.set('code', s.code);
   p.set('target', s.target);
   p.set('vs', s.vs);
+  if (s.entry) p.set('entry', s.entry);
   for (const [k, v] of Object.entries(s.set)) if (v.trim() !== '') p.set(`set.${k}`, v);
   return `?${p.toString()}`;
 }
@@ -74,7 +77,7 @@ export function prefill(inputs: string[], report: unknown): Record<string, { val
 }
 
 /** The request for pulab.api.trace_json: typed values win over the report's. */
-export function traceRequest(s: CodeState, target: string, inputs: string[], report: unknown): { code: string; target: string; set: Record<string, string | number> } {
+export function traceRequest(s: CodeState, target: string, inputs: string[], report: unknown): { code: string; target: string; set: Record<string, string | number>; entry?: string } {
   const set: Record<string, string | number> = {};
   const fromReport = prefill(inputs, report);
   for (const name of inputs) {
@@ -82,7 +85,7 @@ export function traceRequest(s: CodeState, target: string, inputs: string[], rep
     if (typed !== undefined && typed.trim() !== '') set[name] = typed.trim();
     else if (name in fromReport) set[name] = fromReport[name].value;
   }
-  return { code: s.code, target, set };
+  return s.entry ? { code: s.code, target, set, entry: s.entry } : { code: s.code, target, set };
 }
 
 /** Names of the variables whose final values differ between two traces' `vars`. */

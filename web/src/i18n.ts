@@ -12,11 +12,13 @@ import review from './i18n/review';
 import qcalc from './i18n/qcalc';
 import screens from './i18n/screens';
 import datasheet from './i18n/datasheet';
+import ctrace from './i18n/ctrace';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
-  ...screens.en, ...datasheet.en };
+  ...screens.en, ...datasheet.en,
+  ...ctrace.en };
 
 export type Key = keyof typeof en;
 
@@ -33,6 +35,7 @@ const zh: Record<Key, string> = {
   ...qcalc.zh,
   ...screens.zh,
   ...datasheet.zh,
+  ...ctrace.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

@@ -65,7 +65,7 @@ export interface ReplyBody {
 export type ApiErr = {
   ok: false; field: string; message: string; message_zh?: string;
   code?: string; params?: Record<string, Json>;
-  line?: number; column?: number; inputs?: string[];
+  line?: number; column?: number; inputs?: string[]; functions?: string[];
 };
 /** A kind's reply when it succeeds. */
 export type Ok<K extends ApiKind> = { ok: true } & ReplyBody[K];

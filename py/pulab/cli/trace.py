@@ -1,5 +1,5 @@
-"""``python -m pulab trace FILE.c --target c28x --set NAME=VALUE … [-D NAME[=VALUE]]…
-[--global-q N] [--format json|text]``.
+"""``python -m pulab trace FILE.c --target c28x [--entry F] --set NAME=VALUE …
+[-D NAME[=VALUE]]… [--zero-unset] [--global-q N] [--format json|text]``.
 
 Prints the :func:`~pulab.ctrace.trace` JSON on stdout; bad code or input exits
 with status 2 and one line on stderr, ``error: code: LINE:COLUMN: MESSAGE`` or
@@ -27,8 +27,14 @@ def add_trace_parser(sub) -> None:
     tp.add_argument("code")
     tp.add_argument("--target", default="c28x", help=f"one of {', '.join(TARGETS)} "
                                                      "(default c28x)")
+    tp.add_argument("--entry", default=None, metavar="FUNCTION",
+                    help="the function of the code to run (its parameters, the fields its "
+                         "pointers reach and the globals it reads are the inputs)")
     tp.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                    help="an input value (decimal or 0x hex); repeat for each input")
+                    help="an input value (decimal or 0x hex); repeat for each input "
+                         "(p.FIELD or p->FIELD for a field of the struct p points to)")
+    tp.add_argument("--zero-unset", action="store_true",
+                    help="inputs not set are 0 (else reading one is an error naming them)")
     tp.add_argument("-D", dest="define", action="append", default=[], metavar="NAME[=VALUE]",
                     help="define a macro before the code, as a compiler's -D (VALUE 1 when "
                          "absent); repeat for each")
@@ -70,7 +76,21 @@ def format_text(result: dict) -> str:
     if result.get("unresolved_includes"):
         lines.append("not known (contents not pasted): " +
                      ", ".join(result["unresolved_includes"]))
-    steps = result["steps"]
+    if result.get("entry"):
+        lines[0] = f"target {result['target']}, GLOBAL_Q {result['global_q']}; entry " \
+            f"{result['entry']}; inputs: " + (", ".join(result["inputs"]) or "none")
+    _step_lines(result["steps"], lines, "")
+    ret = result["vars"].get("return")
+    if result.get("entry") and ret is not None:
+        lines.append(f"return {ret['value']} ({ret['hex']})")
+    for name, r in result.get("rounding", {}).items():
+        lines.append(f"rounding {name}: {r['floor']} toward -inf, {r['toward_zero']} toward zero, "
+                     f"at most {r['max_lost']:g} LSB")
+    return "\n".join(lines)
+
+
+def _step_lines(steps: list, lines: list, indent: str) -> None:
+    """One line per step; the steps of a call follow it, indented under the call."""
     pos_w = max((len(f"{s['line']}:{s['column']}") for s in steps), default=0)
     code_w = min(max((len(" ".join(s["code"].split())) for s in steps), default=0), 60)
     for s in steps:
@@ -82,7 +102,7 @@ def format_text(result: dict) -> str:
         elif s.get("var") is not None:
             what = f"{s['var']} = {s['value']} ({s['hex']})"
         else:
-            what = f"= {s['value']}" if s.get("value") is not None else ""
+            what = f"= {s['value']} ({s['hex']})" if s.get("value") is not None else ""
         if s.get("input"):
             what += " input"
         notes = []
@@ -90,12 +110,18 @@ def format_text(result: dict) -> str:
             term = next((t for t in s.get("terms", []) if flag in t["flags"]), None)
             if term is not None:
                 flag += f" at {term['line']}:{term['column']} {' '.join(term['expr'].split())}"
+                if flag.startswith("truncation") and "rounding" in term:
+                    flag += f" ({term['rounding'].replace('_', ' ')}, {term['lost']:g} LSB lost)"
             notes.append(flag)
         line = f"{s['line']}:{s['column']}".ljust(pos_w) + "  " + code.ljust(code_w) + "  " + what
         if notes:
             line += "  " + "; ".join(notes)
-        lines.append(line.rstrip())
-    return "\n".join(lines)
+        lines.append(indent + line.rstrip())
+        for t in s.get("terms", []):
+            if "call" in t:
+                value = "" if t["value"] is None else f" = {t['value']} ({t['hex']})"
+                lines.append(f"{indent}  call {t['call']}(){value}")
+                _step_lines(t["steps"], lines, indent + "    ")
 
 
 def trace_main(args: argparse.Namespace) -> int:
@@ -118,7 +144,8 @@ def trace_main(args: argparse.Namespace) -> int:
             except ValueError:
                 raise InputError("global_q", code="integer_range", lo=1, hi=30,
                                  got=shown(args.global_q)) from None
-        result = trace(code, args.target, parse_sets(args.set), gq, args.define)
+        result = trace(code, args.target, parse_sets(args.set), gq, args.define, args.entry,
+                       args.zero_unset)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2

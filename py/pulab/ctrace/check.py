@@ -1,11 +1,18 @@
-"""Static typing of a parsed program for one target (C99 6.3, 6.5).
+"""Static typing of a parsed program for one target (C99 6.3, 6.5), and its inputs.
 
-Every expression node gets ``ctype``: the C type of its value after the
-integer promotions and the usual arithmetic conversions; binary operators
-that convert their operands first also get ``operand_type``.  Types are known
-before any value, so ``c ? a : b`` has its type even when a branch is never
-evaluated.  Also found here: which variables are *inputs* (read before the
-code gives them a value).
+Every expression node gets ``ctype``: the C type of its value after the integer
+promotions and the usual arithmetic conversions (a :class:`~pulab.fixedpoint.cint.CType`
+for integers, or a :class:`StructT`, :class:`PtrT`, :class:`ArrT`, :data:`VOID`);
+binary operators that convert their operands first also get ``operand_type``.  Types are
+known before any value, so ``c ? a : b`` has its type even when a branch is never
+evaluated.
+
+Every object has a *path*: its name for the code's globals and the entry function's
+parameters and locals (``p.hKpGain`` for a field of the struct ``p`` points to, ``*out``
+for the integer ``out`` points to, ``tab[2]`` for an element), ``f:x`` for a local of
+another function ``f``.  The *inputs* are the paths the code may read before giving them
+a value on some path through it (definite assignment: an ``if`` assigns what both
+branches assign), following pointers from the entry function's parameters into calls.
 
 Examples
 --------
@@ -15,36 +22,146 @@ Examples
 >>> checked = check(prog, TARGETS["c28x"])
 >>> checked.inputs, prog.statements[1].items[0][1].ctype.name
 (['v'], 'unsigned int')
+>>> code = "typedef struct { int k; long i; } PI; int f(PI *p, int e) { if (e > 0) p->i = e; " \\
+...        "return p->i + p->k; }"
+>>> check(parse(code), TARGETS["c28x"], "f").inputs
+['e', 'p.i', 'p.k']
 """
 
 from __future__ import annotations
 
+from ..fixedpoint.cint import CType
 from .errors import TraceError
-from .parser import (Assign, Binary, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
-                     Logical, Num, Program, Unary, Var)
+from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
+                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
+                     Program, Ptr, Return, StructDef, Switch, Unary, Var, constant_value,
+                     IQ_FUNCTIONS)
+from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
-__all__ = ["check", "Checked", "Symbol"]
+__all__ = ["check", "Checked", "Symbol", "StructT", "PtrT", "ArrT", "VOID", "leaves", "pointee",
+           "MAX_ELEMENTS", "MAX_ANALYSIS"]
+
+#: Larger arrays (and objects with more integers) are refused.
+MAX_ELEMENTS = 4096
+#: The inputs analysis follows calls into their bodies; beyond this many visited nodes the
+#: code is refused (a call tree that would take too long to trace anyway).
+MAX_ANALYSIS = 200_000
+
+
+class StructT:
+    """A struct type: ``fields`` maps a name to (type, spelling)."""
+
+    __slots__ = ("name", "fields")
+
+    def __init__(self, name: str) -> None:
+        self.name, self.fields = name, {}
+
+
+class PtrT:
+    """Pointer to ``to``; ``n`` the length of the array a parameter ``T p[N]`` points into."""
+
+    __slots__ = ("to", "n")
+
+    def __init__(self, to, n: int | None = None) -> None:
+        self.to, self.n = to, n
+
+    def __eq__(self, other) -> bool:
+        return isinstance(other, PtrT) and _same(self.to, other.to)
+
+    def __hash__(self) -> int:
+        return 1
+
+
+class ArrT:
+    __slots__ = ("of", "n")
+
+    def __init__(self, of, n: int) -> None:
+        self.of, self.n = of, n
+
+
+class _Void:
+    name = "void"
+
+    def __repr__(self) -> str:
+        return "void"
+
+
+VOID = _Void()
+
+
+def _same(a, b) -> bool:
+    if isinstance(a, CType) and isinstance(b, CType):
+        return a.bits == b.bits and a.signed == b.signed
+    if isinstance(a, PtrT) and isinstance(b, PtrT):
+        return _same(a.to, b.to)
+    if isinstance(a, ArrT) and isinstance(b, ArrT):
+        return _same(a.of, b.of)
+    return a is b
+
+
+def describe(t) -> str:
+    """A type as C spells it, for messages."""
+    if isinstance(t, StructT):
+        return f"struct {t.name}"
+    if isinstance(t, PtrT):
+        return describe(t.to) + " *"
+    if isinstance(t, ArrT):
+        return f"{describe(t.of)}[{t.n}]"
+    return t.name
+
+
+def leaves(path: str, t, spelling: str = "") -> list:
+    """The integers (and pointers) an object of type ``t`` at ``path`` holds:
+    a list of (path, type, spelling)."""
+    if isinstance(t, StructT):
+        return [leaf for name, (ft, sp) in t.fields.items()
+                for leaf in leaves(f"{path}.{name}", ft, sp)]
+    if isinstance(t, ArrT):
+        return [leaf for i in range(t.n) for leaf in leaves(f"{path}[{i}]", t.of, spelling)]
+    return [(path, t, spelling)]
 
 
 class Symbol:
-    """A declared variable: its spelling, C type, and whether it has an initializer."""
+    """A declared object: its spelling, type, whether it has an initializer, and its path
+    (``key``)."""
 
-    __slots__ = ("name", "spelling", "ctype", "initialized", "line", "column")
+    __slots__ = ("name", "spelling", "ctype", "initialized", "line", "column", "key")
 
-    def __init__(self, name, spelling, ctype, initialized, line, column) -> None:
+    def __init__(self, name, spelling, ctype, initialized, line, column, key=None) -> None:
         self.name, self.spelling, self.ctype, self.initialized = name, spelling, ctype, \
             initialized
         self.line, self.column = line, column
+        self.key = name if key is None else key
+
+
+class Function:
+    """A checked function: its FuncDef, parameter symbols, return type."""
+
+    __slots__ = ("name", "node", "params", "ret", "ret_spelling", "prefix", "scope", "calls")
+
+    def __init__(self, node: FuncDef, prefix: str) -> None:
+        self.name, self.node, self.prefix = node.name, node, prefix
+        self.params: list = []
+        self.ret = VOID
+        self.ret_spelling = node.ret_spelling
+        self.calls: set = set()  # names of the functions of the code it calls
 
 
 class Checked:
-    """A typed program: ``symbols`` (name → Symbol, in declaration order) and ``inputs``."""
+    """A typed program: ``symbols`` (path → Symbol of every integer the user can name, in
+    declaration order), ``inputs``, ``functions`` (name → Function), ``entry`` (Function or
+    None)."""
 
-    __slots__ = ("program", "target", "symbols", "inputs")
+    __slots__ = ("program", "target", "symbols", "inputs", "functions", "entry", "objects")
 
-    def __init__(self, program: Program, target: Target, symbols: dict, inputs: list) -> None:
+    def __init__(self, program: Program, target: Target, symbols: dict, inputs: list,
+                 functions: dict | None = None, entry=None, objects: dict | None = None
+                 ) -> None:
         self.program, self.target, self.symbols, self.inputs = program, target, symbols, inputs
+        self.functions, self.entry = functions or {}, entry
+        #: path of every array object -> its length (pointer arithmetic stays inside it)
+        self.objects = objects or {}
 
 
 def _type_of(target: Target, spelling: str, node) -> object:
@@ -55,128 +172,767 @@ def _type_of(target: Target, spelling: str, node) -> object:
                          f"{spelling} does not exist on {target.name}") from None
 
 
+def _flat_name(e) -> str | None:
+    """``a.b->c`` as one dotted name, when ``e`` is a chain of names and fields."""
+    if isinstance(e, Var):
+        return e.name
+    if isinstance(e, Member):
+        base = _flat_name(e.base)
+        return None if base is None else base + ("->" if e.arrow else ".") + e.field
+    return None
+
+
 class _Checker:
-    def __init__(self, target: Target) -> None:
+    def __init__(self, program: Program, target: Target) -> None:
+        self.program = program
         self.target = target
         self.int = target.types["int"]
         self.long = target.types["long"]
-        self.symbols: dict = {}
-        self.assigned: set = set()
-        self.inputs: list = []
+        self.scopes: list = [{}]
+        self.used_keys: set = set()
+        self.function: Function | None = None
+        self.functions: dict = {}
+        self.broken: dict = {}  # function name -> the TraceError its definition raised
+        self.arrays: dict = {}
+
+    # -- names and types
+    def lookup(self, name: str) -> Symbol | None:
+        for scope in reversed(self.scopes):
+            sym = scope.get(name)
+            if sym is not None:
+                return sym
+        return None
+
+    def refused(self, name: str, node) -> None:
+        """Raise the error of a definition outside the subset, at its use."""
+        found = self.program.refused.get(name)
+        if found is not None:
+            err = found[0]
+            raise TraceError(node.line, node.column, f"{name} (at {err.line}:{err.column}) is "
+                             f"outside the subset: {err.reason}")
 
     def symbol(self, var: Var) -> Symbol:
-        sym = self.symbols.get(var.name)
+        sym = self.lookup(var.name)
         if sym is None:
+            self.refused(var.name, var)
             raise TraceError(var.line, var.column, f"{var.name} is not declared (declare it "
                              f"with its type, e.g. 'Uint16 {var.name};')")
         return sym
 
-    def read(self, var: Var) -> None:
-        if var.name not in self.assigned and var.name not in self.inputs:
-            self.inputs.append(var.name)
+    def resolve(self, desc, node) -> object:
+        """A parser type descriptor as a type of this target."""
+        if isinstance(desc, str):
+            return VOID if desc == "void" else _type_of(self.target, desc, node)
+        if isinstance(desc, Ptr):
+            to = self.resolve(desc.to, node)
+            if isinstance(to, PtrT):
+                raise TraceError(node.line, node.column, "pointers to pointers are not "
+                                 "supported")
+            n = None
+            if desc.size is not None:
+                n = constant_value(desc.size, "an array size")
+                if not 1 <= n <= MAX_ELEMENTS:
+                    raise TraceError(desc.size.line, desc.size.column, f"array of {n} "
+                                     f"elements: at most {MAX_ELEMENTS} integers per object")
+            return PtrT(to, n)
+        if isinstance(desc, Arr):
+            if desc.size is None:
+                raise TraceError(node.line, node.column, "an array needs a size or an "
+                                 "initializer")
+            n = constant_value(desc.size, "an array size")
+            of = self.resolve(desc.of, node)
+            if not 1 <= n <= MAX_ELEMENTS or n * max(1, len(leaves("", of))) > MAX_ELEMENTS:
+                raise TraceError(desc.size.line, desc.size.column, f"array of {n} elements: "
+                                 f"at most {MAX_ELEMENTS} integers per object")
+            return ArrT(of, n)
+        return self.struct(desc, node)
 
+    def struct(self, sdef: StructDef, node) -> StructT:
+        st = sdef.resolved.get(self.target.name)
+        if st is not None:
+            return st
+        if sdef.fields is None:
+            raise TraceError(node.line, node.column, f"struct {sdef.name} is declared but its "
+                             "fields are not pasted")
+        st = sdef.resolved[self.target.name] = StructT(sdef.name)
+        for name, desc, spelling in sdef.fields:
+            ft = self.resolve(desc, node)
+            if ft is VOID or ft is st:
+                raise TraceError(sdef.line, sdef.column, f"field {name} of struct {sdef.name} "
+                                 "has an incomplete type")
+            st.fields[name] = (ft, spelling)
+        if len(leaves("", st)) > MAX_ELEMENTS:
+            raise TraceError(sdef.line, sdef.column, f"struct {sdef.name}: at most "
+                             f"{MAX_ELEMENTS} integers per object")
+        return st
+
+    def declare(self, name: str, spelling, ctype, initialized: bool, node) -> Symbol:
+        scope = self.scopes[-1]
+        if name in scope:
+            prev = scope[name]
+            raise TraceError(node.line, node.column, f"{name} is already declared "
+                             f"at {prev.line}:{prev.column}")
+        f = self.function
+        key = name if f is None or not f.prefix else f"{f.prefix}{name}"
+        if f is not None and not f.prefix and (self.lookup_global(name) is not None):
+            key = f"{f.name}:{name}"  # an entry local that hides a global keeps both visible
+        base, n = key, 1
+        while key in self.used_keys:
+            n += 1
+            key = f"{base}#{n}"
+        self.used_keys.add(key)
+        sym = Symbol(name, spelling, ctype, initialized, node.line, node.column, key)
+        scope[name] = sym
+        if isinstance(ctype, ArrT):
+            self.arrays[key] = ctype.n
+        return sym
+
+    def lookup_global(self, name: str):
+        return self.scopes[0].get(name)
+
+    # -- statements
     def statement(self, s) -> None:
         if isinstance(s, Decl):
-            for var, init in s.items:
-                ctype = _type_of(self.target, s.type_name, s)
-                if var.name in self.symbols:
-                    prev = self.symbols[var.name]
-                    raise TraceError(var.line, var.column, f"{var.name} is already declared "
-                                     f"at {prev.line}:{prev.column}")
+            for var, init, desc in s.items:
+                if isinstance(desc, Arr) and desc.size is None and isinstance(init, InitList):
+                    desc = Arr(desc.of, Num(len(init.items), str(len(init.items))))
+                ctype = self.resolve(desc, s if isinstance(desc, str) else var)
                 if init is not None:
-                    self.expr(init)
-                self.symbols[var.name] = Symbol(var.name, s.type_name, ctype, init is not None,
-                                                var.line, var.column)
+                    self.initializer(init, ctype)
+                sym = self.declare(var.name, s.type_name, ctype, init is not None, var)
                 var.ctype = ctype
-                if init is not None:
-                    self.assigned.add(var.name)
+                var.sym = sym
         elif isinstance(s, ExprStmt):
-            self.expr(s.expr)
+            self.expr(s.expr, void_ok=True)
         elif isinstance(s, If):
-            self.expr(s.test)
+            self.scalar(s.test)
             self.statement(s.then)
             if s.other is not None:
                 self.statement(s.other)
+        elif isinstance(s, Loop):
+            self.scopes.append({})
+            if s.init is not None:
+                self.statement(s.init)
+            if s.test is not None:
+                self.scalar(s.test)
+            if s.step is not None:
+                self.expr(s.step, void_ok=True)
+            self.statement(s.body)
+            self.scopes.pop()
+        elif isinstance(s, Return):
+            f = self.function
+            if f.ret is VOID:
+                if s.value is not None:
+                    raise TraceError(s.line, s.column, f"{f.name}() returns void: "
+                                     "'return' takes no value")
+            elif s.value is None:
+                raise TraceError(s.line, s.column, f"{f.name}() must return a value")
+            else:
+                self.scalar(s.value)
+        elif isinstance(s, Switch):
+            self.scalar(s.test)
+            seen: dict = {}
+            for inner in s.body.statements:
+                if isinstance(inner, Label):
+                    k = None if inner.value is None else constant_value(inner.value,
+                                                                        "a case label")
+                    if k in seen:
+                        prev = seen[k]
+                        raise TraceError(inner.line, inner.column, "a case label repeats the "
+                                         f"one at {prev.line}:{prev.column}")
+                    seen[k] = inner
+                    inner.value_int = k
+            self.statement(s.body)
+        elif isinstance(s, Label):
+            if not hasattr(s, "value_int"):
+                raise TraceError(s.line, s.column, "a case label inside a nested statement is "
+                                 "not supported (labels at the top of the switch's block only)")
+        elif isinstance(s, Jump):
+            pass
         else:
+            self.scopes.append({})
             for inner in s.statements:
                 self.statement(inner)
+            self.scopes.pop()
 
-    def expr(self, e) -> object:
+    def initializer(self, init, t) -> None:
+        if isinstance(init, InitList):
+            if isinstance(t, ArrT):
+                items = init.items
+                if len(items) > t.n:
+                    raise TraceError(init.line, init.column, f"{len(items)} initializers for "
+                                     f"an array of {t.n}")
+                for item in items:
+                    self.initializer(item, t.of)
+            elif isinstance(t, StructT):
+                if len(init.items) > len(t.fields):
+                    raise TraceError(init.line, init.column, f"{len(init.items)} initializers "
+                                     f"for struct {t.name} of {len(t.fields)} fields")
+                for item, (ft, _) in zip(init.items, t.fields.values()):
+                    self.initializer(item, ft)
+            elif len(init.items) == 1 and not isinstance(init.items[0], InitList):
+                self.initializer(init.items[0], t)
+                init.ctype = t
+            else:
+                raise TraceError(init.line, init.column, "a braced list initializes an array "
+                                 "or a struct")
+            init.ctype = t
+            return
+        vt = self.expr(init)
+        if isinstance(t, CType):
+            if not isinstance(vt, CType):
+                raise TraceError(init.line, init.column, f"cannot initialize {t.name} with "
+                                 f"{describe(vt)}")
+        elif not _same(t, _decay(vt)):
+            raise TraceError(init.line, init.column, f"cannot initialize {describe(t)} with "
+                             f"{describe(vt)}")
+
+    # -- expressions
+    def expr(self, e, void_ok: bool = False) -> object:
         t = self._expr(e)
         e.ctype = t
+        if t is VOID and not void_ok:
+            raise TraceError(e.line, e.column, f"{e.name}() returns void: it has no value")
+        return t
+
+    def scalar(self, e) -> CType:
+        t = self.expr(e)
+        if not isinstance(t, CType):
+            raise TraceError(e.line, e.column, f"{describe(t)} where an integer is needed "
+                             "(only integers are computed)")
         return t
 
     def _expr(self, e) -> object:
         target = self.target
-        if isinstance(e, Num):
+        kind = type(e)
+        if kind is Num:
+            if not isinstance(e.ctype, list):
+                return e.ctype
             for name in e.ctype:
                 t = target.types[name]
                 if e.value <= t.max:
                     return t
             raise TraceError(e.line, e.column, f"{e.text} is too large for every integer "
                              f"type of its kind ({', '.join(e.ctype)})")
-        if isinstance(e, Var):
+        if kind is Var:
             sym = self.symbol(e)
-            self.read(e)
+            e.sym = sym
             return sym.ctype
-        if isinstance(e, Unary):
-            t = self.expr(e.operand)
+        if kind is Member:
+            flat = _flat_name(e)
+            if flat is not None and self.lookup(flat.split(".")[0].split("->")[0]) is None:
+                sym = self.lookup(flat)
+                if sym is not None:  # a dotted name declared as one variable
+                    e.flat = sym
+                    return sym.ctype
+            bt = self.expr(e.base)
+            if e.arrow:
+                if not isinstance(bt, PtrT):
+                    raise TraceError(e.line, e.column, f"'->' needs a pointer to a struct, "
+                                     f"not {describe(bt)}")
+                bt = bt.to
+            if not isinstance(bt, StructT):
+                name = flat or self.program.source[e.base.start:e.base.end]
+                raise TraceError(e.line, e.column, f"{name} is not declared as a struct "
+                                 f"(declare {flat or 'it'} with its type)" if flat
+                                 else f"'.' needs a struct, not {describe(bt)}")
+            field = bt.fields.get(e.field)
+            if field is None:
+                raise TraceError(e.line, e.column, f"struct {bt.name} has no field {e.field}")
+            return field[0]
+        if kind is Index:
+            bt = self.expr(e.base)
+            self.scalar(e.index)
+            if isinstance(bt, ArrT):
+                return bt.of
+            if isinstance(bt, PtrT):
+                return bt.to
+            raise TraceError(e.line, e.column, f"'[]' needs an array or a pointer, not "
+                             f"{describe(bt)}")
+        if kind is Unary:
+            if e.op == "&":
+                return PtrT(self.expr(e.operand))
+            if e.op == "*":
+                t = self.expr(e.operand)
+                if isinstance(t, (PtrT, ArrT)):
+                    return t.to if isinstance(t, PtrT) else t.of
+                raise TraceError(e.line, e.column, f"'*' needs a pointer, not {describe(t)}")
+            t = self.scalar(e.operand)
             return self.int if e.op == "!" else promote(target, t)
-        if isinstance(e, Binary):
-            lt, rt = self.expr(e.left), self.expr(e.right)
+        if kind is Binary:
+            lt, rt = self.scalar(e.left), self.scalar(e.right)
             if e.op in ("<<", ">>"):
                 e.operand_type = promote(target, lt)
                 return e.operand_type
             e.operand_type = common_type(target, lt, rt)
             return self.int if e.op in ("<", ">", "<=", ">=", "==", "!=") else e.operand_type
-        if isinstance(e, Logical):
-            self.expr(e.left)
-            self.expr(e.right)
+        if kind is Logical:
+            self.scalar(e.left)
+            self.scalar(e.right)
             return self.int
-        if isinstance(e, Cond):
-            self.expr(e.test)
-            return common_type(target, self.expr(e.then), self.expr(e.other))
-        if isinstance(e, Cast):
-            self.expr(e.operand)
+        if kind is Cond:
+            self.scalar(e.test)
+            return common_type(target, self.scalar(e.then), self.scalar(e.other))
+        if kind is Cast:
+            self.scalar(e.operand)
             return _type_of(target, e.type_name, e)
-        if isinstance(e, Assign):
-            sym = self.symbol(e.target)
-            vt = self.expr(e.value)
-            e.target.ctype = sym.ctype
+        if kind is Assign:
+            tt = self.expr(e.target)
+            if not isinstance(tt, CType):
+                if e.op != "=":
+                    raise TraceError(e.line, e.column, f"'{e.op}' on {describe(tt)}")
+                vt = self.expr(e.value)
+                if isinstance(tt, ArrT) or not _same(tt, _decay(vt)):
+                    raise TraceError(e.line, e.column, f"cannot assign {describe(vt)} to "
+                                     f"{describe(tt)}")
+                return tt
+            vt = self.scalar(e.value)
             if e.op != "=":
-                self.read(e.target)
-                e.operand_type = promote(target, sym.ctype) if e.op in ("<<=", ">>=") \
-                    else common_type(target, sym.ctype, vt)
-            self.assigned.add(e.target.name)
-            return sym.ctype
-        if isinstance(e, IncDec):
-            sym = self.symbol(e.target)
-            self.read(e.target)
-            e.target.ctype = sym.ctype
-            e.operand_type = common_type(target, sym.ctype, self.int)
-            self.assigned.add(e.target.name)
-            return sym.ctype
-        if isinstance(e, Call):
+                e.operand_type = promote(target, tt) if e.op in ("<<=", ">>=") \
+                    else common_type(target, tt, vt)
+            return tt
+        if kind is IncDec:
+            tt = self.expr(e.target)
+            if not isinstance(tt, CType):
+                raise TraceError(e.line, e.column, f"'{e.op}' on {describe(tt)} is not "
+                                 "supported")
+            e.operand_type = common_type(target, tt, self.int)
+            return tt
+        if kind is Call:
+            return self.call(e)
+        raise AssertionError(kind.__name__)  # the parser makes no other node
+
+    def call(self, e: Call) -> object:
+        if e.q is not None or e.name in IQ_FUNCTIONS:
+            e.func = None
             for a in e.args:
-                self.expr(a)
+                self.scalar(a)
             return self.long
-        raise AssertionError(type(e).__name__)  # the parser makes no other node
+        f = self.functions.get(e.name)
+        if f is None:
+            self.refused(e.name, e)
+            known = ", ".join(self.program.functions) or "none"
+            raise TraceError(e.line, e.column, f"unknown function {e.name}() (functions of "
+                             f"the code: {known}; IQmath: _IQmpy, _IQNmpy, __IQmpy, _IQsat, "
+                             "__IQsat, _IQabs)")
+        e.func = f
+        if self.function is not None:
+            self.function.calls.add(f.name)
+        if len(e.args) != len(f.params):
+            raise TraceError(e.line, e.column, f"{e.name}() takes {len(f.params)} arguments, "
+                             f"got {len(e.args)}")
+        for a, p in zip(e.args, f.params):
+            at = self.expr(a)
+            pt = p.ctype
+            if isinstance(pt, CType):
+                if not isinstance(at, CType):
+                    raise TraceError(a.line, a.column, f"argument {p.name} of {e.name}() is "
+                                     f"{pt.name}, got {describe(at)}")
+            elif not _same(pt, _decay(at)):
+                raise TraceError(a.line, a.column, f"argument {p.name} of {e.name}() is "
+                                 f"{describe(pt)}, got {describe(at)}")
+        return f.ret
+
+    def signature(self, f: Function, entry: bool) -> None:
+        node = f.node
+        self.function = f
+        self.scopes.append({})
+        for name, desc, spelling, tok in node.params:
+            t = self.resolve(desc, tok)
+            if isinstance(t, StructT) and not entry:
+                raise TraceError(tok.line, tok.column, f"a struct passed by value ({name}) is "
+                                 "supported only for the entry function (pass a pointer)")
+            f.params.append(self.declare(name, spelling, t, True, tok))
+        f.scope = self.scopes.pop()
+        self.function = None
+        f.ret = self.resolve(node.ret, node)
+        if not isinstance(f.ret, CType) and f.ret is not VOID:
+            raise TraceError(node.line, node.column, f"{f.name}() returns {describe(f.ret)}: "
+                             "only integer and void results are supported")
+
+    def body(self, f: Function) -> None:
+        self.function = f
+        self.scopes += [f.scope, {}]
+        for s in f.node.body.statements:
+            self.statement(s)
+        del self.scopes[-2:]
+        self.function = None
 
 
-def check(program: Program, target: Target) -> Checked:
+def _decay(t):
+    return PtrT(t.of) if isinstance(t, ArrT) else t
+
+
+class _Inputs:
+    """Which paths may be read before they are given a value (definite assignment, C99
+    6.2.4 aside: a global without initializer is an input, not zero)."""
+
+    def __init__(self, checker: _Checker, inputable) -> None:
+        self.checker = checker
+        self.inputable = inputable  # path -> bool: a name the user can set
+        self.inputs: list = []
+        self.seen: set = set()
+        self.pointers: dict = {}  # pointer path -> the path it points to
+        self.active: list = []
+        self.visits = 0
+        self.returns: list | None = None
+
+    def tick(self, node) -> None:
+        self.visits += 1
+        if self.visits > MAX_ANALYSIS:
+            raise TraceError(node.line, node.column, f"the calls reach more than {MAX_ANALYSIS} "
+                             "expressions: too large to trace")
+
+    def read(self, path: str, t, assigned) -> None:
+        for leaf, _, _ in leaves(path, t):
+            if assigned is not None and leaf not in assigned and leaf not in self.seen and \
+                    self.inputable(leaf):
+                self.seen.add(leaf)
+                self.inputs.append(leaf)
+
+    @staticmethod
+    def write(path: str, t, assigned) -> None:
+        if assigned is not None:
+            for leaf, _, _ in leaves(path, t):
+                assigned.add(leaf)
+
+    def place(self, e, a) -> str | None:
+        """The path ``e`` designates (``None`` when an index is not constant), evaluating
+        the sub-expressions it reads."""
+        self.tick(e)
+        kind = type(e)
+        if kind is Var:
+            return e.sym.key
+        if kind is Member:
+            if e.flat is not None:
+                return e.flat.key
+            if e.arrow:
+                base = self.pointer(e.base, a)
+            else:
+                base = self.place(e.base, a)
+            return None if base is None else f"{base}.{e.field}"
+        if kind is Index:
+            bt = e.base.ctype
+            base = self.place(e.base, a) if isinstance(bt, ArrT) else self.pointer(e.base, a)
+            self.expr(e.index, a)
+            if base is None:
+                return None
+            try:
+                i = constant_value(e.index, "")
+            except TraceError:
+                return None
+            if base.endswith("]") and not isinstance(bt, ArrT):
+                head, _, k = base[:-1].rpartition("[")
+                return f"{head}[{int(k) + i}]"
+            return f"{base}[{i}]"
+        return self.pointer(e.operand, a)  # *p
+
+    def pointer(self, e, a) -> str | None:
+        """The path a pointer-valued expression points to."""
+        t = e.ctype
+        if isinstance(t, ArrT):
+            base = self.place(e, a)
+            return None if base is None else f"{base}[0]"
+        if isinstance(e, Unary) and e.op == "&":
+            return self.place(e.operand, a)
+        path = self.place(e, a) if isinstance(e, (Var, Member, Index)) or (
+            isinstance(e, Unary) and e.op == "*") else None
+        return self.pointers.get(path) if path is not None else None
+
+    def expr(self, e, a) -> None:
+        self.tick(e)
+        kind = type(e)
+        if kind is Num:
+            return
+        if kind in (Var, Member, Index) or (kind is Unary and e.op == "*"):
+            path = self.place(e, a)
+            if path is not None:
+                self.read(path, e.ctype, a)
+            elif isinstance(e, Index) and isinstance(e.base.ctype, ArrT):
+                base = self.place(e.base, a)
+                if base is not None:  # an element unknown until run time: any of them
+                    self.read(base, e.base.ctype, a)
+            return
+        if kind is Unary:
+            if e.op == "&":
+                self.place(e.operand, a)
+            else:
+                self.expr(e.operand, a)
+        elif kind is Binary:
+            self.expr(e.left, a)
+            self.expr(e.right, a)
+        elif kind is Logical:
+            self.expr(e.left, a)
+            self.expr(e.right, None if a is None else set(a))  # may not run
+        elif kind is Cond:
+            self.expr(e.test, a)
+            x = None if a is None else set(a)
+            y = None if a is None else set(a)
+            self.expr(e.then, x)
+            self.expr(e.other, y)
+            if a is not None:
+                a |= x & y  # what both branches assign
+        elif kind is Cast:
+            self.expr(e.operand, a)
+        elif kind is Assign:
+            if e.op != "=":
+                self.expr(e.target, a)
+            if isinstance(e.ctype, PtrT):
+                path = self.place(e.target, a)
+                self.pointers[path] = self.pointer(e.value, a)
+            else:
+                self.expr(e.value, a)
+            path = self.place(e.target, a)
+            if path is not None:
+                self.write(path, e.ctype, a)
+        elif kind is IncDec:
+            self.expr(e.target, a)
+        elif kind is Call:
+            self.call(e, a)
+        elif kind is InitList:
+            for item in e.items:
+                self.expr(item, a)
+
+    def call(self, e: Call, a) -> None:
+        f = e.func
+        if f is None:
+            for arg in e.args:
+                self.expr(arg, a)
+            return
+        if f.name in self.active:
+            raise TraceError(e.line, e.column, f"{f.name}() calls itself (recursion is not "
+                             "supported)")
+        bound = []
+        for arg, p in zip(e.args, f.params):
+            if isinstance(p.ctype, PtrT):
+                bound.append((p.key, self.pointer(arg, a)))
+            else:
+                self.expr(arg, a)
+        if a is not None:
+            for k in [k for k in a if k.startswith(f.prefix)]:
+                a.discard(k)
+        for p in f.params:
+            self.write(p.key, p.ctype, a)
+        self.pointers.update(bound)
+        self.active.append(f.name)
+        outer = self.returns
+        self.returns = []
+        end = self.block(f.node.body.statements, a)
+        ends = self.returns + [end]
+        self.returns = outer
+        self.active.pop()
+        if a is not None:
+            live = [x for x in ends if x is not None]
+            if live:
+                a.clear()
+                a.update(set.intersection(*live))
+
+    def block(self, statements, a):
+        for s in statements:
+            a = self.statement(s, a)
+        return a
+
+    def statement(self, s, a):
+        """Analyse ``s`` given the definitely assigned set ``a`` (None: unreachable);
+        returns the set after it."""
+        if a is None:
+            return None
+        if isinstance(s, Decl):
+            for var, init, _ in s.items:
+                if init is not None:
+                    if isinstance(var.ctype, PtrT) and not isinstance(init, InitList):
+                        self.pointers[var.sym.key] = self.pointer(init, a)
+                    else:
+                        self.expr(init, a)
+                    self.write(var.sym.key, var.ctype, a)
+            return a
+        if isinstance(s, ExprStmt):
+            self.expr(s.expr, a)
+            return a
+        if isinstance(s, If):
+            self.expr(s.test, a)
+            x = self.statement(s.then, set(a))
+            y = self.statement(s.other, set(a)) if s.other is not None else a
+            if x is None:
+                return y
+            if y is None:
+                return x
+            return x & y
+        if isinstance(s, Loop):
+            if s.init is not None:
+                a = self.statement(s.init, a)
+            if s.kind == "do":
+                a = self.statement(s.body, a) or a
+                self.expr(s.test, a)
+                return a
+            if s.test is not None:
+                self.expr(s.test, a)
+            inner = self.statement(s.body, set(a))
+            if s.step is not None and inner is not None:
+                self.expr(s.step, inner)
+            if s.test is None:  # for (;;): leaves only by break or return
+                return inner if inner is not None else a
+            return a
+        if isinstance(s, Return):
+            if s.value is not None:
+                self.expr(s.value, a)
+            if self.returns is not None:
+                self.returns.append(a)
+            return None
+        if isinstance(s, Jump) or isinstance(s, Label):
+            return a
+        if isinstance(s, Switch):
+            self.expr(s.test, a)
+            self.statement(s.body, set(a))  # no case may match: nothing is certain after it
+            return a
+        return self.block(s.statements, a)
+
+
+def check(program: Program, target: Target, entry: str | None = None) -> Checked:
     """Type every node of ``program`` for ``target``; find declared symbols and inputs.
+
+    Parameters
+    ----------
+    program : Program
+    target : Target
+    entry : str, optional
+        The function to run (its parameters and the objects they point to become inputs).
+        Without it the statements outside functions run.
 
     Raises
     ------
     TraceError
         An undeclared or twice-declared name, a type the target lacks, a constant
-        too large, an annotation naming no variable.
+        too large, an annotation naming no variable, a call the subset cannot make.
+    InputError
+        ``entry`` names no function of the code (field ``entry``).
     """
-    c = _Checker(target)
+    c = _Checker(program, target)
+    if entry in program.refused or (entry is None and program.refused):
+        # without an entry every statement runs: the first one outside the subset is the error
+        raise program.refused[entry][0] if entry is not None else \
+            next(iter(program.refused.values()))[0]
+    if entry is not None and entry not in program.functions:
+        known = ", ".join(program.functions) or "none"
+        raise InputError("entry", f"no function {entry} in the code (functions: {known})")
+    if entry is None and program.functions and not any(
+            not isinstance(s, Decl) for s in program.statements if not isinstance(s, Block)):
+        raise InputError("entry", "choose the function to run (functions: "
+                         f"{', '.join(program.functions)})")
     for s in program.statements:
         c.statement(s)
+    for name, node in program.functions.items():
+        c.functions[name] = Function(node, "" if name == entry else f"{name}:")
+    for f in c.functions.values():
+        try:
+            c.signature(f, f.name == entry)
+        except TraceError as err:
+            if f.name == entry:
+                raise
+            c.broken[f.name] = err
+    for f in c.functions.values():
+        if f.name in c.broken:
+            continue
+        try:
+            c.body(f)
+        except TraceError as err:
+            # A function the entry never calls may use what the subset lacks.
+            if f.name == entry or entry is None:
+                raise
+            c.broken[f.name] = err
+            c.scopes[1:] = []
+            c.function = None
+    for name, err in c.broken.items():
+        program.refused[name] = (err, True)
+        del c.functions[name]
+    calls = set(c.functions[entry].calls) if entry is not None else set()
+    seen: set = set()
+    while calls - seen:  # a broken function the entry reaches is an error at its call
+        name = (calls - seen).pop()
+        seen.add(name)
+        if name in program.refused and program.refused[name][1]:
+            err = program.refused[name][0]
+            raise TraceError(err.line, err.column, f"{name} (called from {entry}) is outside "
+                             f"the subset: {err.reason}")
+        if name in c.functions:
+            calls |= c.functions[name].calls
+    # User-facing integers: globals and, for an entry, its parameters, the objects its
+    # pointer parameters point to (p.FIELD, *out) and its locals.
+    symbols: dict = {}
+    settable: set = set()
+
+    def add(sym_key, t, spelling, line, column, initialized, can_set):
+        for path, lt, sp in leaves(sym_key, t, spelling):
+            if isinstance(lt, CType):
+                symbols[path] = Symbol(path, sp, lt, initialized, line, column)
+                if can_set:
+                    settable.add(path)
+
+    for sym in c.scopes[0].values():
+        add(sym.key, sym.ctype, sym.spelling, sym.line, sym.column, sym.initialized,
+            not sym.initialized)
+    f = c.functions.get(entry) if entry is not None else None
+    objects = dict(c.arrays)
+    if f is not None:
+        for p in f.params:
+            if isinstance(p.ctype, PtrT):
+                path, t, _ = pointee(p)
+                add(path, t, p.spelling, p.line, p.column, False, True)
+                if isinstance(t, ArrT):
+                    objects[path] = t.n
+            else:
+                add(p.key, p.ctype, p.spelling, p.line, p.column, False, True)
+        for sym in _entry_locals(f.node.body):
+            add(sym.key, sym.ctype, sym.spelling, sym.line, sym.column, True, False)
     for note in program.notes.values():
-        if note.name not in c.symbols:
+        if note.name not in symbols:
             raise TraceError(note.line, note.column, f"the annotation names {note.name}, "
                              "which is not declared")
-    return Checked(program, target, c.symbols, c.inputs)
+    analysis = _Inputs(c, settable.__contains__)
+    assigned: set = set()
+    analysis.block(program.statements, assigned)
+    if f is not None:
+        for p in f.params:  # every integer parameter is an input, in order
+            if isinstance(p.ctype, PtrT):
+                analysis.pointers[p.key] = pointee(p)[2]
+            elif isinstance(p.ctype, CType):
+                analysis.read(p.key, p.ctype, set())
+                assigned.add(p.key)
+        analysis.active.append(f.name)
+        analysis.returns = []
+        analysis.block(f.node.body.statements, assigned)
+    return Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
+
+
+def pointee(p: Symbol) -> tuple:
+    """The object an entry function's pointer parameter points to: (its path, its type, the
+    pointer's value) — ``p`` for a struct, ``*p`` for an integer, ``p[0]…`` for ``T p[N]``."""
+    t = p.ctype
+    if t.n is not None:
+        return p.name, ArrT(t.to, t.n), f"{p.name}[0]"
+    path = p.name if isinstance(t.to, StructT) else f"*{p.name}"
+    return path, t.to, path
+
+
+def _entry_locals(body) -> list:
+    out = []
+
+    def walk(s):
+        if isinstance(s, Decl):
+            out.extend(var.sym for var, _, _ in s.items)
+        elif isinstance(s, If):
+            walk(s.then)
+            if s.other is not None:
+                walk(s.other)
+        elif isinstance(s, Loop):
+            if s.init is not None:
+                walk(s.init)
+            walk(s.body)
+        elif isinstance(s, Switch):
+            walk(s.body)
+        elif isinstance(s, Block):
+            for inner in s.statements:
+                walk(inner)
+
+    walk(body)
+    return out

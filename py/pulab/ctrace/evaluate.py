@@ -36,13 +36,19 @@ Examples
 
 from __future__ import annotations
 
-from ..fixedpoint.cint import CInt, trunc_div, wrap_to
-from .check import Checked
+from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
+from .check import ArrT, Checked, PtrT, StructT, VOID, leaves, pointee
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
-                     Logical, Num, Unary, Var)
+                     Index, InitList, Jump, Label, Logical, Loop, Member, Num, Return, Switch,
+                     Unary, Var)
 
-__all__ = ["Evaluator", "hex_of", "FLAGS"]
+__all__ = ["Evaluator", "hex_of", "FLAGS", "MAX_STEPS", "MAX_CALL_DEPTH"]
+
+#: Statements executed in one run (loops included); more is an error at the statement.
+MAX_STEPS = 10_000
+#: Calls nested deeper are refused (recursion is refused anyway).
+MAX_CALL_DEPTH = 32
 
 #: Every flag a step can carry, in the order the page lists them.
 FLAGS = ("signed_overflow", "unsigned_wrap", "conversion", "truncation", "shift_count",
@@ -65,6 +71,41 @@ def _overflow(t) -> str:
     return "signed_overflow" if t.signed else "unsigned_wrap"
 
 
+def _rounding(op: str, a: int, b: int, result: int, flags: list) -> dict:
+    """For a result that lost bits: how it rounded (``>>`` toward −∞, ``/`` toward zero,
+    C99 6.5.5p6) and by how much, ``lost`` = exact − result in units of the result's LSB
+    (``[0, 1)`` for floor; ``(−1, 1)`` toward zero, its sign opposite to the exact value's)."""
+    if "truncation" not in flags:
+        return {}
+    if op == ">>":
+        return {"rounding": "floor", "lost": (a - (result << b)) / float(1 << b)}
+    return {"rounding": "toward_zero", "lost": (a - result * b) / b}
+
+
+def _spelling(target) -> str:
+    """How the code spells the type of the object ``target`` designates."""
+    if isinstance(target, Var):
+        return target.sym.spelling
+    if isinstance(target, Member):
+        if target.flat is not None:
+            return target.flat.spelling
+        st = target.base.ctype.to if target.arrow else target.base.ctype
+        return st.fields[target.field][1]
+    if isinstance(target, Index):
+        return _spelling(target.base)
+    return target.ctype.name
+
+
+class _Return(Exception):
+    def __init__(self, value) -> None:
+        self.value = value
+
+
+class _Jump(Exception):
+    def __init__(self, kind: str) -> None:
+        self.kind = kind
+
+
 class Evaluator:
     """Runs a :class:`~pulab.ctrace.check.Checked` program once.
 
@@ -72,7 +113,7 @@ class Evaluator:
     ----------
     checked : Checked
     inputs : dict
-        Variable name → integer, already range-checked against its type.
+        Path (``v``, ``p.hKpGain``, ``*out``) → integer, already range-checked.
     global_q : int in 1..30
         The Q of ``_IQmpy``.
     record : bool
@@ -83,12 +124,19 @@ class Evaluator:
                  ) -> None:
         self.checked = checked
         self.source = checked.program.source
-        self.values: dict = {name: None for name in checked.symbols}
+        self.mem: dict = {}
+        self.written: set = set()
+        self.values: dict = {}
         self.inputs = inputs
+        self.unset = [n for n in checked.inputs if n not in inputs]
         self.global_q = global_q
         self.record = record
         self.terms: list = []
         self.steps: list = []
+        self.active: list = []
+        self.loops: list = []
+        self.count = 0
+        self.last_path: str | None = None
         #: Undefined behaviour (ISO C) met: signed_overflow, division_overflow, shift_count.
         self.undefined: set = set()
         self.int = checked.target.types["int"]
@@ -102,7 +150,7 @@ class Evaluator:
             t = node.ctype
             d = {"expr": self.source[node.start:node.end], "line": node.line,
                  "column": node.column, "type": t.name, "value": value,
-                 "hex": hex_of(value, t.bits), "flags": flags}
+                 "hex": hex_of(value, t.bits) if value is not None else None, "flags": flags}
             d.update(extra)
             self.terms.append(d)
 
@@ -111,46 +159,116 @@ class Evaluator:
             flags = sorted({f for t in self.terms for f in t["flags"]} |
                            set(extra.pop("flags", ())), key=FLAGS.index)
             d = {"line": stmt.line, "column": stmt.column, "code": code, "var": var,
-                 "type": ctype.name, "value": value, "hex": hex_of(value, ctype.bits),
+                 "type": ctype.name, "value": value,
+                 "hex": hex_of(value, ctype.bits) if value is not None else None,
                  "flags": flags, "terms": self.terms}
             d.update(extra)
             self.steps.append(d)
         self.terms = []
 
+    # -- memory
+    def read(self, path: str, node) -> int:
+        v = self.mem.get(path)
+        if v is None:
+            if path in self.unset:
+                raise TraceError(node.line, node.column, f"{path} is read before it has a "
+                                 f"value (unset inputs: {', '.join(self.unset)}; give each "
+                                 "a value, or use zero-unset)", field=f"set.{path}")
+            if self.checked.entry is None:
+                raise TraceError(node.line, node.column, f"{path} is read before it has a value"
+                                 " (give it an input value or an initializer)",
+                                 field=f"set.{path}")
+            raise TraceError(node.line, node.column, f"{path} is read before it has a value "
+                             "(it has no initializer)")
+        return v
+
+    def put(self, path: str, value) -> None:
+        self.mem[path] = value
+        self.written.add(path)
+
     # -- statements
     def run(self) -> list:
-        """Execute every statement; returns the steps (empty when not recording)."""
+        """Execute the code (the entry function when there is one); returns the steps
+        (empty when not recording)."""
         for s in self.checked.program.statements:
             self.statement(s)
+        f = self.checked.entry
+        if f is not None:
+            self.written = set()  # what the function writes, not the globals' initializers
+            inputs = self.inputs
+            for p in f.params:
+                if isinstance(p.ctype, PtrT):
+                    obj, t, value = pointee(p)
+                    self.mem[p.key] = value
+                    given = leaves(obj, t, p.spelling)
+                else:
+                    given = leaves(p.key, p.ctype, p.spelling)
+                for path, t, spelling in given:
+                    if path in inputs:
+                        self.mem[path] = inputs[path]
+                        self.step(p, f"{spelling} {path}", path, inputs[path], t,
+                                  spelling=spelling, input=True)
+            self.active.append(f.name)
+            try:
+                self.block(f.node.body.statements)
+                if f.ret is not VOID:
+                    raise TraceError(f.node.close_line, f.node.close_column,
+                                     f"{f.name}() ends without 'return'")
+            except _Return as r:
+                self.values["return"] = r.value
+            self.active.pop()
+        for name in self.checked.symbols:
+            self.values[name] = self.mem.get(name)
         return self.steps
 
+    def block(self, statements) -> None:
+        for s in statements:
+            self.statement(s)
+
     def statement(self, s) -> None:
+        self.count += 1
+        if self.count > MAX_STEPS:
+            self.too_long(s)
         src = self.source
-        if isinstance(s, Decl):
+        kind = type(s)
+        if kind is Decl:
             code = src[s.start:s.end]
-            for var, init in s.items:
-                sym = self.checked.symbols[var.name]
+            for var, init, _ in s.items:
+                sym = var.sym
+                t, key = sym.ctype, sym.key
                 if init is None:
-                    if var.name in self.inputs:
-                        v = self.inputs[var.name]
-                        self.values[var.name] = v
-                        self.step(s, code, var.name, v, sym.ctype, spelling=sym.spelling,
-                                  input=True)
+                    for path, lt, spelling in leaves(key, t, sym.spelling):
+                        if path in self.inputs:
+                            v = self.inputs[path]
+                            self.mem[path] = v
+                            self.step(s, code, path, v, lt, spelling=spelling, input=True)
+                        elif self.active:
+                            self.mem.pop(path, None)  # a local declared again has no value
                     continue
-                v = self.eval(init)
-                stored, flags = self.store(v, sym.ctype)
-                self.values[var.name] = stored
-                self.step(s, code, var.name, stored, sym.ctype, spelling=sym.spelling,
-                          flags=flags)
-        elif isinstance(s, ExprStmt):
+                if isinstance(t, (StructT, ArrT)):
+                    self.aggregate(key, t, init)
+                    self.terms = []
+                    continue
+                if isinstance(t, PtrT):
+                    self.mem[key] = self.eval(init)
+                    self.terms = []
+                    continue
+                stored, flags = self.store(self.eval(init), t)
+                self.put(key, stored)
+                self.step(s, code, key, stored, t, spelling=sym.spelling, flags=flags)
+        elif kind is ExprStmt:
             e = s.expr
+            self.last_path = None
             v = self.eval(e)
-            var = e.target.name if isinstance(e, (Assign, IncDec)) else None
-            extra = {"spelling": self.checked.symbols[var].spelling} if var else {}
+            var = self.last_path if isinstance(e, (Assign, IncDec)) else None
+            if not isinstance(e.ctype, CType):  # a call of a void function, a struct copy
+                self.step(s, src[s.start:s.end], None, None, VOID)
+                return
+            extra = {"spelling": _spelling(e.target)} if var else {}
             if var and isinstance(e, IncDec) and not e.prefix:
-                v = self.values[var]  # the statement's result is the variable, not x++'s value
+                v = self.mem[var]  # the statement's result is the variable, not x++'s value
             self.step(s, src[s.start:s.end], var, v, e.ctype, **extra)
-        elif isinstance(s, If):
+        elif kind is If:
             v = self.eval(s.test)
             taken = v != 0
             self.step(s, f"if ({src[s.test.start:s.test.end]})", None, int(taken), self.int,
@@ -159,28 +277,183 @@ class Evaluator:
                 self.statement(s.then)
             elif s.other is not None:
                 self.statement(s.other)
-        elif isinstance(s, Block):
+        elif kind is Block:
             for inner in s.statements:
                 self.statement(inner)
+        elif kind is Loop:
+            self.loop(s)
+        elif kind is Switch:
+            self.switch(s)
+        elif kind is Label:
+            pass
+        elif kind is Return:
+            f = self.checked.functions[self.active[-1]]
+            if s.value is None:
+                self.step(s, src[s.start:s.end], None, None, VOID)
+                raise _Return(None)
+            stored, flags = self.store(self.eval(s.value), f.ret)
+            self.step(s, src[s.start:s.end], "return", stored, f.ret, flags=flags)
+            raise _Return(stored)
+        else:
+            raise _Jump(s.kind)
+
+    def switch(self, s: Switch) -> None:
+        """Jump to the matching label (the case constants convert to the promoted type of the
+        test, C99 6.8.4.2p5), run on until ``break`` or the end."""
+        t = s.test.ctype
+        v = self.eval(s.test)
+        body = s.body.statements
+        start, default = None, None
+        for i, inner in enumerate(body):
+            if type(inner) is Label:
+                if inner.value_int is None:
+                    default = i
+                elif convert(inner.value_int, t) == v:
+                    start = i
+                    break
+        if start is None:
+            start = default
+        taken = "none" if start is None else ("default" if start == default else f"case {v}")
+        self.step(s, f"switch ({self.source[s.test.start:s.test.end]})", None, v, t,
+                  branch=taken)
+        if start is None:
+            return
+        try:
+            for inner in body[start:]:
+                self.statement(inner)
+        except _Jump as j:
+            if j.kind != "break":
+                raise
+
+    def too_long(self, s) -> None:
+        at = self.loops[-1] if self.loops else s  # the loop that runs on, when there is one
+        raise TraceError(at.line, at.column, f"more than {MAX_STEPS} statements executed "
+                         "(a loop that does not end?)")
+
+    def loop(self, s: Loop) -> None:
+        self.loops.append(s)
+        try:
+            self.iterate(s)
+        finally:
+            self.loops.pop()
+
+    def iterate(self, s: Loop) -> None:
+        src = self.source
+        if s.init is not None:
+            self.statement(s.init)
+        head = f"{s.kind} ({src[s.test.start:s.test.end]})" if s.test is not None else \
+            f"{s.kind} (;;)"
+        first = s.kind == "do"
+        while True:
+            if not first:
+                self.count += 1
+                if self.count > MAX_STEPS:
+                    self.too_long(s)
+                if s.test is not None:
+                    taken = self.eval(s.test) != 0
+                    self.step(s, head, None, int(taken), self.int,
+                              branch="loop" if taken else "exit")
+                    if not taken:
+                        return
+            first = False
+            try:
+                self.statement(s.body)
+            except _Jump as j:
+                if j.kind == "break":
+                    return
+            if s.step is not None:
+                self.last_path = None
+                v = self.eval(s.step)
+                if isinstance(s.step, IncDec) and not s.step.prefix:
+                    v = self.mem[self.last_path]  # the variable's new value, as for i++;
+                self.step(s.step, src[s.step.start:s.step.end], self.last_path, v,
+                          s.step.ctype)
+
+    def aggregate(self, path: str, t, init) -> None:
+        """Initialize a struct or array: a braced list (the rest is zero, C99 6.7.8p21) or a
+        struct value."""
+        if not isinstance(init, InitList):
+            if isinstance(t, CType):
+                stored, flags = self.store(self.eval(init), t)
+                self.put(path, stored)
+            elif isinstance(t, PtrT):
+                self.mem[path] = self.eval(init)
+            else:
+                self.copy(path, self.eval(init), t)
+            return
+        if isinstance(t, ArrT):
+            parts = [(f"{path}[{i}]", t.of) for i in range(t.n)]
+        elif isinstance(t, StructT):
+            parts = [(f"{path}.{name}", ft) for name, (ft, _) in t.fields.items()]
+        else:
+            parts = [(path, t)]
+        for i, (p, pt) in enumerate(parts):
+            if i < len(init.items):
+                self.aggregate(p, pt, init.items[i])
+            else:
+                for leaf, lt, _ in leaves(p, pt):
+                    self.put(leaf, 0 if isinstance(lt, CType) else None)
+
+    def copy(self, dst: str, src: str, t) -> None:
+        n = len(src)
+        for leaf, _, _ in leaves(src, t):
+            self.put(dst + leaf[n:], self.mem.get(leaf))
 
     @staticmethod
     def store(value: int, ctype) -> tuple:
         """Convert to ``ctype`` as an assignment does; flag a changed value."""
-        w = wrap_to(value, ctype)
+        w = convert(value, ctype)
         return w, (["conversion"] if w != value else [])
 
+    # -- places (lvalues): the path of the object an expression designates
+    def place(self, e) -> str:
+        kind = type(e)
+        if kind is Var:
+            return e.sym.key
+        if kind is Member:
+            if e.flat is not None:
+                return e.flat.key
+            base = self.eval(e.base) if e.arrow else self.place(e.base)
+            if base is None:
+                raise TraceError(e.line, e.column, "a pointer without a value")
+            return f"{base}.{e.field}"
+        if kind is Index:
+            i = self.eval(e.index)
+            bt = e.base.ctype
+            if isinstance(bt, ArrT):
+                if not 0 <= i < bt.n:
+                    raise TraceError(e.index.line, e.index.column, f"index {i} is outside "
+                                     f"0..{bt.n - 1}")
+                return f"{self.place(e.base)}[{i}]"
+            return self.offset(self.eval(e.base), i, e)
+        ptr = self.eval(e.operand)  # *p
+        return ptr
+
+    def offset(self, ptr: str, i: int, node) -> str:
+        """``ptr + i`` inside the array ``ptr`` points into."""
+        if i == 0:
+            return ptr
+        head, bracket, k = ptr[:-1].rpartition("[")
+        n = self.checked.objects.get(head) if bracket and ptr.endswith("]") else None
+        if n is None:
+            raise TraceError(node.line, node.column, f"{ptr} is one object, not an element of "
+                             "an array: only index 0 exists")
+        j = int(k) + i
+        if not 0 <= j < n:
+            raise TraceError(node.line, node.column, f"index {j} is outside {head}[0..{n - 1}]")
+        return f"{head}[{j}]"
+
     # -- expressions
-    def eval(self, e) -> int:
+    def eval(self, e):
         kind = type(e)
         if kind is Num:
             return e.value
-        if kind is Var:
-            v = self.values[e.name]
-            if v is None:
-                raise TraceError(e.line, e.column, f"{e.name} is read before it has a value "
-                                 "(give it an input value or an initializer)",
-                                 field=f"set.{e.name}")
-            return v
+        if kind is Var or kind is Member or kind is Index:
+            t = e.ctype
+            path = self.place(e)
+            if type(t) is CType or isinstance(t, PtrT):
+                return self.read(path, e)
+            return f"{path}[0]" if isinstance(t, ArrT) else path
         if kind is Binary:
             return self.binary(e)
         if kind is Assign:
@@ -191,6 +464,11 @@ class Evaluator:
             self.term(e, w, flags)
             return w
         if kind is Unary:
+            if e.op == "&":
+                return self.place(e.operand)
+            if e.op == "*":
+                path = self.place(e)
+                return self.read(path, e) if isinstance(e.ctype, (CType, PtrT)) else path
             return self.unary(e)
         if kind is Logical:
             a = self.eval(e.left) != 0
@@ -205,6 +483,8 @@ class Evaluator:
             return w
         if kind is IncDec:
             return self.incdec(e)
+        if e.func is not None:
+            return self.call_user(e)
         return self.call(e)
 
     def arith(self, op: str, a: int, b: int, t, node) -> tuple:
@@ -268,7 +548,7 @@ class Evaluator:
             else:
                 v, flags = self.arith(op, a, b, t, e.right)
                 flags = pre + flags
-        self.term(e, v, flags)
+        self.term(e, v, flags, **_rounding(op, a, b, v, flags))
         return v
 
     def unary(self, e: Unary) -> int:
@@ -288,14 +568,22 @@ class Evaluator:
         self.term(e, v, flags)
         return v
 
-    def assign(self, e: Assign) -> int:
-        name = e.target.name
+    def assign(self, e: Assign):
         t = e.target.ctype
+        path = self.place(e.target)
+        if not isinstance(t, CType):
+            value = self.eval(e.value)
+            if isinstance(t, PtrT):
+                self.mem[path] = value
+            else:
+                self.copy(path, value, t)
+            self.last_path = None
+            return value
         if e.op == "=":
             stored, flags = self.store(self.eval(e.value), t)
         else:
             b = self.eval(e.value)
-            old = self.eval(e.target)
+            old = self.read(path, e.target)
             ot = e.operand_type
             op = e.op[:-1]
             if op in ("<<", ">>"):
@@ -307,23 +595,71 @@ class Evaluator:
                 flags += more
             stored, more = self.store(v, t)
             flags += [f for f in more if f not in flags]
-        self.values[name] = stored
-        self.term(e, stored, flags, var=name)
+            extra = _rounding(op, a if op not in ("<<", ">>") else old, b, v, flags)
+        self.put(path, stored)
+        self.last_path = path
+        self.term(e, stored, flags, var=path, **(extra if e.op != "=" else {}))
         return stored
 
     def incdec(self, e: IncDec) -> int:
-        name = e.target.name
-        old = self.eval(e.target)
+        path = self.place(e.target)
+        old = self.read(path, e.target)
         ot = e.operand_type
         flags: list = []
         v, more = self.arith("+" if e.op == "++" else "-", self.convert(old, ot, flags), 1, ot,
                              e)
         stored, conv = self.store(v, e.ctype)
         flags += more + conv
-        self.values[name] = stored
+        self.put(path, stored)
+        self.last_path = path
         result = stored if e.prefix else old
-        self.term(e, result, flags, var=name)
+        self.term(e, result, flags, var=path)
         return result
+
+    def call_user(self, e: Call):
+        """A call of a function of the code: its statements become the call term's ``steps``."""
+        f = e.func
+        if f.name in self.active:
+            raise TraceError(e.line, e.column, f"{f.name}() calls itself (recursion is not "
+                             "supported)")
+        if len(self.active) >= MAX_CALL_DEPTH:
+            raise TraceError(e.line, e.column, f"calls nested more than {MAX_CALL_DEPTH} deep")
+        flags: list = []
+        args = []
+        for a, p in zip(e.args, f.params):
+            v = self.eval(a)
+            if isinstance(p.ctype, CType):
+                w, conv = self.store(v, p.ctype)
+                if conv and "conversion" not in flags:
+                    flags.append("conversion")
+                v = w
+            args.append(v)
+        mem = self.mem
+        for k in [k for k in mem if k.startswith(f.prefix)]:
+            del mem[k]  # a fresh frame: the callee's locals have no value yet
+        for p, v in zip(f.params, args):
+            mem[p.key] = v
+        outer_terms, outer_steps, outer_path = self.terms, self.steps, self.last_path
+        self.terms, self.steps = [], []
+        self.active.append(f.name)
+        value = None
+        try:
+            self.block(f.node.body.statements)
+            if f.ret is not VOID:
+                raise TraceError(f.node.close_line, f.node.close_column,
+                                 f"{f.name}() ends without 'return'")
+        except _Return as r:
+            value = r.value
+        self.active.pop()
+        inner = self.steps
+        self.terms, self.steps, self.last_path = outer_terms, outer_steps, outer_path
+        if self.record:
+            t = e.ctype
+            self.terms.append({"expr": self.source[e.start:e.end], "line": e.line,
+                               "column": e.column, "type": t.name, "value": value,
+                               "hex": hex_of(value, t.bits) if value is not None else None,
+                               "flags": flags, "call": f.name, "steps": inner})
+        return value
 
     def call(self, e: Call) -> int:
         long_t = self.long
@@ -334,6 +670,11 @@ class Evaluator:
             v = hi if x > hi else lo if x < lo else x
             if v != x:
                 flags.append("saturate")
+        elif e.name == "_IQabs":  # labs(): |LONG_MIN| does not fit, shown as the wrap
+            v = wrap_to(abs(args[0]), long_t)
+            if v != abs(args[0]):
+                flags.append("signed_overflow")
+                self.undefined.add("signed_overflow")
         else:
             q = self.global_q if e.q is None else e.q
             product = args[0] * args[1]  # exact: the 64-bit product of two longs
@@ -342,6 +683,6 @@ class Evaluator:
                 flags.append("truncation")
             v, conv = self.store(shifted, long_t)
             flags += conv
-        self.term(e, v, flags, **({"q": self.global_q if e.q is None else e.q}
-                                  if e.name.endswith("mpy") else {}))
+            extra = {"q": q, **_rounding(">>", product, q, shifted, flags)}
+        self.term(e, v, flags, **(extra if e.name.endswith("mpy") else {}))
         return v

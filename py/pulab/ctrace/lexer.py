@@ -21,8 +21,8 @@ from .errors import TraceError
 
 __all__ = ["Token", "tokenize", "MAX_SOURCE_CHARS"]
 
-#: Longer pastes are refused (the page keeps the code in the URL).
-MAX_SOURCE_CHARS = 100_000
+#: Longer pastes are refused (a whole generated controller, header and source, fits).
+MAX_SOURCE_CHARS = 300_000
 
 _OPERATORS = sorted("""<<= >>= ... -> ++ -- << >> <= >= == != && || += -= *= /= %= &= ^= |=
     + - * / % & | ^ ~ ! < > = ? : ; , ( ) { } [ ] .""".split(), key=len, reverse=True)
@@ -32,7 +32,8 @@ _TOKEN = re.compile(r"""(?:
     (?P<name>[A-Za-z_][A-Za-z_0-9]*)
   | (?P<space>(?:[ \t\r\f\v]|\\\r?\n)+)
   | (?P<number>(?:0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)(?:\.[0-9]*)?(?:[eE][+-]?[0-9]+)?[A-Za-z_0-9]*)
-  | (?P<directive>\#(?:\\\r?\n|[^\n])*)
+  | (?P<directive>\#(?:\\\r?\n|/\*.*?\*/|//(?:\\\r?\n|[^\n])*|[^\n/]|/(?![*/]))*)
+  | (?P<string>"(?:\\.|[^"\\\n])*"|'(?:\\.|[^'\\\n])*')
   | (?P<annotation>//[ \t]*@q\b[^\n]*)
   | (?P<comment>//(?:\\\r?\n|[^\n])*|/\*.*?\*/)
   | (?P<unclosed>/\*)

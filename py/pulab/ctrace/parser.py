@@ -30,14 +30,16 @@ from __future__ import annotations
 
 import re
 
+from ..fixedpoint.cint import trunc_div
 from .errors import TraceError
 from .lexer import Token, tokenize
 from .preprocess import preprocess
 from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
-           "Cast", "Assign", "IncDec", "Call", "Decl", "ExprStmt", "If", "Block",
-           "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
+           "Cast", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
+           "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr", "Arr",
+           "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
 #: expression trees taller than MAX_HEIGHT (recursion guards: pasted garbage must not crash).
@@ -49,12 +51,22 @@ ALL_TYPE_NAMES = frozenset(n for t in TARGETS.values() for n in t.types)
 _QUALIFIERS = frozenset({"const", "static", "volatile", "register", "extern", "auto", "inline",
                          "__inline", "__inline__"})
 _FLOATING = frozenset({"float", "double"})
-_UNSUPPORTED = frozenset({"for", "while", "do", "switch", "case", "return", "goto", "break",
-                          "continue", "struct", "union", "enum", "sizeof",
-                          "float", "double", "void", "default"})
+_UNSUPPORTED = frozenset({"goto", "sizeof", "float", "double"})
+#: Words that begin a struct, union or enum type.
+_TAGS = frozenset({"struct", "union", "enum"})
+#: Compiler attributes and storage words that change no integer result (skipped, with a
+#: parenthesized argument list when one follows).
+_ATTRIBUTES = frozenset({"__attribute__", "__declspec", "__STATIC_INLINE", "__STATIC_FORCEINLINE",
+                         "__INLINE", "__forceinline", "_inline", "__always_inline",
+                         "__ramfunc", "RAMFUNC", "__weak", "__WEAK", "__interrupt",
+                         "RESTRICT", "restrict", "__restrict", "__restrict__"})
+_CONST_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
+              "/": trunc_div, "%": lambda a, b: a - b * trunc_div(a, b),
+              "<<": int.__lshift__, ">>": int.__rshift__, "&": int.__and__, "|": int.__or__,
+              "^": int.__xor__}
 _IQ_N = re.compile(r"_IQ([1-9]|[12][0-9]|30)mpy")
 #: The IQmath calls understood, with their argument counts.
-IQ_FUNCTIONS = {"_IQmpy": 2, "__IQmpy": 3, "_IQsat": 3, "__IQsat": 3}
+IQ_FUNCTIONS = {"_IQmpy": 2, "__IQmpy": 3, "_IQsat": 3, "__IQsat": 3, "_IQabs": 1}
 
 _PRECEDENCE = {op: level for level, ops in enumerate(
     [("||",), ("&&",), ("|",), ("^",), ("&",), ("==", "!="), ("<", ">", "<=", ">="),
@@ -85,10 +97,10 @@ class Num(Node):
 
 
 class Var(Node):
-    __slots__ = ("name",)
+    __slots__ = ("name", "sym")
 
     def __init__(self, name: str) -> None:
-        self.name = name
+        self.name, self.sym = name, None  # sym: the checker's Symbol
 
 
 class Unary(Node):
@@ -141,10 +153,63 @@ class IncDec(Node):
 
 
 class Call(Node):
-    __slots__ = ("name", "args", "q")
+    __slots__ = ("name", "args", "q", "func")
 
     def __init__(self, name: str, args: list, q: int | None) -> None:
-        self.name, self.args, self.q = name, args, q
+        self.name, self.args, self.q, self.func = name, args, q, None
+
+
+class Member(Node):
+    """``base.field`` or ``base->field`` (``arrow``)."""
+
+    __slots__ = ("base", "field", "arrow", "flat")
+
+    def __init__(self, base: Node, field: str, arrow: bool) -> None:
+        self.base, self.field, self.arrow, self.flat = base, field, arrow, None
+
+
+class Index(Node):
+    __slots__ = ("base", "index")
+
+    def __init__(self, base: Node, index: Node) -> None:
+        self.base, self.index = base, index
+
+
+class InitList(Node):
+    """A braced initializer ``{a, b, {c}}``."""
+
+    __slots__ = ("items",)
+
+    def __init__(self, items: list) -> None:
+        self.items = items
+
+
+class StructDef:
+    """A struct type as written: ``fields`` is a list of (name, type descriptor, spelling)."""
+
+    __slots__ = ("name", "fields", "line", "column", "resolved")
+
+    def __init__(self, name: str, line: int, column: int) -> None:
+        self.name, self.fields, self.line, self.column = name, None, line, column
+        self.resolved = {}  # target name -> the checker's StructT
+
+
+class Ptr:
+    """Type descriptor: pointer to ``to``; ``size`` the N of a parameter written ``T p[N]``."""
+
+    __slots__ = ("to", "size")
+
+    def __init__(self, to, size=None) -> None:
+        self.to, self.size = to, size
+
+
+class Arr:
+    """Type descriptor: array of ``of``, ``size`` a constant expression node or None."""
+
+    __slots__ = ("of", "size")
+
+    def __init__(self, of, size) -> None:
+        self.of, self.size = of, size
 
 
 class Stmt:
@@ -159,12 +224,13 @@ class Stmt:
 
 
 class Decl(Stmt):
-    """``TYPE a = 1, b;``: ``items`` is a list of (Var, initializer or None)."""
+    """``TYPE a = 1, *p, t[2];``: ``items`` is a list of (Var, initializer or None, type
+    descriptor: a scalar spelling, :class:`StructDef`, :class:`Ptr`, :class:`Arr`)."""
 
-    __slots__ = ("type_name", "items")
+    __slots__ = ("type_name", "items", "static")
 
-    def __init__(self, type_name: str, items: list) -> None:
-        self.type_name, self.items = type_name, items
+    def __init__(self, type_name, items: list, static: bool = False) -> None:
+        self.type_name, self.items, self.static = type_name, items, static
 
 
 class ExprStmt(Stmt):
@@ -188,6 +254,67 @@ class Block(Stmt):
         self.statements = statements
 
 
+class Return(Stmt):
+    __slots__ = ("value",)
+
+    def __init__(self, value: Node | None) -> None:
+        self.value = value
+
+
+class Loop(Stmt):
+    """``for``/``while``/``do``: ``init`` (a statement or None), ``test`` (None = always),
+    ``step`` (an expression or None), ``body``; ``kind`` is the keyword."""
+
+    __slots__ = ("kind", "init", "test", "step", "body")
+
+    def __init__(self, kind: str, init, test, step, body) -> None:
+        self.kind, self.init, self.test, self.step, self.body = kind, init, test, step, body
+
+
+class Switch(Stmt):
+    """``switch (test) { case K: … default: … }``: ``body`` is the Block, whose top-level
+    statements include the :class:`Label` markers."""
+
+    __slots__ = ("test", "body")
+
+    def __init__(self, test, body) -> None:
+        self.test, self.body = test, body
+
+
+class Label(Stmt):
+    """``case K:`` (``value`` the constant expression node) or ``default:`` (None);
+    ``value_int`` is set by the checker (the constant, None for default)."""
+
+    __slots__ = ("value", "value_int")
+
+    def __init__(self, value) -> None:
+        self.value = value
+
+
+class Jump(Stmt):
+    """``break`` or ``continue``."""
+
+    __slots__ = ("kind",)
+
+    def __init__(self, kind: str) -> None:
+        self.kind = kind
+
+
+class FuncDef:
+    """A function definition: ``ret`` (type descriptor or ``"void"``), ``params`` (list of
+    (name, type descriptor, spelling, token)), ``body`` (Block)."""
+
+    __slots__ = ("name", "ret", "ret_spelling", "params", "body", "line", "column", "start",
+                 "end", "close_line", "close_column")
+
+    def __init__(self, name, ret, ret_spelling, params, body, tok) -> None:
+        self.name, self.ret, self.ret_spelling, self.params, self.body = name, ret, \
+            ret_spelling, params, body
+        self.line, self.column, self.start = tok.line, tok.column, tok.start
+        self.end = body.end
+        self.close_line = self.close_column = 0  # the closing brace, set by the parser
+
+
 class QNote:
     """A ``// @q`` annotation: Q format and optional per-unit base of one variable."""
 
@@ -200,13 +327,25 @@ class QNote:
 
 
 class Program:
-    """Parsed code: ``statements``, ``notes`` (name → QNote), ``global_q`` from ``#define``."""
+    """Parsed code: ``statements`` (outside functions), ``functions`` (name → FuncDef, in
+    definition order), ``notes`` (name → QNote), ``global_q`` from ``#define``."""
 
-    __slots__ = ("source", "statements", "notes", "global_q", "unresolved")
+    __slots__ = ("source", "statements", "notes", "global_q", "unresolved", "functions",
+                 "refused")
 
-    def __init__(self, source: str, statements: list, notes: dict, global_q: int | None) -> None:
+    def __init__(self, source: str, statements: list, notes: dict, global_q: int | None,
+                 functions: dict | None = None, refused: dict | None = None) -> None:
         self.source, self.statements, self.notes, self.global_q = source, statements, notes, \
             global_q
+        self.functions = functions or {}
+        #: name -> (TraceError, is a function) of each file-scope definition outside the
+        #: subset (the error is raised where the name is used)
+        self.refused = refused or {}
+
+
+def _unknown_type(tok: Token) -> TraceError:
+    return TraceError(tok.line, tok.column, f"unknown type {tok.text} (is the header that "
+                      "defines it pasted?)")
 
 
 def _fail(tok: Token, message: str) -> TraceError:
@@ -282,6 +421,13 @@ class _Parser:
         self.type_names: frozenset = frozenset()
         self.aliases: dict = {}  # typedef name -> the spelling it stands for
         self.floating: dict = {}  # typedef name of float/double/pointer -> (token, what)
+        self.structs: dict = {}  # struct tag -> StructDef
+        self.enums: dict = {}  # enumeration constant -> value
+        self.functions: dict = {}  # name -> FuncDef
+        self.refused: dict = {}  # name of a file-scope definition outside the subset -> error
+        self.loops = 0  # loops around the statement being parsed
+        self.switches = 0  # switch statements around it
+        self.in_function = False
 
     # -- token helpers
     def peek(self, k: int = 0) -> Token:
@@ -322,15 +468,49 @@ class _Parser:
     def starts_type(self, k: int = 0) -> bool:
         t = self.peek(k)
         return t.kind == "name" and (t.text in BASE_TYPE_WORDS or t.text in self.type_names
-                                     or t.text in _QUALIFIERS)
+                                     or t.text in _QUALIFIERS or t.text in _TAGS or
+                                     t.text in _ATTRIBUTES or t.text == "void")
 
-    def type_spelling(self) -> str:
-        """A type's spelling, normalized: ``unsigned long int`` → ``unsigned long``."""
+    def qualifiers(self) -> bool:
+        """Skip qualifiers and attributes; True when ``static`` was among them."""
+        static = False
+        while self.peek().kind == "name":
+            w = self.peek().text
+            if w in _QUALIFIERS:
+                static = static or w == "static"
+                self.take()
+            elif w in _ATTRIBUTES:
+                self.take()
+                if self.is_op("("):  # __attribute__((…)), __declspec(…): balanced, ignored
+                    self.skip_group()
+            else:
+                break
+        return static
+
+    def skip_group(self) -> None:
+        open_tok = self.take()
+        level = 1
+        while level:
+            tok = self.take()
+            if tok.kind == "end":
+                raise _fail(open_tok, "'(' is never closed")
+            level += (tok.text == "(") - (tok.text == ")")
+
+    def specifiers(self) -> tuple:
+        """The type before a declarator: (descriptor, spelling, static).  A descriptor is
+        a scalar spelling, ``"void"``, a :class:`StructDef`, or a :class:`Ptr` from a typedef."""
         first = self.peek()
-        words = []
-        while self.peek().kind == "name" and self.peek().text in _QUALIFIERS:
-            self.take()
+        static = self.qualifiers()
         tok = self.peek()
+        if tok.kind == "name" and tok.text in _TAGS:
+            desc = self.tagged()
+            static = self.qualifiers() or static
+            return desc, f"{tok.text} {desc.name}" if isinstance(desc, StructDef) else "int", \
+                static
+        if tok.kind == "name" and tok.text == "void":
+            self.take()
+            static = self.qualifiers() or static
+            return "void", "void", static
         if tok.kind == "name" and tok.text in self.type_names and \
                 tok.text not in BASE_TYPE_WORDS:
             if tok.text in self.floating:
@@ -338,15 +518,21 @@ class _Parser:
                 raise _fail(tok, f"{tok.text} is {what} (typedef at {at.line}:{at.column}), "
                                  "not supported")
             self.take()
-            while self.peek().kind == "name" and self.peek().text in _QUALIFIERS:
-                self.take()
-            return self.aliases.get(tok.text, tok.text)
+            static = self.qualifiers() or static
+            return self.aliases.get(tok.text, tok.text), tok.text, static
+        words = []
         while self.peek().kind == "name" and (self.peek().text in BASE_TYPE_WORDS or
                                               self.peek().text in _QUALIFIERS):
             w = self.take().text
-            if w not in _QUALIFIERS:
+            if w in _QUALIFIERS:
+                static = static or w == "static"
+            else:
                 words.append(w)
         if not words:
+            if tok.kind == "name" and tok.text in _FLOATING:
+                raise _fail(tok, f"'{tok.text}' is not supported (integer types only)")
+            if tok.kind == "name":
+                raise _unknown_type(tok)
             raise _fail(first, "expected a type")
         sign = [w for w in words if w in ("signed", "unsigned")]
         longs = words.count("long")
@@ -357,90 +543,389 @@ class _Parser:
         base = "long long" if longs == 2 else "long" if longs == 1 else \
             (kinds[0] if kinds else "int")
         if sign == ["unsigned"]:
-            return "unsigned " + base
-        if sign == ["signed"] and base == "char":
-            return "signed char"
-        return base
+            base = "unsigned " + base
+        elif sign == ["signed"] and base == "char":
+            base = "signed char"
+        static = self.qualifiers() or static
+        return base, base, static
+
+    def type_spelling(self) -> str:
+        """A scalar type's spelling (casts), normalized: ``unsigned long int`` → ``unsigned long``."""
+        first = self.peek()
+        desc, _, _ = self.specifiers()
+        while self.is_op("*"):
+            self.take()
+            desc = Ptr(desc)
+        if not isinstance(desc, str) or desc == "void":
+            raise _fail(first, "a cast to a pointer, struct or void is not supported")
+        return desc
+
+    def tagged(self):
+        """``struct [tag] [{ fields }]`` or ``enum [tag] [{ constants }]``."""
+        kw = self.take()
+        if kw.text == "union":
+            raise _fail(kw, "'union' is not supported")
+        tag = self.take() if self.peek().kind == "name" else None
+        if kw.text == "enum":
+            if self.is_op("{"):
+                self.enumerators()
+            return "int"
+        if tag is None and not self.is_op("{"):
+            raise _fail(kw, "expected a struct tag or '{'")
+        key = tag.text if tag is not None else f"<anonymous at {kw.line}:{kw.column}>"
+        sdef = self.structs.get(key)
+        if sdef is None:
+            sdef = self.structs[key] = StructDef(key, kw.line, kw.column)
+        if self.is_op("{"):
+            if sdef.fields is not None:
+                raise _fail(kw, f"struct {key} is already defined at {sdef.line}:{sdef.column}")
+            open_tok = self.take()
+            fields: list = []
+            names: set = set()
+            while not self.is_op("}"):
+                if self.peek().kind == "end":
+                    raise _fail(open_tok, f"'{{' at {open_tok.line}:{open_tok.column} is "
+                                          "never closed")
+                desc, spelling, _ = self.specifiers()
+                while True:
+                    name, d, at = self.declarator(desc)
+                    if self.is_op(":"):
+                        raise _fail(self.peek(), "bit-fields are not supported")
+                    if name in names:
+                        raise _fail(at, f"field {name} is declared twice in struct {key}")
+                    names.add(name)
+                    fields.append((name, d, spelling))
+                    if not self.is_op(","):
+                        break
+                    self.take()
+                self.expect(";", " after a struct field")
+            self.take()
+            sdef.fields = fields
+        return sdef
+
+    def enumerators(self) -> None:
+        self.take()
+        value = -1
+        while not self.is_op("}"):
+            name = self.take()
+            if name.kind != "name":
+                raise _fail(name, "expected an enumerator name")
+            if self.is_op("="):
+                self.take()
+                value = self.constant(self.conditional(), "an enumerator's value")
+            else:
+                value += 1
+            self.enums[name.text] = value
+            if not self.is_op(","):
+                break
+            self.take()
+        self.expect("}", " to close the enum")
+
+    def constant(self, node: Node, what: str) -> int:
+        return constant_value(node, what)
+
+    def declarator(self, desc) -> tuple:
+        """``* const name [N]…``: (name, descriptor, name token)."""
+        while self.is_op("*"):
+            self.take()
+            desc = Ptr(desc)
+            self.qualifiers()
+        tok = self.peek()
+        if self.is_op("("):
+            raise _fail(tok, "function pointers are not supported")
+        var = self.var_name("a variable name after the type")
+        sizes = []
+        while self.is_op("["):
+            self.take()
+            size = None if self.is_op("]") else self.conditional()
+            self.expect("]", " to close the array size")
+            sizes.append(size)
+        for size in reversed(sizes):
+            desc = Arr(desc, size)
+        self.qualifiers()
+        return var.name, desc, tok
 
     # -- statements
     def program(self) -> list:
         out = []
         while self.peek().kind != "end":
-            out.append(self.statement())
+            start = self.pos
+            try:
+                item = self.statement(top=True)
+            except TraceError as err:
+                # Real files mix integer routines with float helpers: a definition outside
+                # the subset is refused when it is used, not when it is pasted.
+                skipped = self.skip_definition(start)
+                if skipped is None:
+                    raise
+                self.refused[skipped[0]] = (err, skipped[1])
+                continue
+            if isinstance(item, FuncDef):
+                prev = self.functions.get(item.name)
+                if prev is not None:
+                    raise _fail(self.tokens[self.pos - 1], f"function {item.name} is already "
+                                f"defined at {prev.line}:{prev.column}")
+                self.functions[item.name] = item
+            elif item is not None:
+                out.append(item)
         return out
 
-    def statement(self) -> Stmt:
+    def skip_definition(self, start: int) -> str | None:
+        """After an error in the file-scope item at ``start``: when it is a function
+        definition or a declaration, move past it and return (its name, whether it is a
+        function), else None."""
+        tokens = self.tokens
+        self.depth = self.height = self.loops = self.switches = 0
+        self.in_function = False
+        i, level, fname, last, frozen = start, 0, None, None, False
+        while tokens[i].kind != "end":
+            t = tokens[i]
+            if t.kind == "name" and level == 0 and not frozen:
+                last = t.text
+            elif t.kind == "op" and t.text == "=" and level == 0:
+                frozen = True  # the declared name came before the initializer
+            elif t.kind == "op" and t.text in ("(", "[", "{"):
+                if t.text == "{" and level == 0 and fname is not None:
+                    break  # a function body
+                if t.text == "(" and level == 0 and fname is None and last is not None:
+                    fname = last
+                level += 1
+            elif t.kind == "op" and t.text in (")", "]", "}"):
+                level -= 1
+            elif t.kind == "op" and t.text == ";" and level == 0:
+                self.pos = i + 1
+                return (fname, True) if fname is not None and not frozen else \
+                    ((last, False) if last is not None else None)
+            i += 1
+        else:
+            return None
+        depth = 0
+        while tokens[i].kind != "end":
+            depth += (tokens[i].text == "{") - (tokens[i].text == "}")
+            i += 1
+            if depth == 0:
+                self.pos = i
+                return fname, True
+        return None
+
+    def block(self) -> Block:
+        tok = self.take()
+        self.deeper()
+        body = []
+        while not self.is_op("}"):
+            if self.peek().kind == "end":
+                raise _fail(self.peek(), f"'{{' at {tok.line}:{tok.column} is never closed")
+            body.append(self.statement())
+        self.take()
+        self.shallower()
+        return Block(body).at(tok, self.last())
+
+    def body(self) -> Stmt:
+        self.deeper()
+        s = self.statement()
+        self.shallower()
+        return s
+
+    def statement(self, top: bool = False):
         tok = self.peek()
         if tok.kind == "op" and tok.text == ";":
             self.take()
             return Block([]).at(tok, tok)
         if tok.kind == "op" and tok.text == "{":
-            self.take()
-            self.deeper()
-            body = []
-            while not self.is_op("}"):
-                if self.peek().kind == "end":
-                    raise _fail(self.peek(), f"'{{' at {tok.line}:{tok.column} is never closed")
-                body.append(self.statement())
-            self.take()
-            self.shallower()
-            return Block(body).at(tok, self.last())
-        if tok.kind == "name" and tok.text == "if":
+            return self.block()
+        word = tok.text if tok.kind == "name" else None
+        if word == "if":
             self.take()
             self.expect("(", " after 'if'")
             test = self.expression()
             self.expect(")", " to close the condition")
-            self.deeper()
-            then = self.statement()
+            then = self.body()
             other = None
             if self.peek().kind == "name" and self.peek().text == "else":
                 self.take()
-                other = self.statement()
-            self.shallower()
+                other = self.body()
             return If(test, then, other).at(tok, self.last())
-        if tok.kind == "name" and tok.text == "else":
+        if word in ("while", "for", "do"):
+            return self.loop()
+        if word == "switch":
+            self.take()
+            self.expect("(", " after 'switch'")
+            test = self.expression()
+            self.expect(")", " to close the condition")
+            if not self.is_op("{"):
+                raise _fail(self.peek(), "expected '{' after 'switch (…)'")
+            self.switches += 1
+            body = self.block()
+            self.switches -= 1
+            return Switch(test, body).at(tok, self.last())
+        if word in ("case", "default"):
+            self.take()
+            if not self.switches:
+                raise _fail(tok, f"'{word}' outside a switch")
+            value = self.conditional() if word == "case" else None
+            self.expect(":", f" after '{word}'")
+            return Label(value).at(tok, self.last())
+        if word in ("break", "continue"):
+            self.take()
+            if not self.loops and (word == "continue" or not self.switches):
+                raise _fail(tok, f"'{word}' outside a loop")
+            self.expect(";", f" after '{word}'")
+            return Jump(word).at(tok, self.last())
+        if word == "return":
+            self.take()
+            if not self.in_function:
+                raise _fail(tok, "'return' outside a function")
+            value = None if self.is_op(";") else self.expression()
+            self.expect(";", " at the end of the statement")
+            return Return(value).at(tok, self.last())
+        if word == "else":
             raise _fail(tok, "'else' without 'if'")
-        if tok.kind == "name" and tok.text in _UNSUPPORTED:
-            raise _fail(tok, f"'{tok.text}' is not supported (declarations, assignments, "
-                             "if/else only)")
-        if tok.kind == "name" and tok.text == "typedef":
+        if word in _UNSUPPORTED:
+            raise _fail(tok, f"'{word}' is not supported")
+        if word == "typedef":
             return self.typedef()
         if self.starts_type():
-            type_name = self.type_spelling()
-            items = []
-            while True:
-                var = self.var_name("a variable name after the type")
-                if self.is_op("("):
-                    raise _fail(tok, f"function definition {var.name}(…) is not supported "
-                                     "(trace its body's statements)")
-                init = None
-                if self.is_op("="):
-                    self.take()
-                    init = self.assignment()
-                items.append((var, init))
-                if not self.is_op(","):
-                    break
-                self.take()
-            self.expect(";", " at the end of the declaration")
-            return Decl(type_name, items).at(tok, self.last())
+            return self.declaration(top)
+        if word is not None and (self.peek(1).kind == "name" or (
+                self.is_op("*", 1) and self.tokens[self.pos + 2].kind == "name" and
+                self.tokens[self.pos + 3].text in ("=", ",", "["))):
+            raise _unknown_type(tok)  # NAME NAME: a declaration with a type never defined
         expr = self.expression()
         self.expect(";", " at the end of the statement")
         return ExprStmt(expr).at(tok, self.last())
 
+    def loop(self) -> Stmt:
+        tok = self.take()
+        init = step = None
+        self.loops += 1
+        if tok.text == "do":
+            body = self.body()
+            w = self.peek()
+            if w.text != "while":
+                raise _fail(w, "expected 'while' after the body of 'do'")
+            self.take()
+            self.expect("(", " after 'while'")
+            test = self.expression()
+            self.expect(")", " to close the condition")
+            self.expect(";", " after 'do … while (…)'")
+        else:
+            self.expect("(", f" after '{tok.text}'")
+            if tok.text == "for":
+                if self.is_op(";"):
+                    self.take()
+                elif self.starts_type():
+                    init = self.declaration(False)
+                else:
+                    first = self.peek()
+                    init = ExprStmt(self.expression()).at(first, self.last())
+                    self.expect(";", " after the loop's first clause")
+                test = None if self.is_op(";") else self.expression()
+                self.expect(";", " after the loop's condition")
+                step = None if self.is_op(")") else self.expression()
+            else:
+                test = self.expression()
+            self.expect(")", " to close the condition")
+            body = self.body()
+        self.loops -= 1
+        return Loop(tok.text, init, test, step, body).at(tok, self.last())
+
+    def declaration(self, top: bool):
+        tok = self.peek()
+        desc, spelling, static = self.specifiers()
+        if self.is_op(";"):  # struct tag { … }; or enum { … };
+            self.take()
+            return Block([]).at(tok, self.last())
+        items = []
+        while True:
+            name, d, at = self.declarator(desc)
+            if self.is_op("("):
+                if not top or items:
+                    raise _fail(at, f"a function {name}(…) can only be declared at file scope")
+                return self.function(tok, at, d, spelling)
+            if d == "void":
+                raise _fail(at, f"{name} cannot have type void")
+            init = None
+            if self.is_op("="):
+                self.take()
+                init = self.initializer()
+            items.append((Var(name).at(at, at), init, d))
+            if not self.is_op(","):
+                break
+            self.take()
+        self.expect(";", " at the end of the declaration")
+        return Decl(spelling, items, static).at(tok, self.last())
+
+    def initializer(self) -> Node:
+        tok = self.peek()
+        if not self.is_op("{"):
+            return self.assignment()
+        self.take()
+        self.deeper()
+        items = []
+        while not self.is_op("}"):
+            if self.is_op("."):
+                raise _fail(self.peek(), "designated initializers are not supported")
+            items.append(self.initializer())
+            if not self.is_op(","):
+                break
+            self.take()
+        self.expect("}", f" to close '{{' at {tok.line}:{tok.column}")
+        self.shallower()
+        return InitList(items).at(tok, self.last())
+
+    def function(self, first: Token, name_tok: Token, ret, ret_spelling: str):
+        """A prototype (skipped: None) or a definition (FuncDef)."""
+        open_tok = self.take()
+        params = []
+        if self.peek().text == "void" and self.is_op(")", 1):
+            self.take()
+        while not self.is_op(")"):
+            if self.is_op("..."):
+                raise _fail(self.peek(), "variadic functions are not supported")
+            ptok = self.peek()
+            desc, spelling, _ = self.specifiers()
+            if self.is_op(",") or self.is_op(")"):
+                pname, d, at = "", desc, ptok  # a prototype's unnamed parameter
+            else:
+                pname, d, at = self.declarator(desc)
+            if isinstance(d, Arr):
+                d = Ptr(d.of, d.size)  # an array parameter is a pointer (C99 6.7.5.3p7)
+            if d == "void":
+                raise _fail(at, "a parameter cannot have type void")
+            params.append((pname, d, spelling, at))
+            if not self.is_op(","):
+                break
+            self.take()
+        self.expect(")", f" to close '(' at {open_tok.line}:{open_tok.column}")
+        self.qualifiers()
+        if self.is_op(";"):
+            self.take()
+            return None
+        if not self.is_op("{"):
+            got = self.peek()
+            raise _fail(got, f"expected '{{' or ';' after {name_tok.text}(…), got "
+                             f"{'end of code' if got.kind == 'end' else repr(got.text)}")
+        if any(not p[0] for p in params):
+            raise _fail(name_tok, f"every parameter of {name_tok.text}(…) needs a name")
+        self.in_function = True
+        body = self.block()
+        self.in_function = False
+        f = FuncDef(name_tok.text, ret, ret_spelling, params, body, first)
+        f.close_line, f.close_column = self.last().line, self.last().column
+        return f
+
     def typedef(self) -> Stmt:
-        """``typedef SCALAR NAME {, NAME};``: NAME becomes another spelling of SCALAR."""
+        """``typedef TYPE NAME {, *NAME};``: NAME becomes another spelling of TYPE."""
         tok = self.take()
         nxt = self.peek()
-        if nxt.kind == "name" and nxt.text in ("struct", "union", "enum"):
-            raise _fail(nxt, f"typedef {nxt.text} is not supported (only typedefs of "
-                             "integer types)")
         # As in rtwtypes.h: float, double and pointer typedefs are harmless until used.
-        floating = nxt.kind == "name" and (nxt.text in _FLOATING or nxt.text == "void" or (
+        floating = nxt.kind == "name" and (nxt.text in _FLOATING or (
             nxt.text == "long" and self.peek(1).text == "double"))
         if floating:
             base = "long double" if self.take().text == "long" and self.take() else nxt.text
+            spelling = base
         else:
-            base = self.type_spelling()
+            base, spelling, _ = self.specifiers()
         while True:
             pointer = False
             while self.is_op("*") or (self.peek().kind == "name" and
@@ -448,11 +933,19 @@ class _Parser:
                 pointer = pointer or self.take().text == "*"
             name = self.take()
             if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
-                raise _fail(name, f"expected a name after typedef {base}, got "
+                raise _fail(name, f"expected a name after typedef {spelling}, got "
                                   f"{'end of code' if name.kind == 'end' else repr(name.text)}")
-            self.aliases[name.text] = base
+            if self.is_op("(") or self.is_op("["):
+                raise _fail(self.peek(), f"typedef {name.text}: function and array typedefs "
+                                         "are not supported")
+            if isinstance(base, StructDef) and base.name.startswith("<"):
+                base.name = name.text  # typedef struct { … } NAME: messages call it NAME
+            if pointer and isinstance(base, StructDef):
+                self.aliases[name.text] = Ptr(base)
+            else:
+                self.aliases[name.text] = base
             self.type_names = self.type_names | {name.text}
-            if floating or pointer:
+            if floating or (pointer and not isinstance(base, StructDef)) or base == "void":
                 self.floating[name.text] = (name, "a pointer type" if pointer or base == "void"
                                             else "a floating-point type")
             if not self.is_op(","):
@@ -488,7 +981,7 @@ class _Parser:
         left = self.conditional()
         tok = self.peek()
         if tok.kind == "op" and tok.text in _ASSIGN_OPS:
-            if not isinstance(left, Var):
+            if not _is_place(left):
                 raise _fail(tok, f"'{tok.text}' needs a variable on its left")
             self.take()
             value = self.assignment()
@@ -535,18 +1028,20 @@ class _Parser:
 
     def unary(self) -> Node:
         tok = self.tokens[self.pos]
-        if tok.text in ("+", "-", "~", "!"):
+        if tok.text in ("+", "-", "~", "!", "&", "*") and tok.kind == "op":
             self.take()
             self.deeper()
             operand = self.unary()
             self.shallower()
+            if tok.text == "&" and not _is_place(operand):
+                raise _fail(tok, "'&' needs a variable")
             return Unary(tok.text, operand).at(tok, self.last())
         if tok.text in ("++", "--"):
             self.take()
             self.deeper()
             target = self.unary()
             self.shallower()
-            if not isinstance(target, Var):
+            if not _is_place(target):
                 raise _fail(tok, f"'{tok.text}' needs a variable")
             return IncDec(tok.text, True, target).at(tok, self.last())
         if tok.text == "(" and self.starts_type(1):
@@ -562,11 +1057,35 @@ class _Parser:
     def postfix(self) -> Node:
         first = self.peek()
         node = self.primary()
-        while self.tokens[self.pos].text in ("++", "--"):
-            op = self.take()
-            if not isinstance(node, Var):
-                raise _fail(op, f"'{op.text}' needs a variable")
-            node = IncDec(op.text, False, node).at(first, self.last())
+        tokens = self.tokens
+        chain = 0
+        while True:
+            text = tokens[self.pos].text
+            if text in ("++", "--"):
+                op = self.take()
+                if not _is_place(node):
+                    raise _fail(op, f"'{op.text}' needs a variable")
+                node = IncDec(op.text, False, node).at(first, self.last())
+            elif text in (".", "->"):
+                op = self.take()
+                name = self.take()
+                if name.kind != "name":
+                    raise _fail(name, f"expected a field name after '{op.text}'")
+                self.deeper()
+                chain += 1
+                node = Member(node, name.text, op.text == "->").at(first, name)
+            elif text == "[":
+                self.take()
+                self.deeper()
+                chain += 1
+                index = self.expression()
+                self.expect("]", " to close the index")
+                node = Index(node, index).at(first, self.last())
+            else:
+                break
+        # A chain of fields and indexes counts toward the depth bound while it is parsed.
+        self.depth -= chain
+        self.height -= chain
         return node
 
     def primary(self) -> Node:
@@ -588,11 +1107,16 @@ class _Parser:
             e.line, e.column = tok.line, tok.column
             return e
         if tok.kind == "name":
-            if tok.text in _UNSUPPORTED or tok.text in BASE_TYPE_WORDS:
+            if tok.text in _UNSUPPORTED or tok.text in BASE_TYPE_WORDS or tok.text in _TAGS:
                 raise _fail(tok, f"'{tok.text}' is not supported here")
             if self.is_op("(", 1):
                 return self.call()
-            return self.var_name("a name")
+            self.take()
+            if tok.text in self.enums:
+                n = Num(self.enums[tok.text], tok.text).at(tok, tok)
+                n.ctype = ["int"]
+                return n
+            return Var(tok.text).at(tok, tok)
         got = "end of code" if tok.kind == "end" else repr(tok.text)
         raise _fail(tok, f"expected a value, got {got}")
 
@@ -604,9 +1128,6 @@ class _Parser:
         m = _IQ_N.fullmatch(name)
         if m:
             nargs, q = 2, int(m[1])
-        if nargs is None:
-            raise _fail(tok, f"unknown function {name}() (supported: _IQmpy, _IQNmpy, "
-                             "__IQmpy, _IQsat, __IQsat)")
         self.take()  # (
         self.deeper()
         args = []
@@ -618,6 +1139,8 @@ class _Parser:
                 self.take()
         self.expect(")", f" to close {name}(")
         self.shallower()
+        if nargs is None:  # a function of the pasted code: resolved by the checker
+            return Call(name, args, None).at(tok, self.last())
         if len(args) != nargs:
             raise _fail(tok, f"{name}() takes {nargs} arguments, got {len(args)}")
         if name == "__IQmpy":
@@ -629,11 +1152,38 @@ class _Parser:
         return Call(name, args, q).at(tok, self.last())
 
 
+def constant_value(node: Node, what: str) -> int:
+    """The value of an integer constant expression made of numbers and operators
+    (array sizes, enumerators); mathematical integers, as the compiler folds them."""
+    if isinstance(node, Num):
+        return node.value
+    if isinstance(node, Unary) and node.op in ("-", "+", "~"):
+        v = constant_value(node.operand, what)
+        return -v if node.op == "-" else ~v if node.op == "~" else v
+    if isinstance(node, Cast):
+        return constant_value(node.operand, what)
+    if isinstance(node, Binary) and node.op in _CONST_OPS:
+        a, b = constant_value(node.left, what), constant_value(node.right, what)
+        if node.op in ("/", "%") and b == 0:
+            raise TraceError(node.right.line, node.right.column, "division by zero")
+        if node.op in ("<<", ">>") and not 0 <= b < 64:
+            raise TraceError(node.right.line, node.right.column, f"shift by {b}")
+        return _CONST_OPS[node.op](a, b)
+    raise TraceError(node.line, node.column, f"{what} must be an integer constant")
+
+
+def _is_place(node: Node) -> bool:
+    """Whether ``node`` designates an object (an lvalue the subset can assign)."""
+    return isinstance(node, (Var, Member, Index)) or (isinstance(node, Unary) and
+                                                      node.op == "*")
+
+
 def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
-          defines: dict | None = None, global_q: int = 24) -> Program:
+          defines: dict | None = None, global_q: int = 24, target=None) -> Program:
     """Parse C code; ``type_names`` are the type spellings the target knows, ``defines``
     the ``-D`` definitions (name → body text, see :mod:`pulab.ctrace.preprocess`),
-    ``global_q`` IQmath's Q for ``_IQ(…)`` and its family when the code defines none.
+    ``global_q`` IQmath's Q for ``_IQ(…)`` and its family when the code defines none,
+    ``target`` (a :class:`~pulab.ctrace.types.Target`) what ``<limits.h>`` defines.
 
     Raises
     ------
@@ -642,10 +1192,11 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
     """
     if not isinstance(source, str):
         raise TraceError(1, 1, "code must be text")
-    pre = preprocess(tokenize(source), defines, global_q)
+    pre = preprocess(tokenize(source), defines, global_q,
+                     target.limits() if target is not None else None)
     tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names
-    prog = Program(source, p.program(), notes, pre.global_q)
+    prog = Program(source, p.program(), notes, pre.global_q, p.functions, p.refused)
     prog.unresolved = pre.unresolved
     return prog

@@ -76,9 +76,13 @@ def _limits() -> dict:
 #: What the standard headers this subset knows define (their type names are built in).
 STANDARD_HEADERS = {
     "stdint.h": _limits(),
-    "stdbool.h": {"true": "1", "false": "0", "__bool_true_false_are_defined": "1"},
+    "stdbool.h": {"bool": "_Bool", "true": "1", "false": "0",
+                  "__bool_true_false_are_defined": "1"},
     "stddef.h": {},
-    "limits.h": {},
+    "limits.h": {},  # per target: see preprocess(limits=…)
+    # headers known to include <stdint.h> (avr-libc's <avr/io.h> through <inttypes.h>)
+    "inttypes.h": _limits(),
+    "avr/io.h": _limits(),
 }
 
 
@@ -177,8 +181,9 @@ def parse_define(text: str) -> tuple:
 
 
 class _Pre:
-    def __init__(self, tokens: list, defines: dict, global_q: int) -> None:
+    def __init__(self, tokens: list, defines: dict, global_q: int, headers: dict) -> None:
         self.src = iter(tokens)
+        self.headers = headers
         self.default_q = global_q
         self.macros: dict = {}
         self.global_q = None
@@ -247,7 +252,7 @@ class _Pre:
         if m is None:
             raise _fail(tok, "#include needs <header> or \"header\"")
         header = (m[1] or m[2]).strip()
-        known = STANDARD_HEADERS.get(header)
+        known = self.headers.get(header)
         if known is None:
             if header not in self.unresolved:
                 self.unresolved.append(header)
@@ -586,7 +591,8 @@ def _wrap(v: int) -> int:
     return ((v + (1 << 63)) & ((1 << 64) - 1)) - (1 << 63)
 
 
-def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24) -> Preprocessed:
+def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
+               limits: dict | None = None) -> Preprocessed:
     """Run the directives of ``tokens`` and expand macros.
 
     Parameters
@@ -597,6 +603,9 @@ def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24) ->
         ``-D`` definitions, name (``NAME`` or ``NAME(params)``) → body text.
     global_q : int, optional
         IQmath's GLOBAL_Q for the conversion macros when the code does not define it.
+    limits : dict, optional
+        What ``<limits.h>`` defines on the target (:meth:`pulab.ctrace.types.Target.limits`);
+        without it the header defines nothing.
 
     Returns
     -------
@@ -604,7 +613,8 @@ def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24) ->
         ``tokens`` (annotations kept in place, ending with ``end``), ``global_q``,
         ``unresolved`` headers, ``macros``.
     """
-    pre = _Pre(tokens, defines or {}, global_q)
+    headers = dict(STANDARD_HEADERS, **({"limits.h": limits} if limits else {}))
+    pre = _Pre(tokens, defines or {}, global_q, headers)
     out = pre.run(deque(), pre.source_tokens())
     out.append(pre.end)
     return Preprocessed(out, pre.global_q, pre.unresolved, pre.macros)

@@ -12,7 +12,9 @@ Examples
 
 from __future__ import annotations
 
-from .check import Checked, check
+import re
+
+from .check import VOID, Checked, check
 from .evaluate import Evaluator, hex_of
 from .errors import TraceError
 from .parser import parse
@@ -21,7 +23,8 @@ from .types import TARGETS
 from ..schema.errors import InputError
 from ..schema.validate import key_path, shown
 
-__all__ = ["trace", "trace_checked", "compile_code", "run_checked", "DEFAULT_GLOBAL_Q"]
+__all__ = ["trace", "trace_checked", "compile_code", "run_checked", "rounding_summary",
+           "DEFAULT_GLOBAL_Q"]
 
 #: IQmath's GLOBAL_Q when neither the code (``#define GLOBAL_Q``) nor the caller sets one.
 DEFAULT_GLOBAL_Q = 24
@@ -41,20 +44,27 @@ def _defines(defines) -> dict:
 
 
 def compile_code(code: str, target: str = "c28x", defines=None,
-                 global_q: int | None = None) -> Checked:
+                 global_q: int | None = None, entry: str | None = None) -> Checked:
     """Parse and type ``code`` for ``target`` (reusable for many input vectors);
     ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``; ``global_q`` is the Q the
-    IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q."""
+    IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q;
+    ``entry`` the function to run (None: the statements outside functions)."""
+    if entry is not None and (not isinstance(entry, str) or
+                              not re.fullmatch(r"[A-Za-z_]\w*", entry.strip())):
+        raise InputError("entry", f"must be a function name, got {shown(entry)}")
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
     gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
-    return check(parse(code, defines=_defines(defines), global_q=gq), t)
+    return check(parse(code, defines=_defines(defines), global_q=gq, target=t), t,
+                 entry.strip() if entry is not None else None)
 
 
-def _input_values(checked: Checked, inputs: dict) -> dict:
+def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> dict:
     out = {}
     for name, value in inputs.items():
+        if isinstance(name, str):
+            name = name.strip().replace("->", ".")  # p->FIELD names p.FIELD
         field = key_path("set", name)
         sym = checked.symbols.get(name)
         if sym is None:
@@ -73,6 +83,12 @@ def _input_values(checked: Checked, inputs: dict) -> dict:
         if not t.min <= value <= t.max:
             raise InputError(field, f"must be {t.min}..{t.max} for {sym.spelling}, got {value}")
         out[name] = value
+    if zero_unset:
+        for name in checked.inputs:
+            out.setdefault(name, 0)
+    if zero_unset:
+        for name in checked.inputs:
+            out.setdefault(name, 0)
     return out
 
 
@@ -86,17 +102,44 @@ def _meaning(note, value: int) -> dict:
 
 
 def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
-                record: bool = True) -> Evaluator:
-    """Run a compiled program (inputs are validated here); returns the finished
-    :class:`~pulab.ctrace.evaluate.Evaluator` (``values``, ``steps``, ``undefined``)."""
+                record: bool = True, zero_unset: bool = False) -> Evaluator:
+    """Run a compiled program (inputs are validated here; ``zero_unset`` gives the inputs
+    not set the value 0); returns the finished :class:`~pulab.ctrace.evaluate.Evaluator`
+    (``values``, ``steps``, ``undefined``)."""
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
-    ev = Evaluator(checked, _input_values(checked, inputs or {}), gq, record)
+    ev = Evaluator(checked, _input_values(checked, inputs or {}, zero_unset), gq, record)
     ev.run()
     return ev
 
 
+def rounding_summary(steps: list) -> dict:
+    """Per variable given a statement's result (calls included): how many of its terms
+    rounded toward −∞ (``floor``) and toward zero, and the largest ``|lost|`` in LSB.
+
+    >>> r = trace("long x = -5000; long s = x >> 12; long d = x / 4096;", "c28x")
+    >>> r["rounding"]["s"], r["rounding"]["d"]["toward_zero"]
+    ({'floor': 1, 'toward_zero': 0, 'max_lost': 0.779296875}, 1)
+    """
+    out: dict = {}
+
+    def walk(items: list) -> None:
+        for st in items:
+            for t in st.get("terms", ()):
+                if "rounding" in t:
+                    name = st.get("var") or "(no variable)"
+                    d = out.setdefault(name, {"floor": 0, "toward_zero": 0, "max_lost": 0.0})
+                    d[t["rounding"]] += 1
+                    d["max_lost"] = max(d["max_lost"], abs(t["lost"]))
+                if "steps" in t:
+                    walk(t["steps"])
+
+    walk(steps)
+    return out
+
+
 def trace(code: str, target: str = "c28x", inputs: dict | None = None,
-          global_q: int | None = None, defines=None) -> dict:
+          global_q: int | None = None, defines=None, entry: str | None = None,
+          zero_unset: bool = False) -> dict:
     """Trace C code as ``target``'s compiler computes it.
 
     Parameters
@@ -111,11 +154,18 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
         IQmath's GLOBAL_Q (default 24); ``#define GLOBAL_Q`` in the code wins.
     defines : list of str, optional
         ``NAME[=VALUE]`` definitions made before the code, as a compiler's ``-D``.
+    entry : str, optional
+        The function of the code to run; its integer parameters, the fields of the structs
+        its pointer parameters point to (``p.FIELD``), the integers they point to (``*out``)
+        and the globals read before written are the inputs.
+    zero_unset : bool, optional
+        Inputs not given are 0 (else reading one is an error naming every unset input).
 
     Returns
     -------
     dict
-        ``ok``, ``target``, ``global_q``, ``unresolved_includes`` (headers named by
+        ``ok``, ``target``, ``global_q``, ``entry``, ``functions`` (those the code defines),
+        ``unresolved_includes`` (headers named by
         ``#include`` whose contents are unknown), ``inputs`` (names the code reads before giving
         them a value), ``vars`` (every variable: type, c_type, bits, value, hex, and q,
         real, si, unit when annotated) and ``steps`` (one per executed statement, each
@@ -128,33 +178,49 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
     InputError
         A bad target, input value or global_q.
     """
-    return trace_checked(compile_code(code, target, defines, global_q), inputs, global_q)
+    return trace_checked(compile_code(code, target, defines, global_q, entry), inputs, global_q,
+                         zero_unset)
 
 
 def trace_checked(checked: Checked, inputs: dict | None = None,
-                  global_q: int | None = None) -> dict:
+                  global_q: int | None = None, zero_unset: bool = False) -> dict:
     """:func:`trace` for code already compiled by :func:`compile_code`."""
     if global_q is not None and (isinstance(global_q, bool) or not isinstance(global_q, int)
                                  or not 1 <= global_q <= 30):
         raise InputError("global_q", f"must be an integer 1..30, got {global_q!r}")
     inputs = inputs or {}
-    ev = run_checked(checked, inputs, global_q)
+    ev = run_checked(checked, inputs, global_q, zero_unset=zero_unset)
     values, steps = ev.values, ev.steps
+    given = {k.strip().replace("->", ".") if isinstance(k, str) else k for k in inputs}
+    if zero_unset:
+        given |= set(checked.inputs)
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     notes = checked.program.notes
     for s in steps:
         if s["var"] in notes:
             s.update(_meaning(notes[s["var"]], s["value"]))
     out_vars = {}
+    entry = checked.entry
     for name, sym in checked.symbols.items():
+        if entry is not None and name not in given and name not in ev.written and \
+                name not in checked.inputs:
+            continue  # a field the function neither reads nor writes
         v = values[name]
         d = {"type": sym.spelling, "c_type": sym.ctype.name, "bits": sym.ctype.bits,
              "signed": sym.ctype.signed, "value": v,
              "hex": hex_of(v, sym.ctype.bits) if v is not None else None,
-             "input": name in inputs}
+             "input": name in given}
         if name in notes and v is not None:
             d.update(_meaning(notes[name], v))
         out_vars[name] = d
+    if entry is not None and entry.ret is not VOID:
+        v = values.get("return")
+        out_vars["return"] = {"type": entry.ret_spelling, "c_type": entry.ret.name,
+                              "bits": entry.ret.bits, "signed": entry.ret.signed, "value": v,
+                              "hex": hex_of(v, entry.ret.bits), "input": False}
     return {"ok": True, "target": checked.target.name, "global_q": gq,
+            "entry": entry.name if entry is not None else None,
+            "rounding": rounding_summary(steps),
+            "functions": list(checked.functions),
             "unresolved_includes": list(checked.program.unresolved),
             "inputs": checked.inputs, "vars": out_vars, "steps": steps}

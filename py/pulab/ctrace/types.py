@@ -32,7 +32,7 @@ from ..fixedpoint.cint import CType
 
 __all__ = ["Target", "TARGETS", "rank", "promote", "common_type", "BASE_TYPE_WORDS"]
 
-_RANK = {"char": 1, "short": 2, "int": 3, "long": 4, "long long": 5}
+_RANK = {"_Bool": 0, "char": 1, "short": 2, "int": 3, "long": 4, "long long": 5}
 
 #: Words that may make up a base type spelling (``unsigned long long int``).
 BASE_TYPE_WORDS = frozenset({"signed", "unsigned", "char", "short", "int", "long"})
@@ -70,7 +70,9 @@ class Target:
         bits = {"char": self.char_bits, "short": 16, "int": self.int_bits, "long": 32,
                 "long long": 64}
         names = {"char": CType("char", self.char_bits, self.char_signed),
-                 "signed char": CType("signed char", self.char_bits, True)}
+                 "signed char": CType("signed char", self.char_bits, True),
+                 # C99 6.3.1.2: converting to _Bool gives 1 for any non-zero value
+                 "_Bool": CType("_Bool", self.char_bits, False)}
         for base, b in bits.items():
             if base != "char":
                 names[base] = CType(base, b, True)
@@ -83,6 +85,17 @@ class Target:
                 continue  # C28x has no 8-bit type: int8_t does not exist there
             names[f"int{b}_t"] = names[signed_name]
             names[f"uint{b}_t"] = names["unsigned " + signed_name.replace("signed ", "")]
+        # The least- and fast-width names: least = exact width (int16 for 8 on C28x);
+        # fast as avr-gcc, TI C2000 and gcc -m32/arm-none-eabi define them (int for 16).
+        small = "signed char" if self.char_bits == 8 else "int"
+        fast = {8: small, 16: "int", 32: "long" if self.int_bits == 16 else "int",
+                64: "long long"}
+        for b in (8, 16, 32, 64):
+            least = exact[b] if b > 8 else small
+            for kind, name in (("least", least), ("fast", fast[b])):
+                names[f"int_{kind}{b}_t"] = names[name]
+                names[f"uint_{kind}{b}_t"] = names["unsigned " + name.replace("signed ", "")]
+        names["intmax_t"], names["uintmax_t"] = names["long long"], names["unsigned long long"]
         # Firmware spellings (TI's DSP28x_Project.h, Inovance's typedefs).
         firmware = {"int16": "int16_t", "Int16": "int16_t", "Uint16": "uint16_t",
                     "int32": "int32_t", "Int32": "int32_t", "Uint32": "uint32_t",
@@ -99,6 +112,26 @@ class Target:
         for q in range(1, 31):
             names[f"_iq{q}"] = names["long"]
         object.__setattr__(self, "types", names)
+
+    def limits(self) -> dict:
+        """``<limits.h>`` on this target: macro name → body text, as the headers write them
+        (a minimum is ``-MAX - 1`` so that it keeps a signed type)."""
+        t = self.types
+        out = {"CHAR_BIT": str(self.char_bits), "MB_LEN_MAX": "1"}
+        for prefix, name, suffix in (("SCHAR", "signed char", ""), ("SHRT", "short", ""),
+                                     ("INT", "int", ""), ("LONG", "long", "L"),
+                                     ("LLONG", "long long", "LL")):
+            mx = t[name].max
+            out[f"{prefix}_MAX"] = f"{mx}{suffix}"
+            out[f"{prefix}_MIN"] = f"(-{mx}{suffix} - 1)"
+        for prefix, name, suffix in (("UCHAR", "unsigned char", ""), ("USHRT", "unsigned short", ""),
+                                     ("UINT", "unsigned int", "U"), ("ULONG", "unsigned long", "UL"),
+                                     ("ULLONG", "unsigned long long", "ULL")):
+            out[f"{prefix}_MAX"] = f"{t[name].max}{suffix}"
+        c = t["char"]
+        out["CHAR_MAX"], out["CHAR_MIN"] = (out["SCHAR_MAX"], out["SCHAR_MIN"]) if c.signed \
+            else (out["UCHAR_MAX"], "0")
+        return out
 
     def type_named(self, name: str) -> CType:
         """The type a spelling denotes; ``KeyError`` when unknown on this target."""

@@ -33,7 +33,7 @@ from dataclasses import dataclass, field
 __all__ = [
     "CType", "CInt", "CDivisionByZero",
     "INT16", "UINT16", "INT32", "UINT32", "INT64",
-    "C2000_TYPES", "wrap_to", "fits", "trunc_div",
+    "C2000_TYPES", "wrap_to", "convert", "fits", "trunc_div",
 ]
 
 
@@ -82,6 +82,18 @@ def wrap_to(value: int, ctype: CType) -> int:
     if ctype.signed and v > ctype.max:
         v -= 1 << ctype.bits
     return v
+
+
+def convert(value: int, ctype: CType) -> int:
+    """``value`` converted to ``ctype`` as C converts (C99 6.3.1.2-3): modulo 2**bits, except
+    that ``_Bool`` is 1 for any non-zero value.
+
+    >>> convert(70000, UINT16), convert(2, CType("_Bool", 8, False))
+    (4464, 1)
+    """
+    if ctype.name == "_Bool":
+        return int(value != 0)
+    return wrap_to(value, ctype)
 
 
 def fits(value: int, ctype: CType) -> bool:

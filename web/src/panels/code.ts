@@ -6,7 +6,7 @@ import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
-import type { TraceExample, TraceLine } from '../api-types';
+import type { TraceExample, TraceLine, TraceTerm } from '../api-types';
 import type { ApiErr, Ok } from '../protocol';
 
 type TraceOk = Ok<'trace'>;
@@ -17,6 +17,8 @@ let state: CodeState | null = null;
 let examples: TraceExample[] | null = null;
 let targets: string[] = FALLBACK_TARGETS;
 let inputs: string[] = [];
+/** The functions the pasted code defines (from the last reply that parsed it). */
+let functions: string[] = [];
 let main: Reply | null = null;
 let other: Reply | null = null;
 let lastKey = '';
@@ -67,6 +69,19 @@ function run(ctx: PanelContext): void {
     if (id !== seq) return;
     main = a;
     other = b;
+    const found = a?.functions ?? [];
+    if (JSON.stringify(found) !== JSON.stringify(functions)) {
+      functions = found;
+      builtFor = ''; // the function menu changes
+      const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
+      if (el && lastCtx) codePanel.render(el, lastCtx);
+    }
+    // A file of functions and nothing else to run: start with the last one defined.
+    if (a && !a.ok && a.field === 'entry' && !s.entry && found.length) {
+      s.entry = found[found.length - 1];
+      run(ctx);
+      return;
+    }
     const names = a?.inputs ?? inputs;
     if (JSON.stringify(names) !== JSON.stringify(inputs)) {
       inputs = names;
@@ -122,7 +137,8 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
     const differs = o !== null && o.value !== s.value;
     rows.push(h('tr', { class: `step${differs ? ' differs' : ''}${s.flags.length ? ' flagged' : ''}` },
       h('td', { class: 'pos' }, `${s.line}:${s.column}`),
-      h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null),
+      h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
+        ...s.terms.map((tm, j) => (tm.call && tm.steps ? callSteps(tm, `${k}.terms.${j}`) : null))),
       h('td', {}, s.var ? h('code', {}, s.var) : ''),
       h('td', { class: 'r' }, intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
       h('td', {}, flagChips(s.flags)),
@@ -149,6 +165,20 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
   });
   const head = ['L:C', t('codeSource'), t('codeVariable'), a.target, t('flags'), ...(b ? [b.target, t('flags')] : [])];
   return table(head, rows, 'code-steps');
+}
+
+/** The statements a call ran, under the call (keys follow the JSON path: ….terms.J.steps.K). */
+function callSteps(tm: TraceTerm, key: string): HTMLElement {
+  const steps = tm.steps ?? [];
+  const rows = steps.map((s, i) => h('tr', { class: s.flags.length ? 'flagged' : '' },
+    h('td', { class: 'pos' }, `${s.line}:${s.column}`),
+    h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
+      ...s.terms.map((inner, j) => (inner.call && inner.steps ? callSteps(inner, `${key}.steps.${i}.terms.${j}`) : null))),
+    h('td', {}, s.var ? h('code', {}, s.var) : ''),
+    h('td', { class: 'r' }, s.value === null ? '' : intCell(`${key}.steps.${i}.value`, s.value, s.hex), h('div', { class: 'ctype' }, s.type)),
+    h('td', {}, flagChips(s.flags))));
+  return h('details', { class: 'code-call' }, h('summary', {}, t('codeCall', { name: tm.call ?? '', n: steps.length })),
+    table(['L:C', t('codeSource'), t('codeVariable'), '', t('flags')], rows, 'code-steps'));
 }
 
 function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
@@ -243,7 +273,7 @@ export const codePanel: Panel = {
     loadExamples(ctx);
     // Rebuilding the editor reads its scroll position, which forces a layout of the whole page:
     // on a new report (every keystroke in the form) only the inputs and the trace are refreshed.
-    const key = JSON.stringify([getLang(), examples?.length ?? -1, targets, s.target, s.vs]);
+    const key = JSON.stringify([getLang(), examples?.length ?? -1, targets, s.target, s.vs, functions, s.entry]);
     if (builtFor === key && el.querySelector('.code-panel')) {
       update(el, ctx);
       compute(ctx, ctx.report ? 0 : 400);
@@ -282,6 +312,13 @@ export const codePanel: Panel = {
             s.vs = v;
             changed();
           })),
+          functions.length || s.entry ? h('label', { title: t('codeEntryHint') }, `${t('codeEntry')} `,
+            select('entry', s.entry ?? '', [['', t('codeEntryNone')], ...[...new Set([...functions, ...(s.entry ? [s.entry] : [])])].map((x): [string, string] => [x, `${x}()`])], (v) => {
+              s.entry = v;
+              s.set = {};
+              changed();
+            }),
+            h('span', { class: 'err', 'data-err-for': 'entry' }, errorFor('entry'))) : null,
           h('button', { type: 'button', class: 'code-share', onclick: () => void share(document.getElementById('app') ?? document.body, false) }, t('codeShare'))),
         h('div', { class: 'code-grid' },
           h('div', { class: 'code-left' },

@@ -1,0 +1,377 @@
+"""pulab.ctrace on whole translation units: functions, structs, pointers, arrays, loops.
+
+The routines here are written for these tests in the shapes real motor-control code takes
+(a PI handle passed by pointer with its integrator written in one branch, Clarke/Park with
+out-parameters and a helper function, a FIR over a global ring buffer and a const table, an
+integer square root with while loops).  Hand-worked cases pin the semantics; the compiler
+cross-check runs the same units through gcc -m32 and avr-gcc + simavr
+(tests/py/ctrace_compilers.py, which never imports pulab) and requires every output equal.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import random
+import subprocess
+import sys
+
+import pytest
+
+from conftest import ROOT, chinese
+from ctrace_compilers import Unit, available, run_unit
+from ctrace_gen import random_vector
+from pulab.api import trace_json
+from pulab.ctrace import TraceError, compile_code, run_checked, trace
+from pulab.schema.errors import InputError
+
+PI = r"""
+#include <stdint.h>
+typedef struct
+{
+  int16_t kp_gain;
+  int16_t ki_gain;
+  int32_t integral;
+  int32_t upper_integral, lower_integral;
+  int16_t upper_out;
+  int16_t lower_out;
+  uint16_t kp_shift;
+  uint16_t ki_shift;
+} PiState;
+
+static inline int32_t clamp32(int32_t v, int32_t lo, int32_t hi)
+{
+  return v < lo ? lo : (v > hi ? hi : v);
+}
+
+__attribute__((noinline)) int16_t pi_step(PiState *s, int16_t err)
+{
+  int32_t p_term, i_term, out;
+  p_term = (int32_t)s->kp_gain * err;
+  i_term = (int32_t)(*s).ki_gain * err;
+  if (i_term != 0)
+  {
+    s->integral = clamp32(s->integral + i_term, s->lower_integral, s->upper_integral);
+  }
+  out = (p_term >> s->kp_shift) + (s->integral >> s->ki_shift);
+  if (out > s->upper_out) out = s->upper_out;
+  else if (out < s->lower_out) out = s->lower_out;
+  return (int16_t)out;
+}
+"""
+
+PARK = r"""
+#include <stdint.h>
+typedef struct { int16_t a; int16_t b; } ab_t;
+typedef struct dq_tag { int16_t d, q; } dq_t;
+#define ONE_BY_SQRT3_Q15 18919
+
+static void clarke(int16_t ia, int16_t ib, ab_t *out)
+{
+  int32_t t;
+  out->a = ia;
+  t = ((int32_t)ia + 2 * (int32_t)ib) * ONE_BY_SQRT3_Q15;
+  out->b = (int16_t)(t >> 15);
+}
+
+void park(int16_t ia, int16_t ib, int16_t sin_q15, int16_t cos_q15, struct dq_tag *dq,
+          int16_t *mag_sq)
+{
+  ab_t ab;
+  clarke(ia, ib, &ab);
+  dq->d = (int16_t)(((int32_t)ab.a * cos_q15 + (int32_t)ab.b * sin_q15) >> 15);
+  dq->q = (int16_t)(((int32_t)ab.b * cos_q15 - (int32_t)ab.a * sin_q15) >> 15);
+  *mag_sq = (int16_t)(((int32_t)dq->d * dq->d + (int32_t)dq->q * dq->q) >> 16);
+}
+"""
+
+FIR = r"""
+#include <stdint.h>
+#define TAPS 5
+static const int16_t coeff[TAPS] = {2048, 8192, 12288, 8192, 2048};
+int16_t history[TAPS];
+uint16_t head;
+
+int16_t fir_push(int16_t x)
+{
+  int32_t acc = 0;
+  uint16_t k, idx;
+  history[head] = x;
+  idx = head;
+  for (k = 0; k < TAPS; k++)
+  {
+    acc += (int32_t)coeff[k] * history[idx];
+    if (idx == 0) idx = TAPS - 1; else idx--;
+  }
+  head = (uint16_t)(head + 1 == TAPS ? 0 : head + 1);
+  return (int16_t)(acc >> 15);
+}
+"""
+
+SVM = r"""
+#include <stdint.h>
+typedef struct { int16_t alpha, beta; uint16_t ta, tb, tc; uint8_t sector; } svm_t;
+#define SQRT3_BY_2_Q15 28378
+
+void svm(svm_t *s)
+{
+  int32_t x = s->beta;
+  int32_t y = (((int32_t)SQRT3_BY_2_Q15 * s->alpha) >> 15) - (x >> 1);
+  int32_t z = -(((int32_t)SQRT3_BY_2_Q15 * s->alpha) >> 15) - (x >> 1);
+  uint8_t sec = 0;
+  if (x > 0) sec |= 1;
+  if (y > 0) sec |= 2;
+  if (z > 0) sec |= 4;
+  s->sector = sec;
+  switch (sec)
+  {
+    case 3:
+      s->ta = (uint16_t)(16384 + (y >> 1));
+      s->tb = (uint16_t)(16384 + (x >> 1));
+      break;
+    case 1:
+    case 5:
+      s->ta = (uint16_t)(16384 - (z >> 1));
+      s->tb = (uint16_t)_IQabs(x);
+      break;
+    case 6:
+      s->tc = 1;
+    default:
+      s->ta = s->tb = s->tc = 16384;
+  }
+}
+"""
+
+ISQRT = r"""
+#include <stdint.h>
+uint16_t isqrt32(uint32_t v)
+{
+  uint32_t res = 0;
+  uint32_t bit = (uint32_t)1 << 30;
+  while (bit > v) bit >>= 2;
+  do {
+    if (bit == 0) break;
+    if (v >= res + bit) { v -= res + bit; res = (res >> 1) + bit; }
+    else res >>= 1;
+    bit >>= 2;
+  } while (1);
+  return (uint16_t)res;
+}
+"""
+
+
+def test_pi_through_a_pointer_with_a_helper():
+    sets = {"err": 100, "s.kp_gain": 300, "s->ki_gain": 20, "s.integral": 1000,
+            "s.upper_integral": 2000, "s.lower_integral": -2000, "s.upper_out": 500,
+            "s.lower_out": -500, "s.kp_shift": 4, "s.ki_shift": 2}
+    r = trace(PI, "c28x", sets, entry="pi_step")
+    v = r["vars"]
+    # i_term = 2000; the integral 1000 + 2000 = 3000 clamps to 2000;
+    # out = (300·100 >> 4) + (2000 >> 2) = 1875 + 500 = 2375 → clamped to 500
+    assert (v["s.integral"]["value"], v["return"]["value"]) == (2000, 500)
+    assert v["s.ki_gain"]["input"] and v["return"]["type"] == "int16_t"
+    # the integrator state is an input although it is written only inside the if
+    assert r["inputs"] == ["err", "s.kp_gain", "s.ki_gain", "s.integral", "s.lower_integral",
+                           "s.upper_integral", "s.kp_shift", "s.ki_shift", "s.upper_out",
+                           "s.lower_out"]
+    call = next(t for s in r["steps"] for t in s["terms"] if t.get("call") == "clamp32")
+    assert call["value"] == 2000 and call["steps"][-1]["var"] == "return"
+
+
+def test_integrator_written_in_one_branch_and_read_on_another_path_is_an_input():
+    code = ("int32_t integ;\nint16_t step(int16_t e, int16_t run) {\n"
+            "  if (run) integ = integ + e; else integ = 0;\n  return (int16_t)integ; }\n"
+            "int16_t other(int16_t e) { if (e > 0) integ = e; return (int16_t)integ; }")
+    assert compile_code(code, "arm", entry="step").inputs == ["e", "run", "integ"]
+    # written on every path before the read: not an input
+    assert compile_code(code.replace("integ + e", "e"), "arm", entry="step").inputs == \
+        ["e", "run"]
+    # written on one path, read after the if: an input
+    assert compile_code(code, "arm", entry="other").inputs == ["e", "integ"]
+
+
+def test_out_parameters_and_local_structs():
+    r = trace(PARK, "avr", {"ia": 1000, "ib": -500, "sin_q15": 0, "cos_q15": 32767},
+              entry="park")
+    v = r["vars"]
+    # beta = (1000 - 1000)·18919 >> 15 = 0; d = 1000·32767 >> 15 = 999 (floor), q = 0
+    assert (v["ab.a"]["value"], v["ab.b"]["value"]) == (1000, 0)
+    assert (v["dq.d"]["value"], v["dq.q"]["value"], v["*mag_sq"]["value"]) == (999, 0, 15)
+    assert "return" not in v and r["inputs"] == ["ia", "ib", "sin_q15", "cos_q15"]
+    # the call's statements are under the call, with the caller's object names
+    call = r["steps"][4]["terms"][0]
+    assert call["call"] == "clarke" and [s["var"] for s in call["steps"]] == \
+        ["ab.a", "clarke:t", "ab.b"]
+
+
+def test_loops_tables_and_globals():
+    sets = {"x": 1000, "head": 4, **{f"history[{i}]": 100 * i for i in range(5)}}
+    r = trace(FIR, "arm", sets, entry="fir_push")
+    v = r["vars"]
+    # history = [0, 100, 200, 300, 1000]; taps from idx 4 down: 2048·1000 + 8192·300 +
+    # 12288·200 + 8192·100 + 2048·0 = 7782400; >> 15 = 237 (floor of 237.5)
+    assert v["return"]["value"] == 237 and v["head"]["value"] == 0
+    assert v["history[4]"]["value"] == 1000
+    loops = [s["branch"] for s in r["steps"] if s.get("branch") in ("loop", "exit")]
+    assert loops == ["loop"] * 5 + ["exit"]
+    assert trace(ISQRT, "avr", {"v": 4000000000}, entry="isqrt32")["vars"]["return"][
+        "value"] == 63245  # floor(sqrt(4e9)) = 63245.55…
+
+
+def test_switch_falls_through_to_the_next_label():
+    r = trace(SVM, "arm", {"s.alpha": 0, "s.beta": -100}, entry="svm")
+    v = r["vars"]
+    # x = -100, y = 50, z = 50: sector 6 sets tc = 1, then falls into default: all 16384
+    assert v["s.sector"]["value"] == 6 and [v[f"s.t{c}"]["value"] for c in "abc"] == [16384] * 3
+    assert next(s for s in r["steps"] if s["code"].startswith("switch"))["branch"] == "case 6"
+    r = trace(SVM, "arm", {"s.alpha": 0, "s.beta": 100}, entry="svm")
+    # x = 100, y = z = -50: sector 1 shares case 5's statements; _IQabs(100) = 100
+    assert (r["vars"]["s.ta"]["value"], r["vars"]["s.tb"]["value"]) == (16409, 100)
+    assert "s.tc" not in r["vars"]  # never written, never read
+
+
+def test_unset_inputs_error_names_them_or_read_as_zero():
+    with pytest.raises(InputError) as e:
+        trace(PI, "arm", {"err": 1}, entry="pi_step")
+    assert e.value.field == "set.s.kp_gain" and "s.ki_gain" in e.value.reason
+    assert chinese(e.value.message_zh)
+    r = trace(PI, "arm", {"err": 1, "s.ki_gain": 4}, entry="pi_step", zero_unset=True)
+    assert r["vars"]["s.integral"]["value"] == 0 and r["vars"]["s.kp_gain"]["input"]
+
+
+@pytest.mark.parametrize("code,entry,sets,field,text", [
+    (PI, "nope", {}, "entry", "no function nope in the code (functions: clamp32, pi_step)"),
+    (PI, None, {}, "entry", "choose the function to run (functions: clamp32, pi_step)"),
+    ("int f(int x) { return f(x); }", "f", {"x": 1}, "code", "f() calls itself"),
+    ("int f(int x) { if (x) return 1; }", "f", {"x": 0}, "code", "f() ends without 'return'"),
+    ("int t[3]; int f(int i) { return t[i]; }", "f", {"i": 3}, "code",
+     "index 3 is outside 0..2"),
+    ("int f(int x) { while (x) { x = 1; } return x; }", "f", {"x": 1}, "code",
+     "more than 10000 statements executed"),
+    ("struct s; int f(struct s *p) { return 0; }", "f", {}, "code",
+     "struct s is declared but its fields are not pasted"),
+    ("typedef struct { int a; } S; int f(S *p) { return p->b; }", "f", {}, "code",
+     "struct S has no field b"),
+    ("int f(int x) { return g(x); }", "f", {"x": 1}, "code", "unknown function g()"),
+    ("int f(int x) { int y; return y; }", "f", {"x": 1}, "code",
+     "y is read before it has a value"),
+    ("int f(int x) { return x; }", "f", {"q": 1}, "set.q", "no variable q is declared"),
+])
+def test_errors_name_the_construct(code, entry, sets, field, text):
+    with pytest.raises(InputError) as e:
+        trace(code, "arm", sets, entry=entry, zero_unset=True)
+    assert e.value.field == field and text in e.value.message, e.value.message
+    assert chinese(e.value.message_zh)
+    if isinstance(e.value, TraceError):
+        assert e.value.line >= 1 and e.value.column >= 1
+
+
+def test_api_offers_the_functions_and_takes_entry():
+    r = json.loads(trace_json(json.dumps({"code": PI})))
+    assert r["ok"] is False and r["field"] == "entry" and r["functions"] == ["clamp32",
+                                                                             "pi_step"]
+    r = json.loads(trace_json(json.dumps({"code": PARK, "entry": "park", "target": "arm",
+                                          "set": {"ia": 1, "ib": 2}, "zero_unset": True})))
+    assert r["ok"] and r["entry"] == "park" and r["vars"]["dq.d"]["value"] == 0
+
+
+def test_cli_entry_and_text_shows_calls_nested(tmp_path):
+    f = tmp_path / "park.c"
+    f.write_text(PARK)
+    cmd = [sys.executable, "-m", "pulab", "trace", str(f), "--target", "arm", "--entry", "park",
+           "--set", "ia=1000", "--set", "ib=-500", "--zero-unset", "--format", "text"]
+    p = subprocess.run(cmd, capture_output=True, text=True, cwd=ROOT,
+                       env={**os.environ, "PYTHONPATH": str(ROOT / "py")})
+    assert p.returncode == 0, p.stderr
+    lines = p.stdout.splitlines()
+    assert lines[0].startswith("target arm, GLOBAL_Q 24; entry park; inputs: ia, ib")
+    at = next(i for i, l in enumerate(lines) if l.strip().startswith("call clarke()"))
+    assert lines[at + 1].startswith("    ") and "ab.a = 1000" in lines[at + 1]
+    p = subprocess.run(cmd[:-3], capture_output=True, text=True, cwd=ROOT,
+                       env={**os.environ, "PYTHONPATH": str(ROOT / "py")})
+    # the first unset input read is the field; the message names every unset input
+    assert p.returncode == 2 and p.stderr.startswith("error: set.cos_q15: 20:38: ")
+    assert "(unset inputs: sin_q15, cos_q15;" in p.stderr
+    assert len(p.stderr.strip().splitlines()) == 1
+
+
+UNITS = {
+    "pi": (Unit(PI, "pi_step", [("PiState *", "s"), ("int16_t", "err")],
+                [("int16_t", "err"), ("int16_t", "s.kp_gain"), ("int16_t", "s.ki_gain"),
+                 ("int32_t", "s.integral"), ("int32_t", "s.upper_integral"),
+                 ("int32_t", "s.lower_integral"), ("int16_t", "s.upper_out"),
+                 ("int16_t", "s.lower_out"), ("uint16_t", "s.kp_shift"),
+                 ("uint16_t", "s.ki_shift")],
+                [("int16_t", "return"), ("int32_t", "s.integral")]),
+           {"s.kp_shift": (0, 15), "s.ki_shift": (0, 31)}),
+    "park": (Unit(PARK, "park", [("int16_t", "ia"), ("int16_t", "ib"), ("int16_t", "sin_q15"),
+                                 ("int16_t", "cos_q15"), ("struct dq_tag *", "dq"),
+                                 ("int16_t *", "mag_sq")],
+                  [("int16_t", "ia"), ("int16_t", "ib"), ("int16_t", "sin_q15"),
+                   ("int16_t", "cos_q15")],
+                  [("int16_t", "dq.d"), ("int16_t", "dq.q"), ("int16_t", "*mag_sq")]), {}),
+    "fir": (Unit(FIR, "fir_push", [("int16_t", "x")],
+                 [("int16_t", "x"), ("uint16_t", "head")] +
+                 [("int16_t", f"history[{i}]") for i in range(5)],
+                 [("int16_t", "return"), ("uint16_t", "head")] +
+                 [("int16_t", f"history[{i}]") for i in range(5)]), {"head": (0, 4)}),
+    "svm": (Unit(SVM, "svm", [("svm_t *", "s")], [("int16_t", "s.alpha"), ("int16_t", "s.beta")],
+                 [("uint16_t", "s.ta"), ("uint16_t", "s.tb"), ("uint16_t", "s.tc"),
+                  ("uint8_t", "s.sector")]), {}),
+    "isqrt": (Unit(ISQRT, "isqrt32", [("uint32_t", "v")], [("uint32_t", "v")],
+                   [("uint16_t", "return")]), {}),
+}
+VECTORS = 150
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_units_match_the_compilers(target):
+    missing = available(target)
+    if missing:
+        msg = f"SKIPPED: compiler cross-check for {target} needs {', '.join(missing)}"
+        if os.environ.get("CI") == "true":
+            pytest.fail(msg + " — mandatory under CI=true")
+        pytest.skip(msg)
+    rng = random.Random(f"units-{target}")
+    pairs = 0
+    for name, (unit, ranges) in UNITS.items():
+        checked = compile_code(unit.code, target, entry=unit.entry)
+        assert sorted(checked.inputs) == sorted(n for _, n in unit.inputs), name
+        vectors, expected = [], []
+        while len(vectors) < VECTORS:
+            vec = random_vector(rng, unit, target)
+            for k, (lo, hi) in ranges.items():
+                vec[k] = lo + vec[k] % (hi - lo + 1)
+            ev = run_checked(checked, vec, None, record=False)
+            if ev.undefined & {"shift_count", "division_overflow"}:
+                continue
+            vectors.append(vec)
+            # a field the code leaves alone keeps the driver's zero (its objects are memset)
+            expected.append({n: 0 if ev.values[n] is None else ev.values[n]
+                             for _, n in unit.outputs})
+        for vec, e, g in zip(vectors, expected, run_unit(unit, vectors, target)):
+            pairs += 1
+            assert e == g, f"{name} inputs {vec}: tracer {e} vs compiler {g}"
+    print(f"\nunits vs {target}: {pairs} vectors, 0 mismatches")
+    assert pairs == VECTORS * len(UNITS)
+
+
+CHAIN = "".join(f"int f{i}(int x) {{ return f{i + 1}(x); }}\n" for i in range(40)) + \
+    "int f40(int x) { return x; } int f(int x) { return f0(x); }"
+TREE = "".join(f"int f{i}(int x) {{ return f{i + 1}(x) + f{i + 1}(x); }}\n" for i in range(24)) + \
+    "int f24(int x) { return x; } int f(int x) { return f0(x); }"
+
+
+@pytest.mark.parametrize("code,text", [
+    ("int t[5000]; int f(int x) { return t[x]; }",
+     "array of 5000 elements: at most 4096 integers per object"),
+    (CHAIN, "calls nested more than 32 deep"),
+    (TREE, "the calls reach more than 200000 expressions: too large to trace"),
+    ("int f(int x) { int i; for (i = 0; i < 30000; i++) x++; return x; }",
+     "more than 10000 statements executed (a loop that does not end?)"),
+])
+def test_each_limit_is_a_one_line_error(code, text):
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", {"x": 1}, entry="f")
+    assert text in e.value.message and "\n" not in e.value.message
+    assert chinese(e.value.message_zh)
