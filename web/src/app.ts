@@ -23,6 +23,7 @@ import { registerOffline } from './offline';
 import { mark } from './page/marks';
 import { seedReport } from './page/numbers';
 import { applyTheme, linkToHost, themeParam } from './page/frame-link';
+import { codeStateFromSearch } from './code-share';
 
 /** Panels that call Python themselves: rendered again when it becomes ready. */
 const PYTHON_PANELS = PANELS.filter((p) => p.needsPython).map((p) => p.id);
@@ -59,6 +60,8 @@ export class App {
     }, pageEnv());
     this.form = new InputForm(root, this.session);
     this.layout = new Layout(root, this.embed);
+    // A link with the code panel's state (?code=…) opens on that panel's view.
+    if (codeStateFromSearch(location.search)) this.layout.openOn = 'code';
     this.layout.onPickProfile = (v) => {
       // Inovance is the default: left out, so the seed and the presets keep their links.
       const c = this.session.input.conventions ?? {};

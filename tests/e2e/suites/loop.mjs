@@ -139,6 +139,7 @@ export default async function loop(ctx) {
   await check('chapter 08 renders in both languages with the loop panel embedded', async () => {
     for (const lang of ['zh', 'en']) {
       await page.click(`button[data-lang="${lang}"]`);
+      await page.$eval('#panel-loop', (e) => e.scrollIntoView()); // back on its tab (Loops) from the explainer's
       await page.click('#panel-loop a.why');
       await page.waitForSelector('article.doc[data-chapter="08-loop-design"] [data-key="current_pi.d.pm_kp"][data-value]', { state: 'attached', timeout: 60_000 });
       await page.waitForSelector('article.doc [data-key="loop.current.d.phase_margin_deg"][data-value]', { state: 'attached', timeout: 60_000 });

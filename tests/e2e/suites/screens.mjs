@@ -26,17 +26,19 @@ export default async function screens(ctx) {
         const p = await newPage({ context: { viewport: { width: w, height: hgt } } });
         await p.goto(`${subSrv.url}?lang=${lang}`);
         await ready(p);
-        await p.waitForSelector('section.answer [data-mirror-of="vendor.Rpm.value"][data-value]');
+        await p.waitForSelector('section.answer [data-key="vendor.Rpm.value"][data-value]');
         const inView = async (sel) => {
           const r = await rect(p, sel);
           return r !== null && r.top >= 0 && r.bottom <= hgt && r.left >= 0 && r.right <= w;
         };
         for (const k of ['vendor.Rpm.value', 'vendor.LD.value', 'vendor.maxu.value', 'current_pi.d.pm_ki']) {
-          assert(await inView(`section.answer [data-mirror-of="${k}"]`), `${k} not on the first screen`);
-          assert(await p.$eval(`section.answer [data-mirror-of="${k}"]`, (e) => JSON.parse(e.dataset.value)) === seed.expected[k.split('.')[0]][k.split('.')[1]][k.split('.')[2]], `${k} value`);
+          assert(await inView(`section.answer [data-key="${k}"]`), `${k} not on the first screen`);
+          assert(await p.$eval(`section.answer [data-key="${k}"]`, (e) => JSON.parse(e.dataset.value)) === seed.expected[k.split('.')[0]][k.split('.')[1]][k.split('.')[2]], `${k} value`);
         }
         assert(await inView('section.answer .counts'), 'review summary not on the first screen');
         assert(await inView('select[name="answer.profile"]'), 'profile picker not on the first screen');
+        const tabs = await p.$$eval('nav.tabs a[data-view]', (as) => as.map((a) => a.getBoundingClientRect().right));
+        assert(tabs.every((r) => r <= w), `a tab off screen: ${tabs.map(Math.round)} at ${w}`);
         const doc = await p.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.scrollHeight]);
         assert(doc[0] <= w, `page ${doc[0]} px wide at ${w}`);
         await p.screenshot({ path: join(SHOTS, `screens-${w}-${lang}-first.png`) });
@@ -91,9 +93,9 @@ export default async function screens(ctx) {
     for (const v of ['ti', 'nxp', 'st', 'microchip']) {
       await p.selectOption('select[name="answer.profile"]', v);
       const names = Object.keys(want.profiles[v].constants);
-      const sel = `section.answer [data-mirror-of="profiles.${v}.constants.${names[0]}.value"][data-value]`;
+      const sel = `section.answer [data-key="profiles.${v}.constants.${names[0]}.value"][data-value]`;
       await p.waitForSelector(sel, { timeout: 30_000 });
-      const shown = await p.$$eval('section.answer [data-mirror-of][data-value]', (els) => els.map((e) => [e.dataset.mirrorOf, JSON.parse(e.dataset.value)]));
+      const shown = await p.$$eval('section.answer [data-key][data-value]', (els) => els.map((e) => [e.dataset.key, JSON.parse(e.dataset.value)]));
       const bad = shown.filter(([k, x]) => {
         const [, , , name] = k.split('.');
         return want.profiles[v].constants[name]?.value !== x;
@@ -187,6 +189,8 @@ export default async function screens(ctx) {
     await page.waitForFunction(() => document.documentElement.dataset.numbers === 'stale');
     const left = await page.$$eval('aside.inputs input[type="text"]', (els) => els.filter((e) => e.value !== '').map((e) => `${e.name}=${e.value}`));
     assert(left.length === 0, `seed values left: ${left.join(', ')}`);
+    const hints = await page.$$eval('aside.inputs input[type="text"]', (els) => els.filter((e) => e.placeholder !== '').map((e) => `${e.name} ${e.placeholder}`));
+    assert(hints.length === 0, `placeholders of the example motor: ${hints.join(', ')}`);
     assert(await page.$eval('details[data-section="datasheet"]', (d) => d.open), 'datasheet section not open');
     assert(await page.isVisible('aside.inputs .blank-start'), 'no note that the form is blank');
     assert(!(await page.evaluate(() => location.hash.includes('rated_voltage_v'))), 'seed still in the link');
@@ -230,10 +234,10 @@ export default async function screens(ctx) {
         await page.selectOption('select[name="answer.profile"]', v);
         const first = Object.keys(consts)[0];
         await page.waitForFunction(([p, x]) => {
-          const e = document.querySelector(`section.answer [data-mirror-of="${p}"][data-value]`);
+          const e = document.querySelector(`section.answer [data-key="${p}"][data-value]`);
           return e && JSON.parse(e.dataset.value) === x;
         }, [`profiles.${v}.constants.${first}.value`, consts[first].value], { timeout: 15_000 });
-        const chips = new Map(await page.$$eval('section.answer [data-mirror-of][data-value]', (els) => els.map((e) => [e.dataset.mirrorOf, JSON.parse(e.dataset.value)])));
+        const chips = new Map(await page.$$eval('section.answer [data-key][data-value]', (els) => els.map((e) => [e.dataset.key, JSON.parse(e.dataset.value)])));
         const off = Object.entries(consts).filter(([k, c]) => chips.get(`profiles.${v}.constants.${k}.value`) !== c.value);
         assert(off.length === 0, `${v}: ${off.map(([k, c]) => `${k} page ${chips.get(`profiles.${v}.constants.${k}.value`)} by hand ${c.value}`).join(', ')}`);
       }

@@ -7,7 +7,7 @@ export default dict(
     view_firmware: 'Firmware',
     view_loops: 'Loops',
     view_tools: 'Tools',
-    view_learn: 'Explainer',
+    view_learn: 'Learn',
     view_more: 'More',
     viewsLabel: 'Views',
     answerProfile: 'Firmware you ship',

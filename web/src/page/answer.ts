@@ -1,6 +1,6 @@
 // The answer at the top of every screen: the integers of the firmware the reader ships (picked
-// here, remembered) and the review's summary. Numbers are mirrors (data-mirror-of) of those in the
-// panels; a firmware that cannot hold the motor says why here too, with the same box as its panel.
+// here) and the review's summary. Its numbers carry data-key like the panels' (the page's only
+// repeated data-keys, equal values); a firmware that cannot hold the motor says why here too, with the same box as its panel.
 import { h, num, patch } from '../dom';
 import { t, type Key } from '../i18n';
 import { VENDOR_NAMES } from '../report-types';
@@ -16,7 +16,9 @@ export function shippedProfile(ctx: Pick<PanelContext, 'input'>): Vendor {
 }
 
 function chip(name: string, path: string, value: number | undefined, bad = false): HTMLElement {
-  return h('span', { class: `int-chip${bad ? ' bad' : ''}` }, h('code', {}, name), ' ', num(path, value, { kind: 'int', mirror: true }));
+  // data-key, not a mirror: the strip is on every tab, so a test (or a reader of the DOM) that
+  // waits for a number to be visible finds it here whichever tab is open.
+  return h('span', { class: `int-chip${bad ? ' bad' : ''}` }, h('code', {}, name), ' ', num(path, value, { kind: 'int' }));
 }
 
 function notHeld(name: string): HTMLElement {

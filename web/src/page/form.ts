@@ -142,7 +142,9 @@ export class InputForm {
 
   /** Derived and optional fields show the value Python used ("= 1.23") as placeholder. */
   updatePlaceholders(): void {
-    const report = this.session.report;
+    // Only from a report of the input in the form: never another motor's values (a blank datasheet
+    // start kept the example's "= 220" under fields it had emptied).
+    const report = this.session.outdated ? null : this.session.report;
     for (const f of ALL_FIELDS) {
       const el = this.root.querySelector<HTMLInputElement>(`.inputs input[name="${f.path}"]`);
       if (!el || f.kind === 'bool') continue;

@@ -81,7 +81,7 @@ export class Layout {
       return;
     }
     this.views = viewsFor(panels.map((p) => p.id));
-    if (!this.views.some((v) => v.id === this.view)) this.view = this.views[0]?.id ?? '';
+    if (!this.views.some((v) => v.id === this.view)) this.view = (this.openOn && this.viewOf(this.openOn)) || (this.views[0]?.id ?? '');
     for (const sec of sections) this.revealOnScroll(sec);
     // Bases and per-unit values side by side on wide screens.
     const ib = panels.findIndex((p) => p.id === 'bases');
@@ -96,7 +96,7 @@ export class Layout {
         h('div', { class: 'content' },
           h('nav', { class: 'tabs', 'aria-label': t('viewsLabel') },
             h('button', { type: 'button', class: 'inputs-toggle', 'aria-controls': 'inputs', onclick: openInputs }, t('inputsOpen')),
-            this.views.map((v) => h('a', { href: `#panel-${v.panels[0]}`, 'data-view': v.id, role: 'tab' }, t(`view_${v.id}` as Key)))),
+            this.views.map((v) => h('a', { href: `#panel-${v.panels[0]}`, 'data-view': v.id }, t(`view_${v.id}` as Key)))),
           h('nav', { class: 'subtabs' }),
           h('main', { class: this.settled === 'yes' ? 'panels settled' : 'panels' }, h('div', { class: 'stale-banner', role: 'status' }), h('div', { class: 'global-error' }),
             h('section', { class: 'answer', 'aria-label': t('answerIntegers') }), ...body))),
@@ -111,6 +111,8 @@ export class Layout {
   }
 
   private resizeWired = false;
+  /** The panel whose view the page opens on (a link that carries that panel's state), else the first view. */
+  openOn: PanelId | null = null;
   /** The views (tabs) of this page, and the one shown. */
   private views: View[] = [];
   private view = '';
@@ -126,7 +128,8 @@ export class Layout {
     }
     for (const a of this.root.querySelectorAll<HTMLElement>('nav.tabs a[data-view]')) {
       a.classList.toggle('on', a.dataset.view === id);
-      a.setAttribute('aria-selected', String(a.dataset.view === id));
+      if (a.dataset.view === id) a.setAttribute('aria-current', 'true');
+      else a.removeAttribute('aria-current');
     }
     this.markScrollersSoon();
     this.root.querySelector('nav.subtabs')?.replaceChildren(...(view.panels.length > 1
