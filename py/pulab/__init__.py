@@ -22,8 +22,11 @@ named at the end)::
     ctrace/       the C tracer: a user's own fixed-point code  lexer, parser, check, evaluate…
     analyses/     what is computed from a model                loop/, sim/, review, sweep,
                                                                integers, batch, slices
-    (top level)   the ways in and out                          report (dict → dict), api
-                                                               (JSON text → JSON text),
+    (top level)   the ways in and out                          report (dict → dict), qcalc
+                                                               (the Q calculator, dict →
+                                                               dict), api (JSON text → JSON
+                                                               text: call_json, one kind
+                                                               per request),
                                                                export (C header, CSV),
                                                                benchmark, __main__ (the
                                                                command line: parser, main,

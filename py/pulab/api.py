@@ -1,5 +1,12 @@
 """JSON-in, JSON-out entry points for the web worker (one call per request).
 
+Every request goes through :func:`call_json` (or :func:`call_json_steps`, the same in
+slices): one parser (:func:`pulab.schema.jsontext.parse`, its size and nesting limits) and
+one dispatch key, ``kind`` (:data:`KINDS`).  The older one-function-per-kind entry points
+(:func:`run_json`, :func:`sweep_json` with ``op``, :func:`vendors_json` with ``action``,
+:func:`export_json` with ``kind`` …) are kept: each reads its old key and calls the same
+handler.
+
 Errors never escape as exceptions: bad input comes back as
 ``{"ok": false, "field": ..., "message": ..., "message_zh": ..., "code": ..., "params": ...}``
 (:class:`pulab.schema.errors.InputError` as data, its texts from :mod:`pulab.schema.catalog`).
@@ -7,35 +14,40 @@ Errors never escape as exceptions: bad input comes back as
 Examples
 --------
 >>> import json
->>> json.loads(run_json('{"motor": {}}'))["field"]
+>>> json.loads(call_json("report", '{"motor": {}}'))["field"]
 'motor.rated_voltage_v'
->>> json.loads(qcalc_json('{"value": 0.5, "format": "Q0.15"}'))["result"]["raw"]
+>>> json.loads(call_json("qcalc", '{"value": 0.5, "format": "Q0.15"}'))["result"]["raw"]
 16384
+>>> json.loads(call_json("qcalc.encode", "{}"))["field"]
+'kind'
 """
 
 from __future__ import annotations
 
 import json
 import math
-import re
 
 from .schema.errors import InputError
 from .schema.validate import key_path, shown
 from .schema.jsontext import parse
-from .fixedpoint.qformat import OVERFLOWS, ROUNDINGS, decode, encode, parse_format
 from .export import c_header, sim_csv
+from .qcalc import qcalc
 from .report import report, report_steps
 from .analyses.slices import finish
-from .schema.textnum import ascii_text, parse_int, parse_real
 
-__all__ = ["run_json", "run_json_steps", "qcalc", "qcalc_json", "export_json", "sweep_json", "batch_json",
-           "trace_json", "trace_examples_json", "vendors_json"]
+__all__ = ["KINDS", "call_json", "call_json_steps", "run_json", "run_json_steps", "qcalc",
+           "qcalc_json", "export_json", "sweep_json", "batch_json", "trace_json",
+           "trace_examples_json", "vendors_json"]
 
 
 def _fail(e: InputError) -> str:
-    return json.dumps({"ok": False, "field": e.field, "message": e.message,
-                       "message_zh": e.message_zh, "code": e.code, "params": _strict(e.params)},
-                      allow_nan=False)
+    reply = {"ok": False, "field": e.field, "message": e.message, "message_zh": e.message_zh,
+             "code": e.code, "params": _strict(e.params)}
+    # The tracer's errors say where in the code, and which inputs the code has when it compiled.
+    for key in ("line", "column", "inputs", "functions"):
+        if hasattr(e, key):
+            reply[key] = getattr(e, key)
+    return json.dumps(reply, allow_nan=False)
 
 
 def _strict(v):
@@ -47,126 +59,238 @@ def _strict(v):
     return v
 
 
+# ---- the handlers: a parsed request → the reply's fields ----------------------------------
+
+def _report_steps(req):
+    return {"report": (yield from report_steps(req))}
+
+
+def _export_input(req) -> dict:
+    return report(req.get("input") if isinstance(req, dict) else None)
+
+
+def _export(what: str):
+    def handler(req) -> dict:
+        r = _export_input(req)
+        if what == "header":
+            return {"text": c_header(r)}
+        if "sim" not in r or what[4:] not in r["sim"]:
+            raise InputError("sim", code="no_simulation", kind=what[4:])
+        return {"text": sim_csv(r, what[4:])}
+    return handler
+
+
+def _sweep_plan(req):
+    from .analyses import sweep as sw  # imported on first use: report-only pages stay lean
+    return sw.make_plan(req)
+
+
+def _sweep(op: str):
+    def handler(req) -> dict:
+        from .analyses import sweep as sw
+        if op == "sweep":
+            return {"sweep": sw.sweep(req)}
+        plan = _sweep_plan(req)
+        if op == "plan":
+            return {"plan": sw.describe(plan)}
+        if op == "chunk":
+            return {"chunk": sw.chunk(plan, req.get("start", 0), req.get("count"))}
+        summaries = req.get("summaries")
+        if not isinstance(summaries, list):
+            raise InputError("sweep.summaries", code="summaries_list")
+        return {"summary": sw.merge(plan, summaries)}
+    return handler
+
+
+def _batch(req) -> dict:
+    from .analyses import batch as bt  # imported on first use: report-only pages stay lean
+    if not isinstance(req, dict):
+        raise InputError("batch", code="not_object", got=shown(req))
+    try:
+        columns, rows = bt.read_table(req.get("csv"))
+        start, count = req.get("start", 0), req.get("count", len(rows))
+        for name, v, hi in (("start", start, len(rows)), ("count", count, None)):
+            if isinstance(v, bool) or not isinstance(v, int) or v < 0 or (hi is not None and v > hi):
+                raise InputError(f"batch.{name}", code="integer_range", lo=0,
+                                 hi=hi if hi is not None else "N", got=shown(v))
+        names = bt.output_columns(columns)
+        out = bt.batch_rows(req["csv"], start, count)
+    except InputError:
+        raise
+    except ValueError as e:
+        raise InputError("input", code="json_invalid", detail=" ".join(str(e).split())) from None
+    return {"total": len(rows), "columns": names,
+            "rows": [[r.get(n, "") for n in names] for r in out],
+            "csv": bt.to_csv(names, out, start == 0)}
+
+
+_TRACE_KEYS = ("code", "target", "entry", "set", "global_q", "define", "zero_unset")
+
+
+def _trace(req) -> dict:
+    from .ctrace import compile_code, trace_checked
+    from .ctrace.parser import parse as parse_c
+    if not isinstance(req, dict):
+        raise InputError("input", code="not_object", got=shown(req))
+    unknown = set(req) - set(_TRACE_KEYS)
+    if unknown:
+        raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
+                         expected=", ".join(_TRACE_KEYS))
+    defines = req.get("define") or []
+    if not isinstance(defines, list):
+        raise InputError("define", "must be a list of NAME[=VALUE] texts")
+    sets = req.get("set") or {}
+    if not isinstance(sets, dict):
+        raise InputError("set", code="not_object", got=shown(sets))
+    zero_unset = req.get("zero_unset", False)
+    if not isinstance(zero_unset, bool):
+        raise InputError("zero_unset", f"must be true or false, got {shown(zero_unset)}")
+    code = req.get("code", "")
+    try:
+        checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
+                               req.get("entry") or None)
+    except InputError as e:
+        if e.field == "entry" and isinstance(code, str):
+            e.functions = list(parse_c(code).functions)  # the page offers them to pick from
+        raise
+    try:
+        reply = trace_checked(checked, sets, req.get("global_q"), zero_unset)
+    except InputError as e:
+        e.inputs = checked.inputs
+        e.functions = list(checked.functions)
+        raise
+    reply.pop("ok", None)
+    return reply
+
+
+def _trace_examples(req) -> dict:
+    from .ctrace import TARGETS
+    from .ctrace.examples import EXAMPLES
+    return {"targets": list(TARGETS), "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]}
+
+
+def _vendor_input(req) -> dict:
+    if not isinstance(req, dict):
+        raise InputError("request", code="not_json_object")
+    inp = req.get("input")
+    if not isinstance(inp, dict):
+        raise InputError("input", code="not_json_object")
+    return inp
+
+
+def _vendors(action: str):
+    def handler(req) -> dict:
+        from . import profiles
+        from .profiles.translate import translate
+        inp = _vendor_input(req)
+        if action == "header":
+            name = req.get("profile")
+            if name not in profiles.NAMES:
+                raise InputError("profile", code="not_choice", choices=", ".join(profiles.NAMES),
+                                 got=shown(name))
+            r = report({**inp, "profiles": inp.get("profiles") or {}})
+            return {"text": profiles.header(r, name)}
+        return {"translation": translate(inp, req.get("from"), req.get("axis", "q"),
+                                         req.get("values"))}
+    return handler
+
+
+#: Every request kind (the one dispatch key) → (the field its unreadable text is named by,
+#: its handler: parsed request → the reply's fields).  ``report`` is the one computed in
+#: slices (its handler is a generator).
+KINDS = {
+    "report": ("input", _report_steps),
+    "qcalc": ("qcalc", qcalc),
+    "export.header": ("input", _export("header")),
+    "export.csv_current": ("input", _export("csv_current")),
+    "export.csv_pll": ("input", _export("csv_pll")),
+    "sweep": ("sweep", _sweep("sweep")),
+    "sweep.plan": ("sweep", _sweep("plan")),
+    "sweep.chunk": ("sweep", _sweep("chunk")),
+    "sweep.merge": ("sweep", _sweep("merge")),
+    "batch": ("batch", _batch),
+    "trace": ("input", _trace),
+    "trace.examples": ("input", _trace_examples),
+    "vendors.header": ("input", _vendors("header")),
+    "vendors.translate": ("input", _vendors("translate")),
+}
+_STEPPED = {"report"}
+
+
+def _answer(kind, req):
+    """A generator: the JSON reply of ``kind`` on the parsed request ``req``."""
+    try:
+        if kind not in KINDS:
+            raise InputError("kind", code="not_choice", choices=", ".join(KINDS), got=shown(kind))
+        handler = KINDS[kind][1]
+        out = (yield from handler(req)) if kind in _STEPPED else handler(req)
+        return json.dumps({"ok": True, **out}, allow_nan=False)
+    except InputError as e:
+        return _fail(e)
+
+
+def call_json_steps(kind: str, text: str):
+    """:func:`call_json` in slices: a generator that yields None between slices (of a report's
+    simulation; other kinds return at once) and returns the same JSON text; closing it
+    cancels the computation."""
+    try:
+        req = parse(text, KINDS[kind][0] if kind in KINDS else "input")
+    except InputError as e:
+        return _fail(e)
+    return (yield from _answer(kind, req))
+
+
+def call_json(kind: str, text: str) -> str:
+    """The reply of request ``kind`` (a key of :data:`KINDS`) on the JSON ``text``.
+
+    Returns ``{"ok": true, ...}`` with the kind's reply (docs/contract.md, "API"), or
+    ``{"ok": false, "field", "message", "message_zh", "code", "params"}``.
+    """
+    return finish(call_json_steps(kind, text))
+
+
+# ---- the entry points of one kind each (kept: pages and scripts call them) ----------------
+
 def run_json(text: str) -> str:
     """``report`` on a JSON string; returns ``{"ok": true, "report": {...}}`` or an error."""
-    return finish(run_json_steps(text))
+    return call_json("report", text)
 
 
 def run_json_steps(text: str):
     """:func:`run_json` in slices: a generator that yields None between slices of the simulation
     and returns the same JSON text; closing it cancels the computation."""
-    try:
-        out = yield from report_steps(parse(text))
-        return json.dumps({"ok": True, "report": out}, allow_nan=False)
-    except InputError as e:
-        return _fail(e)
-
-
-def qcalc(req: dict) -> dict:
-    """The standalone Q-format calculator.
-
-    Parameters
-    ----------
-    req : dict
-        ``format`` (``Qm.n``/``UQm.n``, ``Qn`` with ``word_bits`` (default 16), or an
-        IQmath name ``iqN``/``_IQN``: Q N in a 32-bit long), and either ``value`` (a real
-        number or its text, full-width digits allowed, to encode with ``rounding`` and
-        ``overflow``) or ``raw`` (an integer or its text: decimal, ``0x…``, ``0b…``, to
-        decode; for a signed format a reading above its maximum up to 2^word_bits − 1 is
-        the register's bit pattern, taken as two's complement and flagged
-        ``unsigned_register``).
-
-    Returns
-    -------
-    dict
-        ``format`` (name, word_bits, frac_bits, signed, min, max, resolution) and
-        ``result`` (raw, hex, value, error, flags).
-    """
-    if not isinstance(req, dict):
-        raise InputError("qcalc", code="not_object", got=shown(req))
-    name = req.get("format", "")
-    if not isinstance(name, str):
-        raise InputError("qcalc.format", code="not_string", got=shown(name))
-    name = ascii_text(name)
-    word_bits = req.get("word_bits")
-    if word_bits is not None and (isinstance(word_bits, bool) or not isinstance(word_bits, int)):
-        raise InputError("qcalc.word_bits", code="not_integer", got=shown(word_bits))
-    iq = re.fullmatch(r"_?iq(\d*)", name, re.I)
-    if iq:
-        # TI IQmath: _iqN / _IQN is a 32-bit long with N fractional bits (GLOBAL_Q = 24).
-        name = f"Q{iq[1] or 24}"
-        word_bits = 32 if word_bits is None else word_bits
-    if word_bits is None and re.fullmatch(r"U?Q\d+", name, re.I):
-        word_bits = 16  # a short name like Q15 means a 16-bit word unless told otherwise
-    try:
-        fmt = parse_format(name, word_bits)
-    except (ValueError, TypeError):
-        if re.fullmatch(r"U?Q\d+(\.\d+)?", name, re.I):
-            raise InputError("qcalc.format", code="q_too_wide", name=name,
-                             bits=word_bits or 64) from None
-        raise InputError("qcalc.format", code="not_q_format", got=shown(req.get("format", ""))) from None
-    rounding = req.get("rounding", "nearest")
-    overflow = req.get("overflow", "saturate")
-    if rounding not in ROUNDINGS:
-        raise InputError("qcalc.rounding", code="not_choice", choices=", ".join(ROUNDINGS),
-                         got=shown(rounding))
-    if overflow not in OVERFLOWS:
-        raise InputError("qcalc.overflow", code="not_choice", choices=", ".join(OVERFLOWS),
-                         got=shown(overflow))
-    if req.get("raw") is not None:
-        raw = parse_int(req["raw"], "qcalc.raw")
-        flags = []
-        if fmt.signed and fmt.raw_max < raw < (1 << fmt.word_bits):
-            # A register reading (40000, 0x8000) is the word's bit pattern: two's complement.
-            raw -= 1 << fmt.word_bits
-            flags.append("unsigned_register")
-        if not fmt.raw_min <= raw <= fmt.raw_max:
-            hi = (1 << fmt.word_bits) - 1 if fmt.signed else fmt.raw_max
-            raise InputError("qcalc.raw", code="raw_range_for", lo=fmt.raw_min, hi=hi, fmt=fmt.name)
-        res = {"raw": raw, "value": decode(raw, fmt), "error": 0.0, "flags": flags}
-    else:
-        x = parse_real(req.get("value"), "qcalc.value")
-        try:
-            e = encode(x, fmt, rounding, overflow)
-        except OverflowError:
-            raise InputError("qcalc.value", code="q_outside", value=x, fmt=fmt.name,
-                             lo=fmt.min_value, hi=fmt.max_value) from None
-        res = {"raw": e.raw, "value": e.value, "error": e.error, "flags": e.flags}
-    mask = (1 << fmt.word_bits) - 1
-    res["hex"] = f"0x{res['raw'] & mask:0{(fmt.word_bits + 3) // 4}X}"
-    return {"format": {"name": fmt.name, "word_bits": fmt.word_bits, "frac_bits": fmt.frac_bits,
-                       "signed": fmt.signed, "min": fmt.min_value, "max": fmt.max_value,
-                       "resolution": fmt.resolution},
-            "result": res}
+    return call_json_steps("report", text)
 
 
 def qcalc_json(text: str) -> str:
-    """``qcalc`` on a JSON string; ``{"ok": true, ...}`` or an error naming the field."""
+    """:func:`pulab.qcalc.qcalc` on a JSON string; ``{"ok": true, ...}`` or an error naming
+    the field."""
+    return call_json("qcalc", text)
+
+
+def _by_key(text: str, field: str, key: str, default, kinds: dict, first) -> str:
+    """The reply of a request whose old key ``key`` (named ``field`` in errors) chooses its
+    kind: ``kinds`` maps the key's values to kinds of :data:`KINDS`.  An unknown value is
+    reported after ``first(request)``'s errors, as it always was."""
     try:
-        return json.dumps({"ok": True, **qcalc(parse(text, "qcalc"))})
+        req = parse(text, KINDS[next(iter(kinds.values()))][0])
+        what = req.get(key, default) if isinstance(req, dict) else default
+        if isinstance(what, (dict, list)) or what not in kinds:
+            first(req)
+            raise InputError(field, code="not_choice", choices=", ".join(kinds), got=shown(what))
     except InputError as e:
         return _fail(e)
+    return finish(_answer(kinds[what], req))
 
 
 def export_json(text: str) -> str:
-    """Exports for the page: ``{"input": {...}, "kind": "header"|"csv_current"|"csv_pll"}``.
+    """Exports for the page: ``{"input": {...}, "kind": "header"|"csv_current"|"csv_pll"}``
+    (the kinds ``export.header`` … of :func:`call_json`).
 
     Returns ``{"ok": true, "text": ...}`` or an error naming the field.
     """
-    try:
-        req = parse(text)
-        r = report(req.get("input") if isinstance(req, dict) else None)
-        kind = req.get("kind")
-        if kind == "header":
-            return json.dumps({"ok": True, "text": c_header(r)})
-        if kind in ("csv_current", "csv_pll"):
-            if "sim" not in r or kind[4:] not in r["sim"]:
-                raise InputError("sim", code="no_simulation", kind=kind[4:])
-            return json.dumps({"ok": True, "text": sim_csv(r, kind[4:])})
-        raise InputError("kind", code="not_choice", choices="header, csv_current, csv_pll",
-                         got=shown(kind))
-    except InputError as e:
-        return _fail(e)
+    return _by_key(text, "kind", "kind", None,
+                   {k: f"export.{k}" for k in ("header", "csv_current", "csv_pll")}, _export_input)
 
 
 def sweep_json(text: str) -> str:
@@ -176,7 +300,8 @@ def sweep_json(text: str) -> str:
     ``op``: ``"sweep"`` (default: everything at once), ``"plan"`` (the axes and the number
     of points, nothing computed), ``"chunk"`` with ``start`` and ``count`` (those points and
     their summary; a page computes a sweep chunk by chunk to show progress and cancel), or
-    ``"merge"`` with ``summaries`` (the chunks' summaries → the sweep's summary).
+    ``"merge"`` with ``summaries`` (the chunks' summaries → the sweep's summary): the kinds
+    ``sweep``, ``sweep.plan``, ``sweep.chunk`` and ``sweep.merge`` of :func:`call_json`.
 
     Returns ``{"ok": true, ...}`` with ``plan``, ``chunk`` or ``summary``, or an error
     naming the field.
@@ -187,31 +312,10 @@ def sweep_json(text: str) -> str:
     [1.0, 1.5, 2.0]
     >>> json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": 0, "count": 2})))[
     ...     "chunk"]["points"]["error"][0]
-    'motor.rated_voltage_v: is required'
+    'motor.rated_voltage_v: is required (or give datasheet.dc_bus_v)'
     """
-    from .analyses import sweep as sw  # imported on first use: report-only pages stay lean
-    try:
-        req = parse(text, "sweep")
-        op = req.get("op", "sweep") if isinstance(req, dict) else None
-        if op == "sweep":
-            out = {"sweep": sw.sweep(req)}
-        else:
-            plan = sw.make_plan(req)
-            if op == "plan":
-                out = {"plan": sw.describe(plan)}
-            elif op == "chunk":
-                out = {"chunk": sw.chunk(plan, req.get("start", 0), req.get("count"))}
-            elif op == "merge":
-                summaries = req.get("summaries")
-                if not isinstance(summaries, list):
-                    raise InputError("sweep.summaries", code="summaries_list")
-                out = {"summary": sw.merge(plan, summaries)}
-            else:
-                raise InputError("sweep.op", code="not_choice", choices="sweep, plan, chunk, merge",
-                                 got=shown(op))
-        return json.dumps({"ok": True, **out}, allow_nan=False)
-    except InputError as e:
-        return _fail(e)
+    return _by_key(text, "sweep.op", "op", "sweep", {"sweep": "sweep", "plan": "sweep.plan",
+                   "chunk": "sweep.chunk", "merge": "sweep.merge"}, _sweep_plan)
 
 
 def batch_json(text: str) -> str:
@@ -223,37 +327,17 @@ def batch_json(text: str) -> str:
     the field when the file as a whole is unreadable.  Bad rows come back in their
     ``error`` cell.
     """
-    from .analyses import batch as bt  # imported on first use: report-only pages stay lean
-    try:
-        req = parse(text, "batch")
-        if not isinstance(req, dict):
-            raise InputError("batch", code="not_object", got=shown(req))
-        columns, rows = bt.read_table(req.get("csv"))
-        start, count = req.get("start", 0), req.get("count", len(rows))
-        for name, v, hi in (("start", start, len(rows)), ("count", count, None)):
-            if isinstance(v, bool) or not isinstance(v, int) or v < 0 or (hi is not None and v > hi):
-                raise InputError(f"batch.{name}", code="integer_range", lo=0,
-                                 hi=hi if hi is not None else "N", got=shown(v))
-        names = bt.output_columns(columns)
-        out = bt.batch_rows(req["csv"], start, count)
-        return json.dumps({"ok": True, "total": len(rows), "columns": names,
-                           "rows": [[r.get(n, "") for n in names] for r in out],
-                           "csv": bt.to_csv(names, out, start == 0)})
-    except InputError as e:
-        return _fail(e)
-    except ValueError as e:
-        return _fail(InputError("input", code="json_invalid", detail=" ".join(str(e).split())))
+    return call_json("batch", text)
 
 
 def trace_json(text: str) -> str:
     """The "Your code" tracer: ``{"code", "target", "entry", "set": {NAME: VALUE}, "global_q",
-    "define": ["NAME[=VALUE]", …], "zero_unset": bool}`` (``define`` as a compiler's ``-D``,
-    ``entry`` the function to run).
+    "zero_unset", …}`` (``entry``: the function of the code to run); see below,
+    "define": ["NAME[=VALUE]", …]}`` (``define`` as a compiler's ``-D``).
 
     Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",
     "message_zh"}`` with ``line`` and ``column`` when the code is at fault, and
-    ``inputs`` whenever the code compiled (so the page can offer input fields) and
-    ``functions`` whenever it parsed (so the page can offer the entry functions).
+    ``inputs`` whenever the code compiled (so the page can offer input fields).
 
     >>> r = json.loads(trace_json('{"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}}'))
     >>> r["vars"]["x"]["value"], r["target"]
@@ -261,47 +345,7 @@ def trace_json(text: str) -> str:
     >>> json.loads(trace_json('{"code": "x = 1 +;"}'))["message"]
     "1:8: expected a value, got ';'"
     """
-    from .ctrace import TraceError, compile_code, trace_checked
-    from .ctrace.parser import parse as parse_c
-    checked = None
-    code = ""
-    try:
-        req = parse(text)
-        if not isinstance(req, dict):
-            raise InputError("input", code="not_object", got=shown(req))
-        unknown = set(req) - {"code", "target", "set", "global_q", "define", "entry",
-                              "zero_unset"}
-        if unknown:
-            raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
-                             expected="code, target, entry, set, global_q, define, zero_unset")
-        zero_unset = req.get("zero_unset", False)
-        if not isinstance(zero_unset, bool):
-            raise InputError("zero_unset", f"must be true or false, got {shown(zero_unset)}")
-        defines = req.get("define") or []
-        if not isinstance(defines, list):
-            raise InputError("define", "must be a list of NAME[=VALUE] texts")
-        sets = req.get("set") or {}
-        if not isinstance(sets, dict):
-            raise InputError("set", code="not_object", got=shown(sets))
-        code = req.get("code", "")
-        checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
-                               req.get("entry") or None)
-        return json.dumps(trace_checked(checked, sets, req.get("global_q"), zero_unset),
-                          allow_nan=False)
-    except InputError as e:
-        reply = json.loads(_fail(e))
-        if isinstance(e, TraceError):
-            reply.update(line=e.line, column=e.column)
-        if checked is not None:
-            reply["inputs"] = checked.inputs
-            reply["functions"] = list(checked.functions)
-        elif isinstance(code, str) and e.field in ("entry", "set") or (
-                isinstance(e, TraceError) and e.field.startswith("set.")):
-            try:  # the code parses: offer its functions so the user can pick one
-                reply["functions"] = list(parse_c(code).functions)
-            except InputError:
-                pass
-        return json.dumps(reply)
+    return call_json("trace", text)
 
 
 def trace_examples_json(text: str = "") -> str:
@@ -311,10 +355,7 @@ def trace_examples_json(text: str = "") -> str:
     >>> [e["id"] for e in json.loads(trace_examples_json())["examples"]][:2]
     ['rpm', 'ld']
     """
-    from .ctrace import TARGETS
-    from .ctrace.examples import EXAMPLES
-    return json.dumps({"ok": True, "targets": list(TARGETS),
-                       "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]})
+    return call_json("trace.examples", text or "{}")
 
 
 def vendors_json(text: str) -> str:
@@ -322,7 +363,8 @@ def vendors_json(text: str) -> str:
 
     ``{"input": {...}, "action": "header", "profile": NAME}`` → ``{"ok": true, "text": ...}``;
     ``{"input": {...}, "action": "translate", "from": NAME, "axis": "d"|"q",
-    "values": {FIELD: int, FIELD: int}}`` → ``{"ok": true, "translation": {...}}``;
+    "values": {FIELD: int, FIELD: int}}`` → ``{"ok": true, "translation": {...}}``
+    (the kinds ``vendors.header`` and ``vendors.translate`` of :func:`call_json`);
     bad input → an error naming the field.
 
     >>> import json
@@ -330,27 +372,5 @@ def vendors_json(text: str) -> str:
     >>> json.loads(vendors_json(json.dumps(req)))["field"]
     'motor.rated_voltage_v'
     """
-    from . import profiles
-    from .profiles.translate import translate
-    try:
-        req = parse(text)
-        if not isinstance(req, dict):
-            raise InputError("request", code="not_json_object")
-        inp = req.get("input")
-        if not isinstance(inp, dict):
-            raise InputError("input", code="not_json_object")
-        action = req.get("action")
-        if action == "header":
-            name = req.get("profile")
-            if name not in profiles.NAMES:
-                raise InputError("profile", code="not_choice", choices=", ".join(profiles.NAMES),
-                                 got=shown(name))
-            r = report({**inp, "profiles": inp.get("profiles") or {}})
-            return json.dumps({"ok": True, "text": profiles.header(r, name)})
-        if action == "translate":
-            t = translate(inp, req.get("from"), req.get("axis", "q"), req.get("values"))
-            return json.dumps({"ok": True, "translation": t}, allow_nan=False)
-        raise InputError("action", code="not_choice", choices="header, translate",
-                         got=shown(action))
-    except InputError as e:
-        return _fail(e)
+    return _by_key(text, "action", "action", None,
+                   {"header": "vendors.header", "translate": "vendors.translate"}, _vendor_input)

@@ -245,6 +245,18 @@ def format_text(r: dict) -> str:
         lines += _table("Datasheet conversions", [
             (c["field"], f"{c['formula']} = {c['value']:.6g} {c['unit']}")
             for c in r["datasheet"]["conversions"]])
+    check = r.get("datasheet", {}).get("bemf_check")
+    if check is not None:
+        lines += _table(f"Back-EMF cross-check at {check['rated_speed_rpm']:.6g} rpm "
+                        f"(spread {check['spread_pct']:.3g} %)", [
+            (s["field"] + (" (used)" if s["field"] == check["used"] else ""),
+             f"{s['formula']} = {s['bemf_v']:.6g} V  ({s['deviation_pct']:+.3g} %)")
+            for s in check["sources"]])
+    for name, st in r["firmware"].items():
+        if not st["representable"]:
+            lines += _table(f"Firmware {name}: cannot hold this motor",
+                            [(p["field"], f"{p['message']} → {p['advice']}")
+                             for p in st["problems"]])
     h = r["review"]["headroom"]
     lines += _table("Voltage headroom (line RMS)", [
         ("limit (pm_maxout_vol)", f"{h['limit_v']:.6g} V"),

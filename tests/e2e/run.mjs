@@ -117,7 +117,7 @@ async function newPage(opts = {}) {
 const ready = (page) => page.waitForSelector('[data-key="vendor.Rpm.value"][data-value]', { timeout: 60_000 });
 const valueOf = (page, key) => page.$eval(`[data-key="${key}"][data-value]`, (e) => JSON.parse(e.dataset.value));
 /** Wait until the number at `key` equals `want` (rel > 0: to that relative tolerance). No eval: CSP. */
-const waitValue = (page, key, want, rel = 0, timeout = 10_000) =>
+const waitValue = (page, key, want, rel = 0, timeout = 30_000) =>
   page.waitForFunction(([k, w, r]) => {
     const e = document.querySelector(`[data-key="${k}"][data-value]`);
     if (!e) return false;

@@ -8,6 +8,10 @@ subnormals, the float range's ends, integer literals of 309+ digits, NaN and
 Infinity literals, the period caps of the simulations) and unicode (keys and
 strings with newline, NUL, U+2028, lone surrogates, the empty key). A few cases
 are text-level: truncated, bracket bombs, invalid UTF-8 (bytes, CLI only).
+
+``analysis.robust`` has its own cases (:func:`robust_cases`): a valid robustness
+section costs about 0.5 s of computation, so its fields are mutated on their own,
+with counts (``samples``, ``grid``) drawn from edges that stay cheap when valid.
 """
 from __future__ import annotations
 
@@ -19,15 +23,17 @@ from conftest import SEED_INPUT
 from pulab.profiles import MODULES
 from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
 
-__all__ = ["cases", "FIELDS"]
+__all__ = ["cases", "robust_cases", "FIELDS", "ROBUST_FIELDS"]
 
 BASE = copy.deepcopy(SEED_INPUT)
 # A short run keeps valid cases cheap; mutations of these two reach the caps.
 BASE["sim"] = {"current": {"duration_s": 2e-3}, "pll": {"duration_s": 2e-3}}
 
-#: Every field path of the input: the schema's fields (every section) and each vendor profile's options.
-FIELDS = [tuple(f.path.split(".")) for f in SCHEMA_FIELDS] + [
+#: Every field path of the input: the schema's fields (every section) and each vendor profile's
+#: options; the robustness section's apart (ROBUST_FIELDS).
+FIELDS = [tuple(f.path.split(".")) for f in SCHEMA_FIELDS if not f.path.startswith("analysis.robust.")] + [
     ("profiles", name, opt[0]) for name, mod in MODULES.items() for opt in mod.OPTIONS]
+ROBUST_FIELDS = [tuple(f.path.split(".")) for f in SCHEMA_FIELDS if f.path.startswith("analysis.robust.")]
 
 NASTY_TEXT = ["", " ", "\n", "a\nb", "\r", "\x00", "\u2028", "\u2029", "\ud800", "\udfff",
               "\u202e", "\ufeff", "😀", "电机", "'", '"', "\\", "motor.rs_ohm", "[0]", "toString",
@@ -46,6 +52,9 @@ NUMBER_LITERALS = ["0", "-0", "-0.0", "1e-324", "5e-324", "2.2250738585072014e-3
 
 # Simulation lengths: tiny, invalid, or beyond the caps (200 000 / 500 000 periods at Ts = 1e-4 s),
 # never a long valid run (that would only cost time).
+# Counts of the robustness analysis: edges of their ranges, none that is valid and slow.
+COUNT_LITERALS = ["0", "-0", "-1", "1", "2", "3", "1.5", "2.0", "42", "1000001", "2e6", "1e7",
+                  "9223372036854775807", "9223372036854775808", "1e309", "9" * 309, "NaN", "1e-9"]
 DURATION_LITERALS = ["0", "-0", "-1", "1e-9", "1e-300", "5e-324", "2e-3", "1e-3", "20.0001", "50.0001",
                      "20000", "1e300", "1e309", "1" + "0" * 308, "9" * 309, "NaN", "Infinity", "1e9"]
 
@@ -78,11 +87,12 @@ def _get_parent(inp: dict, path: tuple) -> dict:
     return node
 
 
-def _mutate(rng: random.Random, inp: dict) -> tuple:
-    """Apply one mutation; returns (object, literal substitutions {marker: text})."""
+def _mutate(rng: random.Random, inp: dict, fields: list = FIELDS) -> tuple:
+    """Apply one mutation to one of ``fields``; returns (object, literal substitutions
+    {marker: text})."""
     lits = {}
     family = rng.randrange(5)
-    path = rng.choice(FIELDS)
+    path = rng.choice(fields)
     if family == 0:  # structural
         choice = rng.randrange(8)
         if choice == 0:
@@ -111,7 +121,8 @@ def _mutate(rng: random.Random, inp: dict) -> tuple:
         _get_parent(inp, path)[path[-1]] = _value(rng)
     elif family == 2:  # numeric edge, written as a literal
         marker = f"@@{rng.randrange(10 ** 9)}@@"
-        lits[marker] = rng.choice(DURATION_LITERALS if path[-1] == "duration_s" else NUMBER_LITERALS)
+        lits[marker] = rng.choice(DURATION_LITERALS if path[-1] == "duration_s" else
+                                  COUNT_LITERALS if path[-1] in ("samples", "grid") else NUMBER_LITERALS)
         _get_parent(inp, path)[path[-1]] = marker
     elif family == 3:  # coherent combinations that reach deeper code
         marker, other = f"@@{rng.randrange(10 ** 9)}@@", f"@@{rng.randrange(10 ** 9)}@@"
@@ -173,6 +184,33 @@ def cases(n: int, seed: int = 14):
         # An untouched simulation costs time and tests nothing new: keep it in one of twenty.
         if isinstance(inp, dict) and inp.get("sim") == BASE["sim"] and rng.random() < 0.95:
             del inp["sim"]
+        try:
+            yield _text(inp, lits, rng.random() < 0.5).encode("utf-8", "surrogatepass")
+        except ValueError:
+            yield json.dumps(inp).encode()
+
+
+#: Robustness sections the mutations start from: every default, and one with every field given.
+ROBUST_BASES = [{}, {"temperature_c": [-20, 120], "reference_c": 25, "copper_alpha_per_k": 0.004,
+                     "magnet": -0.1, "peak_current_a": 4, "inductance_table": [[0, 6e-4, 6e-4], [3, 5e-4, 5e-4]],
+                     "udc_tolerance_pct": 5, "bus_compensated": False, "tolerance_rs_pct": 2,
+                     "tolerance_l_pct": 2, "tolerance_psi_pct": 2, "samples": 3, "seed": 9,
+                     "min_phase_margin_deg": 30, "min_gain_margin_db": 3, "grid": 2}]
+
+
+def robust_cases(n: int, seed: int = 15):
+    """``n`` report inputs (UTF-8 JSON bytes) whose ``analysis.robust`` has one or two mutations."""
+    rng = random.Random(seed)
+    for _ in range(n):
+        inp = copy.deepcopy({k: v for k, v in BASE.items() if k != "sim"})
+        inp["analysis"] = {"robust": copy.deepcopy(rng.choice(ROBUST_BASES))}
+        lits = {}
+        for _ in range(1 + (rng.random() < 0.3)):
+            obj, more = _mutate(rng, inp, ROBUST_FIELDS)
+            lits.update(more)
+            if not isinstance(obj, dict):
+                inp = obj
+                break
         try:
             yield _text(inp, lits, rng.random() < 0.5).encode("utf-8", "surrogatepass")
         except ValueError:

@@ -17,10 +17,12 @@ from collections import Counter
 
 import pytest
 
-from adversarial import BASE, cases
+from adversarial import BASE, cases, robust_cases
 from conftest import ROOT
 from pulab.__main__ import main
 from pulab.api import export_json, qcalc_json, run_json
+from pulab.analyses.loop import validate as check_analysis
+from pulab.schema.errors import InputError
 from pulab.schema.jsontext import MAX_DEPTH, parse
 
 FUZZ_CASES = 10_000
@@ -90,6 +92,55 @@ def test_fuzzed_inputs_keep_the_contract_in_the_api_and_the_cli():
     assert sum(seen.values()) == FUZZ_CASES
     # The generator must reach valid reports and many distinct errors, or it tests little.
     assert seen["ok"] > 100 and seen["error"] > 5000
+
+
+ROBUST_CASES = 2_000
+#: Valid robustness sections computed in full (≈ 0.5 s each); the others are only validated.
+ROBUST_FULL_RUNS = 8
+
+
+def _robust_valid(text: str):
+    """The checked robustness settings of a case, or None when its input is not a valid one."""
+    try:
+        obj = parse(text)
+        return check_analysis(obj["analysis"])["robust"] if isinstance(obj, dict) and \
+            isinstance(obj.get("analysis"), dict) else None
+    except InputError:
+        return None
+
+
+def test_fuzzed_robust_sections_keep_the_contract():
+    """``analysis.robust`` under hostile input: every field of the schema's section mutated.
+    A case with an invalid section goes through run_json and the CLI (the same field named);
+    valid ones are checked by the validator, and a few cheap ones computed in full."""
+    seen = Counter()
+    for data in robust_cases(ROBUST_CASES):
+        try:
+            text = data.decode("utf-8")
+        except UnicodeDecodeError:
+            assert _check_cli(*_cli(data)) == ("error", "input")
+            seen["not utf-8"] += 1
+            continue
+        cfg = _robust_valid(text)
+        if cfg is not None:
+            cheap = cfg["samples"] <= 10 and cfg["grid"] <= 7
+            if not cheap or seen["valid, computed"] >= ROBUST_FULL_RUNS:
+                seen["valid, validated"] += 1
+                continue
+        api = _api(text)
+        assert api == _check_cli(*_cli(data)), (data[:300], api)
+        seen[api if api[0] == "error" else "valid, computed" if cfg is not None else "ok"] += 1
+    fields = {k[1] for k in seen if isinstance(k, tuple)}
+    print(f"\nfuzzed robustness sections: {sum(v for k, v in seen.items() if isinstance(k, tuple))} "
+          f"errors naming {len(fields)} fields, {seen['valid, computed']} computed, "
+          f"{seen['valid, validated']} validated only, {seen['not utf-8']} not UTF-8")
+    assert seen["valid, computed"] == ROBUST_FULL_RUNS and seen["valid, validated"] > 50, seen
+    # Every field of the section is named by some error.
+    assert {f for f in fields if f.startswith("analysis.robust.")} >= {
+        "analysis.robust." + k for k in ("temperature_c", "reference_c", "copper_alpha_per_k", "magnet",
+                                         "peak_current_a", "inductance_drop_pct", "udc_tolerance_pct",
+                                         "bus_compensated", "tolerance_rs_pct", "samples", "seed", "grid",
+                                         "min_phase_margin_deg", "min_gain_margin_db")}, sorted(fields)
 
 
 @pytest.mark.parametrize("data, field", [

@@ -1,5 +1,5 @@
 """Every other entry point under hostile input: the CLI subcommands sweep, batch, trace, header
-and translate, and the worker's request kinds sweep_json, batch_json and trace_json.
+and translate, and every request kind of the worker's ``pulab.api.call_json``.
 
 ``report`` and ``run_json`` get the 10,000 cases of test_hardening.py; qcalc, export and vendors
 requests their own fuzz there and in test_profiles_hardening.py. The contract is the same
@@ -17,7 +17,7 @@ from collections import Counter
 
 from adversarial import BASE, FIELDS, NASTY_TEXT, NUMBER_LITERALS, _value, cases
 from pulab.__main__ import main
-from pulab.api import batch_json, sweep_json, trace_json
+from pulab.api import KINDS, batch_json, call_json, sweep_json, trace_json
 from pulab.profiles import NAMES
 from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
 from test_hardening import _one_line, _strict
@@ -166,3 +166,45 @@ def test_fuzzed_worker_requests_keep_the_api_contract():
         seen["trace", _api_reply(trace_json(text))] += 1
     print(f"\nworker request fuzz: {dict(seen)}")
     assert all(seen[k, "error"] > 0 for k in ("sweep", "batch", "trace")), seen
+
+
+#: The keys each kind reads (anything else is ignored or refused by the kind).
+KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "raw", "rounding", "overflow"],
+             "export.header": ["input"], "export.csv_current": ["input"], "export.csv_pll": ["input"],
+             "sweep": ["input", "x", "y", "profile"], "sweep.plan": ["input", "x", "y", "profile"],
+             "sweep.chunk": ["input", "x", "start", "count"], "sweep.merge": ["input", "x", "summaries"],
+             "batch": ["csv", "start", "count"], "trace": ["code", "target", "set", "global_q", "define"],
+             "trace.examples": ["x"], "vendors.header": ["input", "profile"],
+             "vendors.translate": ["input", "from", "axis", "values"]}
+
+
+def test_fuzzed_kinds_keep_the_api_contract():
+    """Every kind of call_json (and unknown kinds) on a valid request with one key made hostile,
+    a request that is not an object, or a text that is not JSON."""
+    assert sorted(KIND_KEYS) == sorted(KINDS)
+    rng = random.Random(21)
+    valid = {"input": PLAIN, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3},
+             "format": "Q3.12", "value": 0.5, "csv": "name,motor.rs_ohm\na,1\n", "code": CODE[0],
+             "profile": "ti", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
+             "summaries": [], "start": 0, "count": 1}
+    seen = Counter()
+    for _ in range(60):
+        for kind in list(KINDS) + [_text(rng)]:
+            keys = KIND_KEYS.get(kind, ["input"])
+            req = PLAIN if kind == "report" else {k: valid[k] for k in keys if k in valid}
+            if kind.startswith("export.csv"):
+                req = {"input": BASE}
+            r = rng.random()
+            if r < 0.2:
+                text = json.dumps(req)
+            elif r < 0.7:
+                req = {**req, rng.choice(keys): _value(rng)}
+                text = json.dumps(req)
+            elif r < 0.85:
+                text = json.dumps(_value(rng))
+            else:
+                text = rng.choice(["", "{", "[" * 5000, '{"a": 1,}', "nul", json.dumps(req)[:20]])
+            seen[kind if kind in KINDS else "?", _api_reply(call_json(kind, text))] += 1
+    print(f"\nkind fuzz: {dict(seen)}")
+    assert all(seen[k, "error"] > 0 for k in list(KINDS) + ["?"]), seen
+    assert all(seen[k, "ok"] > 0 for k in KINDS), seen

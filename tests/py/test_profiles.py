@@ -533,3 +533,19 @@ def test_the_family_sweep_reads_each_profile(seed_input, name):
     assert sorted(e["integers"]) == sorted(f"profiles.{name}.constants.{k}" for k in consts)
     for k, c in consts.items():
         assert e["integers"][f"profiles.{name}.constants.{k}"]["value"] == c["value"]
+
+
+def test_a_constant_beyond_its_word_says_how_much_to_rescale():
+    """The 7.5 kW motor in Microchip's scaling: MCAF_MOTOR_LD_BASE_DT needs 1.29× Q13's range;
+    the advice gives the Q format with enough integer bits and the options that scale it."""
+    r = report({**GOLDEN, "profiles": {}})
+    p = r["firmware"]["microchip"]["problems"][0]
+    c = r["profiles"]["microchip"]["constants"]["MCAF_MOTOR_LD_BASE_DT"]
+    assert p["field"] == "profiles.microchip.MCAF_MOTOR_LD_BASE_DT" and p["stored"] == 32767
+    factor = c["ideal"] / 32767
+    assert p["params"]["factor"] == pytest.approx(factor, rel=1e-15)
+    assert 2 ** (p["params"]["bits"] - 1) < factor <= 2 ** p["params"]["bits"]
+    assert f"Q{c['q'] - p['params']['bits']}" in p["advice"]
+    assert "profiles.microchip.current_base_a" in p["advice"] and "Q" in p["advice_zh"]
+    f = [x for x in r["review"]["findings"] if x["key"] == "firmware.microchip"][0]
+    assert f["severity"] == "note" and "keep the largest integer" in f["message"]

@@ -160,89 +160,6 @@ def test_pll_steady_angle_error_beside_the_transient():
     assert m["steady_angle_error_deg"] < 2.0 < m["max_angle_error_deg"]
 
 
-@pytest.mark.parametrize("ds, motor_key, field", [
-    ({"speed_rpm": 3000}, "rated_freq_hz", "datasheet.speed_rpm"),
-    ({"ke_v_per_krpm": 40, "ke_measure": "rms"}, "bemf_v", "datasheet.ke_v_per_krpm"),
-    ({"rs_line_ohm": 2}, "rs_ohm", "datasheet.rs_line_ohm"),
-    ({"l_line_h": 0.004}, "ld_h", "datasheet.l_line_h"),
-    ({"dc_bus_v": 48}, "rated_voltage_v", "datasheet.dc_bus_v"),
-])
-def test_datasheet_and_motor_field_both_given_names_both(ds, motor_key, field):
-    inp = _seed()
-    inp["datasheet"] = ds
-    with pytest.raises(InputError) as e:
-        report(inp)
-    assert e.value.field == field and f"motor.{motor_key}" in e.value.message
-    assert chinese(e.value.message_zh)
-
-
-FULL = {"speed_rpm": 3000, "ke_v_per_krpm": 30, "ke_measure": "rms", "rs_line_ohm": 3,
-        "l_line_h": 1e-3}
-
-
-def _without(*keys, **extra):
-    d = {k: v for k, v in FULL.items() if k not in keys}
-    d.update(extra)
-    return d
-
-
-@pytest.mark.parametrize("ds, field", [
-    (_without("ke_measure"), "datasheet.ke_measure"),
-    (_without(ke_measure="avg"), "datasheet.ke_measure"),
-    (_without(psi_wb=0.1), "datasheet.psi_wb"),
-    (_without("ke_v_per_krpm", psi_wb=0.1), "datasheet.ke_measure"),
-    (_without(kt_current="rms"), "datasheet.kt_current"),
-    (_without(winding="wye"), "datasheet.winding"),
-    (_without(speed_rpm=-1), "datasheet.speed_rpm"),
-    (_without(speed_rpm="3000"), "datasheet.speed_rpm"),
-    (_without(rpm=3000), "datasheet.rpm"),
-    (_without(ld_line_h=1e-3), "datasheet.ld_line_h"),
-    (_without("speed_rpm"), "datasheet.speed_rpm"),
-    # a derived value out of range is reported at the datasheet value it came from
-    (_without(speed_rpm=1e-8), "datasheet.speed_rpm"),
-])
-def test_datasheet_errors_name_the_field(ds, field):
-    inp = _seed()
-    for k in ("rated_freq_hz", "bemf_v", "rs_ohm", "ld_h", "lq_h"):
-        inp["motor"].pop(k)
-    inp["datasheet"] = ds
-    with pytest.raises(InputError) as e:
-        report(inp)
-    assert e.value.field == field
-    assert chinese(e.value.message_zh), e.value.message
-
-
-@pytest.mark.parametrize("extra, bemf", [
-    # E_LL = Ke_rms·ω_m: 0.2 V·s/rad at 3000 rpm = 62.83 V
-    ({"ke_v_s_per_rad": 0.2, "ke_measure": "rms"}, 0.2 * 100 * math.pi),
-    # kT = √3·Ke (per A RMS), so E_LL = kT/√3·ω_m
-    ({"kt_nm_per_a": 0.2 * math.sqrt(3)}, 0.2 * 100 * math.pi),
-    ({"kt_nm_per_a": 0.2 * math.sqrt(3) / math.sqrt(2), "kt_current": "peak"}, 0.2 * 100 * math.pi),
-    # ψ amplitude: E_LL = √3·ω_e·ψ/√2, ω_e = 2π·200 Hz
-    ({"psi_wb": 0.1}, math.sqrt(3) * 2 * math.pi * 200 * 0.1 / math.sqrt(2)),
-])
-def test_other_back_emf_sources(extra, bemf):
-    inp = _seed()
-    for k in ("rated_freq_hz", "bemf_v"):
-        inp["motor"].pop(k)
-    inp["datasheet"] = {"speed_rpm": 3000, **extra}
-    r = report(inp)
-    assert r["input"]["motor"]["bemf_v"] == pytest.approx(bemf, rel=1e-12)
-    assert r["datasheet"]["conversions"][1]["field"] == "motor.bemf_v"
-
-
-def test_delta_winding_has_the_same_star_equivalent():
-    inp = _seed()
-    for k in ("rs_ohm", "ld_h", "lq_h"):
-        inp["motor"].pop(k)
-    inp["datasheet"] = {"rs_line_ohm": 3.0, "l_line_h": 0.002, "winding": "delta"}
-    r = report(inp)
-    assert r["input"]["motor"]["rs_ohm"] == 1.5 and r["input"]["motor"]["lq_h"] == 0.001
-    assert "delta" in r["datasheet"]["conversions"][0]["formula"]
-    assert "datasheet" not in r["input"]  # the echoed input can be fed back as it is
-    assert report(r["input"])["vendor"]["raw"] == r["vendor"]["raw"]
-
-
 def test_every_finding_has_chinese_and_names_a_field():
     inp = _seed(base_freq_hz=100)
     inp["motor"]["rated_freq_hz"] = 300
@@ -253,8 +170,9 @@ def test_every_finding_has_chinese_and_names_a_field():
     assert {"error", "warning", "note"} == {x["severity"] for x in r["review"]["findings"]}
     for x in r["review"]["findings"]:
         assert chinese(x["message_zh"]), x["message"]
-        assert x["field"].split(".")[0] in ("motor", "drive", "conventions", "current_loop",
-                                            "pll"), x
+        # a design choice (never a motor's property such as its resistance)
+        assert x["field"].split(".")[0] in ("drive", "conventions", "current_loop", "pll",
+                                            "profiles", "datasheet"), x
     assert r["warnings_zh"] == [x["message_zh"] for x in r["review"]["findings"]
                                 if x["severity"] != "note"]
 
@@ -279,4 +197,29 @@ def test_cli_both_given_exits_2_naming_the_field(tmp_path):
     out = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)],
                          capture_output=True, text=True, env={"PYTHONPATH": str(ROOT / "py")})
     assert out.returncode == 2
-    assert out.stderr.startswith("error: datasheet.speed_rpm: and motor.rated_freq_hz both given")
+    assert out.stderr == ("error: datasheet.speed_rpm: Rated speed (datasheet.speed_rpm) and Rated "
+                          "frequency (motor.rated_freq_hz) both set the motor's Rated frequency: "
+                          "give only one of them.\n")
+
+
+@pytest.mark.parametrize("path", sorted((ROOT / "tests/golden").glob("[0-9]*.json")),
+                         ids=lambda p: p.stem)
+def test_no_finding_asks_to_change_the_motor(path):
+    """Every golden motor: each finding points at a design choice, with its form label."""
+    r = report(json.loads(path.read_text())["input"])
+    for x in r["review"]["findings"]:
+        assert not x["field"].startswith("motor."), x
+        assert x["label"] != x["field"] and chinese(x["label_zh"]), x
+
+
+def test_the_firmware_shipped_grades_the_others_limits_as_notes():
+    """The 28,000 rpm robot motor: a warning while Inovance is shipped; with TI shipped a note,
+    and the voltage headroom is the physical U_dc/√2, not Inovance's whole-volt limit."""
+    inp = json.loads((ROOT / "tests/golden/23_limit_robot_28krpm.json").read_text())["input"]
+    sev = {x["code"]: x["severity"] for x in report(inp)["review"]["findings"]}
+    assert sev["unrepresentable"] == "warning"
+    r = report({**inp, "conventions": {"firmware": "ti"}})
+    x = [x for x in r["review"]["findings"] if x["code"] == "unrepresentable"]
+    assert x[0]["severity"] == "note" and x[0]["field"] == "conventions.firmware"
+    assert x[0]["label"] == "Firmware you ship" and x[0]["label_zh"] == "所用固件"
+    assert r["review"]["headroom"]["limit_v"] == 24 / math.sqrt(2)

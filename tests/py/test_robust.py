@@ -18,6 +18,7 @@ import pulab
 from pulab.api import run_json
 from pulab.schema.errors import InputError
 from pulab.analyses.loop import robust
+from conftest import chinese
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GOLDEN = ROOT / "tests" / "golden" / "robust"
@@ -67,7 +68,7 @@ def test_corners_match_python_control(path):
 
 
 def test_defaults_as_the_contract_states():
-    cfg = robust.validate({})
+    cfg = robust.settings({})
     assert cfg["temperature_c"] == [20.0, 155.0] and cfg["reference_c"] == 20.0
     assert cfg["copper_alpha_per_k"] == 0.00393 and cfg["magnet_pct_per_k"] == -0.12
     assert cfg["inductance_drop_pct"] == 30.0 and cfg["peak_current_a"] is None
@@ -78,30 +79,59 @@ def test_defaults_as_the_contract_states():
     assert "monte_carlo" not in r
 
 
-@pytest.mark.parametrize("value, field", [
-    ({"temperature_c": [155, 20]}, "analysis.robust.temperature_c"),
-    ({"temperature_c": 155}, "analysis.robust.temperature_c"),
-    ({"magnet": "alnico"}, "analysis.robust.magnet"),
-    ({"magnet": True}, "analysis.robust.magnet"),
-    ({"samples": -1}, "analysis.robust.samples"),
-    ({"samples": 1.5}, "analysis.robust.samples"),
-    ({"inductance_table": [[0, 1e-3, 1e-3]]}, "analysis.robust.inductance_table"),
+@pytest.mark.parametrize("value, field, code", [
+    ({"temperature_c": [155, 20]}, "analysis.robust.temperature_c", "pair_order"),
+    ({"temperature_c": 155}, "analysis.robust.temperature_c", "not_pair"),
+    ({"temperature_c": [20, 155, 200]}, "analysis.robust.temperature_c", "not_pair"),
+    ({"temperature_c": [-273.15, 20]}, "analysis.robust.temperature_c[0]", "out_of_range"),
+    ({"temperature_c": [20, 400.5]}, "analysis.robust.temperature_c[1]", "out_of_range"),
+    ({"temperature_c": [20, "hot"]}, "analysis.robust.temperature_c[1]", "not_number"),
+    ({"magnet": "alnico"}, "analysis.robust.magnet", "not_name_or_number"),
+    ({"magnet": True}, "analysis.robust.magnet", "not_number"),
+    ({"magnet": -1.5}, "analysis.robust.magnet", "out_of_range"),
+    ({"samples": -1}, "analysis.robust.samples", "integer_range"),
+    ({"samples": 1.5}, "analysis.robust.samples", "not_integer"),
+    ({"samples": 1_000_001}, "analysis.robust.samples", "integer_range"),
+    ({"grid": 1}, "analysis.robust.grid", "integer_range"),
+    ({"inductance_table": [[0, 1e-3, 1e-3]]}, "analysis.robust.inductance_table", "not_table"),
     ({"inductance_table": [[0, 1e-3, 1e-3], [0, 1e-3, 1e-3]]},
-     "analysis.robust.inductance_table[1]"),
+     "analysis.robust.inductance_table[1][0]", "not_increasing"),
     ({"inductance_table": [[0, 1e-3, 1e-3], [1, "x", 1e-3]]},
-     "analysis.robust.inductance_table[1][1]"),
-    ({"bus_compensated": 1}, "analysis.robust.bus_compensated"),
-    ({"min_phase_margin_deg": 120}, "analysis.robust.min_phase_margin_deg"),
-    ({"peak_current_a": 0}, "analysis.robust.peak_current_a"),
-    ({"colour": 1}, "analysis.robust.colour"),
-    ("hot", "analysis.robust"),
+     "analysis.robust.inductance_table[1][1]", "not_number"),
+    ({"inductance_table": [[0, 1e-3, 1e-3], [1, 1e-3]]},
+     "analysis.robust.inductance_table[1]", "not_row"),
+    ({"inductance_table": [[-1, 1e-3, 1e-3], [1, 1e-3, 1e-3]]},
+     "analysis.robust.inductance_table[0][0]", "negative"),
+    ({"inductance_table": [[0, 1e-3, 0], [1, 1e-3, 1e-3]]},
+     "analysis.robust.inductance_table[0][2]", "not_positive"),
+    ({"bus_compensated": 1}, "analysis.robust.bus_compensated", "not_flag"),
+    ({"min_phase_margin_deg": 120}, "analysis.robust.min_phase_margin_deg", "out_of_range"),
+    ({"peak_current_a": 0}, "analysis.robust.peak_current_a", "not_positive"),
+    ({"reference_c": 10 ** 400}, "analysis.robust.reference_c", "not_finite"),
+    ({"colour": 1}, "analysis.robust.colour", "unknown_field"),
+    ("hot", "analysis.robust", "not_object"),
 ])
-def test_bad_input_names_the_field(value, field):
+def test_bad_input_names_the_field(value, field, code):
     inp = copy.deepcopy(SEED)
     inp["analysis"]["robust"] = value
     with pytest.raises(InputError) as e:
         pulab.report(inp)
-    assert e.value.field == field
+    assert (e.value.field, e.value.code) == (field, code)
+    assert chinese(e.value.message_zh) and e.value.message_zh != e.value.message
+
+
+def test_the_section_as_the_analysis_reads_it():
+    """Defaults, a magnet by name or by number, the table's rows as numbers (settings = the
+    schema's checked section with the magnet's coefficient)."""
+    cfg = robust.settings({})
+    assert cfg["temperature_c"] == [20.0, 155.0] and cfg["magnet_pct_per_k"] == -0.12
+    assert cfg["grid"] == 7 and cfg["samples"] == 0 and cfg["inductance_table"] is None
+    assert "magnet" not in cfg
+    assert robust.settings({"magnet": "smco"})["magnet_pct_per_k"] == -0.035
+    assert robust.settings({"magnet": -0.5})["magnet_pct_per_k"] == -0.5
+    table = robust.settings({"inductance_table": [[0, 1e-3, 2e-3], [10, 8e-4, 1.5e-3]]})
+    assert table["inductance_table"] == [[0.0, 1e-3, 2e-3], [10.0, 8e-4, 1.5e-3]]
+    assert robust.settings({"temperature_c": [-40, -40]})["temperature_c"] == [-40.0, -40.0]
 
 
 def test_cli_bad_input_exit_2(tmp_path):
@@ -142,7 +172,7 @@ def test_safe_band_is_safe_and_its_edges_are_not():
     lo, hi = r["safe_bandwidth_hz"]
     assert 0 < lo < hi < 0.5 / 1e-4
     inp = copy.deepcopy(SEED)
-    cfg = robust.validate({})
+    cfg = robust.settings({})
     base = pulab.report({k: v for k, v in SEED.items() if k != "analysis"})
     from pulab.analyses.loop import current
 
@@ -197,7 +227,7 @@ def test_monte_carlo_seeded_and_sliceable():
     c = pulab.report(inp)["loop"]["robust"]["monte_carlo"]
     assert c != a
     base = pulab.report({k: v for k, v in SEED.items() if k != "analysis"})
-    cfg = robust.validate({"seed": 7})
+    cfg = robust.settings({"seed": 7})
     whole = robust.study_row(base, cfg, "computation_pwm", 300, 7, 0)
     parts = [robust.study_row(base, cfg, "computation_pwm", 100, 7, s) for s in (0, 100, 200)]
     assert whole["below"] == sum(p["below"] for p in parts) == a["below"]
@@ -205,11 +235,11 @@ def test_monte_carlo_seeded_and_sliceable():
 
 
 def test_resistance_flux_inductance_formulas():
-    cfg = robust.validate({})
+    cfg = robust.settings({})
     assert math.isclose(robust.resistance(1.0, 120.0, cfg), 1.393)
     assert math.isclose(robust.flux(1.0, 120.0, cfg), 0.88)
     assert robust.inductance(1.0, 2.0, 1.5, 3.0, cfg) == pytest.approx((0.85, 1.7))
-    cfg = robust.validate({"inductance_table": [[1, 1e-3, 2e-3], [3, 5e-4, 1e-3]]})
+    cfg = robust.settings({"inductance_table": [[1, 1e-3, 2e-3], [3, 5e-4, 1e-3]]})
     assert robust.inductance(0, 0, 0.0, 3.0, cfg) == (1e-3, 2e-3)
     assert robust.inductance(0, 0, 2.0, 3.0, cfg) == pytest.approx((7.5e-4, 1.5e-3))
     assert robust.inductance(0, 0, 9.0, 3.0, cfg) == (5e-4, 1e-3)

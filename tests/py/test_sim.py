@@ -529,3 +529,21 @@ def test_golden_trajectory(path):
     assert not bad, "\n".join(bad[:20])
     # the naive PLL: only 'locked' is compared, and it must be false
     assert case["expected"]["pll"]["metrics"]["naive"]["locked"] is False
+
+
+@pytest.mark.parametrize("name", ["19_limit_udc_7000v", "22_limit_voltage_0"])
+def test_a_drive_inovance_cannot_hold_still_simulates_in_float(name):
+    """No pm_maxout_vol/maxu (firmware.inovance): the float runs clamp at U_dc/√2, the
+    firmware's fixed-point runs are absent, the differences to them null — no crash."""
+    inp = json.loads((ROOT / "tests/golden" / f"{name}.json").read_text())["input"]
+    inp["sim"] = {}
+    inp["analysis"] = {"speed": {"inertia_kg_m2": 1e-4, "response": True}, "robust": {}}
+    r = pulab.report(inp)
+    assert "maxu" not in r["vendor"] and not r["firmware"]["inovance"]["representable"]
+    cur = r["sim"]["current"]
+    assert set(cur["variants"]) == {"si", "pu"} and cur["metrics"]["fixed_vs_si_max_lsb"] is None
+    assert cur["metrics"]["si"]["rise_time_s"] is not None
+    speed = r["loop"]["speed"]["response"]
+    assert set(speed["variants"]) == {"float"} and speed["fixed_vs_float_max_rpm"] is None
+    step = r["loop"]["robust"].get("step")
+    assert step is None or (step["fixed"] is None and step["metrics"]["fixed"] is None)

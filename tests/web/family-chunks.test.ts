@@ -32,7 +32,8 @@ describe('runChunks', () => {
   it('covers 0 … total−1 once, in order, with sizes adapting to the time taken', async () => {
     const { client, calls } = fakeClient(2); // 2 ms per item → 20 items per chunk
     const seen: number[] = [];
-    const end = await runChunks(client, 'sweep', 137, 40, (start, count) => ({ start, count }), (_r, done) => seen.push(done), { cancelled: false });
+    const x = { path: 'motor.rs_ohm', start: 1, stop: 2, n: 137, scale: 'linear' as const };
+    const end = await runChunks(client, 'sweep.chunk', 137, 40, (start, count) => ({ input: {}, x, start, count }), (_r, done) => seen.push(done), { cancelled: false });
     expect(end).toBe('done');
     let next = 0;
     for (const c of calls) {
@@ -46,10 +47,10 @@ describe('runChunks', () => {
   it('stops on cancel and on the first error', async () => {
     const job = { cancelled: false };
     const { client } = fakeClient(1);
-    const end = await runChunks(client, 'batch', 500, 10, (start, count) => ({ start, count }), () => { job.cancelled = true; }, job);
+    const end = await runChunks(client, 'batch', 500, 10, (start, count) => ({ csv: '', start, count }), () => { job.cancelled = true; }, job);
     expect(end).toBe('cancelled');
     const f = fakeClient(1, 0);
-    const err = await runChunks(f.client, 'batch', 50, 10, (start, count) => ({ start, count }), () => undefined, { cancelled: false });
+    const err = await runChunks(f.client, 'batch', 50, 10, (start, count) => ({ csv: '', start, count }), () => undefined, { cancelled: false });
     expect(err).toMatchObject({ ok: false, field: 'x' });
   });
 });

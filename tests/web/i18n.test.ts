@@ -54,3 +54,22 @@ describe('errText: Python messages in the reader language', () => {
     });
   }
 });
+
+describe('the feature files under i18n/', () => {
+  const files = import.meta.glob<{ default?: { en: Record<string, string>; zh: Record<string, string> } }>('../../web/src/i18n/*.ts', { eager: true });
+  const dicts = Object.entries(files).filter(([, m]) => m.default).map(([name, m]) => [name, m.default!] as const);
+  it('no key is defined by two files (a later spread would hide the other silently)', () => {
+    const owner = new Map<string, string>();
+    for (const [name, d] of dicts) {
+      for (const k of Object.keys(d.en)) {
+        expect(owner.get(k), `${k} in ${name}`).toBeUndefined();
+        owner.set(k, name);
+      }
+    }
+  });
+  it('every file is registered in i18n.ts, and i18n.ts has no key of its own', () => {
+    const keys = dicts.flatMap(([, d]) => Object.keys(d.en)).sort();
+    expect(Object.keys(DICTS.en).sort()).toEqual(keys);
+    expect(dicts.length).toBeGreaterThanOrEqual(10);
+  });
+});

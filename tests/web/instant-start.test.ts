@@ -87,13 +87,15 @@ async function bootHost(fast: () => Promise<PyodideLike>): Promise<{ ready: Work
 }
 
 const echo = (t: string): string => JSON.stringify({ ok: true, echo: t });
-/** A stand-in runtime: run_json (and qcalc_json) echo their input, so calls can be told apart. */
+/** A stepped entry point of one slice: a generator done at once with `f`'s reply. */
+const stepsOf = (f: (t: string) => string) => (_kind: string, t: string) => ({ next: () => ({ done: true, value: f(t) }), return: () => undefined, destroy: () => undefined });
+/** A stand-in runtime: call_json echoes its input, so calls can be told apart. */
 function fakePy(): PyodideLike {
   return {
     version: 'fake',
     FS: { mkdirTree: () => undefined, writeFile: () => undefined },
     runPython: () => undefined,
-    pyimport: () => ({ run_json: echo, qcalc_json: echo }),
+    pyimport: () => ({ call_json: (_kind: string, t: string) => echo(t), call_json_steps: stepsOf(echo) }),
   };
 }
 
@@ -137,13 +139,16 @@ describe('queued calls: the page\'s numbers first', () => {
     await new Promise((r) => setTimeout(r, 5)); // the boot's own drain
     channels.forEach((ch, i) => send({ type: 'call', id: i + 1, kind: 'qcalc', payload: JSON.stringify(ch), channel: ch }));
     await new Promise((r) => setTimeout(r, 20));
-    expect(got.filter((m) => m.type === 'result').map((m) => m.type === 'result' && m.result.ok && m.result.echo)).toEqual(order);
+    expect(got.filter((m) => m.type === 'result').map((m) => m.type === 'result' && m.result.ok && 'echo' in m.result && m.result.echo)).toEqual(order);
   });
 });
 
 describe('warm-up runs after the first report (idle only, never ahead of a call)', () => {
-  /** A runtime whose run_json logs every payload it computes. */
-  const logging = (log: string[]): PyodideLike => ({ ...fakePy(), pyimport: () => ({ run_json: (t: string) => (log.push(t), echo(t)), qcalc_json: echo }) });
+  /** A runtime whose call_json logs every report payload it computes. */
+  const logging = (log: string[]): PyodideLike => {
+    const run = (kind: string, t: string) => (kind === 'report' && log.push(t), echo(t));
+    return { ...fakePy(), pyimport: () => ({ call_json: run, call_json_steps: stepsOf((t: string) => run('report', t)) }) };
+  };
   const cases: [string, number, string, string[], string[]][] = [
     ['warmRuns 3, nothing else asked → the first report computed 3 more times', 3, 'report', [], ['"r1"', '"r1"', '"r1"', '"r1"']],
     ['warmRuns 0 → computed once', 0, 'report', [], ['"r1"']],

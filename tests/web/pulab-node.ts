@@ -4,7 +4,7 @@ import { loadPyodide } from 'pyodide';
 import { fileURLToPath } from 'node:url';
 import { createWorkerLogic, type PyodideLike } from '../../web/src/worker-logic';
 import { PULAB_FILES } from '../../web/src/pysources';
-import { API_FUNCTIONS, type ApiKind, type ApiResult, type WorkerToMain } from '../../web/src/protocol';
+import type { ApiKind, ApiResult, WorkerToMain } from '../../web/src/protocol';
 
 export const INDEX_URL = fileURLToPath(new URL('../../node_modules/pyodide/', import.meta.url));
 
@@ -35,13 +35,13 @@ export function bootPulab(): Promise<NodePulab> {
     logic.onMessage({ type: 'init', indexURL: INDEX_URL, timeoutMs: 60_000 });
     await logic.ready;
     const bootMs = performance.now() - t0;
-    const api = py.pyimport('pulab.api') as Record<string, (t: string) => string>;
+    const api = py.pyimport('pulab.api') as { call_json(kind: string, text: string): string };
     let next = 1;
     return {
       messages,
       bootMs,
       py,
-      raw: (kind, payload) => api[API_FUNCTIONS[kind]](payload),
+      raw: (kind, payload) => api.call_json(kind, payload),
       call(kind, payload, channel) {
         const id = next++;
         return new Promise((resolve, reject) => {

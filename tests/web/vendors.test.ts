@@ -61,22 +61,22 @@ describe('profiles golden vectors through pulab.api.run_json in Pyodide', () => 
   }
 });
 
-describe('pulab.api.vendors_json in Pyodide', () => {
+describe('the vendors.* kinds of pulab.api.call_json in Pyodide', () => {
   const seed = { motor: { rated_voltage_v: 17, rated_current_a: 1.5, rated_freq_hz: 220, rs_ohm: 1.5, ld_h: 6e-4, lq_h: 6e-4, bemf_v: 12, pole_pairs: 4 }, drive: { udc_v: 24, ts_s: 1e-4 } };
   for (const [v, word] of [['ti', 'USER_MTR1_KP_IQ_IQ'], ['nxp', 'M1_Q_KP_GAIN'], ['st', 'PID_TORQUE_KP_DEFAULT'], ['microchip', 'KIP_SCALE'], ['inovance', 'PULAB_RPM']]) {
     it(`header ${v} → #define ${word}`, () => {
-      const out = JSON.parse(pulab.raw('vendors', JSON.stringify({ input: seed, action: 'header', profile: v })));
+      const out = JSON.parse(pulab.raw('vendors.header', JSON.stringify({ input: seed, profile: v })));
       expect(out.ok).toBe(true);
       expect(out.text).toContain(`#define ${word}`);
     });
   }
   it('translate inovance 1180/4720 (q) → back at 1180/4720', () => {
-    const out = JSON.parse(pulab.raw('vendors', JSON.stringify({ input: seed, action: 'translate', from: 'inovance', axis: 'q', values: { pm_kp: 1180, pm_ki: 4720 } })));
+    const out = JSON.parse(pulab.raw('vendors.translate', JSON.stringify({ input: seed, from: 'inovance', axis: 'q', values: { pm_kp: 1180, pm_ki: 4720 } })));
     expect(out.ok).toBe(true);
     expect(out.translation.round_trip.values).toEqual({ pm_kp: 1180, pm_ki: 4720 });
   });
   it('translate with a fractional integer → error at translate.values.KIP, Chinese too', () => {
-    const out = JSON.parse(pulab.raw('vendors', JSON.stringify({ input: seed, action: 'translate', from: 'microchip', axis: 'q', values: { KIP: 1.5, KII: 3 } })));
+    const out = JSON.parse(pulab.raw('vendors.translate', JSON.stringify({ input: seed, from: 'microchip', axis: 'q', values: { KIP: 1.5, KII: 3 } })));
     expect(out.ok).toBe(false);
     expect(out.field).toBe('translate.values.KIP');
     expect(out.message_zh).toMatch(/[\u4e00-\u9fff]/);

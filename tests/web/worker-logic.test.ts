@@ -39,8 +39,8 @@ describe('worker logic on Pyodide', () => {
     expect(result).toMatchObject({ ok: true, result: { raw: 16384, hex: '0x4000' } });
   });
   it('export header contains PULAB_RPM 15022', async () => {
-    const { result } = await p.call('export', JSON.stringify({ input: SEED, kind: 'header' }));
+    const { result } = await p.call('export.header', JSON.stringify({ input: SEED }));
     expect(result.ok).toBe(true);
-    expect(String((result as { text?: unknown }).text)).toMatch(/PULAB_RPM\s+15022/);
+    expect(result.ok && 'text' in result ? result.text : '').toMatch(/PULAB_RPM\s+15022/);
   });
 });

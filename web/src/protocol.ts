@@ -1,29 +1,85 @@
 // The worker protocol: every message in both directions is a member of a typed union
-// (in the spirit of stlite's types.ts). The worker only forwards JSON text to pulab.api.
+// (in the spirit of stlite's types.ts), and every request kind has its request and reply types.
+// The worker only forwards JSON text to pulab.api.call_json.
+
+import type { BatchChunk, BatchRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
+import type { Chunk, Plan, Points, Summary } from './family/types';
+import type { Report } from './report-types';
+import type { Input } from './state';
 
 /** JSON value. */
 export type Json = null | boolean | number | string | Json[] | { [k: string]: Json };
 
-/** The Python entry points the worker calls: `pulab.api.<fn>(text: str) -> str`. */
-export const API_FUNCTIONS = {
-  report: 'run_json',
-  qcalc: 'qcalc_json',
-  export: 'export_json',
-  vendors: 'vendors_json',
-  sweep: 'sweep_json', batch: 'batch_json',
-  trace: 'trace_json',
-  traceExamples: 'trace_examples_json',
-} as const;
-export type ApiKind = keyof typeof API_FUNCTIONS;
+/** A sweep request (docs/contract.md, "Sweep"): the motor, one or two axes, the profile. */
+export interface SweepRequest {
+  input: Input;
+  x: SweepAxis;
+  y?: SweepAxis;
+  profile?: string;
+}
+export interface SweepAxis { path: string; start: number; stop: number; n: number; scale: 'linear' | 'log' }
 
 /**
- * Entry points that compute in slices: `pulab.api.<fn>(text)` returns a Python generator that
- * yields between slices and returns the same JSON text as the API_FUNCTIONS entry. A call of
- * such a kind on a channel runs slice by slice, and a newer call on its channel cancels it
- * (`superseded`) between two slices.
+ * What each request kind sends: `pulab.api.call_json(kind, text)` gets the JSON text of
+ * `Request[kind]`. `kind` is the one dispatch key (docs/contract.md, "API").
  */
-export const STEPPED_FUNCTIONS = { report: 'run_json_steps' } as const satisfies Partial<Record<ApiKind, string>>;
-export type SteppedKind = keyof typeof STEPPED_FUNCTIONS;
+export interface Request {
+  report: Input;
+  qcalc: QcalcRequest;
+  'export.header': { input: Input };
+  'export.csv_current': { input: Input };
+  'export.csv_pll': { input: Input };
+  sweep: SweepRequest;
+  'sweep.plan': SweepRequest;
+  'sweep.chunk': SweepRequest & { start: number; count: number };
+  'sweep.merge': SweepRequest & { summaries: Summary[] };
+  batch: BatchRequest;
+  trace: TraceRequest;
+  'trace.examples': Record<string, never>;
+  'vendors.header': { input: Input; profile: string };
+  'vendors.translate': TranslateRequest;
+}
+export type ApiKind = keyof Request;
+
+/** What each kind answers when it succeeds (besides `ok: true`). */
+export interface ReplyBody {
+  report: { report: Report };
+  qcalc: { format: QFormat; result: QResult };
+  'export.header': { text: string };
+  'export.csv_current': { text: string };
+  'export.csv_pll': { text: string };
+  sweep: { sweep: Plan & { points: Points; summary: Summary } };
+  'sweep.plan': { plan: Plan };
+  'sweep.chunk': { chunk: Chunk };
+  'sweep.merge': { summary: Summary };
+  batch: BatchChunk;
+  trace: Trace;
+  'trace.examples': { examples: TraceExample[]; targets: string[] };
+  'vendors.header': { text: string };
+  'vendors.translate': { translation: Translation };
+}
+
+/** An error as data (docs/contract.md, Errors): `code` and `params` from pulab's catalog, the text in
+ * both languages made from them. Worker-side failures (no reply from Python) have no code. The
+ * tracer's errors say where in the code (`line`, `column`) and, once the code compiled, its `inputs`. */
+export type ApiErr = {
+  ok: false; field: string; message: string; message_zh?: string;
+  code?: string; params?: Record<string, Json>;
+  line?: number; column?: number; inputs?: string[];
+  /** The tracer's: the functions the code defines, whenever it parsed (to pick the entry). */
+  functions?: string[];
+};
+/** A kind's reply when it succeeds. */
+export type Ok<K extends ApiKind> = { ok: true } & ReplyBody[K];
+/** The reply to each kind: its body, or an error (`reply.ok` tells them apart). */
+export type Reply = { [K in ApiKind]: Ok<K> | ApiErr };
+/** Any reply, as the worker forwards it. */
+export type ApiResult = Reply[ApiKind];
+
+/** The kinds computed in slices (`pulab.api.call_json_steps`, a generator yielding between
+ * slices): a newer call on the same channel cancels a running one between two slices
+ * (`superseded`). */
+export const STEPPED_KINDS: readonly ApiKind[] = ['report'];
 
 /**
  * The channel of the page's own numbers: a queued call on it is computed before every other
@@ -43,7 +99,7 @@ export type MainToWorker =
       payload: string;
       /**
        * Calls sharing a channel are coalesced: only the newest queued one is computed, and a
-       * running call of a STEPPED_FUNCTIONS kind is cancelled when a newer one arrives.
+       * running call of a STEPPED_KINDS kind is cancelled when a newer one arrives.
        */
       channel?: string;
     };
@@ -51,16 +107,6 @@ export type MainToWorker =
 export type BootStage = 'runtime' | 'snapshot' | 'files' | 'import' | 'ready';
 /** Where a runtime came from: the build's memory snapshot, or a full boot of Pyodide. */
 export type BootFrom = 'snapshot' | 'full';
-
-/** What pulab.api returns (parsed). */
-export type ApiOk = { ok: true; [k: string]: Json };
-/** An error as data (docs/contract.md, Errors): `code` and `params` from pulab's catalog, the text in
- * both languages made from them. Worker-side failures (no reply from Python) have no code. */
-export type ApiErr = {
-  ok: false; field: string; message: string; message_zh?: string;
-  code?: string; params?: Record<string, Json>;
-};
-export type ApiResult = ApiOk | ApiErr;
 
 /** Worker → main thread. */
 export type WorkerToMain =

@@ -70,7 +70,20 @@ export interface Report {
   review: Review;
   datasheet?: { given: Record<string, unknown>; conversions: Conversion[] };
   loop?: LoopReport;
+  /** Present when the input has a `profiles` section (docs/contract.md, "Output: profiles.NAME"). */
+  profiles?: Record<string, ProfileReport>;
 }
+
+/** One vendor profile of the report: its inputs, constants and bases. */
+export interface ProfileReport {
+  inputs: Record<string, unknown>;
+  constants: Record<string, ProfileConstant>;
+  bases: Record<string, string | number | null | Record<string, string>>;
+  pi_example?: { error: number; shift: number; misra: number }[];
+  checks?: [string, string][];
+  files?: { rounding: string; worked_numbers: string[] };
+}
+export interface ProfileConstant { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string }
 
 /** Margins of one discrete loop (docs/contract.md, "Loop analysis"); null = does not exist. */
 export interface Margins {
@@ -104,6 +117,8 @@ export interface LoopReport {
   pll: { correct: Margins; naive: Margins; boundary_kp_ts_gain: number };
   speed: null | (Margins & {
     firmware: Margins;
+    /** The speed PI: SI, per unit, and the firmware's integers. */
+    kp: number; ki: number; kp_pu: number; ki_pu: number; pm_kp: number; pm_ki: number;
     bases: Record<string, number>;
     response?: {
       t: number[];
@@ -111,7 +126,8 @@ export interface LoopReport {
       reference_rpm: number;
       variants: Record<string, { speed_rpm: number[]; iq_a: number[]; iq_ref_a: number[] }>;
       metrics: Record<string, unknown>;
-      fixed_vs_float_max_rpm: number;
+      /** null when the Inovance firmware cannot hold the drive (no fixed-point run). */
+      fixed_vs_float_max_rpm: number | null;
     };
   });
   robust?: RobustReport;
@@ -157,8 +173,9 @@ export interface RobustReport {
   safe: boolean;
   safe_bandwidth_hz: [number, number] | null;
   safe_bandwidth_scan_hz: [number, number];
-  step?: { case: number; axis: 'd' | 'q'; ref_a: number; t: number[]; float: number[]; fixed: number[];
-    metrics: Record<'float' | 'fixed', Record<string, number | null>>; fixed_vs_float_max_a: number };
+  /** `fixed` null when the Inovance firmware cannot hold the drive (no fixed-point run). */
+  step?: { case: number; axis: 'd' | 'q'; ref_a: number; t: number[]; float: number[]; fixed: number[] | null;
+    metrics: { float: Record<string, number | null>; fixed: Record<string, number | null> | null }; fixed_vs_float_max_a: number | null };
   monte_carlo?: { samples: number; seed: number; fraction_below: number; phase_margin_deg: Record<'d' | 'q', Histogram> };
 }
 /** pulab.analyses.review: one graded finding; `key` = the report path of the value, `field` = the input to change. */

@@ -1,9 +1,9 @@
 // Main-thread client of the worker: typed calls returning promises, boot progress callbacks.
-import { isWorkerToMain, type ApiKind, type BootFrom, type ApiResult, type BootStage, type MainToWorker } from './protocol';
+import { isWorkerToMain, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type Ok, type ApiErr, type Request } from './protocol';
 
-export interface CallResult {
-  result: ApiResult;
-  /** Time spent in Python, ms. */
+/** A call's reply, as its kind promises, and the time spent in Python (ms). */
+export interface CallResult<K extends ApiKind = ApiKind> {
+  result: Ok<K> | ApiErr;
   ms: number;
 }
 
@@ -35,7 +35,7 @@ export interface WorkerLike {
 
 export class PulabClient {
   private next = 1;
-  private pending = new Map<number, { resolve(r: CallResult): void; reject(e: Error): void }>();
+  private pending = new Map<number, { resolve(r: { result: ApiResult; ms: number }): void; reject(e: Error): void }>();
   private fatal: string | null = null;
   private watchdog: ReturnType<typeof setTimeout> | undefined;
   ready = false;
@@ -106,12 +106,13 @@ export class PulabClient {
    * lost (crashed, killed or hung): the client fails with a message and `lost` set, so the page
    * can start a new runtime (a report takes milliseconds, so a short limit is safe for it).
    */
-  call(kind: ApiKind, payload: unknown, channel?: string, lostAfterMs?: number): Promise<CallResult> {
+  call<K extends ApiKind>(kind: K, req: Request[K], channel?: string, lostAfterMs?: number): Promise<CallResult<K>> {
     if (this.fatal) return Promise.reject(new Error(this.fatal));
     const id = this.next++;
-    return new Promise<CallResult>((resolve, reject) => {
-      this.pending.set(id, { resolve, reject });
-      this.worker.postMessage({ type: 'call', id, kind, payload: JSON.stringify(payload), channel });
+    return new Promise<CallResult<K>>((resolve, reject) => {
+      // The worker answers a call with the reply of the call's own kind (pulab.api.call_json).
+      this.pending.set(id, { resolve: (r) => resolve({ result: r.result as Ok<K> | ApiErr, ms: r.ms }), reject });
+      this.worker.postMessage({ type: 'call', id, kind, payload: JSON.stringify(req), channel });
       if (lostAfterMs !== undefined && this.ready)
         setTimeout(() => {
           if (this.pending.has(id)) this.markLost(`Python did not answer for ${Math.round(lostAfterMs / 1000)} s`);

@@ -33,7 +33,7 @@ function sharedWorker(name: string): WorkerLike {
 }
 
 function dedicatedWorker(name: string): WorkerLike {
-  return new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name }) as unknown as WorkerLike;
+  return new Worker(new URL('./worker.ts', import.meta.url), { type: 'module', name });
 }
 
 /**

@@ -2,7 +2,7 @@
 // (the tabs and iframes connected to a SharedWorker, or the one page of a dedicated Worker). It
 // gets a `post` function per client and a Pyodide loader, so vitest runs exactly this code on
 // real Pyodide in Node.
-import { API_FUNCTIONS, PRIORITY_CHANNEL, STEPPED_FUNCTIONS, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type SteppedKind, type WorkerToMain } from './protocol';
+import { PRIORITY_CHANNEL, STEPPED_KINDS, type ApiKind, type ApiResult, type BootFrom, type BootStage, type MainToWorker, type WorkerToMain } from './protocol';
 
 /** The part of the Pyodide API the worker uses. */
 export interface PyodideLike {
@@ -87,14 +87,17 @@ export async function fastOrFull(
   return { py: await full(), from: 'full' };
 }
 
-type PyApi = Record<string, (text: string) => string>;
 /** A Python generator as Pyodide hands it to JavaScript (a PyProxy). */
 interface PyGenerator {
   next(): { done?: boolean; value?: unknown };
   return(value?: unknown): unknown;
   destroy(): void;
 }
-type PySteps = Record<string, (text: string) => PyGenerator>;
+/** The two entry points of pulab.api every request goes through: `kind` is the one dispatch key. */
+interface PyApi {
+  call_json(kind: string, text: string): string;
+  call_json_steps(kind: string, text: string): PyGenerator;
+}
 type Queued = { call: Call; post: Post; client: number };
 type Call = Extract<MainToWorker, { type: 'call' }>;
 type Post = (msg: WorkerToMain) => void;
@@ -165,7 +168,6 @@ const now = (): number => (typeof performance !== 'undefined' ? performance.now(
  */
 export function createRuntimeHost(load: PyodideLoader, files: Record<string, string>, opts: { warmRuns?: number } = {}): RuntimeHost {
   let api: PyApi | null = null;
-  let steps: PySteps = {};
   let resolveReady!: () => void;
   let rejectReady!: (e: unknown) => void;
   const ready = new Promise<void>((res, rej) => {
@@ -212,19 +214,9 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
       // Everything imported so far lives as long as the runtime: out of the cyclic collector's
       // sight, a full collection during a report no longer walks the whole stdlib and pulab.
       py.runPython('import gc; gc.freeze()');
-      const fns: PyApi = {};
-      for (const name of Object.values(API_FUNCTIONS)) {
-        const f = mod[name];
-        if (typeof f === 'function') fns[name] = f as (text: string) => string;
-      }
-      if (!fns.run_json) throw new Error('pulab.api.run_json is missing');
-      const stepFns: PySteps = {};
-      for (const name of Object.values(STEPPED_FUNCTIONS)) {
-        const f = mod[name];
-        if (typeof f === 'function') stepFns[name] = f as (text: string) => PyGenerator;
-      }
-      steps = stepFns;
-      api = fns;
+      const { call_json, call_json_steps } = mod;
+      if (typeof call_json !== 'function' || typeof call_json_steps !== 'function') throw new Error('pulab.api.call_json is missing');
+      api = { call_json: call_json as PyApi['call_json'], call_json_steps: call_json_steps as PyApi['call_json_steps'] };
       progress('ready', 1);
       readyMsg = { type: 'ready', bootMs: now() - t0, pyodideVersion: py.version, ...(from ? { from } : {}), ...(note ? { note } : {}) };
       state = 'ready';
@@ -240,21 +232,22 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
     }
   }
 
+  /** Python's reply text, read as the reply its kind promises (docs/contract.md, "API"). */
+  const reply = (text: unknown): ApiResult => JSON.parse(String(text)) as ApiResult;
+
   function run(kind: ApiKind, payload: string): ApiResult {
-    const fname = API_FUNCTIONS[kind];
-    const f = api?.[fname];
-    if (!f) return { ok: false, field: '', message: `pulab.api.${fname} is not available in this build` };
+    if (!api) return { ok: false, field: '', message: 'pulab.api.call_json is not available in this build' };
     try {
-      return JSON.parse(f(payload)) as ApiResult;
+      return reply(api.call_json(kind, payload));
     } catch (e) {
-      return internalError(fname, e);
+      return internalError(kind, e);
     }
   }
 
-  function internalError(fname: string, e: unknown): ApiResult {
+  function internalError(kind: string, e: unknown): ApiResult {
     const text = e instanceof Error ? e.message : String(e);
     const last = text.trim().split('\n').pop() ?? text;
-    return { ok: false, field: '', message: `internal error in pulab.api.${fname}: ${last}` };
+    return { ok: false, field: '', message: `internal error in pulab.api.call_json(${JSON.stringify(kind)}): ${last}` };
   }
 
   const channelKey = (c: Queued): string | null => (c.call.channel ? `${c.client}:${c.call.channel}` : null);
@@ -265,19 +258,17 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
   };
 
   /**
-   * A call of a STEPPED_FUNCTIONS kind: one slice per macrotask, so calls posted meanwhile are
+   * A call of a STEPPED_KINDS kind: one slice per macrotask, so calls posted meanwhile are
    * queued; null when a newer call on its channel cancelled it (the generator is closed).
    */
-  async function runSteps(c: Queued, kind: SteppedKind): Promise<ApiResult | null> {
-    const fname = STEPPED_FUNCTIONS[kind];
-    const start = steps[fname];
-    if (!start) return run(kind, c.call.payload);
+  async function runSteps(c: Queued, kind: ApiKind): Promise<ApiResult | null> {
+    if (!api) return run(kind, c.call.payload);
     let gen: PyGenerator | null = null;
     try {
-      gen = start(c.call.payload);
+      gen = api.call_json_steps(kind, c.call.payload);
       for (;;) {
         const slice = gen.next();
-        if (slice.done) return JSON.parse(String(slice.value)) as ApiResult;
+        if (slice.done) return reply(slice.value);
         await new Promise((res) => setTimeout(res, 0));
         if (newerQueued(c)) {
           gen.return();
@@ -285,13 +276,13 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
         }
       }
     } catch (e) {
-      return internalError(fname, e);
+      return internalError(kind, e);
     } finally {
       gen?.destroy();
     }
   }
 
-  const isStepped = (kind: ApiKind): kind is SteppedKind => kind in STEPPED_FUNCTIONS;
+  const isStepped = (kind: ApiKind): boolean => STEPPED_KINDS.includes(kind);
 
   /** The oldest queued call on the priority channel, else the oldest queued call. */
   const takeNext = (): Queued | undefined => {

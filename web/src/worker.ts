@@ -39,7 +39,7 @@ async function fetchSnapshot(url: string, size: number, progress: BootProgress):
 }
 
 async function load(indexURL: string, progress: BootProgress) {
-  const full = async () => (await loadPyodide({ indexURL, packages: [] })) as unknown as PyodideLike;
+  const full = async (): Promise<PyodideLike> => loadPyodide({ indexURL, packages: [] });
   const snap = SNAPSHOT;
   const fast = snap && snap.pyodideVersion === version
     ? async () => {
@@ -52,10 +52,11 @@ async function load(indexURL: string, progress: BootProgress) {
         const py = await loadPyodide({ indexURL, packages: [], _loadSnapshot: bytes });
         // Pyodide keeps its config, and with it the 30 MB snapshot, for the runtime's lifetime; the
         // snapshot is in the runtime's memory now, so its bytes go.
-        const config = (py as unknown as { _api?: { config?: { _loadSnapshot?: unknown } } })._api?.config;
-        if (config) delete config._loadSnapshot;
+        const internals: unknown = '_api' in py ? py._api : undefined;
+        const config: unknown = typeof internals === 'object' && internals !== null && 'config' in internals ? internals.config : undefined;
+        if (typeof config === 'object' && config !== null) Reflect.deleteProperty(config, '_loadSnapshot');
         release((await bytes).buffer);
-        return py as unknown as PyodideLike;
+        return py;
       }
     : null;
   return fastOrFull(fast, full);
@@ -74,11 +75,11 @@ function serve(port: Port): void {
 
 // Alive while this lock is held: the browser releases it when the worker dies (crash, killed),
 // which a page can see even while Python is busy (rpc.ts, PulabClient's liveness check).
-void (navigator as Navigator & { locks?: LockManager }).locks?.request(`pulab-alive-${(self as unknown as { name: string }).name}`, () => new Promise<never>(() => undefined));
+void (navigator as Navigator & { locks?: LockManager }).locks?.request(`pulab-alive-${self.name}`, () => new Promise<never>(() => undefined));
 
-const scope = self as unknown as Port & { onconnect?: ((ev: MessageEvent) => void) | null };
-if ('onconnect' in scope) scope.onconnect = (ev) => serve(ev.ports[0] as unknown as Port);
-else serve(scope);
+// A SharedWorker's scope has `onconnect` (one port per page); a dedicated Worker's scope is the port.
+if ('onconnect' in self) self.onconnect = (ev: MessageEvent) => ev.ports.forEach(serve);
+else serve(self);
 // Pyodide fetches some files on the side; when one fails, the boot fails with its own message
 // (above) and the side promise's rejection must not surface as an uncaught error on the page.
 self.addEventListener('unhandledrejection', (ev) => {

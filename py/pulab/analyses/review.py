@@ -40,9 +40,10 @@ SQRT3 = math.sqrt(3.0)
 SQRT2 = math.sqrt(2.0)
 
 SEVERITIES = ("error", "warning", "note")
-#: The form label (en, zh) of each input a finding may point at; ``profiles``: the firmware picker.
+#: The form label (en, zh) of each input a finding may point at.
 _LABELS = {fd.path: fd.label for fd in FIELDS if fd.label[0]}
-_LABELS["profiles"] = ("Firmware profile", "固件配置")
+#: The design choice behind what only the vendor's code decides: which firmware to ship.
+_FIRMWARE = "conventions.firmware"
 #: Lower bounds of each severity (|value| ≥ bound); docs/contract.md "Design review".
 THRESHOLDS = {
     # relative error of a raw integer or a PI integer (a rounding of the user's value), in %
@@ -58,6 +59,10 @@ THRESHOLDS = {
     "voltage_ratio": {"warning": 1.0},
     # PLL angle error after lock, degrees
     "pll_steady_deg": {"note": 0.5, "warning": 2.0},
+    # spread of the back-EMF that a datasheet's Ke, Kv, kT, ψ imply, in % of the one used:
+    # kT is often printed hot or at rated current and Ke cold (magnets lose about 0.1 %/K),
+    # while a mixed-up convention is 41 % (RMS/peak) or 73 % (line/phase)
+    "bemf_spread_pct": {"note": 0.0, "warning": 10.0, "error": 25.0},
 }
 
 #: For each firmware constant: the design choice that moves its quantization (None: only the
@@ -131,8 +136,11 @@ def headroom(n: dict, vendor: dict) -> dict:
         w = 2.0 * math.pi * f
         return SQRT3 * math.hypot(m["rs_ohm"] * i + w * psi, w * m["lq_h"] * i)
 
-    # Without the firmware's own limit (it cannot hold this drive), the physical one: U_dc/√2.
-    limit = vendor["pm_maxout_vol"]["si"] if "pm_maxout_vol" in vendor else d["udc_v"] / SQRT2
+    # Inovance's own limit when it is the firmware shipped and holds this drive; else the
+    # physical one, U_dc/√2.
+    inovance = n.get("conventions", {}).get("firmware", "inovance") == "inovance"
+    limit = vendor["pm_maxout_vol"]["si"] if inovance and "pm_maxout_vol" in vendor \
+        else d["udc_v"] / SQRT2
     f_b = d["base_freq_hz"]
     bemf_fb = m["bemf_v"] * f_b / m["rated_freq_hz"]
     f_fw = limit / m["bemf_v"] * m["rated_freq_hz"]
@@ -152,16 +160,18 @@ def _constants(f: list, vendor: dict, unit: str) -> None:
         if "unit_uH" in res["flags"]:
             field = "conventions.inductance_unit"
         if {"wrap", "store"} & set(res["flags"]):
-            _finding(f, "error", "constant_wrap", key, field or "profiles", res["value"],
+            _finding(f, "error", "constant_wrap", key, field or _FIRMWARE, res["value"],
                      name=name, value=res["value"], ideal=res["ideal"],
                      why={"code": cost, "params": {"pct": res["error_pct"]}})
         else:
-            _finding(f, grade(res["error_pct"], q), "constant_error", key, field or "profiles",
+            _finding(f, grade(res["error_pct"], q), "constant_error", key, field or _FIRMWARE,
                      res["error_pct"], name=name, value=res["value"], pct=res["error_pct"],
                      ideal=res["ideal"], why={"code": cost, "params": {"pct": res["error_pct"]}})
 
 
 def _raw_rounding(f: list, n: dict, raw: dict) -> None:
+    """The firmware's parameter units: the motor's values are not design choices, so the
+    finding points at the inductance unit (LD/LQ in 10 µH) or at the firmware profile."""
     unit = n["conventions"]["inductance_unit"]
     for name in RAW_FIELDS:
         if name in n["raw"] or name not in raw:  # typed, or beyond the firmware: firmware.*
@@ -170,14 +180,43 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         section, key = path.split(".")
         si = n[section][key]
         exact = si * scale
+        finer = name in ("LD", "LQ") and unit == "10uH"
+        field = "conventions.inductance_unit" if finer else _FIRMWARE
+        count = "1 µH" if name in ("LD", "LQ") and unit == "uH" else _PARAMETER_UNITS[name]
+        fix = {"code": "fix.inductance_unit" if finer else "fix.parameter_unit",
+               "params": {"unit": count}}
         if raw[name] == 0:
-            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", path, 0, name=name, path=path,
-                     si=si)
+            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name,
+                     path={"label": path}, si=si, fix=fix)
             continue
         pct = 100.0 * (raw[name] - exact) / exact
         _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
-                 f"vendor.raw.{name}", path, pct, name=name, value=raw[name], path=path, si=si,
-                 pct=pct)
+                 f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path={"label": path},
+                 si=si, pct=pct, fix=fix)
+
+
+def _bemf_check(f: list, n: dict) -> None:
+    """Several of Ke, Kv, kT, ψ on one datasheet: how far apart their back-EMFs are."""
+    check = n.get("datasheet", {}).get("bemf_check")
+    if check is None:
+        return
+    spread = check["spread_pct"]
+    sev = grade(spread, THRESHOLDS["bemf_spread_pct"])
+    listed = ", ".join(f"{_SYMBOLS[s['field']]} {s['bemf_v']:.4g} V" for s in check["sources"])
+    _finding(f, sev, "bemf_spread", "datasheet.bemf_check.spread_pct", "datasheet.bemf_from",
+             spread, spread=spread, rpm=check["rated_speed_rpm"], listed=listed,
+             used=_SYMBOLS[check["used"]],
+             why={"code": f"bemf_spread.{sev}", "params": {}})
+
+
+#: Each Inovance raw parameter's unit (one count).
+_PARAMETER_UNITS = {"Voltage": "1 V", "Current": "0.01 A", "FullFreq01": "0.01 Hz",
+                    "FreqRated01": "0.01 Hz", "RsPm": "1 mΩ", "LD": "0.01 mH", "LQ": "0.01 mH",
+                    "BemfVolt": "0.1 V", "uDCFilter": "0.1 V"}
+#: The symbol a datasheet prints for each back-EMF source (the same in both languages).
+_SYMBOLS = {"datasheet.ke_v_per_krpm": "Ke", "datasheet.ke_v_s_per_rad": "Ke",
+            "datasheet.kv_rpm_per_v": "Kv", "datasheet.kt_nm_per_a": "kT",
+            "datasheet.psi_wb": "ψ"}
 
 
 def _pi(f: list, n: dict, pi: dict) -> None:
@@ -299,13 +338,18 @@ def _robust(f: list, loop: dict | None) -> None:
                  value, **params)
 
 
-def _firmware(f: list, firmware: dict) -> None:
+def _firmware(f: list, firmware: dict, shipped: str) -> None:
+    """A firmware that cannot hold the motor: a warning for the one shipped, a note for others."""
     for name, st in firmware.items():
         if st["representable"]:
             continue
         p = st["problems"]
         results = sorted({r for x in p for r in x["results"]})
-        _finding(f, "warning", "unrepresentable", f"firmware.{name}", "profiles", name,
+        # a raw input or a division the code cannot do: integers missing; else words too small
+        missing = any(x["code"].startswith("limit.") for x in p)
+        _finding(f, "warning" if name == shipped else "note", "unrepresentable",
+                 f"firmware.{name}", _FIRMWARE, name,
+                 None if missing else "unrepresentable_constants",
                  profile=name, fields=", ".join(x["field"] for x in p),
                  results=", ".join(results), advice={"code": p[0]["code"] + "_advice"
                  if p[0]["code"].startswith("limit.") else "limit.constant_advice",
@@ -336,6 +380,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     unit = n["conventions"]["inductance_unit"]
     _constants(f, vendor, unit)
     _raw_rounding(f, n, raw)
+    _bemf_check(f, n)
     _pi(f, n, pi)
     _phase_margin(f, n, pi)
     _base_frequency(f, raw)
@@ -343,7 +388,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     _voltage(f, h, n)
     _pll(f, sim)
     _robust(f, loop)
-    _firmware(f, firmware or {})
+    _firmware(f, firmware or {}, n["conventions"]["firmware"])
     if unit == "uH":
         _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":

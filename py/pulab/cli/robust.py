@@ -72,7 +72,7 @@ def run_task(task: tuple) -> dict:
     try:
         cfg = validate(analysis)
         r = report(inp)
-        out.update(robust.study_row(r, cfg["robust"] or robust.validate({}), cfg["delay"],
+        out.update(robust.study_row(r, cfg["robust"] or robust.settings({}), cfg["delay"],
                                     samples, seed, 0))
     except InputError as e:
         out["error"] = f"{e.field}: {e.message}"

@@ -1,8 +1,9 @@
 """Datasheet entry: what motor datasheets print, converted into the SI fields of ``motor``.
 
-A datasheet gives speed in rpm, the back-EMF constant per 1000 rpm (line to line,
-RMS or peak), R and L measured between two terminals, sometimes only a DC-bus
-voltage.  The report's ``motor`` section wants the rated frequency, the line
+A datasheet gives speed in rpm, the back-EMF constant per 1000 rpm or per rad/s (line
+to line or per phase, RMS or peak), a speed constant Kv in rpm/V, a torque constant per
+A RMS or peak, the magnet flux, R and L measured between two terminals or per phase
+(star or delta), sometimes only a DC-bus voltage.  The report's ``motor`` section wants the rated frequency, the line
 RMS back-EMF at that frequency and per-phase values of the equivalent star.
 Each conversion is returned with its formula and result so the reader can check
 it by hand.
@@ -10,12 +11,15 @@ it by hand.
 Conventions (sinusoidal PMSM, three phases)::
 
     f_n     = n·p/60                               (n in rpm, p pole pairs)
-    E_LL    = Ke·n/1000            (Ke in V/krpm, RMS)   or  /√2 when Ke is peak
+    E_LL    = Ke·n/1000            (Ke in V/krpm, RMS)   or  /√2 when Ke is peak,
+                                   ·√3 when Ke is per phase
+    E_LL    = n/Kv                 (Kv in rpm/V, RMS)    or  /√2 when Kv is peak
     Ke_SI   = E_LL / ω_m           (V·s/rad, line-to-line RMS per mechanical rad/s)
     kT      = √3·Ke_SI             (N·m per A RMS phase current; T = 3·p·ψ_rms·I)
     ψ_pk    = √2·E_LL/(√3·ω_e)     (Wb, phase flux amplitude; ψ_rms = ψ_pk/√2)
     R_ph    = R_LL/2, L_ph = L_LL/2 (equivalent star; a delta phase is 3·R_LL/2,
                                      which is the same star equivalent)
+    R_ph    = R_Δ/3                (a delta phase given per phase: its star equivalent)
     U_LL    = U_dc/√2              (largest line RMS voltage of linear SVPWM)
 
 Examples
@@ -25,6 +29,8 @@ Examples
 ...     "rated_current_a": 2.8}, {})[:2]
 >>> motor["rated_freq_hz"], round(motor["bemf_v"], 4), motor["rs_ohm"], motor["ld_h"]
 (200.0, 94.1442, 1.39, 0.00253)
+>>> [c["label"] for c in conv][3:]
+['d-axis inductance per phase, equivalent star', 'q-axis inductance per phase, equivalent star']
 >>> [c["field"] for c in conv]
 ['motor.rated_freq_hz', 'motor.bemf_v', 'motor.rs_ohm', 'motor.ld_h', 'motor.lq_h']
 """
@@ -37,20 +43,29 @@ from ..schema.errors import InputError
 from ..schema.fields import FIELD, section_fields
 from ..schema.validate import value
 
-__all__ = ["FIELDS", "KE_FIELDS", "apply", "mechanical"]
+__all__ = ["FIELDS", "KE_FIELDS", "SETS", "apply", "mechanical"]
 
 SQRT2 = math.sqrt(2.0)
 SQRT3 = math.sqrt(3.0)
 
 #: Datasheet keys; units in the names (the schema's ``datasheet`` section).
 FIELDS = tuple(f.key for f in section_fields("datasheet"))
-#: The back-EMF sources, in order of preference; more than one is an error.
-KE_FIELDS = ("ke_v_per_krpm", "ke_v_s_per_rad", "kt_nm_per_a", "psi_wb")
-#: Which motor field each datasheet value sets (for the "both given" error).
-_SETS = {"speed_rpm": ("rated_freq_hz",), "ke_v_per_krpm": ("bemf_v",),
-         "ke_v_s_per_rad": ("bemf_v",), "kt_nm_per_a": ("bemf_v",), "psi_wb": ("bemf_v",),
-         "rs_line_ohm": ("rs_ohm",), "l_line_h": ("ld_h", "lq_h"), "ld_line_h": ("ld_h",),
-         "lq_line_h": ("lq_h",), "dc_bus_v": ("rated_voltage_v",)}
+#: The back-EMF sources, in order of preference (``bemf_from`` picks another).
+KE_FIELDS = ("ke_v_per_krpm", "ke_v_s_per_rad", "kv_rpm_per_v", "kt_nm_per_a", "psi_wb")
+#: R and L as printed: (key, motor fields it sets, symbol, measured between).
+_WINDING = (("rs_line_ohm", ("rs_ohm",), "R", "line"), ("rs_phase_ohm", ("rs_ohm",), "R", "phase"),
+            ("l_line_h", ("ld_h", "lq_h"), "L", "line"),
+            ("l_phase_h", ("ld_h", "lq_h"), "L", "phase"),
+            ("ld_line_h", ("ld_h",), "L_d", "line"), ("ld_phase_h", ("ld_h",), "L_d", "phase"),
+            ("lq_line_h", ("lq_h",), "L_q", "line"), ("lq_phase_h", ("lq_h",), "L_q", "phase"))
+#: Which motor fields each datasheet value sets (the "both given" error, the required hint).
+SETS = {"speed_rpm": ("rated_freq_hz",), **{k: ("bemf_v",) for k in KE_FIELDS},
+        **{k: fields for k, fields, _, _ in _WINDING}, "dc_bus_v": ("rated_voltage_v",)}
+#: Choices that qualify a value: (choice, the values it is used with).
+_QUALIFIERS = (("ke_measure", ("ke_v_per_krpm", "ke_v_s_per_rad")),
+               ("ke_between", ("ke_v_per_krpm", "ke_v_s_per_rad")),
+               ("kv_measure", ("kv_rpm_per_v",)), ("kt_current", ("kt_nm_per_a",)),
+               ("winding", tuple(k for k, _, _, _ in _WINDING)))
 
 
 def _positive(ds: dict, key: str) -> float:
@@ -66,6 +81,14 @@ def _choice(ds: dict, key: str) -> str:
     return f.default
 
 
+def both_given(field: str, other: str, target: str) -> InputError:
+    """The error for two inputs that set the same motor field: it names both, and
+    ``params.other`` is the second path (so a page can mark both)."""
+    return InputError(field, code="both_given", this=field, other=other,
+                      target={"label": target}, this_label={"label": field},
+                      other_label={"label": other})
+
+
 def _step(field: str, label: str, label_zh: str, formula: str, value: float, unit: str,
           sources: list) -> dict:
     return {"field": field, "label": label, "label_zh": label_zh, "formula": formula,
@@ -76,7 +99,60 @@ def _g(x: float) -> str:
     return f"{x:.6g}"
 
 
-def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
+def _bemf(ds: dict, src: str, n: float, f_n: float) -> tuple[float, str, list]:
+    """The line RMS back-EMF at rated speed ``n`` [rpm] (``f_n`` [Hz]) that datasheet value
+    ``src`` implies: (E_LL [V], formula, the datasheet fields used)."""
+    x = _positive(ds, src)
+    used = [f"datasheet.{src}"]
+    if src in ("ke_v_per_krpm", "ke_v_s_per_rad"):
+        peak = _choice(ds, "ke_measure") == "peak"
+        phase = _choice(ds, "ke_between") == "phase"
+        k = (SQRT3 if phase else 1.0) / (SQRT2 if peak else 1.0)
+        tail = ("·√3" if phase else "") + ("/√2" if peak else "")
+        if src == "ke_v_per_krpm":
+            e, formula = x * n / 1000.0 * k, f"E_LL = Ke·n/1000{tail} = {_g(x)}·{_g(n)}/1000{tail}"
+        else:
+            e = x * 2.0 * math.pi * n / 60.0 * k
+            formula = f"E_LL = Ke·2π·n/60{tail} = {_g(x)}·2π·{_g(n)}/60{tail}"
+        return e, formula, used + ["datasheet.ke_measure"] + (
+            ["datasheet.ke_between"] if "ke_between" in ds else [])
+    if src == "kv_rpm_per_v":
+        peak = _choice(ds, "kv_measure") == "peak"
+        tail = "/√2" if peak else ""
+        return (n / x / (SQRT2 if peak else 1.0), f"E_LL = n/Kv{tail} = {_g(n)}/{_g(x)}{tail}",
+                used + (["datasheet.kv_measure"] if "kv_measure" in ds else []))
+    if src == "kt_nm_per_a":
+        k = 1.0 if _choice(ds, "kt_current") == "rms" else SQRT2
+        tail = "" if k == 1 else "·√2"
+        return (x * k / SQRT3 * 2.0 * math.pi * n / 60.0,
+                f"E_LL = kT{tail}/√3·2π·n/60 = {_g(x)}{tail}/√3·2π·{_g(n)}/60",
+                used + (["datasheet.kt_current"] if "kt_current" in ds else []))
+    return (SQRT3 * 2.0 * math.pi * f_n * x / SQRT2,
+            f"E_LL = √3·2π·f_n·ψ/√2 = √3·2π·{_g(f_n)}·{_g(x)}/√2", used)
+
+
+def _check(ds: dict) -> None:
+    """Errors of fields that contradict each other or qualify nothing."""
+    for key, values in _QUALIFIERS:
+        if key in ds and not set(values) & set(ds):
+            if len(values) == 1:
+                raise InputError(f"datasheet.{key}", code="used_with", other=f"datasheet.{values[0]}")
+            raise InputError(f"datasheet.{key}", code="used_with_either",
+                             a=f"datasheet.{values[0]}", b=values[1])
+    setters: dict = {}
+    for key in FIELDS:
+        if key in ds and key in SETS and key not in KE_FIELDS:
+            for t in SETS[key]:
+                if t in setters:
+                    raise both_given(f"datasheet.{key}", f"datasheet.{setters[t]}", f"motor.{t}")
+                setters[t] = key
+    if "bemf_from" in ds:
+        src = _choice(ds, "bemf_from")
+        if src not in ds:
+            raise InputError("datasheet.bemf_from", code="used_with", other=f"datasheet.{src}")
+
+
+def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict, dict | None]:
     """Fill ``motor`` (and a missing ``drive.udc_v``) from the datasheet section.
 
     Parameters
@@ -89,30 +165,29 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
 
     Returns
     -------
-    (motor, conversions, drive) : (dict, list of dict, dict)
-        New ``motor``/``drive`` dicts with the derived fields added, and one entry per
-        conversion: ``field, label, label_zh, formula, value, unit, from``.
+    (motor, conversions, drive, bemf_check)
+        New ``motor``/``drive`` dicts with the derived fields added; one entry per
+        conversion: ``field, label, label_zh, formula, value, unit, from``; and, when
+        several of Ke, Kv, kT, ψ are given, their cross-check: ``used`` (the datasheet
+        path the firmware's back-EMF comes from), ``sources`` (each ``field``,
+        ``bemf_v`` line RMS at rated speed, ``formula``, ``deviation_pct`` from the one
+        used) and ``spread_pct`` = 100·(max − min)/used.
 
     Raises
     ------
     InputError
-        A datasheet value and the motor field it would set both given (the message
-        names both), two back-EMF sources, a bad number or choice.
+        A datasheet value and the motor field it would set both given, or two datasheet
+        values for one motor field (the message names both, ``params.other`` is the
+        second path), a bad number or choice.
     """
     motor, drive = dict(motor), dict(drive)
-    for key, targets in _SETS.items():
+    for key, targets in SETS.items():
         if key in ds:
             for t in targets:
                 if t in motor:
-                    raise InputError(f"datasheet.{key}", code="both_given", other=f"motor.{t}")
+                    raise both_given(f"datasheet.{key}", f"motor.{t}", f"motor.{t}")
+    _check(ds)
     sources = [k for k in KE_FIELDS if k in ds]
-    if len(sources) > 1:
-        raise InputError(f"datasheet.{sources[1]}", code="both_bemf", other=f"datasheet.{sources[0]}")
-    if "ke_measure" in ds and not {"ke_v_per_krpm", "ke_v_s_per_rad"} & set(ds):
-        raise InputError("datasheet.ke_measure", code="used_with_either",
-                         a="datasheet.ke_v_per_krpm", b="ke_v_s_per_rad")
-    if "kt_current" in ds and "kt_nm_per_a" not in ds:
-        raise InputError("datasheet.kt_current", code="used_with", other="datasheet.kt_nm_per_a")
     conv: list = []
     p = motor.get("pole_pairs")
     if "speed_rpm" in ds or sources:
@@ -125,6 +200,7 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
         conv.append(_step("motor.rated_freq_hz", "rated frequency", "额定频率",
                           f"f_n = n·p/60 = {_g(n)}·{p}/60", motor["rated_freq_hz"], "Hz",
                           ["datasheet.speed_rpm", "motor.pole_pairs"]))
+    check = None
     if sources:
         if "rated_freq_hz" not in motor:
             raise InputError("datasheet.speed_rpm", code="required_to_convert",
@@ -132,57 +208,42 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
         # Only the sign here: a value out of range is named where it came from, by normalize.
         f_n = value(FIELD["motor.rated_freq_hz"]._replace(lo=None, hi=None), motor["rated_freq_hz"])
         n = 60.0 * f_n / p  # rpm at rated frequency
-        w_m = 2.0 * math.pi * n / 60.0
-        src = sources[0]
-        x = _positive(ds, src)
-        if src in ("ke_v_per_krpm", "ke_v_s_per_rad"):
-            measure = _choice(ds, "ke_measure")
-            k = 1.0 if measure == "rms" else 1.0 / SQRT2
-            if src == "ke_v_per_krpm":
-                e = x * n / 1000.0 * k
-                formula = f"E_LL = Ke·n/1000{'' if k == 1 else '/√2'} = {_g(x)}·{_g(n)}/1000" \
-                          + ("" if k == 1 else "/√2")
-            else:
-                e = x * w_m * k
-                formula = f"E_LL = Ke·2π·n/60{'' if k == 1 else '/√2'} = {_g(x)}·2π·{_g(n)}/60" \
-                          + ("" if k == 1 else "/√2")
-            sources_used = [f"datasheet.{src}", "datasheet.ke_measure"]
-        elif src == "kt_nm_per_a":
-            k = 1.0 if _choice(ds, "kt_current") == "rms" else SQRT2
-            e = x * k / SQRT3 * w_m
-            formula = f"E_LL = kT{'' if k == 1 else '·√2'}/√3·2π·n/60 = {_g(x)}" \
-                      f"{'' if k == 1 else '·√2'}/√3·2π·{_g(n)}/60"
-            sources_used = ["datasheet.kt_nm_per_a", "datasheet.kt_current"]
-        else:
-            e = SQRT3 * 2.0 * math.pi * f_n * x / SQRT2
-            formula = f"E_LL = √3·2π·f_n·ψ/√2 = √3·2π·{_g(f_n)}·{_g(x)}/√2"
-            sources_used = ["datasheet.psi_wb"]
+        implied = {src: _bemf(ds, src, n, f_n) for src in sources}
+        used = _choice(ds, "bemf_from") if "bemf_from" in ds else sources[0]
+        e, formula, fields = implied[used]
         motor["bemf_v"] = e
         conv.append(_step("motor.bemf_v", "back-EMF, line RMS at rated frequency",
                           "额定频率下的线反电势（有效值）", formula, e, "V",
-                          sources_used + (["datasheet.speed_rpm"] if "speed_rpm" in ds
-                                          else ["motor.rated_freq_hz"]) + ["motor.pole_pairs"]))
+                          fields + (["datasheet.speed_rpm"] if "speed_rpm" in ds
+                                    else ["motor.rated_freq_hz"]) + ["motor.pole_pairs"]))
+        if len(sources) > 1:
+            values = [x[0] for x in implied.values()]
+            check = {"used": f"datasheet.{used}", "rated_speed_rpm": n,
+                     "sources": [{"field": f"datasheet.{src}", "bemf_v": x[0], "formula": x[1],
+                                  "deviation_pct": 100.0 * (x[0] - e) / e}
+                                 for src, x in implied.items()],
+                     "spread_pct": 100.0 * (max(values) - min(values)) / e}
     winding = _choice(ds, "winding")
-    if "winding" in ds and not {"rs_line_ohm", "l_line_h", "ld_line_h", "lq_line_h"} & set(ds):
-        raise InputError("datasheet.winding", code="used_with_either", a="datasheet.rs_line_ohm",
-                         b="l_line_h")
-    if "l_line_h" in ds and ({"ld_line_h", "lq_line_h"} & set(ds)):
-        other = "ld_line_h" if "ld_line_h" in ds else "lq_line_h"
-        raise InputError(f"datasheet.{other}", code="both_given", other="datasheet.l_line_h")
-    delta = "" if winding == "star" else "  (delta: R_Δ = 3·R_LL/2, star equivalent R_Δ/3)"
-    for key, fields, sym in (("rs_line_ohm", ("rs_ohm",), "R"), ("l_line_h", ("ld_h", "lq_h"), "L"),
-                             ("ld_line_h", ("ld_h",), "L_d"), ("lq_line_h", ("lq_h",), "L_q")):
+    for key, fields, sym, between in _WINDING:
         if key not in ds:
             continue
         x = _positive(ds, key)
+        if between == "line":
+            # a delta phase is 3·X_LL/2 and its star equivalent X_Δ/3: again X_LL/2
+            y, formula = x / 2.0, f"{sym} = {sym}_LL/2 = {_g(x)}/2" + (
+                "" if winding == "star" else "  (delta: X_Δ = 3·X_LL/2, star equivalent X_Δ/3)")
+        elif winding == "star":
+            y, formula = x, f"{sym} = {sym}_ph = {_g(x)}"
+        else:
+            y, formula = x / 3.0, f"{sym} = {sym}_Δ/3 = {_g(x)}/3  (star equivalent of a delta phase)"
+        unit = "Ω" if sym == "R" else "H"
         for f in fields:
-            motor[f] = x / 2.0
-            unit = "Ω" if sym == "R" else "H"
+            motor[f] = y
+            axis = f[1]  # "ld_h" → d
             conv.append(_step(f"motor.{f}", "resistance per phase, equivalent star" if sym == "R"
-                              else f"{f[0].upper()}-axis inductance per phase, equivalent star",
+                              else f"{axis}-axis inductance per phase, equivalent star",
                               "每相电阻（等效星形）" if sym == "R"
-                              else f"每相 {f[0]} 轴电感（等效星形）",
-                              f"{sym}_ph = {sym}_LL/2 = {_g(x)}/2{delta}", x / 2.0, unit,
+                              else f"每相 {axis} 轴电感（等效星形）", formula, y, unit,
                               [f"datasheet.{key}"] + (["datasheet.winding"] if "winding" in ds
                                                       else [])))
     if "dc_bus_v" in ds:
@@ -196,7 +257,7 @@ def apply(ds: dict, motor: dict, drive: dict) -> tuple[dict, list, dict]:
             conv.append(_step("drive.udc_v", "DC bus (drive.udc_v not given)",
                               "直流母线（未给出 drive.udc_v）", "U_dc = datasheet.dc_bus_v", u, "V",
                               ["datasheet.dc_bus_v"]))
-    return motor, conv, drive
+    return motor, conv, drive, check
 
 
 def mechanical(motor: dict, base: dict, psi_r_wb: float, convention: str) -> dict:

@@ -126,7 +126,9 @@ def profiles(ctx: dict, opts: dict) -> dict:
         p["bases"] = bases_table(name, ctx, p)
         p["files"] = MODULES[name].FILES
         problems = ctx["firmware_problems"] if name == "inovance" else []
-        problems = problems + [limits.constant_problem(name, c) for c in p["constants"].values()
+        scales = tuple(k for k, _, _ in MODULES[name].OPTIONS if k not in _BOOLEANS)
+        problems = problems + [limits.constant_problem(name, c, scales)
+                               for c in p["constants"].values()
                                if "out_of_range" in c["flags"] or "saturate" in c["flags"]]
         p["status"] = limits.status(problems)
         out[name] = p

@@ -18,6 +18,8 @@ Examples
 
 from __future__ import annotations
 
+import math
+
 from ..schema.catalog import render
 from ..schema.errors import InputError
 from .inovance_code import RAW_SCALE, INDUCTANCE_SCALE
@@ -76,10 +78,21 @@ def error_problem(err: InputError, results: list) -> dict:
                   value=None, stored=None, max_si=None)
 
 
-def constant_problem(profile: str, c: dict) -> dict:
-    """A profile constant that does not fit its word: what the firmware keeps instead."""
+def constant_problem(profile: str, c: dict, options: tuple = ()) -> dict:
+    """A profile constant that does not fit its word: what the firmware keeps instead, and
+    how much to rescale it — fractional bits to drop, or the factor a base must move it by.
+
+    Parameters
+    ----------
+    profile : str ; c : dict — the constant (:func:`pulab.profiles.common.fixed`)
+    options : tuple of str — the profile's numeric options (its bases, full scales, dividers)
+    """
+    factor = abs(c["ideal"]) / max(abs(c["value"]), 1)
+    bits = max(1, math.ceil(math.log2(factor)))
     params = {"path": f"profiles.{profile}.{c['name']}", "ideal": c["ideal"],
-              "format": c["format"], "value": c["value"]}
+              "format": c["format"], "value": c["value"], "factor": factor, "bits": bits,
+              "q_new": c["q"] - bits,
+              "options": ", ".join(f"profiles.{profile}.{k}" for k in options) or "—"}
     return _entry(params["path"], "warning.profile_overflow", params, [c["name"]],
                   "limit.constant_advice", value=c["ideal"], stored=c["value"], max_si=None)
 

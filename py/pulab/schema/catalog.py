@@ -5,6 +5,8 @@ this table gives its words.  A parameter that is itself an error
 (``{"code": …, "params": …}``) is rendered in the same language, so a derived
 value's error reads as one sentence in either language.
 
+A parameter ``{"label": path}`` is that input's form label in the language of the text.
+
 Adding an error: one entry here; ``tests/py/test_schema.py`` renders every code
 in both languages.
 
@@ -44,6 +46,16 @@ MESSAGES = {
     "integer_range": ("must be {lo}..{hi}, got {got}", "必须在 {lo}..{hi} 之间，当前为 {got}"),
     "not_choice": ("must be one of {choices}, got {got}", "必须是以下之一：{choices}；当前为 {got}"),
     "not_flag": ("must be true or false, got {got}", "必须是 true 或 false，当前为 {got}"),
+    "not_name_or_number": ("must be one of {choices} or a number, got {got}",
+                           "必须是以下之一：{choices}，或一个数字；当前为 {got}"),
+    "not_pair": ("must be [low, high], got {got}", "必须是 [低, 高]，当前为 {got}"),
+    "pair_order": ("must have low ≤ high, got [{lo:g}, {hi:g}]",
+                   "必须满足 低 ≤ 高，当前为 [{lo:g}, {hi:g}]"),
+    "not_table": ("must be a list of at least 2 rows [{columns}], got {got}",
+                  "必须是至少 2 行 [{columns}] 的列表，当前为 {got}"),
+    "not_row": ("must be a row [{columns}], got {got}", "必须是一行 [{columns}]，当前为 {got}"),
+    "not_increasing": ("{column} must increase from row to row, got {value:g} after {before:g}",
+                       "{column} 必须逐行递增，当前 {value:g} 在 {before:g} 之后"),
     "only_with": ("is only used with {key} = {value}", "仅在 {key} = {value} 时使用"),
     "derived_invalid": ("gives {target} = {value:g}, which {reason}",
                         "得到 {target} = {value:g}，{reason}"),
@@ -64,9 +76,11 @@ MESSAGES = {
     "raw_range_for": ("must be {lo}..{hi} for {fmt}", "对 {fmt} 必须在 {lo}..{hi} 之间"),
     "no_simulation": ("the input asks for no {kind} simulation", "输入中没有 {kind} 仿真"),
     "summaries_list": ("must be a list of chunk summaries", "必须是分块摘要的列表"),
-    "both_given": ("and {other} both given; give one of them", "与 {other} 不能同时给出；请只给其中一个"),
-    "both_bemf": ("and {other} both give the back-EMF; give one of them",
-                  "与 {other} 都给出反电势；请只给其中一个"),
+    "both_given": ("{this_label} ({this}) and {other_label} ({other}) both set the motor's "
+                   "{target}: give only one of them.",
+                   "{this_label}（{this}）和{other_label}（{other}）都会设定电机的{target}：请只填其中一个。"),
+    "required_or": ("is required (or give {alternatives})",
+                    "必填（或给出 {alternatives}）"),
     "used_with": ("is only used with {other}", "仅与 {other} 一起使用"),
     "used_with_either": ("is only used with {a} or {b}", "仅与 {a} 或 {b} 一起使用"),
     "required_to_convert": ("is required to convert {source} (or give {other})",
@@ -145,16 +159,50 @@ MESSAGES = {
                      "buses; the voltage headroom below uses the firmware's limit).",
                      "这是厂商代码的性质：data1 以整伏保存 U_dc/√2，因此固件的电压限幅与 U_dc/√2 相差 "
                      "{pct:+.3g} %（低压母线上才明显；下面的电压裕量按固件限幅计算）。"),
-    "finding.raw_zero": ("raw.{name} = 0: {path} = {si:g} is below the firmware resolution",
-                         "raw.{name} = 0：{path} = {si:g} 低于固件分辨率"),
+    "finding.raw_zero": ("raw.{name} = 0: {path} = {si:g} is below the firmware resolution, so the "
+                         "firmware sees 0. {fix}",
+                         "raw.{name} = 0：{path} = {si:g} 低于固件分辨率，固件看到的是 0。{fix}"),
     "finding.raw_rounding": ("raw.{name} = {value}: rounding {path} = {si:g} to the firmware unit "
-                             "changes it by {pct:+.2f} %",
-                             "raw.{name} = {value}：把 {path} = {si:g} 取整到固件单位，改变了 {pct:+.2f} %"),
+                             "changes it by {pct:+.2f} %. {fix}",
+                             "raw.{name} = {value}：把 {path} = {si:g} 取整到固件单位，改变了 {pct:+.2f} %。"
+                             "{fix}"),
+    "fix.parameter_unit": ("A property of the vendor's parameter table (one count is {unit}), not "
+                           "of your inputs: it costs this much accuracy in every value the firmware "
+                           "derives from it; only another choice under “{label}” changes it.",
+                           "这是厂商参数表的性质（一个计数为 {unit}），不是输入的问题：固件由它导出的每个值"
+                           "都损失这么多精度；只有改选“{label}”才能改变。"),
+    "fix.inductance_unit": ("Set “{label}” to µH: the counts become 10× finer (the firmware must read "
+                            "LD/LQ in µH too).",
+                            "把“{label}”设为 µH：计数细 10 倍（固件也须按 µH 读取 LD/LQ）。"),
+    "finding.bemf_spread": ("the datasheet's back-EMF constants disagree by {spread:.3g} % at "
+                            "{rpm:.5g} rpm ({listed}); the firmware uses {used}. {why}",
+                            "数据手册的各反电势常数在 {rpm:.5g} rpm 时相差 {spread:.3g} %（{listed}）；"
+                            "固件采用 {used}。{why}"),
+    "bemf_spread.note": ("Within what datasheets usually differ by (kT is often printed hot or at "
+                         "rated current, Ke cold): in “{label}”, choose the one your "
+                         "firmware's observer and feed-forward should use.",
+                         "在数据手册常见的差异之内（kT 常按热态或额定电流给出，Ke 按冷态）：请在“{label}”"
+                         "中选择固件观测器与前馈应使用的那个。"),
+    "bemf_spread.warning": ("More than temperature usually explains: check at which temperature "
+                            "and current each was measured, and in “{label}” choose the one the "
+                            "firmware should use.",
+                            "超出温度通常能解释的范围：请核对各常数的测量温度与电流，并在“{label}”中选择固件"
+                            "应使用的那个。"),
+    "bemf_spread.error": ("More than temperature or saturation explain: a convention is probably "
+                          "mixed up (RMS and peak differ by 41 %, line and phase by 73 %); check "
+                          "Ke measured as / between, Kv per volt and kT per ampere.",
+                          "超出温度或饱和所能解释的范围：多半混淆了约定（有效值与峰值差 41 %，线与相差 "
+                          "73 %）；请核对 Ke 的测量方式/测量端、Kv 的电压单位与 kT 的电流单位。"),
     "finding.pi_zero": ("current_pi.{axis}.pm_ki rounds to 0: the integral action is lost (ki·Ts is "
-                        "below one Q16 LSB of the per-unit gain)",
-                        "current_pi.{axis}.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）"),
+                        "below one Q16 LSB of the per-unit gain); a longer {label} or a higher "
+                        "current-loop bandwidth makes it count",
+                        "current_pi.{axis}.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）；"
+                        "加长{label}或提高电流环带宽可使其不为 0"),
     "finding.pi_rounding": ("current_pi.{axis}.pm_{k} = {value}: coarse, rounding changes {k} by "
-                            "{pct:+.1f} %", "current_pi.{axis}.pm_{k} = {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"),
+                            "{pct:+.1f} % (the vendor's Q12/Q16 gain format; a higher {label} gives "
+                            "larger, finer integers)",
+                            "current_pi.{axis}.pm_{k} = {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"
+                            "（厂商的 Q12/Q16 增益格式；提高{label}可得到更大、更细的整数）"),
     "finding.phase_margin": ("current loop, {axis} axis: phase margin {pm:.3g}° with the {delay} delay "
                              "(below {limit:g}°: overshoot and ringing); {fix}",
                              "电流环 {axis} 轴：计入 {delay} 延时后相位裕度为 {pm:.3g}°（低于 {limit:g}°："
@@ -190,9 +238,9 @@ MESSAGES = {
                              "{limit:.4g} V：{from_hz:.4g} Hz 以上需要弱磁；请降低{label}或提高直流母线电压 Udc"),
     "finding.voltage_fb": ("at rated current and f_b = {f_b:g} Hz the motor needs {need:.4g} V (line "
                            "RMS), above the voltage limit {limit:.4g} V: full current up to f_b needs "
-                           "field weakening",
+                           "field weakening (or a lower {label}, or a higher DC bus voltage Udc)",
                            "额定电流、f_b = {f_b:g} Hz 时电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
-                           "{limit:.4g} V：满电流运行到 f_b 需要弱磁"),
+                           "{limit:.4g} V：满电流运行到 f_b 需要弱磁（或降低{label}、提高直流母线电压 Udc）"),
     "finding.pll_unlocked": ("{key}: not locked (|θ − θ̂| ≥ 2° in the last 20 % of the run); change "
                              "{label}", "{key}：未锁定（仿真最后 20 % 内 |θ − θ̂| ≥ 2°）；请修改{label}"),
     "finding.pll_steady": ("{key}.steady_angle_error_deg = {value:.3g}°: angle error after lock; change "
@@ -229,6 +277,11 @@ MESSAGES = {
     "finding.unrepresentable": ("the {profile} firmware cannot hold this motor ({fields}): {results} "
                                 "are not computed. {advice}",
                                 "{profile} 固件无法表示这台电机（{fields}）：{results} 无法计算。{advice}"),
+    "finding.unrepresentable_constants": ("the {profile} firmware cannot hold this motor: {results} do "
+                                          "not fit their words and keep the largest integer instead. "
+                                          "{advice}",
+                                          "{profile} 固件无法表示这台电机：{results} 超出其字长，只能存下"
+                                          "最大整数。{advice}"),
     "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and {source} = "
                      "{si:g} {si_unit} needs {value}; a 16-bit parameter would keep {stored} "
                      "({stored_si:g} {si_unit}). Not computed: {results}",
@@ -246,8 +299,11 @@ MESSAGES = {
                           "profile that holds it, or change the firmware's units.",
                           "厂商 C 代码无法为这台电机计算这些整数（某个值在作除数前截断为 0）；"
                           "这是代码本身的性质：请选用能表示它的配置，或修改固件的单位。"),
-    "limit.constant_advice": ("Change what scales it: the profile's base (full-scale value) or its Q "
-                              "format.", "请修改它的缩放：该配置的基值（满量程值）或 Q 格式。"),
+    "limit.constant_advice": ("It needs {factor:.3g}× what {format} holds: store it with {bits} "
+                              "fewer fractional bits (Q{q_new}), or change what scales it ({options}) "
+                              "so that it is {factor:.3g}× smaller.",
+                              "它需要 {format} 所能表示范围的 {factor:.3g} 倍：请少用 {bits} 位小数"
+                              "（Q{q_new}）存储，或修改它的缩放（{options}），使其缩小 {factor:.3g} 倍。"),
     "profile_unrepresentable": ("the {profile} firmware cannot hold this motor: {reason}",
                                 "{profile} 固件无法表示这台电机：{reason}"),
     "raw_missing": ("{name} does not fit its Uint16 parameter", "{name} 超出其 Uint16 参数范围"),
@@ -271,6 +327,12 @@ MESSAGES = {
 }
 
 
+def _label(path: str, lang: str) -> str:
+    from .fields import FIELD  # data only; imported late to keep this module first to load
+    f = FIELD.get(path)
+    return f.label[0 if lang == "en" else 1] if f is not None and f.label[0] else path
+
+
 def render(code: str, params: dict, lang: str) -> str:
     """The text of error ``code`` with ``params`` in ``lang`` (``'en'`` or ``'zh'``).
 
@@ -283,6 +345,9 @@ def render(code: str, params: dict, lang: str) -> str:
         from .messages import to_zh
         return to_zh(params["text"])
     en, zh = MESSAGES[code]
+    # A field's form label in this language: {"label": path}.
+    params = {k: _label(v["label"], lang) if isinstance(v, dict) and set(v) == {"label"} else v
+              for k, v in params.items()}
     # A nested error sees the outer params it does not set itself (e.g. a finding's label).
     plain = {k: v for k, v in params.items() if not (isinstance(v, dict) and "code" in v)}
     values = {k: render(v["code"], {**plain, **v["params"]}, lang)

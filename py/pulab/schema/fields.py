@@ -13,8 +13,13 @@ section's fields are checked in table order, so a field named by another's
 datasheet's "give one of them") stay in the code that converts them.
 
 Kinds: ``number`` (finite JSON number, booleans refused), ``integer``
-(integral JSON number), ``choice`` (one of ``choices``), ``flag`` (true/false).
-``sign`` is checked before the range: ``'>0'``, ``'>=0'`` or ``'!=0'``.
+(integral JSON number), ``choice`` (one of ``choices``), ``flag`` (true/false),
+``name_or_number`` (one of ``choices``, or a number in the range), ``pair``
+(``[low, high]``: two numbers in the range, low ≤ high) and ``table`` (at least
+2 rows of numbers, one per ``columns`` entry ``(name, unit, sign)``; the first
+column strictly increases, as a lookup table's).
+``sign`` is checked before the range: ``'>0'``, ``'>=0'`` or ``'!=0'``;
+``lo_open``/``hi_open`` leave the range's end out.
 ``default`` is a value, :data:`REQUIRED`, or ``None`` (absent; ``derived``
 says what the report uses instead).  ``only_with = (path, value)``: the field
 is used only while that field has that value (else giving it is an error and
@@ -65,6 +70,8 @@ class Field(NamedTuple):
     only_with: tuple = ()
     label: tuple = ("", "")
     help: tuple = ("", "")
+    lo_open: bool = False
+    columns: tuple = ()
 
     @property
     def section(self) -> str:
@@ -117,16 +124,16 @@ TABLE = (
       derived='from datasheet.speed_rpm when not given',
       label=('Rated frequency', '额定频率')),
     F('motor.rs_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
-      derived='from datasheet.rs_line_ohm when not given',
+      derived='from datasheet.rs_line_ohm or rs_phase_ohm when not given',
       label=('Stator resistance Rs (phase)', '定子电阻 Rs（相）')),
     F('motor.ld_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
-      derived='from datasheet.l_line_h or ld_line_h when not given',
+      derived='from datasheet L or Ld (line or phase) when not given',
       label=('d-axis inductance Ld', 'd 轴电感 Ld')),
     F('motor.lq_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
-      derived='from datasheet.l_line_h or lq_line_h when not given',
+      derived='from datasheet L or Lq (line or phase) when not given',
       label=('q-axis inductance Lq', 'q 轴电感 Lq')),
     F('motor.bemf_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9, default=REQUIRED,
-      derived='from datasheet Ke, kT or ψ when not given',
+      derived='from datasheet Ke, Kv, kT or ψ when not given',
       label=('Back-EMF at rated freq. (line RMS)', '额定频率反电势（线电压有效值）')),
     F('motor.pole_pairs', 'integer', '', lo=1, hi=1000, default=REQUIRED,
       label=('Pole pairs', '极对数')),
@@ -151,6 +158,9 @@ TABLE = (
       label=('Angle base θ_b', '角度基值 θ_b')),
     F('conventions.inductance_unit', 'choice', '', choices=('10uH', 'uH'), default='10uH',
       label=('Unit of raw LD/LQ', '原始 LD/LQ 单位')),
+    F('conventions.firmware', 'choice', '', choices=('inovance', 'ti', 'nxp', 'st', 'microchip'),
+      default='inovance',
+      label=('Firmware you ship', '所用固件')),
     Section('current_loop', ('the current-loop PI', '电流环 PI')),
     F('current_loop.method', 'choice', '', choices=('bandwidth', 'damping', 'manual', 'integers'),
       default='bandwidth',
@@ -188,25 +198,43 @@ TABLE = (
     F('datasheet.speed_rpm', 'number', 'rpm', sign='>0', lo=1e-9, hi=1e9,
       label=('Rated speed', '额定转速')),
     F('datasheet.ke_v_per_krpm', 'number', 'V/krpm', sign='>0', lo=1e-9, hi=1e9,
-      label=('Back-EMF constant Ke (line-to-line)', '反电势常数 Ke（线间）')),
+      label=('Back-EMF constant Ke', '反电势常数 Ke')),
     F('datasheet.ke_v_s_per_rad', 'number', 'V·s/rad', sign='>0', lo=1e-9, hi=1e9,
-      label=('Ke in V·s/rad (line-to-line)', 'Ke，单位 V·s/rad（线间）')),
+      label=('Ke in V·s/rad', 'Ke，单位 V·s/rad')),
     F('datasheet.ke_measure', 'choice', '', choices=('rms', 'peak'), derived='required with a Ke',
       label=('Ke measured as', 'Ke 的测量方式')),
+    F('datasheet.ke_between', 'choice', '', choices=('line', 'phase'), default='line',
+      label=('Ke measured between', 'Ke 的测量端')),
+    F('datasheet.kv_rpm_per_v', 'number', 'rpm/V', sign='>0', lo=1e-9, hi=1e9,
+      label=('Speed constant Kv', '速度常数 Kv')),
+    F('datasheet.kv_measure', 'choice', '', choices=('rms', 'peak'), default='peak',
+      label=('Kv per volt', 'Kv 的电压单位')),
     F('datasheet.kt_nm_per_a', 'number', 'N·m/A', sign='>0', lo=1e-9, hi=1e9,
       label=('Torque constant kT (sinusoidal)', '转矩常数 kT（正弦波）')),
     F('datasheet.kt_current', 'choice', '', choices=('rms', 'peak'), default='rms',
       label=('kT per ampere', 'kT 的电流单位')),
     F('datasheet.psi_wb', 'number', 'Wb', sign='>0', lo=1e-9, hi=1e9,
-      label=('Magnet flux ψ (phase amplitude)', '永磁磁链 ψ（相幅值）')),
+      label=('Magnet flux ψ (phase amplitude, Wb = V·s)', '永磁磁链 ψ（相幅值，Wb = V·s）')),
+    F('datasheet.bemf_from', 'choice', '',
+      choices=('ke_v_per_krpm', 'ke_v_s_per_rad', 'kv_rpm_per_v', 'kt_nm_per_a', 'psi_wb'),
+      derived='the first given of Ke, Kv, kT, ψ',
+      label=('Back-EMF the firmware uses', '固件采用的反电势来源')),
     F('datasheet.rs_line_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9,
       label=('Resistance, terminal to terminal', '线间电阻（两端子之间）')),
+    F('datasheet.rs_phase_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e9,
+      label=('Resistance per phase', '每相电阻')),
     F('datasheet.l_line_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
       label=('Inductance, terminal to terminal', '线间电感（两端子之间）')),
+    F('datasheet.l_phase_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
+      label=('Inductance per phase', '每相电感')),
     F('datasheet.ld_line_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
       label=('Ld, terminal to terminal', '线间 Ld（两端子之间）')),
+    F('datasheet.ld_phase_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
+      label=('Ld per phase', '每相 Ld')),
     F('datasheet.lq_line_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
       label=('Lq, terminal to terminal', '线间 Lq（两端子之间）')),
+    F('datasheet.lq_phase_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
+      label=('Lq per phase', '每相 Lq')),
     F('datasheet.winding', 'choice', '', choices=('star', 'delta'), default='star',
       label=('Winding', '绕组接法')),
     F('datasheet.dc_bus_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9,
@@ -270,6 +298,53 @@ TABLE = (
       label=('Speed step (pu of ω_b)', '速度阶跃（ω_b 的标幺值）')),
     F('analysis.speed.load_pu', 'number', 'pu', default=0.5,
       label=('Load step (pu of T_b)', '负载阶跃（T_b 的标幺值）')),
+    Section('analysis.robust', ('robustness: the current loop tuned cold, run hot (absent: not '
+                                'analysed; `{}`: every default)',
+                                '鲁棒性：冷态整定、热态运行的电流环（不填则不分析；`{}` 取全部默认值）')),
+    F('analysis.robust.temperature_c', 'pair', '°C', lo=-273.15, lo_open=True, hi=400.0,
+      default=(20.0, 155.0),
+      label=('[low, high] winding (and magnet) temperature', '绕组（及磁钢）温度 [低, 高]')),
+    F('analysis.robust.reference_c', 'number', '°C', lo=-273.15, hi=400.0, default=20.0,
+      label=('Temperature at which motor.rs_ohm and motor.bemf_v hold',
+             'motor.rs_ohm 与 motor.bemf_v 对应的温度')),
+    F('analysis.robust.copper_alpha_per_k', 'number', '/K', lo=0.0, hi=0.1, default=0.00393,
+      label=('α of the winding: R(T) = R·(1 + α·(T − T_ref))', '绕组温度系数 α：R(T) = R·(1 + α·(T − T_ref))')),
+    F('analysis.robust.magnet', 'name_or_number', '%/K', lo=-1.0, hi=1.0,
+      choices=('ndfeb', 'smco', 'ferrite'), default='ndfeb',
+      label=('Magnet: ndfeb (−0.12 %/K), smco (−0.035 %/K), ferrite (−0.20 %/K) or β: '
+             'ψ(T) = ψ·(1 + β·(T − T_ref))',
+             '磁钢：ndfeb（−0.12 %/K）、smco（−0.035 %/K）、ferrite（−0.20 %/K）或 β：'
+             'ψ(T) = ψ·(1 + β·(T − T_ref))')),
+    F('analysis.robust.peak_current_a', 'number', 'A', sign='>0', derived='2·motor.rated_current_a',
+      label=('Peak current I_peak', '峰值电流 I_peak')),
+    F('analysis.robust.inductance_drop_pct', 'number', '%', lo=0.0, hi=95.0, default=30.0,
+      label=('L_d, L_q fall linearly to (1 − drop)·L at I_peak', 'L_d、L_q 在 I_peak 处线性降至 (1 − drop)·L')),
+    F('analysis.robust.inductance_table', 'table', '',
+      columns=(('current_a', 'A', '>=0'), ('ld_h', 'H', '>0'), ('lq_h', 'H', '>0')),
+      derived='the linear drop',
+      label=('L_d(i), L_q(i) points: linear between, flat beyond the ends (replaces the drop)',
+             'L_d(i)、L_q(i) 数据点：点间线性插值，两端之外保持不变（取代线性下降）')),
+    F('analysis.robust.udc_tolerance_pct', 'number', '%', lo=0.0, hi=90.0, default=10.0,
+      label=('Bus voltage U_dc·(1 ± tol)', '母线电压 U_dc·(1 ± tol)')),
+    F('analysis.robust.bus_compensated', 'flag', '', default=True,
+      label=('The PWM divides by the measured U_dc (false: loop gain × U_dc/U_dc,nom)',
+             'PWM 除以实测 U_dc（false：环路增益 × U_dc/U_dc,nom）')),
+    F('analysis.robust.tolerance_rs_pct', 'number', '%', lo=0.0, hi=90.0, default=5.0,
+      label=('Manufacturing tolerance of R_s (± %, uniform, Monte Carlo)', 'R_s 制造公差（± %，均匀分布，蒙特卡洛）')),
+    F('analysis.robust.tolerance_l_pct', 'number', '%', lo=0.0, hi=90.0, default=10.0,
+      label=('Manufacturing tolerance of L (± %, uniform, Monte Carlo)', 'L 制造公差（± %，均匀分布，蒙特卡洛）')),
+    F('analysis.robust.tolerance_psi_pct', 'number', '%', lo=0.0, hi=90.0, default=3.0,
+      label=('Manufacturing tolerance of ψ (± %, uniform, Monte Carlo)', 'ψ 制造公差（± %，均匀分布，蒙特卡洛）')),
+    F('analysis.robust.samples', 'integer', '', lo=0, hi=1_000_000, default=0,
+      label=('Monte Carlo samples (0 = none)', '蒙特卡洛样本数（0 = 不做）')),
+    F('analysis.robust.seed', 'integer', '', lo=0, hi=2 ** 63 - 1, default=0,
+      label=('Seed of random.Random', 'random.Random 的种子')),
+    F('analysis.robust.min_phase_margin_deg', 'number', '°', lo=0.0, hi=90.0, default=45.0,
+      label=('Phase-margin threshold', '相位裕度阈值')),
+    F('analysis.robust.min_gain_margin_db', 'number', 'dB', lo=0.0, hi=60.0, default=6.0,
+      label=('Gain-margin threshold', '增益裕度阈值')),
+    F('analysis.robust.grid', 'integer', '', lo=2, hi=41, default=7,
+      label=('Points per axis of the temperature × current map', '温度 × 电流图每轴点数')),
 )
 
 SECTIONS = {e.path: e for e in TABLE if isinstance(e, Section)}
@@ -284,8 +359,10 @@ def section_fields(path: str) -> list:
 
 def _plain(f: Field) -> dict:
     d = f._asdict()
-    d["default"] = "required" if f.default is REQUIRED else f.default
+    d["default"] = "required" if f.default is REQUIRED else \
+        list(f.default) if isinstance(f.default, tuple) else f.default
     d["choices"], d["only_with"] = list(f.choices), list(f.only_with)
+    d["columns"] = [list(c) for c in f.columns]
     d["label"], d["help"] = list(f.label), list(f.help)
     return d
 
@@ -301,20 +378,34 @@ def _g(x) -> str:
     return f"{x:g}" if isinstance(x, float) else str(x)
 
 
+_SIGNS = {">0": "> 0", ">=0": "≥ 0", "!=0": "≠ 0"}
+
+
 def _range(f: Field) -> str:
     if f.kind == "choice":
         return ", ".join(f"`{c}`" for c in f.choices)
     if f.kind == "flag":
         return "`true`, `false`"
+    if f.kind == "table":
+        cols = ", ".join(f"{n} ({u}, {_SIGNS[s]})" for n, u, s in f.columns)
+        return f"list of ≥ 2 rows [{cols}], {f.columns[0][0]} increasing"
+    if f.kind == "name_or_number":
+        return ", ".join(f"`{c}`" for c in f.choices) + f" or a number, {f.unit}, {_g(f.lo)}..{_g(f.hi)}"
+    if f.kind == "pair":
+        lo = f"{_g(f.lo)} <" if f.lo_open else f"{_g(f.lo)} ≤"
+        return f"[low, high], {f.unit}, {lo} low ≤ high ≤ {_g(f.hi)}"
     parts = [f.unit] if f.unit else []
     if f.kind == "integer":
         parts.append(f"integer {_g(f.lo)}..{_g(f.hi)}")
         return ", ".join(parts)
-    parts.append({">0": "> 0", ">=0": "≥ 0", "!=0": "≠ 0"}.get(f.sign, "finite"))
+    parts.append(_SIGNS.get(f.sign, "finite"))
     if f.lo is not None or f.hi is not None:
         lo = _g(f.lo) if f.lo is not None else ""
-        parts.append(f"{lo}..{_g(f.hi)}" + (" (excl.)" if f.hi_open else "") if lo else
-                     f"< {_g(f.hi)}" if f.hi_open else f"≤ {_g(f.hi)}")
+        if lo and f.hi is None:
+            parts.append(f"> {lo}" if f.lo_open else f"≥ {lo}")
+        else:
+            parts.append(f"{lo}..{_g(f.hi)}" + (" (excl.)" if f.hi_open else "") if lo else
+                         f"< {_g(f.hi)}" if f.hi_open else f"≤ {_g(f.hi)}")
     return ", ".join(parts)
 
 
@@ -327,6 +418,8 @@ def _default(f: Field) -> str:
         text = "`true`" if f.default else "`false`"
     elif isinstance(f.default, str):
         text = f"`{f.default}`"
+    elif isinstance(f.default, tuple):
+        text = f"[{', '.join(_g(x) for x in f.default)}]"
     else:
         text = "1/√2" if f.default == DAMPING else _g(f.default)
     if f.only_with:

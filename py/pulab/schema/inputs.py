@@ -13,7 +13,7 @@ Examples
 >>> normalize({"motor": {}})
 Traceback (most recent call last):
 ...
-pulab.schema.errors.InputError: motor.rated_voltage_v: is required
+pulab.schema.errors.InputError: motor.rated_voltage_v: is required (or give datasheet.dc_bus_v)
 """
 
 from __future__ import annotations
@@ -62,11 +62,14 @@ def normalize(inp: dict) -> dict:
     ds = object_fields(inp.get("datasheet"), "datasheet", _datasheet.FIELDS)
     motor_in = object_fields(inp.get("motor"), "motor", SECTIONS["motor"])
     drive_in = object_fields(inp.get("drive"), "drive", SECTIONS["drive"])
-    m, conversions, d = _datasheet.apply(ds, motor_in, drive_in)
+    m, conversions, d, bemf_check = _datasheet.apply(ds, motor_in, drive_in)
     derived = {c["field"]: c["from"][0] for c in conversions}
     motor = {}
     for f in section_fields("motor"):
         if f.key not in m:
+            alt = [f"datasheet.{k}" for k, sets in _datasheet.SETS.items() if f.key in sets]
+            if alt:  # a datasheet start: say what else fills this field
+                raise InputError(f.path, code="required_or", alternatives=", ".join(alt))
             raise InputError(f.path, code="required")
         try:
             motor[f.key] = value(f, m[f.key])
@@ -90,6 +93,8 @@ def normalize(inp: dict) -> dict:
     if ds:
         # Not part of the echoed input (report.input.motor already holds the derived values).
         out["datasheet"] = {"given": ds, "conversions": conversions}
+        if bemf_check is not None:
+            out["datasheet"]["bemf_check"] = bemf_check
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
     if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor

@@ -116,6 +116,20 @@ def integer(v, path: str, lo: int, hi: int) -> int:
 def value(f: Field, v, path: str | None = None):
     """Field ``f``'s given (non-null) JSON value ``v``, checked; ``path`` overrides ``f.path``."""
     path = path or f.path
+    if f.kind == "name_or_number" and isinstance(v, str):
+        if v not in f.choices:
+            raise InputError(path, code="not_name_or_number", choices=", ".join(f.choices),
+                             got=shown(v))
+        return v
+    if f.kind == "pair":
+        if not isinstance(v, list) or len(v) != 2:
+            raise InputError(path, code="not_pair", got=shown(v))
+        low, high = (_number(f, x, f"{path}[{k}]") for k, x in enumerate(v))
+        if low > high:
+            raise InputError(path, code="pair_order", lo=low, hi=high)
+        return [low, high]
+    if f.kind == "table":
+        return _table(f, v, path)
     if f.kind == "choice":
         if isinstance(v, (dict, list)) or v not in f.choices:
             raise InputError(path, code="not_choice", choices=", ".join(f.choices), got=shown(v))
@@ -126,6 +140,11 @@ def value(f: Field, v, path: str | None = None):
         return v
     if f.kind == "integer":
         return integer(v, path, int(f.lo), int(f.hi))
+    return _number(f, v, path)
+
+
+def _number(f: Field, v, path: str) -> float:
+    """``v`` as a finite number within ``f``'s sign and range."""
     x = real(v, path)
     if f.sign == ">0" and x <= 0:
         raise InputError(path, code="not_positive", value=x)
@@ -135,13 +154,33 @@ def value(f: Field, v, path: str | None = None):
         raise InputError(path, code="zero")
     lo = f.lo if f.lo is not None else (0.0 if f.sign == ">0" else None)
     above = f.hi is not None and (x > f.hi or (f.hi_open and x == f.hi))
-    if above or (lo is not None and x < lo):
+    below = lo is not None and (x < lo or (f.lo_open and x == lo))
+    if above or below:
         if lo is None:
             raise InputError(path, code="too_large", hi=f.hi, value=x)
         if f.hi is None:
             raise InputError(path, code="too_small", lo=lo, value=x)
         raise InputError(path, code="out_of_range", lo=lo, hi=f.hi, value=x)
     return x
+
+
+def _table(f: Field, v, path: str) -> list:
+    """A ``table`` field: at least 2 rows, a number per column, the first column increasing."""
+    names = ", ".join(name for name, _, _ in f.columns)
+    if not isinstance(v, list) or len(v) < 2:
+        raise InputError(path, code="not_table", columns=names, got=shown(v))
+    cells = [Field(name, "number", unit, sign) for name, unit, sign in f.columns]
+    rows: list = []
+    for k, row in enumerate(v):
+        here = f"{path}[{k}]"
+        if not isinstance(row, list) or len(row) != len(cells):
+            raise InputError(here, code="not_row", columns=names, got=shown(row))
+        out = [_number(c, x, f"{here}[{j}]") for j, (c, x) in enumerate(zip(cells, row))]
+        if rows and out[0] <= rows[-1][0]:
+            raise InputError(f"{here}[0]", code="not_increasing", column=cells[0].path,
+                             value=out[0], before=rows[-1][0])
+        rows.append(out)
+    return rows
 
 
 def children(path: str) -> list:
@@ -175,7 +214,7 @@ def read(path: str, obj) -> dict:
         elif f.default is REQUIRED:
             raise InputError(f.path, code="required")
         else:
-            out[f.key] = f.default
+            out[f.key] = list(f.default) if isinstance(f.default, tuple) else f.default
     for key in children(path):
         if key in sec:
             out[key] = sec[key]

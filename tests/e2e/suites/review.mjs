@@ -51,7 +51,7 @@ export default async function review(ctx) {
     await page.goto(link(ctx.golden('01_seed_motor.json').input));
     await ready(page);
     await page.fill('input[name="motor.rated_voltage_v"]', '70000');
-    await page.waitForSelector('#panel-vendor .firmware-limits [data-field="raw.Voltage"]', { timeout: 10_000 });
+    await page.waitForSelector('#panel-vendor .firmware-limits [data-field="raw.Voltage"]', { timeout: 30_000 });
     assert(!(await page.$eval('main.panels', (e) => e.classList.contains('stale'))), 'marked stale');
     assert((await page.textContent('[data-err-for="motor.rated_voltage_v"]').catch(() => '')) === '', 'an input error');
     await waitValue(page, 'base.U_b', 70000 / Math.sqrt(3));

@@ -1,7 +1,7 @@
 // Long Python jobs (a sweep, a batch) as a sequence of small worker calls: between two calls the
 // worker serves the page's reports, the page draws its progress bar, and Cancel stops the job.
 import type { PulabClient } from '../rpc';
-import type { ApiKind, ApiResult } from '../protocol';
+import type { ApiErr, Ok, Request } from '../protocol';
 
 export interface ChunkJob {
   cancelled: boolean;
@@ -20,15 +20,15 @@ export function nextChunkSize(size: number, ms: number, min = 5, max = 1000): nu
  * starting with `size` items and adapting it to the time Python takes (a loaded machine gets
  * smaller chunks). `onChunk` gets each result; returns 'done', 'cancelled' or the first error.
  */
-export async function runChunks(
+export async function runChunks<K extends 'sweep.chunk' | 'batch'>(
   client: PulabClient,
-  kind: ApiKind,
+  kind: K,
   total: number,
   size: number,
-  payload: (start: number, count: number) => unknown,
-  onChunk: (result: ApiResult & { ok: true }, done: number) => void,
+  payload: (start: number, count: number) => Request[K],
+  onChunk: (result: Ok<K>, done: number) => void,
   job: ChunkJob,
-): Promise<'done' | 'cancelled' | (ApiResult & { ok: false })> {
+): Promise<'done' | 'cancelled' | ApiErr> {
   for (let start = 0; start < total;) {
     if (job.cancelled) return 'cancelled';
     const count = Math.min(size, total - start);

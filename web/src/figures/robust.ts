@@ -80,10 +80,11 @@ export function renderRobustHistogram(el: HTMLElement, r: RobustReport): void {
 export function renderRobustStep(el: HTMLElement, r: RobustReport): void {
   const s = r.step!;
   const ms = s.t.map((x) => x * 1e3);
+  const fixed = s.fixed;  // null: the Inovance firmware cannot hold this drive
   plot(el, [
     { x: ms, y: s.float, name: t('variant_float'), color: COLORS.si },
-    { x: ms, y: s.fixed, name: t('variant_fixed'), color: COLORS.fixed, dash: 'dash' },
+    ...(fixed ? [{ x: ms, y: fixed, name: t('variant_fixed'), color: COLORS.fixed, dash: 'dash' as const }] : []),
     { x: [0, ms[ms.length - 1] ?? 0], y: [s.ref_a, s.ref_a], name: 'ref', color: COLORS.ref, dash: 'dot', width: 1 },
-    { x: ms, y: s.fixed.map((v, k) => v - s.float[k]!), name: 'Δ', color: COLORS.fixed, yaxis: 'y2', width: 1.2 },
+    ...(fixed ? [{ x: ms, y: fixed.map((v, k) => v - s.float[k]!), name: 'Δ', color: COLORS.fixed, yaxis: 'y2' as const, width: 1.2 }] : []),
   ], { xTitle: `${t('time')} [ms]`, yTitle: `i_${s.axis} [A]`, y2Title: 'fixed − float [A]', lower: 0.25 });
 }

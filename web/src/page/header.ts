@@ -6,7 +6,7 @@ import { errText, getLang, t, type Lang } from '../i18n';
 import { encodeHash, reportInput, simInput } from '../state';
 import type { ComputeSession } from './session';
 import { copyLinkToast, toast } from './toast';
-import type { ApiResult } from '../protocol';
+import type { Reply } from '../protocol';
 
 export function langSwitch(onSwitch: (l: Lang) => void): HTMLElement {
   return h('div', { class: 'lang', role: 'group' },
@@ -24,21 +24,21 @@ function download(name: string, text: string, type: string): void {
 
 type PyExport = 'header' | 'csv_current' | 'csv_pll';
 
-/** Files made by Python (pulab.api.export_json): the C header from the report worker, CSVs from the simulation worker. */
+/** Files made by Python (the export.* kinds of pulab.api.call_json): the C header from the report worker, CSVs from the simulation worker. */
 async function exportPy(root: HTMLElement, session: ComputeSession, kind: PyExport): Promise<void> {
   if (!session.client?.ready) return;
   const eff = effectiveInput(session.input);
   const c = kind === 'header' ? session.client : session.simWorker() ?? session.client;
-  let result: ApiResult;
+  let result: Reply['export.header'];
   try {
-    ({ result } = await c.call('export', { input: kind === 'header' ? reportInput(eff) : simInput(eff), kind }));
+    ({ result } = await c.call(`export.${kind}`, { input: kind === 'header' ? reportInput(eff) : simInput(eff) }));
   } catch (e) {
     // The worker died or a newer call replaced this one: say so, never an unhandled rejection.
     return toast(root, t('exportFailed', { m: e instanceof Error ? e.message : String(e) }));
   }
   if (result.ok) {
     const name = kind === 'header' ? 'pulab_params.h' : `pulab_${kind.slice(4)}.csv`;
-    download(name, String(result.text), kind === 'header' ? 'text/x-c' : 'text/csv');
+    download(name, result.text, kind === 'header' ? 'text/x-c' : 'text/csv');
   } else toast(root, `${result.field}: ${errText(result)}`);
 }
 

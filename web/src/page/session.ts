@@ -216,7 +216,7 @@ export class ComputeSession {
       this.lastMs = ms;
       if (result.ok) {
         const same = this.reportFor === key && this.source !== 'live';
-        this.report = result.report as unknown as Report;
+        this.report = result.report;
         this.remoteError = null;
         // Another input may have been typed while Python computed this one.
         this.reportFor = key;
@@ -282,7 +282,7 @@ export class ComputeSession {
       const { result } = await sc.call('report', simInput(eff), 'sim', SIM_LOST_MS);
       root.simDone = String(Number(root.simDone ?? 0) + 1);
       if (result.ok) {
-        this.simReport = result.report as unknown as Report;
+        this.simReport = result.report;
         this.simError = this.simReport.sim ? null : 'no "sim" section in the report';
         this.simFieldError = null;
         this.simWorkerFailed = false;

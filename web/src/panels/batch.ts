@@ -40,12 +40,12 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
     Object.assign(st, { job: null, error: first.result });
     return batchPanel.render(el, ctx);
   }
-  st.total = first.result.total as number;
-  st.columns = first.result.columns as string[];
+  st.total = first.result.total;
+  st.columns = first.result.columns;
   const t0 = performance.now();
   const end = await runChunks(client, 'batch', st.total, CHUNK, (start, count) => ({ csv: st.text, start, count }), (r, done) => {
-    st.rows.push(...(r.rows as string[][]));
-    st.csv.push(r.csv as string);
+    st.rows.push(...r.rows);
+    st.csv.push(r.csv);
     st.done = done;
     const bar = el.querySelector<HTMLProgressElement>('progress.batch-progress');
     if (bar) {
@@ -54,7 +54,7 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
     }
   }, job);
   if (end !== 'done' && end !== 'cancelled') st.error = end;
-  if (st.total === 0) st.csv = [first.result.csv as string];
+  if (st.total === 0) st.csv = [first.result.csv];
   const bad = st.rows.filter((r) => r[st.columns.indexOf('error')]).length;
   st.note = end === 'cancelled' ? { key: 'swCancelled', vars: { done: st.done, total: st.total } }
     : { key: 'btDone', vars: { n: st.total, bad, s: ((performance.now() - t0) / 1000).toFixed(2) } };
@@ -74,14 +74,15 @@ function download(): void {
 function resultTable(): HTMLElement {
   const col = (name: string) => st.columns.indexOf(name);
   const labels = st.columns.slice(1, col('error'));
-  const head = ['row', ...labels, 'error', ...TABLE_COLUMNS];
+  const head = ['row', ...labels, 'error', 'firmware', ...TABLE_COLUMNS];
   const errCol = col(getLang() === 'zh' ? 'error_zh' : 'error');
   return h('div', { class: 'scroll' }, h('table', { class: 'grid batch-table' },
     h('thead', {}, h('tr', {}, head.map((c) => h('th', {}, c)))),
-    h('tbody', {}, st.rows.slice(0, SHOWN).map((r, i) => h('tr', { class: r[col('error')] ? 'bad' : '', 'data-row': r[0] },
+    h('tbody', {}, st.rows.slice(0, SHOWN).map((r, i) => h('tr', { class: r[col('error')] ? 'bad' : r[col('firmware')] ? 'limit' : '', 'data-row': r[0] },
       h('td', { class: 'r' }, r[0]),
       labels.map((l) => h('td', {}, r[col(l)])),
       h('td', { class: 'batch-error' }, r[errCol]),
+      h('td', { class: 'batch-firmware' }, r[col('firmware')]),
       TABLE_COLUMNS.map((c) => {
         const v = r[col(c)];
         return h('td', { class: 'r' }, v === '' || c.endsWith('.flags') ? v : num(`batch.rows.${i}.${c}`, Number(v), { text: v }));

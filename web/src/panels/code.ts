@@ -1,23 +1,20 @@
 // "Your code": paste C scaling code, pick a target (and one to compare with), and see every
 // intermediate integer with its C type, hex and flags. Everything comes from
-// pulab.api.trace_json in the worker; the state lives in the URL query (code-share.ts).
+// the trace kind of pulab.api.call_json in the worker; the state lives in the URL query (code-share.ts).
 import { flagChips, focusedInput, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
+import type { TraceExample, TraceLine, TraceTerm } from '../api-types';
+import type { ApiErr, Ok } from '../protocol';
 
-interface Term { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string; call?: string; steps?: Step[] }
-interface Step { line: number; column: number; code: string; var: string | null; type: string; value: number; hex: string; flags: string[]; terms: Term[]; spelling?: string; input?: boolean; branch?: string }
-interface VarOut { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
-interface TraceOk { ok: true; target: string; global_q: number; inputs: string[]; vars: Record<string, VarOut>; steps: Step[]; entry?: string | null; functions?: string[] }
-interface TraceErr { ok: false; field: string; message: string; message_zh?: string; line?: number; column?: number; inputs?: string[]; functions?: string[] }
-type Reply = TraceOk | TraceErr;
-interface Example { id: string; title: string; title_zh: string; code: string }
+type TraceOk = Ok<'trace'>;
+type Reply = TraceOk | ApiErr;
 
 const FALLBACK_TARGETS = ['c28x', 'avr', 'msp430', 'arm'];
 let state: CodeState | null = null;
-let examples: Example[] | null = null;
+let examples: TraceExample[] | null = null;
 let targets: string[] = FALLBACK_TARGETS;
 let inputs: string[] = [];
 /** The functions the pasted code defines (from the last reply that parsed it). */
@@ -66,7 +63,7 @@ function run(ctx: PanelContext): void {
   lastKey = key;
   const id = ++seq;
   const one = (target: string, channel: string) =>
-    ctx.client!.call('trace', traceRequest(s, target, inputs, report), channel).then(({ result }) => result as unknown as Reply);
+    ctx.client!.call('trace', traceRequest(s, target, inputs, report), channel).then(({ result }) => result);
   const calls = [one(s.target, 'trace'), s.vs && s.vs !== s.target ? one(s.vs, 'trace-vs') : Promise.resolve(null)];
   void Promise.all(calls).then(([a, b]) => {
     if (id !== seq) return;
@@ -128,7 +125,7 @@ function renderInputs(box: HTMLElement, ctx: PanelContext): void {
 }
 
 function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
-  const pair = (i: number): Step | null => {
+  const pair = (i: number): TraceLine | null => {
     const x = a.steps[i];
     const y = b?.steps[i];
     return y && y.code === x.code && y.line === x.line && y.column === x.column ? y : null;
@@ -171,7 +168,7 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
 }
 
 /** The statements a call ran, under the call (keys follow the JSON path: ….terms.J.steps.K). */
-function callSteps(tm: Term, key: string): HTMLElement {
+function callSteps(tm: TraceTerm, key: string): HTMLElement {
   const steps = tm.steps ?? [];
   const rows = steps.map((s, i) => h('tr', { class: s.flags.length ? 'flagged' : '' },
     h('td', { class: 'pos' }, `${s.line}:${s.column}`),
@@ -218,7 +215,7 @@ function update(el: HTMLElement, ctx: PanelContext): void {
   el.querySelector('.code-trace')?.classList.toggle('stale', !(main?.ok));
   const a = main?.ok ? main : null;
   const b = other?.ok ? other : null;
-  const other_err = [main, other].find((r) => r && !r.ok && r.field !== 'code' && !r.field.startsWith('set.')) as TraceErr | undefined;
+  const other_err = [main, other].find((r): r is ApiErr => r !== null && !r.ok && r.field !== 'code' && !r.field.startsWith('set.'));
   out.querySelector('.code-global-err')?.remove();
   if (!a) {
     out.classList.add('stale');
@@ -252,10 +249,10 @@ async function share(root: HTMLElement, embed: boolean): Promise<void> {
 function loadExamples(ctx: PanelContext): void {
   if (examples !== null || !ctx.client) return;
   examples = [];
-  void ctx.client.call('traceExamples', {}).then(({ result }) => {
-    const r = result as unknown as { ok: boolean; examples: Example[]; targets: string[] };
-    examples = r.examples;
-    targets = r.targets;
+  void ctx.client.call('trace.examples', {}).then(({ result }) => {
+    if (!result.ok) return;
+    examples = result.examples;
+    targets = result.targets;
     const s = st();
     if (!s.code) s.code = examples.find((e) => e.id === 'flux')?.code ?? '';
     const el = document.querySelector<HTMLElement>('#panel-code .panel-body');

@@ -95,7 +95,6 @@ function speedSection(loop: LoopReport): HTMLElement[] {
   const s = loop.speed;
   if (!s) return [];
   const b = s.bases;
-  const g = s as unknown as Record<string, number>;
   const r = s.response;
   return [
     h('h3', {}, t('speedTitle')),
@@ -107,9 +106,9 @@ function speedSection(loop: LoopReport): HTMLElement[] {
       ['H = J·ω_mb²/(2·P_b)', num('loop.speed.bases.inertia_constant_s', b.inertia_constant_s), 's'],
     ], 'speed-bases'),
     table([t('speedGains'), 'kp', 'ki'], [
-      ['SI', h('span', {}, num('loop.speed.kp', g.kp), ' A·s/rad'), h('span', {}, num('loop.speed.ki', g.ki), ' A/rad')],
-      ['pu', num('loop.speed.kp_pu', g.kp_pu), h('span', {}, num('loop.speed.ki_pu', g.ki_pu), ' 1/s')],
-      ['Q12 / Q16·T_sp', num('loop.speed.pm_kp', g.pm_kp, { kind: 'int' }), num('loop.speed.pm_ki', g.pm_ki, { kind: 'int' })],
+      ['SI', h('span', {}, num('loop.speed.kp', s.kp), ' A·s/rad'), h('span', {}, num('loop.speed.ki', s.ki), ' A/rad')],
+      ['pu', num('loop.speed.kp_pu', s.kp_pu), h('span', {}, num('loop.speed.ki_pu', s.ki_pu), ' 1/s')],
+      ['Q12 / Q16·T_sp', num('loop.speed.pm_kp', s.pm_kp, { kind: 'int' }), num('loop.speed.pm_ki', s.pm_ki, { kind: 'int' })],
     ], 'speed-gains'),
     h('p', { class: 'note' }, t('speedFormats')),
     marginsTable([[t('loopYours'), 'loop.speed', s], [t('loopFirmware'), 'loop.speed.firmware', s.firmware]], 'speed'),
@@ -167,7 +166,7 @@ function robustSection(loop: LoopReport): HTMLElement[] {
     figure('robust-map'),
     ...(r.step ? [h('h3', {}, t('robustStep', { a: r.step.axis })), figure('robust-step'),
       h('p', { class: 'note' }, `${t('overshoot')}: `, num('loop.robust.step.metrics.float.overshoot_pct', r.step.metrics.float.overshoot_pct, { sig: 3, unit: '%' }),
-        ` (${t('variant_float')}), `, num('loop.robust.step.metrics.fixed.overshoot_pct', r.step.metrics.fixed.overshoot_pct, { sig: 3, unit: '%' }),
+        ` (${t('variant_float')}), `, num('loop.robust.step.metrics.fixed.overshoot_pct', r.step.metrics.fixed?.overshoot_pct ?? null, { sig: 3, unit: '%' }),
         ` (${t('variant_fixed')}); ${t('fixedVsFloat')}: `, num('loop.robust.step.fixed_vs_float_max_a', r.step.fixed_vs_float_max_a, { sig: 3, unit: 'A' }))] : []),
     ...(mc ? [h('h3', {}, t('robustHist', { n: String(mc.samples), f: `${(100 * mc.fraction_below).toFixed(1)} %` })), figure('robust-hist')] : []),
   ];

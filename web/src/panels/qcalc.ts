@@ -1,8 +1,10 @@
-// Standalone Q-format calculator: every result comes from pulab.api.qcalc_json in the worker.
+// Standalone Q-format calculator: every result comes from pulab (pulab.qcalc, the qcalc kind) in the worker.
 import { flagChips, focusedInput, h, num, refocus, sameItems, table } from '../dom';
 import { parseNumber } from '../format';
 import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
+import type { QcalcRequest } from '../api-types';
+import type { Reply } from '../protocol';
 
 export interface QcalcState {
   mode: 'encode' | 'decode';
@@ -16,18 +18,13 @@ export interface QcalcState {
 
 export const qstate: QcalcState = { mode: 'encode', format: 'Q3.12', word_bits: '', value: '0.229242018648822', raw: '939', rounding: 'nearest', overflow: 'saturate' };
 
-type QResult = {
-  ok: boolean; field?: string; message?: string; message_zh?: string;
-  format?: { name: string; word_bits: number; frac_bits: number; signed: boolean; min: number; max: number; resolution: number };
-  result?: { raw: number; hex: string; value: number; error: number; flags: string[] };
-};
-
-let last: QResult | null = null;
+/** The last reply shown; `null`: nothing asked yet; `{ ok: true }` alone: asked, no reply yet. */
+let last: Reply['qcalc'] | { ok: true; format?: undefined; result?: undefined } | null = null;
 let seq = 0;
 
 /** The qcalc request (JSON of pulab.api.qcalc) for the current state, or a local parse error. */
-export function qcalcRequest(s: QcalcState): { ok: true; req: Record<string, unknown> } | { ok: false; field: string; error: 'number' | 'integer' } {
-  const req: Record<string, unknown> = { format: s.format.trim(), rounding: s.rounding, overflow: s.overflow };
+export function qcalcRequest(s: QcalcState): { ok: true; req: QcalcRequest } | { ok: false; field: string; error: 'number' | 'integer' } {
+  const req: QcalcRequest = { format: s.format.trim(), rounding: s.rounding, overflow: s.overflow };
   const wb = parseNumber(s.word_bits, true);
   if (!wb.ok) return { ok: false, field: 'qcalc.word_bits', error: wb.error };
   if (wb.value !== null) req.word_bits = wb.value;
@@ -35,7 +32,7 @@ export function qcalcRequest(s: QcalcState): { ok: true; req: Record<string, unk
     // Sent as typed: pulab reads decimal, 0x… hex, 0b… binary and full-width digits.
     const r = parseNumber(s.raw, true);
     if (r.ok && r.value === null) return { ok: false, field: 'qcalc.raw', error: 'integer' };
-    req.raw = r.ok ? r.value : s.raw.trim();
+    req.raw = r.ok && r.value !== null ? r.value : s.raw.trim();
   } else {
     const v = parseNumber(s.value);
     if (!v.ok || v.value === null) return { ok: false, field: 'qcalc.value', error: 'number' };
@@ -59,7 +56,7 @@ function compute(el: HTMLElement, ctx: PanelContext): void {
   if (!ctx.client) return;
   void ctx.client.call('qcalc', r.req, 'qcalc').then(({ result }) => {
     if (id !== seq) return;
-    last = result as unknown as QResult;
+    last = result;
     qcalcPanel.render(el, ctx);
   }, () => undefined);
 }
@@ -81,7 +78,9 @@ export const qcalcPanel: Panel = {
     if (el.firstChild && sameItems(shows, drawn)) return;
     drawn = shows;
     const on = (k: keyof QcalcState) => (ev: Event) => {
-      (qstate as unknown as Record<string, string>)[k] = (ev.target as HTMLInputElement).value;
+      const v = (ev.target as HTMLInputElement).value;
+      if (k === 'mode') qstate.mode = v === 'decode' ? 'decode' : 'encode';
+      else qstate[k] = v;
       compute(el, ctx);
     };
     const sel = (k: keyof QcalcState, opts: [string, string][]) =>

@@ -5,9 +5,9 @@ import { h, num, table } from '../dom';
 import { ALL_FIELDS, effectiveInput } from '../fields';
 import { errText, getLang, t, type Key } from '../i18n';
 import { encodeHash, getPath, type Input } from '../state';
-import type { ApiErr } from '../protocol';
+import type { ApiErr, SweepAxis, SweepRequest } from '../protocol';
 import { runChunks, type ChunkJob } from '../family/chunks';
-import { appendPoints, STATUSES, type Chunk, type Plan, type Points, type Summary } from '../family/types';
+import { appendPoints, STATUSES, type Plan, type Points, type Summary } from '../family/types';
 import { renderSweep1d, renderSweep2d, STATUS_COLORS } from '../figures/sweep-plot';
 import type { Panel, PanelContext } from './panel';
 
@@ -46,16 +46,16 @@ function defaultAxis(ctx: PanelContext, path: string, lo: number, hi: number, n:
 
 /** The seed's Inovance code, and every profile the report carries (`profiles.NAME`). */
 function profiles(ctx: PanelContext): string[] {
-  const more = Object.keys((ctx.report as unknown as { profiles?: Record<string, unknown> } | null)?.profiles ?? {});
+  const more = Object.keys(ctx.report?.profiles ?? {});
   return ['inovance', ...more.filter((p) => p !== 'inovance')];
 }
 
-function axisReq(a: AxisForm): Record<string, unknown> {
+function axisReq(a: AxisForm): SweepAxis {
   return { path: a.path, start: Number(a.start), stop: Number(a.stop), n: Number(a.n), scale: a.scale };
 }
 
-function request(input: Input): Record<string, unknown> {
-  const req: Record<string, unknown> = { input, x: axisReq(st.x as AxisForm), profile: st.profile };
+function request(input: Input): SweepRequest {
+  const req: SweepRequest = { input, x: axisReq(st.x as AxisForm), profile: st.profile };
   if (st.twoD && st.y) req.y = axisReq(st.y);
   return req;
 }
@@ -67,18 +67,18 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
   const job: ChunkJob = { cancelled: false };
   Object.assign(st, { job, done: 0, total: 0, error: null, plan: null, points: null, summary: null, note: null });
   sweepPanel.render(el, ctx);
-  const { result } = await client.call('sweep', { ...req, op: 'plan' });
+  const { result } = await client.call('sweep.plan', req);
   if (!result.ok) {
     Object.assign(st, { job: null, error: result });
     return sweepPanel.render(el, ctx);
   }
-  st.plan = result.plan as unknown as Plan;
+  st.plan = result.plan;
   st.total = st.plan.total;
   if (!st.plan.names.includes(st.show)) st.show = st.plan.names[0];
   const summaries: Summary[] = [];
   const t0 = performance.now();
-  const end = await runChunks(client, 'sweep', st.total, CHUNK, (start, count) => ({ ...req, op: 'chunk', start, count }), (r, done) => {
-    const c = r.chunk as unknown as Chunk;
+  const end = await runChunks(client, 'sweep.chunk', st.total, CHUNK, (start, count) => ({ ...req, start, count }), (r, done) => {
+    const c = r.chunk;
     st.points = appendPoints(st.points, c.points);
     summaries.push(c.summary);
     st.done = done;
@@ -89,8 +89,8 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
     return sweepPanel.render(el, ctx);
   }
   if (summaries.length) {
-    const m = await client.call('sweep', { ...req, op: 'merge', summaries });
-    if (m.result.ok) st.summary = m.result.summary as unknown as Summary;
+    const m = await client.call('sweep.merge', { ...req, summaries });
+    if (m.result.ok) st.summary = m.result.summary;
   }
   st.note = end === 'cancelled' ? { key: 'swCancelled', vars: { done: st.done, total: st.total } } : { key: 'swDone', vars: { n: st.total, s: ((performance.now() - t0) / 1000).toFixed(2) } };
   st.job = null;
@@ -109,8 +109,12 @@ function progress(el: HTMLElement): void {
 }
 
 function axisControls(which: 'x' | 'y', a: AxisForm, paths: string[], onChange: () => void): HTMLElement {
-  const set = (k: keyof AxisForm) => (ev: Event) => {
-    (a as unknown as Record<string, string>)[k] = (ev.target as HTMLInputElement).value;
+  const set = (k: Exclude<keyof AxisForm, 'scale'>) => (ev: Event) => {
+    a[k] = (ev.target as HTMLInputElement).value;
+    onChange();
+  };
+  const setScale = (ev: Event) => {
+    a.scale = (ev.target as HTMLSelectElement).value === 'linear' ? 'linear' : 'log';
     onChange();
   };
   const err = (k: string) => (st.error && st.error.field === `sweep.${which}.${k}` ? errText(st.error) : '');
@@ -122,7 +126,7 @@ function axisControls(which: 'x' | 'y', a: AxisForm, paths: string[], onChange: 
     field(t('swStart'), h('input', { name: `sweep.${which}.start`, value: a.start, inputmode: 'decimal', oninput: set('start') }), 'start'),
     field(t('swStop'), h('input', { name: `sweep.${which}.stop`, value: a.stop, inputmode: 'decimal', oninput: set('stop') }), 'stop'),
     field(t('swPoints'), h('input', { name: `sweep.${which}.n`, value: a.n, inputmode: 'numeric', oninput: set('n') }), 'n'),
-    field(t('swScale'), h('select', { name: `sweep.${which}.scale`, onchange: set('scale') },
+    field(t('swScale'), h('select', { name: `sweep.${which}.scale`, onchange: setScale },
       (['log', 'linear'] as const).map((s) => h('option', { value: s, selected: a.scale === s }, t(s === 'log' ? 'swLog' : 'swLinear')))), 'scale'));
 }
 

@@ -1,12 +1,14 @@
 // Vendor profiles side by side (Inovance, TI, NXP, ST, Microchip), the translator between their
 // current-loop integers, and a C header per vendor. Every number comes from pulab in the worker:
-// the report with a "profiles" section, and pulab.api.vendors_json (translate, header).
+// the report with a "profiles" section, and the kinds vendors.translate and vendors.header.
 import { flagChips, focusedInput, h, num, refocus, table } from '../dom';
 import { effectiveInput } from '../fields';
 import { parseNumber } from '../format';
 import { errText, getLang, t, type Key } from '../i18n';
 import { reportInput, type Input } from '../state';
-import type { FirmwareStatus } from '../report-types';
+import type { FirmwareStatus, ProfileReport } from '../report-types';
+import type { Translation } from '../api-types';
+import type { ApiErr } from '../protocol';
 import { limitsBox } from './limits';
 import type { Panel, PanelContext } from './panel';
 
@@ -42,11 +44,6 @@ function ownKey(v: Vendor, name: string, axis: 'd' | 'q'): string {
 const BASE_ROWS = ['voltage_base', 'current_base', 'line_or_phase', 'rms_or_peak', 'clarke_k', 'inductance_base', 'pi_form', 'rounding'] as const;
 const BASE_NUMS: [string, string][] = [['U_b', 'V'], ['I_b', 'A'], ['Z_b', 'Ω'], ['L_b', 'H']];
 
-type Constant = { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string };
-type Profile = { inputs: Record<string, unknown>; constants: Record<string, Constant>; bases: Record<string, string | number | null | Record<string, string>>; pi_example?: { error: number; shift: number; misra: number }[]; checks?: [string, string][]; files?: { rounding: string; worked_numbers: string[] } };
-type Fail = { ok: false; field: string; message: string; message_zh?: string };
-type Step = { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: Vendor; drift_pct?: { kp: number; ki: number } };
-type Translation = { si: { kp: number; ki: number }; profiles: Record<Vendor, Step>; chain: Step[]; round_trip: { values: Record<string, number>; delta: Record<string, number> } };
 
 export interface VendorsState {
   hw: Record<string, string>;
@@ -57,11 +54,11 @@ export interface VendorsState {
 }
 export const vstate: VendorsState = { hw: {}, from: 'inovance', axis: 'q', kp: '', ki: '' };
 
-let profiles: Record<Vendor, Profile> | null = null;
+let profiles: Record<string, ProfileReport> | null = null;
 let firmware: Record<string, FirmwareStatus> = {};
-let profErr: Fail | null = null;
+let profErr: ApiErr | null = null;
 let translation: Translation | null = null;
-let transErr: Fail | null = null;
+let transErr: ApiErr | null = null;
 let lastKey = '';
 let lastTransKey = '';
 let lastCtx: { el: HTMLElement; ctx: PanelContext } | null = null;
@@ -119,10 +116,11 @@ function refresh(ctx: PanelContext): void {
   void ctx.client.call('report', inp, 'vendors').then(({ result }) => {
     if (JSON.stringify(inp) !== lastKey) return;
     if (result.ok) {
-      ({ profiles, firmware } = result.report as { profiles: Record<Vendor, Profile>; firmware: Record<string, FirmwareStatus> });
+      profiles = result.report.profiles ?? null;
+      firmware = result.report.firmware;
       profErr = null;
       if (vstate.kp === '' && vstate.ki === '') seedTranslator();
-    } else profErr = result as unknown as Fail;
+    } else profErr = result;
     translate(ctx);
     rerender();
   }, () => undefined);
@@ -141,7 +139,7 @@ function translate(ctx: PanelContext): void {
   const s = profilesSection(vstate.hw);
   if (!s.ok || !ctx.client) return;
   const [kpName, kiName] = gainFields(vstate.from, vstate.axis);
-  const values: Record<string, unknown> = {};
+  const values: Record<string, number> = {};
   for (const [name, text] of [[kpName, vstate.kp], [kiName, vstate.ki]] as const) {
     const p = parseNumber(text, true);
     if (!p.ok) {
@@ -151,16 +149,16 @@ function translate(ctx: PanelContext): void {
     }
     if (p.value !== null) values[name] = p.value;
   }
-  const req = { input: baseInput(ctx, s.section), action: 'translate', from: vstate.from, axis: vstate.axis, values };
+  const req = { input: baseInput(ctx, s.section), from: vstate.from, axis: vstate.axis, values };
   const key = JSON.stringify(req);
   if (key === lastTransKey) return;
   lastTransKey = key;
-  void ctx.client.call('vendors', req, 'vendors-translate').then(({ result }) => {
+  void ctx.client.call('vendors.translate', req, 'vendors-translate').then(({ result }) => {
     if (key !== lastTransKey) return;
     if (result.ok) {
-      translation = (result as unknown as { translation: Translation }).translation;
+      translation = result.translation;
       transErr = null;
-    } else transErr = result as unknown as Fail;
+    } else transErr = result;
     rerender();
   }, () => undefined);
 }
@@ -168,14 +166,14 @@ function translate(ctx: PanelContext): void {
 async function downloadHeader(ctx: PanelContext, v: Vendor, el: HTMLElement): Promise<void> {
   const s = profilesSection(vstate.hw);
   if (!s.ok || !ctx.client) return;
-  const { result } = await ctx.client.call('vendors', { input: baseInput(ctx, s.section), action: 'header', profile: v });
+  const { result } = await ctx.client.call('vendors.header', { input: baseInput(ctx, s.section), profile: v });
   if (!result.ok) {
     const msg = el.querySelector(`[data-err-for="header.${v}"]`);
-    if (msg) msg.textContent = `${(result as unknown as Fail).field}: ${errText(result)}`;
+    if (msg) msg.textContent = `${result.field}: ${errText(result)}`;
     return;
   }
   const names: Record<Vendor, string> = { inovance: 'pulab_params.h', ti: 'user_mtr1_pulab.h', nxp: 'm1_pmsm_appconfig_pulab.h', st: 'drive_parameters_pulab.h', microchip: 'mcaf_params_pulab.h' };
-  const url = URL.createObjectURL(new Blob([String(result.text)], { type: 'text/x-c' }));
+  const url = URL.createObjectURL(new Blob([result.text], { type: 'text/x-c' }));
   const a = h('a', { href: url, download: names[v] }) as HTMLAnchorElement;
   document.body.append(a);
   a.click();
@@ -187,7 +185,7 @@ function field(label: string, control: HTMLElement, name: string, err?: string):
   return h('label', { class: 'field' }, h('span', { class: 'lbl' }, label), control, h('span', { class: 'err', 'data-err-for': name }, err ?? ''));
 }
 
-const errFor = (e: Fail | null, name: string) => (e && e.field === name ? errText(e) : undefined);
+const errFor = (e: ApiErr | null, name: string) => (e && e.field === name ? errText(e) : undefined);
 
 function hwForm(ctx: PanelContext): HTMLElement {
   return h('div', { class: 'qform vendors-hw' },
@@ -207,7 +205,8 @@ function basesTable(): HTMLElement {
   for (const k of BASE_ROWS) {
     const words = (v: Vendor) => {
       const b = profiles?.[v]?.bases;
-      const zh = getLang() === 'zh' ? (b?.zh as unknown as Record<string, string> | undefined)?.[k] : undefined;
+      const zhWords = b?.zh;
+      const zh = getLang() === 'zh' && typeof zhWords === 'object' && zhWords !== null ? zhWords[k] : undefined;
       return zh ?? String(b?.[k] ?? '…');
     };
     rows.push(h('tr', {}, h('td', {}, t(`vb_${k}` as Key)), VENDORS.map((v) => h('td', {}, words(v)))));
@@ -266,7 +265,9 @@ function translator(ctx: PanelContext): HTMLElement {
   const [kpName, kiName] = gainFields(vstate.from, vstate.axis);
   const tr = translation;
   const onSel = (k: 'from' | 'axis') => (ev: Event) => {
-    (vstate as unknown as Record<string, string>)[k] = (ev.target as HTMLSelectElement).value;
+    const v = (ev.target as HTMLSelectElement).value;
+    if (k === 'from') vstate.from = VENDORS.find((x) => x === v) ?? vstate.from;
+    else vstate.axis = v === 'd' ? 'd' : 'q';
     vstate.kp = '';
     vstate.ki = '';
     seedTranslator();

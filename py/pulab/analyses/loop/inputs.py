@@ -1,11 +1,9 @@
 """Validation and defaults of the report's ``"analysis"`` input section .
 
-The fields, their ranges and defaults are the schema's ``analysis`` and
-``analysis.speed`` sections (:mod:`pulab.schema.fields`), checked by
-:func:`pulab.schema.validate.read`.  ``analysis.robust`` holds lists and
-either-a-name-or-a-number fields that the schema's scalar kinds do not
-describe; :func:`pulab.analyses.loop.robust.validate` checks it.  Defaults that depend on the motor stay
-``None`` here and are resolved by :func:`pulab.analyses.loop.analyze`.
+The fields, their ranges and defaults are the schema's ``analysis``,
+``analysis.speed`` and ``analysis.robust`` sections (:mod:`pulab.schema.fields`),
+checked by :func:`pulab.schema.validate.read`.  Defaults that depend on the motor
+stay ``None`` here and are resolved by :func:`pulab.analyses.loop.analyze`.
 
 Examples
 --------
@@ -37,11 +35,8 @@ def validate(value) -> dict:
     pulab.InputError
         Naming the JSON path of the first bad field.
     """
-    robust = value.get("robust") if isinstance(value, dict) else None
-    if isinstance(value, dict):
-        value = {k: v for k, v in value.items() if k != "robust"}
     a = read("analysis", value)
-    speed = a.get("speed")
+    speed, robust = a.get("speed"), a.get("robust")
     a["speed"] = None if speed is None else read("analysis.speed", speed)
-    a["robust"] = None if robust is None else _robust.validate(robust)
+    a["robust"] = None if robust is None else _robust.settings(robust)
     return a

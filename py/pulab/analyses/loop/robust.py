@@ -48,7 +48,7 @@ end of the scan, not a limit found.
 
 Examples
 --------
->>> cfg = validate({})
+>>> cfg = settings({})
 >>> cfg["temperature_c"], cfg["copper_alpha_per_k"], cfg["magnet_pct_per_k"]
 ([20.0, 155.0], 0.00393, -0.12)
 >>> round(resistance(1.5, 155.0, cfg), 6)
@@ -61,123 +61,37 @@ import math
 import random
 
 from ...profiles.inovance_code import round_half_away
-from ...schema.errors import InputError
-from ...schema.validate import object_fields, real
+from ...schema.validate import read
 from ..sim import decimate_indices
-from ..sim.current import default_duration, run_fixed, run_float
+from ..sim.current import default_duration, run_fixed, run_float, voltage_limits
 from ..sim.metrics import step_metrics
 from ..sim.plant import zoh
 from . import current as _current
 from .discrete import loop_margins
 
-__all__ = ["validate", "FIELDS", "MAGNETS", "resistance", "flux", "inductance", "analyze",
+__all__ = ["config", "settings", "MAGNETS", "resistance", "flux", "inductance", "analyze",
            "monte_carlo", "worst_step", "warnings", "study_row"]
-
-FIELDS = ("temperature_c", "reference_c", "copper_alpha_per_k", "magnet", "peak_current_a",
-          "inductance_drop_pct", "inductance_table", "udc_tolerance_pct", "bus_compensated",
-          "tolerance_rs_pct", "tolerance_l_pct", "tolerance_psi_pct", "samples", "seed",
-          "min_phase_margin_deg", "min_gain_margin_db", "grid")
 
 #: Reversible temperature coefficient of the remanence (≈ of ψ), % per K.
 MAGNETS = {"ndfeb": -0.12, "smco": -0.035, "ferrite": -0.20}
 
 _AXES = ("d", "q")
 _KEYS = ("phase_margin_deg", "gain_margin_db", "crossover_hz", "bandwidth_hz", "stable")
-_MAX_SAMPLES = 1_000_000
 
 
-def _number(sec: dict, key: str, default: float, lo: float, hi: float) -> float:
-    if key not in sec:
-        return default
-    v = real(sec[key], f"analysis.robust.{key}")
-    if not lo <= v <= hi:
-        raise InputError(f"analysis.robust.{key}", code="out_of_range", lo=lo, hi=hi, value=v)
-    return v
-
-
-def _integer(sec: dict, key: str, default: int, lo: int, hi: int) -> int:
-    if key not in sec:
-        return default
-    v = sec[key]
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or v != int(v):
-        raise InputError(f"analysis.robust.{key}", f"must be an integer, got {v!r}")
-    if not lo <= v <= hi:
-        raise InputError(f"analysis.robust.{key}", code="integer_range", lo=lo, hi=hi, got=int(v))
-    return int(v)
-
-
-def _table(v) -> list | None:
-    path = "analysis.robust.inductance_table"
-    if v is None:
-        return None
-    if not isinstance(v, list) or len(v) < 2:
-        raise InputError(path, "must be a list of at least 2 [current_a, ld_h, lq_h] points")
-    out = []
-    for k, row in enumerate(v):
-        here = f"{path}[{k}]"
-        if not isinstance(row, list) or len(row) != 3:
-            raise InputError(here, "must be [current_a, ld_h, lq_h]")
-        i, ld, lq = (real(x, f"{here}[{j}]") for j, x in enumerate(row))
-        if i < 0 or ld <= 0 or lq <= 0:
-            raise InputError(here, "must have current ≥ 0 and inductances > 0")
-        if out and i <= out[-1][0]:
-            raise InputError(here, "currents must increase from point to point")
-        out.append([i, ld, lq])
-    return out
-
-
-def validate(value) -> dict:
-    """Check ``analysis.robust`` and fill in the defaults (docs/contract.md, "Robustness").
-
-    Raises
-    ------
-    pulab.InputError
-        Naming the JSON path of the first bad field.
+def config(checked: dict) -> dict:
+    """The analysis's settings from the checked ``analysis.robust`` section
+    (:func:`pulab.schema.validate.read`): the magnet's name becomes its coefficient
+    ``magnet_pct_per_k``; everything else as checked (docs/contract.md, "Robustness").
     """
-    path = "analysis.robust"
-    s = object_fields(value, path, FIELDS)
-    temps = s.get("temperature_c", [20.0, 155.0])
-    if not isinstance(temps, list) or len(temps) != 2:
-        raise InputError(f"{path}.temperature_c", "must be [low, high] in °C")
-    lo, hi = (real(x, f"{path}.temperature_c[{k}]") for k, x in enumerate(temps))
-    if not -273.15 < lo <= hi <= 400.0:
-        raise InputError(f"{path}.temperature_c", f"must be between -273.15 and 400 with "
-                                                  f"low ≤ high, got [{lo:g}, {hi:g}]")
-    magnet = s.get("magnet", "ndfeb")
-    if isinstance(magnet, str):
-        if magnet not in MAGNETS:
-            raise InputError(f"{path}.magnet", f"must be one of {', '.join(MAGNETS)}, got "
-                                               f"{magnet!r}")
-        beta = MAGNETS[magnet]
-    else:
-        beta = real(magnet, f"{path}.magnet")
-        if not -1.0 <= beta <= 1.0:
-            raise InputError(f"{path}.magnet", code="out_of_range", lo=-1.0, hi=1.0, value=beta)
-    compensated = s.get("bus_compensated", True)
-    if not isinstance(compensated, bool):
-        raise InputError(f"{path}.bus_compensated", f"must be true or false, got {compensated!r}")
-    peak = s.get("peak_current_a")
-    if peak is not None:
-        peak = real(peak, f"{path}.peak_current_a")
-        if peak <= 0:
-            raise InputError(f"{path}.peak_current_a", code="not_positive", value=peak)
-    return {"temperature_c": [lo, hi],
-            "reference_c": _number(s, "reference_c", 20.0, -273.15, 400.0),
-            "copper_alpha_per_k": _number(s, "copper_alpha_per_k", 0.00393, 0.0, 0.1),
-            "magnet_pct_per_k": beta,
-            "peak_current_a": peak,
-            "inductance_drop_pct": _number(s, "inductance_drop_pct", 30.0, 0.0, 95.0),
-            "inductance_table": _table(s.get("inductance_table")),
-            "udc_tolerance_pct": _number(s, "udc_tolerance_pct", 10.0, 0.0, 90.0),
-            "bus_compensated": compensated,
-            "tolerance_rs_pct": _number(s, "tolerance_rs_pct", 5.0, 0.0, 90.0),
-            "tolerance_l_pct": _number(s, "tolerance_l_pct", 10.0, 0.0, 90.0),
-            "tolerance_psi_pct": _number(s, "tolerance_psi_pct", 3.0, 0.0, 90.0),
-            "samples": _integer(s, "samples", 0, 0, _MAX_SAMPLES),
-            "seed": _integer(s, "seed", 0, 0, 2 ** 63 - 1),
-            "min_phase_margin_deg": _number(s, "min_phase_margin_deg", 45.0, 0.0, 90.0),
-            "min_gain_margin_db": _number(s, "min_gain_margin_db", 6.0, 0.0, 60.0),
-            "grid": _integer(s, "grid", 7, 2, 41)}
+    magnet = checked["magnet"]
+    return {("magnet_pct_per_k" if k == "magnet" else k):
+            (MAGNETS.get(magnet, magnet) if k == "magnet" else v) for k, v in checked.items()}
+
+
+def settings(value) -> dict:
+    """:func:`config` of the ``analysis.robust`` input ``value``, checked by the schema."""
+    return config(read("analysis.robust", value))
 
 
 # ---- the plant in the box ---------------------------------------------------------------
@@ -364,7 +278,7 @@ def analyze(report: dict, cfg: dict, delay: str, band: bool = True) -> dict:
     report : dict
         Output of :func:`pulab.report` so far (``input``, ``pu``, ``current_pi``).
     cfg : dict
-        The ``analysis.robust`` input as :func:`validate` returns it.
+        The ``analysis.robust`` input as :func:`settings` returns it.
     delay : one of :data:`pulab.analyses.loop.current.DELAYS`
     band : bool — compute the safe bandwidth band (the study mode leaves it out)
 
@@ -448,30 +362,36 @@ def worst_step(report: dict, case: dict, delay: str) -> dict:
     period is in the margins, not in this time response).  Run length as the simulation's
     default for the nominal motor (30/ω_c, at least 200 periods); at most 400 points kept.
     """
-    inp, b, vendor, pi = report["input"], report["base"], report["vendor"], report["current_pi"]
+    inp, b, pi = report["input"], report["base"], report["current_pi"]
     ts = inp["drive"]["ts_s"]
     u_b, i_b = b["U_b"], b["I_b"]
     axis = case["axis"]
     n = int(math.ceil(default_duration(report, axis) / ts))
     step = 0.5 * i_b
     ref_d, ref_q = (step, 0.0) if axis == "d" else (0.0, step)
-    maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
+    umax_pu, imax_pu, ints = voltage_limits(report)
     z = zoh(case["rs_ohm"], case["ld_h"], case["lq_h"], case["psi_wb"], 0.0, ts)
     with_delay = delay != "none"
     gd, gq = pi["d"]["from_integers"], pi["q"]["from_integers"]
-    fl = run_float(z, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts, maxout / 4096.0 * u_b,
-                   maxu / 16777216.0 * u_b, ref_d, ref_q, 0.0, n, with_delay)
-    fx = run_fixed(z, i_b, u_b, pi["d"]["pm_kp"], pi["d"]["pm_ki"], pi["q"]["pm_kp"],
-                   pi["q"]["pm_ki"], maxu, maxout, round_half_away(ref_d / i_b * 4096.0),
-                   round_half_away(ref_q / i_b * 4096.0), 0, n, with_delay)
+    fl = run_float(z, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts, umax_pu * u_b,
+                   imax_pu * u_b, ref_d, ref_q, 0.0, n, with_delay)
     t = [k * ts for k in range(n + 1)]
     key = "id" if axis == "d" else "iq"
     keep = decimate_indices(n + 1)
-    return {"case": case["case"], "axis": axis, "ref_a": step, "t": [t[k] for k in keep],
-            "float": [fl[key][k] for k in keep], "fixed": [fx[key][k] for k in keep],
-            "metrics": {"float": step_metrics(t, list(fl[key]), step, list(fl["sat"]), ts),
-                        "fixed": step_metrics(t, list(fx[key]), step, list(fx["sat"]), ts)},
-            "fixed_vs_float_max_a": max(abs(a - c) for a, c in zip(fl[key], fx[key]))}
+    out = {"case": case["case"], "axis": axis, "ref_a": step, "t": [t[k] for k in keep],
+           "float": [fl[key][k] for k in keep], "fixed": None,
+           "metrics": {"float": step_metrics(t, list(fl[key]), step, list(fl["sat"]), ts),
+                       "fixed": None}, "fixed_vs_float_max_a": None}
+    if ints is None:  # the Inovance firmware cannot hold this drive: no fixed-point run
+        return out
+    maxout, maxu = ints
+    fx = run_fixed(z, i_b, u_b, pi["d"]["pm_kp"], pi["d"]["pm_ki"], pi["q"]["pm_kp"],
+                   pi["q"]["pm_ki"], maxu, maxout, round_half_away(ref_d / i_b * 4096.0),
+                   round_half_away(ref_q / i_b * 4096.0), 0, n, with_delay)
+    out["fixed"] = [fx[key][k] for k in keep]
+    out["metrics"]["fixed"] = step_metrics(t, list(fx[key]), step, list(fx["sat"]), ts)
+    out["fixed_vs_float_max_a"] = max(abs(a - c) for a, c in zip(fl[key], fx[key]))
+    return out
 
 
 # ---- Monte Carlo ------------------------------------------------------------------------

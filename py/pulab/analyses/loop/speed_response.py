@@ -35,6 +35,7 @@ from __future__ import annotations
 import math
 
 from ..sim import decimate_indices
+from ..sim.current import voltage_limits
 from ..sim.linalg import expm
 from ..sim.metrics import overshoot_pct, rise_time, settling_time
 from ...profiles.inovance_code import current_pi_step, round_half_away
@@ -144,10 +145,11 @@ def run(report: dict, s: dict, sp: dict, mech: dict, delay: str) -> dict:
         ``float``/``fixed`` → ``speed_rpm``, ``iq_a``, ``iq_ref_a`` (≤ 400 points),
         ``metrics``: ``float``/``fixed`` → ``rise_time_s``, ``overshoot_pct``,
         ``settling_time_s`` (of the step, before the load), ``load_dip_rpm``,
-        ``saturation_time_s``; ``fixed_vs_float_max_rpm``.
+        ``saturation_time_s``; ``fixed_vs_float_max_rpm``.  No ``fixed`` (and a null
+        difference) when the Inovance firmware cannot hold this drive
+        (:func:`pulab.analyses.sim.current.voltage_limits`).
     """
-    inp, b, vendor, gq = report["input"], report["base"], report["vendor"], \
-        report["current_pi"]["q"]
+    inp, b, gq = report["input"], report["base"], report["current_pi"]["q"]
     m, ts = inp["motor"], inp["drive"]["ts_s"]
     zeta_wn = s["damping"] * 2.0 * math.pi * s["bandwidth_hz"]
     t_load = max(10.0 / zeta_wn, 20.0 * s["ts_s"])
@@ -155,7 +157,8 @@ def run(report: dict, s: dict, sp: dict, mech: dict, delay: str) -> dict:
     k_load = min(int(round(t_load / ts)), n // 2)
     phi, gamma = _half_step(m["rs_ohm"], m["lq_h"], m["pole_pairs"] * report["pu"]["psi_r_wb"],
                             mech["kt_nm_per_a"], s["inertia_kg_m2"], s["friction_nm_s"], ts)
-    maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
+    umax_pu, imax_pu, ints = voltage_limits(report)
+    maxout, maxu = ints if ints is not None else (None, None)
     alpha = 1.0 - math.exp(-2.0 * math.pi * s["filter_hz"] * s["ts_s"])
     ref = s["step_pu"] * mech["w_mb"]
     c = {"phi": phi, "gamma": gamma, "n": n, "ratio": s["ratio"], "delay": delay,
@@ -166,9 +169,11 @@ def run(report: dict, s: dict, sp: dict, mech: dict, delay: str) -> dict:
          "kp_s": sp["kp"], "ki_ts_s": sp["ki"] * s["ts_s"],
          "pm_kp_s": sp["pm_kp"], "pm_ki_s": sp["pm_ki"],
          "kp": gq["kp"], "ki_ts": gq["ki"] * ts,
-         "umax": maxout / 4096.0 * b["U_b"], "imax": maxu / 16777216.0 * b["U_b"],
+         "umax": umax_pu * b["U_b"], "imax": imax_pu * b["U_b"],
          "pm_kp": gq["pm_kp"], "pm_ki": gq["pm_ki"], "maxu": maxu, "maxout": maxout}
-    runs = {"float": _simulate(False, c), "fixed": _simulate(True, c)}
+    runs = {"float": _simulate(False, c)}
+    if ints is not None:  # the firmware's fixed point, when it can hold this drive
+        runs["fixed"] = _simulate(True, c)
     t = [k * ts for k in range(n + 1)]
     idx = decimate_indices(n + 1)
     rpm = 30.0 / math.pi
@@ -185,7 +190,8 @@ def run(report: dict, s: dict, sp: dict, mech: dict, delay: str) -> dict:
                          "load_dip_rpm": (before - min(r["w"][k_load:])) * rpm
                          if c["load_nm"] >= 0 else (max(r["w"][k_load:]) - before) * rpm,
                          "saturation_time_s": sum(r["sat"]) * ts}
-    diff = max(abs(a - b_) for a, b_ in zip(runs["fixed"]["w"], runs["float"]["w"])) * rpm
+    diff = None if "fixed" not in runs else \
+        max(abs(a - b_) for a, b_ in zip(runs["fixed"]["w"], runs["float"]["w"])) * rpm
     return {"t": [t[k] for k in idx], "t_load_s": k_load * ts, "reference_rpm": ref * rpm,
             "load_nm": c["load_nm"], "variants": variants, "metrics": metrics,
             "fixed_vs_float_max_rpm": diff}

@@ -60,7 +60,7 @@ from ...profiles.inovance_code import current_pi_step, round_half_away
 from .inputs import periods
 from .plant import zoh
 
-__all__ = ["run_float", "run_fixed", "run", "run_float_steps", "run_fixed_steps", "run_steps",
+__all__ = ["voltage_limits", "run_float", "run_fixed", "run", "run_float_steps", "run_fixed_steps", "run_steps",
            "MAX_STEPS", "Q12_CURRENT_LIMIT_PU"]
 
 #: Upper bound on the number of controller periods of one run (keeps a typo in
@@ -258,6 +258,24 @@ def default_duration(report: dict, axis: str) -> float:
     return max(200 * ts, 30.0 / w_c)
 
 
+def voltage_limits(report: dict) -> tuple[float, float, tuple[int, int] | None]:
+    """The current PI's output and integral limits in per unit of U_b, and the firmware's
+    integers (pm_maxout_vol Q12, maxu Q24) they come from.
+
+    When the Inovance firmware cannot compute them for this drive (``firmware.inovance``)
+    the integers are None — there is no fixed-point run — and the limits are the physical
+    U_dc/√2 (line RMS) over the rated line voltage, the same ratio without the firmware's
+    whole-volt truncation.
+    """
+    vendor = report["vendor"]
+    if "pm_maxout_vol" in vendor and "maxu" in vendor:
+        maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
+        return maxout / 4096.0, maxu / 16777216.0, (maxout, maxu)
+    inp = report["input"]
+    ratio = inp["drive"]["udc_v"] / math.sqrt(2.0) / inp["motor"]["rated_voltage_v"]
+    return ratio, ratio, None
+
+
 def run_steps(report: dict, cfg: dict):
     """Run the three variants for one reference step.
 
@@ -272,7 +290,8 @@ def run_steps(report: dict, cfg: dict):
     -------
     generator — yields None every SLICE_STEPS periods (:mod:`pulab.analyses.slices`), returns a dict
         ``t`` (s), ``ts``, ``n``, ``axis``, ``ref_a`` (A), and ``variants``:
-        ``si``/``pu``/``fixed`` → ``id, iq, ud, uq`` in A and V (phase) plus ``sat``.
+        ``si``/``pu``/``fixed`` → ``id, iq, ud, uq`` in A and V (phase) plus ``sat``;
+        no ``fixed`` when the Inovance firmware cannot compute its voltage limits.
 
     Raises
     ------
@@ -300,8 +319,10 @@ def run_steps(report: dict, cfg: dict):
         raise InputError("sim.current.speed_hz", code="speed_nyquist", value=abs(cfg["speed_hz"]),
                          nyquist=0.5 / ts)
     omega = 2.0 * math.pi * cfg["speed_hz"]
-    maxout, maxu = vendor["pm_maxout_vol"]["value"], vendor["maxu"]["value"]
-    umax_pu, imax_pu = maxout / 4096.0, maxu / 16777216.0
+    umax_pu, imax_pu, ints = voltage_limits(report)
+    fixed = ints is not None
+    if fixed:
+        maxout, maxu = ints
     gd, gq = pi["d"], pi["q"]
 
     z_si = zoh(m["rs_ohm"], m["ld_h"], m["lq_h"], pu["psi_r_wb"], omega, ts)
@@ -317,14 +338,17 @@ def run_steps(report: dict, cfg: dict):
     p = {"id": [x * i_b for x in p["id"]], "iq": [x * i_b for x in p["iq"]],
          "ud": [x * u_b for x in p["ud"]], "uq": [x * u_b for x in p["uq"]], "sat": p["sat"]}
     yield  # the unit conversions are a slice of their own
-
-    fx = yield from run_fixed_steps(z_si, i_b, u_b, gd["pm_kp"], gd["pm_ki"], gq["pm_kp"],
+    variants = {"si": si, "pu": p}
+    if not fixed:
+        return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n,
+                "axis": axis, "ref_a": step, "variants": variants}
+    variants["fixed"] = yield from run_fixed_steps(z_si, i_b, u_b, gd["pm_kp"], gd["pm_ki"], gq["pm_kp"],
                                     gq["pm_ki"], maxu, maxout,
                                     round_half_away(ref_d / i_b * 4096.0),
                                     round_half_away(ref_q / i_b * 4096.0),
                                     round_half_away(z_pu.bemf * 16777216.0), n, cfg["delay"])
     return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "axis": axis,
-            "ref_a": step, "variants": {"si": si, "pu": p, "fixed": fx}}
+            "ref_a": step, "variants": variants}
 
 
 def run(*args, **kwargs):

@@ -1,0 +1,140 @@
+"""pulab.api: one entry point and one dispatch key (``kind``) for every request, the older
+one-function-per-kind entry points as aliases (docs/contract.md, "API")."""
+
+import json
+
+import pytest
+
+from pulab.api import (KINDS, batch_json, call_json, call_json_steps, export_json, qcalc_json,
+                       run_json, sweep_json, trace_json, trace_examples_json, vendors_json)
+
+from conftest import SEED_INPUT
+
+AXIS = {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3}
+SIM = {**SEED_INPUT, "sim": {"current": {"duration_s": 0.005}}}
+
+
+def reply(kind, req):
+    out = json.loads(call_json(kind, json.dumps(req)))
+    assert isinstance(out, dict) and isinstance(out["ok"], bool)
+    return out
+
+
+def test_kinds_are_the_documented_ones():
+    assert sorted(KINDS) == sorted([
+        "report", "qcalc", "export.header", "export.csv_current", "export.csv_pll", "sweep",
+        "sweep.plan", "sweep.chunk", "sweep.merge", "batch", "trace", "trace.examples",
+        "vendors.header", "vendors.translate"])
+
+
+# Each kind on a request with a known answer (values checked elsewhere against oracles; here
+# that each kind reaches its own computation).
+@pytest.mark.parametrize("kind, req, check", [
+    ("report", SEED_INPUT, lambda r: r["report"]["vendor"]["Rpm"]["value"] > 0),
+    ("qcalc", {"value": 0.5, "format": "Q0.15"},
+     lambda r: (r["result"]["raw"], r["result"]["hex"]) == (16384, "0x4000")),
+    ("export.header", {"input": SEED_INPUT}, lambda r: "#define PULAB_RPM" in r["text"]),
+    ("export.csv_current", {"input": SIM}, lambda r: r["text"].splitlines()[0].startswith("t_s")),
+    ("sweep.plan", {"input": SEED_INPUT, "x": AXIS},
+     lambda r: r["plan"]["x"]["values"] == [1.0, 1.5, 2.0] and r["plan"]["total"] == 3),
+    ("sweep.chunk", {"input": SEED_INPUT, "x": AXIS, "start": 1, "count": 2},
+     lambda r: r["chunk"]["points"]["x"] == [1.5, 2.0]),
+    ("sweep", {"input": SEED_INPUT, "x": AXIS}, lambda r: r["sweep"]["points"]["x"] == [1.0, 1.5, 2.0]),
+    ("batch", {"csv": "name,motor.rated_voltage_v\na,17\n"}, lambda r: r["total"] == 1),
+    # C28x int is 16 bits: 6554·10 = 65540 is computed as an unsigned int and wraps to 4
+    ("trace", {"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}},
+     lambda r: r["vars"]["x"]["value"] == 4),
+    ("trace.examples", {}, lambda r: "c28x" in r["targets"] and r["examples"][0]["code"]),
+    ("vendors.header", {"input": SEED_INPUT, "profile": "ti"},
+     lambda r: "#define USER_MTR1_KP_IQ_IQ" in r["text"]),
+    ("vendors.translate", {"input": SEED_INPUT, "from": "inovance", "axis": "q",
+                           "values": {"pm_kp": 1180, "pm_ki": 4720}},
+     lambda r: r["translation"]["round_trip"]["values"] == {"pm_kp": 1180, "pm_ki": 4720}),
+])
+def test_every_kind_answers(kind, req, check):
+    out = reply(kind, req)
+    assert out["ok"] is True, out
+    assert check(out)
+
+
+def test_sweep_merge_of_the_chunks_is_the_whole_sweep_summary():
+    req = {"input": SEED_INPUT, "x": AXIS}
+    parts = [reply("sweep.chunk", {**req, "start": s, "count": c})["chunk"]["summary"]
+             for s, c in ((0, 2), (2, 1))]
+    merged = reply("sweep.merge", {**req, "summaries": parts})["summary"]
+    assert merged == reply("sweep", req)["sweep"]["summary"]
+
+
+def test_an_unknown_kind_is_an_error_naming_kind():
+    for kind in ("nope", "", "sweep.", "Report", None, 3):
+        out = json.loads(call_json(kind, "{}"))
+        assert out["ok"] is False and out["field"] == "kind" and out["code"] == "not_choice", out
+
+
+@pytest.mark.parametrize("kind", sorted(KINDS))
+def test_every_kind_has_the_parser_limits(kind):
+    field = KINDS[kind][0]
+    deep = json.loads(call_json(kind, "[" * 40 + "]" * 40))
+    assert (deep["ok"], deep["field"], deep["code"]) == (False, field, "json_too_deep")
+    bad = json.loads(call_json(kind, '{"a": 1,}'))
+    assert (bad["ok"], bad["field"], bad["code"]) == (False, field, "json_invalid")
+    none = json.loads(call_json(kind, None))
+    assert (none["ok"], none["field"], none["code"]) == (False, field, "json_not_text")
+
+
+def test_the_old_keys_are_aliases_of_the_kinds():
+    req = {"input": SEED_INPUT, "x": AXIS}
+    assert sweep_json(json.dumps({**req, "op": "plan"})) == call_json("sweep.plan", json.dumps(req))
+    assert sweep_json(json.dumps(req)) == call_json("sweep", json.dumps(req))
+    assert export_json(json.dumps({"input": SEED_INPUT, "kind": "header"})) == \
+        call_json("export.header", json.dumps({"input": SEED_INPUT}))
+    assert vendors_json(json.dumps({"input": SEED_INPUT, "action": "header", "profile": "st"})) == \
+        call_json("vendors.header", json.dumps({"input": SEED_INPUT, "profile": "st"}))
+    assert run_json(json.dumps(SEED_INPUT)) == call_json("report", json.dumps(SEED_INPUT))
+    assert qcalc_json('{"raw": 939, "format": "Q3.12"}') == call_json("qcalc", '{"raw": 939, "format": "Q3.12"}')
+    assert batch_json('{"csv": "x\\n"}') == call_json("batch", '{"csv": "x\\n"}')
+    assert trace_json('{"code": "int a = 1;"}') == call_json("trace", '{"code": "int a = 1;"}')
+    assert trace_examples_json() == call_json("trace.examples", "{}")
+
+
+@pytest.mark.parametrize("fn, text, field", [
+    (sweep_json, {"input": SEED_INPUT, "x": AXIS, "op": "nope"}, "sweep.op"),
+    (export_json, {"input": SEED_INPUT, "kind": "pdf"}, "kind"),
+    (vendors_json, {"input": SEED_INPUT, "action": ["header"]}, "action"),
+    # the request's own errors come before the old key's, as they always did
+    (export_json, {"input": {"motor": {}}, "kind": "pdf"}, "motor.rated_voltage_v"),
+    (vendors_json, {"input": 3, "action": "nope"}, "input"),
+])
+def test_a_bad_old_key_names_its_field(fn, text, field):
+    out = json.loads(fn(json.dumps(text)))
+    assert out["ok"] is False and out["field"] == field, out
+
+
+def test_the_tracer_error_says_where_and_which_inputs():
+    out = reply("trace", {"code": "x = 1 +;"})
+    assert (out["ok"], out["field"], out["line"], out["column"]) == (False, "code", 1, 8)
+    out = reply("trace", {"code": "Uint16 v; long x = v;", "set": {"v": "0x1FFFF"}})
+    assert out["ok"] is False and out["field"].startswith("set") and out["inputs"] == ["v"], out
+
+
+def test_report_in_slices_is_the_same_text_and_cancellable():
+    text = json.dumps(SIM)
+    gen = call_json_steps("report", text)
+    slices = 0
+    try:
+        while True:
+            next(gen)
+            slices += 1
+    except StopIteration as done:
+        assert done.value == call_json("report", text)
+    assert slices >= 2
+    gen = call_json_steps("report", text)
+    next(gen)
+    gen.close()  # cancelled between two slices: nothing raised
+
+
+def test_other_kinds_in_slices_answer_at_once():
+    gen = call_json_steps("qcalc", '{"value": 0.5, "format": "Q0.15"}')
+    with pytest.raises(StopIteration) as done:
+        next(gen)
+    assert json.loads(done.value.value)["result"]["raw"] == 16384

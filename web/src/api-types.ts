@@ -1,0 +1,51 @@
+// The bodies of pulab.api's requests and replies that are not a report (docs/contract.md, "API"):
+// the Q calculator, the C tracer and the vendor translator. protocol.ts pairs them by kind.
+import type { Input } from './state';
+
+/** `qcalc`: a value to encode or a raw reading to decode (pulab.qcalc.qcalc). */
+export interface QcalcRequest {
+  format: string;
+  word_bits?: number;
+  rounding?: string;
+  overflow?: string;
+  value?: number | string;
+  raw?: number | string;
+}
+export interface QFormat { name: string; word_bits: number; frac_bits: number; signed: boolean; min: number; max: number; resolution: number }
+export interface QResult { raw: number; hex: string; value: number; error: number; flags: string[] }
+
+/** `trace`: C code, its target and the values of its inputs. */
+export interface TraceRequest {
+  code: string;
+  target?: string;
+  set?: Record<string, string | number>;
+  global_q?: number;
+  define?: string[];
+  /** The function of the code to run (absent: the statements outside functions). */
+  entry?: string;
+  zero_unset?: boolean;
+}
+/** A term; a call of a function of the code carries `call` and the statements it ran. */
+export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number | null; hex: string | null; flags: string[]; var?: string; rounding?: 'floor' | 'toward_zero'; lost?: number; call?: string; steps?: TraceLine[] }
+export interface TraceLine { line: number; column: number; code: string; var: string | null; type: string; value: number | null; hex: string | null; flags: string[]; terms: TraceTerm[]; spelling?: string; input?: boolean; branch?: string }
+export interface TraceVar { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
+export interface Trace {
+  target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[];
+  entry: string | null; functions: string[];
+  rounding: Record<string, { floor: number; toward_zero: number; max_lost: number }>;
+}
+export interface TraceExample { id: string; title: string; title_zh: string; code: string }
+
+/** `vendors.translate`: a vendor's two current-loop integers in every other vendor's scaling. */
+export interface TranslateRequest { input: Input; from: string; axis: 'd' | 'q'; values: Record<string, number> }
+export interface TranslationStep { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: string; drift_pct?: { kp: number; ki: number } }
+export interface Translation {
+  si: { kp: number; ki: number };
+  profiles: Record<string, TranslationStep>;
+  chain: TranslationStep[];
+  round_trip: { values: Record<string, number>; delta: Record<string, number> };
+}
+
+/** `batch`: a CSV of motors, data rows `start` … `start + count − 1`. */
+export interface BatchRequest { csv: string; start?: number; count?: number }
+export interface BatchChunk { total: number; columns: string[]; rows: string[][]; csv: string }
