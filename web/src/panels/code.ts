@@ -70,15 +70,16 @@ function run(ctx: PanelContext): void {
     main = a;
     other = b;
     const found = a?.functions ?? [];
-    if (JSON.stringify(found) !== JSON.stringify(functions)) {
+    // A file of functions and nothing else to run: start with the last one defined.
+    const pick = a && !a.ok && a.field === 'entry' && !s.entry && found.length > 0;
+    if (pick) s.entry = found[found.length - 1];
+    if (pick || JSON.stringify(found) !== JSON.stringify(functions)) {
       functions = found;
       builtFor = ''; // the function menu changes
       const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
       if (el && lastCtx) codePanel.render(el, lastCtx);
     }
-    // A file of functions and nothing else to run: start with the last one defined.
-    if (a && !a.ok && a.field === 'entry' && !s.entry && found.length) {
-      s.entry = found[found.length - 1];
+    if (pick) {
       run(ctx);
       return;
     }
