@@ -327,6 +327,11 @@ class _Checker:
                                      "'return' takes no value")
             elif s.value is None:
                 raise TraceError(s.line, s.column, f"{f.name}() must return a value")
+            elif isinstance(f.ret, StructT):
+                vt = self.expr(s.value)
+                if vt is not f.ret:
+                    raise TraceError(s.value.line, s.value.column, f"{f.name}() returns "
+                                     f"{describe(f.ret)}, not {describe(vt)}")
             else:
                 self.scalar(s.value)
         elif isinstance(s, Switch):
@@ -539,16 +544,13 @@ class _Checker:
         self.scopes.append({})
         for name, desc, spelling, tok in node.params:
             t = self.resolve(desc, tok)
-            if isinstance(t, StructT) and not entry:
-                raise TraceError(tok.line, tok.column, f"a struct passed by value ({name}) is "
-                                 "supported only for the entry function (pass a pointer)")
             f.params.append(self.declare(name, spelling, t, True, tok))
         f.scope = self.scopes.pop()
         self.function = None
         f.ret = self.resolve(node.ret, node)
-        if not isinstance(f.ret, CType) and f.ret is not VOID:
+        if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID:
             raise TraceError(node.line, node.column, f"{f.name}() returns {describe(f.ret)}: "
-                             "only integer and void results are supported")
+                             "only integer, struct and void results are supported")
 
     def body(self, f: Function) -> None:
         self.function = f
@@ -884,6 +886,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
                 add(p.key, p.ctype, p.spelling, p.line, p.column, False, True)
         for sym in _entry_locals(f.node.body):
             add(sym.key, sym.ctype, sym.spelling, sym.line, sym.column, True, False)
+        if isinstance(f.ret, StructT):  # a struct result: return.FIELD
+            add("return", f.ret, f.ret_spelling, f.node.line, f.node.column, True, False)
     for note in program.notes.values():
         if note.name not in symbols:
             raise TraceError(note.line, note.column, f"the annotation names {note.name}, "

@@ -247,6 +247,8 @@ class Evaluator:
                     continue
                 if isinstance(t, (StructT, ArrT)):
                     self.aggregate(key, t, init)
+                    if self.terms:  # a call or computed elements: keep what they did
+                        self.step(s, code, key, None, VOID)
                     self.terms = []
                     continue
                 if isinstance(t, PtrT):
@@ -291,6 +293,10 @@ class Evaluator:
             if s.value is None:
                 self.step(s, src[s.start:s.end], None, None, VOID)
                 raise _Return(None)
+            if isinstance(f.ret, StructT):  # copied out: the callee's frame goes on the next call
+                self.copy(f"{f.prefix}return", self.eval(s.value), f.ret)
+                self.step(s, src[s.start:s.end], "return", None, VOID)
+                raise _Return(f"{f.prefix}return")
             stored, flags = self.store(self.eval(s.value), f.ret)
             self.step(s, src[s.start:s.end], "return", stored, f.ret, flags=flags)
             raise _Return(stored)
@@ -633,12 +639,18 @@ class Evaluator:
                 if conv and "conversion" not in flags:
                     flags.append("conversion")
                 v = w
+            elif isinstance(p.ctype, StructT):  # by value: the callee gets a copy
+                v = [(leaf[len(v):], self.mem.get(leaf)) for leaf, _, _ in leaves(v, p.ctype)]
             args.append(v)
         mem = self.mem
         for k in [k for k in mem if k.startswith(f.prefix)]:
             del mem[k]  # a fresh frame: the callee's locals have no value yet
         for p, v in zip(f.params, args):
-            mem[p.key] = v
+            if isinstance(p.ctype, StructT):
+                for suffix, x in v:
+                    mem[p.key + suffix] = x
+            else:
+                mem[p.key] = v
         outer_terms, outer_steps, outer_path = self.terms, self.steps, self.last_path
         self.terms, self.steps = [], []
         self.active.append(f.name)
@@ -655,9 +667,11 @@ class Evaluator:
         self.terms, self.steps, self.last_path = outer_terms, outer_steps, outer_path
         if self.record:
             t = e.ctype
+            scalar = isinstance(t, CType)
             self.terms.append({"expr": self.source[e.start:e.end], "line": e.line,
-                               "column": e.column, "type": t.name, "value": value,
-                               "hex": hex_of(value, t.bits) if value is not None else None,
+                               "column": e.column, "type": t.name,
+                               "value": value if scalar else None,
+                               "hex": hex_of(value, t.bits) if scalar else None,
                                "flags": flags, "call": f.name, "steps": inner})
         return value
 

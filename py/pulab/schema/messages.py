@@ -96,10 +96,9 @@ CATALOG = [
     (r"unknown function (\w+)\(\) \(functions of the code: (.*); IQmath: (.*)\)",
      r"未知函数 \1()（代码中的函数：\2；IQmath：\3）"),
     (r"argument (\w+) of (\w+)\(\) is (.+), got (.+)", r"\2() 的参数 \1 是 \3，实际为 \4"),
-    (r"a struct passed by value \((\w+)\) is supported only for the entry function "
-     r"\(pass a pointer\)", r"按值传递的结构体（\1）只支持入口函数（请传指针）"),
-    (r"(\w+)\(\) returns (.+): only integer and void results are supported",
-     r"\1() 返回 \2：只支持整数和 void 返回值"),
+    (r"(\w+)\(\) returns (.+): only integer, struct and void results are supported",
+     r"\1() 返回 \2：只支持整数、结构体和 void 返回值"),
+    (r"(\w+)\(\) returns (.+), not (.+)", r"\1() 返回 \2，而不是 \3"),
     (r"the calls reach more than (\d+) expressions: too large to trace",
      r"调用涉及超过 \1 个表达式：太大，无法追踪"),
     (r"(\w+)\(\) calls itself \(recursion is not supported\)", r"\1() 调用了自身（不支持递归）"),

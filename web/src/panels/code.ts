@@ -141,7 +141,7 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
       h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
         ...s.terms.map((tm, j) => (tm.call && tm.steps ? callSteps(tm, `${k}.terms.${j}`) : null))),
       h('td', {}, s.var ? h('code', {}, s.var) : ''),
-      h('td', { class: 'r' }, intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
+      h('td', { class: 'r' }, s.value === null ? '' : intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
       h('td', {}, flagChips(s.flags)),
       b ? h('td', { class: 'r' }, o ? [intCell(`code.${b.target}.steps.${i}.value`, o.value, o.hex, differs), h('div', { class: 'ctype' }, o.type)] : '—') : null,
       b ? h('td', {}, o ? flagChips(o.flags) : '') : null));
