@@ -280,7 +280,7 @@ def test_unset_inputs_error_names_them_or_read_as_zero():
     ("int f(int x) { return f(x); }", "f", {"x": 1}, "code", "f() calls itself"),
     ("int f(int x) { if (x) return 1; }", "f", {"x": 0}, "code", "f() ends without 'return'"),
     ("int t[3]; int f(int i) { return t[i]; }", "f", {"i": 3}, "code",
-     "index 3 is outside 0..2"),
+     "index 3 is outside t[0..2]"),
     ("int f(int x) { while (x) { x = 1; } return x; }", "f", {"x": 1}, "code",
      "more than 10000 statements executed"),
     ("struct s; int f(struct s *p) { return 0; }", "f", {}, "code",

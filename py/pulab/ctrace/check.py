@@ -232,8 +232,8 @@ class _Checker:
             if desc.size is not None:
                 n = constant_value(desc.size, "an array size")
                 if not 1 <= n <= MAX_ELEMENTS:
-                    raise TraceError(desc.size.line, desc.size.column, f"array of {n} "
-                                     f"elements: at most {MAX_ELEMENTS} integers per object")
+                    raise TraceError(desc.size.line, desc.size.column, code="trace_array_size",
+                                     n=n, limit=MAX_ELEMENTS)
             return PtrT(to, n)
         if isinstance(desc, Arr):
             if desc.size is None:
@@ -242,8 +242,8 @@ class _Checker:
             n = constant_value(desc.size, "an array size")
             of = self.resolve(desc.of, node)
             if not 1 <= n <= MAX_ELEMENTS or n * max(1, len(leaves("", of))) > MAX_ELEMENTS:
-                raise TraceError(desc.size.line, desc.size.column, f"array of {n} elements: "
-                                 f"at most {MAX_ELEMENTS} integers per object")
+                raise TraceError(desc.size.line, desc.size.column, code="trace_array_size", n=n,
+                                 limit=MAX_ELEMENTS)
             return ArrT(of, n)
         return self.struct(desc, node)
 
@@ -262,8 +262,8 @@ class _Checker:
                                  "has an incomplete type")
             st.fields[name] = (ft, spelling)
         if len(leaves("", st)) > MAX_ELEMENTS:
-            raise TraceError(sdef.line, sdef.column, f"struct {sdef.name}: at most "
-                             f"{MAX_ELEMENTS} integers per object")
+            raise TraceError(sdef.line, sdef.column, code="trace_struct_size", name=sdef.name,
+                             limit=MAX_ELEMENTS)
         return st
 
     def declare(self, name: str, spelling, ctype, initialized: bool, node) -> Symbol:
@@ -517,9 +517,8 @@ class _Checker:
         if f is None:
             self.refused(e.name, e)
             known = ", ".join(self.program.functions) or "none"
-            raise TraceError(e.line, e.column, f"unknown function {e.name}() (functions of "
-                             f"the code: {known}; IQmath: _IQmpy, _IQNmpy, __IQmpy, _IQsat, "
-                             "__IQsat, _IQabs)")
+            raise TraceError(e.line, e.column, code="trace_unknown_function", name=e.name,
+                             known=known)
         e.func = f
         if self.function is not None:
             self.function.calls.add(f.name)
@@ -582,8 +581,7 @@ class _Inputs:
     def tick(self, node) -> None:
         self.visits += 1
         if self.visits > MAX_ANALYSIS:
-            raise TraceError(node.line, node.column, f"the calls reach more than {MAX_ANALYSIS} "
-                             "expressions: too large to trace")
+            raise TraceError(node.line, node.column, code="trace_analysis", limit=MAX_ANALYSIS)
 
     def read(self, path: str, t, assigned) -> None:
         for leaf, _, _ in leaves(path, t):
@@ -702,8 +700,7 @@ class _Inputs:
                 self.expr(arg, a)
             return
         if f.name in self.active:
-            raise TraceError(e.line, e.column, f"{f.name}() calls itself (recursion is not "
-                             "supported)")
+            raise TraceError(e.line, e.column, code="trace_recursion", name=f.name)
         bound = []
         for arg, p in zip(e.args, f.params):
             if isinstance(p.ctype, PtrT):
@@ -816,11 +813,10 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
             next(iter(program.refused.values()))[0]
     if entry is not None and entry not in program.functions:
         known = ", ".join(program.functions) or "none"
-        raise InputError("entry", f"no function {entry} in the code (functions: {known})")
+        raise InputError("entry", code="trace_no_entry", name=entry, known=known)
     if entry is None and program.functions and not any(
             not isinstance(s, Decl) for s in program.statements if not isinstance(s, Block)):
-        raise InputError("entry", "choose the function to run (functions: "
-                         f"{', '.join(program.functions)})")
+        raise InputError("entry", code="trace_choose_entry", known=", ".join(program.functions))
     for s in program.statements:
         c.statement(s)
     for name, node in program.functions.items():

@@ -52,7 +52,7 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     ``entry`` the function to run (None: the statements outside functions)."""
     if entry is not None and (not isinstance(entry, str) or
                               not re.fullmatch(r"[A-Za-z_]\w*", entry.strip())):
-        raise InputError("entry", f"must be a function name, got {shown(entry)}")
+        raise InputError("entry", code="trace_entry_name", got=shown(entry))
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
