@@ -28,6 +28,8 @@ named at the end)::
                                                                text: call_json, one kind
                                                                per request),
                                                                export (C header, CSV),
+                                                               html (notebook tables,
+                                                               docs panels),
                                                                benchmark, __main__ (the
                                                                command line: parser, main,
                                                                report, header, translate)
@@ -55,6 +57,7 @@ rounding and raw fields of ``profiles.inovance_code``; ``analyses.integers`` and
 
 from .schema.errors import InputError
 from .report import format_text, report
+from .html import Report
 
-__all__ = ["report", "format_text", "InputError", "__version__"]
+__all__ = ["report", "format_text", "Report", "InputError", "__version__"]
 __version__ = "0.1.0"

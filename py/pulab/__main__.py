@@ -2,7 +2,8 @@
 ``python -m pulab trace FILE.c --target c28x --set NAME=VALUE …``,
 ``python -m pulab header --profile NAME INPUT.json`` (one vendor's C header) and
 ``python -m pulab translate --from NAME [--axis d|q] --kp INT --ki INT INPUT.json``
-(docs/contract.md, "Vendor profiles").
+(docs/contract.md, "Vendor profiles") and ``python -m pulab oembed SITE_URL DIST`` (the panels'
+oEmbed descriptions, :mod:`pulab.cli.oembed`).
 
 Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
 (for code, ``error: code: LINE:COLUMN: MESSAGE``).
@@ -21,6 +22,7 @@ from .schema.validate import shown
 from .report import format_text, report
 from .cli.trace import add_trace_parser, trace_main
 from .cli.robust import add_robust_parser
+from .cli.oembed import add_oembed_parser
 
 
 def main(argv: list | None = None) -> int:
@@ -33,6 +35,7 @@ def main(argv: list | None = None) -> int:
     add_family_commands(sub)
     add_trace_parser(sub)
     add_robust_parser(sub)
+    add_oembed_parser(sub)
     _add_vendor_commands(sub)
     args = p.parse_args(argv)
     if args.command == "trace":

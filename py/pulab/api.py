@@ -124,11 +124,11 @@ def _batch(req) -> dict:
             "csv": bt.to_csv(names, out, start == 0)}
 
 
-_TRACE_KEYS = ("code", "target", "entry", "set", "global_q", "define", "zero_unset")
+_TRACE_KEYS = ("code", "target", "set", "global_q", "define", "entry", "zero_unset")
 
 
 def _trace(req) -> dict:
-    from .ctrace import compile_code, trace_checked
+    from .ctrace import TraceError, compile_code, trace_checked
     from .ctrace.parser import parse as parse_c
     if not isinstance(req, dict):
         raise InputError("input", code="not_object", got=shown(req))
@@ -136,22 +136,26 @@ def _trace(req) -> dict:
     if unknown:
         raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
                          expected=", ".join(_TRACE_KEYS))
+    zero_unset = req.get("zero_unset", False)
+    if not isinstance(zero_unset, bool):
+        raise InputError("zero_unset", f"must be true or false, got {shown(zero_unset)}")
     defines = req.get("define") or []
     if not isinstance(defines, list):
         raise InputError("define", "must be a list of NAME[=VALUE] texts")
     sets = req.get("set") or {}
     if not isinstance(sets, dict):
         raise InputError("set", code="not_object", got=shown(sets))
-    zero_unset = req.get("zero_unset", False)
-    if not isinstance(zero_unset, bool):
-        raise InputError("zero_unset", f"must be true or false, got {shown(zero_unset)}")
     code = req.get("code", "")
     try:
         checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
                                req.get("entry") or None)
     except InputError as e:
-        if e.field == "entry" and isinstance(code, str):
-            e.functions = list(parse_c(code).functions)  # the page offers them to pick from
+        if isinstance(code, str) and (e.field in ("entry", "set") or (
+                isinstance(e, TraceError) and e.field.startswith("set."))):
+            try:  # the code parses: offer its functions so the user can pick one
+                e.functions = list(parse_c(code).functions)
+            except InputError:
+                pass
         raise
     try:
         reply = trace_checked(checked, sets, req.get("global_q"), zero_unset)

@@ -88,7 +88,8 @@ def test_bad_rows_are_reported_with_row_and_field_and_the_others_computed():
     ("motor.ld_h [mF],x\n1,2\n", "csv.header.1"),
     ("name [V]\n1\n", "csv.header.1"),
     ("motor.ld_h,motor.ld_h\n1,2\n", "csv.header.2"),
-    ("datasheet.ke_v_per_krpm [V/krpm]\n1\n", "csv.header.1"),
+    # a compound unit is only the schema's own (V/krpm), never a rescaled one
+    ("datasheet.ke_v_per_krpm [V/rpm]\n1\n", "csv.header.1"),
 ])
 def test_a_bad_header_stops_the_batch_naming_the_column(text, field):
     with pytest.raises(InputError) as e:
@@ -174,3 +175,24 @@ def test_negative_numbers_stay_numbers_and_formula_headers_are_neutralized():
     assert out[1][1:3] == ["-1.5e-3", "-7"]
     negative = [c for c in out[1] if c.startswith("-")]
     assert negative and all(float(c) < 0 for c in negative)
+
+
+def test_datasheet_columns_take_the_units_datasheets_print():
+    """Compound units (V/krpm, N·m/A, rpm/V) are the schema's own; a row typed as the Rexroth
+    MHD041A-144 prints gives the integers of its datasheet golden (tests/golden/datasheets)."""
+    from pulab.analyses.batch import batch_rows
+    from pulab import report
+    text = ("name,motor.rated_current_a [A],motor.pole_pairs,datasheet.speed_rpm [rpm],"
+            "datasheet.kt_nm_per_a [N·m/A],datasheet.kt_current,datasheet.ke_v_per_krpm [V/krpm],"
+            "datasheet.ke_measure,datasheet.rs_line_ohm [Ω],datasheet.l_line_h [mH],"
+            "motor.rated_voltage_v [V],drive.udc_v [V],drive.ts_s [µs],current_loop.bandwidth_hz [Hz]\n"
+            "mhd,1.29,3,4000,0.42,peak,38.2,rms,7.0,13.5,163,540,62.5,500\n")
+    row = batch_rows(text)[0]
+    assert row["error"] == ""
+    case = json.loads((ROOT / "tests/golden/datasheets/rexroth_mhd041a_144.json").read_text())
+    want = report(case["input"])
+    assert row["vendor.raw.BemfVolt"] == str(want["vendor"]["raw"]["BemfVolt"]) == "1528"
+    assert row["vendor.LD.value"] == str(want["vendor"]["LD"]["value"])
+    with pytest.raises(InputError) as e:
+        read_table("name,datasheet.kv_rpm_per_v [rpm/A]\nx,100\n")
+    assert e.value.field == "csv.header.2"

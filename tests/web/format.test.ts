@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { fmtHex, fmtInput, fmtNum, fmtPct, parseNumber } from '../../web/src/format';
+import { fmtHex, fmtInput, fmtNum, fmtPct, fmtToward, parseNumber } from '../../web/src/format';
 
 describe('fmtNum: display with 6 significant digits', () => {
   const cases: [number | null, string][] = [
@@ -74,4 +74,30 @@ describe('fmtInput: numbers back into an input box', () => {
     [null, ''],
   ];
   for (const [x, want] of cases) it(`${x} → ${JSON.stringify(want)}`, () => expect(fmtInput(x)).toBe(want));
+});
+
+describe('fmtToward: a sweep boundary as the decimal a user would type', () => {
+  /** The adjacent double below/above x (bit arithmetic, positive x). */
+  const adjacent = (x: number, d: 1 | -1): number => {
+    const v = new DataView(new ArrayBuffer(8));
+    v.setFloat64(0, x);
+    v.setBigUint64(0, v.getBigUint64(0) + BigInt(d));
+    return v.getFloat64(0);
+  };
+  it('rounds away from the neighbour across the boundary, to the shortest such decimal', () => {
+    const at = 26.884999999999998;
+    const before = adjacent(at, -1);
+    expect(fmtToward(at, before)).toBe('26.885');
+    expect(Number('26.885') >= at).toBe(true);
+    // the other side rounds down, so typing it stays before the boundary
+    const b = fmtToward(before, at);
+    expect(Number(b) <= before && Number(b) > 26.88).toBe(true);
+    expect(b.length).toBeLessThan(String(before).length);
+  });
+  it('decreasing sweeps round down; exact and short values print as they are', () => {
+    expect(fmtToward(0.30000000000000004, adjacent(0.30000000000000004, 1))).toBe('0.3');
+    expect(fmtToward(1.5, 2)).toBe('1.5');
+    expect(fmtToward(220, 219)).toBe('220');
+    expect(fmtToward(-3.0000000000000004, -3.000000000000001)).toBe('-3');
+  });
 });

@@ -96,6 +96,19 @@ describe('ComputeSession with an injected environment', () => {
     expect(log.kept).toEqual([]);
   });
 
+  it('a field that does not parse makes the numbers stale at once, and live again when fixed', async () => {
+    const { env, log } = fakeEnv();
+    const { s } = session(clone(SEED_INPUT), env);
+    s.client = fakeClient(() => REPLY).client;
+    s.schedule(0);
+    await settle();
+    expect(log.sources.at(-1)).toBe('live');
+    s.setLocalError('motor.rs_ohm', 'not a number');
+    expect(log.sources.at(-1)).toBe('stale');
+    s.setLocalError('motor.rs_ohm', null);
+    expect(log.sources.at(-1)).toBe('live');
+  });
+
   it('an embed leaves the address bar and the stored input to its host page', async () => {
     const { env, log } = fakeEnv();
     const { s } = session(clone(SEED_INPUT), env, true);

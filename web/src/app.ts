@@ -59,6 +59,17 @@ export class App {
     }, pageEnv());
     this.form = new InputForm(root, this.session);
     this.layout = new Layout(root, this.embed);
+    this.layout.onPickProfile = (v) => {
+      // Inovance is the default: left out, so the seed and the presets keep their links.
+      const c = this.session.input.conventions ?? {};
+      if (v === 'inovance') delete c.firmware;
+      else c.firmware = v;
+      if (Object.keys(c).length) this.session.input.conventions = c;
+      else delete this.session.input.conventions;
+      this.session.touched('conventions.firmware');
+      this.form.render();
+      this.session.schedule();
+    };
     this.session.wantsSim = PANELS.some((p) => p.usesSim && (this.embed === null || p.id === this.embed));
     this.session.simGate = this.layout.simPanelNear;
     this.status = new StatusLine(root, this.session);
@@ -93,7 +104,7 @@ export class App {
 
   /** Attach to a client that may already be booting (main.ts starts the worker first). */
   start(client: PulabClient, restart?: (generation: number) => PulabClient): void {
-    handleLinks(this.root, this.embed, () => this.renderPanels(['docs']));
+    handleLinks(this.root, this.embed, () => this.renderPanels(['docs']), (id) => this.layout.showView(id));
     this.attach(client, restart, 0);
     this.renderAll();
     // No numbers to show before Python (a share link): the seed's panels warm the fonts meanwhile.

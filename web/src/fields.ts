@@ -59,16 +59,21 @@ const design = (inp: Input): string => String(inp.analysis?.design ?? 'phase_mar
 
 /** What only the page knows about a field: display units, the report value shown when empty, and
  * when it is greyed out beyond the schema's own `only_with`. */
+/** Every inductance field offers the same units in the same order: the form shows one unit for all. */
+const L_UNITS: UnitId[] = ['µH', 'mH', 'H'];
 const PAGE: Record<string, Partial<FieldSpec>> = {
   'motor.rated_voltage_v': { placeholderFrom: 'input.motor.rated_voltage_v' },
   'motor.rated_freq_hz': { placeholderFrom: 'input.motor.rated_freq_hz' },
   'motor.rs_ohm': { placeholderFrom: 'input.motor.rs_ohm' },
-  'motor.ld_h': { units: ['µH', 'mH', 'H'], placeholderFrom: 'input.motor.ld_h' },
-  'motor.lq_h': { units: ['µH', 'mH', 'H'], placeholderFrom: 'input.motor.lq_h' },
+  'motor.ld_h': { units: L_UNITS, placeholderFrom: 'input.motor.ld_h' },
+  'motor.lq_h': { units: L_UNITS, placeholderFrom: 'input.motor.lq_h' },
   'motor.bemf_v': { placeholderFrom: 'input.motor.bemf_v' },
-  'datasheet.l_line_h': { units: ['mH', 'µH', 'H'] },
-  'datasheet.ld_line_h': { units: ['mH', 'µH', 'H'] },
-  'datasheet.lq_line_h': { units: ['mH', 'µH', 'H'] },
+  'datasheet.l_line_h': { units: L_UNITS },
+  'datasheet.ld_line_h': { units: L_UNITS },
+  'datasheet.lq_line_h': { units: L_UNITS },
+  'datasheet.l_phase_h': { units: L_UNITS },
+  'datasheet.ld_phase_h': { units: L_UNITS },
+  'datasheet.lq_phase_h': { units: L_UNITS },
   'drive.base_freq_hz': { placeholderFrom: 'base.f_b' },
   'drive.ts_s': { units: ['µs', 'kHz', 's'] },
   'current_loop.bandwidth_hz': { enabled: (i) => loop(i) === 'bandwidth' || loop(i) === 'damping' },
@@ -83,6 +88,10 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
   'analysis.target_bandwidth_hz': { enabled: (i) => design(i) === 'bandwidth', placeholderFrom: 'current_pi.bandwidth_hz' },
   'analysis.speed.ts_s': { units: ['µs', 'kHz', 's'] },
 };
+/** The fields that share a display unit with `f` (inductances: one choice for the motor and the datasheet). */
+export function unitSiblings(f: FieldSpec): FieldSpec[] {
+  return f.units === L_UNITS ? ALL_FIELDS.filter((g) => g.units === L_UNITS) : [f];
+}
 /** Set by panels, not typed into the form. */
 const NOT_IN_FORM = new Set(['analysis.bode', 'analysis.speed.response']);
 // A field renamed or removed in the schema must not leave page settings behind (fails the build).

@@ -14,6 +14,23 @@ export function fmtNum(x: number | null | undefined, sig = 6): string {
   return stripZeros(x.toPrecision(sig));
 }
 
+/**
+ * The shortest decimal a user would type for `x`, a value found next to `other` (a sweep
+ * boundary and its neighbour across it): rounded away from `other`, so the typed value lands on
+ * x's side, and within `rel` of x. 26.884999999999998 (after 26.884999999999994) → "26.885".
+ */
+export function fmtToward(x: number, other: number, rel = 1e-9): string {
+  if (!Number.isFinite(x) || x === other) return String(x);
+  const up = x > other;
+  const e = Math.floor(Math.log10(Math.abs(x)));
+  for (let p = 1; p <= 17; p++) {
+    const step = 10 ** (e - p + 1);
+    const c = Number(((up ? Math.ceil(x / step) : Math.floor(x / step)) * step).toPrecision(p));
+    if ((up ? c >= x : c <= x) && Math.abs(c - x) <= rel * Math.abs(x)) return String(c);
+  }
+  return String(x);
+}
+
 function stripZeros(s: string): string {
   return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
 }

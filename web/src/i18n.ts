@@ -10,11 +10,15 @@ import vendors from './i18n/vendors';
 import loop from './i18n/loop';
 import review from './i18n/review';
 import qcalc from './i18n/qcalc';
+import screens from './i18n/screens';
+import datasheet from './i18n/datasheet';
 import ctrace from './i18n/ctrace';
 
 export type Lang = 'en' | 'zh';
 
-const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en, ...ctrace.en };
+const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
+  ...screens.en, ...datasheet.en,
+  ...ctrace.en };
 
 export type Key = keyof typeof en;
 
@@ -29,6 +33,8 @@ const zh: Record<Key, string> = {
   ...loop.zh,
   ...review.zh,
   ...qcalc.zh,
+  ...screens.zh,
+  ...datasheet.zh,
   ...ctrace.zh,
 };
 

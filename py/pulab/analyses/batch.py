@@ -39,6 +39,7 @@ import re
 from decimal import Decimal, InvalidOperation
 
 from ..schema.errors import InputError
+from ..schema.fields import FIELD
 from ..schema.validate import shown
 from ..report import report
 from ..profiles.inovance_code import RAW_FIELDS, VENDOR_RESULTS
@@ -81,7 +82,11 @@ def _column(cell: str, k: int) -> tuple:
         return name, 0
     if "." not in name:
         raise InputError(where, code="unit_not_path", got=shown(name))
-    dim = name.rsplit("_", 1)[-1]
+    field = FIELD.get(name)
+    if field is not None and unit == field.unit:
+        return name, 0  # the unit the schema gives, as it spells it (V/krpm, rpm/V, N·m/A …)
+    # a compound unit (ke_v_per_krpm, kt_nm_per_a) is not the unit its name ends in
+    dim = "" if "_per_" in name else name.rsplit("_", 1)[-1]
     table = UNITS.get(dim, {})
     if unit not in table:
         if not table:

@@ -64,6 +64,7 @@ export default async function review(ctx) {
   });
 
   await check('review: Q calculator reads 0x8000, 40000 as Q15 and iq24', async () => {
+    await page.$eval('#panel-qcalc', (e) => e.scrollIntoView()); // its view (Tools) shown
     await page.selectOption('select[name="qcalc.mode"]', 'decode');
     await page.fill('input[name="qcalc.format"]', 'Q15');
     await page.fill('input[name="qcalc.raw"]', '0x8000');
@@ -151,6 +152,11 @@ export default async function review(ctx) {
         assert(m.page <= m.win, `page ${m.page} px wider than the window ${m.win} px`);
         assert(!m.overlap, 'header items overlap');
         assert(m.codeW >= 150, `C trace column only ${m.codeW} px wide`);
+        // Narrow screens: the inputs are a drawer, one tap away.
+        if (width < 1000) {
+          await p.click('nav.tabs .inputs-toggle');
+          await p.waitForTimeout(250);
+        }
         await p.selectOption('select[data-unit-for="drive.ts_s"]', 'kHz');
         // the selected option's text, measured in the select's font, fits beside the arrow
         const fits = await p.$eval('select[data-unit-for="drive.ts_s"]', (u) => {
@@ -160,6 +166,7 @@ export default async function review(ctx) {
           return c.measureText(u.selectedOptions[0].textContent).width <= u.clientWidth - 20;
         });
         assert(fits, 'Ts unit choice cut');
+        if (width < 1000) await p.keyboard.press('Escape');
         await p.screenshot({ path: join(SHOTS, `review-${width}-${lang}-top.png`) });
         await p.$eval('#panel-vendor', (e) => e.scrollIntoView());
         await p.screenshot({ path: join(SHOTS, `review-${width}-${lang}-vendor.png`) });

@@ -36,6 +36,12 @@ export class PuLabPanel extends HTMLElement {
   static observedAttributes = [...PANEL_ATTRS];
   private frame: HTMLIFrameElement | null = null;
   private src = '';
+  /** What the host page put inside the element (the numbers prerendered at docs build time):
+   * shown until the frame shows numbers, so the page reads correctly before and without scripts. */
+  private prerendered: Element[] = [];
+  /** The frame stays collapsed behind prerendered numbers until it sends its first report. */
+  private waitReport = false;
+  private height = 0;
 
   private get theme(): Theme {
     const t = this.getAttribute('theme');
@@ -49,6 +55,8 @@ export class PuLabPanel extends HTMLElement {
       f.setAttribute('scrolling', 'no');
       f.style.cssText = 'display:block;width:100%;border:0;height:0;overflow:hidden';
       this.style.display ||= 'block';
+      this.prerendered = [...this.children];
+      this.waitReport = this.prerendered.some((el) => el.matches('[data-key]') || el.querySelector('[data-key]') !== null);
       this.frame = f;
     }
     this.append(this.frame);
@@ -76,6 +84,12 @@ export class PuLabPanel extends HTMLElement {
     this.src = src;
   }
 
+  private reveal(): void {
+    if (!this.frame) return;
+    this.frame.style.height = `${this.height}px`;
+    if (this.height > 0) for (const el of this.prerendered) el.setAttribute('hidden', '');
+  }
+
   private onScheme = (): void => {
     this.frame?.contentWindow?.postMessage({ source: 'pu-lab', type: 'theme', theme: this.theme }, SITE.origin);
   };
@@ -83,8 +97,12 @@ export class PuLabPanel extends HTMLElement {
   private onMessage = (ev: MessageEvent): void => {
     if (!this.frame || ev.source !== this.frame.contentWindow || ev.origin !== SITE.origin) return;
     const m = frameMessage(ev.data);
-    if (m?.type === 'size') this.frame.style.height = `${m.height}px`;
-    else if (m?.type === 'report') {
+    if (m?.type === 'size') {
+      this.height = m.height;
+      if (!this.waitReport) this.reveal();
+    } else if (m?.type === 'report') {
+      this.waitReport = false;
+      this.reveal();
       this.dataset.numbers = m.numbers;
       this.dispatchEvent(new CustomEvent('pu-lab-report', { bubbles: true, detail: { panel: m.panel, numbers: m.numbers, report: m.report } }));
     }

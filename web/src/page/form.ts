@@ -2,7 +2,7 @@
 // error message at each field. Edits go into the compute session's input.
 import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
-import { ALL_FIELDS, SECTIONS, effectiveInput, fieldLabel, type FieldSpec } from '../fields';
+import { ALL_FIELDS, SECTIONS, effectiveInput, fieldLabel, unitSiblings, type FieldSpec } from '../fields';
 import { errText, getLang, has, t, type Key } from '../i18n';
 import type { ApiErr } from '../protocol';
 import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
@@ -10,11 +10,18 @@ import { fromSI, toSI, type UnitId } from '../units';
 import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
 import { checkUnits } from '../state-check';
+import { closeInputs } from './drawer';
 
 /** The SI field a raw firmware value was converted from (the error's `source` parameter). */
 export function sourceField(e: ApiErr): string | null {
   const source = e.code === 'raw_outside_from' ? e.params?.source : undefined;
   return typeof source === 'string' ? source : null;
+}
+
+/** The other field of a conflict (two fields that set the same motor value): marked as well. */
+export function otherField(e: ApiErr): string | null {
+  const other = e.code === 'both_given' ? e.params?.other : undefined;
+  return typeof other === 'string' ? other : null;
 }
 
 export class InputForm {
@@ -76,11 +83,18 @@ export class InputForm {
     const open = new Set([...host.querySelectorAll<HTMLDetailsElement>('details[open]')].map((d) => d.dataset.section));
     const first = !host.childElementCount;
     host.replaceChildren(
-      h('div', { class: 'inputs-head' }, h('h2', {}, t('inputs')),
+      h('div', { class: 'inputs-head' },
+        h('div', { class: 'inputs-title' }, h('h2', {}, t('inputs')),
+          h('button', { type: 'button', class: 'inputs-close', onclick: closeInputs }, t('inputsClose'))),
+        // The reason the numbers are stale, where the user types (the banner over the panels may be
+        // off screen or under the drawer).
+        h('div', { class: 'stale-note', role: 'status' }),
         h('label', { class: 'preset' }, h('span', {}, t('preset')),
           h('select', { name: 'preset', onchange: (ev: Event) => this.onPreset((ev.target as HTMLSelectElement).value) },
             h('option', { value: '' }, t('presetCustom')),
-            PRESETS.map((p) => h('option', { value: p.id, selected: this.matchesPreset(p.input) }, p.label[getLang()]))))),
+            PRESETS.map((p) => h('option', { value: p.id, selected: this.matchesPreset(p.input) }, p.label[getLang()])))),
+        h('button', { type: 'button', class: 'from-datasheet', title: t('fromDatasheetTitle'), onclick: () => this.onFromDatasheet() }, t('fromDatasheet')),
+        this.blank ? h('p', { class: 'hint blank-start' }, t('fromDatasheetStarted')) : null),
       // The datasheet and raw sections start collapsed, but open when the input uses them.
       ...SECTIONS.map((s) => h('details', { class: 'section', 'data-section': s.id, open: (first ? !s.collapsed : open.has(s.id)) || ((s.id === 'datasheet' || s.id === 'raw') && Object.keys(this.session.input[s.id] ?? {}).length > 0) },
         h('summary', {}, t(s.title), h('span', { class: 'err', 'data-err-for': s.id })),
@@ -99,11 +113,12 @@ export class InputForm {
    */
   showErrors(): void {
     const { localErrors, remoteError, simFieldError, stateNotes } = this.session;
-    const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f);
+    const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f || otherField(e) === f);
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
       let msg = localErrors.get(f) ?? '';
-      if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
+      // A conflict's sentence names both fields itself; a raw value's names the field it came from.
+      if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f || otherField(remoteError) ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
       // A value from the link that could not be used: a note, not an error (the default is used).
       const note = msg ? '' : stateNotes.get(f) ?? '';
@@ -197,7 +212,7 @@ export class InputForm {
   }
 
   private onUnit(f: FieldSpec, u: UnitId): void {
-    this.units[f.path] = u;
+    for (const g of unitSiblings(f)) this.units[g.path] = u;
     store(UNITS_KEY, JSON.stringify(this.units));
     this.render();
     this.session.schedule(); // the link (#in=…&u=…) carries the units too
@@ -206,8 +221,22 @@ export class InputForm {
   private onPreset(id: string): void {
     const p = PRESETS.find((x) => x.id === id);
     if (!p) return;
+    this.blank = false;
     this.session.replaceInput(clone(p.input));
     this.render();
+  }
+
+  /** Started from a blank datasheet (until a preset is chosen): says so in the form's head. */
+  private blank = false;
+
+  /** A blank form with the datasheet section open: nothing of the example motor is kept. */
+  private onFromDatasheet(): void {
+    this.blank = true;
+    this.session.replaceInput({ datasheet: {} });
+    this.render();
+    const sec = this.host?.querySelector<HTMLDetailsElement>('details[data-section="datasheet"]');
+    if (sec) sec.open = true;
+    sec?.querySelector<HTMLElement>('input, select')?.focus();
   }
 
   private syncPresetSelect(): void {

@@ -62,15 +62,38 @@ async function copyLink(root: HTMLElement, session: ComputeSession): Promise<voi
   document.documentElement.dataset.shareLink = url;
 }
 
+/** Menus (`details.menu-host`) close as menus do: an item chosen, a click outside, Esc. Listening
+ * on the document once: the header is rebuilt on a language switch. */
+let menusWired = false;
+function wireMenus(): void {
+  if (menusWired) return;
+  menusWired = true;
+  const openMenus = () => [...document.querySelectorAll<HTMLDetailsElement>('details.menu-host[open]')];
+  document.addEventListener('click', (ev) => {
+    const target = ev.target as Element;
+    for (const d of openMenus()) {
+      if (!d.contains(target) || target.closest('.menu button')) d.open = false;
+    }
+  });
+  document.addEventListener('keydown', (ev) => {
+    if (ev.key !== 'Escape') return;
+    for (const d of openMenus()) {
+      d.open = false;
+      d.querySelector<HTMLElement>('summary')?.focus();
+    }
+  });
+}
+
 export function renderHeader(root: HTMLElement, session: ComputeSession, lang: HTMLElement): HTMLElement {
   const exportButton = (kind: PyExport, label: Parameters<typeof t>[0]) =>
     h('button', { type: 'button', 'data-export': kind, onclick: () => void exportPy(root, session, kind) }, t(label));
+  wireMenus();
   return h('header', { class: 'top' },
     h('div', { class: 'brand' }, h('strong', {}, 'pu-lab'), h('span', { class: 'sub' }, t('subtitle'))),
     h('div', { class: 'status' }),
     h('div', { class: 'actions' },
       h('button', { type: 'button', class: 'copy-link', onclick: () => void copyLink(root, session) }, t('copyLink')),
-      h('details', { class: 'export' }, h('summary', {}, t('export')),
+      h('details', { class: 'export menu-host' }, h('summary', {}, t('export')),
         h('div', { class: 'menu' },
           h('button', { type: 'button', 'data-export': 'json', onclick: () => { const j = exportReport(session); if (j) download('pulab_report.json', j, 'application/json'); } }, t('exportJson')),
           exportButton('header', 'exportHeader'),

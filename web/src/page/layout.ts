@@ -1,11 +1,15 @@
-// The page's skeleton (full page or one embedded panel), the panels rendered into it, the
-// warnings list, and the stale marking of numbers that no longer match the form.
+// The page's skeleton (full page or one embedded panel): the answer strip, the views (tabs) and
+// the panels rendered into them, and the stale marking of numbers that no longer match the form.
 import { h } from '../dom';
 import { errText, t, type Key } from '../i18n';
 import type { Panel, PanelContext, PanelId } from '../panels/panel';
 import { PANELS } from '../panels/registry';
 import { docTarget, docsAvailable } from '../panels/docs';
-import { allFindings, findingItem, markFindings, reviewCounts } from '../panels/review';
+import { allFindings, markFindings } from '../panels/review';
+import { viewsFor, type View } from '../panels/views';
+import { renderAnswer } from './answer';
+import type { Vendor } from '../panels/vendors';
+import { closeInputs, openInputs, wireDrawer } from './drawer';
 import type { ComputeSession } from './session';
 
 /** Numbers later than this after an edit are faded as outdated (ms). */
@@ -18,15 +22,6 @@ const idle = (f: () => void, timeout = 1000): void => {
   if (typeof requestIdleCallback === 'function') requestIdleCallback(f, { timeout });
   else setTimeout(f, Math.min(timeout, 500));
 };
-
-/** The review's errors and warnings at the top of the page (notes only in its panel). */
-function warnings(ctx: PanelContext): HTMLElement[] {
-  const all = allFindings(ctx);
-  const serious = all.filter((f) => f.severity !== 'note');
-  return ctx.report && serious.length ? [
-    h('strong', {}, `${t('p_review')}: `), h('a', { href: '#panel-review', class: 'counts' }, reviewCounts(all)),
-    h('ul', { class: 'findings' }, serious.map(findingItem))] : [];
-}
 
 export class Layout {
   private panelEls = new Map<PanelId, HTMLElement>();
@@ -70,7 +65,8 @@ export class Layout {
       const body = h('div', { class: 'panel-body' });
       this.panelEls.set(p.id, body);
       return h('section', { class: `panel panel-${p.id}`, id: `panel-${p.id}`, 'data-panel': p.id },
-        h('h2', {}, t(p.title as Key), p.id !== 'docs' && docTarget(p.id) ? h('a', { class: 'why', href: `#panel-docs`, 'data-why': p.id }, t('why')) : null), body);
+        h('h2', {}, t(p.title as Key), p.id !== 'docs' && docTarget(p.id) ? h('a', { class: 'why', href: `#panel-docs`, 'data-why': p.id }, t('why')) : null,
+          h('span', { class: 'scroll-cue', 'aria-hidden': 'true' }, `⇆ ${t('scrollsSideways')}`)), body);
     });
     const has = (id: PanelId) => panels.some((p) => p.id === id);
     this.watchSimPanels(sections.filter((_, i) => panels[i].usesSim));
@@ -84,6 +80,9 @@ export class Layout {
       );
       return;
     }
+    this.views = viewsFor(panels.map((p) => p.id));
+    if (!this.views.some((v) => v.id === this.view)) this.view = this.views[0]?.id ?? '';
+    for (const sec of sections) this.revealOnScroll(sec);
     // Bases and per-unit values side by side on wide screens.
     const ib = panels.findIndex((p) => p.id === 'bases');
     const body = has('bases') && has('pu') && panels[ib + 1]?.id === 'pu'
@@ -92,16 +91,107 @@ export class Layout {
     this.root.replaceChildren(
       chrome,
       h('div', { class: 'layout' },
-        h('aside', { class: 'inputs' }),
+        h('aside', { class: 'inputs', id: 'inputs' }),
+        h('div', { class: 'drawer-backdrop', onclick: closeInputs }),
         h('div', { class: 'content' },
-          h('nav', { class: 'tabs' }, panels.map((p) => h('a', { href: `#panel-${p.id}`, 'data-nav': p.id }, t(`nav_${p.id}` as Key)))),
-          h('main', { class: this.settled === 'yes' ? 'panels settled' : 'panels' }, h('div', { class: 'stale-banner' }), h('div', { class: 'global-error' }), h('div', { class: 'warnings' }), ...body))),
+          h('nav', { class: 'tabs', 'aria-label': t('viewsLabel') },
+            h('button', { type: 'button', class: 'inputs-toggle', 'aria-controls': 'inputs', onclick: openInputs }, t('inputsOpen')),
+            this.views.map((v) => h('a', { href: `#panel-${v.panels[0]}`, 'data-view': v.id, role: 'tab' }, t(`view_${v.id}` as Key)))),
+          h('nav', { class: 'subtabs' }),
+          h('main', { class: this.settled === 'yes' ? 'panels settled' : 'panels' }, h('div', { class: 'stale-banner', role: 'status' }), h('div', { class: 'global-error' }),
+            h('section', { class: 'answer', 'aria-label': t('answerIntegers') }), ...body))),
       h('div', { class: 'toast' }),
     );
+    wireDrawer();
+    this.showView(this.view);
+    if (!this.resizeWired) {
+      this.resizeWired = true;
+      window.addEventListener('resize', () => this.markScrollersSoon());
+    }
+  }
+
+  private resizeWired = false;
+  /** The views (tabs) of this page, and the one shown. */
+  private views: View[] = [];
+  private view = '';
+
+  /** Show the view `id`: its panels, its tab marked, the panel links of its sub-navigation. */
+  showView(id: string): void {
+    const view = this.views.find((v) => v.id === id);
+    if (!view) return;
+    this.view = id;
+    for (const [pid, body] of this.panelEls) {
+      const sec = body.closest<HTMLElement>('section.panel');
+      if (sec) sec.hidden = !view.panels.includes(pid);
+    }
+    for (const a of this.root.querySelectorAll<HTMLElement>('nav.tabs a[data-view]')) {
+      a.classList.toggle('on', a.dataset.view === id);
+      a.setAttribute('aria-selected', String(a.dataset.view === id));
+    }
+    this.markScrollersSoon();
+    this.root.querySelector('nav.subtabs')?.replaceChildren(...(view.panels.length > 1
+      ? view.panels.map((p) => h('a', { href: `#panel-${p}`, 'data-nav': p }, t(`nav_${p}` as Key))) : []));
+  }
+
+  private scrollCheck = false;
+  /** Once the page is idle: mark what scrolls sideways (markScrollers). */
+  private markScrollersSoon(): void {
+    if (this.scrollCheck) return;
+    this.scrollCheck = true;
+    idle(() => {
+      this.scrollCheck = false;
+      this.markScrollers();
+    }, 300);
+  }
+
+  /**
+   * Wide content that scrolls sideways inside a shown panel says so: the scroller gets
+   * `x-scroll` (edge shadows, style.css) and its panel a "⇆ scrolls sideways" cue in its title.
+   */
+  private markScrollers(): void {
+    for (const sec of this.root.querySelectorAll<HTMLElement>('section.panel:not([hidden])')) {
+      let any = false;
+      for (const el of sec.querySelectorAll<HTMLElement>('.panel-body, .scroll, .code-out, .code-trace, .formulas')) {
+        const wide = el.scrollWidth > el.clientWidth + 1 && getComputedStyle(el).overflowX === 'auto';
+        if (el.classList.contains('x-scroll') !== wide) el.classList.toggle('x-scroll', wide);
+        any ||= wide;
+      }
+      if (sec.classList.contains('x-scroll') !== any) sec.classList.toggle('x-scroll', any);
+    }
+  }
+
+  /** The view that shows panel `id`. */
+  viewOf(id: PanelId): string | undefined {
+    return this.views.find((v) => v.panels.includes(id))?.id;
+  }
+
+  /**
+   * A panel asked to scroll into view (a link, the nav, a finding, a test or a host script) first
+   * shows its view: every panel stays reachable by its `#panel-<id>` element.
+   */
+  private revealOnScroll(sec: HTMLElement): void {
+    const show = (): void => {
+      const v = this.viewOf(sec.dataset.panel ?? '');
+      if (v && v !== this.view) this.showView(v);
+    };
+    sec.scrollIntoView = (arg?: boolean | ScrollIntoViewOptions): void => {
+      show();
+      HTMLElement.prototype.scrollIntoView.call(sec, arg);
+    };
   }
 
   /** Render every panel (or only those in `only`), the review's findings at the top (on a full
    * render or with the review), and the marks at the values they concern. */
+  private lastCtx: PanelContext | null = null;
+  /** The answer strip's firmware picker (the page sets it into the input). */
+  onPickProfile: (v: Vendor) => void = () => undefined;
+
+  /** The answer strip (page/answer.ts), with the last context; again when a profile's report arrives. */
+  private renderAnswer = (): void => {
+    const el = this.root.querySelector<HTMLElement>('section.answer');
+    if (el && this.lastCtx) renderAnswer(el, this.lastCtx, this.renderAnswer, (v) => this.onPickProfile(v));
+  };
+
   renderPanels(ctx: PanelContext, only?: PanelId[]): void {
     const took: [string, number][] = [];
     for (const p of PANELS) {
@@ -114,8 +204,9 @@ export class Layout {
     }
     // <html data-render-slowest>: the three slowest panels of the last render (the bench prints them).
     document.documentElement.dataset.renderSlowest = took.sort((a, b) => b[1] - a[1]).slice(0, 3).map(([id, ms]) => `${id} ${ms.toFixed(1)}`).join(', ');
-    const w = this.root.querySelector('.warnings');
-    if (w && (!only || only.length === 0 || only.includes('review'))) w.replaceChildren(...warnings(ctx));
+    this.lastCtx = ctx;
+    this.renderAnswer();
+    this.markScrollersSoon();
     markFindings(this.root, allFindings(ctx));
   }
 
@@ -170,7 +261,7 @@ export class Layout {
   warmUp(ctx: PanelContext): void {
     const host = this.root.querySelector('main.panels');
     if (!host) return;
-    const box = h('div', { class: 'warmup', 'aria-hidden': 'true' }, h('div', { class: 'warnings' }, warnings(ctx)));
+    const box = h('div', { class: 'warmup', 'aria-hidden': 'true' });
     for (const [id, body] of this.renderPure(ctx)) box.append(h('section', { class: `panel panel-${id}` }, body));
     host.append(box);
     void box.offsetHeight;
@@ -195,11 +286,12 @@ export class Layout {
     else panels?.classList.remove('outdated');
     const global = this.root.querySelector('.global-error');
     if (global) global.textContent = re && !hasField(re.field) ? `${re.field}: ${errText(re)}` : '';
+    const f = localErrors.size ? [...localErrors.keys()][0] : re?.field ?? '';
+    const msg = localErrors.size ? localErrors.get(f) : re && errText(re);
+    const why = stale ? `${t('staleField')}${f ? `${f}: ` : ''}${msg ?? ''}` : '';
     const banner = this.root.querySelector('.stale-banner');
-    if (banner && stale) {
-      const f = localErrors.size ? [...localErrors.keys()][0] : re?.field ?? '';
-      const msg = localErrors.size ? localErrors.get(f) : re && errText(re);
-      banner.textContent = `${t('staleField')}${f ? `${f}: ` : ''}${msg ?? ''}`;
-    }
+    if (banner && stale) banner.textContent = why;
+    const note = this.root.querySelector('.inputs .stale-note');
+    if (note && note.textContent !== why) note.textContent = why;
   }
 }

@@ -3,10 +3,11 @@
 import { scrollToEl } from '../dom';
 import { docTarget, openChapter } from '../panels/docs';
 import type { PanelId } from '../panels/panel';
+import { openInputs } from './drawer';
 
-export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: () => void): void {
+export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: () => void, showView: (id: string) => void): void {
   root.addEventListener('click', (ev) => {
-    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], [data-field], nav.tabs a');
+    const a = (ev.target as HTMLElement).closest<HTMLElement>('[data-why], [data-panel-link], [data-doc-link], [data-field], [data-view], [data-nav]');
     if (!a) return;
     ev.preventDefault();
     const go = (id: string) => scrollToEl(document.getElementById(id));
@@ -26,7 +27,10 @@ export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: 
         return;
       }
       go(a.dataset.panelLink === 'inputs' ? 'app' : `panel-${a.dataset.panelLink}`);
-      if (a.dataset.panelLink === 'inputs') (root.querySelector('.inputs input') as HTMLElement | null)?.focus();
+      if (a.dataset.panelLink === 'inputs') {
+        openInputs();
+        (root.querySelector('.inputs input') as HTMLElement | null)?.focus();
+      }
     } else if (a.dataset.docLink) {
       const el = root.querySelector(`[data-anchor="${CSS.escape(a.dataset.docLink)}"]`);
       scrollToEl(el);
@@ -39,8 +43,13 @@ export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: 
       }
       const sec = input.closest<HTMLDetailsElement>('details.section');
       if (sec) sec.open = true;
+      openInputs();
       scrollToEl(input.closest('.field'));
       input.focus();
+    } else if (a.dataset.view) {
+      // A tab: its view from the top (the answer strip stays the first thing on screen).
+      showView(a.dataset.view);
+      window.scrollTo({ top: 0 });
     } else if (a.dataset.nav) {
       go(`panel-${a.dataset.nav}`);
     }

@@ -160,6 +160,8 @@ export class ComputeSession {
   setLocalError(path: string, message: string | null): void {
     if (message === null) this.localErrors.delete(path);
     else this.localErrors.set(path, message);
+    // A field that does not parse leaves the numbers of an earlier input on screen: stale.
+    this.updateSource();
     this.events.errors();
   }
 

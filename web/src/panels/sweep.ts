@@ -2,6 +2,7 @@
 // firmware integer's error and status, boundaries bisected in Python (pulab.analyses.sweep), worst cases
 // that open as the current motor. Computed chunk by chunk in the worker, with progress and cancel.
 import { h, num, table } from '../dom';
+import { fmtToward } from '../format';
 import { ALL_FIELDS, effectiveInput } from '../fields';
 import { errText, getLang, t, type Key } from '../i18n';
 import { encodeHash, getPath, type Input } from '../state';
@@ -148,8 +149,8 @@ function results(plan: Plan, pts: Points, sum: Summary): HTMLElement[] {
       shown.map((b, i) => h('tr', {},
         h('td', {}, h('code', {}, b.name)),
         h('td', {}, stChip(b.from), ' → ', stChip(b.to)),
-        h('td', { class: 'r' }, h('span', {}, `${b.path} = `, num(`sweep.summary.boundaries.${i}.at`, b.at, { text: String(b.at) }))),
-        h('td', { class: 'r' }, num(`sweep.summary.boundaries.${i}.before`, b.before, { text: String(b.before) })),
+        h('td', { class: 'r' }, h('span', {}, `${b.path} = `, num(`sweep.summary.boundaries.${i}.at`, b.at, { text: fmtToward(b.at, b.before) }))),
+        h('td', { class: 'r' }, num(`sweep.summary.boundaries.${i}.before`, b.before, { text: fmtToward(b.before, b.at) })),
         plan.y ? h('td', { class: 'r' }, num(`sweep.summary.boundaries.${i}.other`, b.other, { sig: 6 })) : null,
         h('td', {}, Object.entries({ ...b.raw, ...b.intermediates }).map(([k, [a, c]]) => `${k} ${a} → ${c}`).join(', '),
           b.message ? h('div', { class: 'hint' }, zh() ? b.message_zh ?? b.message : b.message) : null))),

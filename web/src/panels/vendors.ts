@@ -98,8 +98,22 @@ function watch(el: HTMLElement): void {
   io.observe(el);
 }
 
+/** Told when new profiles arrive: the page's answer strip, which shows the chosen profile's integers. */
+let onProfiles: (() => void) | null = null;
+
 function rerender(): void {
   if (lastCtx) vendorsPanel.render(lastCtx.el, lastCtx.ctx);
+}
+
+/**
+ * The profiles for the input in `ctx` (with this panel's hardware inputs), computed even while the
+ * panel is off screen: for a reader who picked a profile other than Inovance. `changed` is called
+ * when they arrive; until then the last ones (or null) are returned.
+ */
+export function profilesFor(ctx: PanelContext, changed: () => void): Record<string, ProfileReport> | null {
+  onProfiles = changed;
+  refresh(ctx);
+  return profiles;
 }
 
 function refresh(ctx: PanelContext): void {
@@ -123,6 +137,7 @@ function refresh(ctx: PanelContext): void {
     } else profErr = result;
     translate(ctx);
     rerender();
+    onProfiles?.();
   }, () => undefined);
 }
 

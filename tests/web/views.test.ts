@@ -1,0 +1,34 @@
+// @vitest-environment happy-dom
+// The views (tabs) of the page: every panel of the registry is in exactly one view, a panel no view
+// lists gets a "more" tab, and a panel asked to scroll into view shows its view.
+import { describe, expect, it } from 'vitest';
+import { h } from '../../web/src/dom';
+import { Layout } from '../../web/src/page/layout';
+import { PANELS } from '../../web/src/panels/registry';
+import { VIEWS, viewsFor } from '../../web/src/panels/views';
+
+describe('views', () => {
+  it('every registered panel is in exactly one view; the first view holds the review and the firmware integers', () => {
+    const listed = VIEWS.flatMap((v) => v.panels);
+    for (const p of PANELS) expect(listed.filter((id) => id === p.id)).toEqual([p.id]);
+    expect(VIEWS[0].panels.slice(0, 2)).toEqual(['review', 'vendor']);
+  });
+
+  it('a panel no view lists gets a "more" view; views without a shown panel are left out', () => {
+    const v = viewsFor(['review', 'qcalc', 'prove']);
+    expect(v.map((x) => [x.id, x.panels])).toEqual([['design', ['review']], ['tools', ['qcalc']], ['more', ['prove']]]);
+  });
+
+  it('the full page shows one view; scrolling a panel of another view into view shows that view', () => {
+    const root = h('div');
+    document.body.append(root);
+    const layout = new Layout(root, null);
+    layout.build(h('header'));
+    const shown = () => [...root.querySelectorAll<HTMLElement>('section.panel')].filter((s) => !s.hidden).map((s) => s.dataset.panel);
+    expect(shown().sort()).toEqual([...VIEWS[0].panels].sort());
+    root.querySelector<HTMLElement>('#panel-pll')?.scrollIntoView();
+    expect(shown()).toEqual(['current', 'pll', 'loop']);
+    expect(root.querySelector('nav.tabs a.on')?.getAttribute('data-view')).toBe('loops');
+    root.remove();
+  });
+});

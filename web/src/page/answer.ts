@@ -1,0 +1,73 @@
+// The answer at the top of every screen: the integers of the firmware the reader ships (picked
+// here, remembered) and the review's summary. Numbers are mirrors (data-mirror-of) of those in the
+// panels; a firmware that cannot hold the motor says why here too, with the same box as its panel.
+import { h, num, patch } from '../dom';
+import { t, type Key } from '../i18n';
+import { VENDOR_NAMES } from '../report-types';
+import type { PanelContext } from '../panels/panel';
+import { limitsBox } from '../panels/limits';
+import { VENDORS, profilesFor, type Vendor } from '../panels/vendors';
+import { allFindings, reviewCounts } from '../panels/review';
+
+/** The firmware the reader ships: the input's `conventions.firmware` (the review grades by it). */
+export function shippedProfile(ctx: Pick<PanelContext, 'input'>): Vendor {
+  const v = ctx.input.conventions?.firmware;
+  return (VENDORS as readonly unknown[]).includes(v) ? (v as Vendor) : 'inovance';
+}
+
+function chip(name: string, path: string, value: number | undefined, bad = false): HTMLElement {
+  return h('span', { class: `int-chip${bad ? ' bad' : ''}` }, h('code', {}, name), ' ', num(path, value, { kind: 'int', mirror: true }));
+}
+
+function notHeld(name: string): HTMLElement {
+  return h('span', { class: 'int-chip na' }, h('code', {}, name), ' ', h('span', { class: 'num na' }, t('fw_not_held')));
+}
+
+/** Inovance: the vendor integers and the current PI integers of the page's own report. */
+function inovanceChips(ctx: PanelContext): HTMLElement[] {
+  const r = ctx.report;
+  const missing = new Set(r?.firmware?.inovance?.problems.flatMap((p) => p.results) ?? []);
+  const ints = VENDOR_NAMES.map((n) => (missing.has(n) ? notHeld(n)
+    : chip(n, `vendor.${n}.value`, r?.vendor?.[n]?.value, r?.vendor?.[n]?.flags.some((f) => f === 'wrap' || f === 'store'))));
+  const pi = (['pm_kp', 'pm_ki'] as const).map((k) => chip(k, `current_pi.d.${k}`, r?.current_pi?.d?.[k]));
+  return [...ints, ...pi];
+}
+
+/** Another vendor: every constant of its profile (a report of its own, see vendors.ts). */
+function profileChips(ctx: PanelContext, v: Vendor, again: () => void): HTMLElement[] {
+  const consts = profilesFor(ctx, again)?.[v]?.constants;
+  if (!consts) return [h('span', { class: 'num pending' }, t('answerPending'))];
+  return Object.entries(consts).map(([k, c]) => chip(k, `profiles.${v}.constants.${k}.value`, c.value, c.flags.some((f) => f === 'out_of_range' || f === 'saturate')));
+}
+
+/**
+ * The review in one line, a link to its panel: plain with notes only; with errors or warnings
+ * marked as a warning (class `warnings`, empty otherwise). The findings themselves are listed once,
+ * in the review panel (first in the first view, right below).
+ */
+function reviewLine(ctx: PanelContext): HTMLElement[] {
+  const all = allFindings(ctx);
+  const serious = ctx.report !== null && all.some((f) => f.severity !== 'note');
+  const line = h('a', { class: 'counts', href: '#panel-review', 'data-nav': 'review' }, `${t('answerReview')}: `, ctx.report ? reviewCounts(all) : '…');
+  return serious ? [h('div', { class: 'warnings' }, line)] : [line, h('div', { class: 'warnings' })];
+}
+
+/** Render the strip into `el`; `again` renders it once more (a profile's report arrived); `pick`
+ * sets the shipped firmware in the input. */
+export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => void, pick: (v: Vendor) => void): void {
+  const v = shippedProfile(ctx);
+  const picker = h('select', {
+    name: 'answer.profile', 'aria-label': t('answerProfile'),
+    onchange: (ev: Event) => pick((ev.target as HTMLSelectElement).value as Vendor),
+  }, VENDORS.map((x) => h('option', { value: x, selected: x === v }, t(`vd_${x}` as Key))));
+  // The picker and the review's line, the integers, then why the firmware cannot hold the motor.
+  patch(el,
+    h('div', { class: 'answer-head' },
+      h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), picker),
+      reviewLine(ctx)),
+    h('div', { class: 'answer-ints', 'data-profile': v },
+      h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(ctx, v, again),
+        h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers'))),
+      limitsBox(v, ctx.report?.firmware?.[v])),
+  );
+}
