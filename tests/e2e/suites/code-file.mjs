@@ -55,6 +55,7 @@ export default async function codeFile(ctx) {
     await check(`code file: screenshot ${width}px ${locale}`, async () => {
       const p = await newPage({ locale, context: { viewport: { width, height: 900 } } });
       await p.goto(url);
+      await p.click('nav.tabs a[data-view="firmware"]'); // the code panel's tab
       await p.waitForSelector('[data-key="code.arm.vars.return.value"][data-value]', { timeout: 60_000 });
       await p.$eval('#panel-code', (e) => e.scrollIntoView());
       await p.screenshot({ path: join(SHOTS, `code-file-${width}-${locale}.png`) });
