@@ -130,7 +130,7 @@ export default defineConfig({
     rollupOptions: {
       // embed.js: the docs pages' one script tag, at a name that never changes (it is not hashed,
       // so servers must revalidate it: docs/deploy.md).
-      input: { index: resolve(here, 'index.html'), embed: resolve(here, 'src/embed/element.ts') },
+      input: { index: resolve(here, 'index.html'), course: resolve(here, 'course.html'), embed: resolve(here, 'src/embed/element.ts') },
       output: { entryFileNames: (c) => (c.name === 'embed' ? 'embed.js' : 'assets/[name]-[hash].js') },
     },
   },

@@ -30,6 +30,7 @@ import math
 from .schema.errors import InputError
 from .schema.validate import key_path, shown
 from .schema.jsontext import parse
+from .schema.textnum import parse_int
 from .export import c_header, sim_csv
 from .qcalc import qcalc
 from .report import report, report_steps
@@ -199,6 +200,28 @@ def _vendors(action: str):
     return handler
 
 
+def _course(action: str):
+    """The course's exercises (:mod:`pulab.analyses.exercises`; docs/contract.md, "Course")."""
+    def handler(req) -> dict:
+        from .analyses import exercises
+        if action == "spec":
+            return {"exercises": exercises.spec()}
+        if not isinstance(req, dict):
+            raise InputError("request", code="not_json_object")
+        if action == "trainees":
+            start = parse_int(req.get("start", 1), "start")
+            count = parse_int(req.get("count", 10), "count")
+            if not 1 <= count <= 200:
+                raise InputError("count", code="integer_range", lo=1, hi=200, got=shown(count))
+            return {"trainees": [{"n": n, "input": exercises.trainee_input(n)}
+                                 for n in range(start, start + count)]}
+        inp = _vendor_input(req)
+        if action == "answers":
+            return {"answers": exercises.answers(inp)}
+        return {"result": exercises.check(inp, req.get("id"), req.get("answer"))}
+    return handler
+
+
 #: Every request kind (the one dispatch key) → (the field its unreadable text is named by,
 #: its handler: parsed request → the reply's fields).  ``report`` is the one computed in
 #: slices (its handler is a generator).
@@ -217,6 +240,10 @@ KINDS = {
     "trace.examples": ("input", _trace_examples),
     "vendors.header": ("input", _vendors("header")),
     "vendors.translate": ("input", _vendors("translate")),
+    "course.spec": ("input", _course("spec")),
+    "course.check": ("input", _course("check")),
+    "course.answers": ("input", _course("answers")),
+    "course.trainees": ("input", _course("trainees")),
 }
 _STEPPED = {"report"}
 

@@ -237,7 +237,7 @@ def format_text(r: dict) -> str:
         ("pole pairs", str(mech["pole_pairs"])),
         ("rated speed", f"{mech['rated_speed_rpm']:.6g} rpm"),
         ("base speed (f_b)", f"{mech['base_speed_rpm']:.6g} rpm"),
-        ("torque base T_b", f"{mech['torque_base_nm']:.6g} N·m"),
+        ("torque base T_mb", f"{mech['torque_base_nm']:.6g} N·m"),
         ("kT", f"{mech['kt_nm_per_a']:.6g} N·m/A (RMS)"),
         ("Ke", f"{mech['ke_v_s_per_rad']:.6g} V·s/rad (line RMS)"),
         ("rated torque", f"{mech['rated_torque_nm']:.6g} N·m")])

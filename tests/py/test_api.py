@@ -24,7 +24,8 @@ def test_kinds_are_the_documented_ones():
     assert sorted(KINDS) == sorted([
         "report", "qcalc", "export.header", "export.csv_current", "export.csv_pll", "sweep",
         "sweep.plan", "sweep.chunk", "sweep.merge", "batch", "trace", "trace.examples",
-        "vendors.header", "vendors.translate"])
+        "vendors.header", "vendors.translate", "course.check", "course.answers", "course.spec",
+        "course.trainees"])
 
 
 # Each kind on a request with a known answer (values checked elsewhere against oracles; here

@@ -175,7 +175,9 @@ KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "r
              "sweep.chunk": ["input", "x", "start", "count"], "sweep.merge": ["input", "x", "summaries"],
              "batch": ["csv", "start", "count"], "trace": ["code", "target", "set", "global_q", "define"],
              "trace.examples": ["x"], "vendors.header": ["input", "profile"],
-             "vendors.translate": ["input", "from", "axis", "values"]}
+             "vendors.translate": ["input", "from", "axis", "values"],
+             "course.check": ["input", "id", "answer"], "course.answers": ["input"], "course.spec": ["x"],
+             "course.trainees": ["start", "count"]}
 
 
 def test_fuzzed_kinds_keep_the_api_contract():
@@ -186,7 +188,7 @@ def test_fuzzed_kinds_keep_the_api_contract():
     valid = {"input": PLAIN, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3},
              "format": "Q3.12", "value": 0.5, "csv": "name,motor.rs_ohm\na,1\n", "code": CODE[0],
              "profile": "ti", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
-             "summaries": [], "start": 0, "count": 1}
+             "summaries": [], "start": 0, "count": 1, "id": "vendor-rpm", "answer": "1"}
     seen = Counter()
     for _ in range(60):
         for kind in list(KINDS) + [_text(rng)]:

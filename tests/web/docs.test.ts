@@ -8,6 +8,7 @@ import { join, resolve } from 'node:path';
 import katex from 'katex';
 import { describe, expect, it } from 'vitest';
 import { fillPlaceholders, parseChapter, type Chapter } from '../../web/src/docs/parse';
+import schema from '../../web/src/generated/schema.json';
 
 const ROOT = resolve(__dirname, '../..');
 const DOCS = join(ROOT, 'docs');
@@ -131,6 +132,14 @@ describe('docs: placeholders resolve in every golden report', () => {
     });
   }
 
+  // input.* echoes the normalized input (defaults filled in, docs/contract.md): the golden files
+  // leave it out, so each such placeholder must name a field of the schema.
+  it('input.* placeholders name input fields', () => {
+    const fields = new Set(JSON.stringify(schema).match(/"path":\s*"[^"]+"/g)?.map((m) => m.replace(/^"path":\s*"|"$/g, '')) ?? []);
+    expect(fields.size).toBeGreaterThan(10);
+    for (const p of paths) if (p.startsWith('input.')) expect(fields.has(p.slice(6)), p).toBe(true);
+  });
+
   for (const g of goldens) {
     it(g, () => {
       const doc = JSON.parse(readFileSync(join(goldenDir, g), 'utf8'));
@@ -140,7 +149,7 @@ describe('docs: placeholders resolve in every golden report', () => {
       const cannotHold = lookup(doc.expected, 'firmware.inovance.representable') === false;
       if (cannotHold) expect((lookup(doc.expected, 'firmware.inovance.problems') as unknown[]).length).toBeGreaterThan(0);
       for (const p of paths) {
-        if (p.startsWith('loop.robust.')) continue;
+        if (p.startsWith('loop.robust.') || p.startsWith('input.')) continue;
         const v = lookup(doc.expected, p);
         if (cannotHold && p.startsWith('vendor.') && v === undefined) continue;
         const ok = (typeof v === 'number' && Number.isFinite(v)) || typeof v === 'string';

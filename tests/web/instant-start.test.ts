@@ -196,6 +196,23 @@ describe('boot timeout counts time without progress', () => {
     await expect(host.ready).rejects.toThrow(/no progress for/);
     expect(got.at(-1)).toMatchObject({ type: 'fatal' });
   });
+  it('progress per network chunk reaches the pages in 1 % steps, and at every stage', async () => {
+    const chunks: PyodideLoader = async (_url, progress) => {
+      for (let i = 0; i <= 1000; i++) progress('runtime', 0.05 + 0.6 * (i / 1000));
+      progress('snapshot', 0.7);
+      return fakePy();
+    };
+    const host = createRuntimeHost(chunks, PULAB_FILES);
+    const got: WorkerToMain[] = [];
+    host.connect((m) => got.push(m))({ type: 'init', indexURL: 'x/' });
+    await host.ready;
+    const runtime = got.flatMap((m) => (m.type === 'progress' && m.stage === 'runtime' ? [m.fraction] : []));
+    expect(runtime.length).toBeGreaterThanOrEqual(55); // 0.6 of the way in steps of ≥ 0.01
+    expect(runtime.length).toBeLessThanOrEqual(61);
+    runtime.slice(1).forEach((f, i) => expect(f - runtime[i]).toBeGreaterThanOrEqual(0.01 - 1e-12));
+    expect(got.filter((m) => m.type === 'progress').map((m) => (m as { stage: string }).stage).filter((s, i, a) => s !== a[i - 1]))
+      .toEqual(['runtime', 'snapshot', 'files', 'import', 'ready']);
+  });
   it('idleTimeout: kick() restarts the clock', async () => {
     const w = idleTimeout(60, 'x');
     const t = setInterval(() => w.kick(), 20);

@@ -13,12 +13,13 @@ import qcalc from './i18n/qcalc';
 import screens from './i18n/screens';
 import datasheet from './i18n/datasheet';
 import ctrace from './i18n/ctrace';
+import course from './i18n/course';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en };
+  ...ctrace.en, ...course.en };
 
 export type Key = keyof typeof en;
 
@@ -36,6 +37,7 @@ const zh: Record<Key, string> = {
   ...screens.zh,
   ...datasheet.zh,
   ...ctrace.zh,
+  ...course.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

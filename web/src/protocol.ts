@@ -38,6 +38,10 @@ export interface Request {
   'trace.examples': Record<string, never>;
   'vendors.header': { input: Input; profile: string };
   'vendors.translate': TranslateRequest;
+  'course.spec': Record<string, never>;
+  'course.check': { input: Input; id: string; answer: string };
+  'course.answers': { input: Input };
+  'course.trainees': { start: number | string; count: number | string };
 }
 export type ApiKind = keyof Request;
 
@@ -57,7 +61,15 @@ export interface ReplyBody {
   'trace.examples': { examples: TraceExample[]; targets: string[] };
   'vendors.header': { text: string };
   'vendors.translate': { translation: Translation };
+  'course.spec': { exercises: ExerciseSpec[] };
+  'course.check': { result: { id: string; state: 'correct' | 'wrong'; expected: Json; tolerance: Tolerance } };
+  'course.answers': { answers: Record<string, { chapter: string; expected: Json; unit: string; tolerance: Tolerance }> };
+  'course.trainees': { trainees: { n: number; input: Input }[] };
 }
+
+/** An exercise's stated tolerance (pulab.analyses.exercises): data and its text in both languages. */
+export interface Tolerance { kind: 'exact' | 'abs' | 'rel' | 'range'; value?: number; en: string; zh: string }
+export interface ExerciseSpec { id: string; chapter: string; kind: string; unit: string; choices: string[]; tolerance: Tolerance }
 
 /** An error as data (docs/contract.md, Errors): `code` and `params` from pulab's catalog, the text in
  * both languages made from them. Worker-side failures (no reply from Python) have no code. The

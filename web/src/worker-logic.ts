@@ -157,6 +157,9 @@ export interface RuntimeHost {
   ready: Promise<void>;
 }
 
+/** Boot progress is sent to the pages in steps of this fraction at least (and at each new stage). */
+const PROGRESS_STEP = 0.01;
+
 const now = (): number => (typeof performance !== 'undefined' ? performance.now() : Date.now());
 
 /**
@@ -195,9 +198,15 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
     state = 'booting';
     const t0 = now();
     const watchdog = idleTimeout(timeoutMs, 'Loading the Python runtime (Pyodide)');
+    let sent: { stage: BootStage; fraction: number } | null = null;
     const progress: BootProgress = (stage, fraction) => {
       watchdog.kick();
       lastProgress = { type: 'progress', stage, fraction, ms: now() - t0 };
+      // The snapshot's download reports every network chunk (hundreds), and each message redraws
+      // the status line of every connected page (12 panels: thousands of redraws while booting):
+      // sent when the stage changes and per 1 % of the way.
+      if (sent && sent.stage === stage && fraction - sent.fraction < PROGRESS_STEP) return;
+      sent = { stage, fraction };
       broadcast(lastProgress);
     };
     try {

@@ -137,6 +137,7 @@ MESSAGES = {
     "log_not_positive": ("must be > 0 for a log scale, got {value:g}", "对数刻度要求大于 0，当前为 {value:g}"),
     "same_as": ("must differ from {other} ({value})", "必须不同于 {other}（{value}）"),
     "unknown_profile": ("unknown profile {got}", "未知的厂商配置：{got}"),
+    "unknown_exercise": ("unknown exercise {got}", "未知的练习：{got}"),
     "too_many_points": ("the sweep has {total} points; at most {limit}", "扫描共有 {total} 个点；最多 {limit} 个"),
     "empty_column": ("empty column name {got}", "列名为空：{got}"),
     "unit_not_path": ("a unit is only converted for an input path, not {got}",

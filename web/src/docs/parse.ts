@@ -5,7 +5,8 @@
  *   - headings carry explicit, language-independent anchors:  `## Title {#anchor}`
  *   - KaTeX math: `$…$` (inline) and `$$…$$` (display, may span lines); `\$` is a literal dollar
  *   - live placeholders: `{{path}}` (a report value by JSON path, e.g. `{{vendor.Rpm.value}}`),
- *     `{{panel:NAME}}` (embed a panel), `{{plot:NAME}}` (embed a plot)
+ *     `{{panel:NAME}}` (embed a panel), `{{plot:NAME}}` (embed a plot), `{{figure:NAME}}` (a concept
+ *     figure drawn with the report's numbers, web/src/figures/concepts.ts)
  *   - links back to a panel: `[text](#panel=NAME)`
  * Fenced code blocks (```) and inline code spans (`…`) are opaque: nothing inside them is parsed.
  *
@@ -16,9 +17,10 @@
  *     placeholders: string[]   report paths, in order of appearance (with repeats)
  *     panels:       string[]   panel names used by {{panel:…}} and (#panel=…) links
  *     plots:        string[]   plot names used by {{plot:…}}
+ *     figures:      string[]   figure names used by {{figure:…}}
  *   }
  *   fillPlaceholders(text, value) -> text with every `{{path}}` (not panel:/plot:) replaced by
- *     value(path); use it on math before KaTeX and on prose before Markdown.
+ *     value(path); use it on math before KaTeX and on prose before Markdown (panel:/plot:/figure: stay).
  */
 
 export interface Heading {
@@ -40,6 +42,7 @@ export interface Chapter {
   placeholders: string[];
   panels: string[];
   plots: string[];
+  figures: string[];
 }
 
 const HEADING_RE = /^(#{1,6})[ \t]+(.*?)[ \t]*(?:\{#([A-Za-z0-9_-]+)\})?[ \t]*$/;
@@ -124,18 +127,20 @@ export function parseChapter(md: string): Chapter {
   const placeholders: string[] = [];
   const panels: string[] = [];
   const plots: string[] = [];
+  const figures: string[] = [];
   for (const m of text.matchAll(TOKEN_RE)) {
     const tok = m[1];
     if (tok.startsWith('panel:')) panels.push(tok.slice(6));
     else if (tok.startsWith('plot:')) plots.push(tok.slice(5));
+    else if (tok.startsWith('figure:')) figures.push(tok.slice(7));
     else placeholders.push(tok);
   }
   for (const m of text.matchAll(PANEL_LINK_RE)) panels.push(m[1]);
-  return { headings, math: scanMath(text), placeholders, panels, plots };
+  return { headings, math: scanMath(text), placeholders, panels, plots, figures };
 }
 
 export function fillPlaceholders(text: string, value: (path: string) => string): string {
   return text.replace(TOKEN_RE, (whole, tok: string) =>
-    tok.startsWith('panel:') || tok.startsWith('plot:') ? whole : value(tok),
+    /^(panel|plot|figure):/.test(tok) ? whole : value(tok),
   );
 }

@@ -3,6 +3,8 @@
 import katex from 'katex';
 import { fillPlaceholders } from './parse';
 import { fmtNum } from '../format';
+import { has, t } from '../i18n';
+import { drawFigure, isFigure } from '../figures/concepts';
 
 export const esc = (s: string): string =>
   s.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
@@ -77,6 +79,8 @@ export function renderMarkdown(md: string, opts: RenderOpts): string {
   // 3. embeds and values
   src = src.replace(/\{\{\s*(panel|plot):([A-Za-z0-9_-]+)\s*\}\}/g, (_, kind: string, name: string) =>
     keep(`<div class="doc-embed" data-embed-${kind}="${esc(name)}"></div>`));
+  src = src.replace(/\{\{\s*figure:([A-Za-z0-9_-]+)\s*\}\}/g, (whole, name: string) =>
+    (isFigure(name) ? keep(`<figure class="course-fig" data-figure="${esc(name)}">${drawFigure(name, (p) => opts.value(p))}</figure>`) : whole));
   src = src.replace(/\{\{\s*([^{}\s]+)\s*\}\}/g, (_, path: string) => {
     const v = opts.value(path);
     return keep(`<span class="num doc-val" data-key="${esc(path)}"${typeof v === 'number' ? ` data-value="${esc(JSON.stringify(v))}" title="${esc(String(v))}"` : ''}>${esc(valueText(v))}</span>`);
@@ -102,6 +106,35 @@ function inline(s: string): string {
   return out;
 }
 
+/** A blockquote's class from its bold opening word: errata, and the course's three boxes. */
+const BOX_KINDS: Array<[RegExp, string]> = [
+  [/^\*\*(Goals|学习目标)/, ' goals'], [/^\*\*(Summary|小结)/, ' summary'],
+  [/^\*\*(Common mistakes|常见错误)/, ' mistakes'], [/\*\*(Erratum|勘误)/, ' erratum'],
+];
+
+const EXERCISE_RE = /^:::\s*exercise\s+([A-Za-z0-9_-]+)((?:\s+[^\s]+)*)\s*$/;
+
+/**
+ * An exercise (`::: exercise ID [choice A B …] [trace]`, then `::: hint`, `::: solution`, `:::`):
+ * the question, an answer field `exercise.ID` (a select for a choice), the hint (shown after a
+ * wrong answer) and the worked solution (on request). Checking is wired by course/exercises.ts.
+ */
+function exerciseHtml(id: string, opts: string[], parts: Record<'q' | 'hint' | 'solution', string[]>): string {
+  const choice = opts[0] === 'choice' ? opts.slice(1).filter((o) => o !== 'trace') : null;
+  const name = `exercise.${esc(id)}`;
+  const label = (c: string) => (has(`c_${c}`) ? t(`c_${c}` as never) : c);
+  const field = choice
+    ? `<select name="${name}"><option value="">${esc(t('exChoose'))}</option>${choice.map((c) => `<option value="${esc(c)}">${esc(label(c))}</option>`).join('')}</select>`
+    : `<input name="${name}" autocomplete="off" spellcheck="false" inputmode="text" size="12">`;
+  const trace = opts.includes('trace') ? `<button type="button" class="ex-trace-run" data-ex-trace="">${esc(t('exTrace'))}</button><ol class="ex-trace"></ol>` : '';
+  return `<div class="exercise" data-exercise="${esc(id)}" id="ex-${esc(id)}"><div class="ex-q">${blocks(parts.q)}</div>${trace}`
+    + `<form class="ex-form" data-keep="ex ${esc(id)} ${esc(t('exCheck'))}" novalidate><label>${esc(t('exAnswer'))} ${field}</label> `
+    + `<button type="submit">${esc(t('exCheck'))}</button> <span class="ex-tol"></span></form>`
+    + `<p class="ex-feedback" role="status" aria-live="polite"></p>`
+    + `<div class="ex-hint" hidden><strong>${esc(t('exHint'))}</strong> ${blocks(parts.hint)}</div>`
+    + `<details class="ex-solution"><summary>${esc(t('exSolution'))}</summary>${blocks(parts.solution)}</details></div>`;
+}
+
 function blocks(lines: string[]): string {
   const out: string[] = [];
   let i = 0;
@@ -110,6 +143,19 @@ function blocks(lines: string[]): string {
     const line = lines[i];
     if (isBlank(line)) {
       i++;
+      continue;
+    }
+    const ex = EXERCISE_RE.exec(line);
+    if (ex) {
+      const parts: Record<'q' | 'hint' | 'solution', string[]> = { q: [], hint: [], solution: [] };
+      let cur: keyof typeof parts = 'q';
+      for (i++; i < lines.length && !/^:::\s*$/.test(lines[i]); i++) {
+        const sub = /^:::\s*(hint|solution)\s*$/.exec(lines[i]);
+        if (sub) cur = sub[1] as 'hint' | 'solution';
+        else parts[cur].push(lines[i]);
+      }
+      i++;
+      out.push(exerciseHtml(ex[1], ex[2].trim().split(/\s+/).filter(Boolean), parts));
       continue;
     }
     const hm = /^(#{1,6})\s+(.*?)\s*(?:\{#([\w-]+)\})?\s*$/.exec(line);
@@ -128,7 +174,7 @@ function blocks(lines: string[]): string {
       const inner: string[] = [];
       while (i < lines.length && lines[i].startsWith('>')) inner.push(lines[i++].replace(/^>\s?/, ''));
       const text = inner.join('\n');
-      const kind = /\*\*(Erratum|勘误)/.test(text) ? ' erratum' : '';
+      const kind = BOX_KINDS.find(([re]) => re.test(text))?.[1] ?? '';
       out.push(`<blockquote class="doc-note${kind}">${blocks(inner)}</blockquote>`);
       continue;
     }

@@ -30,18 +30,34 @@ export function linkToHost(panel: string, report: () => unknown): void {
   const post = (m: FrameMessage): void => window.parent.postMessage(m, '*');
   const root = document.documentElement;
   let height = -1;
+  let measured = -Infinity;
+  let timer: ReturnType<typeof setTimeout> | undefined;
   // The body's scroll height also counts what overflows the boxes (it is not clamped to the
   // viewport, as the root's is, so the frame can shrink again).
   const size = (): void => {
+    clearTimeout(timer);
+    timer = undefined;
+    measured = performance.now();
     const h = Math.ceil(Math.max(root.getBoundingClientRect().height, document.body.scrollHeight));
     if (h !== height) post({ source: 'pu-lab', type: 'size', height: (height = h) });
+  };
+  // Each measurement outside a rendering step is a forced layout, and DOM changes come in bursts
+  // (the boot's progress line, a report's render: with 12 panels on a page, measuring at every
+  // change took half of the main thread until all were live): at most one per MEASURE_MS, the
+  // last change always measured.
+  const MEASURE_MS = 100;
+  const soon = (): void => {
+    if (timer !== undefined) return;
+    const wait = measured + MEASURE_MS - performance.now();
+    if (wait <= 0) size();
+    else timer = setTimeout(size, wait);
   };
   const ro = new ResizeObserver(size);
   ro.observe(root);
   ro.observe(document.body);
   // An off-screen frame of another origin gets no rendering steps (Chromium throttles it), so no
   // ResizeObserver callbacks: changes to the DOM and loaded fonts measure again as well.
-  new MutationObserver(size).observe(document.body, { subtree: true, childList: true, characterData: true, attributes: true });
+  new MutationObserver(soon).observe(document.body, { subtree: true, childList: true, characterData: true, attributes: true });
   document.fonts.addEventListener('loadingdone', size);
   size();
   let sent = '';

@@ -90,6 +90,10 @@ export function renderHeader(root: HTMLElement, session: ComputeSession, lang: H
   wireMenus();
   return h('header', { class: 'top' },
     h('div', { class: 'brand' }, h('strong', {}, 'pu-lab'), h('span', { class: 'sub' }, t('subtitle'))),
+    // The course is its own page (course.html), with the reader's motor.
+    h('a', { class: 'course-link', href: './course.html', 'data-course-link': '', onclick: (ev: Event) => {
+      (ev.currentTarget as HTMLAnchorElement).href = `./course.html?lang=${getLang()}${encodeHash(effectiveInput(session.input))}`;
+    } }, t('goCourse')),
     h('div', { class: 'status' }),
     h('div', { class: 'actions' },
       h('button', { type: 'button', class: 'copy-link', onclick: () => void copyLink(root, session) }, t('copyLink')),

@@ -11,6 +11,8 @@ import { renderCurrentStep } from '../figures/current-step';
 import { renderPllTrack } from '../figures/pll-track';
 import { keptFigure, simPlaceholder } from '../figures/figure';
 import type { Panel, PanelContext } from './panel';
+import { applyProgress, wireExercises } from '../course/exercises';
+import '../course/course.css';
 
 const CHAPTERS = import.meta.glob('../../../docs/{zh,en}/*.md', { query: '?raw', import: 'default', eager: true }) as Record<string, string>;
 const INDEX = Object.values(import.meta.glob('../../../docs/index.json', { import: 'default', eager: true }))[0] as DocsIndex | undefined;
@@ -131,8 +133,8 @@ export const docsPanel: Panel = {
       return;
     }
     const lang = getLang();
-    const nav = h('nav', { class: 'doc-nav' }, INDEX.chapters.map((c, i) =>
-      h('button', { type: 'button', class: c.id === state.chapter ? 'on' : '', 'data-chapter': c.id, onclick: () => { openChapter(c.id); docsPanel.render(el, ctx); } }, `${i + 1}. ${c.title[lang]}`)));
+    const nav = h('nav', { class: 'doc-nav' }, INDEX.chapters.map((c) =>
+      h('button', { type: 'button', class: c.id === state.chapter ? 'on' : '', 'data-chapter': c.id, onclick: () => { openChapter(c.id); docsPanel.render(el, ctx); } }, `${parseInt(c.id, 10)}. ${c.title[lang]}`)));
     // The chapter is kept across renders (its job below patches it): typing re-lays out only the
     // numbers that changed, not the whole chapter.
     patch(el, nav, h('article', { class: 'doc', 'data-keep': 'chapter' }, h('p', { class: 'note' }, '…')));
@@ -146,6 +148,10 @@ export const docsPanel: Panel = {
       morph(body, fresh);
       body.dataset.chapter = state.chapter;
       fillEmbeds(body, ctx);
+      const raw = ctx.report?.vendor?.raw as Record<string, number> | undefined;
+      const env = { input: () => ctx.input, reportInput: () => ctx.report?.input ?? null, raw: () => raw ?? null, client: () => ctx.client };
+      wireExercises(body, env);
+      applyProgress(body, env);
       if (state.anchor) {
         scrollToEl(body.querySelector(`[data-anchor="${CSS.escape(state.anchor)}"]`));
         state.anchor = '';

@@ -181,9 +181,9 @@ function drawFigures(el: HTMLElement, loop: LoopReport): void {
   const bode = loop.bode;
   const cur = bode?.current;
   keptFigure(el, 'bode-current', cur, (fig) => renderBode(fig, cur!.f_hz, [
-    { curve: cur!.open.d, name: `L_d ${t('loopYoursShort')}`, color: COLORS.si },
+    { curve: cur!.open.d, name: `G_o,d ${t('loopYoursShort')}`, color: COLORS.si },
     { curve: cur!.closed.d, name: `T_d ${t('loopYoursShort')}`, color: COLORS.si, dash: 'dot' },
-    { curve: cur!.open.d_design, name: `L_d ${t('loopDesignedShort')}`, color: COLORS.pu },
+    { curve: cur!.open.d_design, name: `G_o,d ${t('loopDesignedShort')}`, color: COLORS.pu },
     { curve: cur!.closed.d_design, name: `T_d ${t('loopDesignedShort')}`, color: COLORS.pu, dash: 'dot' },
   ]));
   const pll = bode?.pll;
@@ -193,7 +193,7 @@ function drawFigures(el: HTMLElement, loop: LoopReport): void {
   ]));
   const speed = bode?.speed;
   keptFigure(el, 'bode-speed', speed, (fig) => renderBode(fig, speed!.f_hz, [
-    { curve: speed!.open, name: 'L', color: COLORS.si },
+    { curve: speed!.open, name: 'G_o', color: COLORS.si },
     { curve: speed!.closed, name: 'T', color: COLORS.si, dash: 'dot' },
   ]));
   const r = loop.speed?.response;

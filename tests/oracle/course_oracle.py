@@ -1,0 +1,109 @@
+"""Oracle for the course's exercises: every expected answer, recomputed without pulab.
+
+For each trainee motor below (the inputs pulab's ``trainee_input(n)`` hands out; the test pins
+them, so a link a trainer already gave out keeps its motor) the answers come from the
+independent report oracle (``oracle.py``: bases, per unit, the Inovance integers, PI and PLL
+gains, the constants' exact expressions), python-control for the naive PLL's closed-loop
+poles (``loop_oracle.py``), and plain integer arithmetic with the C2000's 16-bit ``int`` for the
+buggy routine and the int16 wrap.  Never imports pulab.
+"""
+
+from __future__ import annotations
+
+import math
+import pathlib
+import sys
+
+import control
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from oracle import oracle_report, parse  # noqa: E402
+from loop_oracle import measure, pi  # noqa: E402
+
+#: Trainee number → the input of the motor a trainee link carries.
+TRAINEES = {
+    0: {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220, "rs_ohm": 1.5, "ld_h": 0.0006, "lq_h": 0.0006, "bemf_v": 12, "pole_pairs": 4}, "drive": {"udc_v": 24, "ts_s": 0.0001}},
+    1: {"motor": {"rated_voltage_v": 36, "rated_current_a": 10, "rated_freq_hz": 200, "rs_ohm": 0.33, "ld_h": 0.00037, "lq_h": 0.00041, "bemf_v": 25.4, "pole_pairs": 4}, "drive": {"udc_v": 60, "ts_s": 5e-05, "base_freq_hz": 300.0}, "pll": {"bandwidth_hz": 50}},
+    2: {"motor": {"rated_voltage_v": 200, "rated_current_a": 4.5, "rated_freq_hz": 100, "rs_ohm": 2.485, "ld_h": 0.01494, "lq_h": 0.01816, "bemf_v": 121.8, "pole_pairs": 4}, "drive": {"udc_v": 311, "ts_s": 0.000125, "base_freq_hz": 125.0}, "pll": {"bandwidth_hz": 20}},
+    3: {"motor": {"rated_voltage_v": 340, "rated_current_a": 12, "rated_freq_hz": 50, "rs_ohm": 0.571, "ld_h": 0.01084, "lq_h": 0.01437, "bemf_v": 259.7, "pole_pairs": 2}, "drive": {"udc_v": 540, "ts_s": 6.25e-05, "base_freq_hz": 50}, "pll": {"bandwidth_hz": 10}},
+    4: {"motor": {"rated_voltage_v": 24, "rated_current_a": 20, "rated_freq_hz": 300, "rs_ohm": 0.12, "ld_h": 0.00013, "lq_h": 0.00019, "bemf_v": 16.0, "pole_pairs": 5}, "drive": {"udc_v": 48, "ts_s": 0.0001, "base_freq_hz": 600}, "pll": {"bandwidth_hz": 5}},
+    5: {"motor": {"rated_voltage_v": 340, "rated_current_a": 30, "rated_freq_hz": 150, "rs_ohm": 0.731, "ld_h": 0.00134, "lq_h": 0.0014, "bemf_v": 194.7, "pole_pairs": 4}, "drive": {"udc_v": 540, "ts_s": 5e-05, "base_freq_hz": 187.5}, "pll": {"bandwidth_hz": 50}},
+    9: {"motor": {"rated_voltage_v": 340, "rated_current_a": 12, "rated_freq_hz": 50, "rs_ohm": 1.058, "ld_h": 0.00851, "lq_h": 0.01256, "bemf_v": 234.7, "pole_pairs": 2}, "drive": {"udc_v": 540, "ts_s": 5e-05, "base_freq_hz": 50}, "pll": {"bandwidth_hz": 5}},
+    14: {"motor": {"rated_voltage_v": 200, "rated_current_a": 4.5, "rated_freq_hz": 100, "rs_ohm": 4.015, "ld_h": 0.01129, "lq_h": 0.01147, "bemf_v": 142.7, "pole_pairs": 4}, "drive": {"udc_v": 311, "ts_s": 0.000125, "base_freq_hz": 150.0}, "pll": {"bandwidth_hz": 5}},
+    23: {"motor": {"rated_voltage_v": 340, "rated_current_a": 30, "rated_freq_hz": 150, "rs_ohm": 1.316, "ld_h": 0.0025, "lq_h": 0.00373, "bemf_v": 205.0, "pole_pairs": 4}, "drive": {"udc_v": 540, "ts_s": 0.000125, "base_freq_hz": 300}, "pll": {"bandwidth_hz": 5}},
+}
+
+
+def _wrap16(v: int) -> int:
+    """Two's complement of a 16-bit int."""
+    v &= 0xFFFF
+    return v - 0x10000 if v >= 0x8000 else v
+
+
+def fb_max(inp: dict, limit_v: float) -> float:
+    """The largest base frequency (≥ f_n, ≤ 655.35 Hz, the firmware's 0.01 Hz Uint16) at which the
+    motor at rated current (i_d = 0, L_q, RMS flux) needs no more line RMS voltage than the limit:
+    the root of |R·jI − ωL_q·I + jωψ|·√3 = limit, a quadratic in ω; 0 when f_n already needs more."""
+    m = inp["motor"]
+    psi = m["bemf_v"] / math.sqrt(3) / (2 * math.pi * m["rated_freq_hz"])
+    R, Lq, I, V = m["rs_ohm"], m["lq_h"], m["rated_current_a"], limit_v / math.sqrt(3)
+    a, b, c = (Lq * I) ** 2 + psi ** 2, 2 * R * I * psi, (R * I) ** 2 - V ** 2
+    w = (-b + math.sqrt(b * b - 4 * a * c)) / (2 * a) if b * b - 4 * a * c >= 0 else -1.0
+    f = w / (2 * math.pi)
+    return 0.0 if f < m["rated_freq_hz"] else min(f, 655.35)
+
+
+def expected(inp: dict) -> dict:
+    """Exercise id → expected answer for one motor."""
+    P = parse(inp)
+    r = oracle_report(inp)
+    B, pu, V, C, L = r["base"], r["pu"], r["vendor"], r["current_pi"]["d"], r["pll"]
+    raw_v = round(P["rated_voltage_v"])
+    raw_i = round(P["rated_current_a"] * 100)
+    raw_rs = round(P["rs_ohm"] * 1000)
+    # the buggy Rpm: Uint16 m_UData * int 18597 is a 16-bit unsigned product on the C2000
+    m_udata = raw_rs * raw_i // raw_v
+    buggy = ((m_udata * 18597) & 0xFFFF) >> 14
+    psi = pu["psi_r"]
+    fit = next((f"Q{q}" for q in (16, 15, 14, 13, 12) if round(psi * 2 ** q) <= 0xFFFF), "none")
+    ts = P["ts_s"]
+    g_naive = B["w_b"] / B["theta_b"]
+    naive = measure(pi(L["kp"], L["ki"], ts) * control.tf([g_naive * ts], [1.0, -1.0], ts), ts)
+    ts_half = dict(inp, drive=dict(inp["drive"], ts_s=ts / 2))
+    ratio = oracle_report(ts_half)["current_pi"]["d"]["pm_ki"] / C["pm_ki"]
+    return {
+        "warmup-current": 2.0 / B["I_b"],
+        "warmup-ub": P["rated_voltage_v"] / math.sqrt(3),
+        "warmup-peak": math.sqrt(2) * P["rated_current_a"],
+        "warmup-zb": B["Z_b"],
+        "warmup-rs": P["rs_ohm"] / B["Z_b"],
+        "warmup-lb": B["Z_b"] / (2 * math.pi * P["base_freq_hz"]) * 1e3,
+        "q-current": round(2.0 / B["I_b"] * 4096),
+        "q-data1": V["pm_maxout_vol"]["trace"][0]["value"],
+        "q-maxout": V["pm_maxout_vol"]["value"],
+        "q-wrap": _wrap16(round(8.5 * 4096)),
+        "q-fit": fit,
+        "vendor-mudata": m_udata,
+        "vendor-rpm": V["Rpm"]["value"],
+        "vendor-basel": V["LD"]["trace"][1]["value"],
+        "vendor-ld": V["LD"]["value"],
+        "vendor-bug": buggy,
+        "vendor-flux": V["FluxRotor"]["value"],
+        "const-18597": 2 ** 30 * math.sqrt(3) / 1e5,
+        "const-3678": 2e4 / (math.sqrt(3) * math.pi),
+        "const-2316": 2 ** 15 / (10 * math.sqrt(2)),
+        "const-ld-error": (V["LD"]["value"] - pu["Ld"] * 2 ** 13) / (pu["Ld"] * 2 ** 13) * 100,
+        "const-freqper": V["FreqPer"]["value"],
+        "pi-kp-pu": C["kp_pu"],
+        "pi-pm-kp": C["pm_kp"],
+        "pi-pm-ki": C["pm_ki"],
+        "pi-line-trap": round(C["kp"] * B["I_b"] / P["rated_voltage_v"] * 4096),
+        "pi-ts-half": "halves" if abs(ratio - 0.5) < 0.05 else "doubles" if abs(ratio - 2) < 0.2 else "same",
+        # the firmware's voltage limit pm_maxout_vol is Q12 of the rated line voltage
+        "pi-choose-fb": fb_max(inp, V["pm_maxout_vol"]["value"] / 4096 * raw_v),
+        "pll-kp": L["kp"],
+        "pll-kp-pu": L["kp_pu"],
+        "pll-int-gain": L["integrator_gain"],
+        "pll-naive-kts": g_naive * L["kp"] * ts,
+        "pll-naive-locks": "yes" if naive["stable"] else "no",
+    }
