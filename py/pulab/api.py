@@ -421,7 +421,8 @@ def batch_json(text: str) -> str:
 
 
 def trace_json(text: str) -> str:
-    """The "Your code" tracer: ``{"code", "target", "set": {NAME: VALUE}, "global_q",
+    """The "Your code" tracer: ``{"code", "target", "entry", "set": {NAME: VALUE}, "global_q",
+    "zero_unset", …}`` (``entry``: the function of the code to run); see below,
     "define": ["NAME[=VALUE]", …]}`` (``define`` as a compiler's ``-D``).
 
     Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",

@@ -242,14 +242,16 @@ class Unit:
     ``T`` (``name.FIELD`` or ``*name`` inputs and outputs address it), ``T [N]`` a zeroed
     local array (``name[i]``), any other its value.
     ``inputs``/``outputs`` are [(spelling, name)]; names are ``return``, parameter names,
-    ``p.FIELD``, ``*p`` and globals; ``prelude`` is C placed before the code (the vendor
-    type names and IQmath the code expects from headers it does not paste).
+    ``p.FIELD``, ``*p`` and globals (``return.FIELD`` for a struct result, whose C type is
+    ``ret``); ``prelude`` is C placed before the code (the vendor type names and IQmath the
+    code expects from headers it does not paste).
     """
 
     def __init__(self, code: str, entry: str, params: list, inputs: list, outputs: list,
-                 prelude: str = "") -> None:
+                 prelude: str = "", ret: str = "") -> None:
         self.code, self.entry, self.params = code, entry, params
         self.inputs, self.outputs, self.prelude = inputs, outputs, prelude
+        self.ret = ret  # the C type of a struct result (return.FIELD outputs)
 
     def input_decls(self) -> list:
         return self.inputs
@@ -257,8 +259,8 @@ class Unit:
 
 def _unit_c_name(unit: Unit, name: str) -> str:
     """The C expression for an input/output name inside the driver."""
-    if name == "return":
-        return "ret"
+    if name == "return" or name.startswith("return."):
+        return "ret" + name[6:]
     pointers = {n for s, n in unit.params if s.rstrip()[-1:] in "*]"}
     scalars = {n for s, n in unit.params if s.rstrip()[-1:] not in "*]"}
     if name.startswith("*") and name[1:] in pointers:
@@ -295,7 +297,7 @@ def _unit_source(unit: Unit, vectors: list, target: str) -> str:
             decls.append(f"{spelling} v_{name}; memset(&v_{name}, 0, sizeof v_{name});")
             args.append(f"v_{name}")
     load = " ".join(f"{_unit_c_name(unit, n)} = in.f{i};" for i, (_, n) in enumerate(unit.inputs))
-    ret = [s for s, n in unit.outputs if n == "return"]
+    ret = [unit.ret] if unit.ret else [s for s, n in unit.outputs if n == "return"]
     call = f"{ret[0]} ret = {unit.entry}({', '.join(args)});" if ret else \
         f"{unit.entry}({', '.join(args)});"
     prints = " ".join(f"put(' '); put_hex((uint64_t)({_unit_c_name(unit, n)}), "

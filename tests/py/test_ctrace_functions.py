@@ -142,6 +142,29 @@ void svm(svm_t *s)
 }
 """
 
+BYVALUE = r"""
+#include <stdint.h>
+typedef struct { int16_t a; int16_t b; } phase_t;
+typedef struct { int16_t alpha; int16_t beta; } albe_t;
+
+static albe_t to_albe(phase_t in)
+{
+  albe_t out;
+  int32_t t = ((int32_t)in.a + 2 * (int32_t)in.b) * 18919;
+  out.alpha = in.a;
+  out.beta = (int16_t)(t >> 15);
+  return out;
+}
+
+albe_t scaled(phase_t x, int16_t gain_q12)
+{
+  albe_t r = to_albe(x);
+  r.alpha = (int16_t)(((int32_t)r.alpha * gain_q12) >> 12);
+  r.beta = (int16_t)(((int32_t)r.beta * gain_q12) / 4096);
+  return r;
+}
+"""
+
 ISQRT = r"""
 #include <stdint.h>
 uint16_t isqrt32(uint32_t v)
@@ -218,6 +241,18 @@ def test_loops_tables_and_globals():
         "value"] == 63245  # floor(sqrt(4e9)) = 63245.55…
 
 
+def test_structs_by_value_in_and_out():
+    r = trace(BYVALUE, "avr", {"x.a": -1000, "x.b": 0, "gain_q12": 3000}, entry="scaled")
+    v = r["vars"]
+    # beta = -1000·18919 >> 15 = -578 (floor of -577.36); alpha·3000 >> 12 = floor(-732.42)
+    # = -733, beta·3000 / 4096 = trunc(-423.34) = -423: the same scaling rounds two ways
+    assert (v["return.alpha"]["value"], v["return.beta"]["value"]) == (-733, -423)
+    rounding = r["rounding"]
+    assert rounding["r.alpha"] == {"floor": 1, "toward_zero": 0, "max_lost": 2368 / 4096}
+    assert rounding["r.beta"] == {"floor": 0, "toward_zero": 1, "max_lost": 1392 / 4096}
+    assert rounding["to_albe:out.beta"]["floor"] == 1  # inside the call
+
+
 def test_switch_falls_through_to_the_next_label():
     r = trace(SVM, "arm", {"s.alpha": 0, "s.beta": -100}, entry="svm")
     v = r["vars"]
@@ -245,7 +280,7 @@ def test_unset_inputs_error_names_them_or_read_as_zero():
     ("int f(int x) { return f(x); }", "f", {"x": 1}, "code", "f() calls itself"),
     ("int f(int x) { if (x) return 1; }", "f", {"x": 0}, "code", "f() ends without 'return'"),
     ("int t[3]; int f(int i) { return t[i]; }", "f", {"i": 3}, "code",
-     "index 3 is outside 0..2"),
+     "index 3 is outside t[0..2]"),
     ("int f(int x) { while (x) { x = 1; } return x; }", "f", {"x": 1}, "code",
      "more than 10000 statements executed"),
     ("struct s; int f(struct s *p) { return 0; }", "f", {}, "code",
@@ -318,6 +353,10 @@ UNITS = {
     "svm": (Unit(SVM, "svm", [("svm_t *", "s")], [("int16_t", "s.alpha"), ("int16_t", "s.beta")],
                  [("uint16_t", "s.ta"), ("uint16_t", "s.tb"), ("uint16_t", "s.tc"),
                   ("uint8_t", "s.sector")]), {}),
+    "byvalue": (Unit(BYVALUE, "scaled", [("phase_t", "x"), ("int16_t", "gain_q12")],
+                     [("int16_t", "x.a"), ("int16_t", "x.b"), ("int16_t", "gain_q12")],
+                     [("int16_t", "return.alpha"), ("int16_t", "return.beta")], ret="albe_t"),
+                {}),
     "isqrt": (Unit(ISQRT, "isqrt32", [("uint32_t", "v")], [("uint32_t", "v")],
                    [("uint16_t", "return")]), {}),
 }

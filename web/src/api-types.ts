@@ -21,14 +21,19 @@ export interface TraceRequest {
   set?: Record<string, string | number>;
   global_q?: number;
   define?: string[];
+  /** The function of the code to run (absent: the statements outside functions). */
   entry?: string;
   zero_unset?: boolean;
 }
-/** A term of a statement; a call of a function of the pasted code carries its statements. */
-export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number; hex: string; flags: string[]; var?: string; call?: string; steps?: TraceLine[] }
-export interface TraceLine { line: number; column: number; code: string; var: string | null; type: string; value: number; hex: string; flags: string[]; terms: TraceTerm[]; spelling?: string; input?: boolean; branch?: string }
+/** A term; a call of a function of the code carries `call` and the statements it ran. */
+export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number | null; hex: string | null; flags: string[]; var?: string; rounding?: 'floor' | 'toward_zero'; lost?: number; call?: string; steps?: TraceLine[] }
+export interface TraceLine { line: number; column: number; code: string; var: string | null; type: string; value: number | null; hex: string | null; flags: string[]; terms: TraceTerm[]; spelling?: string; input?: boolean; branch?: string }
 export interface TraceVar { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
-export interface Trace { target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[]; entry?: string | null; functions?: string[] }
+export interface Trace {
+  target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[];
+  entry: string | null; functions: string[];
+  rounding: Record<string, { floor: number; toward_zero: number; max_lost: number }>;
+}
 export interface TraceExample { id: string; title: string; title_zh: string; code: string }
 
 /** `vendors.translate`: a vendor's two current-loop integers in every other vendor's scaling. */

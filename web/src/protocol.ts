@@ -87,7 +87,9 @@ export interface ExerciseSpec { id: string; chapter: string; kind: string; unit:
 export type ApiErr = {
   ok: false; field: string; message: string; message_zh?: string;
   code?: string; params?: Record<string, Json>;
-  line?: number; column?: number; inputs?: string[]; functions?: string[];
+  line?: number; column?: number; inputs?: string[];
+  /** The tracer's: the functions the code defines, whenever it parsed (to pick the entry). */
+  functions?: string[];
 };
 /** A kind's reply when it succeeds. */
 export type Ok<K extends ApiKind> = { ok: true } & ReplyBody[K];

@@ -100,7 +100,8 @@ def _step_lines(steps: list, lines: list, indent: str) -> None:
         if "branch" in s:
             what = f"-> {s['branch']}"
         elif s.get("var") is not None:
-            what = f"{s['var']} = {s['value']} ({s['hex']})"
+            what = f"{s['var']} = {s['value']} ({s['hex']})" if s.get("value") is not None \
+                else f"{s['var']} = {{…}}"  # a struct, its fields in vars
         else:
             what = f"= {s['value']} ({s['hex']})" if s.get("value") is not None else ""
         if s.get("input"):

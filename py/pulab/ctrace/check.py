@@ -232,8 +232,8 @@ class _Checker:
             if desc.size is not None:
                 n = constant_value(desc.size, "an array size")
                 if not 1 <= n <= MAX_ELEMENTS:
-                    raise TraceError(desc.size.line, desc.size.column, f"array of {n} "
-                                     f"elements: at most {MAX_ELEMENTS} integers per object")
+                    raise TraceError(desc.size.line, desc.size.column, code="trace_array_size",
+                                     n=n, limit=MAX_ELEMENTS)
             return PtrT(to, n)
         if isinstance(desc, Arr):
             if desc.size is None:
@@ -242,8 +242,8 @@ class _Checker:
             n = constant_value(desc.size, "an array size")
             of = self.resolve(desc.of, node)
             if not 1 <= n <= MAX_ELEMENTS or n * max(1, len(leaves("", of))) > MAX_ELEMENTS:
-                raise TraceError(desc.size.line, desc.size.column, f"array of {n} elements: "
-                                 f"at most {MAX_ELEMENTS} integers per object")
+                raise TraceError(desc.size.line, desc.size.column, code="trace_array_size", n=n,
+                                 limit=MAX_ELEMENTS)
             return ArrT(of, n)
         return self.struct(desc, node)
 
@@ -262,8 +262,8 @@ class _Checker:
                                  "has an incomplete type")
             st.fields[name] = (ft, spelling)
         if len(leaves("", st)) > MAX_ELEMENTS:
-            raise TraceError(sdef.line, sdef.column, f"struct {sdef.name}: at most "
-                             f"{MAX_ELEMENTS} integers per object")
+            raise TraceError(sdef.line, sdef.column, code="trace_struct_size", name=sdef.name,
+                             limit=MAX_ELEMENTS)
         return st
 
     def declare(self, name: str, spelling, ctype, initialized: bool, node) -> Symbol:
@@ -327,6 +327,11 @@ class _Checker:
                                      "'return' takes no value")
             elif s.value is None:
                 raise TraceError(s.line, s.column, f"{f.name}() must return a value")
+            elif isinstance(f.ret, StructT):
+                vt = self.expr(s.value)
+                if vt is not f.ret:
+                    raise TraceError(s.value.line, s.value.column, f"{f.name}() returns "
+                                     f"{describe(f.ret)}, not {describe(vt)}")
             else:
                 self.scalar(s.value)
         elif isinstance(s, Switch):
@@ -512,9 +517,8 @@ class _Checker:
         if f is None:
             self.refused(e.name, e)
             known = ", ".join(self.program.functions) or "none"
-            raise TraceError(e.line, e.column, f"unknown function {e.name}() (functions of "
-                             f"the code: {known}; IQmath: _IQmpy, _IQNmpy, __IQmpy, _IQsat, "
-                             "__IQsat, _IQabs)")
+            raise TraceError(e.line, e.column, code="trace_unknown_function", name=e.name,
+                             known=known)
         e.func = f
         if self.function is not None:
             self.function.calls.add(f.name)
@@ -539,16 +543,13 @@ class _Checker:
         self.scopes.append({})
         for name, desc, spelling, tok in node.params:
             t = self.resolve(desc, tok)
-            if isinstance(t, StructT) and not entry:
-                raise TraceError(tok.line, tok.column, f"a struct passed by value ({name}) is "
-                                 "supported only for the entry function (pass a pointer)")
             f.params.append(self.declare(name, spelling, t, True, tok))
         f.scope = self.scopes.pop()
         self.function = None
         f.ret = self.resolve(node.ret, node)
-        if not isinstance(f.ret, CType) and f.ret is not VOID:
+        if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID:
             raise TraceError(node.line, node.column, f"{f.name}() returns {describe(f.ret)}: "
-                             "only integer and void results are supported")
+                             "only integer, struct and void results are supported")
 
     def body(self, f: Function) -> None:
         self.function = f
@@ -580,8 +581,7 @@ class _Inputs:
     def tick(self, node) -> None:
         self.visits += 1
         if self.visits > MAX_ANALYSIS:
-            raise TraceError(node.line, node.column, f"the calls reach more than {MAX_ANALYSIS} "
-                             "expressions: too large to trace")
+            raise TraceError(node.line, node.column, code="trace_analysis", limit=MAX_ANALYSIS)
 
     def read(self, path: str, t, assigned) -> None:
         for leaf, _, _ in leaves(path, t):
@@ -700,8 +700,7 @@ class _Inputs:
                 self.expr(arg, a)
             return
         if f.name in self.active:
-            raise TraceError(e.line, e.column, f"{f.name}() calls itself (recursion is not "
-                             "supported)")
+            raise TraceError(e.line, e.column, code="trace_recursion", name=f.name)
         bound = []
         for arg, p in zip(e.args, f.params):
             if isinstance(p.ctype, PtrT):
@@ -814,11 +813,10 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
             next(iter(program.refused.values()))[0]
     if entry is not None and entry not in program.functions:
         known = ", ".join(program.functions) or "none"
-        raise InputError("entry", f"no function {entry} in the code (functions: {known})")
+        raise InputError("entry", code="trace_no_entry", name=entry, known=known)
     if entry is None and program.functions and not any(
             not isinstance(s, Decl) for s in program.statements if not isinstance(s, Block)):
-        raise InputError("entry", "choose the function to run (functions: "
-                         f"{', '.join(program.functions)})")
+        raise InputError("entry", code="trace_choose_entry", known=", ".join(program.functions))
     for s in program.statements:
         c.statement(s)
     for name, node in program.functions.items():
@@ -884,6 +882,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
                 add(p.key, p.ctype, p.spelling, p.line, p.column, False, True)
         for sym in _entry_locals(f.node.body):
             add(sym.key, sym.ctype, sym.spelling, sym.line, sym.column, True, False)
+        if isinstance(f.ret, StructT):  # a struct result: return.FIELD
+            add("return", f.ret, f.ret_spelling, f.node.line, f.node.column, True, False)
     for note in program.notes.values():
         if note.name not in symbols:
             raise TraceError(note.line, note.column, f"the annotation names {note.name}, "

@@ -14,8 +14,11 @@ class TraceError(InputError):
     ----------
     line, column : int >= 1
         Where in the pasted code (1-based; ``column`` counts characters).
-    message : str
-        What is wrong there, one line, without the position.
+    message : str, optional
+        What is wrong there, one line, without the position (free text).
+    code : str, optional
+        Instead of ``message``: a code of :data:`pulab.schema.catalog.MESSAGES` whose
+        ``params`` fill its English and Chinese text.
 
     Examples
     --------
@@ -23,8 +26,15 @@ class TraceError(InputError):
     'code: 3:14: division by zero'
     """
 
-    def __init__(self, line: int, column: int, message: str, field: str = "code") -> None:
-        super().__init__(field, f"{line}:{column}: {message}")
+    def __init__(self, line: int, column: int, message: str | None = None, field: str = "code",
+                 *, code: str | None = None, **params) -> None:
+        if code is None:  # free text, its Chinese from pulab.schema.messages
+            super().__init__(field, f"{line}:{column}: {message}")
+            self.reason = message
+        else:  # a catalog code: the position, then the reason in either language
+            from ..schema.catalog import render
+            super().__init__(field, code="trace_at", line=line, column=column,
+                             reason={"code": code, "params": params})
+            self.reason = render(code, params, "en")
         self.line = line
         self.column = column
-        self.reason = message

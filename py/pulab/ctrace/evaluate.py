@@ -171,15 +171,14 @@ class Evaluator:
         v = self.mem.get(path)
         if v is None:
             if path in self.unset:
-                raise TraceError(node.line, node.column, f"{path} is read before it has a "
-                                 f"value (unset inputs: {', '.join(self.unset)}; give each "
-                                 "a value, or use zero-unset)", field=f"set.{path}")
+                raise TraceError(node.line, node.column, field=f"set.{path}",
+                                 code="trace_unset_input", name=path,
+                                 unset=", ".join(self.unset))
             if self.checked.entry is None:
                 raise TraceError(node.line, node.column, f"{path} is read before it has a value"
                                  " (give it an input value or an initializer)",
                                  field=f"set.{path}")
-            raise TraceError(node.line, node.column, f"{path} is read before it has a value "
-                             "(it has no initializer)")
+            raise TraceError(node.line, node.column, code="trace_unset_local", name=path)
         return v
 
     def put(self, path: str, value) -> None:
@@ -213,7 +212,7 @@ class Evaluator:
                 self.block(f.node.body.statements)
                 if f.ret is not VOID:
                     raise TraceError(f.node.close_line, f.node.close_column,
-                                     f"{f.name}() ends without 'return'")
+                                     code="trace_no_return", name=f.name)
             except _Return as r:
                 self.values["return"] = r.value
             self.active.pop()
@@ -247,6 +246,8 @@ class Evaluator:
                     continue
                 if isinstance(t, (StructT, ArrT)):
                     self.aggregate(key, t, init)
+                    if self.terms:  # a call or computed elements: keep what they did
+                        self.step(s, code, key, None, VOID)
                     self.terms = []
                     continue
                 if isinstance(t, PtrT):
@@ -291,6 +292,10 @@ class Evaluator:
             if s.value is None:
                 self.step(s, src[s.start:s.end], None, None, VOID)
                 raise _Return(None)
+            if isinstance(f.ret, StructT):  # copied out: the callee's frame goes on the next call
+                self.copy(f"{f.prefix}return", self.eval(s.value), f.ret)
+                self.step(s, src[s.start:s.end], "return", None, VOID)
+                raise _Return(f"{f.prefix}return")
             stored, flags = self.store(self.eval(s.value), f.ret)
             self.step(s, src[s.start:s.end], "return", stored, f.ret, flags=flags)
             raise _Return(stored)
@@ -327,8 +332,7 @@ class Evaluator:
 
     def too_long(self, s) -> None:
         at = self.loops[-1] if self.loops else s  # the loop that runs on, when there is one
-        raise TraceError(at.line, at.column, f"more than {MAX_STEPS} statements executed "
-                         "(a loop that does not end?)")
+        raise TraceError(at.line, at.column, code="trace_steps", limit=MAX_STEPS)
 
     def loop(self, s: Loop) -> None:
         self.loops.append(s)
@@ -415,16 +419,17 @@ class Evaluator:
                 return e.flat.key
             base = self.eval(e.base) if e.arrow else self.place(e.base)
             if base is None:
-                raise TraceError(e.line, e.column, "a pointer without a value")
+                raise TraceError(e.line, e.column, code="trace_null_pointer")
             return f"{base}.{e.field}"
         if kind is Index:
             i = self.eval(e.index)
             bt = e.base.ctype
             if isinstance(bt, ArrT):
+                base = self.place(e.base)
                 if not 0 <= i < bt.n:
-                    raise TraceError(e.index.line, e.index.column, f"index {i} is outside "
-                                     f"0..{bt.n - 1}")
-                return f"{self.place(e.base)}[{i}]"
+                    raise TraceError(e.index.line, e.index.column, code="trace_index", index=i,
+                                     array=base, last=bt.n - 1)
+                return f"{base}[{i}]"
             return self.offset(self.eval(e.base), i, e)
         ptr = self.eval(e.operand)  # *p
         return ptr
@@ -436,11 +441,11 @@ class Evaluator:
         head, bracket, k = ptr[:-1].rpartition("[")
         n = self.checked.objects.get(head) if bracket and ptr.endswith("]") else None
         if n is None:
-            raise TraceError(node.line, node.column, f"{ptr} is one object, not an element of "
-                             "an array: only index 0 exists")
+            raise TraceError(node.line, node.column, code="trace_one_object", name=ptr)
         j = int(k) + i
         if not 0 <= j < n:
-            raise TraceError(node.line, node.column, f"index {j} is outside {head}[0..{n - 1}]")
+            raise TraceError(node.line, node.column, code="trace_index", index=j, array=head,
+                             last=n - 1)
         return f"{head}[{j}]"
 
     # -- expressions
@@ -620,10 +625,9 @@ class Evaluator:
         """A call of a function of the code: its statements become the call term's ``steps``."""
         f = e.func
         if f.name in self.active:
-            raise TraceError(e.line, e.column, f"{f.name}() calls itself (recursion is not "
-                             "supported)")
+            raise TraceError(e.line, e.column, code="trace_recursion", name=f.name)
         if len(self.active) >= MAX_CALL_DEPTH:
-            raise TraceError(e.line, e.column, f"calls nested more than {MAX_CALL_DEPTH} deep")
+            raise TraceError(e.line, e.column, code="trace_call_depth", limit=MAX_CALL_DEPTH)
         flags: list = []
         args = []
         for a, p in zip(e.args, f.params):
@@ -633,12 +637,18 @@ class Evaluator:
                 if conv and "conversion" not in flags:
                     flags.append("conversion")
                 v = w
+            elif isinstance(p.ctype, StructT):  # by value: the callee gets a copy
+                v = [(leaf[len(v):], self.mem.get(leaf)) for leaf, _, _ in leaves(v, p.ctype)]
             args.append(v)
         mem = self.mem
         for k in [k for k in mem if k.startswith(f.prefix)]:
             del mem[k]  # a fresh frame: the callee's locals have no value yet
         for p, v in zip(f.params, args):
-            mem[p.key] = v
+            if isinstance(p.ctype, StructT):
+                for suffix, x in v:
+                    mem[p.key + suffix] = x
+            else:
+                mem[p.key] = v
         outer_terms, outer_steps, outer_path = self.terms, self.steps, self.last_path
         self.terms, self.steps = [], []
         self.active.append(f.name)
@@ -647,7 +657,7 @@ class Evaluator:
             self.block(f.node.body.statements)
             if f.ret is not VOID:
                 raise TraceError(f.node.close_line, f.node.close_column,
-                                 f"{f.name}() ends without 'return'")
+                                 code="trace_no_return", name=f.name)
         except _Return as r:
             value = r.value
         self.active.pop()
@@ -655,9 +665,11 @@ class Evaluator:
         self.terms, self.steps, self.last_path = outer_terms, outer_steps, outer_path
         if self.record:
             t = e.ctype
+            scalar = isinstance(t, CType)
             self.terms.append({"expr": self.source[e.start:e.end], "line": e.line,
-                               "column": e.column, "type": t.name, "value": value,
-                               "hex": hex_of(value, t.bits) if value is not None else None,
+                               "column": e.column, "type": t.name,
+                               "value": value if scalar else None,
+                               "hex": hex_of(value, t.bits) if scalar else None,
                                "flags": flags, "call": f.name, "steps": inner})
         return value
 

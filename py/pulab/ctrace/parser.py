@@ -344,8 +344,7 @@ class Program:
 
 
 def _unknown_type(tok: Token) -> TraceError:
-    return TraceError(tok.line, tok.column, f"unknown type {tok.text} (is the header that "
-                      "defines it pasted?)")
+    return TraceError(tok.line, tok.column, code="trace_unknown_type", name=tok.text)
 
 
 def _fail(tok: Token, message: str) -> TraceError:

@@ -14,7 +14,8 @@ from __future__ import annotations
 
 import re
 
-from .check import VOID, Checked, check
+from ..fixedpoint.cint import CType
+from .check import Checked, check
 from .evaluate import Evaluator, hex_of
 from .errors import TraceError
 from .parser import parse
@@ -51,7 +52,7 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     ``entry`` the function to run (None: the statements outside functions)."""
     if entry is not None and (not isinstance(entry, str) or
                               not re.fullmatch(r"[A-Za-z_]\w*", entry.strip())):
-        raise InputError("entry", f"must be a function name, got {shown(entry)}")
+        raise InputError("entry", code="trace_entry_name", got=shown(entry))
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
@@ -213,7 +214,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
         if name in notes and v is not None:
             d.update(_meaning(notes[name], v))
         out_vars[name] = d
-    if entry is not None and entry.ret is not VOID:
+    if entry is not None and isinstance(entry.ret, CType):
         v = values.get("return")
         out_vars["return"] = {"type": entry.ret_spelling, "c_type": entry.ret.name,
                               "bits": entry.ret.bits, "signed": entry.ret.signed, "value": v,

@@ -25,6 +25,42 @@ __all__ = ["MESSAGES", "render"]
 
 #: code → (English, Chinese); ``str.format`` fields name the error's params.
 MESSAGES = {
+    # the C tracer (pulab.ctrace): the position in the code, then the reason
+    "trace_at": ("{line}:{column}: {reason}", "{line}:{column}：{reason}"),
+    "trace_unset_input": ("{name} is read before it has a value (unset inputs: {unset}; give "
+                          "each a value, or use zero-unset)",
+                          "{name} 在赋值之前被读取（未设置的输入：{unset}；请逐个给值，或使用 "
+                          "zero-unset）"),
+    "trace_unset_local": ("{name} is read before it has a value (it has no initializer)",
+                          "{name} 在赋值之前被读取（它没有初始值）"),
+    "trace_steps": ("more than {limit} statements executed (a loop that does not end?)",
+                    "执行了超过 {limit} 条语句（循环不结束？）"),
+    "trace_no_return": ("{name}() ends without 'return'", "{name}() 没有 'return' 就结束了"),
+    "trace_index": ("index {index} is outside {array}[0..{last}]",
+                    "下标 {index} 超出 {array}[0..{last}]"),
+    "trace_one_object": ("{name} is one object, not an element of an array: only index 0 "
+                         "exists", "{name} 是单个对象，不是数组元素：只有下标 0"),
+    "trace_null_pointer": ("a pointer without a value", "指针没有值"),
+    "trace_recursion": ("{name}() calls itself (recursion is not supported)",
+                        "{name}() 调用了自身（不支持递归）"),
+    "trace_call_depth": ("calls nested more than {limit} deep", "函数调用嵌套超过 {limit} 层"),
+    "trace_analysis": ("the calls reach more than {limit} expressions: too large to trace",
+                       "调用涉及超过 {limit} 个表达式：太大，无法追踪"),
+    "trace_array_size": ("array of {n} elements: at most {limit} integers per object",
+                         "{n} 个元素的数组：每个对象最多 {limit} 个整数"),
+    "trace_struct_size": ("struct {name}: at most {limit} integers per object",
+                          "结构体 {name}：每个对象最多 {limit} 个整数"),
+    "trace_unknown_function": ("unknown function {name}() (functions of the code: {known}; "
+                               "IQmath: _IQmpy, _IQNmpy, __IQmpy, _IQsat, __IQsat, _IQabs)",
+                               "未知函数 {name}()（代码中的函数：{known}；IQmath：_IQmpy、"
+                               "_IQNmpy、__IQmpy、_IQsat、__IQsat、_IQabs）"),
+    "trace_unknown_type": ("unknown type {name} (is the header that defines it pasted?)",
+                           "未知类型 {name}（定义它的头文件粘贴了吗？）"),
+    "trace_no_entry": ("no function {name} in the code (functions: {known})",
+                       "代码中没有函数 {name}（函数：{known}）"),
+    "trace_choose_entry": ("choose the function to run (functions: {known})",
+                           "请选择要运行的函数（函数：{known}）"),
+    "trace_entry_name": ("must be a function name, got {got}", "必须是函数名，当前为 {got}"),
     "required": ("is required", "必填"),
     "required_choice": ("is required (one of {choices})", "必填（以下之一：{choices}）"),
     "not_json_object": ("must be a JSON object", "必须是 JSON 对象"),

@@ -88,6 +88,7 @@ export default async function code(ctx) {
     await check(`code: screenshot ${width}px ${locale}`, async () => {
       const p = await newPage({ locale, context: { viewport: { width, height: 900 } } });
       await p.goto(`${subSrv.url}?code=${encodeURIComponent(CODE)}&target=c28x&vs=arm&set.gMotorInfo.Voltage=6554`);
+      await p.click('nav.tabs a[data-view="firmware"]'); // the code panel's tab
       await p.waitForSelector('[data-key="code.arm.vars.m_Ulong.value"][data-value]', { timeout: 60_000 });
       await p.$eval('#panel-code', (e) => e.scrollIntoView());
       await p.screenshot({ path: join(SHOTS, `code-${width}-${locale}.png`) });

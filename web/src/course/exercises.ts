@@ -146,7 +146,7 @@ async function runTrace(el: HTMLElement, env: ExerciseEnv): Promise<void> {
   const steps = result.steps.filter((s) => !s.input);
   out.replaceChildren(...steps.map((s) => {
     const li = document.createElement('li');
-    li.textContent = `${t('exTraceLine', { line: s.line, var: s.var ?? s.code, value: s.value })}${s.flags.length ? `  ⚠ ${s.flags.join(', ')}` : ''}`;
+    li.textContent = `${t('exTraceLine', { line: s.line, var: s.var ?? s.code, value: s.value ?? '' })}${s.flags.length ? `  ⚠ ${s.flags.join(', ')}` : ''}`;
     if (s.flags.some((f) => f !== 'truncation')) li.className = 'flagged';
     return li;
   }));

@@ -5,7 +5,7 @@ export default dict(
   {
     p_code: 'Your code: every intermediate integer, as the target computes it',
     nav_code: 'Your code',
-    codeIntro: 'Paste C scaling code (declarations, assignments, IQmath calls). Variables the code reads before assigning them are inputs; names matching the report\'s integers (raw inputs, vendor results, PI gains) are filled in from the current motor. Annotate Q formats with // @q NAME Q12 base=NUMBER UNIT.',
+    codeIntro: 'Paste C scaling code (declarations, assignments, IQmath calls) or a whole file with its structs and functions, then pick the function. Variables the code reads before assigning them are inputs; names matching the report\'s integers (raw inputs, vendor results, PI gains) are filled in from the current motor. Annotate Q formats with // @q NAME Q12 base=NUMBER UNIT.',
     codeExample: 'Example',
     codeExampleCustom: '(your code)',
     codeSource: 'C code',
@@ -40,7 +40,7 @@ export default dict(
   {
     p_code: '你的代码：按目标编译器的规则显示每个中间整数',
     nav_code: '你的代码',
-    codeIntro: '粘贴 C 定标代码（声明、赋值、IQmath 调用）。代码在赋值前读取的变量即为输入；名字与报告中的整数（原始输入、汇川结果、PI 增益）相同的，自动填入当前电机的值。用 // @q NAME Q12 base=数值 单位 注明 Q 格式。',
+    codeIntro: '粘贴 C 定标代码（声明、赋值、IQmath 调用），或带结构体和函数的整个文件，再选择要运行的函数。代码在赋值前读取的变量即为输入；名字与报告中的整数（原始输入、汇川结果、PI 增益）相同的，自动填入当前电机的值。用 // @q NAME Q12 base=数值 单位 注明 Q 格式。',
     codeExample: '示例',
     codeExampleCustom: '（你的代码）',
     codeSource: 'C 代码',

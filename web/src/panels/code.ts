@@ -70,15 +70,16 @@ function run(ctx: PanelContext): void {
     main = a;
     other = b;
     const found = a?.functions ?? [];
-    if (JSON.stringify(found) !== JSON.stringify(functions)) {
+    // A file of functions and nothing else to run: start with the last one defined.
+    const pick = a && !a.ok && a.field === 'entry' && !s.entry && found.length > 0;
+    if (pick) s.entry = found[found.length - 1];
+    if (pick || JSON.stringify(found) !== JSON.stringify(functions)) {
       functions = found;
       builtFor = ''; // the function menu changes
       const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
       if (el && lastCtx) codePanel.render(el, lastCtx);
     }
-    // A file of functions and nothing else to run: start with the last one defined.
-    if (a && !a.ok && a.field === 'entry' && !s.entry && found.length) {
-      s.entry = found[found.length - 1];
+    if (pick) {
       run(ctx);
       return;
     }
@@ -140,7 +141,7 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
       h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
         ...s.terms.map((tm, j) => (tm.call && tm.steps ? callSteps(tm, `${k}.terms.${j}`) : null))),
       h('td', {}, s.var ? h('code', {}, s.var) : ''),
-      h('td', { class: 'r' }, intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
+      h('td', { class: 'r' }, s.value === null ? '' : intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
       h('td', {}, flagChips(s.flags)),
       b ? h('td', { class: 'r' }, o ? [intCell(`code.${b.target}.steps.${i}.value`, o.value, o.hex, differs), h('div', { class: 'ctype' }, o.type)] : '—') : null,
       b ? h('td', {}, o ? flagChips(o.flags) : '') : null));
