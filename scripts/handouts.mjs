@@ -65,8 +65,26 @@ const pages = (file) => {
     return '?';
   }
 };
+/**
+ * The text of a PDF by pdftotext (poppler-utils), or null without it: each handout must carry the
+ * engine's numbers for the source document's motor (U_b 9.81495 V, Rpm 15022), not placeholders.
+ */
+const text = (file) => {
+  try {
+    return execFileSync('pdftotext', [file, '-']).toString();
+  } catch {
+    return null;
+  }
+};
+const missing = [];
 for (const f of made) {
   console.log(`handouts: dist/handouts/${f} — ${pages(join(OUT, f))} pages`);
+  const t = text(join(OUT, f));
+  if (t !== null) for (const want of ['9.81495', '15022']) if (!t.includes(want)) missing.push(`${f} lacks ${want}`);
   if (process.env.HANDOUTS_PNG) execFileSync('pdftoppm', ['-png', '-r', '60', join(OUT, f), join(OUT, f.replace(/\.pdf$/, ''))]);
 }
 if (process.env.HANDOUTS_PNG) console.log(`handouts: ${readdirSync(OUT).filter((f) => f.endsWith('.png')).length} PNG pages in dist/handouts/`);
+if (missing.length) {
+  console.error(`handouts: ${missing.join('; ')}`);
+  process.exit(1);
+}
