@@ -173,7 +173,7 @@ KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "r
              "export.header": ["input"], "export.csv_current": ["input"], "export.csv_pll": ["input"],
              "sweep": ["input", "x", "y", "profile"], "sweep.plan": ["input", "x", "y", "profile"],
              "sweep.chunk": ["input", "x", "start", "count"], "sweep.merge": ["input", "x", "summaries"],
-             "batch": ["csv", "start", "count"], "trace": ["code", "target", "set", "global_q", "define"],
+             "batch": ["csv", "start", "count"], "trace": ["code", "target", "set", "global_q", "define", "entry", "zero_unset"],
              "trace.examples": ["x"], "vendors.header": ["input", "profile"],
              "vendors.translate": ["input", "from", "axis", "values"],
              "prove": ["input", "ranges", "budget"], "prove.plan": ["input", "ranges"],
@@ -191,6 +191,7 @@ def test_fuzzed_kinds_keep_the_api_contract():
     rng = random.Random(21)
     valid = {"input": PLAIN, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3},
              "format": "Q3.12", "value": 0.5, "csv": "name,motor.rs_ohm\na,1\n", "code": CODE[0],
+             "set": {"v": 6554},
              "profile": "ti", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
              "summaries": [], "start": 0, "count": 1, "ranges": {"motor.rs_ohm": [1, 2]},
              "budget": 20, "name": "vendor.Rpm", "integers": {},
