@@ -18,7 +18,7 @@ import re
 import sys
 
 from .schema.errors import InputError
-from .cli.family import add_family_commands, read_json
+from .cli.family import add_family_commands, read_json, write_result
 from .schema.validate import shown
 from .report import format_text, report
 from .cli.trace import add_trace_parser, trace_main
@@ -50,11 +50,7 @@ def main(argv: list | None = None) -> int:
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
-    if args.format == "text":
-        sys.stdout.write(format_text(r))
-    else:
-        json.dump(r, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
-        sys.stdout.write("\n")
+    write_result(r, args.format, format_text)
     return 0
 
 

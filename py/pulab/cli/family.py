@@ -53,6 +53,16 @@ def read_json(path: str):
     return parse(read_text(path))
 
 
+def write_result(r, fmt: str, text) -> None:
+    """A subcommand's result on stdout: ``text(r)`` for ``--format text``, else indented
+    strict JSON (non-ASCII kept)."""
+    if fmt == "text":
+        sys.stdout.write(text(r))
+    else:
+        json.dump(r, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
+        sys.stdout.write("\n")
+
+
 def parse_axis(text: str, field: str) -> dict:
     """``PATH=START:STOP[:N][:log|linear]`` → a sweep axis.
 

@@ -18,7 +18,7 @@ import sys
 
 from ..schema.errors import InputError
 from ..schema.validate import shown
-from .family import read_json
+from .family import read_json, write_result
 
 __all__ = ["add_prove_parser", "parse_range", "format_prove_text"]
 
@@ -104,9 +104,5 @@ def _run(args) -> int:
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
-    if args.format == "text":
-        sys.stdout.write(format_prove_text(r))
-    else:
-        json.dump(r, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
-        sys.stdout.write("\n")
+    write_result(r, args.format, format_prove_text)
     return 0 if r["verdict"] == "proven" else 1

@@ -207,15 +207,7 @@ class Evaluator:
                         self.mem[path] = inputs[path]
                         self.step(p, f"{spelling} {path}", path, inputs[path], t,
                                   spelling=spelling, input=True)
-            self.active.append(f.name)
-            try:
-                self.block(f.node.body.statements)
-                if f.ret is not VOID:
-                    raise TraceError(f.node.close_line, f.node.close_column,
-                                     code="trace_no_return", name=f.name)
-            except _Return as r:
-                self.values["return"] = r.value
-            self.active.pop()
+            self.values["return"] = self.body(f)
         for name in self.checked.symbols:
             self.values[name] = self.mem.get(name)
         return self.steps
@@ -408,6 +400,21 @@ class Evaluator:
         """Convert to ``ctype`` as an assignment does; flag a changed value."""
         w = convert(value, ctype)
         return w, (["conversion"] if w != value else [])
+
+    def body(self, f):
+        """Run function ``f``'s body (its frame already set up); its return value, None for
+        a void function or one that falls off its end (an error unless void)."""
+        self.active.append(f.name)
+        value = None
+        try:
+            self.block(f.node.body.statements)
+            if f.ret is not VOID:
+                raise TraceError(f.node.close_line, f.node.close_column,
+                                 code="trace_no_return", name=f.name)
+        except _Return as r:
+            value = r.value
+        self.active.pop()
+        return value
 
     # -- places (lvalues): the path of the object an expression designates
     def place(self, e) -> str:
@@ -651,16 +658,7 @@ class Evaluator:
                 mem[p.key] = v
         outer_terms, outer_steps, outer_path = self.terms, self.steps, self.last_path
         self.terms, self.steps = [], []
-        self.active.append(f.name)
-        value = None
-        try:
-            self.block(f.node.body.statements)
-            if f.ret is not VOID:
-                raise TraceError(f.node.close_line, f.node.close_column,
-                                 code="trace_no_return", name=f.name)
-        except _Return as r:
-            value = r.value
-        self.active.pop()
+        value = self.body(f)
         inner = self.steps
         self.terms, self.steps, self.last_path = outer_terms, outer_steps, outer_path
         if self.record:
