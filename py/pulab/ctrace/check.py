@@ -111,6 +111,12 @@ def describe(t) -> str:
     return t.name
 
 
+def _accepts(t, vt) -> bool:
+    """Whether a value of type ``vt`` may initialize an object of type ``t`` or be passed
+    for a parameter of it: any integer for an integer, else the same type (arrays decay)."""
+    return isinstance(vt, CType) if isinstance(t, CType) else _same(t, _decay(vt))
+
+
 def leaves(path: str, t, spelling: str = "") -> list:
     """The integers (and pointers) an object of type ``t`` at ``path`` holds:
     a list of (path, type, spelling)."""
@@ -384,11 +390,7 @@ class _Checker:
             init.ctype = t
             return
         vt = self.expr(init)
-        if isinstance(t, CType):
-            if not isinstance(vt, CType):
-                raise TraceError(init.line, init.column, f"cannot initialize {t.name} with "
-                                 f"{describe(vt)}")
-        elif not _same(t, _decay(vt)):
+        if not _accepts(t, vt):
             raise TraceError(init.line, init.column, f"cannot initialize {describe(t)} with "
                              f"{describe(vt)}")
 
@@ -527,14 +529,9 @@ class _Checker:
                              f"got {len(e.args)}")
         for a, p in zip(e.args, f.params):
             at = self.expr(a)
-            pt = p.ctype
-            if isinstance(pt, CType):
-                if not isinstance(at, CType):
-                    raise TraceError(a.line, a.column, f"argument {p.name} of {e.name}() is "
-                                     f"{pt.name}, got {describe(at)}")
-            elif not _same(pt, _decay(at)):
+            if not _accepts(p.ctype, at):
                 raise TraceError(a.line, a.column, f"argument {p.name} of {e.name}() is "
-                                 f"{describe(pt)}, got {describe(at)}")
+                                 f"{describe(p.ctype)}, got {describe(at)}")
         return f.ret
 
     def signature(self, f: Function, entry: bool) -> None:
