@@ -16,19 +16,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from oracle import RAW_NAMES, parse
+from oracle import RAW_NAMES, READS, parse
 
 M16, M32 = 0xFFFF, 0xFFFFFFFF
 S32_MIN, S32_MAX = -(1 << 31), (1 << 31) - 1
-
-#: The raw parameters each result reads (from its C statements in the seed).
-READS = {"Rpm": ("RsPm", "Current", "Voltage"),
-         "LD": ("Voltage", "Current", "FullFreq01", "LD"),
-         "LQ": ("Voltage", "Current", "FullFreq01", "LQ"),
-         "FreqPer": ("FreqRated01", "FullFreq01"),
-         "FluxRotor": ("BemfVolt", "Voltage", "FreqRated01", "FullFreq01"),
-         "pm_maxout_vol": ("uDCFilter", "Voltage"), "maxu": ("uDCFilter", "Voltage")}
-
 
 class _Run:
     """One C block over arrays: ``fail`` collects every point that wraps or divides by 0."""

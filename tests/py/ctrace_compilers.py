@@ -19,7 +19,10 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
+
+import pytest
 
 from ctrace_gen import TYPE_BITS
 
@@ -69,6 +72,21 @@ static void put_hex(uint64_t v, uint8_t bytes) {
 _TABLE_BYTES = 30000
 _PROGRAM_TABLE_BYTES = 60000
 _PROGRAM_CASES = 40
+
+
+def require(target: str, capsys) -> None:
+    """Skip the test, with a loud line, when ``target``'s compiler is missing; under CI=true
+    fail instead (the cross-check is mandatory there)."""
+    missing = available(target)
+    if not missing:
+        return
+    msg = (f"SKIPPED: compiler cross-check for {target} needs {', '.join(missing)} "
+           "(apt-get install gcc-avr avr-libc simavr gcc-multilib)")
+    if os.environ.get("CI") == "true":
+        pytest.fail(msg + " — mandatory under CI=true")
+    with capsys.disabled():
+        print(f"\n\n{'!' * len(msg)}\n{msg}\n{'!' * len(msg)}\n", file=sys.stderr)
+    pytest.skip(msg)
 
 
 def available(target: str) -> list:

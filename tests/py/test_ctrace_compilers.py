@@ -13,13 +13,11 @@ Missing tools: SKIPPED loudly; with CI=true the missing tools fail the test.
 
 from __future__ import annotations
 
-import os
 import random
-import sys
 
 import pytest
 
-from ctrace_compilers import available, run_cases
+from ctrace_compilers import require, run_cases
 from ctrace_gen import Case, generate_case, random_vector
 from pulab.profiles import inovance_code as vendor
 from pulab.ctrace import TraceError, compile_code, run_checked
@@ -34,19 +32,6 @@ MOTORS = 1_100
 # The tracer's target for each compiler: AVR's widths are C28x's (char aside; the generator's
 # char types are checked as avr, the seed blocks as c28x).
 TARGETS = {"avr": "avr", "arm": "arm"}
-
-
-def _require(target: str, capsys) -> None:
-    missing = available(target)
-    if not missing:
-        return
-    msg = (f"SKIPPED: compiler cross-check for {target} needs {', '.join(missing)} "
-           "(apt-get install gcc-avr avr-libc simavr gcc-multilib)")
-    if os.environ.get("CI") == "true":
-        pytest.fail(msg + " — mandatory under CI=true")
-    with capsys.disabled():
-        print(f"\n\n{'!' * len(msg)}\n{msg}\n{'!' * len(msg)}\n", file=sys.stderr)
-    pytest.skip(msg)
 
 
 def _vectors(checked, rng, case, target: str, n: int) -> tuple:
@@ -84,7 +69,7 @@ def _compare(cases: list, expected: list, results: list) -> tuple:
 
 @pytest.mark.parametrize("target", ["avr", "arm"])
 def test_random_snippets_match_the_compiler(target, capsys):
-    _require(target, capsys)
+    require(target, capsys)
     rng = random.Random(f"{SEED}-{target}")
     cases, expected, excluded, wraps = [], [], 0, 0
     for i in range(SNIPPETS):
@@ -157,7 +142,7 @@ def _vendor_value(name: str, raw: dict, values: dict):
 
 @pytest.mark.parametrize("target", ["avr", "arm"])
 def test_seed_statements_match_the_compiler_over_motors(target, capsys):
-    _require(target, capsys)
+    require(target, capsys)
     rng = random.Random(f"{SEED}-motors")
     motors = [_motor(rng) for _ in range(MOTORS)]
     tracer_target = "c28x" if target == "avr" else "arm"

@@ -9,13 +9,12 @@ variable must agree over random and extreme inputs.
 
 from __future__ import annotations
 
-import os
 import random
 import time
 
 import pytest
 
-from ctrace_compilers import available, run_cases
+from ctrace_compilers import require, run_cases
 from ctrace_gen import Case, random_vector
 from pulab.ctrace import TraceError, compile_code, run_checked, trace
 from pulab.ctrace.lexer import tokenize
@@ -102,12 +101,7 @@ def _traced(case: Case, target: str, rng: random.Random) -> tuple:
 
 @pytest.mark.parametrize("target", ["avr", "arm"])
 def test_macro_routines_match_the_compiler(target, capsys):
-    missing = available(target)
-    if missing:
-        msg = f"SKIPPED: compiler cross-check for {target} needs {', '.join(missing)}"
-        if os.environ.get("CI") == "true":
-            pytest.fail(msg + " — mandatory under CI=true")
-        pytest.skip(msg)
+    require(target, capsys)
     rng = random.Random(f"20261125-{target}")
     cases, expected = [], []
     for case in CASES.values():
