@@ -58,7 +58,7 @@ export default dict(
     phase: 'phase',
     frequency: 'frequency',
     pllMarginsTitle: 'PLL margins: scaled vs naive gains',
-    pllCorrect: 'scaled (seed 3.1-6)',
+    pllCorrect: 'scaled (source eq. 3.1-6)',
     pllNaive: 'naive (SI gains, integrator 2f_b)',
     kpTsG: 'kp·Ts·g',
     boundary: 'Stable while kp·Ts·g < {b}',

@@ -40,7 +40,7 @@ export default dict(
     state_storage_partly: 'The saved state was damaged: the fields below could not be used, everything else was kept.',
     state_shown_url: 'link',
     state_shown_storage: 'last saved state',
-    state_shown_default: 'seed example',
+    state_shown_default: 'the source document\'s example',
     state_reason_json: 'not readable as a state (JSON object)',
     state_reason_shape: 'must be an object, got {got}',
     state_reason_type: 'wrong type for this field, got {got}',

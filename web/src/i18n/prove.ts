@@ -5,7 +5,7 @@ export default dict(
   {
     p_prove: 'Prove: no integer overflows for any motor in the ranges',
     nav_prove: 'Prove',
-    prIntro: 'Give ranges to inputs of this motor (the rest stays as entered). For every motor in the box — not a sample — each firmware integer of the seed\'s Inovance code is proven in range (no wrap, no Uint16 store that changes it, no division by zero, not 0), or a motor that breaks it is given, which opens as the page input. Interval arithmetic over the exact C integers, refined by splitting the box.',
+    prIntro: 'Give ranges to inputs of this motor (the rest stays as entered). For every motor in the box — not a sample — each firmware integer of the source document\'s Inovance code is proven in range (no wrap, no Uint16 store that changes it, no division by zero, not 0), or a motor that breaks it is given, which opens as the page input. Interval arithmetic over the exact C integers, refined by splitting the box.',
     prPath: 'Input',
     prLo: 'from',
     prHi: 'to',
@@ -42,7 +42,7 @@ export default dict(
   {
     p_prove: '证明：范围内任何电机都不会有整数溢出',
     nav_prove: '证明',
-    prIntro: '给本电机的输入设定范围（其余保持输入值）。对盒子里的每一台电机——不是抽样——证明种子文档汇川代码的每个固件整数都在范围内（不回绕、Uint16 存储不改变数值、不除以零、不为 0），或者给出一台使其失效的电机，可一键作为页面输入打开。方法：在精确的 C 整数语义上做区间运算，并不断切分盒子。',
+    prIntro: '给本电机的输入设定范围（其余保持输入值）。对盒子里的每一台电机——不是抽样——证明原文汇川代码的每个固件整数都在范围内（不回绕、Uint16 存储不改变数值、不除以零、不为 0），或者给出一台使其失效的电机，可一键作为页面输入打开。方法：在精确的 C 整数语义上做区间运算，并不断切分盒子。',
     prPath: '输入',
     prLo: '从',
     prHi: '到',

@@ -39,7 +39,7 @@ export default dict(
     thr_phase_margin_deg: 'current-loop phase margin with the delay (below) [°]',
     thr_voltage_ratio: 'needed / available voltage',
     thr_pll_steady_deg: 'PLL angle error after lock [°]',
-    seedCite: '(seed {n})',
+    seedCite: '(source eq. {n})',
     texGiven: 'given',
     texDrive: 'drive',
     texRms: 'rms',
