@@ -294,7 +294,7 @@ MESSAGES = {
                            "{label}", "{key}.steady_angle_error_deg = {value:.3g}°：锁定后的角度误差；"
                            "请修改{label}"),
     "finding.unit_uH": ("LD/LQ taken in µH: the vendor code was written for 0.01 mH, so "
-                        "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (seed 1.4-6, the "
+                        "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (source eq. 1.4-6, the "
                         "'×10' puzzle)", "原始 LD/LQ 按 µH 输入：汇川代码按 0.01 mH 编写，因此 "
                         "gMotorExtPer.LD/LQ 是 Q13 标幺电感的 10 倍（式 1.4-6 的“×10”之谜）"),
     "finding.custom_bases": ("custom bases: the vendor integers (Rpm, LD, …) always use the Inovance "
