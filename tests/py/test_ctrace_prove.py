@@ -1,0 +1,159 @@
+"""pulab.ctrace.prove: the code proof, against exhaustive enumeration under clang's sanitizers
+(tests/oracle/code_prove_oracle.py, never imports pulab) and on hand-checked cases.
+
+Soundness: over random small boxes of five fixed-point routines (tests/oracle/prove_units/),
+no statement proven is the first failure of any point in the compiled enumeration, and every
+counterexample fails under the compiled program at the line of a statement the tracer also
+flags there.  Missing clang: SKIPPED loudly; with CI=true it fails.
+"""
+
+from __future__ import annotations
+
+import json
+import random
+import subprocess
+import sys
+
+import pytest
+
+from conftest import ROOT
+from ctrace_compilers import require
+from pulab.ctrace import trace
+from pulab.ctrace.prove import prove_code
+
+sys.path.insert(0, str(ROOT / "tests/oracle"))
+import code_prove_oracle as cpo  # noqa: E402
+
+SEED = 20261126
+
+
+def _window(rng, lo, hi, width, centres):
+    """A window of at most ``width`` values of [lo, hi], around a random centre (or anywhere)."""
+    c = rng.choice(centres + [rng.randint(lo, hi)])
+    w = rng.randint(0, width - 1)
+    a = max(lo, min(hi - w, c - rng.randint(0, w)))
+    return [a, a + w]
+
+
+I16 = (-32768, 32767)
+BOXES = {
+    "q15_multiply": lambda r: {n: _window(r, *I16, 24, [-32768, 32767, 0, -181, 181])
+                               for n in ("a", "b")},
+    "pi_saturated": lambda r: {"e": _window(r, *I16, 5, [32767, -32768, 4000]),
+                               "kp": _window(r, *I16, 4, [4096, 32767, -32768]),
+                               "ki": _window(r, *I16, 4, [1024, 32767]),
+                               "*integ": _window(r, -2 ** 31, 2 ** 31 - 1, 5,
+                                                 [32767, -32768, 0, 2 ** 31 - 1])},
+    "sum_store": lambda r: {n: _window(r, *I16, 7, [32767, -32768, 16384, -16384])
+                            for n in ("a", "b", "c")},
+    "variable_shift": lambda r: {"x": _window(r, 0, 2 ** 31 - 1, 20, [0, 1, 65535, 2 ** 30]),
+                                 "n": _window(r, -3, 35, 5, [-1, 0, 15, 16, 31, 32])},
+    "gain_table": lambda r: {"num": _window(r, *I16, 6, [32767, -32768, 0]),
+                             "den": _window(r, *I16, 5, [0, 1, -1, 3]),
+                             "k": _window(r, -2, 5, 3, [0, 3, 4, -1])},
+}
+PER_UNIT = 6
+
+
+def _flagged_lines(code: str, entry: str, point: dict) -> set:
+    """Lines where the concrete tracer flags a failure at ``point`` (or stops with an error)."""
+    try:
+        r = trace(code, "arm", point, entry=entry)
+    except Exception as e:  # a run-time error (zero divisor, index): its line
+        return {e.line}
+    keep = {"signed_overflow", "unsigned_wrap", "conversion", "shift_count"}
+    return {s["line"] for s in r["steps"] if keep & set(s["flags"])}
+
+
+def test_no_proven_statement_fails_in_the_compiled_enumeration(tmp_path, capsys):
+    require("clang", capsys)
+    rng = random.Random(SEED)
+    tally = {"proven": 0, "violated": 0, "unknown": 0, "points": 0, "failing_points": 0}
+    for unit, make in BOXES.items():
+        oracle = cpo.Oracle(unit, str(tmp_path))
+        code = cpo.source(unit)
+        entry = cpo.UNITS[unit][0]
+        for _ in range(PER_UNIT):
+            box = make(rng)
+            r = prove_code(code, "arm", entry, box, budget=400)
+            failures = oracle.first_failures(box)
+            n = 1
+            for lo, hi in box.values():
+                n *= hi - lo + 1
+            tally["points"] += n
+            tally["failing_points"] += len(failures)
+            failing_lines = {line for line, _ in failures.values()}
+            for s in r["statements"]:
+                tally[s["verdict"]] += 1
+                if s["verdict"] == "proven":
+                    assert s["line"] not in failing_lines, (unit, box, s, [
+                        (oracle.point_of(box, k), w) for k, w in failures.items()][:3])
+                if s["verdict"] == "violated":
+                    pt = s["counterexample"]
+                    one = {k: [pt[k], pt[k]] for k in box}
+                    got = oracle.first_failures(one)
+                    assert got, (unit, s, "the counterexample does not fail when compiled")
+                    line, what = got[0]
+                    assert line in _flagged_lines(code, entry, pt), (unit, s, line, what)
+                    assert s["line"] in _flagged_lines(code, entry, pt), (unit, s)
+            if r["verdict"] == "proven":
+                assert not failures, (unit, box)
+    print(json.dumps(tally))
+    # The cases must exercise both answers, or the test proves nothing.
+    assert tally["proven"] >= 40 and tally["violated"] >= 10, tally
+    assert tally["failing_points"] >= 100, tally
+
+
+def test_pi_routine_is_proven_where_the_clamp_bounds_it():
+    code = cpo.source("pi_saturated")
+    box = {"e": [-4096, 4096], "kp": [0, 8192], "ki": [0, 1024], "*integ": [-32768, 32767]}
+    r = prove_code(code, "arm", "pi_saturated", box)
+    by_code = {s["code"]: s for s in r["statements"]}
+    # |e·kp| ≤ 2^25, >> 12 → [-8192, 8192]; the clamp keeps i in int16; u = up + i can reach
+    # 8192 + 32767 > 32767: the int16 store is violated, with a point that shows it.
+    assert by_code["int32_t up = ((int32_t)e * kp) >> 12;"]["range"] == [-8192, 8192]
+    assert by_code["*integ = i;"]["range"] == [-32768, 32767]
+    assert by_code["*integ = i;"]["verdict"] == "proven"
+    out = by_code["int16_t out = u;"]
+    assert out["verdict"] == "violated" and out["kind"] == "conversion"
+    cx = out["counterexample"]
+    e, kp, ki, integ = cx["e"], cx["kp"], cx["ki"], cx["*integ"]
+    i = max(-32768, min(32767, integ + ((e * ki) >> 10)))
+    assert not -32768 <= ((e * kp) >> 12) + i <= 32767
+    assert r["verdict"] == "violated" and r["counterexample"] == cx
+
+
+def test_unknown_when_the_budget_is_too_small_and_bad_ranges_name_the_field():
+    code = cpo.source("variable_shift")
+    r = prove_code(code, "arm", "variable_shift", {"x": [0, 2 ** 20], "n": [0, 20]}, budget=3)
+    assert r["verdict"] in ("unknown", "violated")
+    assert all(0 <= s["proven_fraction"] <= 1 for s in r["statements"])
+    with pytest.raises(Exception) as e:
+        prove_code(code, "arm", "variable_shift", {"y": [0, 1]})
+    assert e.value.field == "range.y"
+    with pytest.raises(Exception) as e:
+        prove_code(code, "arm", "variable_shift", {"n": [5, 1]})
+    assert e.value.field == "range.n"
+    with pytest.raises(Exception) as e:
+        prove_code(code, "arm", "variable_shift", {"n": [0, 40000]})
+    assert e.value.field == "range.n"
+
+
+def test_cli_exit_status_and_json(tmp_path):
+    f = tmp_path / "q.c"
+    f.write_text(cpo.source("q15_multiply"))
+    base = [sys.executable, "-m", "pulab", "trace", str(f), "--target", "arm",
+            "--entry", "q15_multiply", "--prove"]
+    env = {"PYTHONPATH": str(ROOT / "py")}
+    ok = subprocess.run(base + ["--range", "a=-100:100", "--range", "b=-32768:32767"],
+                        capture_output=True, text=True, env=env)
+    assert ok.returncode == 0, ok.stderr
+    assert json.loads(ok.stdout)["verdict"] == "proven"
+    bad = subprocess.run(base + ["--range", "a=-32768:-32760", "--range", "b=-32768:-32767"],
+                         capture_output=True, text=True, env=env)
+    assert bad.returncode == 1
+    r = json.loads(bad.stdout)
+    assert r["verdict"] == "violated" and r["counterexample"] == {"a": -32768, "b": -32768}
+    wrong = subprocess.run(base + ["--range", "a=1:x"], capture_output=True, text=True, env=env)
+    assert wrong.returncode == 2 and wrong.stderr.count("\n") == 1
+    assert wrong.stderr.startswith("error: range.a:")
