@@ -157,3 +157,55 @@ def test_cli_exit_status_and_json(tmp_path):
     wrong = subprocess.run(base + ["--range", "a=1:x"], capture_output=True, text=True, env=env)
     assert wrong.returncode == 2 and wrong.stderr.count("\n") == 1
     assert wrong.stderr.startswith("error: range.a:")
+
+
+GAIN = """int16_t gain(int16_t x, int16_t k) { // @q k auto
+  int32_t p = (int32_t)x * k;
+  int16_t y = p >> 12;
+  return y;
+}"""
+
+
+def test_q_auto_proposes_the_finest_format_the_proof_allows():
+    # k ∈ [-1.5, 2.0] in Qn is round(k·2^n): 2.0·2^14 = 32768 does not fit int16, so at most
+    # Q13; with |x| ≤ 4096 every store fits at Q13 (4096·16384 >> 12 = 16384).
+    r = prove_code(GAIN, "arm", "gain", {"x": [-4096, 4096], "k": ["-1.5", "2.0"]})
+    p = r["proposals"]["k"]
+    assert (p["q"], p["raw_range"], p["max_error"]) == (13, [-12288, 16384], 2.0 ** -14)
+    assert r["verdict"] == "proven" and r["box"]["k"] == [-12288, 16384]
+    # With x over all of int16, y = x·k >> 12 fits only while k·2^n ≤ 4096: Q11
+    # (32767·4096 >> 12 = 32767; at Q12 32767·8192 >> 12 = 65534 does not fit).
+    r = prove_code(GAIN, "arm", "gain", {"x": [-32768, 32767], "k": [-1.5, 2.0]})
+    p = r["proposals"]["k"]
+    assert p["q"] == 11 and p["tried"]["12"] == "violated" and p["tried"]["13"] == "violated"
+    assert p["max_error_pct"] == pytest.approx(100 * 2.0 ** -12 / 2.0, rel=1e-12)
+    with pytest.raises(Exception) as e:
+        prove_code(GAIN, "arm", "gain", {"x": [0, 1]})
+    assert e.value.field == "range.k"
+
+
+def test_the_api_kind_runs_in_slices_and_can_be_cancelled():
+    from pulab.api import call_json_steps
+    # a loop count the box does not decide: the box splits down to each count
+    code = """int32_t acc(int16_t x, int16_t n) {
+  int32_t s = 0;
+  for (int16_t i = 0; i < n; i++)
+    s += x;
+  return s;
+}"""
+    req = {"code": code, "target": "arm", "entry": "acc",
+           "range": {"x": [-1000, 1000], "n": [0, 80]}, "budget": 4000}
+    g = call_json_steps("trace.prove", json.dumps(req))
+    slices = 0
+    try:
+        while True:
+            next(g)
+            slices += 1
+    except StopIteration as done:
+        r = json.loads(done.value)
+    assert slices >= 2 and r["ok"] and r["proof"]["verdict"] == "proven", (slices, r)
+    by_code = {s["code"]: s for s in r["proof"]["statements"]}
+    assert by_code["s += x;"]["range"] == [-80000, 80000]
+    g = call_json_steps("trace.prove", json.dumps(req))
+    next(g)
+    g.close()  # the page's Cancel: no exception, nothing left running

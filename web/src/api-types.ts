@@ -36,6 +36,25 @@ export interface Trace {
 }
 export interface TraceExample { id: string; title: string; title_zh: string; code: string }
 
+/** `trace.prove`: the tracer's request plus integer ranges of inputs (docs/contract.md, "Code proof"). */
+export interface CodeProveRequest extends TraceRequest { range: Record<string, [number | string, number | string]>; budget?: number }
+/** A failure a statement is proven free of (or shown to have). */
+export type CodeFailure = 'signed_overflow' | 'unsigned_wrap' | 'conversion' | 'shift_count' | 'division_by_zero' | 'index' | 'error';
+export interface CodeStatement {
+  line: number; column: number; code: string; var: string | null;
+  type: string | null; word: [number, number] | null; range: [number, number] | null;
+  verdict: 'proven' | 'violated' | 'unknown'; kinds: CodeFailure[]; kind: CodeFailure | null;
+  proven_fraction: number;
+  /** Every input's value at a point where the statement fails (violated only). */
+  counterexample?: Record<string, number>;
+}
+export interface CodeProof {
+  verdict: 'proven' | 'violated' | 'unknown'; target: string; global_q: number; entry: string | null;
+  inputs: string[]; box: Record<string, [number, number]>; set: Record<string, number>;
+  budget: number; work: number; boxes: number; decided_fraction: number; proven_fraction: number;
+  statements: CodeStatement[]; counterexample?: Record<string, number>;
+}
+
 /** `vendors.translate`: a vendor's two current-loop integers in every other vendor's scaling. */
 export interface TranslateRequest { input: Input; from: string; axis: 'd' | 'q'; values: Record<string, number> }
 export interface TranslationStep { values: Record<string, number>; si: { kp: number; ki: number }; loss_pct: { kp: number; ki: number }; profile?: string; drift_pct?: { kp: number; ki: number } }

@@ -56,7 +56,14 @@ _NEGATED = {"<": ">=", ">=": "<", ">": "<=", "<=": ">", "==": "!=", "!=": "=="}
 
 
 class Split(Exception):
-    """The box does not decide a loop test, an index, a case or a join: split it."""
+    """The box does not decide a loop test, an index, a case or a join: split it.
+
+    ``reads``: the places the undecided statement had read (a hint of which input to split).
+    """
+
+    def __init__(self, reads=()) -> None:
+        super().__init__()
+        self.reads = set(reads)
 
 
 class _Dead(Exception):
@@ -145,6 +152,7 @@ class BoxEvaluator(Evaluator):
         self.records: dict = {}
         self.pending: list = []
         self.current = None
+        self.reads: set = set()
 
     @classmethod
     def over(cls, checked, box: dict, global_q: int) -> "BoxEvaluator":
@@ -188,6 +196,7 @@ class BoxEvaluator(Evaluator):
             return
         kinds = self.cur | set(extra.get("flags", ()))
         self.cur = set()
+        self.reads = set()
         self.note(stmt, kinds, value, ctype, var)
 
     def fail(self, kind: str) -> None:
@@ -200,19 +209,20 @@ class BoxEvaluator(Evaluator):
     def truth(self, value) -> bool:
         d = decide(value)
         if d is None:
-            raise Split()
+            raise Split(self.reads)
         return d
 
     def scalar(self, value) -> int:
         if isinstance(value, ICInt):
             if value.lo != value.hi:
-                raise Split()
+                raise Split(self.reads)
             return value.lo
         return value
 
     def read(self, path: str, node):
+        self.reads.add(path)
         if self.mem.get(path) is _MAYBE:
-            raise Split()
+            raise Split(self.reads)
         return super().read(path, node)
 
     def statement(self, s) -> None:

@@ -29,9 +29,11 @@ Examples
 from __future__ import annotations
 
 import heapq
+import math
 import random
 import re
 
+from ..analyses.prove import headroom_bits
 from ..analyses.slices import finish
 from ..fixedpoint.cint import CType
 from ..schema.errors import InputError
@@ -60,8 +62,8 @@ def _ranges(checked, ranges) -> dict:
         path = name.strip().replace("->", ".") if isinstance(name, str) else name
         field = key_path("range", path)
         if path not in checked.inputs:
-            raise InputError(field, f"not an input of the code (inputs: "
-                                    f"{', '.join(checked.inputs) or 'none'})")
+            raise InputError(field, code="prove_not_input",
+                             inputs=", ".join(checked.inputs) or "none")
         if not isinstance(pair, (list, tuple)) or len(pair) != 2:
             raise InputError(field, code="prove_pair", got=shown(pair))
         ends = []
@@ -205,13 +207,42 @@ def _points(box: dict, rng: random.Random) -> list:
     return pts
 
 
-def _split(box: dict, root: dict) -> tuple:
-    """Halve the box along the input widest relative to its whole range."""
-    name = max((n for n in box if box[n][0] < box[n][1]),
+def _split(box: dict, root: dict, hint=()) -> tuple:
+    """Halve the box along the input widest relative to its whole range, among the inputs
+    in ``hint`` (those an undecided statement read) when one of them can be split."""
+    wide = [n for n in box if box[n][0] < box[n][1]]
+    name = max([n for n in wide if n in hint] or wide,
                key=lambda n: (box[n][1] - box[n][0]) / (root[n][1] - root[n][0] + 1))
     lo, hi = box[name]
     mid = lo + (hi - lo) // 2
     return {**box, name: (lo, mid)}, {**box, name: (mid + 1, hi)}
+
+
+def _parse_real(field: str, pair) -> tuple:
+    """``[LO, HI]`` in real units (numbers or numeric text) of an ``@q auto`` input."""
+    if not isinstance(pair, (list, tuple)) or len(pair) != 2:
+        raise InputError(field, code="prove_pair", got=shown(pair))
+    ends = []
+    for v in pair:
+        try:
+            x = float(v.strip()) if isinstance(v, str) else float(v)
+        except (TypeError, ValueError):
+            raise InputError(field, code="prove_pair", got=shown(pair)) from None
+        if isinstance(v, bool) or not math.isfinite(x):
+            raise InputError(field, code="prove_pair", got=shown(pair))
+        ends.append(x)
+    if ends[0] > ends[1]:
+        raise InputError(field, code="prove_order", lo=ends[0], hi=ends[1])
+    return ends[0], ends[1]
+
+
+def _round(x: float) -> int:
+    """Round half away from zero (C's ``lround``); x·2^n is exact in binary floating point."""
+    return int(math.floor(x + 0.5)) if x >= 0 else -int(math.floor(-x + 0.5))
+
+
+def _raw(real: tuple, n: int) -> tuple:
+    return _round(math.ldexp(real[0], n)), _round(math.ldexp(real[1], n))
 
 
 def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
@@ -223,12 +254,66 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
     if isinstance(budget, bool) or not isinstance(budget, int) or not 1 <= budget <= MAX_BUDGET:
         raise InputError("budget", code="integer_range", lo=1, hi=MAX_BUDGET, got=shown(budget))
     checked = compile_code(code, target, defines, global_q, entry)
-    box = _ranges(checked, ranges)
+    notes = checked.program.notes
+    auto = [n for n in checked.inputs if n in notes and notes[n].q is None]
+    if not isinstance(ranges, dict):
+        ranges = {}
+    real = {}
+    for name in auto:
+        field = key_path("range", name)
+        if name not in ranges:
+            raise InputError(field, code="prove_auto_range", name=name)
+        real[name] = _parse_real(field, ranges[name])
+    box = _ranges(checked, {k: (v if k not in real else [0, 0]) for k, v in ranges.items()})
     sets = {k: v for k, v in (inputs or {}).items()
             if (k.strip().replace("->", ".") if isinstance(k, str) else k) not in box}
     fixed = _input_values(checked, sets, zero_unset)
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     pb = _Problem(checked, box, fixed, gq)
+    if not auto:
+        out = yield from _search(pb, box, budget)
+    else:
+        # In declaration order, each the finest Q proven with those before it fixed and those
+        # after it at Q0; the proof reported is the one at the formats proposed.
+        chosen = {name: 0 for name in auto}
+        proposals, out = {}, None
+        for name in auto:
+            t = checked.symbols[name].ctype
+            tried, best = {}, None
+            for n in range(62, -1, -1):
+                lo, hi = _raw(real[name], n)
+                if not (t.min <= lo and hi <= t.max):
+                    continue  # the range does not fit the word with n fractional bits
+                trial = {**box, **{k: _raw(real[k], q) for k, q in chosen.items()},
+                         name: (lo, hi)}
+                pb.box = trial
+                r = yield from _search(pb, trial, budget)
+                tried[n] = r["verdict"]
+                if r["verdict"] == "proven":
+                    best, out = n, r
+                    break
+                out = r if best is None else out
+            chosen[name] = best if best is not None else 0
+            scale = max(abs(real[name][0]), abs(real[name][1]))
+            proposals[name] = {
+                "q": best, "type": t.name, "bits": t.bits, "signed": t.signed,
+                "range_real": list(real[name]),
+                "raw_range": list(_raw(real[name], best)) if best is not None else None,
+                "max_error": math.ldexp(0.5, -best) if best is not None else None,
+                "max_error_pct": 100 * math.ldexp(0.5, -best) / scale
+                if best is not None and scale > 0 else None,
+                "tried": {str(k): v for k, v in tried.items()}}
+        if out is None:  # no Q fits any auto input's word
+            pb.box = {**box, **{k: _raw(real[k], 0) for k in auto}}
+            out = yield from _search(pb, pb.box, budget)
+        out["proposals"] = proposals
+        out["real"] = {k: list(v) for k, v in real.items()}
+    return out
+
+
+def _search(pb: _Problem, box: dict, budget: int):
+    """The proof over ``box`` (see the module text); a generator, as :func:`prove_code_steps`."""
+    checked, fixed, gq = pb.checked, pb.fixed, pb.global_q
     fixed_box = {k: (v, v) for k, v in fixed.items()}
     total = _volume(box)
     rng = random.Random(2026)
@@ -258,10 +343,11 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
         work += 1
         if work % _SLICE == 0:
             yield
+        hint = ()
         try:
             records = BoxEvaluator.over(checked, {**fixed_box, **b}, gq).run_box()
-        except Split:
-            records = None
+        except Split as e:
+            records, hint = None, e.reads
         failing = {} if records is None else \
             {k: r["kinds"] for k, r in records.items() if r["kinds"]}
         open_fail = [k for k in failing if k not in cx]
@@ -274,7 +360,7 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
                         cx[key] = (pt, kinds)
             open_fail = [k for k in failing if k not in cx]
         if vol > 1 and (records is None or open_fail):
-            for half in _split(b, box):
+            for half in _split(b, box, hint):
                 heapq.heappush(heap, (-_volume(half), order, half))
                 order += 1
             continue
@@ -317,6 +403,9 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
         else:
             entry_d.update(verdict="unknown", kinds=[k for k in FAILURES if k in s["may"]])
         entry_d["kind"] = entry_d["kinds"][0] if entry_d["kinds"] else None
+        entry_d["headroom_bits"] = headroom_bits(entry_d["range"], entry_d["word"]) \
+            if entry_d["verdict"] == "proven" and entry_d["range"] is not None and \
+            entry_d["var"] is not None else None
         statements.append(entry_d)
     verdicts = {s["verdict"] for s in statements}
     verdict = "violated" if "violated" in verdicts else \
@@ -325,8 +414,7 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
            "entry": checked.entry.name if checked.entry is not None else None,
            "inputs": checked.inputs, "box": {k: list(v) for k, v in box.items()},
            "set": fixed, "budget": budget, "work": work, "boxes": finals,
-           "decided_fraction": decided / total,
-           "proven_fraction": clean / total,
+           "decided_fraction": decided / total, "proven_fraction": clean / total,
            "statements": statements}
     if first_cx is not None:
         out["counterexample"] = first_cx

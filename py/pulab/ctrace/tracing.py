@@ -196,7 +196,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     if zero_unset:
         given |= set(checked.inputs)
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
-    notes = checked.program.notes
+    notes = {k: n for k, n in checked.program.notes.items() if n.q is not None}  # not "@q auto"
     for s in steps:
         if s["var"] in notes:
             s.update(_meaning(notes[s["var"]], s["value"]))
