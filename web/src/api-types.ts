@@ -44,7 +44,7 @@ export interface CodeStatement {
   line: number; column: number; code: string; var: string | null;
   type: string | null; word: [number, number] | null; range: [number, number] | null;
   verdict: 'proven' | 'violated' | 'unknown'; kinds: CodeFailure[]; kind: CodeFailure | null;
-  proven_fraction: number;
+  proven_fraction: number; headroom_bits: number | null;
   /** Every input's value at a point where the statement fails (violated only). */
   counterexample?: Record<string, number>;
 }
@@ -53,6 +53,13 @@ export interface CodeProof {
   inputs: string[]; box: Record<string, [number, number]>; set: Record<string, number>;
   budget: number; work: number; boxes: number; decided_fraction: number; proven_fraction: number;
   statements: CodeStatement[]; counterexample?: Record<string, number>;
+  /** With `// @q NAME auto` inputs: the Q proposed for each, and the real ranges given. */
+  proposals?: Record<string, QProposal>; real?: Record<string, [number, number]>;
+}
+export interface QProposal {
+  q: number | null; type: string; bits: number; signed: boolean; range_real: [number, number];
+  raw_range: [number, number] | null; max_error: number | null; max_error_pct: number | null;
+  tried: Record<string, 'proven' | 'violated' | 'unknown'>;
 }
 
 /** `vendors.translate`: a vendor's two current-loop integers in every other vendor's scaling. */

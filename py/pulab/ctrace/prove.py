@@ -32,6 +32,7 @@ import heapq
 import math
 import random
 import re
+import time
 
 from ..analyses.prove import headroom_bits
 from ..analyses.slices import finish
@@ -48,8 +49,8 @@ __all__ = ["prove_code", "prove_code_steps", "DEFAULT_BUDGET", "MAX_BUDGET"]
 #: Runs (interval runs of a box plus concrete runs of a point) when the request sets none.
 DEFAULT_BUDGET = 3000
 MAX_BUDGET = 1_000_000
-#: Runs between two yields of :func:`prove_code_steps`.
-_SLICE = 25
+#: Seconds of work between two yields of :func:`prove_code_steps` (a run can be long: a loop).
+_SLICE_S = 0.02
 #: Corners tried concretely in a box that may fail (all of them up to this many).
 _CORNERS = 8
 
@@ -337,12 +338,14 @@ def _search(pb: _Problem, box: dict, budget: int):
                 s["ctype"] = rec["ctype"]
         return s
 
+    last = time.perf_counter()
     while heap and work < budget:
+        if time.perf_counter() - last > _SLICE_S:
+            yield
+            last = time.perf_counter()
         _, _, b = heapq.heappop(heap)
         vol = _volume(b)
         work += 1
-        if work % _SLICE == 0:
-            yield
         hint = ()
         try:
             records = BoxEvaluator.over(checked, {**fixed_box, **b}, gq).run_box()
