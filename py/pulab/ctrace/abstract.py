@@ -326,8 +326,9 @@ class BoxEvaluator(Evaluator):
         """(path, interval) of a plain variable; (None, interval) of an expression without
         side effects (evaluated again, its flags already counted); else (None, None)."""
         path = e.sym.key if type(e) is Var else \
-            e.flat.key if type(e) is Member and e.flat is not None else None
-        if path is not None:
+            e.flat.key if type(e) is Member and e.flat is not None else \
+            self.place(e) if type(e) is Member and type(e.base) is Var else None
+        if isinstance(path, str):
             v = self.mem.get(path)
             return (path, v) if isinstance(v, ICInt) else (None, None)
         if not _pure(e):
@@ -569,7 +570,7 @@ def _pure(e) -> bool:
         return _pure(e.left) and _pure(e.right)
     if kind is Cast:
         return _pure(e.operand)
-    return kind is Member and e.flat is not None
+    return kind is Member and (e.flat is not None or type(e.base) is Var)
 
 
 def _overflow(t: CType) -> str:

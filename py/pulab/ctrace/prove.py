@@ -11,9 +11,10 @@ concrete trace at that point raises the failure on that statement, so ``violated
 reproducible, and ``proven`` holds for every point of the box because every final box's
 interval run is sound.  Work (interval runs + concrete runs) is capped by ``budget``.
 
-Verdict of a statement: ``violated`` (a counterexample), ``proven`` (every final box is
-decided and none may fail there), ``unknown`` (the budget ran out first; ``proven_fraction``
-is the share of the box's points, by count, in final boxes where it cannot fail).
+Verdict of a statement: ``violated`` (a counterexample), ``proven`` (every part of the box lies
+in a box whose interval run completed without the statement failing there — a box left when the
+budget ran out counts with the run of the box it was split from), ``unknown`` (otherwise;
+``proven_fraction`` is the share of the box's points, by count, where it is proven so).
 
 Examples
 --------
@@ -321,10 +322,11 @@ def _search(pb: _Problem, box: dict, budget: int):
     stats: dict = {}   # (line, column) → per-statement tally
     cx: dict = {}      # (line, column) → (point, kinds) reproduced by the tracer
     decided = 0        # points in final boxes that ran to the end
-    clean = 0          # … where no statement may fail
+    credited = 0       # … and in boxes left to the budget whose enclosing box's run completed
+    clean = 0          # points of credited boxes where no statement may fail
     work = 0
     finals = 0
-    heap = [(-total, 0, box)]
+    heap = [(-total, 0, box, None)]
     order = 1
 
     def stat(key, rec=None) -> dict:
@@ -338,12 +340,27 @@ def _search(pb: _Problem, box: dict, budget: int):
                 s["ctype"] = rec["ctype"]
         return s
 
+    def account(records: dict, vol: int) -> None:
+        """A box whose interval run completed: its statements' ranges and failures (a
+        statement it does not reach cannot fail there)."""
+        nonlocal credited, clean
+        credited += vol
+        clean += 0 if any(r["kinds"] for r in records.values()) else vol
+        for key, r in records.items():
+            s = stat(key, r)
+            if r["lo"] is not None:
+                s["lo"] = r["lo"] if s["lo"] is None else min(s["lo"], r["lo"])
+                s["hi"] = r["hi"] if s["hi"] is None else max(s["hi"], r["hi"])
+            if r["kinds"]:
+                s["failing"] += vol
+                s["may"].update(r["kinds"])
+
     last = time.perf_counter()
     while heap and work < budget:
         if time.perf_counter() - last > _SLICE_S:
             yield
             last = time.perf_counter()
-        _, _, b = heapq.heappop(heap)
+        _, _, b, _ = heapq.heappop(heap)
         vol = _volume(b)
         work += 1
         hint = ()
@@ -364,22 +381,16 @@ def _search(pb: _Problem, box: dict, budget: int):
             open_fail = [k for k in failing if k not in cx]
         if vol > 1 and (records is None or open_fail):
             for half in _split(b, box, hint):
-                heapq.heappush(heap, (-_volume(half), order, half))
+                heapq.heappush(heap, (-_volume(half), order, half, records))
                 order += 1
             continue
         finals += 1
-        if records is None:
-            continue  # one point the interval run cannot finish (a loop past the step cap)
-        decided += vol
-        clean += 0 if failing else vol
-        for key, r in records.items():
-            s = stat(key, r)
-            if r["lo"] is not None:
-                s["lo"] = r["lo"] if s["lo"] is None else min(s["lo"], r["lo"])
-                s["hi"] = r["hi"] if s["hi"] is None else max(s["hi"], r["hi"])
-            if r["kinds"]:
-                s["failing"] += vol
-                s["may"].update(r["kinds"])
+        if records is not None:  # else one point the interval run cannot finish (step cap)
+            decided += vol
+            account(records, vol)
+    for _, _, b, inherited in heap:  # the budget ran out: their enclosing box's run holds
+        if inherited is not None:
+            account(inherited, _volume(b))
     for key in cx:
         stat(key)
     statements = []
@@ -388,7 +399,7 @@ def _search(pb: _Problem, box: dict, budget: int):
         s = stats[key]
         node = pb.nodes.get(key)
         t: CType | None = s["ctype"]
-        fraction = (decided - s["failing"]) / total
+        fraction = (credited - s["failing"]) / total
         entry_d = {"line": key[0], "column": key[1],
                    "code": pb.text(node) if node is not None else "", "var": s["var"],
                    "type": t.name if t is not None else None,
@@ -401,7 +412,7 @@ def _search(pb: _Problem, box: dict, budget: int):
                            counterexample=pb.point_inputs(pt))
             if first_cx is None:
                 first_cx = entry_d["counterexample"]
-        elif decided == total and s["failing"] == 0:
+        elif credited == total and s["failing"] == 0:
             entry_d.update(verdict="proven", kinds=[])
         else:
             entry_d.update(verdict="unknown", kinds=[k for k in FAILURES if k in s["may"]])
@@ -412,7 +423,7 @@ def _search(pb: _Problem, box: dict, budget: int):
         statements.append(entry_d)
     verdicts = {s["verdict"] for s in statements}
     verdict = "violated" if "violated" in verdicts else \
-        "proven" if decided == total and verdicts <= {"proven"} else "unknown"
+        "proven" if credited == total and verdicts <= {"proven"} else "unknown"
     out = {"verdict": verdict, "target": checked.target.name, "global_q": gq,
            "entry": checked.entry.name if checked.entry is not None else None,
            "inputs": checked.inputs, "box": {k: list(v) for k, v in box.items()},
@@ -452,7 +463,7 @@ def prove_code(code: str, target: str = "c28x", entry: str | None = None,
         ``verdict`` (``proven`` | ``violated`` | ``unknown``), ``statements`` (per statement
         reached: ``line``, ``column``, ``code``, ``var``, ``type``, ``word`` [min, max],
         ``verdict``, ``kinds`` and ``kind`` (the first) of failure, ``range`` [lo, hi] of
-        the value it computes over the decided part of the box, ``proven_fraction``, and
+        the value it computes over the part of the box its proof covers, ``proven_fraction``, and
         ``counterexample`` (every input's value) when violated), ``counterexample`` (the
         first statement's), ``proven_fraction`` (the share of the box where no statement
         may fail), ``box``, ``set``, ``work``, ``boxes``, ``decided_fraction``.
