@@ -168,6 +168,11 @@ def format_prove_text(r: dict) -> str:
         elif s["verdict"] == "unknown":
             line += f"  (proven for {100 * s['proven_fraction']:.1f} % of the box)"
         lines.append(line)
+    for name, p in r.get("proposals", {}).items():
+        lo, hi = p["range_real"]
+        lines.append(f"@q {name} auto over [{lo:g}, {hi:g}]: " + (
+            f"Q{p['q']} in {p['type']}, raw {p['raw_range']}, error <= {p['max_error']:g}"
+            if p["q"] is not None else "no Q keeps every statement proven"))
     return "\n".join(lines)
 
 
