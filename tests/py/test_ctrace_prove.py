@@ -117,6 +117,8 @@ def test_pi_routine_is_proven_where_the_clamp_bounds_it():
     assert by_code["*integ = i;"]["verdict"] == "proven"
     out = by_code["int16_t out = u;"]
     assert out["verdict"] == "violated" and out["kind"] == "conversion"
+    # up ∈ [-8192, 8192] plus the clamped i ∈ [-32768, 32767], before the int16 store
+    assert out["computed"] == [-40960, 40959] and out["range"] == [-32768, 32767]
     cx = out["counterexample"]
     e, kp, ki, integ = cx["e"], cx["kp"], cx["ki"], cx["*integ"]
     i = max(-32768, min(32767, integ + ((e * ki) >> 10)))

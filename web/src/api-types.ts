@@ -43,6 +43,8 @@ export type CodeFailure = 'signed_overflow' | 'unsigned_wrap' | 'conversion' | '
 export interface CodeStatement {
   line: number; column: number; code: string; var: string | null;
   type: string | null; word: [number, number] | null; range: [number, number] | null;
+  /** The exact value the statement's store converts (before C's modulo rule). */
+  computed: [number, number] | null;
   verdict: 'proven' | 'violated' | 'unknown'; kinds: CodeFailure[]; kind: CodeFailure | null;
   proven_fraction: number; headroom_bits: number | null;
   /** Every input's value at a point where the statement fails (violated only). */

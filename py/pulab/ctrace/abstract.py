@@ -153,6 +153,8 @@ class BoxEvaluator(Evaluator):
         self.pending: list = []
         self.current = None
         self.reads: set = set()
+        #: The exact interval the statement's last store converted (before C's modulo rule).
+        self.stored: tuple | None = None
 
     @classmethod
     def over(cls, checked, box: dict, global_q: int) -> "BoxEvaluator":
@@ -162,8 +164,9 @@ class BoxEvaluator(Evaluator):
                    global_q)
 
     def run_box(self) -> dict:
-        """Run; (line, column) → record ``{"kinds", "lo", "hi", "ctype", "var", "node"}`` of
-        every statement reached.  Raises :class:`Split` when the box does not decide."""
+        """Run; (line, column) → record ``{"kinds", "lo", "hi", "ctype", "var", "node",
+        "exact"}`` of every statement reached (``exact``: the hull of what its last store
+        converted, None when it stores nothing).  Raises :class:`Split` when the box does not decide."""
         try:
             self.run()
         except _Stop:
@@ -175,11 +178,15 @@ class BoxEvaluator(Evaluator):
         return self.records
 
     # -- what a statement may raise and the values it computes
-    def note(self, node, kinds, value=None, ctype=None, var=None) -> None:
+    def note(self, node, kinds, value=None, ctype=None, var=None, exact=None) -> None:
         rec = self.records.get((node.line, node.column))
         if rec is None:
             rec = self.records[(node.line, node.column)] = {
-                "kinds": set(), "lo": None, "hi": None, "ctype": None, "var": var, "node": node}
+                "kinds": set(), "lo": None, "hi": None, "ctype": None, "var": var, "node": node,
+                "exact": None}
+        if exact is not None:
+            e = rec["exact"]
+            rec["exact"] = exact if e is None else (min(e[0], exact[0]), max(e[1], exact[1]))
         rec["kinds"].update(k for k in kinds if k in FAILURES)
         if isinstance(value, int):
             value = _point(value, ctype)
@@ -197,7 +204,8 @@ class BoxEvaluator(Evaluator):
         kinds = self.cur | set(extra.get("flags", ()))
         self.cur = set()
         self.reads = set()
-        self.note(stmt, kinds, value, ctype, var)
+        exact, self.stored = self.stored, None
+        self.note(stmt, kinds, value, ctype, var, exact)
 
     def fail(self, kind: str) -> None:
         """Every point of the box fails here: record it on the statement and stop."""
@@ -379,6 +387,7 @@ class BoxEvaluator(Evaluator):
             return value, []
         lo, hi = (value.lo, value.hi) if isinstance(value, ICInt) else (value, value)
         w, changed = _fit(lo, hi, ctype)
+        self.stored = (lo, hi)
         if changed:
             self.cur.add("conversion")
         return w, (["conversion"] if changed else [])

@@ -333,7 +333,7 @@ def _search(pb: _Problem, box: dict, budget: int):
         s = stats.get(key)
         if s is None:
             s = stats[key] = {"lo": None, "hi": None, "ctype": None, "var": None, "may": set(),
-                              "failing": 0}
+                              "failing": 0, "exact": None}
         if rec is not None:
             s["var"] = s["var"] or rec["var"]
             if rec["ctype"] is not None:
@@ -351,6 +351,10 @@ def _search(pb: _Problem, box: dict, budget: int):
             if r["lo"] is not None:
                 s["lo"] = r["lo"] if s["lo"] is None else min(s["lo"], r["lo"])
                 s["hi"] = r["hi"] if s["hi"] is None else max(s["hi"], r["hi"])
+            if r["exact"] is not None:
+                e = s["exact"]
+                s["exact"] = r["exact"] if e is None else (min(e[0], r["exact"][0]),
+                                                           max(e[1], r["exact"][1]))
             if r["kinds"]:
                 s["failing"] += vol
                 s["may"].update(r["kinds"])
@@ -405,6 +409,7 @@ def _search(pb: _Problem, box: dict, budget: int):
                    "type": t.name if t is not None else None,
                    "word": [t.min, t.max] if t is not None else None,
                    "range": [s["lo"], s["hi"]] if s["lo"] is not None else None,
+                   "computed": list(s["exact"]) if s["exact"] is not None else None,
                    "proven_fraction": fraction}
         if key in cx:
             pt, kinds = cx[key]
@@ -463,7 +468,8 @@ def prove_code(code: str, target: str = "c28x", entry: str | None = None,
         ``verdict`` (``proven`` | ``violated`` | ``unknown``), ``statements`` (per statement
         reached: ``line``, ``column``, ``code``, ``var``, ``type``, ``word`` [min, max],
         ``verdict``, ``kinds`` and ``kind`` (the first) of failure, ``range`` [lo, hi] of
-        the value it computes over the part of the box its proof covers, ``proven_fraction``, and
+        the value it computes over the part of the box its proof covers, ``computed`` (the
+        exact value before its store's conversion), ``proven_fraction``, and
         ``counterexample`` (every input's value) when violated), ``counterexample`` (the
         first statement's), ``proven_fraction`` (the share of the box where no statement
         may fail), ``box``, ``set``, ``work``, ``boxes``, ``decided_fraction``.

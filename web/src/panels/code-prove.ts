@@ -103,10 +103,14 @@ function statementRow(st: CodeStatement, i: number, host: ProveHost): HTMLElemen
   const key = `code.prove.statements.${i}`;
   const kinds = st.kinds.map((k) => t(`cpk_${k}` as Key)).join(', ');
   const cx = st.counterexample;
+  const c = st.computed;
+  const computed = c && st.word && (c[0] < st.word[0] || c[1] > st.word[1])
+    ? h('div', { class: 'hint' }, `${t('cpComputed')} [`, num(`${key}.computed.0`, c[0], { kind: 'int' }), ', ', num(`${key}.computed.1`, c[1], { kind: 'int' }), ']')
+    : null;
   const why = st.verdict === 'violated' && cx
-    ? h('div', {}, kinds, h('div', { class: 'hint' }, Object.entries(cx).map(([k, v]) => `${k} = ${v}`).join(', ')),
+    ? h('div', {}, kinds, computed, h('div', { class: 'hint' }, Object.entries(cx).map(([k, v]) => `${k} = ${v}`).join(', ')),
       h('button', { type: 'button', class: 'code-prove-load', 'data-load-ce': String(i), onclick: () => host.load(cx) }, t('cpLoad')))
-    : st.verdict === 'unknown' ? h('div', {}, kinds, h('div', { class: 'hint' }, t('cpUnknownShare', { pct: (100 * st.proven_fraction).toFixed(1) }))) : '';
+    : st.verdict === 'unknown' ? h('div', {}, kinds, computed, h('div', { class: 'hint' }, t('cpUnknownShare', { pct: (100 * st.proven_fraction).toFixed(1) }))) : '';
   return h('tr', { class: st.verdict === 'proven' ? '' : 'bad' },
     h('td', { class: 'pos' }, `${st.line}:${st.column}`),
     h('td', {}, h('code', {}, st.code)),
