@@ -6,7 +6,7 @@ one value) is run by :class:`~pulab.ctrace.abstract.BoxEvaluator` (the tracer's 
 over intervals).  A box is split in two along its relatively widest input when it does not
 decide the control flow, or when a statement may fail there and no counterexample for that
 statement is known yet; each box that may fail is first searched for one by running the
-concrete tracer at its centre and corners.  A counterexample is reported only after the
+concrete tracer at its centre and corners (an undecided box: at its centre).  A counterexample is reported only after the
 concrete trace at that point raises the failure on that statement, so ``violated`` is always
 reproducible, and ``proven`` holds for every point of the box because every final box's
 interval run is sound.  Work (interval runs + concrete runs) is capped by ``budget``.
@@ -193,10 +193,12 @@ def _volume(box: dict) -> int:
     return v
 
 
-def _points(box: dict, rng: random.Random) -> list:
+def _points(box: dict, rng: random.Random, corners: bool = True) -> list:
     """The centre, then corners (all when few, else a sample), of a box."""
     names = list(box)
     pts = [{n: (lo + hi) // 2 for n, (lo, hi) in box.items()}]
+    if not corners:
+        return pts
     wide = [n for n in names if box[n][0] != box[n][1]]
     if 1 << len(wide) <= _CORNERS:
         masks = range(1 << len(wide))
@@ -375,8 +377,12 @@ def _search(pb: _Problem, box: dict, budget: int):
         failing = {} if records is None else \
             {k: r["kinds"] for k, r in records.items() if r["kinds"]}
         open_fail = [k for k in failing if k not in cx]
-        if open_fail or (records is None and vol == 1):
-            for pt in _points(b, rng) if vol > 1 else [dict((n, lo) for n, (lo, _) in b.items())]:
+        if open_fail or records is None:
+            # A box that may fail: its centre and corners; one the run cannot decide: its
+            # centre (all of its points when it is the whole box), so that a failure behind
+            # an undecided loop or index is found before the box is cut down to points.
+            pts = _points(b, rng, bool(open_fail) or vol == total)
+            for pt in pts:
                 work += 1
                 for key, kinds in pb.concrete(pt).items():
                     stat(key)["may"].update(kinds)
