@@ -127,6 +127,9 @@ def _bitwise(op: str, a: ICInt, b: ICInt) -> tuple:
         x, y = a.lo, b.lo
         v = x & y if op == "&" else x | y if op == "|" else x ^ y
         return v, v
+    for x, y in ((a, b), (b, a)):  # x & -1, x | 0, x ^ 0 are x
+        if y.lo == y.hi == (-1 if op == "&" else 0):
+            return x.lo, x.hi
     if op == "&" and (a.lo >= 0 or b.lo >= 0):  # a non-negative operand bounds the result
         return 0, min(x.hi for x in (a, b) if x.lo >= 0)
     k = max(max(abs(v) for v in (a.lo, a.hi, b.lo, b.hi)).bit_length(), 1)
@@ -279,7 +282,8 @@ class BoxEvaluator(Evaluator):
             self.too_long(s)
         v = self.eval(s.test)
         d = decide(v)
-        self.step(s, "if", None, v if d is None else _point(int(d), self.int), self.int)
+        taken = ICInt(0, 1, self.int) if d is None else _point(int(d), self.int)
+        self.step(s, "if", None, taken, self.int)  # the trace shows the branch taken: 0 or 1
         if d is None:
             self.sides(s.test, s.then, s.other,
                        lambda side: self.statement(side) if side is not None else None)
@@ -525,7 +529,8 @@ class BoxEvaluator(Evaluator):
         a = self.eval(e.operand)
         t = e.ctype
         flags: list = []
-        a = self.convert(a, t, [])
+        if e.op != "!":  # promoted (a no-op on the values); ! tests the operand as it is
+            a = self.convert(a, t, [])
         if e.op == "-":
             v, changed = _fit(-a.hi, -a.lo, t)
             if changed:
