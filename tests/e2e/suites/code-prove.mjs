@@ -88,6 +88,20 @@ export default async function codeProve(ctx) {
     await fill(RANGES);
   });
 
+  await check('code-prove: // @q auto proposes the Q CPython proposes', async () => {
+    const GAIN = 'int16_t gain(int16_t x, int16_t k) { // @q k auto\n  int32_t p = (int32_t)x * k;\n  int16_t y = p >> 12;\n  return y;\n}\n';
+    await page.goto(url(GAIN, 'gain'));
+    await ready(page);
+    await open();
+    await fill({ x: [-32768, 32767], k: ['-1.5', '2.0'] });
+    await prove();
+    const want = JSON.parse(cli(['--target', 'arm', '--entry', 'gain', '--prove', '--budget', '300',
+      '--range', 'x=-32768:32767', '--range', 'k=-1.5:2.0'], GAIN));
+    assert(want.proposals.k.q === 11, `CLI proposes Q${want.proposals.k.q}`);
+    const text = await page.$eval('[data-proposal-for="k"]', (e) => e.textContent);
+    assert(text.includes('Q11') && text.includes(String(want.proposals.k.max_error)), text);
+  });
+
   await check('code-prove: Cancel stops a long proof', async () => {
     const LOOP = 'int32_t acc(int16_t x, int16_t n) {\n  int32_t s = 0;\n  for (int16_t i = 0; i < n; i++)\n    s += x;\n  return s;\n}\n';
     await page.goto(url(LOOP, 'acc'));
