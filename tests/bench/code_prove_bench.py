@@ -24,22 +24,33 @@ NOMINAL = {"ref": [-32768, 32767], "fb": [-32768, 32767], "p.kp": [0, 16384],
 # The integrator state over all of int32 and a limit that may be -32768: the sum overflows
 # and -hi does not fit int16.
 WIDE = {**NOMINAL, "p.integ": [-2 ** 31, 2 ** 31 - 1], "p.out_max": [-32768, 32767]}
-CASES = {f"{name} on {target}": (target, box) for name, box in (("nominal", NOMINAL),
-                                                               ("wide", WIDE))
+CASES = {f"PI {name} on {target}": (target, box) for name, box in (("nominal", NOMINAL),
+                                                                  ("wide", WIDE))
          for target in ("c28x", "arm")}
+#: A loop whose count is an input: the box is split down to each count (81 boxes).
+LOOP = """int32_t acc(int16_t x, int16_t n) {
+  int32_t s = 0;
+  for (int16_t i = 0; i < n; i++)
+    s += x;
+  return s;
+}"""
+LOOP_BOX = {"x": [-1000, 1000], "n": [0, 80]}
 
 
 def code_prove_timing(code: str | None = None, repeat: int = 7) -> dict:
-    """{case: (wall median s, CPU median s, verdict, statements, work)} for :data:`CASES`."""
+    """{case: (wall median s, CPU median s, verdict, statements, work)} for :data:`CASES` and
+    the loop."""
     from pulab.ctrace.prove import prove_code
     code = code or CODE
     out = {}
-    for name, (target, box) in CASES.items():
-        r = prove_code(code, target, "pi_step", box)  # warm-up
+    runs = {name: (code, target, "pi_step", box) for name, (target, box) in CASES.items()}
+    runs["loop of 0..80 on arm"] = (LOOP, "arm", "acc", LOOP_BOX)
+    for name, (src, target, entry, box) in runs.items():
+        r = prove_code(src, target, entry, box, budget=4000)  # warm-up
         wall, cpu = [], []
         for _ in range(repeat):
             t0, c0 = time.perf_counter(), time.process_time()
-            prove_code(code, target, "pi_step", box)
+            prove_code(src, target, entry, box, budget=4000)
             wall.append(time.perf_counter() - t0)
             cpu.append(time.process_time() - c0)
         counts = {}
