@@ -37,8 +37,8 @@ UNITS = {
 
 SANITIZE = ("signed-integer-overflow,unsigned-integer-overflow,implicit-conversion,shift,"
             "integer-divide-by-zero,bounds")
-_ERROR = re.compile(r"^(?P<file>[^:\n]+\.c):(?P<line>\d+):(?P<col>\d+): runtime error: (?P<what>.*)$",
-                    re.M)
+_ERROR = re.compile(r"^(?P<file>[^:\n]+\.c):(?P<line>\d+):(?P<col>\d+): "
+                    r"runtime error: (?P<what>.*)$", re.M)
 
 
 def source(unit: str) -> str:

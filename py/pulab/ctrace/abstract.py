@@ -169,7 +169,8 @@ class BoxEvaluator(Evaluator):
     def run_box(self) -> dict:
         """Run; (line, column) → record ``{"kinds", "lo", "hi", "ctype", "var", "node",
         "exact"}`` of every statement reached (``exact``: the hull of what its last store
-        converted, None when it stores nothing).  Raises :class:`Split` when the box does not decide."""
+        converted, None when it stores nothing).  Raises :class:`Split` when the box does
+        not decide."""
         try:
             self.run()
         except _Stop:

@@ -3,13 +3,14 @@ input in a box — or a concrete input that causes one.
 
 The box (each ranged input ``NAME`` → integers ``[lo, hi]`` of its type; the other inputs keep
 one value) is run by :class:`~pulab.ctrace.abstract.BoxEvaluator` (the tracer's own statements
-over intervals).  A box is split in two along its relatively widest input when it does not
-decide the control flow, or when a statement may fail there and no counterexample for that
-statement is known yet; each box that may fail is first searched for one by running the
-concrete tracer at its centre and corners (an undecided box: at its centre).  A counterexample is reported only after the
-concrete trace at that point raises the failure on that statement, so ``violated`` is always
-reproducible, and ``proven`` holds for every point of the box because every final box's
-interval run is sound.  Work (interval runs + concrete runs) is capped by ``budget``.
+over intervals).  A box is split in two (along an input the undecided statement read, else the
+relatively widest) when it does not decide the control flow, or when a statement may fail
+there and no counterexample for that statement is known yet; each box that may fail is first
+searched for one by running the concrete tracer at its centre and corners (an undecided box:
+at its centre).  A counterexample is reported only after the concrete trace at that point
+raises the failure on that statement, so ``violated`` is always reproducible, and ``proven``
+holds for every point of the box because every interval run is sound.  Work (interval runs +
+concrete runs) is capped by ``budget``.
 
 Verdict of a statement: ``violated`` (a counterexample), ``proven`` (every part of the box lies
 in a box whose interval run completed without the statement failing there — a box left when the
