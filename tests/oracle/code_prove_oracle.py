@@ -33,6 +33,7 @@ UNITS = {
     "variable_shift": ("variable_shift", [("x", "int32_t", False), ("n", "int16_t", False)]),
     "gain_table": ("gain_table", [("num", "int16_t", False), ("den", "int16_t", False),
                                   ("k", "int16_t", False)]),
+    "sector_switch": ("sector_switch", [("a", "int16_t", False), ("b", "int16_t", False)]),
 }
 
 SANITIZE = ("signed-integer-overflow,unsigned-integer-overflow,implicit-conversion,shift,"

@@ -33,12 +33,12 @@ Examples
 
 from __future__ import annotations
 
-from ..fixedpoint.cint import CType, trunc_div
+from ..fixedpoint.cint import CType, convert, trunc_div
 from ..fixedpoint.interval import ICInt
 from .check import VOID
 from .errors import TraceError
 from .evaluate import MAX_STEPS, Evaluator, _Jump, _Return
-from .parser import Binary, Cast, Cond, If, Logical, Member, Num, Unary, Var
+from .parser import Binary, Cast, Cond, If, Label, Logical, Member, Num, Unary, Var
 
 __all__ = ["BoxEvaluator", "Split", "FAILURES", "decide"]
 
@@ -292,6 +292,50 @@ class BoxEvaluator(Evaluator):
             self.statement(s.then)
         elif s.other is not None:
             self.statement(s.other)
+
+    def switch(self, s) -> None:
+        """Every label the test's interval can reach runs on its own copy of memory (a plain
+        variable tested is narrowed to the label's value), and so does ``default`` (or
+        nothing, without one) when some value has no label; the memories are joined."""
+        t = s.test.ctype
+        v = self.eval(s.test)
+        v = v if isinstance(v, ICInt) else _point(v, t)
+        body = s.body.statements
+        starts, seen, default = [], set(), None
+        for i, inner in enumerate(body):
+            if type(inner) is Label:
+                c = None if inner.value_int is None else convert(inner.value_int, t)
+                if c is None:
+                    default = i
+                elif v.lo <= c <= v.hi and c not in seen:
+                    seen.add(c)
+                    starts.append((i, c))
+        rest = len(seen) < v.hi - v.lo + 1  # values without a label of their own
+        self.step(s, "switch", None, v, t)
+        if len(starts) == 1 and not rest or not starts and default is not None:
+            self.run_case(body, starts[0][0] if starts else default)  # one way for every value
+            return
+        path = self.peek(s.test)[0] if _pure(s.test) else None
+        base, outs = self.mem, []
+        for i, c in starts + ([(default, None)] if rest else []):
+            self.mem = dict(base)
+            if path is not None and c is not None:
+                self.mem[path] = _point(c, self.mem[path].ctype)
+            if i is None:  # no default: those values run nothing
+                outs.append(self.mem)
+                continue
+            try:
+                self.run_case(body, i)
+                outs.append(self.mem)
+            except _Return as r:
+                self.pending[-1].append((r.value, self.mem))
+            except (_Dead, _Stop):
+                pass
+            except _Jump:
+                raise Split(self.reads) from None
+        if not outs:
+            raise _Dead()
+        self.mem = _join(outs)
 
     def narrow(self, test, truth: bool) -> bool:
         """Narrow the variables of ``test`` to the points where it is ``truth``; False when

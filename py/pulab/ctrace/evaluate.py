@@ -327,6 +327,10 @@ class Evaluator:
                   branch=taken)
         if start is None:
             return
+        self.run_case(body, start)
+
+    def run_case(self, body: list, start: int) -> None:
+        """Run a ``switch`` body from its statement ``start`` until ``break`` or the end."""
         try:
             for inner in body[start:]:
                 self.statement(inner)
