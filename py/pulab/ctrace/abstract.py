@@ -13,8 +13,9 @@ Control flow that the box does not decide:
   (``x > 100`` makes ``x`` at least 101 on the true side), and join the memories (the hull
   of each variable; a variable set on one side only may be unset);
 - ``&&`` / ``||`` evaluate the right side on a copy and join;
+- ``switch`` runs every label the value can reach (and ``default``) on a copy and joins;
 - a ``return`` on one side is kept with its memory and joined at the function's end;
-- a loop test, an index, a ``switch`` value, a ``break`` on one side, or a pointer that
+- a loop test, an index, a ``break`` or ``continue`` on one side, or a pointer that
   differs between the sides raise :class:`Split`: the caller splits the box (a box of
   one point always decides, as it is the concrete trace).
 
