@@ -149,7 +149,7 @@ export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost
   h('div', { class: 'code-prove-ranges fields' }, names.map((name) => {
     const r = ps.ranges[name];
     const set = (k: 'lo' | 'hi') => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; };
-    return h('div', { class: 'pr-range code-prove-range' },
+    return h('div', { class: 'code-prove-range' },
       h('code', {}, name),
       h('label', {}, t('cpLo'), ' ', h('input', { name: `range.${name}.0`, value: r.lo, inputmode: 'numeric', spellcheck: 'false', oninput: set('lo') })),
       h('label', {}, t('cpHi'), ' ', h('input', { name: `range.${name}.1`, value: r.hi, inputmode: 'numeric', spellcheck: 'false', oninput: set('hi') })),
