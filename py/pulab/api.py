@@ -45,7 +45,7 @@ def _fail(e: InputError) -> str:
     reply = {"ok": False, "field": e.field, "message": e.message, "message_zh": e.message_zh,
              "code": e.code, "params": _strict(e.params)}
     # The tracer's errors say where in the code, and which inputs the code has when it compiled.
-    for key in ("line", "column", "inputs", "functions"):
+    for key in ("line", "column", "inputs", "functions", "macros"):
         if hasattr(e, key):
             reply[key] = getattr(e, key)
     return json.dumps(reply, allow_nan=False)
@@ -130,6 +130,7 @@ _TRACE_KEYS = ("code", "target", "set", "global_q", "define", "entry", "zero_uns
 
 def _trace(req) -> dict:
     from .ctrace import TraceError, compile_code, trace_checked
+    from .ctrace.macro_entry import entry_macros
     from .ctrace.parser import parse as parse_c
     if not isinstance(req, dict):
         raise InputError("input", code="not_object", got=shown(req))
@@ -153,8 +154,9 @@ def _trace(req) -> dict:
     except InputError as e:
         if isinstance(code, str) and (e.field in ("entry", "set") or (
                 isinstance(e, TraceError) and e.field.startswith("set."))):
-            try:  # the code parses: offer its functions so the user can pick one
-                e.functions = list(parse_c(code).functions)
+            try:  # the code parses: offer its functions (and macros) so the user can pick one
+                program = parse_c(code)
+                e.functions, e.macros = list(program.functions), entry_macros(program)
             except InputError:
                 pass
         raise
@@ -162,7 +164,8 @@ def _trace(req) -> dict:
         reply = trace_checked(checked, sets, req.get("global_q"), zero_unset)
     except InputError as e:
         e.inputs = checked.inputs
-        e.functions = list(checked.functions)
+        e.functions = [f for f in checked.functions if f not in checked.program.macros]
+        e.macros = entry_macros(checked.program)
         raise
     reply.pop("ok", None)
     return reply

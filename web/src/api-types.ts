@@ -21,7 +21,7 @@ export interface TraceRequest {
   set?: Record<string, string | number>;
   global_q?: number;
   define?: string[];
-  /** The function of the code to run (absent: the statements outside functions). */
+  /** The function of the code to run, or a statement macro as `NAME` / `NAME(TYPE, …)` (absent: the statements outside functions). */
   entry?: string;
   zero_unset?: boolean;
 }
@@ -32,6 +32,8 @@ export interface TraceVar { type: string; c_type: string; bits: number; signed: 
 export interface Trace {
   target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[];
   entry: string | null; functions: string[];
+  /** The function-like macros that assign (each can be the entry: `NAME` or `NAME(TYPE, …)`). */
+  macros: string[];
   rounding: Record<string, { floor: number; toward_zero: number; max_lost: number }>;
 }
 export interface TraceExample { id: string; title: string; title_zh: string; code: string }

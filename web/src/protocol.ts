@@ -90,6 +90,8 @@ export type ApiErr = {
   line?: number; column?: number; inputs?: string[];
   /** The tracer's: the functions the code defines, whenever it parsed (to pick the entry). */
   functions?: string[];
+  /** The tracer's: the statement macros the code defines (entries too). */
+  macros?: string[];
 };
 /** A kind's reply when it succeeds. */
 export type Ok<K extends ApiKind> = { ok: true } & ReplyBody[K];

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from ..fixedpoint.cint import CType
 from .errors import TraceError
+from .macro_entry import entry_macros
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
                      If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
                      Program, Ptr, Return, StructDef, Switch, Unary, Var, constant_value,
@@ -808,12 +809,13 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         # without an entry every statement runs: the first one outside the subset is the error
         raise program.refused[entry][0] if entry is not None else \
             next(iter(program.refused.values()))[0]
+    entries = [*program.functions, *(f"{m}(…)" for m in entry_macros(program))]
     if entry is not None and entry not in program.functions:
-        known = ", ".join(program.functions) or "none"
-        raise InputError("entry", code="trace_no_entry", name=entry, known=known)
-    if entry is None and program.functions and not any(
+        raise InputError("entry", code="trace_no_entry", name=entry,
+                         known=", ".join(entries) or "none")
+    if entry is None and entries and not any(
             not isinstance(s, Decl) for s in program.statements if not isinstance(s, Block)):
-        raise InputError("entry", code="trace_choose_entry", known=", ".join(program.functions))
+        raise InputError("entry", code="trace_choose_entry", known=", ".join(entries))
     for s in program.statements:
         c.statement(s)
     for name, node in program.functions.items():

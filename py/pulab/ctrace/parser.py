@@ -328,10 +328,12 @@ class QNote:
 
 class Program:
     """Parsed code: ``statements`` (outside functions), ``functions`` (name → FuncDef, in
-    definition order), ``notes`` (name → QNote), ``global_q`` from ``#define``."""
+    definition order), ``notes`` (name → QNote), ``global_q`` from ``#define``, ``macros``
+    (name → the preprocessor's macro, as defined at the end) and ``aliases`` (typedef
+    name → type descriptor)."""
 
     __slots__ = ("source", "statements", "notes", "global_q", "unresolved", "functions",
-                 "refused")
+                 "refused", "macros", "aliases")
 
     def __init__(self, source: str, statements: list, notes: dict, global_q: int | None,
                  functions: dict | None = None, refused: dict | None = None) -> None:
@@ -1198,4 +1200,5 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
     p.type_names = type_names
     prog = Program(source, p.program(), notes, pre.global_q, p.functions, p.refused)
     prog.unresolved = pre.unresolved
+    prog.macros, prog.aliases = pre.macros, p.aliases
     return prog

@@ -12,13 +12,12 @@ Examples
 
 from __future__ import annotations
 
-import re
-
 from ..fixedpoint.cint import CType
 from .check import Checked, check
 from .evaluate import Evaluator, hex_of
 from .errors import TraceError
 from .parser import parse
+from .macro_entry import entry_macros, split_entry, wrapper
 from .preprocess import parse_define
 from .types import TARGETS
 from ..schema.errors import InputError
@@ -49,16 +48,27 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     """Parse and type ``code`` for ``target`` (reusable for many input vectors);
     ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``; ``global_q`` is the Q the
     IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q;
-    ``entry`` the function to run (None: the statements outside functions)."""
-    if entry is not None and (not isinstance(entry, str) or
-                              not re.fullmatch(r"[A-Za-z_]\w*", entry.strip())):
+    ``entry`` the function to run (None: the statements outside functions), or a
+    function-like macro as ``NAME`` or ``NAME(TYPE, …)`` (see :mod:`~pulab.ctrace.macro_entry`)."""
+    if entry is not None and (not isinstance(entry, str) or split_entry(entry) is None):
         raise InputError("entry", code="trace_entry_name", got=shown(entry))
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
     t = TARGETS[target]
     gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
-    return check(parse(code, defines=_defines(defines), global_q=gq, target=t), t,
-                 entry.strip() if entry is not None else None)
+    defs = _defines(defines)
+    program = parse(code, defines=defs, global_q=gq, target=t)
+    if entry is None:
+        return check(program, t)
+    name = split_entry(entry)[0]
+    if name not in program.functions:
+        macro = wrapper(program, entry)
+        if macro is not None:  # the code again, then the objects and the one invocation
+            program = parse(code + macro.text, defines=defs, global_q=gq, target=t)
+            f = program.functions.pop(macro.function)
+            f.name = name
+            program.functions[name] = f
+    return check(program, t, name)
 
 
 def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> dict:
@@ -84,9 +94,6 @@ def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> d
         if not t.min <= value <= t.max:
             raise InputError(field, f"must be {t.min}..{t.max} for {sym.spelling}, got {value}")
         out[name] = value
-    if zero_unset:
-        for name in checked.inputs:
-            out.setdefault(name, 0)
     if zero_unset:
         for name in checked.inputs:
             out.setdefault(name, 0)
@@ -222,6 +229,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     return {"ok": True, "target": checked.target.name, "global_q": gq,
             "entry": entry.name if entry is not None else None,
             "rounding": rounding_summary(steps),
-            "functions": list(checked.functions),
+            "functions": [f for f in checked.functions if f not in checked.program.macros],
+            "macros": entry_macros(checked.program),
             "unresolved_includes": list(checked.program.unresolved),
             "inputs": checked.inputs, "vars": out_vars, "steps": steps}

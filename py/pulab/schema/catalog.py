@@ -60,7 +60,25 @@ MESSAGES = {
                        "代码中没有函数 {name}（函数：{known}）"),
     "trace_choose_entry": ("choose the function to run (functions: {known})",
                            "请选择要运行的函数（函数：{known}）"),
-    "trace_entry_name": ("must be a function name, got {got}", "必须是函数名，当前为 {got}"),
+    "trace_entry_name": ("must be a function name or MACRO(TYPE, …), got {got}",
+                         "必须是函数名或 MACRO(TYPE, …)，当前为 {got}"),
+    "trace_macro_arity": ("macro {name}({params}) has {n} parameters, {given} types given",
+                          "宏 {name}({params}) 有 {n} 个参数，给出了 {given} 个类型"),
+    "trace_macro_param_taken": ("macro {name}: its parameter {param} is already a name of the "
+                                "code (run it through a function you write around it)",
+                                "宏 {name}：参数 {param} 已是代码中的名字（请写一个函数调用它）"),
+    "trace_macro_untyped": ("macro {name}: parameter {param} is not used as {param}.FIELD; "
+                            "name its type: {example}",
+                            "宏 {name}：参数 {param} 没有以 {param}.FIELD 形式使用；请给出其类型："
+                            "{example}"),
+    "trace_macro_no_type": ("macro {name}: no struct of the code has every field of {fields} "
+                            "(structs: {known}); name the type: {example}",
+                            "宏 {name}：代码中没有结构体包含 {fields} 的全部字段（结构体：{known}）；"
+                            "请给出类型：{example}"),
+    "trace_macro_many_types": ("macro {name}: several structs have every field of {fields} "
+                               "({known}); name one: {example}",
+                               "宏 {name}：多个结构体包含 {fields} 的全部字段（{known}）；"
+                               "请指定其一：{example}"),
     "required": ("is required", "必填"),
     "required_choice": ("is required (one of {choices})", "必填（以下之一：{choices}）"),
     "not_json_object": ("must be a JSON object", "必须是 JSON 对象"),
