@@ -165,6 +165,28 @@ albe_t scaled(phase_t x, int16_t gain_q12)
 }
 """
 
+HANDLE = r"""
+#include <stdint.h>
+typedef struct _Lim_ { int32_t gain; int32_t state; int32_t hi; int32_t lo; } Lim;
+typedef struct _Lim_ *LimHandle;
+typedef struct { int32_t gain; int32_t state; int32_t hi; int32_t lo; } LimView;
+
+static inline int32_t lim_run(LimHandle handle, const int32_t x)
+{
+  Lim *obj = (Lim *)handle;
+  void *raw = (void *)obj;
+  const LimView *view = (const LimView *)raw;
+  int32_t y = (int32_t)(((int64_t)obj->gain * x) >> 12) + view->state;
+  obj->state = y >> 4;
+  return y > obj->hi ? obj->hi : (y < obj->lo ? obj->lo : y);
+}
+
+int32_t lim_step(Lim *lim, int32_t x)
+{
+  return lim_run((LimHandle)lim, x);
+}
+"""
+
 ISQRT = r"""
 #include <stdint.h>
 uint16_t isqrt32(uint32_t v)
@@ -291,6 +313,13 @@ def test_unset_inputs_error_names_them_or_read_as_zero():
     ("int f(int x) { int y; return y; }", "f", {"x": 1}, "code",
      "y is read before it has a value"),
     ("int f(int x) { return x; }", "f", {"q": 1}, "set.q", "no variable q is declared"),
+    ("#include <stdint.h>\nint16_t f(int32_t *p) {\n  return *(int16_t *)p; }", "f", {}, "code",
+     "3:11: (int16_t *)p would read int * as short *"),
+    ("typedef struct { int a; } A; typedef struct { int b; } B;\n"
+     "int f(A *p) { void *v = p; B *q = (B *)v; return q->b; }", "f", {}, "code",
+     "2:35: (B *)v would read struct A * as struct B * (a different memory layout"),
+    ("int f(int x) { return *(int *)x; }", "f", {}, "code",
+     "(int *)x: a pointer cast needs a pointer, not int"),
 ])
 def test_errors_name_the_construct(code, entry, sets, field, text):
     with pytest.raises(InputError) as e:
@@ -357,6 +386,10 @@ UNITS = {
                      [("int16_t", "x.a"), ("int16_t", "x.b"), ("int16_t", "gain_q12")],
                      [("int16_t", "return.alpha"), ("int16_t", "return.beta")], ret="albe_t"),
                 {}),
+    "handle": (Unit(HANDLE, "lim_step", [("Lim *", "lim"), ("int32_t", "x")],
+                    [("int32_t", "x"), ("int32_t", "lim.gain"), ("int32_t", "lim.state"),
+                     ("int32_t", "lim.hi"), ("int32_t", "lim.lo")],
+                    [("int32_t", "return"), ("int32_t", "lim.state")]), {}),
     "isqrt": (Unit(ISQRT, "isqrt32", [("uint32_t", "v")], [("uint32_t", "v")],
                    [("uint16_t", "return")]), {}),
 }

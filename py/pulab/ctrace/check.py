@@ -30,6 +30,8 @@ Examples
 
 from __future__ import annotations
 
+import re
+
 from ..fixedpoint.cint import CType
 from .errors import TraceError
 from .macro_entry import entry_macros
@@ -101,6 +103,23 @@ def _same(a, b) -> bool:
     return a is b
 
 
+def same_layout(a, b) -> bool:
+    """Whether objects of types ``a`` and ``b`` are the same memory read the same way: equal
+    integer types, and structs, arrays and pointers whose parts match field by field in order,
+    names included (a pointer cast between them views the same object by the same paths)."""
+    if a is b:
+        return True
+    if isinstance(a, StructT) and isinstance(b, StructT):
+        fa, fb = list(a.fields.items()), list(b.fields.items())
+        return len(fa) == len(fb) and all(x[0] == y[0] and same_layout(x[1][0], y[1][0])
+                                          for x, y in zip(fa, fb))
+    if isinstance(a, ArrT) and isinstance(b, ArrT):
+        return a.n == b.n and same_layout(a.of, b.of)
+    if isinstance(a, PtrT) and isinstance(b, PtrT):
+        return a.to is VOID or b.to is VOID or same_layout(a.to, b.to)
+    return _same(a, b)
+
+
 def describe(t) -> str:
     """A type as C spells it, for messages."""
     if isinstance(t, StructT):
@@ -115,6 +134,8 @@ def describe(t) -> str:
 def _accepts(t, vt) -> bool:
     """Whether a value of type ``vt`` may initialize an object of type ``t`` or be passed
     for a parameter of it: any integer for an integer, else the same type (arrays decay)."""
+    if isinstance(t, PtrT) and t.to is VOID and t.n is None:  # any object pointer to void *
+        return isinstance(_decay(vt), PtrT)
     return isinstance(vt, CType) if isinstance(t, CType) else _same(t, _decay(vt))
 
 
@@ -160,7 +181,8 @@ class Checked:
     declaration order), ``inputs``, ``functions`` (name → Function), ``entry`` (Function or
     None)."""
 
-    __slots__ = ("program", "target", "symbols", "inputs", "functions", "entry", "objects")
+    __slots__ = ("program", "target", "symbols", "inputs", "functions", "entry", "objects",
+                 "roots")
 
     def __init__(self, program: Program, target: Target, symbols: dict, inputs: list,
                  functions: dict | None = None, entry=None, objects: dict | None = None
@@ -169,6 +191,23 @@ class Checked:
         self.functions, self.entry = functions or {}, entry
         #: path of every array object -> its length (pointer arithmetic stays inside it)
         self.objects = objects or {}
+        #: key of every declared object -> its type (a pointer parameter: what it points to)
+        self.roots: dict = {}
+
+    def type_at(self, path: str):
+        """The type of the object at ``path`` (``obj.f[2].g``), or None if unknown."""
+        head = re.match(r"[^.\[]+", path)[0]
+        t = self.roots.get(head)
+        if isinstance(t, PtrT):
+            t = t.to if t.n is None else ArrT(t.to, t.n)
+        for part in re.findall(r"\.(\w+)|\[(\d+)\]", path[len(head):]):
+            if part[0] and isinstance(t, StructT) and part[0] in t.fields:
+                t = t.fields[part[0]][0]
+            elif part[1] and isinstance(t, ArrT):
+                t = t.of
+            else:
+                return None
+        return t
 
 
 def _type_of(target: Target, spelling: str, node) -> object:
@@ -201,6 +240,7 @@ class _Checker:
         self.functions: dict = {}
         self.broken: dict = {}  # function name -> the TraceError its definition raised
         self.arrays: dict = {}
+        self.roots: dict = {}  # key -> type of every object declared
 
     # -- names and types
     def lookup(self, name: str) -> Symbol | None:
@@ -290,6 +330,7 @@ class _Checker:
         self.used_keys.add(key)
         sym = Symbol(name, spelling, ctype, initialized, node.line, node.column, key)
         scope[name] = sym
+        self.roots[key] = ctype
         if isinstance(ctype, ArrT):
             self.arrays[key] = ctype.n
         return sym
@@ -482,6 +523,8 @@ class _Checker:
             self.scalar(e.test)
             return common_type(target, self.scalar(e.then), self.scalar(e.other))
         if kind is Cast:
+            if isinstance(e.type_name, Ptr):
+                return self.pointer_cast(e)
             self.scalar(e.operand)
             return _type_of(target, e.type_name, e)
         if kind is Assign:
@@ -490,7 +533,7 @@ class _Checker:
                 if e.op != "=":
                     raise TraceError(e.line, e.column, f"'{e.op}' on {describe(tt)}")
                 vt = self.expr(e.value)
-                if isinstance(tt, ArrT) or not _same(tt, _decay(vt)):
+                if isinstance(tt, ArrT) or not _accepts(tt, vt):
                     raise TraceError(e.line, e.column, f"cannot assign {describe(vt)} to "
                                      f"{describe(tt)}")
                 return tt
@@ -509,6 +552,21 @@ class _Checker:
         if kind is Call:
             return self.call(e)
         raise AssertionError(kind.__name__)  # the parser makes no other node
+
+    def pointer_cast(self, e: Cast) -> PtrT:
+        """``(T *)p``: the same object seen as a ``T``; allowed when the layouts match field
+        by field, to ``void *``, and from ``void *`` (the object is checked when it runs)."""
+        tt = self.resolve(e.type_name, e)
+        vt = _decay(self.expr(e.operand))
+        text = " ".join(self.program.source[e.start:e.end].split())
+        if not isinstance(vt, PtrT):
+            raise TraceError(e.line, e.column, code="trace_cast_not_pointer", cast=text,
+                             got=describe(vt))
+        if not same_layout(vt, tt):
+            raise TraceError(e.line, e.column, code="trace_cast_reinterprets", cast=text,
+                             src=describe(vt), dst=describe(tt))
+        e.from_void = vt.to is VOID and tt.to is not VOID
+        return PtrT(tt.to)
 
     def call(self, e: Call) -> object:
         if e.q is not None or e.name in IQ_FUNCTIONS:
@@ -633,6 +691,8 @@ class _Inputs:
             return None if base is None else f"{base}[0]"
         if isinstance(e, Unary) and e.op == "&":
             return self.place(e.operand, a)
+        if isinstance(e, Cast):
+            return self.pointer(e.operand, a)
         path = self.place(e, a) if isinstance(e, (Var, Member, Index)) or (
             isinstance(e, Unary) and e.op == "*") else None
         return self.pointers.get(path) if path is not None else None
@@ -900,7 +960,9 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         analysis.active.append(f.name)
         analysis.returns = []
         analysis.block(f.node.body.statements, assigned)
-    return Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
+    checked = Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
+    checked.roots = c.roots
+    return checked
 
 
 def pointee(p: Symbol) -> tuple:

@@ -37,7 +37,7 @@ Examples
 from __future__ import annotations
 
 from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
-from .check import ArrT, Checked, PtrT, StructT, VOID, leaves, pointee
+from .check import ArrT, Checked, PtrT, StructT, VOID, describe, leaves, pointee, same_layout
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
                      Index, InitList, Jump, Label, Logical, Loop, Member, Num, Return, Switch,
@@ -472,6 +472,15 @@ class Evaluator:
             return self.assign(e)
         if kind is Cast:
             v = self.eval(e.operand)
+            if isinstance(e.ctype, PtrT):  # the same object; from void * its type is checked
+                if e.from_void and v is not None:
+                    t = self.checked.type_at(v)
+                    if t is None or not same_layout(t, e.ctype.to):
+                        raise TraceError(e.line, e.column, code="trace_cast_reinterprets",
+                                         cast=" ".join(self.source[e.start:e.end].split()),
+                                         src=f"{describe(t)} *" if t else "void *",
+                                         dst=describe(e.ctype))
+                return v
             w, flags = self.store(v, e.ctype)
             self.term(e, w, flags)
             return w

@@ -132,10 +132,13 @@ class Cond(Node):
 
 
 class Cast(Node):
-    __slots__ = ("type_name", "operand")
+    """``(TYPE)operand``: ``type_name`` a scalar spelling or a :class:`Ptr` descriptor;
+    ``from_void`` (set by the checker) when a ``void *`` becomes an object pointer."""
 
-    def __init__(self, type_name: str, operand: Node) -> None:
-        self.type_name, self.operand = type_name, operand
+    __slots__ = ("type_name", "operand", "from_void")
+
+    def __init__(self, type_name, operand: Node) -> None:
+        self.type_name, self.operand, self.from_void = type_name, operand, False
 
 
 class Assign(Node):
@@ -550,15 +553,17 @@ class _Parser:
         static = self.qualifiers() or static
         return base, base, static
 
-    def type_spelling(self) -> str:
-        """A scalar type's spelling (casts), normalized: ``unsigned long int`` → ``unsigned long``."""
+    def type_spelling(self):
+        """A cast's type: a scalar type's spelling, normalized (``unsigned long int`` →
+        ``unsigned long``), or a :class:`Ptr` descriptor."""
         first = self.peek()
         desc, _, _ = self.specifiers()
         while self.is_op("*"):
             self.take()
             desc = Ptr(desc)
-        if not isinstance(desc, str) or desc == "void":
-            raise _fail(first, "a cast to a pointer, struct or void is not supported")
+            self.qualifiers()
+        if isinstance(desc, StructDef) or desc == "void":
+            raise _fail(first, "a cast to a struct or void is not supported")
         return desc
 
     def tagged(self):

@@ -62,6 +62,13 @@ MESSAGES = {
                            "请选择要运行的函数（函数：{known}）"),
     "trace_entry_name": ("must be a function name or MACRO(TYPE, …), got {got}",
                          "必须是函数名或 MACRO(TYPE, …)，当前为 {got}"),
+    "trace_cast_not_pointer": ("{cast}: a pointer cast needs a pointer, not {got}",
+                               "{cast}：指针转换需要指针，而不是 {got}"),
+    "trace_cast_reinterprets": ("{cast} would read {src} as {dst} (a different memory layout; "
+                                "only casts between the same layout, field by field, are "
+                                "supported)",
+                                "{cast} 会把 {src} 当作 {dst} 读取（内存布局不同；只支持逐字段布局"
+                                "相同的转换）"),
     "trace_macro_arity": ("macro {name}({params}) has {n} parameters, {given} types given",
                           "宏 {name}({params}) 有 {n} 个参数，给出了 {given} 个类型"),
     "trace_macro_param_taken": ("macro {name}: its parameter {param} is already a name of the "

@@ -42,7 +42,7 @@ CATALOG = [
     # functions, structs, pointers, arrays, loops (pulab.ctrace.parser/check/evaluate)
     (r"'\(' is never closed", "'(' 没有闭合"),
     (r"'(\w+)' is not supported \(integer types only\)", r"不支持 '\1'（只支持整数类型）"),
-    (r"a cast to a pointer, struct or void is not supported", "不支持转换为指针、结构体或 void"),
+    (r"a cast to a struct or void is not supported", "不支持转换为结构体或 void"),
     (r"'(\w+)' is not supported", r"不支持 '\1'"),
     (r"expected a struct tag or '\{'", "此处应为结构体标签或 '{'"),
     (r"struct (\S+) is already defined at (\S+)", r"结构体 \1 已在 \2 处定义"),
