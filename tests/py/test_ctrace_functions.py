@@ -423,6 +423,51 @@ def test_units_match_the_compilers(target, capsys):
     assert pairs == VECTORS * len(UNITS)
 
 
+MODEL = r"""
+#include <stdint.h>
+typedef struct { int16_t gain; uint16_t shift; } Cfg;
+typedef struct { int32_t acc; int16_t out; } State;
+typedef struct tag_M Model;
+struct tag_M { const Cfg *cfg; State *st; int16_t in; };
+
+void model_step(Model *const m)
+{
+  const Cfg *c = (const Cfg *)m->cfg;
+  State *s = ((State *) m->st);
+  s->acc += (int32_t)m->in * c->gain;
+  s->out = (int16_t)(s->acc >> (c->shift & 15U));
+}
+"""
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_pointer_fields_of_the_entry_object_are_objects_of_their_own(target, capsys):
+    """As a generated model's step(RT_MODEL *const rtM): each pointer field points to an
+    object named after it (m.cfg.gain); the compilers get the objects from a caller this
+    test writes."""
+    require(target, capsys)
+    # the tracer's name -> the C expression: the objects themselves (the driver loads the
+    # inputs before the caller points m's fields at them)
+    c_name = {"m.in": "m.in", "m.cfg.gain": "m_cfg.gain", "m.cfg.shift": "m_cfg.shift",
+              "m.st.acc": "m_st.acc", "m.st.out": "m_st.out"}
+    checked = compile_code(MODEL, target, entry="model_step")
+    assert sorted(checked.inputs) == ["m.cfg.gain", "m.cfg.shift", "m.in", "m.st.acc"]
+    caller = "Cfg m_cfg; State m_st; Model m;\nvoid run_model(void) " \
+        "{ m.cfg = &m_cfg; m.st = &m_st; model_step(&m); }\n"
+    spell = {n: checked.symbols[n].spelling for n in c_name}
+    unit = Unit(MODEL + caller, "run_model", [],
+                [(spell[n], c_name[n]) for n in checked.inputs],
+                [(spell[n], c_name[n]) for n in ("m.st.acc", "m.st.out")])
+    rng = random.Random(f"model-{target}")
+    vectors = [random_vector(rng, unit, target) for _ in range(100)]
+    expected = []
+    for vec in vectors:
+        ev = run_checked(checked, {n: vec[c_name[n]] for n in checked.inputs}, None,
+                         record=False)
+        expected.append({c_name[n]: ev.values[n] for n in ("m.st.acc", "m.st.out")})
+    assert expected == run_unit(unit, vectors, target)
+
+
 CHAIN = "".join(f"int f{i}(int x) {{ return f{i + 1}(x); }}\n" for i in range(40)) + \
     "int f40(int x) { return x; } int f(int x) { return f0(x); }"
 TREE = "".join(f"int f{i}(int x) {{ return f{i + 1}(x) + f{i + 1}(x); }}\n" for i in range(24)) + \

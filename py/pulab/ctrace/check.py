@@ -182,7 +182,7 @@ class Checked:
     None)."""
 
     __slots__ = ("program", "target", "symbols", "inputs", "functions", "entry", "objects",
-                 "roots")
+                 "roots", "pointees")
 
     def __init__(self, program: Program, target: Target, symbols: dict, inputs: list,
                  functions: dict | None = None, entry=None, objects: dict | None = None
@@ -193,6 +193,8 @@ class Checked:
         self.objects = objects or {}
         #: key of every declared object -> its type (a pointer parameter: what it points to)
         self.roots: dict = {}
+        #: pointer field of the entry's objects -> the object it points to (see :func:`linked`)
+        self.pointees: dict = {}
 
     def type_at(self, path: str):
         """The type of the object at ``path`` (``obj.f[2].g``), or None if unknown."""
@@ -201,6 +203,8 @@ class Checked:
         if isinstance(t, PtrT):
             t = t.to if t.n is None else ArrT(t.to, t.n)
         for part in re.findall(r"\.(\w+)|\[(\d+)\]", path[len(head):]):
+            if isinstance(t, PtrT):  # a pointer field's own object (see linked)
+                t = t.to
             if part[0] and isinstance(t, StructT) and part[0] in t.fields:
                 t = t.fields[part[0]][0]
             elif part[1] and isinstance(t, ArrT):
@@ -930,6 +934,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
             not sym.initialized)
     f = c.functions.get(entry) if entry is not None else None
     objects = dict(c.arrays)
+    pointees: dict = {}  # a pointer field of an entry's object -> the object it points to
     if f is not None:
         for p in f.params:
             if isinstance(p.ctype, PtrT):
@@ -937,6 +942,9 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
                 add(path, t, p.spelling, p.line, p.column, False, True)
                 if isinstance(t, ArrT):
                     objects[path] = t.n
+                for ptr, obj, ot, sp in linked(path, t):
+                    add(obj, ot, sp, p.line, p.column, False, True)
+                    pointees[ptr] = obj
             else:
                 add(p.key, p.ctype, p.spelling, p.line, p.column, False, True)
         for sym in _entry_locals(f.node.body):
@@ -954,6 +962,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         for p in f.params:  # every integer parameter is an input, in order
             if isinstance(p.ctype, PtrT):
                 analysis.pointers[p.key] = pointee(p)[2]
+                analysis.pointers.update(pointees)
             elif isinstance(p.ctype, CType):
                 analysis.read(p.key, p.ctype, set())
                 assigned.add(p.key)
@@ -961,7 +970,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         analysis.returns = []
         analysis.block(f.node.body.statements, assigned)
     checked = Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
-    checked.roots = c.roots
+    checked.roots, checked.pointees = c.roots, pointees
     return checked
 
 
@@ -973,6 +982,23 @@ def pointee(p: Symbol) -> tuple:
         return p.name, ArrT(t.to, t.n), f"{p.name}[0]"
     path = p.name if isinstance(t.to, StructT) else f"*{p.name}"
     return path, t.to, path
+
+
+def linked(path: str, t, chain: tuple = ()) -> list:
+    """The objects the pointer fields of the object at ``path`` point to, each an object of
+    its own named after the field (``rtM.dwork`` → ``rtM.dwork.FIELD``, an integer ``*rtM.n``):
+    a list of (pointer path, object path, object type), nested pointers followed, a struct
+    already on the way not again (a linked list's next stays unset)."""
+    out = []
+    chain = chain + (t,)
+    for leaf, lt, sp in leaves(path, t):
+        if not isinstance(lt, PtrT) or lt.n is not None or lt.to is VOID or lt.to in chain:
+            continue
+        obj = leaf if isinstance(lt.to, StructT) else f"*{leaf}"
+        out.append((leaf, obj, lt.to, sp))
+        if isinstance(lt.to, StructT):
+            out += linked(obj, lt.to, chain)
+    return out
 
 
 def _entry_locals(body) -> list:

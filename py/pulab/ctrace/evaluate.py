@@ -37,7 +37,8 @@ Examples
 from __future__ import annotations
 
 from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
-from .check import ArrT, Checked, PtrT, StructT, VOID, describe, leaves, pointee, same_layout
+from .check import (ArrT, Checked, PtrT, StructT, VOID, describe, leaves, linked, pointee,
+                    same_layout)
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
                      Index, InitList, Jump, Label, Logical, Loop, Member, Num, Return, Switch,
@@ -200,6 +201,9 @@ class Evaluator:
                     obj, t, value = pointee(p)
                     self.mem[p.key] = value
                     given = leaves(obj, t, p.spelling)
+                    for ptr, obj2, t2, sp in linked(obj, t):
+                        self.mem[ptr] = obj2
+                        given += leaves(obj2, t2, sp)
                 else:
                     given = leaves(p.key, p.ctype, p.spelling)
                 for path, t, spelling in given:
