@@ -426,9 +426,15 @@ def test_units_match_the_compilers(target, capsys):
 MODEL = r"""
 #include <stdint.h>
 typedef struct { int16_t gain; uint16_t shift; } Cfg;
-typedef struct { int32_t acc; int16_t out; } State;
+typedef struct { int32_t acc; int16_t out; int16_t hist[2]; } State;
 typedef struct tag_M Model;
 struct tag_M { const Cfg *cfg; State *st; int16_t in; };
+
+static void push(int16_t y[2], int16_t v)
+{
+  y[1] = y[0];
+  y[0] = v;
+}
 
 void model_step(Model *const m)
 {
@@ -436,6 +442,7 @@ void model_step(Model *const m)
   State *s = ((State *) m->st);
   s->acc += (int32_t)m->in * c->gain;
   s->out = (int16_t)(s->acc >> (c->shift & 15U));
+  push(s->hist, s->out);
 }
 """
 
@@ -449,22 +456,25 @@ def test_pointer_fields_of_the_entry_object_are_objects_of_their_own(target, cap
     # the tracer's name -> the C expression: the objects themselves (the driver loads the
     # inputs before the caller points m's fields at them)
     c_name = {"m.in": "m.in", "m.cfg.gain": "m_cfg.gain", "m.cfg.shift": "m_cfg.shift",
-              "m.st.acc": "m_st.acc", "m.st.out": "m_st.out"}
+              "m.st.acc": "m_st.acc", "m.st.out": "m_st.out", "m.st.hist[0]": "m_st.hist[0]",
+              "m.st.hist[1]": "m_st.hist[1]"}
+    outs = ("m.st.acc", "m.st.out", "m.st.hist[0]", "m.st.hist[1]")
     checked = compile_code(MODEL, target, entry="model_step")
-    assert sorted(checked.inputs) == ["m.cfg.gain", "m.cfg.shift", "m.in", "m.st.acc"]
+    assert sorted(checked.inputs) == ["m.cfg.gain", "m.cfg.shift", "m.in", "m.st.acc",
+                                      "m.st.hist[0]"]
     caller = "Cfg m_cfg; State m_st; Model m;\nvoid run_model(void) " \
         "{ m.cfg = &m_cfg; m.st = &m_st; model_step(&m); }\n"
     spell = {n: checked.symbols[n].spelling for n in c_name}
     unit = Unit(MODEL + caller, "run_model", [],
                 [(spell[n], c_name[n]) for n in checked.inputs],
-                [(spell[n], c_name[n]) for n in ("m.st.acc", "m.st.out")])
+                [(spell[n], c_name[n]) for n in outs])
     rng = random.Random(f"model-{target}")
     vectors = [random_vector(rng, unit, target) for _ in range(100)]
     expected = []
     for vec in vectors:
         ev = run_checked(checked, {n: vec[c_name[n]] for n in checked.inputs}, None,
                          record=False)
-        expected.append({c_name[n]: ev.values[n] for n in ("m.st.acc", "m.st.out")})
+        expected.append({c_name[n]: ev.values[n] for n in outs})
     assert expected == run_unit(unit, vectors, target)
 
 
@@ -487,3 +497,13 @@ def test_each_limit_is_a_one_line_error(code, text):
         trace(code, "arm", {"x": 1}, entry="f")
     assert text in e.value.message and "\n" not in e.value.message
     assert chinese(e.value.message_zh)
+
+
+def test_a_header_extern_then_the_definition_is_one_object():
+    code = "typedef struct { short a[2]; } C;\nextern const C tab;\nextern int k;\n" \
+        "const C tab = { { 3, 4 } };\nint f(void) { return tab.a[1] + k; }"
+    r = trace(code, "arm", {"k": 10}, entry="f")
+    assert r["inputs"] == ["k"] and r["vars"]["return"]["value"] == 14
+    with pytest.raises(TraceError) as e:
+        trace("int k = 1;\nint k = 2;", "arm")
+    assert "2:5: k is already declared at 1:5" in str(e.value)

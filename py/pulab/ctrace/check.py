@@ -321,6 +321,11 @@ class _Checker:
         scope = self.scopes[-1]
         if name in scope:
             prev = scope[name]
+            if len(self.scopes) == 1 and not (prev.initialized and initialized) and \
+                    same_layout(prev.ctype, ctype):
+                # C99 6.9.2: `extern T x;` (a header) then the definition `T x = {…};`
+                prev.initialized = prev.initialized or initialized
+                return prev
             raise TraceError(node.line, node.column, f"{name} is already declared "
                              f"at {prev.line}:{prev.column}")
         f = self.function

@@ -450,7 +450,12 @@ class Evaluator:
         if i == 0:
             return ptr
         head, bracket, k = ptr[:-1].rpartition("[")
-        n = self.checked.objects.get(head) if bracket and ptr.endswith("]") else None
+        n = None
+        if bracket and ptr.endswith("]"):
+            n = self.checked.objects.get(head)
+            if n is None:  # an array field of a struct
+                t = self.checked.type_at(head)
+                n = t.n if isinstance(t, ArrT) else None
         if n is None:
             raise TraceError(node.line, node.column, code="trace_one_object", name=ptr)
         j = int(k) + i
