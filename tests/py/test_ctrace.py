@@ -247,6 +247,19 @@ def test_cli_bad_input_exits_2_with_one_line(args, stdin, prefix):
     assert p.stderr.startswith(prefix) and p.stderr.count("\n") == 1, p.stderr
 
 
+def test_cli_reads_latin1_comments_and_refuses_such_bytes_outside_them(tmp_path):
+    f = tmp_path / "gbk.c"
+    f.write_bytes(b"/* Rule\xa011.4 */ long a = 3; // e\xba\xcd\nlong b = a * 2;\n")
+    p = subprocess.run([sys.executable, "-m", "pulab", "trace", str(f), "--format", "text"],
+                       capture_output=True, text=True, cwd=ROOT,
+                       env={"PYTHONPATH": str(ROOT / "py")})
+    assert p.returncode == 0 and "b = 6" in p.stdout, p.stderr
+    f.write_bytes(b"long a = 3;\nlong b = a \xd7 2;\n")
+    p = subprocess.run([sys.executable, "-m", "pulab", "trace", str(f)], capture_output=True,
+                       text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT / "py")})
+    assert p.returncode == 2 and p.stderr.startswith("error: code: 2:12: unexpected character")
+
+
 def test_fuzzed_api_requests_give_only_error_replies():
     rng = random.Random(11)
     values = [None, True, 0, -1, 2**70, 1.5, "", "c28x", "arm", "0x10", [], {}, [1], {"a": 1},
