@@ -436,13 +436,18 @@ static void push(int16_t y[2], int16_t v)
   y[0] = v;
 }
 
+static State *model_state(const Model *m)
+{
+  return m->st;
+}
+
 void model_step(Model *const m)
 {
   const Cfg *c = (const Cfg *)m->cfg;
   State *s = ((State *) m->st);
   s->acc += (int32_t)m->in * c->gain;
   s->out = (int16_t)(s->acc >> (c->shift & 15U));
-  push(s->hist, s->out);
+  push(model_state(m)->hist, s->out);
 }
 """
 
@@ -450,8 +455,8 @@ void model_step(Model *const m)
 @pytest.mark.parametrize("target", ["avr", "arm"])
 def test_pointer_fields_of_the_entry_object_are_objects_of_their_own(target, capsys):
     """As a generated model's step(RT_MODEL *const rtM): each pointer field points to an
-    object named after it (m.cfg.gain); the compilers get the objects from a caller this
-    test writes."""
+    object named after it (m.cfg.gain), also when a getter returns it; the compilers get the
+    objects from a caller this test writes."""
     require(target, capsys)
     # the tracer's name -> the C expression: the objects themselves (the driver loads the
     # inputs before the caller points m's fields at them)
@@ -507,3 +512,10 @@ def test_a_header_extern_then_the_definition_is_one_object():
     with pytest.raises(TraceError) as e:
         trace("int k = 1;\nint k = 2;", "arm")
     assert "2:5: k is already declared at 1:5" in str(e.value)
+
+
+def test_what_was_written_before_a_call_stays_written_after_it():
+    code = "typedef struct { int a; int b; } S;\nstatic int one(void) { return 1; }\n" \
+        "int f(S *p) { p->a = 2; p->b = one(); return p->a + p->b; }"
+    r = trace(code, "arm", {}, entry="f")
+    assert r["inputs"] == [] and r["vars"]["return"]["value"] == 3

@@ -384,6 +384,11 @@ class _Checker:
                                      "'return' takes no value")
             elif s.value is None:
                 raise TraceError(s.line, s.column, f"{f.name}() must return a value")
+            elif isinstance(f.ret, PtrT):
+                vt = self.expr(s.value)
+                if not _accepts(f.ret, vt):
+                    raise TraceError(s.value.line, s.value.column, f"{f.name}() returns "
+                                     f"{describe(f.ret)}, not {describe(vt)}")
             elif isinstance(f.ret, StructT):
                 vt = self.expr(s.value)
                 if vt is not f.ret:
@@ -612,9 +617,12 @@ class _Checker:
         f.scope = self.scopes.pop()
         self.function = None
         f.ret = self.resolve(node.ret, node)
-        if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID:
+        if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID and not (
+                isinstance(f.ret, PtrT) and f.ret.n is None and not entry):
             raise TraceError(node.line, node.column, f"{f.name}() returns {describe(f.ret)}: "
-                             "only integer, struct and void results are supported")
+                             "only integer, struct and void results are supported"
+                             + (" (a pointer result from a called function)"
+                                if isinstance(f.ret, PtrT) else ""))
 
     def body(self, f: Function) -> None:
         self.function = f
@@ -642,6 +650,7 @@ class _Inputs:
         self.active: list = []
         self.visits = 0
         self.returns: list | None = None
+        self.results: list = []  # the paths the current function's pointer returns give
 
     def tick(self, node) -> None:
         self.visits += 1
@@ -702,6 +711,8 @@ class _Inputs:
             return self.place(e.operand, a)
         if isinstance(e, Cast):
             return self.pointer(e.operand, a)
+        if isinstance(e, Call):
+            return self.call(e, a)
         path = self.place(e, a) if isinstance(e, (Var, Member, Index)) or (
             isinstance(e, Unary) and e.op == "*") else None
         return self.pointers.get(path) if path is not None else None
@@ -760,12 +771,14 @@ class _Inputs:
             for item in e.items:
                 self.expr(item, a)
 
-    def call(self, e: Call, a) -> None:
+    def call(self, e: Call, a) -> str | None:
+        """Follow a call of a function of the code; a pointer result's path when every
+        ``return`` gives the same one."""
         f = e.func
         if f is None:
             for arg in e.args:
                 self.expr(arg, a)
-            return
+            return None
         if f.name in self.active:
             raise TraceError(e.line, e.column, code="trace_recursion", name=f.name)
         bound = []
@@ -781,17 +794,20 @@ class _Inputs:
             self.write(p.key, p.ctype, a)
         self.pointers.update(bound)
         self.active.append(f.name)
-        outer = self.returns
-        self.returns = []
+        outer, outer_results = self.returns, self.results
+        self.returns, self.results = [], []
         end = self.block(f.node.body.statements, a)
         ends = self.returns + [end]
-        self.returns = outer
+        results = set(self.results)
+        self.returns, self.results = outer, outer_results
         self.active.pop()
         if a is not None:
             live = [x for x in ends if x is not None]
-            if live:
+            if live:  # (a itself may be one of them: intersect before clearing it)
+                both = set.intersection(*live)
                 a.clear()
-                a.update(set.intersection(*live))
+                a.update(both)
+        return results.pop() if len(results) == 1 else None
 
     def block(self, statements, a):
         for s in statements:
@@ -840,7 +856,9 @@ class _Inputs:
                 return inner if inner is not None else a
             return a
         if isinstance(s, Return):
-            if s.value is not None:
+            if s.value is not None and isinstance(s.value.ctype, PtrT):
+                self.results.append(self.pointer(s.value, a))
+            elif s.value is not None:
                 self.expr(s.value, a)
             if self.returns is not None:
                 self.returns.append(a)

@@ -288,6 +288,9 @@ class Evaluator:
             if s.value is None:
                 self.step(s, src[s.start:s.end], None, None, VOID)
                 raise _Return(None)
+            if isinstance(f.ret, PtrT):  # an object's path (a handle getter)
+                self.step(s, src[s.start:s.end], None, None, VOID)
+                raise _Return(self.eval(s.value))
             if isinstance(f.ret, StructT):  # copied out: the callee's frame goes on the next call
                 self.copy(f"{f.prefix}return", self.eval(s.value), f.ret)
                 self.step(s, src[s.start:s.end], "return", None, VOID)
@@ -683,7 +686,7 @@ class Evaluator:
             t = e.ctype
             scalar = isinstance(t, CType)
             self.terms.append({"expr": self.source[e.start:e.end], "line": e.line,
-                               "column": e.column, "type": t.name,
+                               "column": e.column, "type": describe(t),
                                "value": value if scalar else None,
                                "hex": hex_of(value, t.bits) if scalar else None,
                                "flags": flags, "call": f.name, "steps": inner})
