@@ -306,6 +306,8 @@ def test_unset_inputs_error_names_them_or_read_as_zero():
     ("int f(int x) { while (x) { x = 1; } return x; }", "f", {"x": 1}, "code",
      "more than 10000 statements executed"),
     ("struct s; int f(struct s *p) { return 0; }", "f", {}, "code",
+     "p is a handle to an object of unknown type: the entry casts it to none"),
+    ("struct s; int f(struct s x) { return 0; }", "f", {}, "code",
      "struct s is declared but its fields are not pasted"),
     ("typedef struct { int a; } S; int f(S *p) { return p->b; }", "f", {}, "code",
      "struct S has no field b"),
@@ -519,3 +521,44 @@ def test_what_was_written_before_a_call_stays_written_after_it():
         "int f(S *p) { p->a = 2; p->b = one(); return p->a + p->b; }"
     r = trace(code, "arm", {}, entry="f")
     assert r["inputs"] == [] and r["vars"]["return"]["value"] == 3
+
+
+OPAQUE = r"""
+#include <stdint.h>
+typedef struct _LPF_ { int32_t b0; int32_t a1; int32_t y1; } LPF_Obj;
+typedef struct _LPF_Obj_ *LPF_Handle;   /* a tag never defined, as TI's modules have it */
+#define LPF_B0_DEFAULT _IQ(1.0/3.0)
+
+static inline int32_t LPF_run(LPF_Handle handle, const int32_t x)
+{
+  LPF_Obj *obj = (LPF_Obj *)handle;
+  int32_t y0 = _IQmpy(obj->b0, x) - _IQmpy(obj->a1, obj->y1);
+  obj->y1 = y0;
+  return y0;
+}
+
+int32_t LPF_default(LPF_Handle handle, const int32_t x)
+{
+  LPF_Obj *obj = (LPF_Obj *)handle;
+  obj->b0 = LPF_B0_DEFAULT;
+  return LPF_run(handle, x);
+}
+"""
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_an_opaque_handle_is_the_object_the_entry_casts_it_to(target, capsys):
+    """A handle typedef'd to a struct tag that is never defined points to the object its
+    casts name; _IQ of a constant expression folds as the compiler folds it."""
+    require(target, capsys)
+    checked = compile_code(OPAQUE, target, entry="LPF_default")
+    assert checked.inputs == ["x", "handle.a1", "handle.y1"]
+    unit = Unit(OPAQUE, "LPF_default", [("struct _LPF_ *", "handle"), ("int32_t", "x")],
+                [("int32_t", "x"), ("int32_t", "handle.a1"), ("int32_t", "handle.y1")],
+                [("int32_t", "return"), ("int32_t", "handle.b0"), ("int32_t", "handle.y1")])
+    rng = random.Random(f"opaque-{target}")
+    vectors = [random_vector(rng, unit, target) for _ in range(100)]
+    expected = [{n: run_checked(checked, v, None, record=False).values[n]
+                 for _, n in unit.outputs} for v in vectors]
+    assert expected == run_unit(unit, vectors, target)
+    assert expected[0]["handle.b0"] == 5592405  # (long)(1.0/3.0 * 2^24)

@@ -286,3 +286,20 @@ def test_floating_typedefs_wait_until_used():
     # static and inline are qualifiers of a function definition
     r = trace("static inline int16_t f(int16_t x) { return x; }", "arm", {"x": 3}, entry="f")
     assert r["vars"]["return"]["value"] == 3
+
+
+@pytest.mark.parametrize("arg,value", [
+    ("4.0/3.0", 22369621),        # floor(2^24 * 4/3), folded in binary64
+    ("4/3", 1 << 24),             # integer division first, as C
+    ("-(1.0/3.0)", -5592405),     # toward zero
+    ("2.0*(1.5-0.25)", 41943040),
+])
+def test_iq_of_a_constant_expression_folds_as_the_compiler(arg, value):
+    assert trace(f"long x = _IQ({arg});", "c28x")["vars"]["x"]["value"] == value
+
+
+def test_iq_of_a_variable_or_float_suffix_expression_is_refused():
+    for code in ("long y; long x = _IQ(y / 3.0);", "long x = _IQ(1.0f / 3.0f);"):
+        with pytest.raises(TraceError) as e:
+            trace(code, "c28x")
+        assert "needs a floating constant" in str(e.value)

@@ -36,8 +36,8 @@ from ..fixedpoint.cint import CType
 from .errors import TraceError
 from .macro_entry import entry_macros
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
-                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
-                     Program, Ptr, Return, StructDef, Switch, Unary, Var, constant_value,
+                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Node, Num,
+                     Program, Ptr, Return, Stmt, StructDef, Switch, Unary, Var, constant_value,
                      IQ_FUNCTIONS)
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
@@ -275,6 +275,10 @@ class _Checker:
         if isinstance(desc, str):
             return VOID if desc == "void" else _type_of(self.target, desc, node)
         if isinstance(desc, Ptr):
+            if isinstance(desc.to, StructDef) and desc.to.fields is None and desc.size is None:
+                # a handle to a struct never defined (TI's `struct _PI_Obj_ *PI_Handle` beside
+                # `typedef struct _PI_ {…} PI_Obj`): opaque as void *, its casts checked
+                return PtrT(VOID)
             to = self.resolve(desc.to, node)
             if isinstance(to, PtrT):
                 raise TraceError(node.line, node.column, "pointers to pointers are not "
@@ -929,6 +933,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
     for name, err in c.broken.items():
         program.refused[name] = (err, True)
         del c.functions[name]
+    if entry is not None:
+        _handles(c.functions[entry], c.roots)
     calls = set(c.functions[entry].calls) if entry is not None else set()
     seen: set = set()
     while calls - seen:  # a broken function the entry reaches is an error at its call
@@ -1005,6 +1011,35 @@ def pointee(p: Symbol) -> tuple:
         return p.name, ArrT(t.to, t.n), f"{p.name}[0]"
     path = p.name if isinstance(t.to, StructT) else f"*{p.name}"
     return path, t.to, path
+
+
+def _handles(f: Function, roots: dict) -> None:
+    """An entry parameter that is an opaque handle (``void *`` or a pointer to a struct never
+    defined) points to an object of the type the entry casts it to: ``(PI_Obj *)handle``."""
+    for p in f.params:
+        if not (isinstance(p.ctype, PtrT) and p.ctype.to is VOID):
+            continue
+        seen: set = set()
+
+        def walk(node):
+            if isinstance(node, Cast) and isinstance(node.operand, Var) and \
+                    getattr(node.operand, "sym", None) is p and isinstance(node.ctype, PtrT):
+                seen.add(node.ctype.to)
+            for name in getattr(node, "__slots__", ()):
+                child = getattr(node, name, None)
+                for item in (child if isinstance(child, list) else [child]):
+                    if isinstance(item, tuple):
+                        for x in item:
+                            if isinstance(x, (Node, Stmt)):
+                                walk(x)
+                    elif isinstance(item, (Node, Stmt)):
+                        walk(item)
+
+        walk(f.node.body)
+        if len(seen) != 1:
+            raise TraceError(p.line, p.column, code="trace_opaque_entry", name=p.name,
+                             types=", ".join(describe(t) for t in seen) or "none")
+        p.ctype = roots[p.key] = PtrT(seen.pop())
 
 
 def linked(path: str, t, chain: tuple = ()) -> list:

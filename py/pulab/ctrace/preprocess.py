@@ -394,12 +394,12 @@ class _Pre:
             i += 1
         core = [t for t in arg[i:] if t.text not in ("(", ")")]
         m = _FLOAT.match(core[0].text) if len(core) == 1 and core[0].kind == "number" else None
-        if m is None:
-            raise _fail(use, f"{use.text}(…) needs a floating constant (a variable would need "
-                             "floating point at run time)")
-        value = float(m[1])
-        if m[2] in ("f", "F"):
-            value = struct.unpack("<f", struct.pack("<f", value))[0]
+        if m is not None:
+            value = float(m[1])
+            if m[2] in ("f", "F"):
+                value = struct.unpack("<f", struct.pack("<f", value))[0]
+        else:  # a constant expression such as 4.0/3.0, folded in binary64 as C does
+            value = _ConstFloat(arg[i:], use).value()
         scaled = int(sign * value * 2.0 ** n)  # * 2**n is exact in binary floating point
         if not -(1 << 31) <= scaled < (1 << 31):
             raise _fail(use, f"{use.text}(…) = {scaled} does not fit a 32-bit long")
@@ -487,6 +487,79 @@ class _Pre:
             out.append(t)
             i += 1
         return [t for t in out if t.kind != "placemarker"]
+
+
+class _ConstFloat:
+    """``+ - * /`` and parentheses over number literals: an integer operation as C's
+    (division toward zero), one with a ``double`` operand in binary64; ``f`` literals refused
+    here (their arithmetic precision depends on FLT_EVAL_METHOD)."""
+
+    def __init__(self, toks: list, use: Token) -> None:
+        self.toks, self.pos, self.use = toks, 0, use
+
+    def fail(self):
+        raise _fail(self.use, f"{self.use.text}(…) needs a floating constant (a variable "
+                              "would need floating point at run time)")
+
+    def value(self) -> float:
+        if not self.toks:
+            self.fail()
+        v = self.sum()
+        if self.pos != len(self.toks):
+            self.fail()
+        return float(v)
+
+    def peek(self) -> str:
+        return self.toks[self.pos].text if self.pos < len(self.toks) else ""
+
+    def sum(self):
+        v = self.product()
+        while self.peek() in ("+", "-"):
+            op = self.toks[self.pos].text
+            self.pos += 1
+            w = self.product()
+            v = v + w if op == "+" else v - w
+        return v
+
+    def product(self):
+        v = self.unary()
+        while self.peek() in ("*", "/"):
+            op = self.toks[self.pos].text
+            self.pos += 1
+            w = self.unary()
+            if op == "*":
+                v = v * w
+            elif w == 0:
+                self.fail()
+            elif isinstance(v, int) and isinstance(w, int):
+                v = abs(v) // abs(w) * (1 if (v < 0) == (w < 0) else -1)
+            else:
+                v = v / w
+        return v
+
+    def unary(self):
+        t = self.peek()
+        if t in ("+", "-"):
+            self.pos += 1
+            v = self.unary()
+            return -v if t == "-" else v
+        if t == "(":
+            self.pos += 1
+            v = self.sum()
+            if self.peek() != ")":
+                self.fail()
+            self.pos += 1
+            return v
+        tok = self.toks[self.pos] if self.pos < len(self.toks) else None
+        if tok is None or tok.kind != "number":
+            self.fail()
+        self.pos += 1
+        m = _FLOAT.match(tok.text)
+        if m is not None and m[2] not in ("f", "F") and not re.fullmatch(r"\d+[uUlL]*", tok.text):
+            return float(m[1])
+        if re.fullmatch(r"\d+[uUlL]*", tok.text):
+            return int(re.match(r"\d+", tok.text)[0])
+        self.fail()
 
 
 class _IfExpr:

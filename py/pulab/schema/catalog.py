@@ -69,6 +69,11 @@ MESSAGES = {
                                 "supported)",
                                 "{cast} 会把 {src} 当作 {dst} 读取（内存布局不同；只支持逐字段布局"
                                 "相同的转换）"),
+    "trace_opaque_entry": ("{name} is a handle to an object of unknown type: the entry casts "
+                           "it to {types} (it needs to cast it to one struct type, as "
+                           "(PI_Obj *){name})",
+                           "{name} 是指向未知类型对象的句柄：入口函数把它转换为 {types}（需要转换为"
+                           "一种结构体类型，如 (PI_Obj *){name}）"),
     "trace_macro_arity": ("macro {name}({params}) has {n} parameters, {given} types given",
                           "宏 {name}({params}) 有 {n} 个参数，给出了 {given} 个类型"),
     "trace_macro_param_taken": ("macro {name}: its parameter {param} is already a name of the "
