@@ -131,7 +131,7 @@ def _body_tokens(text: str, at: Token, what: str) -> list:
             toks.append(Token("op", piece, at.line, at.column, at.start, at.end))
             continue
         try:
-            toks.extend(tokenize(piece)[:-1])
+            toks.extend(_tokens(piece))  # cached: a header's definitions recur on every run
         except TraceError as e:
             raise _fail(at, f"in {what}: {e.reason}") from None
     if any(t.kind in ("directive", "annotation") for t in toks):
