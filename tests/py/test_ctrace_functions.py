@@ -562,3 +562,17 @@ def test_an_opaque_handle_is_the_object_the_entry_casts_it_to(target, capsys):
                  for _, n in unit.outputs} for v in vectors]
     assert expected == run_unit(unit, vectors, target)
     assert expected[0]["handle.b0"] == 5592405  # (long)(1.0/3.0 * 2^24)
+
+
+def test_a_float_field_is_refused_only_where_it_is_used():
+    code = "#include <stdint.h>\ntypedef float float_t;\n" \
+        "typedef struct { int16_t avg; float_t conv; } Pow;\n" \
+        "void run(Pow *p, int16_t x) { p->avg += (int16_t)((x - p->avg) / 16); }\n" \
+        "int16_t scaled(Pow *p) { return (int16_t)p->conv; }"
+    r = trace(code, "arm", {"p.avg": 32, "x": 0}, entry="run")
+    assert r["vars"]["p.avg"]["value"] == 30 and "p.conv" not in r["vars"]
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", {}, entry="scaled", zero_unset=True)
+    assert "5:42: field conv of struct Pow: float_t is a floating-point type (typedef at 2:15)" \
+        in str(e.value)
+    assert chinese(e.value.message_zh)

@@ -37,8 +37,8 @@ from .errors import TraceError
 from .macro_entry import entry_macros
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
                      If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Node, Num,
-                     Program, Ptr, Return, Stmt, StructDef, Switch, Unary, Var, constant_value,
-                     IQ_FUNCTIONS)
+                     Program, Ptr, Return, Stmt, StructDef, Switch, Unary, Unsupported, Var,
+                     constant_value, IQ_FUNCTIONS)
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
@@ -290,6 +290,8 @@ class _Checker:
                     raise TraceError(desc.size.line, desc.size.column, code="trace_array_size",
                                      n=n, limit=MAX_ELEMENTS)
             return PtrT(to, n)
+        if isinstance(desc, Unsupported):
+            return desc  # refused where the field is used
         if isinstance(desc, Arr):
             if desc.size is None:
                 raise TraceError(node.line, node.column, "an array needs a size or an "
@@ -506,6 +508,10 @@ class _Checker:
             field = bt.fields.get(e.field)
             if field is None:
                 raise TraceError(e.line, e.column, f"struct {bt.name} has no field {e.field}")
+            if isinstance(field[0], Unsupported):
+                raise TraceError(e.line, e.column, code="trace_field_unsupported",
+                                 name=e.field, struct=bt.name,
+                                 reason={"code": "text", "params": {"text": field[0].reason}})
             return field[0]
         if kind is Index:
             bt = self.expr(e.base)

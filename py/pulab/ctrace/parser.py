@@ -39,6 +39,7 @@ from .types import BASE_TYPE_WORDS, TARGETS
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
            "Cast", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
            "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr", "Arr",
+           "Unsupported",
            "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
@@ -204,6 +205,16 @@ class Ptr:
 
     def __init__(self, to, size=None) -> None:
         self.to, self.size = to, size
+
+
+class Unsupported:
+    """Type descriptor of a struct field the subset cannot compute (``float_t ConvFact;``):
+    ``reason`` is the error a use of the field raises."""
+
+    __slots__ = ("reason",)
+
+    def __init__(self, reason: str) -> None:
+        self.reason = reason
 
 
 class Arr:
@@ -592,7 +603,7 @@ class _Parser:
                 if self.peek().kind == "end":
                     raise _fail(open_tok, f"'{{' at {open_tok.line}:{open_tok.column} is "
                                           "never closed")
-                desc, spelling, _ = self.specifiers()
+                desc, spelling = self.field_specifiers()
                 while True:
                     name, d, at = self.declarator(desc)
                     if self.is_op(":"):
@@ -608,6 +619,24 @@ class _Parser:
             self.take()
             sdef.fields = fields
         return sdef
+
+    def field_specifiers(self) -> tuple:
+        """A struct field's type: as :meth:`specifiers`, except that a floating or pointer
+        typedef (as in a handle beside the integers) is an :class:`Unsupported` field,
+        refused where it is used."""
+        self.qualifiers()
+        tok = self.peek()
+        if tok.kind == "name" and (tok.text in self.floating or tok.text in _FLOATING):
+            if tok.text in self.floating:
+                at, what = self.floating[tok.text]
+                reason = f"{tok.text} is {what} (typedef at {at.line}:{at.column}), not supported"
+            else:
+                reason = f"'{tok.text}' is not supported (integer types only)"
+            self.take()
+            self.qualifiers()
+            return Unsupported(reason), tok.text
+        desc, spelling, _ = self.specifiers()
+        return desc, spelling
 
     def enumerators(self) -> None:
         self.take()

@@ -74,6 +74,8 @@ MESSAGES = {
                            "(PI_Obj *){name})",
                            "{name} 是指向未知类型对象的句柄：入口函数把它转换为 {types}（需要转换为"
                            "一种结构体类型，如 (PI_Obj *){name}）"),
+    "trace_field_unsupported": ("field {name} of struct {struct}: {reason}",
+                                "结构体 {struct} 的字段 {name}：{reason}"),
     "trace_macro_arity": ("macro {name}({params}) has {n} parameters, {given} types given",
                           "宏 {name}({params}) 有 {n} 个参数，给出了 {given} 个类型"),
     "trace_macro_param_taken": ("macro {name}: its parameter {param} is already a name of the "
