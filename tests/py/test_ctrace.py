@@ -293,3 +293,25 @@ def test_cli_text_format_is_one_line_per_statement(tmp_path):
     # >> rounds toward -inf: -21 >> 2 = -6 loses 0.75 LSB (-21/4 = -5.25)
     assert "(floor, 0.75 LSB lost)" in lines[3]
     assert lines[5] == "rounding acc: 1 toward -inf, 0 toward zero, at most 0.75 LSB"
+
+
+@pytest.mark.parametrize("code,where,reason,text", [
+    ("int f(int x) {\n  int g(int y) { return y; }\n  return x;\n}", "2:7", "trace_nested_function",
+     "a function g(…) can only be declared at file scope (a function definition is not "
+     "supported inside a function)"),
+    ("union u { int a; };", "1:1", "trace_not_supported", "'union' is not supported"),
+    ("long x = 1.5;", "1:10", "trace_float_constant", "1.5: only integer constants"),
+    ("int f(int x, ...) { return x; }", "1:14", "trace_variadic",
+     "variadic functions are not supported"),
+    ("struct s { int a : 3; };", "1:18", "trace_bitfield", "bit-fields are not supported"),
+    ("int f(int x) { return x, 1; }", "1:24", "trace_comma", "the comma operator"),
+    ("long x = 3 @ 4;", "1:12", "trace_character", "unexpected character '@'"),
+    ("int f(int x) { goto out; }", "1:16", "trace_not_supported", "'goto' is not supported"),
+])
+def test_parser_errors_are_catalog_codes_naming_the_construct(code, where, reason, text):
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", entry=None)
+    err = e.value
+    assert err.code == "trace_at" and err.params["reason"]["code"] == reason, err.params
+    assert f"{err.line}:{err.column}" == where and text in err.message, err.message
+    assert chinese(err.message_zh)

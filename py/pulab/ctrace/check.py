@@ -259,8 +259,8 @@ class _Checker:
         found = self.program.refused.get(name)
         if found is not None:
             err = found[0]
-            raise TraceError(node.line, node.column, f"{name} (at {err.line}:{err.column}) is "
-                             f"outside the subset: {err.reason}")
+            raise TraceError(node.line, node.column, code="trace_refused_use", name=name,
+                             at=f"{err.line}:{err.column}", reason=err.reason_error())
 
     def symbol(self, var: Var) -> Symbol:
         sym = self.lookup(var.name)
@@ -511,7 +511,8 @@ class _Checker:
             if isinstance(field[0], Unsupported):
                 raise TraceError(e.line, e.column, code="trace_field_unsupported",
                                  name=e.field, struct=bt.name,
-                                 reason={"code": "text", "params": {"text": field[0].reason}})
+                                 reason={"code": field[0].reason["code"], "params": {
+                                     k: v for k, v in field[0].reason.items() if k != "code"}})
             return field[0]
         if kind is Index:
             bt = self.expr(e.base)
@@ -948,8 +949,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         seen.add(name)
         if name in program.refused and program.refused[name][1]:
             err = program.refused[name][0]
-            raise TraceError(err.line, err.column, f"{name} (called from {entry}) is outside "
-                             f"the subset: {err.reason}")
+            raise TraceError(err.line, err.column, code="trace_refused_call", name=name,
+                             entry=entry, reason=err.reason_error())
         if name in c.functions:
             calls |= c.functions[name].calls
     # User-facing integers: globals and, for an entry, its parameters, the objects its

@@ -1,8 +1,9 @@
 """Chinese text for the C tracer's messages (:mod:`pulab.ctrace`), by pattern.
 
 Every other error and warning of pulab is data — a code and parameters — whose English and
-Chinese text come from :mod:`pulab.schema.catalog`.  The tracer still raises its errors as
-English text; this table turns each into Chinese until they carry catalog codes too.  A
+Chinese text come from :mod:`pulab.schema.catalog`, the tracer's lexer and parser errors
+included.  The tracer's checker, preprocessor and run time still raise some errors as English
+text; this table turns each into Chinese until they carry catalog codes too.  A
 message with no pattern here comes back unchanged (``tests/py/test_ctrace.py`` makes sure
 every tracer message has one).
 
@@ -26,47 +27,10 @@ CATALOG = [
     (r"must be an integer 1\.\.30, got (.*)", r"必须是 1..30 的整数，当前为 \1"),
     # the C tracer (pulab.ctrace): a position prefix, then the reason
     (r"(\d+:\d+): (.*)", lambda m: f"{m[1]}：{to_zh(m[2])}"),
-    (r"code is longer than (\d+) characters", r"代码超过 \1 个字符"),
-    (r"code must be text", "代码必须是文本"),
-    (r"unexpected character (.*)", r"意外的字符 \1"),
-    (r"comment not closed: \*/ missing", "注释未闭合：缺少 */"),
-    (r"annotation must read (.*)", r"注解格式应为 \1"),
-    (r"Q(\d+): at most 63 fraction bits", r"Q\1：小数位最多 63 位"),
-    (r"base must be a finite number", "base 必须是有限数"),
     (r"#define needs a name", "#define 需要一个名字"),
-    (r"expected a name after typedef (.*), got (.*)", r"typedef \1 之后应为名字，实际为 \2"),
-    (r"(\w+) is a floating-point type \(typedef at (\S+)\), not supported",
-     r"\1 是浮点类型（typedef 于 \2），不支持"),
-    (r"(\w+) is a pointer type \(typedef at (\S+)\), not supported",
-     r"\1 是指针类型（typedef 于 \2），不支持"),
     # functions, structs, pointers, arrays, loops (pulab.ctrace.parser/check/evaluate)
-    (r"'\(' is never closed", "'(' 没有闭合"),
-    (r"'(\w+)' is not supported \(integer types only\)", r"不支持 '\1'（只支持整数类型）"),
-    (r"a cast to a struct or void is not supported", "不支持转换为结构体或 void"),
-    (r"'(\w+)' is not supported", r"不支持 '\1'"),
-    (r"expected a struct tag or '\{'", "此处应为结构体标签或 '{'"),
-    (r"struct (\S+) is already defined at (\S+)", r"结构体 \1 已在 \2 处定义"),
-    (r"bit-fields are not supported", "不支持位域"),
-    (r"field (\w+) is declared twice in struct (\S+)", r"结构体 \2 中字段 \1 声明了两次"),
-    (r"expected an enumerator name", "此处应为枚举常量名"),
     (r"an array size must be an integer constant", "数组大小必须是整数常量"),
     (r"an enumerator's value must be an integer constant", "枚举值必须是整数常量"),
-    (r"function pointers are not supported", "不支持函数指针"),
-    (r"function (\w+) is already defined at (\S+)", r"函数 \1 已在 \2 处定义"),
-    (r"'(\w+)' outside a loop", r"'\1' 不在循环内"),
-    (r"'return' outside a function", "'return' 不在函数内"),
-    (r"expected 'while' after the body of 'do'", "'do' 的循环体之后应为 'while'"),
-    (r"a function (\w+)\(…\) can only be declared at file scope", r"函数 \1(…) 只能在文件作用域声明"),
-    (r"(\S+) cannot have type void", r"\1 的类型不能是 void"),
-    (r"designated initializers are not supported", "不支持指定初始化器"),
-    (r"variadic functions are not supported", "不支持可变参数函数"),
-    (r"a parameter cannot have type void", "参数的类型不能是 void"),
-    (r"expected '\{' or ';' after (\S+), got (.*)",
-     lambda m: f"{m[1]} 之后应为 '{{' 或 ';'，实际为 {_GOT.get(m[2], m[2])}"),
-    (r"every parameter of (\S+) needs a name", r"\1 的每个参数都需要名字"),
-    (r"typedef (\w+): function and array typedefs are not supported",
-     r"typedef \1：不支持函数和数组类型的 typedef"),
-    (r"expected a field name after '(\S+)'", r"'\1' 之后应为字段名"),
     (r"pointers to pointers are not supported", "不支持指向指针的指针"),
     (r"an array needs a size or an initializer", "数组需要大小或初始值"),
     (r"struct (\S+) is declared but its fields are not pasted", r"结构体 \1 已声明，但没有粘贴其字段"),
@@ -97,11 +61,7 @@ CATALOG = [
     (r"a case label repeats the one at (\S+)", r"case 标签与 \1 处的重复"),
     (r"a case label inside a nested statement is not supported \(labels at the top of the "
      r"switch's block only\)", "不支持嵌套语句中的 case 标签（只支持 switch 块顶层的标签）"),
-    (r"'(\w+)' outside a switch", r"'\1' 不在 switch 内"),
-    (r"expected '\{' after 'switch \(…\)'", "'switch (…)' 之后应为 '{'"),
     (r"a case label must be an integer constant", "case 标签必须是整数常量"),
-    (r"(\S+) \(at (\S+)\) is outside the subset: (.*)",
-     lambda m: f"{m[1]}（{m[2]}）超出支持的子集：{to_zh(m[3])}"),
     # the preprocessor (pulab.ctrace.preprocess)
     (r"must be a list of NAME\[=VALUE\] texts", "必须是 NAME[=VALUE] 文本的列表"),
     (r"must be text NAME\[=VALUE\], got (.*)", r"必须是文本 NAME[=VALUE]，当前为 \1"),
@@ -138,26 +98,11 @@ CATALOG = [
     (r"macro (\w+)\(\) takes (\d+) arguments, got (\d+)", r"宏 \1() 需要 \2 个参数，实际为 \3 个"),
     (r"'##' pasting (.*) and (.*) does not give one token", r"'##' 拼接 \1 和 \2 得不到一个记号"),
     (r"GLOBAL_Q must be an integer 1\.\.30", "GLOBAL_Q 必须是 1..30 的整数"),
-    (r"(.*): only integer constants are supported \(no floating point\)",
-     r"\1：只支持整数常量（不支持浮点）"),
-    (r"(.*): bad integer suffix (.*)", r"\1：错误的整数后缀 \2"),
-    (r"(.*): bad octal constant", r"\1：错误的八进制常量"),
     (r"expected '(.*?)'(.*), got (.*)", lambda m: f"此处应为 '{m[1]}'{_where(m[2])}"
      f"，实际为 {_GOT.get(m[3], m[3])}"),
     (r"expected (a type|a value|a name|a variable name after the type), got (.*)",
      lambda m: f"此处应为{_EXPECTED[m[1]]}，实际为 {_GOT.get(m[2], m[2])}"),
-    (r"nested more than (\d+) deep", r"嵌套超过 \1 层"),
-    (r"expression more than (\d+) operators deep", r"表达式的运算符嵌套超过 \1 层"),
-    (r"not a C type: (.*)", r"不是 C 类型：\1"),
-    (r"'\{' at (\S+) is never closed", r"\1 处的 '{' 没有闭合"),
-    (r"'else' without 'if'", "'else' 没有对应的 'if'"),
-    (r"the comma operator is not supported", "不支持逗号运算符"),
-    (r"'(\S+)' needs a variable on its left", r"'\1' 的左边必须是变量"),
-    (r"'(\S+)' needs a variable", r"'\1' 需要一个变量"),
-    (r"'(\S+)' is not supported here", r"此处不支持 '\1'"),
     (r"(\S+) takes (\d+) arguments, got (\d+)", r"\1 需要 \2 个参数，实际为 \3 个"),
-    (r"__IQmpy\(a, b, q\): q must be an integer constant 0\.\.62",
-     "__IQmpy(a, b, q)：q 必须是 0..62 的整数常量"),
     (r"(.+) does not exist on (\w+)", r"\2 上没有 \1 类型"),
     (r"(\S+) is not declared \(declare it with its type, e\.g\. (.*)\)",
      r"\1 未声明（请带类型声明，例如 \2）"),
