@@ -218,8 +218,8 @@ def _type_of(target: Target, spelling: str, node) -> object:
     try:
         return target.type_named(spelling)
     except KeyError:
-        raise TraceError(node.line, node.column,
-                         f"{spelling} does not exist on {target.name}") from None
+        raise TraceError(node.line, node.column, code="trace_no_type_on_target", name=spelling,
+                         target=target.name) from None
 
 
 def _flat_name(e) -> str | None:
@@ -266,8 +266,7 @@ class _Checker:
         sym = self.lookup(var.name)
         if sym is None:
             self.refused(var.name, var)
-            raise TraceError(var.line, var.column, f"{var.name} is not declared (declare it "
-                             f"with its type, e.g. 'Uint16 {var.name};')")
+            raise TraceError(var.line, var.column, code="trace_undeclared", name=var.name)
         return sym
 
     def resolve(self, desc, node) -> object:
@@ -281,8 +280,7 @@ class _Checker:
                 return PtrT(VOID)
             to = self.resolve(desc.to, node)
             if isinstance(to, PtrT):
-                raise TraceError(node.line, node.column, "pointers to pointers are not "
-                                 "supported")
+                raise TraceError(node.line, node.column, code="trace_pointer_pointer")
             n = None
             if desc.size is not None:
                 n = constant_value(desc.size, "an array size")
@@ -294,8 +292,7 @@ class _Checker:
             return desc  # refused where the field is used
         if isinstance(desc, Arr):
             if desc.size is None:
-                raise TraceError(node.line, node.column, "an array needs a size or an "
-                                 "initializer")
+                raise TraceError(node.line, node.column, code="trace_array_no_size")
             n = constant_value(desc.size, "an array size")
             of = self.resolve(desc.of, node)
             if not 1 <= n <= MAX_ELEMENTS or n * max(1, len(leaves("", of))) > MAX_ELEMENTS:
@@ -309,14 +306,14 @@ class _Checker:
         if st is not None:
             return st
         if sdef.fields is None:
-            raise TraceError(node.line, node.column, f"struct {sdef.name} is declared but its "
-                             "fields are not pasted")
+            raise TraceError(node.line, node.column, code="trace_struct_incomplete",
+                             name=sdef.name)
         st = sdef.resolved[self.target.name] = StructT(sdef.name)
         for name, desc, spelling in sdef.fields:
             ft = self.resolve(desc, node)
             if ft is VOID or ft is st:
-                raise TraceError(sdef.line, sdef.column, f"field {name} of struct {sdef.name} "
-                                 "has an incomplete type")
+                raise TraceError(sdef.line, sdef.column, code="trace_field_incomplete", name=name,
+                                 struct=sdef.name)
             st.fields[name] = (ft, spelling)
         if len(leaves("", st)) > MAX_ELEMENTS:
             raise TraceError(sdef.line, sdef.column, code="trace_struct_size", name=sdef.name,
@@ -332,8 +329,8 @@ class _Checker:
                 # C99 6.9.2: `extern T x;` (a header) then the definition `T x = {…};`
                 prev.initialized = prev.initialized or initialized
                 return prev
-            raise TraceError(node.line, node.column, f"{name} is already declared "
-                             f"at {prev.line}:{prev.column}")
+            raise TraceError(node.line, node.column, code="trace_declared_twice", name=name,
+                             at=f"{prev.line}:{prev.column}")
         f = self.function
         key = name if f is None or not f.prefix else f"{f.prefix}{name}"
         if f is not None and not f.prefix and (self.lookup_global(name) is not None):
@@ -386,20 +383,19 @@ class _Checker:
             f = self.function
             if f.ret is VOID:
                 if s.value is not None:
-                    raise TraceError(s.line, s.column, f"{f.name}() returns void: "
-                                     "'return' takes no value")
+                    raise TraceError(s.line, s.column, code="trace_return_void_value", name=f.name)
             elif s.value is None:
-                raise TraceError(s.line, s.column, f"{f.name}() must return a value")
+                raise TraceError(s.line, s.column, code="trace_return_no_value", name=f.name)
             elif isinstance(f.ret, PtrT):
                 vt = self.expr(s.value)
                 if not _accepts(f.ret, vt):
-                    raise TraceError(s.value.line, s.value.column, f"{f.name}() returns "
-                                     f"{describe(f.ret)}, not {describe(vt)}")
+                    raise TraceError(s.value.line, s.value.column, code="trace_return_type",
+                                     name=f.name, ret=describe(f.ret), got=describe(vt))
             elif isinstance(f.ret, StructT):
                 vt = self.expr(s.value)
                 if vt is not f.ret:
-                    raise TraceError(s.value.line, s.value.column, f"{f.name}() returns "
-                                     f"{describe(f.ret)}, not {describe(vt)}")
+                    raise TraceError(s.value.line, s.value.column, code="trace_return_type",
+                                     name=f.name, ret=describe(f.ret), got=describe(vt))
             else:
                 self.scalar(s.value)
         elif isinstance(s, Switch):
@@ -411,15 +407,14 @@ class _Checker:
                                                                         "a case label")
                     if k in seen:
                         prev = seen[k]
-                        raise TraceError(inner.line, inner.column, "a case label repeats the "
-                                         f"one at {prev.line}:{prev.column}")
+                        raise TraceError(inner.line, inner.column, code="trace_case_twice",
+                                         at=f"{prev.line}:{prev.column}")
                     seen[k] = inner
                     inner.value_int = k
             self.statement(s.body)
         elif isinstance(s, Label):
             if not hasattr(s, "value_int"):
-                raise TraceError(s.line, s.column, "a case label inside a nested statement is "
-                                 "not supported (labels at the top of the switch's block only)")
+                raise TraceError(s.line, s.column, code="trace_case_nested")
         elif isinstance(s, Jump):
             pass
         else:
@@ -433,42 +428,40 @@ class _Checker:
             if isinstance(t, ArrT):
                 items = init.items
                 if len(items) > t.n:
-                    raise TraceError(init.line, init.column, f"{len(items)} initializers for "
-                                     f"an array of {t.n}")
+                    raise TraceError(init.line, init.column, code="trace_init_array",
+                                     n=len(items), size=t.n)
                 for item in items:
                     self.initializer(item, t.of)
             elif isinstance(t, StructT):
                 if len(init.items) > len(t.fields):
-                    raise TraceError(init.line, init.column, f"{len(init.items)} initializers "
-                                     f"for struct {t.name} of {len(t.fields)} fields")
+                    raise TraceError(init.line, init.column, code="trace_init_struct",
+                                     n=len(init.items), name=t.name, size=len(t.fields))
                 for item, (ft, _) in zip(init.items, t.fields.values()):
                     self.initializer(item, ft)
             elif len(init.items) == 1 and not isinstance(init.items[0], InitList):
                 self.initializer(init.items[0], t)
                 init.ctype = t
             else:
-                raise TraceError(init.line, init.column, "a braced list initializes an array "
-                                 "or a struct")
+                raise TraceError(init.line, init.column, code="trace_init_braces")
             init.ctype = t
             return
         vt = self.expr(init)
         if not _accepts(t, vt):
-            raise TraceError(init.line, init.column, f"cannot initialize {describe(t)} with "
-                             f"{describe(vt)}")
+            raise TraceError(init.line, init.column, code="trace_init_type", dst=describe(t),
+                             src=describe(vt))
 
     # -- expressions
     def expr(self, e, void_ok: bool = False) -> object:
         t = self._expr(e)
         e.ctype = t
         if t is VOID and not void_ok:
-            raise TraceError(e.line, e.column, f"{e.name}() returns void: it has no value")
+            raise TraceError(e.line, e.column, code="trace_void_value", name=e.name)
         return t
 
     def scalar(self, e) -> CType:
         t = self.expr(e)
         if not isinstance(t, CType):
-            raise TraceError(e.line, e.column, f"{describe(t)} where an integer is needed "
-                             "(only integers are computed)")
+            raise TraceError(e.line, e.column, code="trace_not_scalar", got=describe(t))
         return t
 
     def _expr(self, e) -> object:
@@ -481,8 +474,8 @@ class _Checker:
                 t = target.types[name]
                 if e.value <= t.max:
                     return t
-            raise TraceError(e.line, e.column, f"{e.text} is too large for every integer "
-                             f"type of its kind ({', '.join(e.ctype)})")
+            raise TraceError(e.line, e.column, code="trace_constant_large", text=e.text,
+                             types=", ".join(e.ctype))
         if kind is Var:
             sym = self.symbol(e)
             e.sym = sym
@@ -497,17 +490,18 @@ class _Checker:
             bt = self.expr(e.base)
             if e.arrow:
                 if not isinstance(bt, PtrT):
-                    raise TraceError(e.line, e.column, f"'->' needs a pointer to a struct, "
-                                     f"not {describe(bt)}")
+                    raise TraceError(e.line, e.column, code="trace_arrow_needs_pointer",
+                                     got=describe(bt))
                 bt = bt.to
             if not isinstance(bt, StructT):
                 name = flat or self.program.source[e.base.start:e.base.end]
-                raise TraceError(e.line, e.column, f"{name} is not declared as a struct "
-                                 f"(declare {flat or 'it'} with its type)" if flat
-                                 else f"'.' needs a struct, not {describe(bt)}")
+                if flat:
+                    raise TraceError(e.line, e.column, code="trace_not_struct", name=name)
+                raise TraceError(e.line, e.column, code="trace_dot_needs_struct", got=describe(bt))
             field = bt.fields.get(e.field)
             if field is None:
-                raise TraceError(e.line, e.column, f"struct {bt.name} has no field {e.field}")
+                raise TraceError(e.line, e.column, code="trace_no_field", name=bt.name,
+                                 field_name=e.field)
             if isinstance(field[0], Unsupported):
                 raise TraceError(e.line, e.column, code="trace_field_unsupported",
                                  name=e.field, struct=bt.name,
@@ -521,8 +515,7 @@ class _Checker:
                 return bt.of
             if isinstance(bt, PtrT):
                 return bt.to
-            raise TraceError(e.line, e.column, f"'[]' needs an array or a pointer, not "
-                             f"{describe(bt)}")
+            raise TraceError(e.line, e.column, code="trace_index_needs_array", got=describe(bt))
         if kind is Unary:
             if e.op == "&":
                 return PtrT(self.expr(e.operand))
@@ -530,7 +523,8 @@ class _Checker:
                 t = self.expr(e.operand)
                 if isinstance(t, (PtrT, ArrT)):
                     return t.to if isinstance(t, PtrT) else t.of
-                raise TraceError(e.line, e.column, f"'*' needs a pointer, not {describe(t)}")
+                raise TraceError(e.line, e.column, code="trace_deref_needs_pointer",
+                                 got=describe(t))
             t = self.scalar(e.operand)
             return self.int if e.op == "!" else promote(target, t)
         if kind is Binary:
@@ -556,11 +550,12 @@ class _Checker:
             tt = self.expr(e.target)
             if not isinstance(tt, CType):
                 if e.op != "=":
-                    raise TraceError(e.line, e.column, f"'{e.op}' on {describe(tt)}")
+                    raise TraceError(e.line, e.column, code="trace_op_on", op=e.op,
+                                     got=describe(tt))
                 vt = self.expr(e.value)
                 if isinstance(tt, ArrT) or not _accepts(tt, vt):
-                    raise TraceError(e.line, e.column, f"cannot assign {describe(vt)} to "
-                                     f"{describe(tt)}")
+                    raise TraceError(e.line, e.column, code="trace_assign_type", src=describe(vt),
+                                     dst=describe(tt))
                 return tt
             vt = self.scalar(e.value)
             if e.op != "=":
@@ -570,8 +565,8 @@ class _Checker:
         if kind is IncDec:
             tt = self.expr(e.target)
             if not isinstance(tt, CType):
-                raise TraceError(e.line, e.column, f"'{e.op}' on {describe(tt)} is not "
-                                 "supported")
+                raise TraceError(e.line, e.column, code="trace_op_unsupported", op=e.op,
+                                 got=describe(tt))
             e.operand_type = common_type(target, tt, self.int)
             return tt
         if kind is Call:
@@ -609,13 +604,13 @@ class _Checker:
         if self.function is not None:
             self.function.calls.add(f.name)
         if len(e.args) != len(f.params):
-            raise TraceError(e.line, e.column, f"{e.name}() takes {len(f.params)} arguments, "
-                             f"got {len(e.args)}")
+            raise TraceError(e.line, e.column, code="trace_builtin_arity", name=e.name,
+                             n=len(f.params), got=len(e.args))
         for a, p in zip(e.args, f.params):
             at = self.expr(a)
             if not _accepts(p.ctype, at):
-                raise TraceError(a.line, a.column, f"argument {p.name} of {e.name}() is "
-                                 f"{describe(p.ctype)}, got {describe(at)}")
+                raise TraceError(a.line, a.column, code="trace_argument_type", name=p.name,
+                                 function=e.name, want=describe(p.ctype), got=describe(at))
         return f.ret
 
     def signature(self, f: Function, entry: bool) -> None:
@@ -630,10 +625,8 @@ class _Checker:
         f.ret = self.resolve(node.ret, node)
         if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID and not (
                 isinstance(f.ret, PtrT) and f.ret.n is None and not entry):
-            raise TraceError(node.line, node.column, f"{f.name}() returns {describe(f.ret)}: "
-                             "only integer, struct and void results are supported"
-                             + (" (a pointer result from a called function)"
-                                if isinstance(f.ret, PtrT) else ""))
+            raise TraceError(node.line, node.column, code="trace_result_type", name=f.name,
+                             ret=describe(f.ret))
 
     def body(self, f: Function) -> None:
         self.function = f
@@ -989,8 +982,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
             add("return", f.ret, f.ret_spelling, f.node.line, f.node.column, True, False)
     for note in program.notes.values():
         if note.name not in symbols:
-            raise TraceError(note.line, note.column, f"the annotation names {note.name}, "
-                             "which is not declared")
+            raise TraceError(note.line, note.column, code="trace_note_undeclared",
+                             name=note.name)
     analysis = _Inputs(c, settable.__contains__)
     assigned: set = set()
     analysis.block(program.statements, assigned)

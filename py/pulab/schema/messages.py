@@ -1,9 +1,9 @@
 """Chinese text for the C tracer's messages (:mod:`pulab.ctrace`), by pattern.
 
 Every other error and warning of pulab is data — a code and parameters — whose English and
-Chinese text come from :mod:`pulab.schema.catalog`, the tracer's lexer and parser errors
-included.  The tracer's checker, preprocessor and run time still raise some errors as English
-text; this table turns each into Chinese until they carry catalog codes too.  A
+Chinese text come from :mod:`pulab.schema.catalog`, the tracer's lexer, parser and checker
+errors included.  The tracer's preprocessor and run time and a few input checks still raise
+English text; this table turns each into Chinese until they carry catalog codes too.  A
 message with no pattern here comes back unchanged (``tests/py/test_ctrace.py`` makes sure
 every tracer message has one).
 
@@ -31,36 +31,6 @@ CATALOG = [
     # functions, structs, pointers, arrays, loops (pulab.ctrace.parser/check/evaluate)
     (r"an array size must be an integer constant", "数组大小必须是整数常量"),
     (r"an enumerator's value must be an integer constant", "枚举值必须是整数常量"),
-    (r"pointers to pointers are not supported", "不支持指向指针的指针"),
-    (r"an array needs a size or an initializer", "数组需要大小或初始值"),
-    (r"struct (\S+) is declared but its fields are not pasted", r"结构体 \1 已声明，但没有粘贴其字段"),
-    (r"field (\w+) of struct (\S+) has an incomplete type", r"结构体 \2 的字段 \1 类型不完整"),
-    (r"(\w+)\(\) returns void: 'return' takes no value", r"\1() 返回 void：'return' 不能带值"),
-    (r"(\w+)\(\) must return a value", r"\1() 必须返回一个值"),
-    (r"(\d+) initializers for an array of (\d+)", r"\1 个初始值，但数组只有 \2 个元素"),
-    (r"(\d+) initializers for struct (\S+) of (\d+) fields", r"\1 个初始值，但结构体 \2 只有 \3 个字段"),
-    (r"a braced list initializes an array or a struct", "花括号列表只能初始化数组或结构体"),
-    (r"cannot initialize (.+) with (.+)", r"不能用 \2 初始化 \1"),
-    (r"(\w+)\(\) returns void: it has no value", r"\1() 返回 void：没有值"),
-    (r"(.+) where an integer is needed \(only integers are computed\)",
-     r"此处需要整数，实际为 \1（只计算整数）"),
-    (r"'->' needs a pointer to a struct, not (.+)", r"'->' 需要指向结构体的指针，而不是 \1"),
-    (r"(\S+) is not declared as a struct \(declare (\S+) with its type\)",
-     r"\1 没有声明为结构体（请带类型声明 \2）"),
-    (r"'\.' needs a struct, not (.+)", r"'.' 需要结构体，而不是 \1"),
-    (r"struct (\S+) has no field (\w+)", r"结构体 \1 没有字段 \2"),
-    (r"'\[\]' needs an array or a pointer, not (.+)", r"'[]' 需要数组或指针，而不是 \1"),
-    (r"'\*' needs a pointer, not (.+)", r"'*' 需要指针，而不是 \1"),
-    (r"'(\S+)' on (.+) is not supported", r"不支持对 \2 使用 '\1'"),
-    (r"'(\S+)' on (.+)", r"不能对 \2 使用 '\1'"),
-    (r"cannot assign (.+) to (.+)", r"不能把 \1 赋给 \2"),
-    (r"argument (\w+) of (\w+)\(\) is (.+), got (.+)", r"\2() 的参数 \1 是 \3，实际为 \4"),
-    (r"(\w+)\(\) returns (.+): only integer, struct and void results are supported",
-     r"\1() 返回 \2：只支持整数、结构体和 void 返回值"),
-    (r"(\w+)\(\) returns (.+), not (.+)", r"\1() 返回 \2，而不是 \3"),
-    (r"a case label repeats the one at (\S+)", r"case 标签与 \1 处的重复"),
-    (r"a case label inside a nested statement is not supported \(labels at the top of the "
-     r"switch's block only\)", "不支持嵌套语句中的 case 标签（只支持 switch 块顶层的标签）"),
     (r"a case label must be an integer constant", "case 标签必须是整数常量"),
     # the preprocessor (pulab.ctrace.preprocess)
     (r"must be a list of NAME\[=VALUE\] texts", "必须是 NAME[=VALUE] 文本的列表"),
@@ -102,14 +72,6 @@ CATALOG = [
      f"，实际为 {_GOT.get(m[3], m[3])}"),
     (r"expected (a type|a value|a name|a variable name after the type), got (.*)",
      lambda m: f"此处应为{_EXPECTED[m[1]]}，实际为 {_GOT.get(m[2], m[2])}"),
-    (r"(\S+) takes (\d+) arguments, got (\d+)", r"\1 需要 \2 个参数，实际为 \3 个"),
-    (r"(.+) does not exist on (\w+)", r"\2 上没有 \1 类型"),
-    (r"(\S+) is not declared \(declare it with its type, e\.g\. (.*)\)",
-     r"\1 未声明（请带类型声明，例如 \2）"),
-    (r"(\S+) is already declared at (\S+)", r"\1 已在 \2 处声明"),
-    (r"(\S+) is too large for every integer type of its kind \((.*)\)",
-     r"\1 超出其所有可用整数类型的范围（\2）"),
-    (r"the annotation names (\S+), which is not declared", r"注解中的 \1 未声明"),
     (r"(\S+) is read before it has a value \(give it an input value or an initializer\)",
      r"\1 在赋值之前被读取（请给它输入值或初始值）"),
     (r"division by zero", "除以零"),
