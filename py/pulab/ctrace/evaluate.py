@@ -176,9 +176,8 @@ class Evaluator:
                                  code="trace_unset_input", name=path,
                                  unset=", ".join(self.unset))
             if self.checked.entry is None:
-                raise TraceError(node.line, node.column, f"{path} is read before it has a value"
-                                 " (give it an input value or an initializer)",
-                                 field=f"set.{path}")
+                raise TraceError(node.line, node.column, field=f"set.{path}",
+                                 code="trace_unset_global", name=path)
             raise TraceError(node.line, node.column, code="trace_unset_local", name=path)
         return v
 
@@ -524,7 +523,7 @@ class Evaluator:
         """``a op b`` in type ``t`` (operands already converted); returns (value, flags)."""
         if op in ("+", "-", "*", "/"):
             if op == "/" and b == 0:
-                raise TraceError(node.line, node.column, "division by zero")
+                raise TraceError(node.line, node.column, code="trace_division_zero")
             x, y = CInt(a, t), CInt(b, t)
             r = x + y if op == "+" else x - y if op == "-" else x * y if op == "*" else x // y
             flags = []
@@ -537,7 +536,7 @@ class Evaluator:
             return r.value, flags
         if op == "%":
             if b == 0:
-                raise TraceError(node.line, node.column, "remainder by zero")
+                raise TraceError(node.line, node.column, code="trace_remainder_zero")
             # a % b overflows exactly when a / b does (C11 6.5.5p6).
             if t.signed and a == t.min and b == -1:
                 self.undefined.add("division_overflow")

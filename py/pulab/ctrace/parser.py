@@ -1205,9 +1205,9 @@ def constant_value(node: Node, what: str) -> int:
     if isinstance(node, Binary) and node.op in _CONST_OPS:
         a, b = constant_value(node.left, what), constant_value(node.right, what)
         if node.op in ("/", "%") and b == 0:
-            raise TraceError(node.right.line, node.right.column, "division by zero")
+            raise TraceError(node.right.line, node.right.column, code="trace_division_zero")
         if node.op in ("<<", ">>") and not 0 <= b < 64:
-            raise TraceError(node.right.line, node.right.column, f"shift by {b}")
+            raise TraceError(node.right.line, node.right.column, code="trace_shift_by", n=b)
         return _CONST_OPS[node.op](a, b)
     raise TraceError(node.line, node.column, f"{what} must be an integer constant")
 

@@ -118,8 +118,8 @@ def _tokens(text: str) -> list:
     return toks
 
 
-def _fail(tok: Token, message: str) -> TraceError:
-    return TraceError(tok.line, tok.column, message)
+def _fail(tok: Token, code: str, **params) -> TraceError:
+    return TraceError(tok.line, tok.column, code=code, **params)
 
 
 def _body_tokens(text: str, at: Token, what: str) -> list:
@@ -133,22 +133,22 @@ def _body_tokens(text: str, at: Token, what: str) -> list:
         try:
             toks.extend(_tokens(piece))  # cached: a header's definitions recur on every run
         except TraceError as e:
-            raise _fail(at, f"in {what}: {e.reason}") from None
+            raise _fail(at, "trace_in_directive", what=what, reason=e.reason_error()) from None
     if any(t.kind in ("directive", "annotation") for t in toks):
-        raise _fail(at, f"{what}: unexpected text")
+        raise _fail(at, "trace_directive_text", what=what)
     return [t._replace(line=at.line, column=at.column, start=at.start, end=at.end) for t in toks]
 
 
 def _define(rest: str, at: Token) -> _Macro:
     m = re.match(r"\s*([A-Za-z_]\w*)(\()?", rest)
     if m is None:
-        raise _fail(at, "#define needs a name")
+        raise _fail(at, "trace_define_name")
     name = m[1]
     if not m[2]:
         return _Macro(name, None, False, _body_tokens(rest[m.end():], at, f"#define {name}"))
     close = rest.find(")", m.end())
     if close < 0:
-        raise _fail(at, f"#define {name}(: ')' missing after the parameters")
+        raise _fail(at, "trace_define_paren", name=name)
     params = [p.strip() for p in rest[m.end():close].split(",")]
     if params == [""]:
         params = []
@@ -157,12 +157,12 @@ def _define(rest: str, at: Token) -> _Macro:
         params[-1] = "__VA_ARGS__"
     for p in params[:len(params) - variadic]:
         if not _NAME.match(p):
-            raise _fail(at, f"#define {name}(…): bad parameter {p!r}")
+            raise _fail(at, "trace_define_param", name=name, param=repr(p))
     if len(set(params)) != len(params):
-        raise _fail(at, f"#define {name}(…): a parameter is named twice")
+        raise _fail(at, "trace_define_param_twice", name=name)
     body = _body_tokens(rest[close + 1:], at, f"#define {name}")
     if body and (body[0].text == "##" or body[-1].text == "##"):
-        raise _fail(at, f"#define {name}: '##' cannot begin or end a macro body")
+        raise _fail(at, "trace_define_paste_edge", name=name)
     return _Macro(name, params, variadic, body)
 
 
@@ -176,7 +176,7 @@ def parse_define(text: str) -> tuple:
     name = name.strip()
     head = re.match(r"[A-Za-z_]\w*(\([^)]*\))?\Z", name)
     if head is None:
-        raise TraceError(1, 1, f"-D {text!r}: NAME[=VALUE] needs a C name", field="define")
+        raise TraceError(1, 1, field="define", code="trace_define_option", text=repr(text))
     return name, (value if eq else "1")
 
 
@@ -202,7 +202,7 @@ class _Pre:
             b = mac.body
             if mac.params is not None or len(b) != 1 or not b[0].text.isdigit() or \
                     not 1 <= int(b[0].text) <= 30:
-                raise _fail(at, "GLOBAL_Q must be an integer 1..30")
+                raise _fail(at, "trace_global_q")
             self.global_q = int(b[0].text)
 
     def active(self) -> bool:
@@ -214,18 +214,18 @@ class _Pre:
         live = self.active()
         if word in ("if", "ifdef", "ifndef"):
             if len(self.conds) >= MAX_IF_DEPTH:
-                raise _fail(tok, f"#if nested deeper than {MAX_IF_DEPTH}")
+                raise _fail(tok, "trace_if_depth", limit=MAX_IF_DEPTH)
             take = live and self.condition(word, rest, tok)
             self.conds.append([take, take, False, tok, live])
             return
         if word in ("elif", "else", "endif"):
             if not self.conds:
-                raise _fail(tok, f"#{word} without #if")
+                raise _fail(tok, "trace_without_if", word=word)
             c = self.conds[-1]
             if word == "endif":
                 self.conds.pop()
             elif c[2]:
-                raise _fail(tok, f"#{word} after #else")
+                raise _fail(tok, "trace_after_else", word=word)
             elif word == "else":
                 c[0], c[2] = c[4] and not c[1], True
                 c[1] = c[1] or c[0]
@@ -242,15 +242,14 @@ class _Pre:
         elif word == "include":
             self.include(rest, tok)
         elif word == "error":
-            raise _fail(tok, f"#error{rest.rstrip()}")
+            raise _fail(tok, "trace_error_directive", rest=rest.rstrip())
         elif word not in ("pragma", "line", "warning", "") or (word == "" and rest.strip()):
-            raise _fail(tok, f"#{word or rest.strip()[:20]} is not a preprocessor directive "
-                             "this tracer knows")
+            raise _fail(tok, "trace_unknown_directive", word=word or rest.strip()[:20])
 
     def include(self, rest: str, tok: Token) -> None:
         m = re.match(r'\s*(?:<([^>\n]+)>|"([^"\n]+)")', rest)
         if m is None:
-            raise _fail(tok, "#include needs <header> or \"header\"")
+            raise _fail(tok, "trace_include_syntax")
         header = (m[1] or m[2]).strip()
         known = self.headers.get(header)
         if known is None:
@@ -265,7 +264,7 @@ class _Pre:
         toks = _body_tokens(rest, tok, f"#{word}")
         if word != "if":
             if len(toks) != 1 or toks[0].kind != "name":
-                raise _fail(tok, f"#{word} needs one name")
+                raise _fail(tok, "trace_directive_name", word=word)
             return (toks[0].text in self.macros) == (word == "ifdef")
         # defined X / defined(X) are replaced before expansion (C99 6.10.1p1).
         resolved, i = [], 0
@@ -277,7 +276,7 @@ class _Pre:
                 j += paren
                 if j >= len(toks) or toks[j].kind != "name" or \
                         (paren and (j + 1 >= len(toks) or toks[j + 1].text != ")")):
-                    raise _fail(tok, "defined needs a macro name")
+                    raise _fail(tok, "trace_defined_name")
                 resolved.append(t._replace(kind="number",
                                            text="1" if toks[j].text in self.macros else "0"))
                 i = j + 1 + paren
@@ -286,7 +285,7 @@ class _Pre:
             i += 1
         expanded = self.expand_list(resolved)
         if not expanded:
-            raise _fail(tok, f"#{word} needs an expression")
+            raise _fail(tok, "trace_if_expression", word=word)
         return _IfExpr(expanded, tok).value() != 0
 
     # -- expansion ----------------------------------------------------------------------
@@ -297,7 +296,7 @@ class _Pre:
                 self.directive(tok)
             elif tok.kind == "end":
                 if self.conds:
-                    raise _fail(self.conds[-1][3], "#if without #endif")
+                    raise _fail(self.conds[-1][3], "trace_if_open")
                 self.end = tok
                 return
             elif self.active():
@@ -342,8 +341,7 @@ class _Pre:
                 out.append(tok)
                 continue
             if len(hide) >= MAX_MACRO_DEPTH:
-                raise _fail(tok, f"macro {tok.text}: expansion nested deeper than "
-                                 f"{MAX_MACRO_DEPTH} macros")
+                raise _fail(tok, "trace_macro_depth", name=tok.text, limit=MAX_MACRO_DEPTH)
             hs = hide | {mac.name}
             if mac.params is None:
                 where = (tok.line, tok.column, tok.start, tok.end)
@@ -362,8 +360,7 @@ class _Pre:
                         for t in self.substitute(mac, args, tok)]
             self.produced += len(body)
             if self.produced > MAX_EXPANDED_TOKENS:
-                raise _fail(tok, f"macro {tok.text}: more than {MAX_EXPANDED_TOKENS} tokens "
-                                 "after expansion")
+                raise _fail(tok, "trace_macro_tokens", name=tok.text, limit=MAX_EXPANDED_TOKENS)
             pending.extendleft(reversed(body))
 
     def iq(self, use: Token, arg: list) -> list:
@@ -402,7 +399,7 @@ class _Pre:
             value = _ConstFloat(arg[i:], use).value()
         scaled = int(sign * value * 2.0 ** n)  # * 2**n is exact in binary floating point
         if not -(1 << 31) <= scaled < (1 << 31):
-            raise _fail(use, f"{use.text}(…) = {scaled} does not fit a 32-bit long")
+            raise _fail(use, "trace_iq_range", name=use.text, value=scaled)
         return scaled
 
     def text_around(self, head: str, arg: list, tail: str) -> list:
@@ -414,7 +411,7 @@ class _Pre:
         while True:
             item = pull()
             if item is None:
-                raise _fail(use, f"macro {mac.name}(: ')' missing")
+                raise _fail(use, "trace_macro_paren", name=mac.name)
             t = item[0]
             if t.kind == "op" and t.text == ")" and depth == 0:
                 break
@@ -430,8 +427,8 @@ class _Pre:
         if mac.variadic and len(args) == len(mac.params) - 1:
             args.append([])
         if len(args) != len(mac.params):
-            raise _fail(use, f"macro {mac.name}() takes {len(mac.params)} arguments, "
-                             f"got {len(args)}")
+            raise _fail(use, "trace_macro_args", name=mac.name, n=len(mac.params),
+                        got=len(args))
         return args, t
 
     def substitute(self, mac: _Macro, args: list, use: Token) -> list:
@@ -478,8 +475,8 @@ class _Pre:
                     except TraceError:
                         new = []
                     if len(new) != 1:
-                        raise _fail(use, f"'##' pasting {left.text!r} and {right.text!r} "
-                                         "does not give one token")
+                        raise _fail(use, "trace_paste", left=repr(left.text),
+                                    right=repr(right.text))
                     out.append(new[0]._replace(line=left.line, column=left.column,
                                                start=left.start, end=left.end))
                 i += 2
@@ -498,8 +495,7 @@ class _ConstFloat:
         self.toks, self.pos, self.use = toks, 0, use
 
     def fail(self):
-        raise _fail(self.use, f"{self.use.text}(…) needs a floating constant (a variable "
-                              "would need floating point at run time)")
+        raise _fail(self.use, "trace_iq_constant", name=self.use.text)
 
     def value(self) -> float:
         if not self.toks:
@@ -572,8 +568,8 @@ class _IfExpr:
     def __init__(self, toks: list, at: Token) -> None:
         self.toks, self.i, self.at = toks, 0, at
 
-    def fail(self, message: str):
-        return _fail(self.at, f"#if: {message}")
+    def fail(self, code: str, **params):
+        return _fail(self.at, "trace_if", reason={"code": code, "params": params})
 
     def peek(self):
         return self.toks[self.i] if self.i < len(self.toks) else None
@@ -581,7 +577,7 @@ class _IfExpr:
     def value(self) -> int:
         v = self.cond()
         if self.peek() is not None:
-            raise self.fail(f"unexpected {self.peek().text!r}")
+            raise self.fail("trace_if_unexpected", text=repr(self.peek().text))
         return v
 
     def cond(self) -> int:
@@ -592,7 +588,7 @@ class _IfExpr:
             a = self.cond()
             t = self.peek()
             if t is None or t.text != ":":
-                raise self.fail("':' missing")
+                raise self.fail("trace_if_missing", char=":")
             self.i += 1
             b = self.cond()
             return a if test else b
@@ -620,13 +616,13 @@ class _IfExpr:
     def apply(self, op: str, a: int, b: int) -> int:
         if op in ("/", "%"):
             if b == 0:
-                raise self.fail("division by zero")
+                raise self.fail("trace_division_zero")
             q = abs(a) // abs(b) * (1 if (a < 0) == (b < 0) else -1)
             r = a - q * b
             return _wrap(q if op == "/" else r)
         if op in ("<<", ">>"):
             if not 0 <= b < 64:
-                raise self.fail(f"shift by {b}")
+                raise self.fail("trace_shift_by", n=b)
             return _wrap(a << b if op == "<<" else a >> b)
         return _wrap({"+": a + b, "-": a - b, "*": a * b, "&": a & b, "|": a | b, "^": a ^ b,
                       "==": int(a == b), "!=": int(a != b), "<": int(a < b), ">": int(a > b),
@@ -635,7 +631,7 @@ class _IfExpr:
     def unary(self) -> int:
         t = self.peek()
         if t is None:
-            raise self.fail("expression ends early")
+            raise self.fail("trace_if_ends")
         self.i += 1
         if t.kind == "op" and t.text in ("-", "+", "~", "!"):
             v = self.unary()
@@ -644,7 +640,7 @@ class _IfExpr:
             v = self.cond()
             t = self.peek()
             if t is None or t.text != ")":
-                raise self.fail("')' missing")
+                raise self.fail("trace_if_missing", char=")")
             self.i += 1
             return v
         if t.kind == "name":
@@ -652,12 +648,12 @@ class _IfExpr:
         if t.kind == "number":
             m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)[uUlL]*", t.text)
             if m is None:
-                raise self.fail(f"{t.text} is not an integer constant")
+                raise self.fail("trace_if_not_constant", text=t.text)
             d = m[1]
             if d[:2] in ("0x", "0X", "0b", "0B"):
                 return _wrap(int(d[2:], 16 if d[1] in "xX" else 2))
             return _wrap(int(d, 8 if len(d) > 1 and d[0] == "0" else 10))
-        raise self.fail(f"unexpected {t.text!r}")
+        raise self.fail("trace_if_unexpected", text=repr(t.text))
 
 
 def _wrap(v: int) -> int:

@@ -38,7 +38,8 @@ def _defines(defines) -> dict:
         try:
             name, value = parse_define(item)
         except TraceError as e:
-            raise InputError(f"define[{i}]", e.reason) from None
+            reason = e.reason_error()
+            raise InputError(f"define[{i}]", code=reason["code"], **reason["params"]) from None
         out[name] = value
     return out
 

@@ -2,15 +2,16 @@
 
 Every other error and warning of pulab is data — a code and parameters — whose English and
 Chinese text come from :mod:`pulab.schema.catalog`, the tracer's lexer, parser and checker
-errors included.  The tracer's preprocessor and run time and a few input checks still raise
-English text; this table turns each into Chinese until they carry catalog codes too.  A
+errors included, and its preprocessor's and run time's.  The parser's "expected …" messages,
+its constant-expression checks and a few input checks still raise English text; this table turns
+each into Chinese until they carry catalog codes too.  A
 message with no pattern here comes back unchanged (``tests/py/test_ctrace.py`` makes sure
 every tracer message has one).
 
 Examples
 --------
->>> to_zh("3:14: division by zero")
-'3:14：除以零'
+>>> to_zh("3:14: expected ';', got end of code")
+"3:14：此处应为 ';'，实际为 代码结尾"
 """
 
 from __future__ import annotations
@@ -27,55 +28,17 @@ CATALOG = [
     (r"must be an integer 1\.\.30, got (.*)", r"必须是 1..30 的整数，当前为 \1"),
     # the C tracer (pulab.ctrace): a position prefix, then the reason
     (r"(\d+:\d+): (.*)", lambda m: f"{m[1]}：{to_zh(m[2])}"),
-    (r"#define needs a name", "#define 需要一个名字"),
-    # functions, structs, pointers, arrays, loops (pulab.ctrace.parser/check/evaluate)
+    # the parser's constants and the tokens it expected (pulab.ctrace.parser)
     (r"an array size must be an integer constant", "数组大小必须是整数常量"),
     (r"an enumerator's value must be an integer constant", "枚举值必须是整数常量"),
     (r"a case label must be an integer constant", "case 标签必须是整数常量"),
-    # the preprocessor (pulab.ctrace.preprocess)
+    # the tracer's define list (pulab.ctrace.tracing, pulab.api)
     (r"must be a list of NAME\[=VALUE\] texts", "必须是 NAME[=VALUE] 文本的列表"),
     (r"must be text NAME\[=VALUE\], got (.*)", r"必须是文本 NAME[=VALUE]，当前为 \1"),
-    (r"(\w+)\(…\) needs a floating constant \(a variable would need floating point at run "
-     r"time\)", r"\1(…) 需要浮点常量（变量需要运行时浮点运算）"),
-    (r"(\w+)\(…\) = (\S+) does not fit a 32-bit long", r"\1(…) = \2 超出 32 位 long 的范围"),
-    (r"in (#\w+(?: \w+)?|[\w.]+\.h): (.*)", lambda m: f"在 {m[1]} 中：{to_zh(m[2])}"),
-    (r"(#\w+(?: \w+)?|[\w.]+\.h): unexpected text", r"\1：有意外的内容"),
-    (r"#define (\w+)\(: '\)' missing after the parameters", r"#define \1(：参数后缺少 ')'"),
-    (r"#define (\w+)\(…\): bad parameter (.*)", r"#define \1(…)：错误的参数 \2"),
-    (r"#define (\w+)\(…\): a parameter is named twice", r"#define \1(…)：参数重名"),
-    (r"#define (\w+): '##' cannot begin or end a macro body",
-     r"#define \1：'##' 不能出现在宏体的开头或结尾"),
-    (r"-D (.*): NAME\[=VALUE\] needs a C name", r"-D \1：NAME[=VALUE] 需要一个 C 名字"),
-    (r"#(\w+) without #if", r"#\1 没有对应的 #if"),
-    (r"#(\w+) after #else", r"#\1 出现在 #else 之后"),
-    (r"#if without #endif", "#if 没有对应的 #endif"),
-    (r"#if nested deeper than (\d+)", r"#if 嵌套超过 \1 层"),
-    (r"#error(.*)", r"#error（代码要求停止）\1"),
-    (r"#(.*) is not a preprocessor directive this tracer knows", r"#\1 不是本工具认识的预处理指令"),
-    (r"#include needs <header> or \"header\"", "#include 需要 <头文件> 或 \"头文件\""),
-    (r"#(\w+) needs one name", r"#\1 需要一个名字"),
-    (r"defined needs a macro name", "defined 需要一个宏名"),
-    (r"#if needs an expression", "#if 需要一个表达式"),
-    (r"#if: (.*)", lambda m: f"#if：{to_zh(m[1])}"),
-    (r"expression ends early", "表达式不完整"),
-    (r"unexpected (.*)", r"意外的 \1"),
-    (r"'(.)' missing", r"缺少 '\1'"),
-    (r"shift by (.*)", r"移位位数为 \1"),
-    (r"(.*) is not an integer constant", r"\1 不是整数常量"),
-    (r"macro (\w+): expansion nested deeper than (\d+) macros", r"宏 \1：展开嵌套超过 \2 层"),
-    (r"macro (\w+): more than (\d+) tokens after expansion", r"宏 \1：展开后超过 \2 个记号"),
-    (r"macro (\w+)\(: '\)' missing", r"宏 \1(：缺少 ')'"),
-    (r"macro (\w+)\(\) takes (\d+) arguments, got (\d+)", r"宏 \1() 需要 \2 个参数，实际为 \3 个"),
-    (r"'##' pasting (.*) and (.*) does not give one token", r"'##' 拼接 \1 和 \2 得不到一个记号"),
-    (r"GLOBAL_Q must be an integer 1\.\.30", "GLOBAL_Q 必须是 1..30 的整数"),
     (r"expected '(.*?)'(.*), got (.*)", lambda m: f"此处应为 '{m[1]}'{_where(m[2])}"
      f"，实际为 {_GOT.get(m[3], m[3])}"),
     (r"expected (a type|a value|a name|a variable name after the type), got (.*)",
      lambda m: f"此处应为{_EXPECTED[m[1]]}，实际为 {_GOT.get(m[2], m[2])}"),
-    (r"(\S+) is read before it has a value \(give it an input value or an initializer\)",
-     r"\1 在赋值之前被读取（请给它输入值或初始值）"),
-    (r"division by zero", "除以零"),
-    (r"remainder by zero", "对零取余"),
     (r"no variable (\S+) is declared in the code", r"代码中没有声明变量 \1"),
     (r"(\S+) has an initializer in the code", r"\1 在代码中已有初始值"),
     (r"must be (\S+)\.\.(\S+) for (.+), got (.*)", r"对 \3 必须在 \1..\2 之间，当前为 \4"),
@@ -133,7 +96,7 @@ def to_zh(message: str) -> str:
 def has_chinese(message: str) -> bool:
     """True when the catalog turns ``message`` into text with Chinese characters.
 
-    >>> has_chinese("division by zero"), has_chinese("no such pattern")
+    >>> has_chinese("a case label must be an integer constant"), has_chinese("no such pattern")
     (True, False)
     """
     zh = to_zh(message)
