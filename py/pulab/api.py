@@ -140,10 +140,10 @@ def _trace(req) -> dict:
                          expected=", ".join(_TRACE_KEYS))
     zero_unset = req.get("zero_unset", False)
     if not isinstance(zero_unset, bool):
-        raise InputError("zero_unset", f"must be true or false, got {shown(zero_unset)}")
+        raise InputError("zero_unset", code="not_flag", got=shown(zero_unset))
     defines = req.get("define") or []
     if not isinstance(defines, list):
-        raise InputError("define", "must be a list of NAME[=VALUE] texts")
+        raise InputError("define", code="trace_define_list")
     sets = req.get("set") or {}
     if not isinstance(sets, dict):
         raise InputError("set", code="not_object", got=shown(sets))

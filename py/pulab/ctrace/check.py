@@ -283,7 +283,7 @@ class _Checker:
                 raise TraceError(node.line, node.column, code="trace_pointer_pointer")
             n = None
             if desc.size is not None:
-                n = constant_value(desc.size, "an array size")
+                n = constant_value(desc.size, "trace_const_array_size")
                 if not 1 <= n <= MAX_ELEMENTS:
                     raise TraceError(desc.size.line, desc.size.column, code="trace_array_size",
                                      n=n, limit=MAX_ELEMENTS)
@@ -293,7 +293,7 @@ class _Checker:
         if isinstance(desc, Arr):
             if desc.size is None:
                 raise TraceError(node.line, node.column, code="trace_array_no_size")
-            n = constant_value(desc.size, "an array size")
+            n = constant_value(desc.size, "trace_const_array_size")
             of = self.resolve(desc.of, node)
             if not 1 <= n <= MAX_ELEMENTS or n * max(1, len(leaves("", of))) > MAX_ELEMENTS:
                 raise TraceError(desc.size.line, desc.size.column, code="trace_array_size", n=n,
@@ -404,7 +404,7 @@ class _Checker:
             for inner in s.body.statements:
                 if isinstance(inner, Label):
                     k = None if inner.value is None else constant_value(inner.value,
-                                                                        "a case label")
+                                                                        "trace_const_case")
                     if k in seen:
                         prev = seen[k]
                         raise TraceError(inner.line, inner.column, code="trace_case_twice",

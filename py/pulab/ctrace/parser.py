@@ -468,12 +468,16 @@ class _Parser:
         # Only operator tokens have symbol text (names, numbers and directives cannot).
         return self.tokens[self.pos + k].text == text
 
-    def expect(self, text: str, what: str = "") -> Token:
+    def expect(self, text: str, where: str | None = None, **params) -> Token:
+        """Take the operator ``text``; else the error names it, where it was expected (a
+        ``trace_where_*`` catalog code with ``params``) and what came instead."""
         tok = self.peek()
         if tok.kind == "op" and tok.text == text:
             return self.take()
-        got = "end of code" if tok.kind == "end" else repr(tok.text)
-        raise _fail(tok, f"expected '{text}'{what}, got {got}")
+        if where is None:
+            raise _fail(tok, code="trace_expected_bare", token=text, got=_got(tok))
+        raise _fail(tok, code="trace_expected", token=text, got=_got(tok),
+                    where={"code": f"trace_where_{where}", "params": params})
 
     def deeper(self) -> None:
         """One more level of recursion: bounds the parser's and the evaluator's stacks."""
@@ -621,7 +625,7 @@ class _Parser:
                     if not self.is_op(","):
                         break
                     self.take()
-                self.expect(";", " after a struct field")
+                self.expect(";", "struct_field")
             self.take()
             sdef.fields = fields
         return sdef
@@ -656,14 +660,14 @@ class _Parser:
                 raise _fail(name, code="trace_enumerator_name")
             if self.is_op("="):
                 self.take()
-                value = self.constant(self.conditional(), "an enumerator's value")
+                value = self.constant(self.conditional(), "trace_const_enum")
             else:
                 value += 1
             self.enums[name.text] = value
             if not self.is_op(","):
                 break
             self.take()
-        self.expect("}", " to close the enum")
+        self.expect("}", "close_enum")
 
     def constant(self, node: Node, what: str) -> int:
         return constant_value(node, what)
@@ -677,12 +681,12 @@ class _Parser:
         tok = self.peek()
         if self.is_op("("):
             raise _fail(tok, code="trace_function_pointer")
-        var = self.var_name("a variable name after the type")
+        var = self.var_name()
         sizes = []
         while self.is_op("["):
             self.take()
             size = None if self.is_op("]") else self.conditional()
-            self.expect("]", " to close the array size")
+            self.expect("]", "close_array_size")
             sizes.append(size)
         for size in reversed(sizes):
             desc = Arr(desc, size)
@@ -780,9 +784,9 @@ class _Parser:
         word = tok.text if tok.kind == "name" else None
         if word == "if":
             self.take()
-            self.expect("(", " after 'if'")
+            self.expect("(", "after", word="if")
             test = self.expression()
-            self.expect(")", " to close the condition")
+            self.expect(")", "close_condition")
             then = self.body()
             other = None
             if self.peek().kind == "name" and self.peek().text == "else":
@@ -793,9 +797,9 @@ class _Parser:
             return self.loop()
         if word == "switch":
             self.take()
-            self.expect("(", " after 'switch'")
+            self.expect("(", "after", word="switch")
             test = self.expression()
-            self.expect(")", " to close the condition")
+            self.expect(")", "close_condition")
             if not self.is_op("{"):
                 raise _fail(self.peek(), code="trace_switch_brace")
             self.switches += 1
@@ -807,20 +811,20 @@ class _Parser:
             if not self.switches:
                 raise _fail(tok, code="trace_outside_switch", word=word)
             value = self.conditional() if word == "case" else None
-            self.expect(":", f" after '{word}'")
+            self.expect(":", "after", word=word)
             return Label(value).at(tok, self.last())
         if word in ("break", "continue"):
             self.take()
             if not self.loops and (word == "continue" or not self.switches):
                 raise _fail(tok, code="trace_outside_loop", word=word)
-            self.expect(";", f" after '{word}'")
+            self.expect(";", "after", word=word)
             return Jump(word).at(tok, self.last())
         if word == "return":
             self.take()
             if not self.in_function:
                 raise _fail(tok, code="trace_return_outside")
             value = None if self.is_op(";") else self.expression()
-            self.expect(";", " at the end of the statement")
+            self.expect(";", "statement_end")
             return Return(value).at(tok, self.last())
         if word == "else":
             raise _fail(tok, code="trace_else_without_if")
@@ -835,7 +839,7 @@ class _Parser:
                 self.tokens[self.pos + 3].text in ("=", ",", "["))):
             raise _unknown_type(tok)  # NAME NAME: a declaration with a type never defined
         expr = self.expression()
-        self.expect(";", " at the end of the statement")
+        self.expect(";", "statement_end")
         return ExprStmt(expr).at(tok, self.last())
 
     def loop(self) -> Stmt:
@@ -848,12 +852,12 @@ class _Parser:
             if w.text != "while":
                 raise _fail(w, code="trace_do_while")
             self.take()
-            self.expect("(", " after 'while'")
+            self.expect("(", "after", word="while")
             test = self.expression()
-            self.expect(")", " to close the condition")
-            self.expect(";", " after 'do … while (…)'")
+            self.expect(")", "close_condition")
+            self.expect(";", "do_while")
         else:
-            self.expect("(", f" after '{tok.text}'")
+            self.expect("(", "after", word=tok.text)
             if tok.text == "for":
                 if self.is_op(";"):
                     self.take()
@@ -862,13 +866,13 @@ class _Parser:
                 else:
                     first = self.peek()
                     init = ExprStmt(self.expression()).at(first, self.last())
-                    self.expect(";", " after the loop's first clause")
+                    self.expect(";", "loop_first")
                 test = None if self.is_op(";") else self.expression()
-                self.expect(";", " after the loop's condition")
+                self.expect(";", "loop_condition")
                 step = None if self.is_op(")") else self.expression()
             else:
                 test = self.expression()
-            self.expect(")", " to close the condition")
+            self.expect(")", "close_condition")
             body = self.body()
         self.loops -= 1
         return Loop(tok.text, init, test, step, body).at(tok, self.last())
@@ -896,7 +900,7 @@ class _Parser:
             if not self.is_op(","):
                 break
             self.take()
-        self.expect(";", " at the end of the declaration")
+        self.expect(";", "declaration_end")
         return Decl(spelling, items, static).at(tok, self.last())
 
     def initializer(self) -> Node:
@@ -913,7 +917,7 @@ class _Parser:
             if not self.is_op(","):
                 break
             self.take()
-        self.expect("}", f" to close '{{' at {tok.line}:{tok.column}")
+        self.expect("}", "close_brace", at=f"{tok.line}:{tok.column}")
         self.shallower()
         return InitList(items).at(tok, self.last())
 
@@ -940,7 +944,7 @@ class _Parser:
             if not self.is_op(","):
                 break
             self.take()
-        self.expect(")", f" to close '(' at {open_tok.line}:{open_tok.column}")
+        self.expect(")", "close_paren", at=f"{open_tok.line}:{open_tok.column}")
         self.qualifiers()
         if self.is_op(";"):
             self.take()
@@ -992,14 +996,13 @@ class _Parser:
             if not self.is_op(","):
                 break
             self.take()
-        self.expect(";", " at the end of the declaration")
+        self.expect(";", "declaration_end")
         return Block([]).at(tok, self.last())
 
-    def var_name(self, what: str) -> Var:
+    def var_name(self) -> Var:
         tok = self.peek()
         if tok.kind != "name" or tok.text in BASE_TYPE_WORDS or tok.text in _QUALIFIERS:
-            got = "end of code" if tok.kind == "end" else repr(tok.text)
-            raise _fail(tok, f"expected {what}, got {got}")
+            raise _fail(tok, code="trace_expected_name", got=_got(tok))
         tokens = self.tokens
         pos = self.pos + 1
         name = tok.text
@@ -1038,7 +1041,7 @@ class _Parser:
         self.take()
         self.deeper()
         then = self.expression()
-        self.expect(":", " in '?:'")
+        self.expect(":", "conditional")
         other = self.conditional()
         self.shallower()
         return Cond(test, then, other).at(first, self.last())
@@ -1088,7 +1091,7 @@ class _Parser:
         if tok.text == "(" and self.starts_type(1):
             self.take()
             type_name = self.type_spelling()
-            self.expect(")", " to close the cast")
+            self.expect(")", "close_cast")
             self.deeper()
             operand = self.unary()
             self.shallower()
@@ -1120,7 +1123,7 @@ class _Parser:
                 self.deeper()
                 chain += 1
                 index = self.expression()
-                self.expect("]", " to close the index")
+                self.expect("]", "close_index")
                 node = Index(node, index).at(first, self.last())
             else:
                 break
@@ -1141,7 +1144,7 @@ class _Parser:
             self.take()
             self.deeper()
             e = self.expression()
-            self.expect(")", f" to close '(' at {tok.line}:{tok.column}")
+            self.expect(")", "close_paren", at=f"{tok.line}:{tok.column}")
             self.shallower()
             # Keep the parentheses in the shown text.
             e.start, e.end = tok.start, self.last().end
@@ -1177,7 +1180,7 @@ class _Parser:
                 if not self.is_op(","):
                     break
                 self.take()
-        self.expect(")", f" to close {name}(")
+        self.expect(")", "close_call", name=name)
         self.shallower()
         if nargs is None:  # a function of the pasted code: resolved by the checker
             return Call(name, args, None).at(tok, self.last())
@@ -1194,7 +1197,8 @@ class _Parser:
 
 def constant_value(node: Node, what: str) -> int:
     """The value of an integer constant expression made of numbers and operators
-    (array sizes, enumerators); mathematical integers, as the compiler folds them."""
+    (array sizes, enumerators); mathematical integers, as the compiler folds them.  ``what``
+    is the catalog code of the error when ``node`` is not one (``trace_const_array_size``…)."""
     if isinstance(node, Num):
         return node.value
     if isinstance(node, Unary) and node.op in ("-", "+", "~"):
@@ -1209,7 +1213,7 @@ def constant_value(node: Node, what: str) -> int:
         if node.op in ("<<", ">>") and not 0 <= b < 64:
             raise TraceError(node.right.line, node.right.column, code="trace_shift_by", n=b)
         return _CONST_OPS[node.op](a, b)
-    raise TraceError(node.line, node.column, f"{what} must be an integer constant")
+    raise TraceError(node.line, node.column, code=what or "trace_const")
 
 
 def _is_place(node: Node) -> bool:

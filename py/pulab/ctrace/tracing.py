@@ -34,7 +34,7 @@ def _defines(defines) -> dict:
     out = {}
     for i, item in enumerate(defines or ()):
         if not isinstance(item, str):
-            raise InputError(f"define[{i}]", f"must be text NAME[=VALUE], got {item!r}")
+            raise InputError(f"define[{i}]", code="trace_define_text", got=shown(item))
         try:
             name, value = parse_define(item)
         except TraceError as e:
@@ -54,7 +54,7 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     if entry is not None and (not isinstance(entry, str) or split_entry(entry) is None):
         raise InputError("entry", code="trace_entry_name", got=shown(entry))
     if not isinstance(target, str) or target not in TARGETS:
-        raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
+        raise InputError("target", code="not_choice", choices=", ".join(TARGETS), got=shown(target))
     t = TARGETS[target]
     gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
     defs = _defines(defines)
@@ -81,19 +81,20 @@ def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> d
         sym = checked.symbols.get(name)
         if sym is None:
             shown_name = name if field == f"set.{name}" else shown(name)
-            raise InputError(field, f"no variable {shown_name} is declared in the code")
+            raise InputError(field, code="trace_no_variable", name=shown_name)
         if sym.initialized:
-            raise InputError(field, f"{name} has an initializer in the code")
+            raise InputError(field, code="trace_has_initializer", name=name)
         if isinstance(value, str):
             try:
                 value = int(value.strip().replace("_", ""), 0)
             except ValueError:
-                raise InputError(field, f"must be an integer, got {value!r}") from None
+                raise InputError(field, code="not_integer", got=shown(value)) from None
         if isinstance(value, bool) or not isinstance(value, int):
-            raise InputError(field, f"must be an integer, got {value!r}")
+            raise InputError(field, code="not_integer", got=shown(value))
         t = sym.ctype
         if not t.min <= value <= t.max:
-            raise InputError(field, f"must be {t.min}..{t.max} for {sym.spelling}, got {value}")
+            raise InputError(field, code="trace_value_range", lo=t.min, hi=t.max,
+                             type=sym.spelling, got=value)
         out[name] = value
     if zero_unset:
         for name in checked.inputs:
@@ -196,7 +197,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     """:func:`trace` for code already compiled by :func:`compile_code`."""
     if global_q is not None and (isinstance(global_q, bool) or not isinstance(global_q, int)
                                  or not 1 <= global_q <= 30):
-        raise InputError("global_q", f"must be an integer 1..30, got {global_q!r}")
+        raise InputError("global_q", code="integer_range", lo=1, hi=30, got=shown(global_q))
     inputs = inputs or {}
     ev = run_checked(checked, inputs, global_q, zero_unset=zero_unset)
     values, steps = ev.values, ev.steps
