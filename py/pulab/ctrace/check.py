@@ -900,13 +900,14 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         # without an entry every statement runs: the first one outside the subset is the error
         raise program.refused[entry][0] if entry is not None else \
             next(iter(program.refused.values()))[0]
-    entries = [*program.functions, *(f"{m}(…)" for m in entry_macros(program))]
-    if entry is not None and entry not in program.functions:
-        raise InputError("entry", code="trace_no_entry", name=entry,
-                         known=", ".join(entries) or "none")
-    if entry is None and entries and not any(
-            not isinstance(s, Decl) for s in program.statements if not isinstance(s, Block)):
-        raise InputError("entry", code="trace_choose_entry", known=", ".join(entries))
+    if entry is None or entry not in program.functions:
+        entries = [*program.functions, *(f"{m}(…)" for m in entry_macros(program))]
+        if entry is not None:
+            raise InputError("entry", code="trace_no_entry", name=entry,
+                             known=", ".join(entries) or "none")
+        if entries and not any(not isinstance(s, Decl) for s in program.statements
+                               if not isinstance(s, Block)):
+            raise InputError("entry", code="trace_choose_entry", known=", ".join(entries))
     for s in program.statements:
         c.statement(s)
     for name, node in program.functions.items():
