@@ -1144,7 +1144,10 @@ class _Parser:
             self.take()
             self.deeper()
             e = self.expression()
-            self.expect(")", "close_paren", at=f"{tok.line}:{tok.column}")
+            if self.is_op(")"):
+                self.take()
+            else:
+                self.expect(")", "close_paren", at=f"{tok.line}:{tok.column}")
             self.shallower()
             # Keep the parentheses in the shown text.
             e.start, e.end = tok.start, self.last().end

@@ -105,6 +105,7 @@ class _Macro:
 
 
 _new = tuple.__new__  # builds a Token without NamedTuple's slow keyword path
+_NO_HIDE: frozenset = frozenset()  # the macros a source token may expand: all
 _TEXT_TOKENS: dict = {}
 
 
@@ -303,7 +304,7 @@ class _Pre:
                 yield tok
 
     def expand_list(self, toks: list) -> list:
-        return self.run(deque((t, frozenset()) for t in toks), None)
+        return self.run(deque((t, _NO_HIDE) for t in toks), None)
 
     def run(self, pending: deque, more) -> list:
         """Expand ``pending`` (then the tokens of iterator ``more``) to the end."""
@@ -316,17 +317,23 @@ class _Pre:
             if more is not None:
                 t = next(more, None)
                 if t is not None:
-                    return t, frozenset()
+                    return t, _NO_HIDE
             return None
 
+        append = out.append
         while True:
-            item = pull()
-            if item is None:
-                return out
-            tok, hide = item
-            mac = macros.get(tok.text) if tok.kind == "name" else None
-            if mac is None and tok.kind == "name" and tok.text[:2] in ("_I", "_Q") and \
-                    _IQ_BUILTIN.match(tok.text):
+            if pending:
+                tok, hide = pending.popleft()
+            else:
+                tok = next(more, None) if more is not None else None
+                if tok is None:
+                    return out
+                hide = _NO_HIDE
+            if tok.kind != "name":  # most tokens: nothing to expand
+                append(tok)
+                continue
+            mac = macros.get(tok.text)
+            if mac is None and tok.text[:2] in ("_I", "_Q") and _IQ_BUILTIN.match(tok.text):
                 nxt = pull()
                 if nxt is not None and nxt[0].text == "(" and nxt[0].kind == "op":
                     args, last = self.arguments(_Macro(tok.text, ["A"], False, []), tok, pull)
@@ -338,7 +345,7 @@ class _Pre:
                 if nxt is not None:
                     pending.appendleft(nxt)
             if mac is None or tok.text in hide:
-                out.append(tok)
+                append(tok)
                 continue
             if len(hide) >= MAX_MACRO_DEPTH:
                 raise _fail(tok, "trace_macro_depth", name=tok.text, limit=MAX_MACRO_DEPTH)
