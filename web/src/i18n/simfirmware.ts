@@ -14,6 +14,7 @@ export default dict(
     sf_ev_output_limit: 'output at its limit',
     sf_vs_si: 'max |{name} − SI|',
     sf_lsb: 'LSB of its current',
+    sf_hw_defaults: 'The {name} trace uses that firmware’s default hardware scales; the hardware values typed under “Firmware” are not simulated.',
   },
   {
     sf_fixed: '{name} 定点',
@@ -27,5 +28,6 @@ export default dict(
     sf_ev_output_limit: '输出到限',
     sf_vs_si: '最大 |{name} − SI|',
     sf_lsb: '其电流的 LSB',
+    sf_hw_defaults: '{name} 曲线采用该固件的默认硬件比例；“固件”下填写的硬件值不参与仿真。',
   },
 );

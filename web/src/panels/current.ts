@@ -5,6 +5,7 @@ import { fixedRun, renderCurrentStep } from '../figures/current-step';
 import { keptFigure, simPlaceholder } from '../figures/figure';
 import { shippedProfile } from '../page/answer';
 import { metricsTable, type MetricColumn, type MetricRow } from './metrics';
+import { hardwareTyped } from './vendors';
 import type { Panel } from './panel';
 import { traceTable } from './vendor';
 
@@ -52,12 +53,13 @@ function noTrace(sim: SimCurrent, fw: string, report: Report | null | undefined)
 }
 
 /** The shipped firmware's run below the table: its distance from SI and its wraps and saturations. */
-function profileNotes(sim: SimCurrent, fw: string): HTMLElement[] {
+function profileNotes(sim: SimCurrent, fw: string): (HTMLElement | null)[] {
   const run = sim.by_profile?.[fw];
   if (!run?.ran) return [];
   const name = t(`vd_${fw}` as Key);
   const p = `sim.current.by_profile.${fw}`;
   return [
+    hardwareTyped(fw) ? h('p', { class: 'note sim-hw-defaults' }, t('sf_hw_defaults', { name })) : null,
     h('p', { class: 'note' }, `${t('sf_vs_si', { name })}: `,
       num(`${p}.metrics.vs_si_max_abs_a`, run.metrics.vs_si_max_abs_a, { unit: 'A' }), ' = ',
       num(`${p}.metrics.vs_si_max_lsb`, run.metrics.vs_si_max_lsb, { sig: 4 }), ` ${t('sf_lsb')}`),

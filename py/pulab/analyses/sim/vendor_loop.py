@@ -153,6 +153,21 @@ def _quantize(x: float, bits: int, ev: dict) -> int:
     return v
 
 
+def _memo_step(memo: dict, step, state: tuple, ref: int, fb: int, ev: dict) -> tuple:
+    key = (state, fb)
+    hit = memo.get(key)
+    if hit is None:
+        if len(memo) > 4096:
+            memo.clear()
+        own: dict = {}
+        new, out = step(state, ref, fb, ev=own)
+        hit = memo[key] = (new, out, tuple(own.items()))
+    if hit[2]:
+        for name, count in hit[2]:
+            ev[name] += count
+    return hit[0], hit[1]
+
+
 def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bemf_v: float,
                       n: int, delay: bool):
     """One vendor's integer PI on the SI plant for n+1 samples.
@@ -186,28 +201,49 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
     st_q = ctl["start"](bemf_v * peak)
     xd = xq = 0.0
     prev_d, prev_q = 0.0, ctl["held"](st_q) * to_volt
-    out = {k: array("d") for k in ("id", "iq", "ud", "uq")}
+    # The steps are pure functions of (state, reference, feedback): in steady state the same
+    # pairs recur (limit cycles of a count or two), so a memo saves most calls (as the
+    # Inovance run's does); each entry keeps the events of its call, counted again on reuse.
+    memo_d: dict = {}
+    memo_q: dict = {}
+    cols = {k: array("d") for k in ("id", "iq", "ud", "uq")}
     ints = {k: array("l") for k in ("fb_d", "fb_q", "out_d", "out_q")}
     sats = array("b")
+    put_id, put_iq, put_ud, put_uq = (cols[k].append for k in ("id", "iq", "ud", "uq"))
+    put_fd, put_fq, put_od, put_oq = (ints[k].append for k in ("fb_d", "fb_q", "out_d", "out_q"))
+    hi = (1 << (bits - 1)) - 1
+    lo = -hi - 1
+    bemf = z.bemf
     for k in range(n + 1):
         if k and not k % SLICE_STEPS:
             yield
-        out["id"].append(xd)
-        out["iq"].append(xq)
-        fd = _quantize(xd * to_count, bits, ev)
-        fq = _quantize(xq * to_count, bits, ev)
-        st_d, od = step_d(st_d, r_d, fd, ev=ev)
-        st_q, oq = step_q(st_q, r_q, fq, ev=ev)
-        for key, v in (("fb_d", fd), ("fb_q", fq), ("out_d", od), ("out_q", oq)):
-            ints[key].append(v)
-        sats.append(abs(od) >= lim or abs(oq) >= lim)
+        put_id(xd)
+        put_iq(xq)
+        # The feedback: nearest count (ties away from zero), clipped to the word.
+        v = xd * to_count
+        fd = int(v + 0.5) if v >= 0 else -int(0.5 - v)
+        if fd > hi or fd < lo:
+            ev["feedback_saturate"] += 1
+            fd = hi if fd > hi else lo
+        v = xq * to_count
+        fq = int(v + 0.5) if v >= 0 else -int(0.5 - v)
+        if fq > hi or fq < lo:
+            ev["feedback_saturate"] += 1
+            fq = hi if fq > hi else lo
+        st_d, od = _memo_step(memo_d, step_d, st_d, r_d, fd, ev)
+        st_q, oq = _memo_step(memo_q, step_q, st_q, r_q, fq, ev)
+        put_fd(fd)
+        put_fq(fq)
+        put_od(od)
+        put_oq(oq)
+        sats.append(od >= lim or od <= -lim or oq >= lim or oq <= -lim)
         od_v, oq_v = od * to_volt, oq * to_volt
         if delay:
             ad, aq, prev_d, prev_q = prev_d, prev_q, od_v, oq_v
         else:
             ad, aq = od_v, oq_v
-        out["ud"].append(ad)
-        out["uq"].append(aq)
-        vq = aq - z.bemf
+        put_ud(ad)
+        put_uq(aq)
+        vq = aq - bemf
         xd, xq = p0 * xd + p1 * xq + g0 * ad + g1 * vq, p2 * xd + p3 * xq + g2 * ad + g3 * vq
-    return {**out, "sat": sats, **ints, "events": ev, "lsb_a": ctl["i_lsb"] / peak}
+    return {**cols, "sat": sats, **ints, "events": ev, "lsb_a": ctl["i_lsb"] / peak}
