@@ -41,6 +41,29 @@ export default async function simFirmware(ctx) {
     }
   }
 
+  await check('sim-firmware: Inovance by default; picking NXP in "Firmware you ship" redraws with NXP\'s run (equal CPython)', async () => {
+    const inp = { ...seed.input, sim: {} };
+    const want = cpython(inp).sim.current;
+    const p = await newPage({ context: { viewport: { width: 1366, height: 768 } } });
+    await p.goto(link(inp, 'en'));
+    await ready(p);
+    await p.click('nav.tabs a[data-view="loops"]');
+    const ino = '#panel-current [data-key="sim.current.metrics.fixed.rise_time_s"][data-value]';
+    await p.waitForSelector(ino, { timeout: 60_000 });
+    assert(await p.$eval(ino, (e) => JSON.parse(e.dataset.value)) === want.metrics.fixed.rise_time_s, 'Inovance rise time');
+    await p.$eval('#panel-current .figure', (e) => e.scrollIntoView({ block: 'center' }));
+    await p.waitForSelector('#panel-current .plot-host .main-svg', { timeout: 30_000 });
+    const legend = () => p.$$eval('#panel-current .legendtext', (ts) => ts.map((x) => x.textContent));
+    assert((await legend()).some((x) => x.startsWith('Inovance fixed point')), `legend ${await legend()}`);
+    await p.selectOption('select[name="conventions.firmware"]', 'nxp');
+    const nxp = '#panel-current [data-key="sim.current.by_profile.nxp.metrics.rise_time_s"][data-value]';
+    await p.waitForSelector(nxp, { timeout: 60_000 });
+    const nxpWant = cpython({ ...inp, conventions: { ...(inp.conventions ?? {}), firmware: 'nxp' } }).sim.current.by_profile.nxp;
+    assert(await p.$eval(nxp, (e) => JSON.parse(e.dataset.value)) === nxpWant.metrics.rise_time_s, 'NXP rise time');
+    await p.waitForFunction(() => [...document.querySelectorAll('#panel-current .legendtext')].some((x) => x.textContent.startsWith('NXP fixed point')), null, { timeout: 30_000 });
+    await p.context().close();
+  });
+
   await check('sim-firmware: a firmware that cannot represent the motor says so at the plot (TI, Kp beyond IQ24)', async () => {
     // 500 kHz bandwidth: TI's Kp = 333 per unit does not fit IQ24's ±128; NXP, ST, Microchip run.
     const inp = { ...seed.input, current_loop: { bandwidth_hz: 500000 }, conventions: { ...(seed.input.conventions ?? {}), firmware: 'ti' }, sim: {} };

@@ -81,7 +81,10 @@ export const currentPanel: Panel = {
     const axis = (String((input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd') as 'd' | 'q';
     const fw = shippedProfile(ctx);
     const run = sim?.by_profile?.[fw];
-    const extra: MetricColumn[] = run?.ran ? [{ label: t('sf_fixed', { name: t(`vd_${fw}` as Key) }), path: `sim.current.by_profile.${fw}.metrics`, metrics: run.metrics }] : [];
+    // The shipped firmware's column: Inovance's `metrics.fixed`, another's `by_profile` run.
+    const fxMetrics = fw === 'inovance' ? (sim?.metrics.fixed as Record<string, unknown> | undefined) : run?.ran ? run.metrics : undefined;
+    const extra: MetricColumn[] = fxMetrics ? [{ label: t('sf_fixed', { name: t(`vd_${fw}` as Key) }),
+      path: fw === 'inovance' ? 'sim.current.metrics.fixed' : `sim.current.by_profile.${fw}.metrics`, metrics: fxMetrics }] : [];
     patch(el, ...[
       h('div', { class: 'formulas' },
         tex(DESIGN()[method] ?? DESIGN().manual, true),
@@ -94,7 +97,7 @@ export const currentPanel: Panel = {
       h('h3', {}, t('plotCurrent')),
       sim ? noTrace(sim, fw, report) : null,
       h('div', { class: 'figure', 'data-keep': 'current-step' }),
-      sim ? metricsTable('sim.current.metrics', sim.metrics, fw === 'inovance' ? ['si', 'pu', 'fixed'] : ['si', 'pu'], METRIC_ROWS, extra) : null,
+      sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu'], METRIC_ROWS, extra) : null,
       sim && fw === 'inovance' ? h('p', { class: 'note' }, `${t('fixedVsSi')}: `,
         num('sim.current.metrics.fixed_vs_si_max_abs_a', sim.metrics.fixed_vs_si_max_abs_a, { unit: 'A' }), ' = ',
         num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' })) : null,

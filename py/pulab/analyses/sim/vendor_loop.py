@@ -72,7 +72,8 @@ def _ti(p: dict, umax: float) -> dict:
     q = o["global_q"]
     one = float(1 << q)
     v_lsb = o["full_scale_voltage_v"] / one
-    hi = math.trunc(umax / v_lsb)
+    # _IQ() of a limit beyond the word is undefined in C; the word's end is what can be held.
+    hi = min((1 << 31) - 1, math.trunc(umax / v_lsb))
     steps = {a: partial(ti_step, kp=c[f"Kp_I{a}"]["value"], ki=c[f"Ki_I{a}"]["value"],
                         out_max=hi, out_min=-hi, q=q) for a in ("d", "q")}
     return {"i_lsb": o["full_scale_current_a"] / one, "fb_bits": 32, "u_lsb": v_lsb,
