@@ -163,3 +163,42 @@ def test_a_profile_that_cannot_hold_the_gains_does_not_run(seed_input):
                                              for p in r["firmware"]["ti"]["problems"]]}
     assert [p["field"] for p in ti["problems"]] == ["profiles.ti.Kp_Id", "profiles.ti.Kp_Iq"]
     assert r["sim"]["current"]["by_profile"]["nxp"]["ran"] is True
+
+
+def test_any_profile_options_run_or_say_why_never_crash(seed_input):
+    # Random hardware options over their whole input ranges (full scales from 1e-6 to 1e6,
+    # every GLOBAL_Q, every power-of-two divider) and random loops: every profile either runs
+    # with finite currents or is marked not representable; the report stays strict JSON.
+    import json
+    import random
+    rng = random.Random(20261126)
+    keys = {"ti": ("full_scale_voltage_v", "full_scale_current_a", "global_q"),
+            "nxp": ("udcb_max_v", "i_max_a", "u_max_coeff", "trapezoidal"),
+            "st": ("rshunt_ohm", "amplification_gain", "adc_reference_v", "tf_kpdiv", "tf_kidiv"),
+            "microchip": ("voltage_base_v", "current_base_a")}
+    ran = skipped = 0
+    for _ in range(40):
+        prof = {}
+        for v, ks in keys.items():
+            prof[v] = {}
+            for k in ks:
+                if rng.random() < 0.5:
+                    continue
+                prof[v][k] = (rng.randint(1, 30) if k == "global_q" else
+                              1 << rng.randint(0, 15) if k.startswith("tf_") else
+                              rng.random() < 0.5 if k == "trapezoidal" else
+                              10 ** rng.uniform(-6, 6))
+        r = report({**seed_input, "profiles": prof,
+                    "current_loop": {"bandwidth_hz": 10 ** rng.uniform(0, 4)},
+                    "sim": {"current": {"axis": rng.choice("dq"), "delay": rng.random() < 0.5,
+                                        "speed_hz": rng.uniform(-1000, 1000),
+                                        "duration_s": 0.01}}})
+        json.dumps(r, allow_nan=False)
+        for name, b in r["sim"]["current"]["by_profile"].items():
+            assert b["ran"] is r["firmware"][name]["representable"]
+            if b["ran"]:
+                ran += 1
+                assert all(math.isfinite(x) for k in ("id", "iq") for x in b["variant"][k])
+            else:
+                skipped += 1
+    assert ran > 40 and skipped > 10, (ran, skipped)
