@@ -28,7 +28,9 @@ NXP RTCESL ``GFLIB_CtrlPIpAW_F16`` (Masmiseim36/nxpSDK :
   reading of its documented form (saturating frac32 products and sums, the accumulator
   held within the limits, output = upper half of the frac32 sum).  The error is
   ``MLIB_SubSat_F16(req, meas)`` as NXP's FOC code computes it.  With ``trapezoidal`` the
-  integral adds Ki·(e(k) + e(k−1)) (Ki = ki·T_s/2), otherwise Ki·e(k) (Ki = ki·T_s).
+  integral adds Ki·(e(k) + e(k−1)) (Ki = ki·T_s/2), otherwise Ki·e(k) (Ki = ki·T_s): MCAT
+  halves Ki for its "Trapezoidal" discretization (``DiscMethodFactor``, Masmiseim36/nxpSDK :
+  middleware/motor_control/freemaster/pmsm_frac/mcat/src/JS_functions/inner_CLoop.js).
 ST MCSDK ``pid_regulator.c`` ``PI_Controller`` (public copies found by exact-string search)
   with the limits of ``mc_config.c`` (dronectl/g431-mcsdk : Src/mc_config.c): int16 gains,
   int32 integral with its overflow guard, ±INT16_MAX·TF_KIDIV integral limits, ±INT16_MAX
