@@ -16,8 +16,8 @@ event name → count):
 
 The public files read (never copied) for each form:
 
-TI MotorWare ``pi.h`` ``PI_run_series`` (public copies, found by exact-string search;
-  e.g. the MotorWare tree ``sw/modules/pi/src/32b/pi.h``) with IQmath ``IQmathLib.h``:
+TI MotorWare ``pi.h`` ``PI_run_series`` (a public copy found by exact-string search; the
+  search tool does not name its repository) with IQmath ``IQmathLib.h``:
   ``Up = _IQmpy(Kp, Error)``, ``Ui = _IQsat(Ui + _IQmpy(Ki, Up), outMax, outMin)``,
   ``Out = _IQsat(Up + Ui + ffwd, outMax, outMin)``; ``_IQmpy`` is the 64-bit product
   shifted right by GLOBAL_Q, kept in 32 bits.
