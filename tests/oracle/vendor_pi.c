@@ -7,7 +7,10 @@
  *   vendor_pi st        KP KI KPLOG KILOG ILIM     INTEG
  *   vendor_pi microchip KP KI KC OUTMAX OUTMIN KPSH KISH   SUM
  *
- * stdin: one "ref fb" pair per line; stdout: one line per step, "out state...".
+ * stdin: one "ref fb" pair per line; stdout: one line per step, "out state...", then a last
+ * line "events WRAP SATURATE INTEGRAL_LIMIT OUTPUT_LIMIT": how often a C operation wrapped
+ * (its exact value, computed in 64 bits, differs from what the target's word keeps), a
+ * saturating operation or overflow guard clipped, the integral or the output was held.
  *
  * TI: MotorWare pi.h PI_run_series with IQmathLib.h _IQmpy/_IQsat.
  * NXP: RTCESL GFLIB_CtrlPIpAW_F16 (GFLIB_CtrlPIp_A32.h state; MLIB saturating frac math),
@@ -25,8 +28,12 @@ static int GLOBAL_Q;
 #define _IQmpy(A, B) ((_iq)(((long long)(A) * (long long)(B)) >> GLOBAL_Q))
 #define _IQsat(A, Pos, Neg) ((A) > (Pos) ? (Pos) : ((A) < (Neg) ? (Neg) : (A)))
 
-static int32_t sat32(int64_t x) { return x > INT32_MAX ? INT32_MAX : (x < INT32_MIN ? INT32_MIN : (int32_t)x); }
-static int16_t sat16(int32_t x) { return x > INT16_MAX ? INT16_MAX : (x < INT16_MIN ? INT16_MIN : (int16_t)x); }
+static long W, S, I, O;  /* events: wrap, saturate, integral_limit, output_limit */
+static int32_t sat32(int64_t x) { if (x > INT32_MAX || x < INT32_MIN) S++; return x > INT32_MAX ? INT32_MAX : (x < INT32_MIN ? INT32_MIN : (int32_t)x); }
+static int16_t sat16(int32_t x) { if (x > INT16_MAX || x < INT16_MIN) S++; return x > INT16_MAX ? INT16_MAX : (x < INT16_MIN ? INT16_MIN : (int16_t)x); }
+/* The value a 32- or 16-bit word keeps of x; a change is a wrap. */
+static int32_t w32(int64_t x) { if ((int32_t)x != x) W++; return (int32_t)x; }
+static int16_t w16(int32_t x) { if ((int16_t)x != x) W++; return (int16_t)x; }
 
 int main(int argc, char **argv) {
   long a[10];
@@ -38,10 +45,15 @@ int main(int argc, char **argv) {
     _iq Kp = a[0], Ki = a[1], outMax = a[2], outMin = a[3], Ui = a[5], Error, Up, Out;
     GLOBAL_Q = (int)a[4];
     while (scanf("%ld %ld", &ref, &fb) == 2) {
-      Error = (_iq)ref - (_iq)fb;
-      Up = _IQmpy(Kp, Error);
-      Ui = _IQsat(Ui + _IQmpy(Ki, Up), outMax, outMin);
-      Out = _IQsat(Up + Ui, outMax, outMin);
+      _iq sum;
+      Error = w32((long long)ref - fb);
+      Up = w32(((long long)Kp * Error) >> GLOBAL_Q);   /* _IQmpy(Kp, Error) */
+      sum = w32((long long)Ui + w32(((long long)Ki * Up) >> GLOBAL_Q));
+      Ui = _IQsat(sum, outMax, outMin);
+      if (Ui != sum) I++;
+      sum = w32((long long)Up + Ui);
+      Out = _IQsat(sum, outMax, outMin);
+      if (Out != sum) O++;
       printf("%ld %ld\n", (long)Out, (long)Ui);
     }
   } else if (!strcmp(argv[1], "nxp")) {
@@ -56,14 +68,14 @@ int main(int argc, char **argv) {
       prop = sat32((int64_t)a32PGain * e * 2);
       inc = sat32((int64_t)a32IGain * (trap ? (int32_t)e + f16InErrK_1 : (int32_t)e) * 2);
       acc = sat32((int64_t)f32IAccK_1 + inc);
-      if (acc > (int32_t)upper * 65536) acc = (int32_t)upper * 65536;
-      else if (acc < (int32_t)lower * 65536) acc = (int32_t)lower * 65536;
+      if (acc > (int32_t)upper * 65536) { acc = (int32_t)upper * 65536; I++; }
+      else if (acc < (int32_t)lower * 65536) { acc = (int32_t)lower * 65536; I++; }
       f32IAccK_1 = acc;
       f16InErrK_1 = e;
       sum = sat32((int64_t)prop + acc);
       out = (int16_t)(sum >> 16);
-      if (out > upper) out = upper;
-      else if (out < lower) out = lower;
+      if (out > upper) { out = upper; O++; }
+      else if (out < lower) { out = lower; O++; }
       printf("%d %ld %d\n", out, (long)f32IAccK_1, f16InErrK_1);
     }
   } else if (!strcmp(argv[1], "st")) {
@@ -73,21 +85,21 @@ int main(int argc, char **argv) {
     int16_t hUpper = INT16_MAX, hLower = -INT16_MAX;
     while (scanf("%ld %ld", &ref, &fb) == 2) {
       int32_t err = (int32_t)(int16_t)ref - (int32_t)(int16_t)fb;
-      int32_t wP = hKpGain * err, wI, wSum, wOut, wDis = 0;
+      int32_t wP = w32((int64_t)hKpGain * err), wI, wSum, wOut, wDis = 0;
       if (hKiGain == 0) wIntegralTerm = 0;
       else {
-        wI = hKiGain * err;
-        wSum = wIntegralTerm + wI;
-        if (wSum < 0) { if (wIntegralTerm > 0 && wI > 0) wSum = INT32_MAX; }
-        else { if (wIntegralTerm < 0 && wI < 0) wSum = -INT32_MAX; }
-        if (wSum > upperI) wIntegralTerm = upperI;
-        else if (wSum < lowerI) wIntegralTerm = lowerI;
+        wI = w32((int64_t)hKiGain * err);
+        wSum = wIntegralTerm + wI;  /* wraps (-fwrapv); the guard below catches it */
+        if (wSum < 0) { if (wIntegralTerm > 0 && wI > 0) { wSum = INT32_MAX; S++; } }
+        else { if (wIntegralTerm < 0 && wI < 0) { wSum = -INT32_MAX; S++; } }
+        if (wSum > upperI) { wIntegralTerm = upperI; I++; }
+        else if (wSum < lowerI) { wIntegralTerm = lowerI; I++; }
         else wIntegralTerm = wSum;
       }
-      wOut = (wP >> kpPow2) + (wIntegralTerm >> kiPow2);
-      if (wOut > hUpper) { wDis = hUpper - wOut; wOut = hUpper; }
-      else if (wOut < hLower) { wDis = hLower - wOut; wOut = hLower; }
-      wIntegralTerm += wDis;
+      wOut = w32((int64_t)(wP >> kpPow2) + (wIntegralTerm >> kiPow2));
+      if (wOut > hUpper) { wDis = hUpper - wOut; wOut = hUpper; O++; }
+      else if (wOut < hLower) { wDis = hLower - wOut; wOut = hLower; O++; }
+      wIntegralTerm = w32((int64_t)wIntegralTerm + wDis);
       printf("%d %ld\n", (int16_t)wOut, (long)wIntegralTerm);
     }
   } else if (!strcmp(argv[1], "microchip")) {
@@ -97,19 +109,20 @@ int main(int argc, char **argv) {
     int32_t qdSum = (int32_t)a[7], U;
     while (scanf("%ld %ld", &ref, &fb) == 2) {
       int16_t qInRef = (int16_t)ref, qInMeas = (int16_t)fb, currentError, outTemp;
-      currentError = qInRef - qInMeas;
-      U = (currentError * qKp) * (1 << kpSh);
-      U = U + qdSum;
-      outTemp = (int32_t)(U >> 15);
-      if (outTemp > qOutMax) qOut = qOutMax;
-      else if (outTemp < qOutMin) qOut = qOutMin;
+      currentError = w16(qInRef - qInMeas);
+      U = w32((int64_t)w32(currentError * qKp) * (1 << kpSh));
+      U = w32((int64_t)U + qdSum);
+      outTemp = w16((int32_t)(U >> 15));
+      if (outTemp > qOutMax) { qOut = qOutMax; O++; }
+      else if (outTemp < qOutMin) { qOut = qOutMin; O++; }
       else qOut = outTemp;
-      U = (currentError * qKi) * (1 << kiSh);
-      currentError = outTemp - qOut;
-      U -= currentError * qKc;
-      qdSum = qdSum + U;
+      U = w32((int64_t)w32(currentError * qKi) * (1 << kiSh));
+      currentError = w16(outTemp - qOut);
+      U = w32((int64_t)U - currentError * qKc);
+      qdSum = w32((int64_t)qdSum + U);
       printf("%d %ld\n", qOut, (long)qdSum);
     }
   } else return 2;
+  printf("events %ld %ld %ld %ld\n", W, S, I, O);
   return 0;
 }

@@ -2,8 +2,9 @@
 
 1. Closed loop, bit for bit: the feedback integers a run recorded are replayed through the C
    oracle (tests/oracle/vendor_pi.c, gcc -m32 -fwrapv, never imports pulab) from the same
-   start; its outputs must equal the run's, integer by integer — on the seed motor and on a
-   stressed run that drives every controller into its limits.
+   start; its outputs must equal the run's, integer by integer, and its counts of wraps,
+   saturations and limits the run's — on the seed motor and on a stressed run that drives
+   every controller into its limits.
 2. Against float: the fixed-point currents stay within a stated tolerance of a float PI of
    the same structure on the same plant (TI, NXP, ST: the report's ``si`` variant, whose
    order — integral, then output — is theirs; Microchip's CalcPI updates the integral
@@ -54,13 +55,16 @@ def _run(seed_input, name: str, step_a: float, speed_hz: float, delay: bool, axi
     return r, ctl, z, run
 
 
-def _replay(exe, ctl: dict, axis: str, run: dict, ref: int, state: tuple) -> list:
+def _replay(exe, ctl: dict, axis: str, run: dict, ref: int, state: tuple) -> tuple:
+    """The oracle's outputs for one axis, and its event counts (wrap, saturate,
+    integral_limit, output_limit)."""
     kw = ctl["steps"][axis].keywords
     args = [int(kw[k]) for k in ORDER[run["name"]]] + list(state)
     text = "".join(f"{ref} {f}\n" for f in run[f"fb_{axis}"])
     res = subprocess.run([str(exe), run["name"]] + [str(a) for a in args], input=text,
                          capture_output=True, text=True, check=True)
-    return [int(line.split()[0]) for line in res.stdout.splitlines()]
+    *rows, last = res.stdout.splitlines()
+    return [int(line.split()[0]) for line in rows], [int(x) for x in last.split()[1:]]
 
 
 @pytest.mark.parametrize("name", vendor_loop.NAMES)
@@ -78,12 +82,16 @@ def test_closed_loop_outputs_equal_the_c_oracle(oracle, capsys, seed_input, name
         refs["q"] = min(refs["q"], 32767)
     starts = {"d": ctl["start"](0.0), "q": ctl["start"](z.bemf * peak)}
     mismatches = 0
+    events = [0, 0, 0, 0]
     for axis in ("d", "q"):
-        want = _replay(oracle, ctl, axis, run, refs[axis], starts[axis])
+        want, ev = _replay(oracle, ctl, axis, run, refs[axis], starts[axis])
         got = list(run[f"out_{axis}"])
         assert len(want) == len(got) > 400
         mismatches += sum(g != w for g, w in zip(got, want))
+        events = [a + b for a, b in zip(events, ev)]
     assert mismatches == 0
+    assert events == [run["events"][k] for k in ("wrap", "saturate", "integral_limit",
+                                                  "output_limit")]
     if stress:
         assert run["events"]["output_limit"] > 0, run["events"]
 

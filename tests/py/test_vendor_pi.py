@@ -3,8 +3,8 @@
 The oracle is our own C of each vendor's PI step, written in the constructs of the vendor's
 public code and compiled by a real compiler; it never imports pulab.  Both are fed the same
 integer sequences — random errors over the whole word, including values that wrap and
-saturate — and every output and state integer must agree.  Event counts are checked on
-cases worked by hand.
+saturate — and every output and state integer, and the count of each event, must agree.
+Event counts are also checked on cases worked by hand.
 
 Missing gcc-multilib: SKIPPED loudly; with CI=true the missing tools fail the test.
 """
@@ -32,12 +32,17 @@ def oracle(tmp_path_factory):
     return exe
 
 
-def run_oracle(exe, args: list, pairs: list) -> list:
-    """The oracle's lines for one vendor: [[out, state...], ...]."""
+def run_oracle(exe, args: list, pairs: list) -> tuple:
+    """The oracle's lines for one vendor, [[out, state...], ...], and its event counts."""
     text = "".join(f"{r} {f}\n" for r, f in pairs)
     res = subprocess.run([str(exe)] + [str(a) for a in args], input=text, capture_output=True,
                          text=True, check=True)
-    return [[int(x) for x in line.split()] for line in res.stdout.splitlines()]
+    *rows, last = res.stdout.splitlines()
+    head, *counts = last.split()
+    assert head == "events"
+    names = ("wrap", "saturate", "integral_limit", "output_limit")
+    return ([[int(x) for x in line.split()] for line in rows],
+            {k: int(c) for k, c in zip(names, counts) if int(c)})
 
 
 def run_pulab(step, state: tuple, pairs: list, ev: dict) -> list:
@@ -96,11 +101,13 @@ def test_equals_the_c_oracle_integer_by_integer(oracle, capsys, k):
     pairs = _pairs(random.Random(SEED + k), *WORDS[name])
     ev: dict = {}
     got = run_pulab(step, state, pairs, ev)
-    want = run_oracle(oracle, [name] + args, pairs)
+    want, want_ev = run_oracle(oracle, [name] + args, pairs)
     assert len(want) == len(pairs)
     mismatches = [(i, g, w) for i, (g, w) in enumerate(zip(got, want)) if g != w]
     assert mismatches == [], f"{len(mismatches)} mismatches, first {mismatches[:3]}"
-    # Whole-word inputs must have driven each controller into its limits or wraps.
+    # Every wrap, saturation and limit counted as the compiled C counts it; whole-word inputs
+    # must have driven each controller into some.
+    assert ev == want_ev
     assert sum(ev.values()) > 0
 
 
