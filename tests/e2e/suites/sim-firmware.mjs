@@ -64,6 +64,26 @@ export default async function simFirmware(ctx) {
     await p.context().close();
   });
 
+  await check('sim-firmware: Microchip at 20 kHz wraps: the count (equal CPython) is marked an error and the review lists it', async () => {
+    const inp = { ...seed.input, current_loop: { bandwidth_hz: 20000 }, conventions: { ...(seed.input.conventions ?? {}), firmware: 'microchip' }, sim: {} };
+    const want = cpython(inp);
+    const wraps = want.sim.current.by_profile.microchip.events.wrap;
+    assert(wraps > 0 && want.review.findings.some((f) => f.code === 'pi_wrap'), 'CPython: no wraps here');
+    const p = await newPage({ context: { viewport: { width: 1366, height: 768 } } });
+    await p.goto(link(inp, 'en'));
+    await ready(p);
+    await p.click('nav.tabs a[data-view="loops"]');
+    const sel = '#panel-current [data-key="sim.current.by_profile.microchip.events.wrap"][data-value]';
+    await p.waitForSelector(sel, { timeout: 60_000 });
+    assert(await p.$eval(sel, (e) => JSON.parse(e.dataset.value)) === wraps, 'wrap count');
+    await p.waitForFunction((s) => document.querySelector(s)?.dataset.findingSev === 'error', sel, { timeout: 30_000 });
+    await p.waitForSelector('.panel-review li.finding[data-finding="sim.current.by_profile.microchip.events.wrap"]', { state: 'attached', timeout: 30_000 });
+    await p.$eval(sel, (e) => e.scrollIntoView({ block: 'center' }));
+    await p.waitForTimeout(300);
+    await p.screenshot({ path: join(SHOTS, 'sim-firmware-1366-en-microchip-wraps.png') });
+    await p.context().close();
+  });
+
   await check('sim-firmware: a firmware that cannot represent the motor says so at the plot (TI, Kp beyond IQ24)', async () => {
     // 500 kHz bandwidth: TI's Kp = 333 per unit does not fit IQ24's ±128; NXP, ST, Microchip run.
     const inp = { ...seed.input, current_loop: { bandwidth_hz: 500000 }, conventions: { ...(seed.input.conventions ?? {}), firmware: 'ti' }, sim: {} };
