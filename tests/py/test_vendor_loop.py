@@ -51,7 +51,8 @@ def _run(seed_input, name: str, step_a: float, speed_hz: float, delay: bool, axi
     z = zoh(m["rs_ohm"], m["ld_h"], m["lq_h"], r["pu"]["psi_r_wb"], 2 * math.pi * speed_hz, ts)
     n = 600
     ref = (0.0, step_a) if axis == "q" else (step_a, 0.0)
-    run = finish(vendor_loop.run_profile_steps(z, ctl, peak, *ref, z.bemf, n, delay))
+    run = finish(vendor_loop.run_profile_steps(z, ctl, peak, *ref, z.bemf, n, delay,
+                                               record=True))
     return r, ctl, z, run
 
 

@@ -170,7 +170,7 @@ def _memo_step(memo: dict, step, state: tuple, ref: int, fb: int, ev: dict) -> t
 
 
 def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bemf_v: float,
-                      n: int, delay: bool):
+                      n: int, delay: bool, record: bool = False):
     """One vendor's integer PI on the SI plant for n+1 samples.
 
     Parameters
@@ -181,12 +181,13 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
     ref_d, ref_q : float, A — references (dq scale)
     bemf_v : float, V — the q integral's start (dq scale)
     n : int ≥ 1 ; delay : bool — one-sample computation delay
+    record : bool — also return the integers ``fb_d, fb_q, out_d, out_q`` (for the oracle)
 
     Returns
     -------
     generator — yields None every SLICE_STEPS periods, returns a dict
-        ``id, iq, ud, uq`` (A, V in the dq scale), ``sat`` (0/1), the integers
-        ``fb_d, fb_q, out_d, out_q``, ``events`` (:data:`EVENT_NAMES` → count) and
+        ``id, iq, ud, uq`` (A, V in the dq scale), ``sat`` (0/1), with ``record`` the
+        integers ``fb_d, fb_q, out_d, out_q``, ``events`` (:data:`EVENT_NAMES` → count) and
         ``lsb_a`` (one feedback count in A, dq scale).
     """
     p0, p1, p2, p3 = z.phi
@@ -231,12 +232,21 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
         if fq > hi or fq < lo:
             ev["feedback_saturate"] += 1
             fq = hi if fq > hi else lo
-        st_d, od = _memo_step(memo_d, step_d, st_d, r_d, fd, ev)
-        st_q, oq = _memo_step(memo_q, step_q, st_q, r_q, fq, ev)
-        put_fd(fd)
-        put_fq(fq)
-        put_od(od)
-        put_oq(oq)
+        hit = memo_d.get((st_d, fd))
+        if hit is None or hit[2]:
+            st_d, od = _memo_step(memo_d, step_d, st_d, r_d, fd, ev)
+        else:
+            st_d, od = hit[0], hit[1]
+        hit = memo_q.get((st_q, fq))
+        if hit is None or hit[2]:
+            st_q, oq = _memo_step(memo_q, step_q, st_q, r_q, fq, ev)
+        else:
+            st_q, oq = hit[0], hit[1]
+        if record:
+            put_fd(fd)
+            put_fq(fq)
+            put_od(od)
+            put_oq(oq)
         sats.append(od >= lim or od <= -lim or oq >= lim or oq <= -lim)
         od_v, oq_v = od * to_volt, oq * to_volt
         if delay:
@@ -247,4 +257,5 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
         put_uq(aq)
         vq = aq - bemf
         xd, xq = p0 * xd + p1 * xq + g0 * ad + g1 * vq, p2 * xd + p3 * xq + g2 * ad + g3 * vq
-    return {**cols, "sat": sats, **ints, "events": ev, "lsb_a": ctl["i_lsb"] / peak}
+    return {**cols, "sat": sats, **(ints if record else {}), "events": ev,
+            "lsb_a": ctl["i_lsb"] / peak}
