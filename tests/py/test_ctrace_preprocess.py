@@ -14,7 +14,7 @@ import time
 
 import pytest
 
-from ctrace_compilers import require, run_cases
+from ctrace_compilers import Unit, require, run_cases, run_unit
 from ctrace_gen import Case, random_vector
 from pulab.ctrace import TraceError, compile_code, run_checked, trace
 from pulab.ctrace.lexer import tokenize
@@ -303,3 +303,21 @@ def test_iq_of_a_variable_or_float_suffix_expression_is_refused():
         with pytest.raises(TraceError) as e:
             trace(code, "c28x")
         assert "needs a floating constant" in str(e.value)
+
+
+IQ_CONSTANTS = ["240.0/360.0", "300.0/360.0", "0.57735026918963", "4.0/3.0", "1.0/3*2", "0.1",
+                "-(2.0/3.0)", "0.8660254038"]
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_iq_constants_fold_in_the_targets_double(target, capsys):
+    """avr-gcc's double is binary32, gcc -m32's binary64: _IQ(240.0/360.0) differs by one LSB
+    between them, and the tracer gives each compiler's value."""
+    require(target, capsys)
+    code = "".join(f"long k{i};\n" for i in range(len(IQ_CONSTANTS))) + "void f(void)\n{\n" + \
+        "".join(f"  k{i} = _IQ({c});\n" for i, c in enumerate(IQ_CONSTANTS)) + "}\n"
+    outs = [("int32_t", f"k{i}") for i in range(len(IQ_CONSTANTS))]
+    got = run_unit(Unit(code, "f", [], [], outs), [{}], target)[0]
+    r = trace(code, target, entry="f")
+    assert {n: r["vars"][n]["value"] for _, n in outs} == got
+    assert got["k0"] == (11184811 if target == "avr" else 11184810)

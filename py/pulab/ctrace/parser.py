@@ -1240,7 +1240,8 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
     if not isinstance(source, str):
         raise TraceError(1, 1, code="trace_code_text")
     pre = preprocess(tokenize(source), defines, global_q,
-                     target.limits() if target is not None else None)
+                     target.limits() if target is not None else None,
+                     target.double_bits if target is not None else 64)
     tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names

@@ -186,6 +186,7 @@ class _Pre:
         self.src = iter(tokens)
         self.headers = headers
         self.default_q = global_q
+        self.single = False  # the target's double is binary32 (set by preprocess)
         self.macros: dict = {}
         self.global_q = None
         self.unresolved: list = []
@@ -400,10 +401,10 @@ class _Pre:
         m = _FLOAT.match(core[0].text) if len(core) == 1 and core[0].kind == "number" else None
         if m is not None:
             value = float(m[1])
-            if m[2] in ("f", "F"):
-                value = struct.unpack("<f", struct.pack("<f", value))[0]
-        else:  # a constant expression such as 4.0/3.0, folded in binary64 as C does
-            value = _ConstFloat(arg[i:], use).value()
+            if m[2] in ("f", "F") or self.single:
+                value = _f32(value)
+        else:  # a constant expression such as 4.0/3.0, folded as C does in double
+            value = _ConstFloat(arg[i:], use, self.single).value()
         scaled = int(sign * value * 2.0 ** n)  # * 2**n is exact in binary floating point
         if not -(1 << 31) <= scaled < (1 << 31):
             raise _fail(use, "trace_iq_range", name=use.text, value=scaled)
@@ -493,13 +494,20 @@ class _Pre:
         return [t for t in out if t.kind != "placemarker"]
 
 
+def _f32(x: float) -> float:
+    """``x`` rounded to binary32 (a 32-bit ``double``, as avr-gcc's)."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
 class _ConstFloat:
     """``+ - * /`` and parentheses over number literals: an integer operation as C's
-    (division toward zero), one with a ``double`` operand in binary64; ``f`` literals refused
-    here (their arithmetic precision depends on FLT_EVAL_METHOD)."""
+    (division toward zero), one with a ``double`` operand in binary64 (binary32 when
+    ``single``: the target's double is 32 bits); ``f`` literals refused here (their
+    arithmetic precision depends on FLT_EVAL_METHOD)."""
 
-    def __init__(self, toks: list, use: Token) -> None:
+    def __init__(self, toks: list, use: Token, single: bool = False) -> None:
         self.toks, self.pos, self.use = toks, 0, use
+        self.round = _f32 if single else float
 
     def fail(self):
         raise _fail(self.use, "trace_iq_constant", name=self.use.text)
@@ -520,16 +528,24 @@ class _ConstFloat:
         while self.peek() in ("+", "-"):
             op = self.toks[self.pos].text
             self.pos += 1
-            w = self.product()
+            v, w = self.usual(v, self.product())
             v = v + w if op == "+" else v - w
+            v = v if isinstance(v, int) else self.round(v)
         return v
+
+    def usual(self, v, w):
+        """C's usual arithmetic conversions: an integer beside a double becomes a double
+        (rounded to the target's double)."""
+        if isinstance(v, int) != isinstance(w, int):
+            v, w = (self.round(float(x)) if isinstance(x, int) else x for x in (v, w))
+        return v, w
 
     def product(self):
         v = self.unary()
         while self.peek() in ("*", "/"):
             op = self.toks[self.pos].text
             self.pos += 1
-            w = self.unary()
+            v, w = self.usual(v, self.unary())
             if op == "*":
                 v = v * w
             elif w == 0:
@@ -537,7 +553,9 @@ class _ConstFloat:
             elif isinstance(v, int) and isinstance(w, int):
                 v = abs(v) // abs(w) * (1 if (v < 0) == (w < 0) else -1)
             else:
-                v = v / w
+                v = self.round(v / w)
+            if op == "*" and not isinstance(v, int):
+                v = self.round(v)
         return v
 
     def unary(self):
@@ -559,7 +577,7 @@ class _ConstFloat:
         self.pos += 1
         m = _FLOAT.match(tok.text)
         if m is not None and m[2] not in ("f", "F") and not re.fullmatch(r"\d+[uUlL]*", tok.text):
-            return float(m[1])
+            return self.round(float(m[1]))
         if re.fullmatch(r"\d+[uUlL]*", tok.text):
             return int(re.match(r"\d+", tok.text)[0])
         self.fail()
@@ -668,7 +686,7 @@ def _wrap(v: int) -> int:
 
 
 def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
-               limits: dict | None = None) -> Preprocessed:
+               limits: dict | None = None, double_bits: int = 64) -> Preprocessed:
     """Run the directives of ``tokens`` and expand macros.
 
     Parameters
@@ -682,6 +700,9 @@ def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
     limits : dict, optional
         What ``<limits.h>`` defines on the target (:meth:`pulab.ctrace.types.Target.limits`);
         without it the header defines nothing.
+    double_bits : {64, 32}, optional
+        The width of the target compiler's ``double`` (32 on avr-gcc): ``_IQ(…)`` folds its
+        constant in that precision, as the compiler does.
 
     Returns
     -------
@@ -691,6 +712,7 @@ def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
     """
     headers = dict(STANDARD_HEADERS, **({"limits.h": limits} if limits else {}))
     pre = _Pre(tokens, defines or {}, global_q, headers)
+    pre.single = double_bits == 32
     out = pre.run(deque(), pre.source_tokens())
     out.append(pre.end)
     return Preprocessed(out, pre.global_q, pre.unresolved, pre.macros)
