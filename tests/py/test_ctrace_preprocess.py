@@ -321,3 +321,14 @@ def test_iq_constants_fold_in_the_targets_double(target, capsys):
     r = trace(code, target, entry="f")
     assert {n: r["vars"][n]["value"] for _, n in outs} == got
     assert got["k0"] == (11184811 if target == "avr" else 11184810)
+
+
+def test_iqmathlib_include_defines_global_q_as_the_header_does():
+    code = '#include "IQmathLib.h"\nlong q = GLOBAL_Q;\nlong x = _IQ(0.5);'
+    r = trace(code, "c28x")
+    assert (r["vars"]["q"]["value"], r["vars"]["x"]["value"]) == (24, 1 << 23)
+    assert r["unresolved_includes"] == []
+    r = trace(code, "c28x", global_q=20)
+    assert (r["vars"]["q"]["value"], r["vars"]["x"]["value"]) == (20, 1 << 19)
+    r = trace("#define GLOBAL_Q 15\n" + code, "c28x")  # the code's own GLOBAL_Q wins
+    assert (r["vars"]["q"]["value"], r["vars"]["x"]["value"]) == (15, 1 << 14)

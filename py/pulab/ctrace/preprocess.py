@@ -253,6 +253,10 @@ class _Pre:
         if m is None:
             raise _fail(tok, "trace_include_syntax")
         header = (m[1] or m[2]).strip()
+        if header == "IQmathLib.h":  # its conversions are built in; it defines GLOBAL_Q
+            if "GLOBAL_Q" not in self.macros:
+                self.define(_define(f"GLOBAL_Q {self.default_q}", tok), tok)
+            return
         known = self.headers.get(header)
         if known is None:
             if header not in self.unresolved:
