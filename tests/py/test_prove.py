@@ -111,7 +111,7 @@ def test_division_by_zero_is_a_counterexample():
     ({"input": SEED, "ranges": {"motor.name": [1, 2]}}, "prove.ranges.motor.name"),
     ({"input": SEED, "ranges": {"raw.Current": [1.5, 2]}}, "prove.ranges.raw.Current"),
     ({"input": SEED, "ranges": {"motor.rs_ohm": [-1, 2]}}, "motor.rs_ohm"),
-    ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "profile": "nxp"}, "prove.profile"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "profile": "renesas"}, "prove.profile"),
     ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "budget": 0}, "prove.budget"),
     ({"ranges": {"motor.rs_ohm": [1, 2]}}, "input"),
     ([], "prove"),
@@ -143,8 +143,9 @@ def test_cli_exit_status_is_the_verdict(tmp_path):
     (("--range", "motor.rs_ohm=1"), "error: prove.ranges: expected PATH=LO:HI, got 'motor.rs_ohm=1'"),
     (("--range", "motor.rs_ohm=2:1"), "error: prove.ranges.motor.rs_ohm: lo must be ≤ hi, got 2 > 1"),
     ((), "error: prove.ranges: give at least one input range (PATH=LO:HI)"),
-    (("--range", "motor.rs_ohm=1:2", "--profile", "st"),
-     "error: prove.profile: a proof covers the profiles inovance, ti, got 'st'"),
+    (("--range", "motor.rs_ohm=1:2", "--profile", "renesas"),
+     "error: prove.profile: a proof covers the profiles inovance, ti, nxp, st, microchip, "
+     "got 'renesas'"),
 ])
 def test_cli_bad_request_is_one_line_and_exit_2(tmp_path, args, line):
     r = _cli(tmp_path, *args)
