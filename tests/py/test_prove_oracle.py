@@ -185,3 +185,64 @@ def test_proposed_global_q_is_the_finest_the_oracle_accepts():
     ti = profiles_oracle.profiles({**{k: v for k, v in ce.items() if k != "profiles"},
                                    "profiles": {"ti": {"global_q": q + 1}}})["ti"]
     assert any(fails(c) for c in ti.values())
+
+
+# NXP, ST and Microchip: the profiles oracle's constants, shifts, divisors and Qs (never imports
+# pulab) on a dense grid of each box, ends included, and seeded random points. Boxes where the
+# shift, divisor or Q changes inside the box, where each verdict occurs, and where both do.
+VENDOR_BOXES = [
+    ("nxp", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),          # proven
+    ("nxp", {"drive.ts_s": [1e-5, 2e-4], "drive.base_freq_hz": [50, 2000]}),          # shift −9…0
+    ("nxp", {"motor.ld_h": [1e-3, 1], "motor.rated_current_a": [5, 200],
+             "drive.udc_v": [12, 48]}),                                                # ACC32 saturates
+    ("st", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),           # TF_KPDIV 64…16384
+    ("st", {"motor.rated_current_a": [0.01, 2], "drive.udc_v": [12, 600]}),           # uint16 overflow
+    ("st", {"drive.ts_s": [2e-5, 2e-4], "motor.bemf_v": [1, 300],
+            "motor.lq_h": [1e-5, 1e-2]}),                                              # MAX_BEMF → 0
+    ("microchip", {"motor.rated_current_a": [1, 4], "motor.rs_ohm": [0.5, 2],
+                   "current_loop.bandwidth_hz": [100, 3000]}),                         # KIP_Q 12…15
+    ("microchip", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),    # Q15 > 1
+    ("microchip", {"motor.ld_h": [1e-5, 1e-3], "drive.ts_s": [5e-5, 2e-4]}),
+]
+
+
+def _points(ranges, n, count, seed):
+    yield from _grid(ranges, n)
+    rng = random.Random(seed)
+    for _ in range(count):  # log-uniform: the ranges span decades
+        yield {p: lo * (hi / lo) ** rng.random() if lo > 0 else lo + (hi - lo) * rng.random()
+               for p, (lo, hi) in ranges.items()}
+
+
+@pytest.mark.parametrize("profile, ranges", VENDOR_BOXES)
+def test_vendor_profiles_agree_with_the_profiles_oracle(profile, ranges):
+    import profiles_oracle as pr
+    r = prove({"input": SEED_INPUT, "ranges": ranges, "profile": profile})
+    truth = []
+    for pt in _points(ranges, 7 if len(ranges) < 3 else 5, 300, len(truth)):
+        chosen = {}
+        truth.append((pr.profiles({**_at(SEED_INPUT, pt), "profiles": {profile: {}}}, chosen)[profile],
+                      chosen[profile]))
+    assert r["integers"]
+    for name, e in r["integers"].items():
+        _, _, group, key = name.split(".")
+        assert e["verdict"] != "unknown", name
+        if group != "constants":  # a shift, divisor or Q: its range holds every choice
+            assert e["verdict"] == "proven", name
+            assert all(e["range"][0] <= c[key] <= e["range"][1] for _, c in truth), name
+            continue
+        if e["verdict"] == "proven":
+            for t, _ in truth:
+                assert not pr.fails(profile, key, t[key]), (name, t[key])
+                assert e["range"][0] <= t[key]["value"] <= e["range"][1], (name, t[key])
+                if e["error_bound"] and t[key]["ideal"] != 0:
+                    err = abs(100.0 * (t[key]["value"] - t[key]["ideal"]) / t[key]["ideal"])
+                    assert err <= e["worst_error_pct"] * (1 + 1e-9), (name, err)
+        else:
+            ce = e["counterexample"]
+            for path, (lo, hi) in ranges.items():
+                sec, k = path.split(".")
+                assert lo <= ce[sec][k] <= hi, name
+            assert pr.fails(profile, key, pr.profiles(ce)[profile][key]), name
+    verdicts = {e["verdict"] for e in r["integers"].values()}
+    assert verdicts <= {"proven", "violated"}

@@ -121,6 +121,8 @@ def mantissa_shift(k, site: str = "shift") -> tuple:
     """
     s, k = choose(site, k, _shift_of, lambda s: (2.0 ** (s - 1), 2.0 ** s if s >= 0
                                                   else math.nextafter(2.0 ** s, 0.0)))
+    if isinstance(k, RInterval):  # scaling by 2^-s is exact: no outward rounding
+        return RInterval(math.ldexp(k.lo, -s), math.ldexp(k.hi, -s)), s
     return k * 2.0 ** -s, s
 
 
