@@ -41,7 +41,7 @@ def nearest(x: float, q: int) -> int:
 
 def rec(value: int, ideal_real: float, q: int, scale: float) -> dict:
     ideal = float(ideal_real) * 2.0 ** q
-    return {"value": int(value), "ideal": ideal, "si": value / 2.0 ** q * scale}
+    return {"value": int(value), "ideal": ideal, "si": value / 2.0 ** q * scale, "q": q}
 
 
 def sat(v: int, lo: int, hi: int) -> int:
@@ -191,8 +191,12 @@ def profiles(inp: dict, choices: dict | None = None) -> dict:
     if choices is not None:
         choices.update(nxp={"M1_TO_THETA_SHIFT": sh}, st={"TF_KPDIV": kpdiv, "TF_KIDIV": kidiv},
                        microchip={"KIP_Q": gq(kp / z), "KII_Q": gq(ki * ts / z)})
+        # The real value each constant stores (before its own scaling by 2^q, after the shift).
+        choices["real"] = {name: {k: r_["ideal"] / 2.0 ** r_["q"] * 2.0 ** r_.get("shift", 0)
+                                  for k, r_ in p.items()} for name, p in out.items()
+                           if name != "inovance"}
     return {name: {k: {kk: float(vv) if kk != "value" and kk != "shift" else vv
-                       for kk, vv in r_.items()} for k, r_ in p.items()}
+                       for kk, vv in r_.items() if kk != "q"} for k, r_ in p.items()}
             for name, p in out.items()}
 
 

@@ -2,6 +2,7 @@
 pulab): no "proven" contradicted, every range encloses every value, every counterexample
 fails in the oracle too, and no small box is left unknown."""
 import itertools
+import math
 import random
 import sys
 
@@ -246,3 +247,50 @@ def test_vendor_profiles_agree_with_the_profiles_oracle(profile, ranges):
             assert pr.fails(profile, key, pr.profiles(ce)[profile][key]), name
     verdicts = {e["verdict"] for e in r["integers"].values()}
     assert verdicts <= {"proven", "violated"}
+
+
+# Proposals: at every oracle point of the box, the proposed format stores the oracle's real value
+# without overflow or 0, within the stated worst error; one bit finer fails at some point.
+PROPOSE_BOXES = [
+    ("nxp", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),
+    ("nxp", {"drive.ts_s": [1e-5, 2e-4], "drive.base_freq_hz": [50, 2000]}),
+    ("st", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),
+    ("microchip", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),
+    ("microchip", {"motor.rated_current_a": [1, 4], "motor.rs_ohm": [0.5, 2],
+                   "current_loop.bandwidth_hz": [100, 3000]}),
+]
+
+
+def _store(x, n, how):
+    y = x * 2.0 ** n
+    return math.trunc(y) if how == "trunc" else int(math.copysign(math.floor(abs(y) + 0.5), y))
+
+
+@pytest.mark.parametrize("profile, ranges", PROPOSE_BOXES)
+def test_proposals_hold_at_every_oracle_point(profile, ranges):
+    import profiles_oracle as pr
+    from pulab.analyses.propose import propose
+    p = propose({"input": SEED_INPUT, "ranges": ranges, "profile": profile})
+    how = "trunc" if profile == "nxp" else "nearest"
+    reals = []
+    for pt in _points(ranges, 7 if len(ranges) < 3 else 5, 300, 1):
+        chosen = {}
+        pr.profiles({**_at(SEED_INPUT, pt), "profiles": {profile: {}}}, chosen)
+        reals.append(chosen["real"][profile])
+    assert p["constants"]
+    finer_fails = 0
+    for key, e in p["constants"].items():
+        assert e is not None and e["holds"], key
+        n = e["frac_bits"]
+        stored = [(_store(x[key], n, how), x[key]) for x in reals]
+        for v, x in stored:
+            assert -32768 <= v <= 32767 and v != 0, (key, x)
+            assert e["range"][0] <= v <= e["range"][1], (key, v)
+            err = abs(100.0 * (v - x * 2.0 ** n) / (x * 2.0 ** n))
+            assert err <= e["worst_error_pct"] * (1 + 1e-9), (key, err)
+        # The finest: one more fractional bit overflows int16 somewhere in the box (or, for a
+        # bound that is not tight, the enclosure's end does — then the oracle grid may miss it).
+        finer_fails += any(not -32768 <= _store(x[key], n + 1, how) <= 32767 for x in reals)
+    assert finer_fails >= len(p["constants"]) // 2
+    if profile == "st":
+        assert set(p["confirmed"].values()) == {"proven"}

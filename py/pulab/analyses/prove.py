@@ -756,6 +756,8 @@ def _prove_float(problem: Problem, name: str):
             order += 1
     if not heap and proven_share >= 1.0 - 1e-9:
         entry = _entry("proven", rng_proven, spec.word, 1.0, worst, boxes=evaluated)
+        if ".constants." not in name and not name.startswith("current_pi."):
+            entry["headroom_bits"] = None  # a shift or divisor: no fractional bits to add
         if bounded and rng_proven is not None:
             entry["worst_error_pct"], entry["worst_error_raw"] = bound, None
             entry["error_bound"] = True

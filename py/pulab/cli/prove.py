@@ -30,10 +30,12 @@ def add_prove_parser(sub) -> None:
     p.add_argument("--range", dest="ranges", action="append", default=[],
                    metavar="PATH=LO:HI", help="an input's range (repeat for each input)")
     p.add_argument("--profile", default=None,
-                   help="inovance (the seed's code; the default) or ti (MotorWare's IQ constants)")
+                   help="inovance (the seed's code; the default), ti, nxp, st or microchip "
+                        "(that vendor's constants)")
     p.add_argument("--budget", type=int, default=None, help="boxes per integer (default 4000)")
     p.add_argument("--propose", action="store_true",
-                   help="with --profile ti: the finest GLOBAL_Q proven over the box")
+                   help="propose each constant's finest format in the vendor's own form "
+                        "(GLOBAL_Q, FRAC16 + shift, power-of-two divisor, Q) proven over the box")
     p.add_argument("--format", choices=("json", "text"), default="json")
     p.set_defaults(run=_run)
 
@@ -76,12 +78,35 @@ def format_prove_text(r: dict) -> str:
     if r["not_analysed"]:
         lines += ["", "Not analysed: " + ", ".join(r["not_analysed"])]
     if "proposal" in r:
-        lines += ["", f"Proposed GLOBAL_Q: {r['proposal']['global_q']} (the finest proven over "
-                      "the box)"]
+        lines += [""] + _proposal_lines(r["proposal"])
     if "counterexample" in r:
         lines += ["", f"Counterexample ({r['first_violated']}):",
                   json.dumps(r["counterexample"], ensure_ascii=False)]
     return "\n".join(lines) + "\n"
+
+
+def _proposal_lines(p: dict) -> list:
+    """The proposal in the vendor's form, one line per constant."""
+    if p["profile"] == "ti":
+        return [f"Proposed GLOBAL_Q: {p['global_q']} (the finest proven over the box)"]
+    if p["profile"] == "inovance":
+        return ["Fixed formats (the seed's code); headroom of each proven integer:"] + [
+            f"  {k:<22} +{e['headroom_bits']} bits" for k, e in p["integers"].items()]
+    lines = [f"Proposed formats ({p['form']}), finest that holds over the box:"]
+    for k, e in p["constants"].items():
+        if e is None:
+            lines.append(f"  {k:<28} not enclosed within the budget")
+        elif e["holds"]:
+            lines.append(f"  {k:<28} {e['format']:<16} integers [{e['range'][0]}, "
+                         f"{e['range'][1]}], worst error ≤ {e['worst_error_pct']:.3g} % "
+                         f"(now {e['current']})")
+        else:
+            lines.append(f"  {k:<28} no {p['form']} holds: real range "
+                         f"[{e['real_range'][0]:.4g}, {e['real_range'][1]:.4g}]")
+    if p.get("divisors"):
+        lines.append("  divisors: " + ", ".join(f"{k.upper()} = {v}"
+                                               for k, v in p["divisors"].items()))
+    return lines
 
 
 def _run(args) -> int:
@@ -97,10 +122,8 @@ def _run(args) -> int:
             req["budget"] = args.budget
         r = prove(req)
         if args.propose:
-            if r["profile"] != "ti":
-                raise InputError("prove.propose", code="prove_propose_ti")
-            from ..analyses.prove import propose_global_q
-            r["proposal"] = propose_global_q(req)
+            from ..analyses.propose import propose
+            r["proposal"] = propose(req, r)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
