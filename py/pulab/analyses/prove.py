@@ -603,8 +603,8 @@ def _profile_enclose(problem: Problem, name: str, box: dict, forced: dict = None
         return {"wrap" if e.code == "long_overflow" else "invalid"}, None, None
     v = read(c)
     lo, hi = v.value if isinstance(v, RInterval) else (v, v)
-    if key != name.split(".")[-1]:  # a choice: its failures are its constant's
-        return set(), (lo, hi), 0.0
+    if key != name.split(".")[-1]:  # a choice: its failures are its constant's; no rounding
+        return set(), (lo, hi), None
     kinds = {_PROFILE_FLAGS[f] for f in c["flags"] if f in _PROFILE_FLAGS}
     return kinds | ({"zero"} if lo <= 0 <= hi else set()), (lo, hi), _error_bound(c)
 
