@@ -1,5 +1,5 @@
-"""Benchmark of family proofs: 6-dimensional boxes over the seed's Inovance code, medians
-printed (numbers, not tests).
+"""Benchmark of family proofs: 6-dimensional boxes over the seed's Inovance code and over each
+vendor profile's constants (TI, NXP, ST, Microchip), medians printed (numbers, not tests).
 
     PYTHONPATH=py python3 tests/bench/prove_bench.py
 
@@ -38,14 +38,29 @@ BOXES = {
         "drive.base_freq_hz": [100, 348], "motor.rated_freq_hz": [100, 300],
         "motor.bemf_v": [5, 30], "drive.udc_v": [12, 60]}),
 }
+#: A drive-side box where each profile's shift, divisor or Q changes inside the box (the
+#: proof cuts it at each choice): T_s, f_b, L_d, L_q, I and the current-loop bandwidth.
+DRIVE_6D = {"drive.ts_s": [2e-5, 2e-4], "drive.base_freq_hz": [50, 1000],
+            "motor.ld_h": [1e-4, 1e-2], "motor.lq_h": [1e-4, 1e-2],
+            "motor.rated_current_a": [1, 40], "current_loop.bandwidth_hz": [200, 2000]}
+#: The 6-D servo range, the widened seed and the drive box through each vendor profile.
+PROFILE_BOXES = {
+    **{f"{profile} {name.split(' (')[0]}": (*BOXES[name], profile)
+       for profile in ("ti", "nxp", "st", "microchip")
+       for name in ("servo 6-D (V, I, f_n, R, L_d, E)", "seed 6-D (V, I, f_b, R, E, U_dc)")},
+    **{f"{profile} drive 6-D (T_s, f_b, L_d, L_q, I, bandwidth)": (SEED, DRIVE_6D, profile)
+       for profile in ("inovance", "ti", "nxp", "st", "microchip")},
+}
 
 
 def prove_timing(repeat: int = 7) -> dict:
-    """{name: (wall median s, CPU median s, verdict, decided, boxes)} for :data:`BOXES`."""
+    """{name: (wall median s, CPU median s, verdict, decided, boxes)} for :data:`BOXES` (the
+    seed's code) and :data:`PROFILE_BOXES`."""
     from pulab.analyses.prove import prove
     out = {}
-    for name, (inp, ranges) in BOXES.items():
-        req = {"input": inp, "ranges": ranges}
+    boxes = {**{k: (*v, "inovance") for k, v in BOXES.items()}, **PROFILE_BOXES}
+    for name, (inp, ranges, profile) in boxes.items():
+        req = {"input": inp, "ranges": ranges, "profile": profile}
         r = prove(req)  # warm-up (lazy imports)
         wall, cpu = [], []
         for _ in range(repeat):

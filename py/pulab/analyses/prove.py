@@ -56,7 +56,7 @@ import math
 from typing import NamedTuple
 
 from ..fixedpoint.cint import UINT16, CDivisionByZero
-from ..fixedpoint.interval import Branch, Empty, ICInt, RInterval, Undecided, forcing
+from ..fixedpoint.interval import ANY, Branch, Empty, ICInt, RInterval, Undecided, forcing
 from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR_READS,
                                       VENDOR_RESULTS, Block, raw_source, raw_value)
 from ..schema.errors import InputError
@@ -75,12 +75,21 @@ VERDICTS = ("proven", "violated", "unknown")
 #: The profiles a proof covers: the seed's Inovance code and the four vendor profiles' constants.
 PROFILES = ("inovance", "ti", "nxp", "st", "microchip")
 #: The choices a profile's code makes from the motor (a shift, a divisor, a Q), proven as
-#: integers of their own: name → (the constant whose record carries it, how to read it).
+#: integers of their own: name → (its sites in :func:`~pulab.fixedpoint.interval.choose`, the
+#: constants that use it — the first one's record carries it —, how to read it from that
+#: record).  A constant that uses no choice of a site is evaluated with that site at ``ANY``,
+#: so its box is not cut where the choice changes.
 CHOICES = {
-    "nxp": {"shifts.M1_TO_THETA_SHIFT": ("M1_TO_THETA_GAIN", lambda c: c["shift"])},
-    "st": {"divisors.TF_KPDIV": ("PID_TORQUE_KP_DEFAULT", lambda c: 1 << c["q"]),
-           "divisors.TF_KIDIV": ("PID_TORQUE_KI_DEFAULT", lambda c: 1 << c["q"])},
-    "microchip": {"q.KIP_Q": ("KIP", lambda c: c["q"]), "q.KII_Q": ("KII", lambda c: c["q"])},
+    "nxp": {"shifts.M1_TO_THETA_SHIFT": (("nxp.M1_TO_THETA_SHIFT",), ("M1_TO_THETA_GAIN",),
+                                         lambda c: c["shift"])},
+    "st": {"divisors.TF_KPDIV": (("st.TF_KPDIV.d", "st.TF_KPDIV.q"),
+                                 ("PID_TORQUE_KP_DEFAULT", "PID_FLUX_KP_DEFAULT"),
+                                 lambda c: 1 << c["q"]),
+           "divisors.TF_KIDIV": (("st.TF_KIDIV.d", "st.TF_KIDIV.q"),
+                                 ("PID_TORQUE_KI_DEFAULT", "PID_FLUX_KI_DEFAULT"),
+                                 lambda c: 1 << c["q"])},
+    "microchip": {"q.KIP_Q": (("microchip.KIP_Q",), ("KIP",), lambda c: c["q"]),
+                  "q.KII_Q": (("microchip.KII_Q",), ("KII",), lambda c: c["q"])},
 }
 #: What breaks an integer: wrapped mid-way (a PI gain: beyond long, which the report refuses),
 #: changed by its Uint16 store, divided by zero, zero (all resolution lost), a raw parameter
@@ -581,7 +590,14 @@ def _constant_of(problem: Problem, name: str) -> tuple:
     _, profile, group, key = name.split(".")
     if group == "constants":
         return key, lambda c: c["value"]
-    return CHOICES[profile][f"{group}.{key}"]
+    _, users, read = CHOICES[profile][f"{group}.{key}"]
+    return users[0], read
+
+
+def _unused_choices(problem: Problem, key: str) -> dict:
+    """The sites constant ``key`` does not use, forced to ``ANY``."""
+    return {site: ANY for sites, users, _ in CHOICES.get(problem.profile, {}).values()
+            if key not in users for site in sites}
 
 
 def _profile_enclose(problem: Problem, name: str, box: dict, forced: dict = None) -> tuple:
@@ -591,7 +607,7 @@ def _profile_enclose(problem: Problem, name: str, box: dict, forced: dict = None
     across the box, ``empty`` when no point of the box makes the forced choices."""
     key, read = _constant_of(problem, name)
     try:
-        with forcing(forced or {}):
+        with forcing({**_unused_choices(problem, key), **(forced or {})}):
             c = _profile_constants(_pi_input(problem, box), problem)[key]
     except Branch as b:
         return {"branch"}, None, b
@@ -703,6 +719,7 @@ def _prove_float(problem: Problem, name: str):
     order, evaluated, proven_share = 1, 0, 0.0
     rng = rng_proven = worst = None
     bound, bounded = 0.0, True  # the worst |error| over the proven pieces, all bounded?
+    corners_run = False
     statement = spec.statement
     while heap and evaluated < problem.budget:
         if evaluated and evaluated % _SLICE_BOXES == 0:
@@ -732,8 +749,9 @@ def _prove_float(problem: Problem, name: str):
         # Every corner of the whole box (a monotone design breaks at one); the centre of each
         # smaller box, where a break inside the box is closed in on.
         corners = [{}]
-        for p in dims if len(dims) <= 6 and evaluated == 1 else ():
+        for p in dims if len(dims) <= 6 and not corners_run and box_share == 1.0 else ():
             corners = [{**c, p: e} for c in corners for e in box[p]]
+        corners_run = corners_run or box_share == 1.0
         centre = {p: (lo + hi) / 2 for p, (lo, hi) in box.items()}
         for pt in [{**{p: lo for p, (lo, _) in box.items()}, **c} for c in corners] + [centre]:
             kind, value, err, inp = spec.point(problem, name, pt)
@@ -744,7 +762,8 @@ def _prove_float(problem: Problem, name: str):
             worst = _worse(worst, (kind, value, err), pt)
         if box_share < _MIN_SHARE or not dims:
             continue
-        p = max(dims, key=lambda q: _log_width(box[q]) / _log_width(full[q]))
+        p = _split_dim(spec, problem, name, box, forced, dims, full,
+                       round(-math.log2(box_share)))
         lo, hi = box[p]
         # Ratios of inputs (I_max/I_FS …) narrow by the ratio hi/lo: split at the geometric
         # mean while it is large.
@@ -763,6 +782,26 @@ def _prove_float(problem: Problem, name: str):
             entry["error_bound"] = True
         return entry
     return _entry("unknown", rng, spec.word, min(proven_share, 1.0), worst, boxes=evaluated)
+
+
+def _split_dim(spec: _Float, problem: Problem, name: str, box: dict, forced: dict, dims,
+               full: dict, depth: int) -> str:
+    """The input to split a box along, alternating by depth: the relatively widest, and the
+    one whose fixing (at its midpoint) narrows the enclosure most — so that an input that
+    cancels out of a formula (I in I·R_shunt(I), a dependency interval arithmetic does not
+    see) is split too, while the widest-first order still closes in on a curved boundary."""
+    widest = max(dims, key=lambda q: _log_width(box[q]) / _log_width(full[q]))
+    live = [q for q in dims if box[q][0] < box[q][1]]
+    if depth % 2 == 0 or len(live) < 2:
+        return widest
+
+    def width(q):
+        mid = (box[q][0] + box[q][1]) / 2
+        kinds, e, _ = spec.enclose(problem, name, {**box, q: (mid, mid)}, forced)
+        bad = e is None or kinds & {"branch", "undecided", "empty"}
+        return math.inf if bad else e[1] - e[0]
+
+    return min(live, key=width)
 
 
 def integer_names() -> tuple:

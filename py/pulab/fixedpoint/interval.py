@@ -35,7 +35,7 @@ import math
 from .cint import CDivisionByZero, CInt, CType, _common, trunc_div, wrap_to
 
 __all__ = ["ICInt", "lift", "DIV0", "RInterval", "Undecided", "Branch", "Empty", "choose",
-           "forcing", "maximum"]
+           "forcing", "maximum", "ANY"]
 
 _NO_FLAGS = frozenset()
 _WRAP = frozenset({"wrap"})
@@ -341,6 +341,10 @@ class Empty(ArithmeticError):
     """No point of a box makes the forced choice: that piece of the box is empty."""
 
 
+#: A forced choice that takes any one choice and keeps the whole interval: for evaluating what
+#: does not depend on that choice, without cutting the box at it.
+ANY = "any"
+
 #: The choices forced for the evaluation under way (see :func:`forcing`).
 _FORCED: dict = {}
 
@@ -367,7 +371,8 @@ class forcing:
 def choose(site: str, x, pick, region):
     """A choice made from a quantity: ``(pick(x), x)`` for a number; over an interval, the
     choice every point makes and the interval, or (under :class:`forcing`) the forced choice
-    and the part of ``x`` inside ``region(choice)``.
+    and the part of ``x`` inside ``region(choice)`` (the whole of ``x`` and its low end's
+    choice when forced to :data:`ANY`).
 
     Parameters
     ----------
@@ -391,6 +396,8 @@ def choose(site: str, x, pick, region):
         return pick(x), x
     if site in _FORCED:
         c = _FORCED[site]
+        if c is ANY:
+            return pick(x.lo), x
         return c, x.clip(*region(c))
     a, b = pick(x.lo), pick(x.hi)
     if a == b:

@@ -150,12 +150,19 @@ def pow2_exponent(k, limit: int = 32767, largest: int = 14, site: str = "divisor
         return lo, math.inf if n == 0 else math.nextafter(edge / 2.0 ** n, 0.0)
 
     n, a = choose(site, abs(k), pick, region)
-    return n, within(k, a)
+    return n, within(k, a, exact=True)
 
 
-def within(k, bound):
-    """k where |k| ≤ bound (an interval's part that a choice on |k| keeps)."""
-    return k.clip(-bound.hi, bound.hi) if isinstance(k, RInterval) else k
+def within(k, bound, exact: bool = False):
+    """k where |k| ≤ bound (an interval's part that a choice on |k| keeps); ``exact``: where
+    |k| lies in bound (when bound is |k| itself, not a larger quantity)."""
+    if not isinstance(k, RInterval):
+        return k
+    if exact and k.lo >= 0:
+        return k.clip(bound.lo, bound.hi)
+    if exact and k.hi <= 0:
+        return k.clip(-bound.hi, -bound.lo)
+    return k.clip(-bound.hi, bound.hi)
 
 
 def pow2_divisor(k, limit: int = 32767, largest: int = 16384, site: str = "divisor") -> int:

@@ -33,8 +33,7 @@ from __future__ import annotations
 import math
 
 from ..fixedpoint.cint import trunc_div
-from ..fixedpoint.interval import maximum
-from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent, within
+from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent
 from .headers import define, define_float, guard
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "max_current",
@@ -109,33 +108,34 @@ def divisors(ctx: dict, opt: dict) -> tuple[int, int]:
 
 
 def _divisors(ctx: dict, opt: dict) -> tuple:
-    """TF_KPDIV, TF_KIDIV and the bounds on |Kp|, |Ki| per unit the choice rests on (None
-    when given); intervals in a family proof, each divisor then a choice (``st.TF_KPDIV``,
-    ``st.TF_KIDIV``) and its bound the part of the largest gain that makes it."""
-    r = _v_over_i(ctx, opt)
-    out = []
-    for key, site, of in (("tf_kpdiv", "st.TF_KPDIV", lambda g: g[0]),
-                          ("tf_kidiv", "st.TF_KIDIV", lambda g: g[1] * ctx["ts"])):
+    """TF_KPDIV, TF_KIDIV and each axis's Kp, Ki per unit ({axis: (kp, ki)}).
+
+    The divisor suits the larger gain of the two axes: the largest D whose gain fits is
+    monotone in |gain|, so D for max(|g_d|, |g_q|) is the smaller of the two axes' own D.
+    Over intervals (a family proof) each axis's exponent is a choice (``st.TF_KPDIV.d`` …)
+    and its gain keeps only the part of its interval that makes it."""
+    r, t = _v_over_i(ctx, opt), ctx["ts"]
+    per_axis = {a: [ctx["gains"][a][0] / r, ctx["gains"][a][1] * t / r] for a in ("d", "q")}
+    divs = []
+    for i, (key, site) in enumerate((("tf_kpdiv", "st.TF_KPDIV"), ("tf_kidiv", "st.TF_KIDIV"))):
         if opt[key]:
-            out.append((opt[key], None))
+            divs.append(opt[key])
             continue
-        k = maximum(*(abs(of(ctx["gains"][a])) for a in ("d", "q"))) / r
-        n, k = pow2_exponent(k, 32767, 14, site)
-        out.append((1 << n, k))
-    return out[0][0], out[1][0], out[0][1], out[1][1]
+        ns = []
+        for a in ("d", "q"):
+            n, per_axis[a][i] = pow2_exponent(per_axis[a][i], 32767, 14, f"{site}.{a}")
+            ns.append(n)
+        divs.append(1 << min(ns))
+    return divs[0], divs[1], per_axis
 
 
-def gains_to_ints(kp, ki, ctx: dict, opt: dict, axis: str, bounds: tuple = (None, None)) -> dict:
-    """int16 Kp, Ki over TF_KPDIV, TF_KIDIV for SI gains kp [V/A], ki [V/(A·s)]; ``bounds``
-    (from :func:`_divisors`) keep |Kp|, |Ki| per unit where the chosen divisor holds."""
+def gains_to_ints(kp, ki, ctx: dict, opt: dict, axis: str, per_unit: tuple = None) -> dict:
+    """int16 Kp, Ki over TF_KPDIV, TF_KIDIV for SI gains kp [V/A], ki [V/(A·s)];
+    ``per_unit`` (from :func:`_divisors`): Kp, Ki per unit already computed."""
     r, t = _v_over_i(ctx, opt), ctx["ts"]
     kpdiv = opt["tf_kpdiv"] or pow2_divisor(kp / r)
     kidiv = opt["tf_kidiv"] or pow2_divisor(ki * t / r)
-    x_kp, x_ki = kp / r, ki * t / r
-    if bounds[0] is not None:
-        x_kp = within(x_kp, bounds[0])
-    if bounds[1] is not None:
-        x_ki = within(x_ki, bounds[1])
+    x_kp, x_ki = per_unit or (kp / r, ki * t / r)
     kp_name, ki_name = gain_fields(axis)
     src = derived("kp·MAX_CURRENT/(U_dc/√3), the Workbench rule is not public; the PI form "
                   "(int16 gain >> log2 divisor) is MCSDK pid_regulator.c")
@@ -201,11 +201,11 @@ def _ke(ctx: dict):
 
 def constants(ctx: dict, opt: dict) -> dict:
     """The integers of :func:`profile` (the inputs may be intervals: a family proof)."""
-    kpdiv, kidiv, kp_bound, ki_bound = _divisors(ctx, opt)
+    kpdiv, kidiv, per_axis = _divisors(ctx, opt)
     o = {**opt, "tf_kpdiv": kpdiv, "tf_kidiv": kidiv}
     out = {}
     for axis in ("d", "q"):
-        out.update(gains_to_ints(*ctx["gains"][axis], ctx, o, axis, (kp_bound, ki_bound)))
+        out.update(gains_to_ints(*ctx["gains"][axis], ctx, o, axis, tuple(per_axis[axis])))
     vref, rsh, g = o["adc_reference_v"], o["rshunt_ohm"], o["amplification_gain"]
     imax = max_current(o)
     f_reg = round(1.0 / ctx["ts"])  # PWM_FREQUENCY / REGULATION_EXECUTION_RATE (= 1)
