@@ -737,6 +737,11 @@ def _prove_float(problem: Problem, name: str):
                 order += 1
             continue
         rng = _hull(rng, enc)
+        if enc is not None and box_share == 1.0 and len(dims) > 1:
+            # Split only inputs the integer depends on: fixing one it does not leaves the whole
+            # box's enclosure as it is.
+            moving = [q for q in dims if _fixed(spec, problem, name, box, forced, q) != enc]
+            dims = moving or dims
         if not kinds:
             rng_proven = _hull(rng_proven, enc)
             proven_share += -neg_share
@@ -784,6 +789,13 @@ def _prove_float(problem: Problem, name: str):
     return _entry("unknown", rng, spec.word, min(proven_share, 1.0), worst, boxes=evaluated)
 
 
+def _fixed(spec: _Float, problem: Problem, name: str, box: dict, forced: dict, q: str):
+    """The enclosure with input ``q`` fixed at its midpoint (None when it does not evaluate)."""
+    mid = (box[q][0] + box[q][1]) / 2
+    kinds, e, _ = spec.enclose(problem, name, {**box, q: (mid, mid)}, forced)
+    return None if kinds & {"branch", "undecided", "empty"} else e
+
+
 def _split_dim(spec: _Float, problem: Problem, name: str, box: dict, forced: dict, dims,
                full: dict, depth: int) -> str:
     """The input to split a box along, alternating by depth: the relatively widest, and the
@@ -796,10 +808,8 @@ def _split_dim(spec: _Float, problem: Problem, name: str, box: dict, forced: dic
         return widest
 
     def width(q):
-        mid = (box[q][0] + box[q][1]) / 2
-        kinds, e, _ = spec.enclose(problem, name, {**box, q: (mid, mid)}, forced)
-        bad = e is None or kinds & {"branch", "undecided", "empty"}
-        return math.inf if bad else e[1] - e[0]
+        e = _fixed(spec, problem, name, box, forced, q)
+        return math.inf if e is None else e[1] - e[0]
 
     return min(live, key=width)
 
