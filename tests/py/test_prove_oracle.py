@@ -294,3 +294,39 @@ def test_proposals_hold_at_every_oracle_point(profile, ranges):
     assert finer_fails >= len(p["constants"]) // 2
     if profile == "st":
         assert set(p["confirmed"].values()) == {"proven"}
+
+
+# The product family of chapter 04 ("Proving a whole family"): three 400 V servo datasheets in a
+# 9-D box. Every vendor profile's verdicts against the profiles oracle at the box's 512 corners and
+# 300 random points, and the chapter's table.
+FAMILY_RANGES = {"motor.rated_voltage_v": [150, 430], "motor.rated_current_a": [1, 7],
+                 "motor.rated_freq_hz": [150, 300], "motor.rs_ohm": [0.5, 4],
+                 "motor.ld_h": [4e-3, 7.5e-3], "motor.lq_h": [4e-3, 7.5e-3],
+                 "motor.bemf_v": [150, 350], "drive.ts_s": [6.25e-5, 1.25e-4],
+                 "drive.udc_v": [540, 600]}
+
+
+@pytest.mark.parametrize("profile, verdict", [("ti", "proven"), ("nxp", "proven"),
+                                              ("st", "proven"), ("microchip", "violated")])
+def test_servo_family_of_the_chapter(profile, verdict):
+    import json
+    import profiles_oracle as pr
+    from pulab.analyses.prove import _explicit
+    base = _explicit(json.loads((ROOT / "tests/golden/datasheets/siemens_1ft7044_ak7.json")
+                                .read_text())["input"])
+    r = prove({"input": base, "ranges": FAMILY_RANGES, "profile": profile})
+    assert r["verdict"] == verdict
+    truth = [pr.profiles({**_at(base, pt), "profiles": {profile: {}}})[profile]
+             for pt in _points(FAMILY_RANGES, 2, 300, 7)]
+    for name, e in r["integers"].items():
+        _, _, group, key = name.split(".")
+        if group != "constants":
+            continue
+        if e["verdict"] == "proven":
+            assert not any(pr.fails(profile, key, t[key]) for t in truth), name
+        else:
+            assert pr.fails(profile, key, pr.profiles(e["counterexample"])[profile][key]), name
+    if profile == "microchip":
+        assert sorted(k.split(".")[-1] for k, e in r["integers"].items()
+                      if e["verdict"] == "violated") == [
+            "MCAF_MOTOR_LD_BASE_DT", "MCAF_MOTOR_LQ_BASE_DT", "MCAF_MOTOR_PSI_BASE_DT"]
