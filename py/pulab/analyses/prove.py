@@ -30,9 +30,14 @@ The current-PI integers ``pm_kp``/``pm_ki`` (seed 2.2-9) are designed in floatin
 point: the report's design code runs over intervals of the ranged inputs themselves
 (:class:`~pulab.fixedpoint.interval.RInterval`, rounded outward so that it encloses the
 double the code computes), a branch or comparison that differs inside a box splits it,
-and the rounding to the integer is monotone.  TI MotorWare's IQ constants (``profile``
-``ti``) run the same way through that profile's own code (:func:`pulab.profiles.ti.constants`):
-encoding into IQ is monotone, so the ends of an interval bound its integers.
+and the rounding to the integer is monotone.  The vendor profiles' constants (``profile``
+``ti``, ``nxp``, ``st``, ``microchip``) run the same way through each profile's own code (its
+``constants``, what the report runs): encoding is monotone, so the ends of an interval bound its
+integers.  A shift, divisor or Q the code chooses from the motor is a monotone step function of
+one quantity (:func:`pulab.fixedpoint.interval.choose`); where it differs across a box the box is
+cut into one piece per choice, evaluated with that choice forced and the quantity clipped to the
+values that make it, so each choice is treated exactly.  A proven constant's worst quantization
+error is then bounded over the box: its rounding's LSB over the smallest ideal of each piece.
 
 Examples
 --------
@@ -907,10 +912,11 @@ def prove(req) -> dict:
         ``verdict`` (proven | violated | unknown: the worst over the integers),
         ``integers`` {name: {verdict, range [lo, hi] (a sound enclosure of every value over
         the box where the code completes), type and word [min, max] of its C type,
-        proven_fraction, worst_error_pct (raw parameters: a bound; vendor results: the
-        worst at the points run, error_bound false), and when violated: kind (wrap, store,
-        div0, zero, outside), statement, raw (the raw point) and counterexample (an input
-        JSON inside the box)}}, ``counterexample`` (the first violated integer's),
+        proven_fraction, worst_error_pct and error_bound (raw parameters and proven profile
+        constants: a bound over the box; else the worst at the points run, error_bound
+        false), and when violated: kind (wrap, store, div0, zero, outside, saturate,
+        invalid), statement, raw (the raw point) and counterexample (an input JSON inside
+        the box)}}, ``counterexample`` (the first violated integer's),
         ``raw_box`` and ``not_analysed``.
     """
     return finish(prove_steps(req))

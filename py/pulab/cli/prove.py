@@ -3,10 +3,12 @@
 ::
 
     pulab prove INPUT.json --range motor.rated_current_a=1:60 --range drive.base_freq_hz=100:400
-                [--profile inovance|ti] [--budget N] [--format json|text]
+                [--profile inovance|ti|nxp|st|microchip] [--budget N] [--propose]
+                [--format json|text]
 
 INPUT.json is the base motor; each ``--range PATH=LO:HI`` makes that input range over
-``[LO, HI]`` (:mod:`pulab.analyses.prove`).  Exit status: 0 when every integer is proven,
+``[LO, HI]`` (:mod:`pulab.analyses.prove`); ``--propose`` adds each constant's finest format
+in its vendor's form (:mod:`pulab.analyses.propose`).  Exit status: 0 when every integer is proven,
 1 when one is violated (its counterexample is in the JSON) or unknown, 2 with one line
 ``error: FIELD: MESSAGE`` on stderr when the request is unusable.
 """
