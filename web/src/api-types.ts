@@ -76,7 +76,9 @@ export interface ProposalEntry {
   range: [number, number] | null;
   worst_error_pct: number | null;
   real_range: [number, number];
+  witnessed: [number, number] | null;
   holds: boolean;
+  impossible?: boolean;
   current: string;
   shift?: number;
   q?: number;

@@ -66,47 +66,145 @@ def _real(c: dict):
     return lo * k, hi * k
 
 
-def real_ranges(problem) -> dict:
-    """{constant: (lo, hi) or None} — every real value each constant of the profile takes over
-    the box; None when the work budget ran out before the whole box was enclosed.
-
-    The box is cut into one piece per choice where a shift or divisor differs (as the proof
-    does) and split where the design code's comparison differs."""
-    full = {p: r for p, r in problem.ranges.items() if not p.startswith("raw.") and r[0] != r[1]}
-    heap = [(-1.0, 0, dict(full), {})]
-    order, evaluated, hull = 1, 0, {}
-    while heap:
-        if evaluated >= problem.budget:
-            return {k: None for k in problem.constants}
-        neg, _, box, forced = heapq.heappop(heap)
-        evaluated += 1
+def _evaluate(problem, box: dict, forced: dict):
+    """The constants over a box under forced choices: {name: (lo, hi)}; None when no point of
+    the box makes the choices or the report refuses the whole box; raises Branch, Undecided.
+    Kept per problem: the constants' refinements share their first boxes and probes."""
+    memo = problem.__dict__.setdefault("_real_memo", {})
+    key = (tuple(sorted(box.items())), tuple(sorted(forced.items())))
+    if key not in memo:
         try:
             with forcing(forced):
                 cs = _profile_constants(_pi_input(problem, box), problem)
+            memo[key] = {k: _real(c) for k, c in cs.items()}
+        except (Empty, InputError):  # InputError: every point of the box is refused alike
+            memo[key] = None
+        except Undecided as e:
+            memo[key] = e
+    if isinstance(memo[key], Undecided):
+        raise memo[key]
+    return memo[key]
+
+
+def _halves(box: dict, full: dict, p: str | None = None) -> list:
+    """The box split in two along ``p`` (default: the relatively widest input)."""
+    p = p or max(full, key=lambda q: _log_ratio(box[q]) / _log_ratio(full[q]))
+    lo, hi = box[p]
+    mid = math.sqrt(lo * hi) if lo > 0 and hi > 4 * lo else lo + (hi - lo) / 2
+    return [{**box, p: (lo, mid)}, {**box, p: (mid, hi)}]
+
+
+def _log_ratio(r: tuple) -> float:
+    return math.log(r[1] / r[0]) if r[0] > 0 else r[1] - r[0]
+
+
+def _leaves(problem, full: dict):
+    """A partition of the box into pieces that evaluate: [(box, forced, {name: (lo, hi)})];
+    None when the budget ran out first."""
+    heap = [(-1.0, 0, dict(full), {})]
+    order, evaluated, leaves = 1, 0, []
+    while heap:
+        if evaluated >= problem.budget:
+            return None
+        neg, _, box, forced = heapq.heappop(heap)
+        evaluated += 1
+        try:
+            cs = _evaluate(problem, box, forced)
         except Branch as b:
             for c in b.choices:
                 heapq.heappush(heap, (neg / len(b.choices), order, box, {**forced, b.site: c}))
                 order += 1
             continue
-        except Empty:
-            continue
-        except (Undecided, InputError):
-            # A design comparison differs (split), or the report refuses part of the box
-            # (its points have no constants; the rest are still enclosed).
+        except Undecided:  # a design comparison differs inside the box: split it
             if not full or -neg < 1e-12:
-                continue
-            p = max(full, key=lambda q: (box[q][1] - box[q][0]) / (full[q][1] - full[q][0]))
-            lo, hi = box[p]
-            mid = math.sqrt(lo * hi) if lo > 0 and hi > 4 * lo else lo + (hi - lo) / 2
-            for half in ((lo, mid), (mid, hi)):
-                heapq.heappush(heap, (neg / 2, order, {**box, p: half}, forced))
+                return None
+            for half in _halves(box, full):
+                heapq.heappush(heap, (neg / 2, order, half, forced))
                 order += 1
             continue
-        for k, c in cs.items():
-            lo, hi = _real(c)
-            h = hull.get(k)
-            hull[k] = (lo, hi) if h is None else (min(h[0], lo), max(h[1], hi))
-    return {k: hull.get(k) for k in problem.constants}
+        if cs is not None:
+            leaves.append((box, forced, cs))
+    return leaves
+
+
+#: Boxes evaluated per constant and end while closing an enclosure's end in on its values.
+_REFINE = 12
+
+
+def _refine(problem, key: str, leaves: list, full: dict, end: int) -> tuple:
+    """(bound, witness) of one end of a constant's values (end 1: the largest): a sound
+    bound, refined by splitting the boxes that hold it, and the most extreme value seen at a
+    box's centre (a real motor of the box)."""
+    sign = 1 if end else -1
+    heap = [(-sign * cs[key][end], i, box, forced, cs[key]) for i, (box, forced, cs) in
+            enumerate(leaves)]
+    heapq.heapify(heap)
+    order, witness = len(heap), None
+    for _ in range(_REFINE):
+        neg, _, box, forced, enc = heap[0]
+        if witness is not None and abs(-sign * neg - witness) <= 1e-4 * abs(witness):
+            break
+        heapq.heappop(heap)
+        centre = {p: ((lo + hi) / 2,) * 2 for p, (lo, hi) in box.items()}
+        try:
+            pt = _evaluate(problem, centre, forced)
+        except Undecided:
+            pt = None
+        if pt is not None and (witness is None or sign * pt[key][end] > sign * witness):
+            witness = pt[key][end]
+        for half in _halves(box, full, _narrowing(problem, key, box, forced, full, end))\
+                if full else []:
+            try:
+                cs = _evaluate(problem, half, forced)
+            except Undecided:  # the half's values lie in its parent's enclosure
+                cs = {key: enc}
+            if cs is not None:
+                heapq.heappush(heap, (-sign * cs[key][end], order, half, forced, cs[key]))
+                order += 1
+        if not full:
+            heapq.heappush(heap, (neg, order, box, forced, enc))
+            break
+    return -sign * heap[0][0], witness
+
+
+def _narrowing(problem, key: str, box: dict, forced: dict, full: dict, end: int):
+    """The input whose fixing (at its midpoint) moves this end of the enclosure in most: the
+    one a dependency (L_d twice in L_d/(L_d + T_s·R_s)) over-estimates it by."""
+    sign = 1 if end else -1
+    best, best_end = None, math.inf
+    for q in full:
+        if box[q][0] == box[q][1]:
+            continue
+        mid = (box[q][0] + box[q][1]) / 2
+        try:
+            cs = _evaluate(problem, {**box, q: (mid, mid)}, forced)
+        except Undecided:
+            continue
+        if cs is not None and sign * cs[key][end] < best_end:
+            best, best_end = q, sign * cs[key][end]
+    return best
+
+
+def real_ranges(problem) -> dict:
+    """{constant: {"range": (lo, hi), "witnessed": (lo, hi) or None} or None} — every real
+    value each constant of the profile takes over the box lies in ``range`` (None when the work
+    budget ran out before the whole box was enclosed); ``witnessed`` are values real motors of
+    the box take.
+
+    The box is cut into one piece per choice where a shift or divisor differs (as the proof
+    does) and split where the design code's comparison differs; each end of each constant's
+    enclosure is then closed in on by splitting the boxes that hold it (interval arithmetic
+    over-estimates a quantity that appears twice, such as L_d in L_d/(L_d + T_s·R_s))."""
+    full = {p: r for p, r in problem.ranges.items() if not p.startswith("raw.") and r[0] != r[1]}
+    leaves = _leaves(problem, full)
+    if not leaves:
+        return {k: None for k in problem.constants}
+    out = {}
+    for k in problem.constants:
+        (lo, w_lo), (hi, w_hi) = (_refine(problem, k, leaves, full, end) for end in (0, 1))
+        out[k] = {"range": (lo, hi),
+                  "witnessed": (w_lo, w_hi) if w_lo is not None and w_hi is not None else None}
+    return out
 
 
 def _magnitudes(rng) -> tuple:
@@ -116,43 +214,59 @@ def _magnitudes(rng) -> tuple:
     return (0.0 if lo <= 0 <= hi else min(abs(lo), abs(hi))), big
 
 
-def _entry(rng, frac_bits: int, lsb: float, word_max: int, **form) -> dict:
-    """A proposal for one constant: its integers' range and worst error, or why none holds."""
+def _fits(rng, frac_bits: int, lsb: float, word_max: int) -> bool:
+    """Whether every x of the range stores in the word at these bits, and none as 0."""
     small, big = _magnitudes(rng)
     scale = 2.0 ** frac_bits
-    # Beyond the word even at the coarsest form, or so small that it may store 0.
-    if big * scale >= word_max + 1 - (0.5 if lsb == 0.5 else 0) or small * scale < lsb:
+    return big * scale < word_max + 1 - (0.5 if lsb == 0.5 else 0) and small * scale >= lsb
+
+
+def _entry(found: dict, bits_of, lsb: float, word_max: int, **form) -> dict:
+    """A proposal for one constant: its integers' range and worst error, or why none holds —
+    ``impossible`` true when values real motors of the box take already span more than the
+    word can hold (no format of this form exists), false when only the enclosure does."""
+    rng = found["range"]
+    small, big = _magnitudes(rng)
+    frac_bits = bits_of(big)
+    scale = 2.0 ** frac_bits
+    if not _fits(rng, frac_bits, lsb, word_max):
+        w = found["witnessed"]
+        # The finest format the witnesses' largest value allows fails for them: so does every
+        # other (a finer one overflows on that value, a coarser one loses the smallest).
+        impossible = w is not None and not _fits(w, bits_of(_magnitudes(w)[1]), lsb, word_max)
         return {**form, "frac_bits": frac_bits, "range": None, "worst_error_pct": None,
-                "real_range": list(rng), "holds": False}
+                "real_range": list(rng), "witnessed": list(w) if w else None, "holds": False,
+                "impossible": impossible}
     ends = [math.floor(abs(x) * scale + 0.5) if lsb == 0.5 else math.trunc(abs(x) * scale)
             for x in rng]
     lo_i, hi_i = (-ends[0], -ends[1]) if rng[1] < 0 else (ends[0], ends[1])
     return {**form, "frac_bits": frac_bits, "range": [min(lo_i, hi_i), max(lo_i, hi_i)],
             "worst_error_pct": math.nextafter(100.0 * lsb / (small * scale), math.inf),
-            "real_range": list(rng), "holds": True}
+            "real_range": list(rng), "witnessed": list(found["witnessed"] or []) or None,
+            "holds": True}
 
 
 def _nxp(problem, ranges: dict) -> dict:
     out = {}
-    for k, rng in ranges.items():
-        c = problem.constants[k]
-        if rng is None:
+    for k, found in ranges.items():
+        if found is None:
             out[k] = None
             continue
-        s = math.frexp(_magnitudes(rng)[1])[1]  # the smallest s with max|x| < 2^s
-        out[k] = _entry(rng, 15 - s, 1.0, _INT16_MAX, shift=s, format=f"FRAC16 · 2^{s}",
-                        current=c["format"])
+        s = math.frexp(_magnitudes(found["range"])[1])[1]  # the smallest s with max|x| < 2^s
+        out[k] = _entry(found, lambda big: 15 - math.frexp(big)[1], 1.0, _INT16_MAX, shift=s,
+                        format=f"FRAC16 · 2^{s}", current=problem.constants[k]["format"])
     return {"constants": out}
 
 
 def _pow2(problem, ranges: dict, largest: int) -> dict:
     out = {}
-    for k, rng in ranges.items():
+    for k, found in ranges.items():
         c = problem.constants[k]
-        if rng is None or c["word_bits"] != 16 or not c["format"].startswith(("Q", "int16 /")):
+        if found is None or c["word_bits"] != 16 or not c["format"].startswith(("Q", "int16 /")):
             continue  # ST's conversion constants are C casts of fixed formulas: nothing to choose
-        n = pow2_exponent(_magnitudes(rng)[1], _INT16_MAX, largest)[0]
-        out[k] = _entry(rng, n, 0.5, _INT16_MAX, q=n, current_q=c["q"],
+        n = pow2_exponent(_magnitudes(found["range"])[1], _INT16_MAX, largest)[0]
+        out[k] = _entry(found, lambda big: pow2_exponent(big, _INT16_MAX, largest)[0], 0.5,
+                        _INT16_MAX, q=n, current_q=c["q"],
                         format=f"Q{n}" if problem.profile == "microchip" else f"int16 / {1 << n}",
                         current=c["format"])
     return {"constants": out}
@@ -197,7 +311,9 @@ def propose(req, proof: dict | None = None) -> dict:
     dict
         ``profile``, ``form`` (:data:`FORMS`) and per profile:
         ``constants`` {name: {format, frac_bits, range [lo, hi] of the integers (None when no
-        format holds), worst_error_pct (a bound over the box), real_range, holds, current}}
+        format holds), worst_error_pct (a bound over the box), real_range, witnessed, holds,
+        impossible (when not holds: the witnessed values alone need more than the word),
+        current}}
         (``shift`` for NXP, ``q``/``current_q`` for ST and Microchip); ST adds ``divisors``
         ({tf_kpdiv, tf_kidiv}) and ``confirmed`` (the gains' verdicts re-proven with them);
         TI ``global_q``, ``tried`` and ``worst_error_pct`` {name: bound at that Q};

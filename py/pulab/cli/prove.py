@@ -102,9 +102,12 @@ def _proposal_lines(p: dict) -> list:
             lines.append(f"  {k:<28} {e['format']:<16} integers [{e['range'][0]}, "
                          f"{e['range'][1]}], worst error ≤ {e['worst_error_pct']:.3g} % "
                          f"(now {e['current']})")
+        elif e["impossible"]:
+            lines.append(f"  {k:<28} no {p['form']} holds: motors of the box take "
+                         f"[{e['witnessed'][0]:.4g}, {e['witnessed'][1]:.4g}]")
         else:
-            lines.append(f"  {k:<28} no {p['form']} holds: real range "
-                         f"[{e['real_range'][0]:.4g}, {e['real_range'][1]:.4g}]")
+            lines.append(f"  {k:<28} none found: the enclosure [{e['real_range'][0]:.4g}, "
+                         f"{e['real_range'][1]:.4g}] is too wide (one may exist)")
     if p.get("divisors"):
         lines.append("  divisors: " + ", ".join(f"{k.upper()} = {v}"
                                                for k, v in p["divisors"].items()))

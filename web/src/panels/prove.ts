@@ -123,7 +123,9 @@ function proposalView(p: Proposal): HTMLElement {
     if (!e) return h('tr', { class: 'bad' }, h('td', {}, h('code', {}, n)), h('td', { colspan: 4 }, '—'));
     if (!e.holds || !e.range) {
       return h('tr', { class: 'bad' }, h('td', {}, h('code', {}, n)),
-        h('td', { colspan: 3 }, t('prpNone', { lo: e.real_range[0].toPrecision(4), hi: e.real_range[1].toPrecision(4) })),
+        h('td', { colspan: 3 }, e.impossible && e.witnessed
+          ? t('prpNone', { lo: e.witnessed[0].toPrecision(4), hi: e.witnessed[1].toPrecision(4) })
+          : t('prpNotFound', { lo: e.real_range[0].toPrecision(4), hi: e.real_range[1].toPrecision(4) })),
         h('td', {}, e.current));
     }
     return h('tr', {}, h('td', {}, h('code', {}, n)),
