@@ -101,7 +101,7 @@ const pct = (key: string, v: number | null) => (v === null ? '—' : h('span', {
 /** The proposal in the vendor's own form: a table per constant, or TI's one GLOBAL_Q. */
 function proposalView(p: Proposal): HTMLElement {
   const key = 'prove.proposal';
-  const head = h('h4', {}, t('prpTitle', { form: p.form }));
+  const head = h('h4', {}, t('prpTitle', { form: t(`pform_${p.profile}` as Key) }));
   if (p.integers) {
     return h('div', { class: 'pr-proposal' }, head, h('p', { class: 'hint' }, t('prpHeadroom')),
       h('div', { class: 'scroll' }, table([t('prInteger'), t('prpBits'), t('prWorst')],
