@@ -120,6 +120,16 @@ export default async function prove(ctx) {
     await page.selectOption('select[name="prove.profile"]', 'inovance');
     await setRows(rows);
     await runProof();
+    // Inovance's fixed formats: the proposal is each proven integer's headroom, as CPython's.
+    await page.click('button.run-propose');
+    await page.waitForSelector('.prove-proposal', { timeout: 60_000 });
+    const ino = JSON.parse(py(['prove', '-', '--propose', ...rows.flatMap(([p, a, b]) => ['--range', `${p}=${a}:${b}`])], JSON.stringify(seed.input))).proposal;
+    const inoNames = Object.keys(ino.integers);
+    assert(inoNames.length > 3, `headroom rows: ${inoNames}`);
+    for (const [name, e] of Object.entries(ino.integers)) {
+      const bits = await page.$eval(`[data-key="prove.proposal.integers.${name}.headroom_bits"]`, (el) => JSON.parse(el.dataset.value));
+      assert(bits === e.headroom_bits, `${name}: page +${bits} bits, CPython +${e.headroom_bits}`);
+    }
   });
 
   await check('prove: a counterexample opens as the page input, where LD breaks', async () => {
