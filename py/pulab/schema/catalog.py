@@ -291,6 +291,20 @@ MESSAGES = {
     "finding.pll_steady": ("{key}.steady_angle_error_deg = {value:.3g}°: angle error after lock; change "
                            "{label}", "{key}.steady_angle_error_deg = {value:.3g}°：锁定后的角度误差；"
                            "请修改{label}"),
+    "finding.pi_wrap": ("{key}.wrap = {count}: the {profile} firmware's integer current PI "
+                        "overflowed and wrapped {count} times in the simulated step, so it would "
+                        "output a wrong voltage; lower {label}, or give that firmware's current "
+                        "and voltage full scales more headroom (Firmware view)",
+                        "{key}.wrap = {count}：{profile} 固件的整数电流 PI 在仿真阶跃中溢出回绕 "
+                        "{count} 次，会输出错误的电压；请降低{label}，或为该固件的电流、电压满量程"
+                        "留出更多余量（“固件”视图）"),
+    "finding.pi_saturate": ("{key}.saturate = {count}: the {profile} firmware's integer current "
+                            "PI clipped an intermediate value {count} times in the simulated step "
+                            "(saturating arithmetic, not its output limit); lower {label}, or give "
+                            "that firmware's full scales more headroom (Firmware view)",
+                            "{key}.saturate = {count}：{profile} 固件的整数电流 PI 在仿真阶跃中 "
+                            "{count} 次截断中间值（饱和运算，而非输出限幅）；请降低{label}，或为该"
+                            "固件的满量程留出更多余量（“固件”视图）"),
     "finding.unit_uH": ("LD/LQ taken in µH: the vendor code was written for 0.01 mH, so "
                         "gMotorExtPer.LD/LQ are 10× the Q13 per-unit inductance (source eq. 1.4-6, the "
                         "'×10' puzzle)", "原始 LD/LQ 按 µH 输入：汇川代码按 0.01 mH 编写，因此 "
