@@ -41,7 +41,7 @@ TWO_PI = 2.0 * math.pi
 def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: float,
           unit: str, expression: str, source: str, *, rounding: str = "nearest",
           clamps: bool = False, fmt: str | None = None, signed: bool = True,
-          shift: int = 0, value: int | None = None) -> dict:
+          shift: int = 0, value: int | None = None, error_lsb=None) -> dict:
     """One stored integer: the real ``ideal`` quantized into a ``word_bits`` word.
 
     Parameters
@@ -63,6 +63,9 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
     value : int, optional
         The stored integer when the firmware computes it from other rounded integers
         (ST's C5 uses the truncated MAX_VOLTAGE); ``ideal`` stays the exact value.
+    error_lsb : float, optional
+        With ``value`` over a box (a family proof): a bound on |value − ideal·2^n| in LSB
+        over the box, when the caller can give one (else the constant has no error bound).
     """
     q = QFormat(word_bits, frac_bits, signed)
     if isinstance(ideal, RInterval):
@@ -89,7 +92,7 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
             "si": si, "si_ideal": ideal * 2.0 ** shift * si_per_unit, "unit": unit,
             "scale": 2.0 ** shift * si_per_unit,
             "expression": expression, "source": source, "flags": flags,
-            **({"error_lsb": _ERROR_LSB[rounding] if value is None else None}
+            **({"error_lsb": _ERROR_LSB[rounding] if value is None else error_lsb}
                if isinstance(ideal, RInterval) else {})}
 
 

@@ -33,6 +33,7 @@ from __future__ import annotations
 import math
 
 from ..fixedpoint.cint import trunc_div
+from ..fixedpoint.interval import RInterval
 from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent
 from .headers import define, define_float, guard
 
@@ -173,6 +174,15 @@ def _c_trunc(x: float) -> int:
     return math.trunc(x)
 
 
+def _carried(per_unit, ideal):
+    """|C − ideal| in LSB for C = trunc(F1·N/den) of a truncated integer N (N ≤ x < N + 1):
+    below 1 (the cast) + F1/den (the input's truncation, carried) + a few roundings of the
+    doubles; over a box (intervals) its largest value, else None (a point needs none)."""
+    if not isinstance(per_unit, RInterval):
+        return None
+    return 1.0 + per_unit.hi * (1 + 1e-12) + 1e-15 * max(abs(ideal.lo), abs(ideal.hi))
+
+
 def profile(ctx: dict, opt: dict) -> dict:
     """ST constants: PID defaults, current conversion, observer C1, C3, C5."""
     kpdiv, kidiv = divisors(ctx, opt)
@@ -234,10 +244,12 @@ def constants(ctx: dict, opt: dict) -> dict:
     den = ls * imax * f_reg
     out["C3"] = fixed("C3", f1 * bemf_exact / den, 32, 0, den / f1, "V",
                       "F1·MAX_BEMF_VOLTAGE/(LS·MAX_CURRENT·f_reg)", conv, rounding="zero",
-                      fmt="int32_t", value=_c_trunc(f1 * bemf["value"] / den))
+                      fmt="int32_t", value=_c_trunc(f1 * bemf["value"] / den),
+                      error_lsb=_carried(f1 / den, f1 * bemf_exact / den))
     out["C5"] = fixed("C5", f1 * mv_exact / den, 32, 0, den / f1, "V",
                       "F1·MAX_VOLTAGE/(LS·MAX_CURRENT·f_reg)", conv, rounding="zero",
-                      fmt="int32_t", value=_c_trunc(f1 * out["MAX_VOLTAGE"]["value"] / den))
+                      fmt="int32_t", value=_c_trunc(f1 * out["MAX_VOLTAGE"]["value"] / den),
+                      error_lsb=_carried(f1 / den, f1 * mv_exact / den))
     return out
 
 
