@@ -151,7 +151,7 @@ def make_problem(req) -> Problem:
     req : dict
         ``input`` (a report input), ``ranges`` ({path: [lo, hi]}, numeric input paths,
         lo ≤ hi; a raw path takes integers), optional ``profile`` (``inovance``, the
-        default, or its alias ``vendor``; or ``ti``) and ``budget`` (boxes per integer,
+        default, or its alias ``vendor``; ``ti``, ``nxp``, ``st``, ``microchip``) and ``budget`` (boxes per integer,
         1..1000000, default 4000).
 
     Raises
