@@ -151,8 +151,8 @@ def make_problem(req) -> Problem:
     req : dict
         ``input`` (a report input), ``ranges`` ({path: [lo, hi]}, numeric input paths,
         lo ≤ hi; a raw path takes integers), optional ``profile`` (``inovance``, the
-        default, or its alias ``vendor``; ``ti``, ``nxp``, ``st``, ``microchip``) and ``budget`` (boxes per integer,
-        1..1000000, default 4000).
+        default, or its alias ``vendor``; ``ti``, ``nxp``, ``st``, ``microchip``) and
+        ``budget`` (boxes per integer, 1..1000000, default 4000).
 
     Raises
     ------
