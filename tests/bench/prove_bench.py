@@ -74,6 +74,42 @@ def prove_timing(repeat: int = 7) -> dict:
     return out
 
 
+#: Chapter 04's product family: three 400 V servo datasheets in a 9-D box, the Siemens
+#: 1FT7044-AK7 as the base (its datasheet's motor and drive values).
+FAMILY_BASE = {"motor": {"rated_voltage_v": 424.26406871192853, "rated_current_a": 2.5,
+                         "rated_freq_hz": 300.0, "rs_ohm": 0.61, "ld_h": 0.0042, "lq_h": 0.0042,
+                         "bemf_v": 342.0, "pole_pairs": 3},
+               "drive": {"udc_v": 600.0, "ts_s": 0.000125}}
+FAMILY_RANGES = {"motor.rated_voltage_v": [150, 430], "motor.rated_current_a": [1, 7],
+                 "motor.rated_freq_hz": [150, 300], "motor.rs_ohm": [0.5, 4],
+                 "motor.ld_h": [4e-3, 7.5e-3], "motor.lq_h": [4e-3, 7.5e-3],
+                 "motor.bemf_v": [150, 350], "drive.ts_s": [6.25e-5, 1.25e-4],
+                 "drive.udc_v": [540, 600]}
+
+
+def propose_timing(repeat: int = 3) -> dict:
+    """{profile: (wall median s, CPU median s, formats holding / constants)}: ``--propose`` on
+    the chapter's 9-D family (no target; the page runs it on demand)."""
+    from pulab.analyses.propose import propose
+    out = {}
+    for profile in ("nxp", "st", "microchip"):
+        req = {"input": FAMILY_BASE, "ranges": FAMILY_RANGES, "profile": profile}
+        wall, cpu = [], []
+        for _ in range(repeat):
+            t0, c0 = time.perf_counter(), time.process_time()
+            p = propose(req)
+            wall.append(time.perf_counter() - t0)
+            cpu.append(time.process_time() - c0)
+        held = sum(bool(e and e["holds"]) for e in p["constants"].values())
+        out[profile] = (statistics.median(wall), statistics.median(cpu), held, len(p["constants"]))
+    return out
+
+
+def format_proposals(t: dict) -> str:
+    return "\n".join(f"  propose, 9-D servo family, {name}: median {w:.3f} s wall, {c:.3f} s CPU; "
+                     f"{h}/{n} formats hold" for name, (w, c, h, n) in t.items())
+
+
 def format_proofs(t: dict, runtime: str, target: str) -> str:
     # Pyodide's os.getloadavg answers a constant: the machine's load is the CPython run's line.
     load = os.getloadavg() if hasattr(os, "getloadavg") and sys.platform != "emscripten" else None
@@ -91,3 +127,4 @@ if __name__ == "__main__":
     runtime = f"CPython {platform.python_version()}"
     print(f"family proof benchmark ({runtime}):")
     print(format_proofs(prove_timing(), runtime, "≤ 2 s"))
+    print(format_proposals(propose_timing()))

@@ -48,7 +48,9 @@ import math
 from ..fixedpoint.interval import Branch, Empty, RInterval, Undecided, forcing
 from ..profiles.common import pow2_exponent
 from ..schema.errors import InputError
-from .prove import _pi_input, _profile_constants, make_problem, prove, propose_global_q
+from .prove import (_pi_input, _profile_constants, integer_steps, make_problem, prove,
+                    propose_global_q)
+from .slices import finish
 
 __all__ = ["propose", "FORMS"]
 
@@ -286,13 +288,13 @@ def _st(problem, ranges: dict, req: dict) -> dict:
         inp = req["input"]
         profiles = {**(inp.get("profiles") or {})}
         profiles["st"] = {**(profiles.get("st") or {}), **divisors}
-        r = prove({**req, "profile": "st", "input": {**inp, "profiles": profiles}})
-        out["confirmed"] = {k: e["verdict"] for k, e in r["integers"].items()
-                            if "_KP_" in k or "_KI_" in k}
-        for k, e in r["integers"].items():
-            key = k.split(".")[-1]
-            if key in cs and e["verdict"] == "proven":
-                cs[key]["shared_worst_error_pct"] = e["worst_error_pct"]
+        # Only the gains: the other constants do not depend on the divisors.
+        again = make_problem({**req, "profile": "st", "input": {**inp, "profiles": profiles}})
+        gains = {k: finish(integer_steps(again, f"profiles.st.constants.{k}")) for k in cs}
+        out["confirmed"] = {f"profiles.st.constants.{k}": e["verdict"] for k, e in gains.items()}
+        for k, e in gains.items():
+            if e["verdict"] == "proven":
+                cs[k]["shared_worst_error_pct"] = e["worst_error_pct"]
     return out
 
 
