@@ -207,8 +207,9 @@ def _prove(op: str):
     """The family proof's kinds (:mod:`pulab.analyses.prove`): ``prove`` (every integer, in
     slices), ``prove.plan`` (the integer names and the raw box), ``prove.integer`` with
     ``name`` (one entry, in slices: a page proves integer by integer to show progress),
-    ``prove.summary`` with ``integers`` (the entries → the whole result) and, for profile
-    ``ti``, ``prove.propose`` (the finest GLOBAL_Q proven over the box)."""
+    ``prove.summary`` with ``integers`` (the entries → the whole result) and
+    ``prove.propose`` (each constant's finest format in its vendor's form,
+    :mod:`pulab.analyses.propose`)."""
     def handler(req):
         from .analyses import prove as pv  # imported on first use: report-only pages stay lean
         body = {k: v for k, v in req.items() if k not in ("op", "name", "integers")} \
@@ -230,9 +231,8 @@ def _prove(op: str):
                     isinstance(e, dict) and "verdict" in e for e in entries.values()):
                 raise InputError("prove.integers", code="not_object", got=shown(entries))
             return {"proof": pv.summary(problem, entries)}
-        if problem.profile != "ti":
-            raise InputError("prove.propose", code="prove_propose_ti")
-        return {"proposal": pv.propose_global_q(body)}
+        from .analyses.propose import propose
+        return {"proposal": propose(body)}
     return handler
 
 

@@ -71,3 +71,29 @@ export interface ProveEntry {
   counterexample?: Input;
 }
 export interface Proof { verdict: ProveVerdict; profile: string; integers: Record<string, ProveEntry>; not_analysed: string[]; counterexample?: Input; first_violated?: string }
+/** `prove.propose`: each constant's finest format in its vendor's form (pulab.analyses.propose). */
+export interface ProposalEntry {
+  format: string;
+  frac_bits: number;
+  range: [number, number] | null;
+  worst_error_pct: number | null;
+  real_range: [number, number];
+  witnessed: [number, number] | null;
+  holds: boolean;
+  impossible?: boolean;
+  current: string;
+  shift?: number;
+  q?: number;
+  current_q?: number;
+}
+export interface Proposal {
+  profile: string;
+  form: string;
+  constants?: Record<string, ProposalEntry | null>;
+  divisors?: Record<string, number>;
+  confirmed?: Record<string, ProveVerdict>;
+  global_q?: number | null;
+  tried?: Record<string, string>;
+  worst_error_pct?: Record<string, number | null>;
+  integers?: Record<string, { headroom_bits: number | null; worst_error_pct: number | null; error_bound: boolean }>;
+}

@@ -384,8 +384,6 @@ MESSAGES = {
                         "至少给出一个输入范围（PATH=LO:HI）"),
     "prove_pair": ("must be [lo, hi] (integers for a raw or integer input), got {got}",
                    "必须是 [lo, hi]（raw 或整数输入须为整数），当前为 {got}"),
-    "prove_propose_ti": ("a Q proposal is made for --profile ti (its GLOBAL_Q)",
-                         "Q 格式建议只用于 --profile ti（其 GLOBAL_Q）"),
     "prove_range_syntax": ("expected PATH=LO:HI, got {got}", "格式应为 PATH=LO:HI，当前为 {got}"),
     "prove_order": ("lo must be ≤ hi, got {lo:g} > {hi:g}", "lo 必须 ≤ hi，当前 {lo:g} > {hi:g}"),
     "unknown_exercise": ("unknown exercise {got}", "未知的练习：{got}"),
