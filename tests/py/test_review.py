@@ -223,3 +223,24 @@ def test_the_firmware_shipped_grades_the_others_limits_as_notes():
     assert x[0]["severity"] == "note" and x[0]["field"] == "conventions.firmware"
     assert x[0]["label"] == "Firmware you ship" and x[0]["label_zh"] == "所用固件"
     assert r["review"]["headroom"]["limit_v"] == 24 / math.sqrt(2)
+
+
+def test_the_shipped_firmwares_integer_pi_wraps_are_an_error():
+    # 20 kHz bandwidth: Microchip's KIP needs Q11 (gain > 1), the DKNP shift then overflows
+    # int32 in the step (the C oracle counts the same wraps, test_vendor_loop).  Shipping
+    # Microchip: an error naming the count and the bandwidth; shipping Inovance: no such finding.
+    inp = _seed()
+    inp["current_loop"] = {"bandwidth_hz": 20000}
+    inp["sim"] = {"current": {}}
+    inp["conventions"] = {"firmware": "microchip"}
+    r = report(inp)
+    wraps = r["sim"]["current"]["by_profile"]["microchip"]["events"]["wrap"]
+    assert wraps > 0
+    hit = [x for x in r["review"]["findings"] if x["code"] == "pi_wrap"]
+    assert len(hit) == 1 and hit[0]["severity"] == "error"
+    assert hit[0]["key"] == "sim.current.by_profile.microchip.events.wrap"
+    assert hit[0]["value"] == wraps and hit[0]["field"] == "current_loop.bandwidth_hz"
+    assert f"wrapped {wraps} times" in hit[0]["message"] and "Microchip" in hit[0]["message"]
+    assert chinese(hit[0]["message_zh"])
+    inp["conventions"] = {"firmware": "inovance"}
+    assert not [x for x in report(inp)["review"]["findings"] if x["code"].startswith("pi_")]
