@@ -418,7 +418,10 @@ class BoxEvaluator(Evaluator):
         if not outs:
             raise _Stop()
         self.mem = _join([m for _, m in outs])
-        return None if f.ret is VOID else _hull([v for v, _ in outs])
+        value = None if f.ret is VOID else _hull([v for v, _ in outs])
+        if value is _MAYBE:  # paths that return different objects (a handle getter)
+            raise Split(self.reads)
+        return value
 
     def call_user(self, e):
         outer = self.cur  # the arguments' conversions belong to the calling statement
