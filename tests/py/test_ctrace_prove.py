@@ -287,6 +287,15 @@ def test_random_snippets_agree_with_the_concrete_tracer_at_every_point():
             proofs += 1
             proven = {(s["line"], s["column"]): s for s in r["statements"]
                       if s["verdict"] == "proven"}
+            for s in r["statements"]:  # every counterexample shows its failure when traced
+                if s["verdict"] == "violated":
+                    try:
+                        ev = run_checked(checked, s["counterexample"], 24, zero_unset=True)
+                    except InputError as e:  # a run-time error, on that statement's line
+                        assert e.line == s["line"], (target, code, s)
+                        continue
+                    assert any((t["line"], t["column"]) == (s["line"], s["column"]) and
+                               fails & set(t["flags"]) for t in ev.steps), (target, code, s)
             for values in itertools.product(*(range(lo, hi + 1) for lo, hi in box.values())):
                 try:
                     ev = run_checked(checked, dict(zip(box, values)), 24, zero_unset=True)
