@@ -317,3 +317,10 @@ def test_not_of_a_long_constant_on_a_16_bit_int_target():
     # 65536 is a long on c28x; !65536 is 0 (C99 6.5.3.3p5: the operand compared with 0 as it is)
     r = prove_code("uint16_t a; uint16_t b = a + !(65536);", "c28x", None, {"a": [100, 200]})
     assert r["statements"][0]["range"] == [100, 200] and r["verdict"] == "proven"
+
+
+def test_the_trace_marks_q_auto_inputs():
+    r = trace(GAIN, "arm", {"x": 1, "k": 2}, entry="gain")
+    assert r["vars"]["k"].get("q_auto") is True and "q_auto" not in r["vars"]["x"]
+    r = trace("int16_t k; // @q k Q12\nint16_t y = k;", "arm", {"k": 4096})
+    assert "q_auto" not in r["vars"]["k"] and r["vars"]["k"]["real"] == 1.0

@@ -222,6 +222,9 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
              "input": name in given}
         if name in notes and v is not None:
             d.update(_meaning(notes[name], v))
+        elif name in checked.program.notes and checked.program.notes[name].q is None:
+            # "// @q NAME auto": the code proof proposes its Q
+            d["q_auto"] = True
         out_vars[name] = d
     if entry is not None and isinstance(entry.ret, CType):
         v = values.get("return")

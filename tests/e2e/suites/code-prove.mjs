@@ -93,6 +93,7 @@ export default async function codeProve(ctx) {
     await page.goto(url(GAIN, 'gain'));
     await ready(page);
     await open();
+    await page.waitForFunction(() => document.querySelector('input[name="range.k.0"]')?.value === '-1');
     await fill({ x: [-32768, 32767], k: ['-1.5', '2.0'] });
     await prove();
     const want = JSON.parse(cli(['--target', 'arm', '--entry', 'gain', '--prove', '--budget', '300',

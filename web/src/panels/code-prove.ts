@@ -16,6 +16,8 @@ import { bar } from './prove';
 export interface ProveHost {
   state(): CodeState;
   inputs(): string[];
+  /** The inputs annotated `// @q NAME auto` (their ranges are in real units). */
+  auto(): string[];
   /** Put these input values into the trace's fields and trace them. */
   load(values: Record<string, number>): void;
 }
@@ -36,8 +38,10 @@ const ps = {
   note: null as null | { key: Key; vars: Record<string, string | number> },
 };
 
-/** A range around the input's current value (typed, or prefilled from the report). */
+/** A range around the input's current value (typed, or prefilled from the report); for an
+ * `@q auto` input, real units: ±1. */
 function defaultRange(host: ProveHost, report: unknown, name: string): { lo: string; hi: string } {
+  if (host.auto().includes(name)) return { lo: '-1', hi: '1' };
   const typed = host.state().set[name];
   const fromReport = prefill(host.inputs(), report)[name]?.value;
   const v = Number(typed !== undefined && typed.trim() !== '' ? typed.trim() : fromReport ?? 0);
@@ -150,7 +154,7 @@ export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost
     const r = ps.ranges[name];
     const set = (k: 'lo' | 'hi') => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; };
     return h('div', { class: 'code-prove-range' },
-      h('code', {}, name),
+      h('code', {}, name), host.auto().includes(name) ? h('span', { class: 'hint' }, t('cpReal')) : null,
       h('label', {}, t('cpLo'), ' ', h('input', { name: `range.${name}.0`, value: r.lo, inputmode: 'numeric', spellcheck: 'false', oninput: set('lo') })),
       h('label', {}, t('cpHi'), ' ', h('input', { name: `range.${name}.1`, value: r.hi, inputmode: 'numeric', spellcheck: 'false', oninput: set('hi') })),
       h('span', { class: 'err', 'data-err-for': `range.${name}` }, err(name)));

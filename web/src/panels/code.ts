@@ -207,6 +207,7 @@ function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
 const proveHost: ProveHost = {
   state: st,
   inputs: () => inputs,
+  auto: () => (main?.ok ? Object.keys(main.vars).filter((n) => main?.ok && main.vars[n].q_auto) : []),
   load(values) {
     const s = st();
     for (const [name, v] of Object.entries(values)) s.set[name] = String(v);
