@@ -576,3 +576,165 @@ def test_a_float_field_is_refused_only_where_it_is_used():
     assert "5:42: field conv of struct Pow: float_t is a floating-point type (typedef at 2:15)" \
         in str(e.value)
     assert chinese(e.value.message_zh)
+
+
+TRIM = r"""
+#include <stdint.h>
+typedef struct _AVG_ { int32_t k; int32_t y1; } AVG_Obj;
+typedef struct _AVG_Obj_ *AVG_Handle;   /* never defined: an opaque handle */
+typedef struct _TRIM_
+{
+  int32_t level;
+  int32_t bias;
+  AVG_Obj avg;
+  AVG_Handle avgHandle;      /* an init function would point it at avg */
+  const int32_t *pLimit;     /* at one element of a table */
+} TRIM_Obj;
+typedef struct _TRIM_Obj_ *TRIM_Handle;
+int32_t limits[3];
+
+static inline int32_t AVG_step(AVG_Handle h, const int32_t x)
+{
+  AVG_Obj *a = (AVG_Obj *)h;
+  a->y1 += _IQmpy(a->k, x - a->y1);
+  return a->y1;
+}
+
+static inline void TRIM_run(TRIM_Handle handle, const int32_t x)
+{
+  TRIM_Obj *obj = (TRIM_Obj *)handle;
+  obj->level = AVG_step(obj->avgHandle, x + obj->bias);
+  if (obj->level > *obj->pLimit)
+    obj->level = *obj->pLimit;
+}
+
+const int32_t *TRIM_pick(TRIM_Handle handle, const int32_t x)
+{
+  TRIM_Obj *obj = (TRIM_Obj *)handle;
+  if (x > obj->level)
+    return obj->pLimit;
+  if (x < 0)
+    return &obj->bias;
+  return &obj->avg.y1;
+}
+"""
+#: what the tests' caller does before the call, as an init function would
+TRIM_CALLER = r"""
+TRIM_Obj t;
+int16_t pick_id;
+void run_trim(int32_t x)
+{
+  t.avgHandle = (AVG_Handle)&t.avg;
+  t.pLimit = &limits[1];
+  TRIM_run((TRIM_Handle)&t, x);
+}
+void run_pick(int32_t x)
+{
+  const int32_t *r;
+  t.pLimit = &limits[1];
+  r = TRIM_pick((TRIM_Handle)&t, x);
+  pick_id = r == &limits[1] ? 1 : r == &t.bias ? 2 : r == &t.avg.y1 ? 3 : 0;
+}
+"""
+TRIM_POINTERS = {"handle.avgHandle": "&handle.avg", "handle->pLimit": "&limits[1]"}
+
+
+def _trim_c_name(name: str) -> str:
+    return "t" + name[6:] if name.startswith("handle.") else name
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_a_pointer_input_points_at_an_object_of_the_code(target, capsys):
+    """A handle field an init function sets (`obj->avgHandle = &obj->avg`) is given as
+    `--set handle.avgHandle=&handle.avg`; the objects read through it become inputs; the
+    compilers get the same pointers from a caller this test writes."""
+    require(target, capsys)
+    checked = compile_code(TRIM, target, entry="TRIM_run")
+    # pLimit has an object of its own unless given; avgHandle, opaque, has none
+    assert checked.inputs == ["x", "handle.avgHandle", "handle.bias", "*handle.pLimit"]
+    r = trace(TRIM, target, {"x": 1, **TRIM_POINTERS}, entry="TRIM_run", zero_unset=True)
+    assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "handle.avg.y1",
+                           "handle.avg.k", "limits[1]"]
+    assert r["vars"]["handle.avgHandle"] == {
+        "type": "AVG_Handle", "c_type": "pointer", "bits": None, "signed": False,
+        "value": None, "hex": None, "input": True, "points_to": "handle.avg"}
+    names = [n for n in r["inputs"] if n not in ("handle.avgHandle",)]
+    spell = {n: r["vars"][n]["type"] for n in names}
+    outs = ("handle.level", "handle.avg.y1")
+    unit = Unit(TRIM + TRIM_CALLER, "run_trim", [("int32_t", "x")],
+                [(spell[n], _trim_c_name(n)) for n in names],
+                [("int32_t", _trim_c_name(n)) for n in outs])
+    rng = random.Random(f"trim-{target}")
+    vectors = [random_vector(rng, unit, target) for _ in range(100)]
+    expected = []
+    for vec in vectors:
+        given = {n: vec[_trim_c_name(n)] for n in names}
+        ev = run_checked(checked, {**given, **TRIM_POINTERS}, None, record=False)
+        expected.append({_trim_c_name(n): ev.values[n] for n in outs})
+    assert expected == run_unit(unit, vectors, target)
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_an_entry_returning_a_pointer_names_its_object(target, capsys):
+    require(target, capsys)
+    checked = compile_code(TRIM, target, entry="TRIM_pick")
+    assert checked.inputs == ["x", "handle.level"]
+    ids = {"limits[1]": 1, "handle.bias": 2, "handle.avg.y1": 3}
+    unit = Unit(TRIM + TRIM_CALLER, "run_pick", [("int32_t", "x")],
+                [("int32_t", "x"), ("int32_t", "t.level")], [("int16_t", "pick_id")])
+    rng = random.Random(f"pick-{target}")
+    vectors = [random_vector(rng, unit, target) for _ in range(60)]
+    expected, seen = [], set()
+    for vec in vectors:
+        given = {"x": vec["x"], "handle.level": vec["t.level"],
+                 "handle.pLimit": "&limits[1]"}
+        r = trace_json(json.dumps({"code": TRIM, "target": target, "entry": "TRIM_pick",
+                                   "set": given}))
+        ret = json.loads(r)["vars"]["return"]
+        assert ret["c_type"] == "pointer" and ret["type"] == "int32_t *"
+        seen.add(ret["points_to"])
+        expected.append({"pick_id": ids[ret["points_to"]]})
+    assert seen == set(ids)  # every branch taken
+    assert expected == run_unit(unit, vectors, target)
+    # without a value of its own pLimit points to its own object, named after it
+    r = trace(TRIM, target, {"x": 1, "handle.level": 0}, entry="TRIM_pick")
+    assert r["vars"]["return"]["points_to"] == "*handle.pLimit"
+
+
+@pytest.mark.parametrize("value,text", [
+    ("handle.avg", "handle.avgHandle is a pointer: its value is &OBJECT (a global, an entry "
+                   "parameter's object, a field or element of one), got 'handle.avg'"),
+    ("5", "its value is &OBJECT"),
+    ("&handle.nothing", "handle.avgHandle cannot point to handle.nothing: no such object"),
+    ("&obj", "handle.avgHandle cannot point to obj: no such object"),  # an entry local
+    ("&handle.avgHandle", "cannot point to handle.avgHandle"),  # a pointer to a pointer
+])
+def test_a_bad_pointer_value_names_the_input(value, text):
+    with pytest.raises(InputError) as e:
+        trace(TRIM, "arm", {"x": 1, "handle.avgHandle": value}, entry="TRIM_run")
+    assert text in e.value.message and chinese(e.value.message_zh)
+    assert "avgHandle" in e.value.field
+    with pytest.raises(InputError) as e:
+        trace(TRIM, "arm", {"x": 1, "handle.pLimit": "&handle.avg"}, entry="TRIM_run")
+    assert "handle.pLimit points to int, but handle.avg is struct _AVG_" in e.value.message
+
+
+def test_an_unset_pointer_input_stays_unset_and_its_error_says_how_to_give_it():
+    with pytest.raises(TraceError) as e:
+        trace(TRIM, "arm", {"x": 1}, entry="TRIM_run", zero_unset=True)
+    assert e.value.field == "set.handle.avgHandle"
+    assert "handle.avgHandle is a pointer read before it has a value: give it the address " \
+        "of an object of the code (set handle.avgHandle=&OBJECT)" in e.value.message
+    with pytest.raises(InputError) as e:
+        from pulab.ctrace.prove import prove_code
+        prove_code(TRIM, "arm", "TRIM_run", {"handle.avgHandle": [0, 1]})
+    assert "not an input of the code (inputs: x, handle.bias, *handle.pLimit)" in \
+        e.value.message
+
+
+def test_an_entry_returning_a_local_address_is_an_error():
+    code = "int *f(int x) { int y = x; return &y; }\nint g; int *h(void) { return &g; }"
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", {"x": 1}, entry="f")
+    assert "f() returns the address of y, which ends with the call (a local)" in str(e.value)
+    assert trace(code, "arm", {}, entry="h")["vars"]["return"]["points_to"] == "g"

@@ -110,6 +110,8 @@ def _step_lines(steps: list, lines: list, indent: str) -> None:
             code = code[:57] + "..."
         if "branch" in s:
             what = f"-> {s['branch']}"
+        elif s.get("points_to") is not None:
+            what = f"{s['var']} = &{s['points_to']}"
         elif s.get("var") is not None:
             what = f"{s['var']} = {s['value']} ({s['hex']})" if s.get("value") is not None \
                 else f"{s['var']} = {{…}}"  # a struct, its fields in vars

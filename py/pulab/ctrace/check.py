@@ -182,7 +182,7 @@ class Checked:
     None)."""
 
     __slots__ = ("program", "target", "symbols", "inputs", "functions", "entry", "objects",
-                 "roots", "pointees")
+                 "roots", "pointees", "pointers", "heads", "analyse", "_seeded")
 
     def __init__(self, program: Program, target: Target, symbols: dict, inputs: list,
                  functions: dict | None = None, entry=None, objects: dict | None = None
@@ -195,6 +195,24 @@ class Checked:
         self.roots: dict = {}
         #: pointer field of the entry's objects -> the object it points to (see :func:`linked`)
         self.pointees: dict = {}
+        #: pointer the user may set (a field of the entry's objects, a global without
+        #: initializer) -> (its type, its spelling)
+        self.pointers: dict = {}
+        #: keys of the objects a pointer input may point into: globals, entry parameters
+        self.heads: set = set()
+        #: pointer inputs' paths -> the inputs as they read (see :meth:`inputs_with`)
+        self.analyse = lambda seeds: self.inputs
+        self._seeded: dict = {}
+
+    def inputs_with(self, seeds: dict) -> list:
+        """The inputs when the pointer inputs ``seeds`` (path -> the object's path) point
+        where given: the objects read through them become inputs too."""
+        key = tuple(sorted(seeds.items()))
+        if not key:
+            return self.inputs
+        if key not in self._seeded:
+            self._seeded[key] = self.analyse(seeds)
+        return self._seeded[key]
 
     def type_at(self, path: str):
         """The type of the object at ``path`` (``obj.f[2].g``), or None if unknown."""
@@ -613,7 +631,7 @@ class _Checker:
                                  function=e.name, want=describe(p.ctype), got=describe(at))
         return f.ret
 
-    def signature(self, f: Function, entry: bool) -> None:
+    def signature(self, f: Function) -> None:
         node = f.node
         self.function = f
         self.scopes.append({})
@@ -624,7 +642,7 @@ class _Checker:
         self.function = None
         f.ret = self.resolve(node.ret, node)
         if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID and not (
-                isinstance(f.ret, PtrT) and f.ret.n is None and not entry):
+                isinstance(f.ret, PtrT) and f.ret.n is None):
             raise TraceError(node.line, node.column, code="trace_result_type", name=f.name,
                              ret=describe(f.ret))
 
@@ -719,7 +737,10 @@ class _Inputs:
             return self.call(e, a)
         path = self.place(e, a) if isinstance(e, (Var, Member, Index)) or (
             isinstance(e, Unary) and e.op == "*") else None
-        return self.pointers.get(path) if path is not None else None
+        if path is None:
+            return None
+        self.read(path, t, a)  # a pointer input read before written
+        return self.pointers.get(path)
 
     def expr(self, e, a) -> None:
         self.tick(e)
@@ -914,7 +935,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         c.functions[name] = Function(node, "" if name == entry else f"{name}:")
     for f in c.functions.values():
         try:
-            c.signature(f, f.name == entry)
+            c.signature(f)
         except TraceError as err:
             if f.name == entry:
                 raise
@@ -951,6 +972,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
     # pointer parameters point to (p.FIELD, *out) and its locals.
     symbols: dict = {}
     settable: set = set()
+    pointers: dict = {}  # a pointer the user may set (--set p.h=&p.obj) -> (type, spelling)
 
     def add(sym_key, t, spelling, line, column, initialized, can_set):
         for path, lt, sp in leaves(sym_key, t, spelling):
@@ -958,6 +980,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
                 symbols[path] = Symbol(path, sp, lt, initialized, line, column)
                 if can_set:
                     settable.add(path)
+            elif can_set and isinstance(lt, PtrT) and lt.n is None:
+                pointers[path] = (lt, sp)
 
     for sym in c.scopes[0].values():
         add(sym.key, sym.ctype, sym.spelling, sym.line, sym.column, sym.initialized,
@@ -985,22 +1009,33 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         if note.name not in symbols:
             raise TraceError(note.line, note.column, code="trace_note_undeclared",
                              name=note.name)
-    analysis = _Inputs(c, settable.__contains__)
-    assigned: set = set()
-    analysis.block(program.statements, assigned)
-    if f is not None:
-        for p in f.params:  # every integer parameter is an input, in order
-            if isinstance(p.ctype, PtrT):
-                analysis.pointers[p.key] = pointee(p)[2]
-                analysis.pointers.update(pointees)
-            elif isinstance(p.ctype, CType):
-                analysis.read(p.key, p.ctype, set())
-                assigned.add(p.key)
-        analysis.active.append(f.name)
-        analysis.returns = []
-        analysis.block(f.node.body.statements, assigned)
-    checked = Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
-    checked.roots, checked.pointees = c.roots, pointees
+
+    def inputable(leaf: str) -> bool:  # a pointer with an object of its own is no input
+        return leaf in settable or (leaf in pointers and leaf not in pointees)
+
+    def analyse(seeds: dict) -> list:
+        analysis = _Inputs(c, inputable)
+        assigned: set = set()
+        analysis.block(program.statements, assigned)
+        if f is not None:
+            for p in f.params:  # every integer parameter is an input, in order
+                if isinstance(p.ctype, PtrT):
+                    analysis.pointers[p.key] = pointee(p)[2]
+                    analysis.pointers.update(pointees)
+                elif isinstance(p.ctype, CType):
+                    analysis.read(p.key, p.ctype, set())
+                    assigned.add(p.key)
+            analysis.pointers.update(seeds)
+            analysis.active.append(f.name)
+            analysis.returns = []
+            analysis.block(f.node.body.statements, assigned)
+        return analysis.inputs
+
+    checked = Checked(program, target, symbols, analyse({}), c.functions, f, objects)
+    checked.roots, checked.pointees, checked.pointers = c.roots, pointees, pointers
+    checked.heads = {sym.key for sym in c.scopes[0].values()} | \
+        ({p.key for p in f.params} if f is not None else set())
+    checked.analyse = analyse
     return checked
 
 

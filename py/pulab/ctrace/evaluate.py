@@ -36,6 +36,8 @@ Examples
 
 from __future__ import annotations
 
+import re
+
 from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
 from .check import (ArrT, Checked, PtrT, StructT, VOID, describe, leaves, linked, pointee,
                     same_layout)
@@ -121,15 +123,17 @@ class Evaluator:
         When False only ``values`` is kept (the compiler cross-check runs many vectors).
     """
 
-    def __init__(self, checked: Checked, inputs: dict, global_q: int, record: bool = True
-                 ) -> None:
+    def __init__(self, checked: Checked, inputs: dict, global_q: int, record: bool = True,
+                 names: list | None = None) -> None:
         self.checked = checked
         self.source = checked.program.source
         self.mem: dict = {}
         self.written: set = set()
         self.values: dict = {}
         self.inputs = inputs
-        self.unset = [n for n in checked.inputs if n not in inputs]
+        #: the input names (``checked.inputs``, or those with the pointer inputs set)
+        self.names = checked.inputs if names is None else names
+        self.unset = [n for n in self.names if n not in inputs]
         self.global_q = global_q
         self.record = record
         self.terms: list = []
@@ -183,6 +187,9 @@ class Evaluator:
     def read(self, path: str, node) -> int:
         v = self.mem.get(path)
         if v is None:
+            if path in self.unset and path in self.checked.pointers:
+                raise TraceError(node.line, node.column, field=f"set.{path}",
+                                 code="trace_unset_pointer", name=path)
             if path in self.unset:
                 raise TraceError(node.line, node.column, field=f"set.{path}",
                                  code="trace_unset_input", name=path,
@@ -219,13 +226,28 @@ class Evaluator:
                     given = leaves(p.key, p.ctype, p.spelling)
                 for path, t, spelling in given:
                     if path in inputs:
-                        self.mem[path] = inputs[path]
-                        self.step(p, f"{spelling} {path}", path, inputs[path], t,
-                                  spelling=spelling, input=True)
-            self.values["return"] = self.body(f)
-        for name in self.checked.symbols:
+                        self.given(p, f"{spelling} {path}", path, t, spelling)
+            self.values["return"] = value = self.body(f)
+            if isinstance(f.ret, PtrT) and value is not None and \
+                    re.match(r"\*?(\w+)", value)[1] not in self.checked.heads:
+                raise TraceError(f.node.close_line, f.node.close_column,
+                                 code="trace_return_local", name=f.name, got=value)
+        for name in (*self.checked.symbols, *self.checked.pointers):
             self.values[name] = self.mem.get(name)
         return self.steps
+
+    def given(self, node, code: str, path: str, t, spelling: str) -> None:
+        """Give the input ``path`` its value; a pointer's step names what it points to."""
+        v = self.inputs[path]
+        self.mem[path] = v
+        if isinstance(t, PtrT):
+            if self.record:
+                self.steps.append({"line": node.line, "column": node.column, "code": code,
+                                   "var": path, "type": describe(t), "value": None,
+                                   "hex": None, "flags": [], "terms": [], "points_to": v,
+                                   "spelling": spelling, "input": True})
+            return
+        self.step(node, code, path, v, t, spelling=spelling, input=True)
 
     def block(self, statements) -> None:
         for s in statements:
@@ -245,9 +267,7 @@ class Evaluator:
                 if init is None:
                     for path, lt, spelling in leaves(key, t, sym.spelling):
                         if path in self.inputs:
-                            v = self.inputs[path]
-                            self.mem[path] = v
-                            self.step(s, code, path, v, lt, spelling=spelling, input=True)
+                            self.given(s, code, path, lt, spelling)
                         elif self.active:
                             self.mem.pop(path, None)  # a local declared again has no value
                     continue

@@ -64,9 +64,9 @@ def _ranges(checked, ranges) -> dict:
     for name, pair in ranges.items():
         path = name.strip().replace("->", ".") if isinstance(name, str) else name
         field = key_path("range", path)
-        if path not in checked.inputs:
-            raise InputError(field, code="prove_not_input",
-                             inputs=", ".join(checked.inputs) or "none")
+        if path not in checked.inputs or path in checked.pointers:  # a pointer has no range
+            raise InputError(field, code="prove_not_input", inputs=", ".join(
+                n for n in checked.inputs if n not in checked.pointers) or "none")
         if not isinstance(pair, (list, tuple)) or len(pair) != 2:
             raise InputError(field, code="prove_pair", got=shown(pair))
         ends = []

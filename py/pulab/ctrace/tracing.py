@@ -12,11 +12,13 @@ Examples
 
 from __future__ import annotations
 
+import re
+
 from ..fixedpoint.cint import CType
-from .check import Checked, check
+from .check import ArrT, Checked, PtrT, StructT, check, describe, same_layout
 from .evaluate import Evaluator, hex_of
 from .errors import TraceError
-from .parser import parse
+from .parser import Ptr, parse
 from .macro_entry import entry_macros, split_entry, wrapper
 from .preprocess import parse_define
 from .types import TARGETS
@@ -25,6 +27,9 @@ from ..schema.validate import key_path, shown
 
 __all__ = ["trace", "trace_checked", "compile_code", "run_checked", "rounding_summary",
            "DEFAULT_GLOBAL_Q"]
+
+#: The object a pointer input is given as ``&OBJECT``: a name, its fields and elements.
+_OBJECT = re.compile(r"[A-Za-z_]\w*(?:\.[A-Za-z_]\w*|\[\d+\])*")
 
 #: IQmath's GLOBAL_Q when neither the code (``#define GLOBAL_Q``) nor the caller sets one.
 DEFAULT_GLOBAL_Q = 24
@@ -79,6 +84,9 @@ def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> d
             name = name.strip().replace("->", ".")  # p->FIELD names p.FIELD
         field = key_path("set", name)
         sym = checked.symbols.get(name)
+        if sym is None and name in checked.pointers:
+            out[name] = _pointer_value(checked, field, name, value)
+            continue
         if sym is None:
             shown_name = name if field == f"set.{name}" else shown(name)
             raise InputError(field, code="trace_no_variable", name=shown_name)
@@ -96,10 +104,32 @@ def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> d
             raise InputError(field, code="trace_value_range", lo=t.min, hi=t.max,
                              type=sym.spelling, got=value)
         out[name] = value
-    if zero_unset:
-        for name in checked.inputs:
-            out.setdefault(name, 0)
+    if zero_unset:  # a pointer has no zero to take: it stays unset (an error where read)
+        seeds = {k: v for k, v in out.items() if k in checked.pointers}
+        for name in checked.inputs_with(seeds):
+            if name not in checked.pointers:
+                out.setdefault(name, 0)
     return out
+
+
+def _pointer_value(checked: Checked, field: str, name: str, value) -> str:
+    """``&OBJECT`` for the pointer input ``name``: the path of an object of the code
+    (a global, an entry parameter's object or a field or element of one) whose type is the
+    one the pointer points to (any struct or integer for ``void *`` and opaque handles)."""
+    ptr, spelling = checked.pointers[name]
+    text = "".join(value.split()) if isinstance(value, str) else ""
+    path = text[1:].replace("->", ".")
+    if not text.startswith("&") or not _OBJECT.fullmatch(path):
+        raise InputError(field, code="trace_pointer_syntax", name=name, got=shown(value))
+    head = re.match(r"\w+", path)[0]
+    t = checked.type_at(path) if head in checked.heads else None
+    if t is None or isinstance(t, PtrT):
+        raise InputError(field, code="trace_pointer_no_object", name=name, got=path)
+    if isinstance(ptr.to, (CType, StructT)) and not same_layout(t, ptr.to) or \
+            isinstance(t, ArrT):
+        raise InputError(field, code="trace_pointer_type", name=name, got=path,
+                         want=describe(ptr.to), type=describe(t))
+    return path
 
 
 def _meaning(note, value: int) -> dict:
@@ -117,9 +147,21 @@ def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
     not set the value 0); returns the finished :class:`~pulab.ctrace.evaluate.Evaluator`
     (``values``, ``steps``, ``undefined``)."""
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
-    ev = Evaluator(checked, _input_values(checked, inputs or {}, zero_unset), gq, record)
+    values = _input_values(checked, inputs or {}, zero_unset)
+    names = checked.inputs_with({k: v for k, v in values.items() if k in checked.pointers})
+    ev = Evaluator(checked, values, gq, record, names)
     ev.run()
     return ev
+
+
+def _pointer_var(program, spelling: str, path: str | None, given: bool) -> dict:
+    """A pointer in ``vars``: no integer value, ``points_to`` the object's name (None: null);
+    ``type`` the typedef that names the pointer (``PI_Handle``) or the pointee's spelling
+    then ``*``."""
+    if not isinstance(program.aliases.get(spelling), Ptr):
+        spelling += " *"
+    return {"type": spelling, "c_type": "pointer", "bits": None, "signed": False,
+            "value": None, "hex": None, "input": given, "points_to": path}
 
 
 def rounding_summary(steps: list) -> dict:
@@ -203,7 +245,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     values, steps = ev.values, ev.steps
     given = {k.strip().replace("->", ".") if isinstance(k, str) else k for k in inputs}
     if zero_unset:
-        given |= set(checked.inputs)
+        given |= set(ev.names)
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     notes = {k: n for k, n in checked.program.notes.items() if n.q is not None}  # not "@q auto"
     for s in steps:
@@ -226,6 +268,14 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
             # "// @q NAME auto": the code proof proposes its Q
             d["q_auto"] = True
         out_vars[name] = d
+    pointers = checked.pointers
+    for name in pointers:  # pointer inputs given: what they point to after the call
+        if name in given:
+            out_vars[name] = _pointer_var(checked.program, pointers[name][1],
+                                          values.get(name), True)
+    if entry is not None and isinstance(entry.ret, PtrT):
+        out_vars["return"] = _pointer_var(checked.program, entry.ret_spelling,
+                                        values.get("return"), False)
     if entry is not None and isinstance(entry.ret, CType):
         v = values.get("return")
         out_vars["return"] = {"type": entry.ret_spelling, "c_type": entry.ret.name,
@@ -237,4 +287,4 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
             "functions": [f for f in checked.functions if f not in checked.program.macros],
             "macros": entry_macros(checked.program),
             "unresolved_includes": list(checked.program.unresolved),
-            "inputs": checked.inputs, "vars": out_vars, "steps": steps}
+            "inputs": ev.names, "vars": out_vars, "steps": steps}

@@ -31,6 +31,22 @@ MESSAGES = {
                           "each a value, or use zero-unset)",
                           "{name} 在赋值之前被读取（未设置的输入：{unset}；请逐个给值，或使用 "
                           "zero-unset）"),
+    "trace_unset_pointer": ("{name} is a pointer read before it has a value: give it the "
+                            "address of an object of the code (set {name}=&OBJECT)",
+                            "{name} 是在赋值之前被读取的指针：请给它代码中某个对象的地址"
+                            "（设置 {name}=&对象）"),
+    "trace_pointer_syntax": ("{name} is a pointer: its value is &OBJECT (a global, an entry "
+                             "parameter's object, a field or element of one), got {got}",
+                             "{name} 是指针：其值应为 &对象（全局变量、入口参数所指对象，或其字段、"
+                             "元素），当前为 {got}"),
+    "trace_pointer_no_object": ("{name} cannot point to {got}: no such object among the globals "
+                                "and the entry's parameters",
+                                "{name} 不能指向 {got}：全局变量和入口参数中没有这个对象"),
+    "trace_pointer_type": ("{name} points to {want}, but {got} is {type}",
+                           "{name} 指向 {want}，但 {got} 的类型是 {type}"),
+    "trace_return_local": ("{name}() returns the address of {got}, which ends with the call "
+                           "(a local)",
+                           "{name}() 返回了 {got} 的地址，该对象随调用结束而失效（局部变量）"),
     "trace_unset_local": ("{name} is read before it has a value (it has no initializer)",
                           "{name} 在赋值之前被读取（它没有初始值）"),
     "trace_steps": ("more than {limit} statements executed (a loop that does not end?)",
@@ -122,10 +138,9 @@ MESSAGES = {
                                 "{name}() 返回 void：'return' 不能带值"),
     "trace_return_no_value": ("{name}() must return a value", "{name}() 必须返回一个值"),
     "trace_return_type": ("{name}() returns {ret}, not {got}", "{name}() 返回 {ret}，而不是 {got}"),
-    "trace_result_type": ("{name}() returns {ret}: only integer, struct and void results are "
-                          "supported (a pointer only from a function the entry calls)",
-                          "{name}() 返回 {ret}：只支持整数、结构体和 void 返回值（指针只能由入口调用的"
-                          "函数返回）"),
+    "trace_result_type": ("{name}() returns {ret}: only integer, struct, pointer and void "
+                          "results are supported",
+                          "{name}() 返回 {ret}：只支持整数、结构体、指针和 void 返回值"),
     "trace_case_twice": ("a case label repeats the one at {at}", "case 标签与 {at} 处的重复"),
     "trace_case_nested": ("a case label inside a nested statement is not supported (labels at "
                           "the top of the switch's block only)",
