@@ -153,6 +153,7 @@ def _trace(req) -> dict:
     from .ctrace import TraceError, compile_code, trace_checked
     from .ctrace.macro_entry import entry_macros
     from .ctrace.parser import parse as parse_c
+    from .ctrace.tracing import inputs_for
     code, defines, sets, zero_unset = _trace_request(req, _TRACE_KEYS)
     try:
         checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
@@ -169,7 +170,7 @@ def _trace(req) -> dict:
     try:
         reply = trace_checked(checked, sets, req.get("global_q"), zero_unset)
     except InputError as e:
-        e.inputs = checked.inputs
+        e.inputs = inputs_for(checked, sets if isinstance(sets, dict) else {})
         e.functions = [f for f in checked.functions if f not in checked.program.macros]
         e.macros = entry_macros(checked.program)
         raise

@@ -738,3 +738,17 @@ def test_an_entry_returning_a_local_address_is_an_error():
         trace(code, "arm", {"x": 1}, entry="f")
     assert "f() returns the address of y, which ends with the call (a local)" in str(e.value)
     assert trace(code, "arm", {}, entry="h")["vars"]["return"]["points_to"] == "g"
+
+
+def test_an_error_reply_offers_the_inputs_read_through_the_pointers_given():
+    """The page learns its fields from the replies: a run that stops at an unset field read
+    through a pointer input still names that field (a bad pointer value adds nothing)."""
+    req = {"code": TRIM, "target": "arm", "entry": "TRIM_run",
+           "set": {"x": 1, "handle->avgHandle": "&handle.avg"}}
+    r = json.loads(trace_json(json.dumps(req)))
+    assert r["ok"] is False and r["field"] == "set.handle.bias"
+    assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "handle.avg.y1",
+                           "handle.avg.k", "*handle.pLimit"]
+    req["set"]["handle->avgHandle"] = "handle.avg"
+    r = json.loads(trace_json(json.dumps(req)))
+    assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "*handle.pLimit"]

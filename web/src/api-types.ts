@@ -27,8 +27,9 @@ export interface TraceRequest {
 }
 /** A term; a call of a function of the code carries `call` and the statements it ran. */
 export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number | null; hex: string | null; flags: string[]; var?: string; rounding?: 'floor' | 'toward_zero'; lost?: number; call?: string; steps?: TraceLine[] }
-export interface TraceLine { line: number; column: number; code: string; var: string | null; type: string; value: number | null; hex: string | null; flags: string[]; terms: TraceTerm[]; spelling?: string; input?: boolean; branch?: string }
-export interface TraceVar { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string; q_auto?: boolean }
+export interface TraceLine { line: number; column: number; code: string; var: string | null; type: string; value: number | null; hex: string | null; flags: string[]; terms: TraceTerm[]; spelling?: string; input?: boolean; branch?: string; points_to?: string }
+/** A variable after the run; a pointer (`c_type` "pointer", `bits` null) names its object in `points_to`. */
+export interface TraceVar { type: string; c_type: string; bits: number | null; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string; q_auto?: boolean; points_to?: string | null }
 export interface Trace {
   target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[];
   entry: string | null; functions: string[];

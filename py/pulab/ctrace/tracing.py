@@ -26,7 +26,7 @@ from ..schema.errors import InputError
 from ..schema.validate import key_path, shown
 
 __all__ = ["trace", "trace_checked", "compile_code", "run_checked", "rounding_summary",
-           "DEFAULT_GLOBAL_Q"]
+           "inputs_for", "DEFAULT_GLOBAL_Q"]
 
 #: The object a pointer input is given as ``&OBJECT``: a name, its fields and elements.
 _OBJECT = re.compile(r"[A-Za-z_]\w*(?:\.[A-Za-z_]\w*|\[\d+\])*")
@@ -110,6 +110,21 @@ def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> d
             if name not in checked.pointers:
                 out.setdefault(name, 0)
     return out
+
+
+def inputs_for(checked: Checked, inputs: dict) -> list:
+    """``checked.inputs`` with the valid pointer inputs among ``inputs`` pointing where
+    given (the objects read through them are inputs too): what a page offers fields for,
+    also when the run failed."""
+    seeds = {}
+    for name, value in inputs.items():
+        name = name.strip().replace("->", ".") if isinstance(name, str) else name
+        if name in checked.pointers:
+            try:
+                seeds[name] = _pointer_value(checked, "set", name, value)
+            except InputError:
+                pass
+    return checked.inputs_with(seeds)
 
 
 def _pointer_value(checked: Checked, field: str, name: str, value) -> str:

@@ -29,6 +29,27 @@ const MACRO_FILE = `typedef struct { long ia; long ib; long al; long be; } ALBE;
     w.be = _IQmpy((w.ia + (w.ib << 1)), _IQ(0.57735026918963));
 `;
 
+// A handle field an init function would set (TI's obj->filterHandle): given as &OBJECT.
+const HANDLE_FILE = `#include <stdint.h>
+typedef struct _AVG_ { int32_t k; int32_t y1; } AVG_Obj;
+typedef struct _AVG_Obj_ *AVG_Handle;
+typedef struct _TRIM_ { int32_t level; AVG_Obj avg; AVG_Handle avgHandle; } TRIM_Obj;
+typedef struct _TRIM_Obj_ *TRIM_Handle;
+
+static int32_t AVG_step(AVG_Handle h, int32_t x)
+{
+  AVG_Obj *a = (AVG_Obj *)h;
+  a->y1 += _IQmpy(a->k, x - a->y1);
+  return a->y1;
+}
+
+void TRIM_run(TRIM_Handle handle, int32_t x)
+{
+  TRIM_Obj *obj = (TRIM_Obj *)handle;
+  obj->level = AVG_step(obj->avgHandle, x);
+}
+`;
+
 export default async function codeFile(ctx) {
   const { check, assert, newPage, ready, waitValue, subSrv, ROOT, SHOTS } = ctx;
   const cli = (target, set) => JSON.parse(execFileSync('python3',
@@ -89,6 +110,24 @@ export default async function codeFile(ctx) {
       await waitValue(p, 'code.c28x.vars.w.al.value', want.vars['w.al'].value);
       await p.$eval('#panel-code', (e) => e.scrollIntoView());
       await p.screenshot({ path: join(SHOTS, `code-macro-${width}-${locale}.png`) });
+      const overflow = await p.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+      assert(overflow <= 1, `page wider than the viewport by ${overflow}px`);
+      await p.context().close();
+    }
+  });
+  await check('code file: a pointer input is given as &OBJECT and shown as the object it points to', async () => {
+    const hset = { x: 1 << 24, 'handle.avgHandle': '&handle.avg', 'handle.avg.k': 1 << 22, 'handle.avg.y1': 0 };
+    const hurl = `${subSrv.url}?code=${encodeURIComponent(HANDLE_FILE)}&target=c28x&${Object.entries(hset).map(([k, v]) => `set.${encodeURIComponent(k)}=${encodeURIComponent(v)}`).join('&')}`;
+    for (const [width, locale] of [[390, 'zh-CN'], [900, 'en-US'], [1366, 'en-US'], [1366, 'zh-CN']]) {
+      const p = await newPage({ locale, context: { viewport: { width, height: 900 } } });
+      await p.goto(hurl);
+      await p.click('nav.tabs a[data-view="firmware"]');
+      await waitValue(p, 'code.c28x.vars.handle.level.value', 1 << 22); // k = 1/4 of x = 1.0
+      const shown = await p.$eval('[data-points-to-of="code.c28x.vars.handle.avgHandle.value"]', (e) => e.textContent);
+      assert(shown === '&handle.avg', `pointer shown as ${shown}`);
+      assert(await p.$('input[name="set.handle.avgHandle"]'), 'a field for the pointer input');
+      await p.$eval('.code-vars', (e) => e.scrollIntoView());
+      await p.screenshot({ path: join(SHOTS, `code-pointer-${width}-${locale}.png`) });
       const overflow = await p.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
       assert(overflow <= 1, `page wider than the viewport by ${overflow}px`);
       await p.context().close();

@@ -7,7 +7,7 @@ import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingV
 import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
 import { renderProve, type ProveHost } from './code-prove';
-import type { TraceExample, TraceLine, TraceTerm } from '../api-types';
+import type { TraceExample, TraceLine, TraceTerm, TraceVar } from '../api-types';
 import type { ApiErr, Ok } from '../protocol';
 
 type TraceOk = Ok<'trace'>;
@@ -50,6 +50,11 @@ function intCell(key: string, value: number | null, hex: string | null, differs 
   return h('span', { class: `num int${differs ? ' differs' : ''}` },
     h('span', { 'data-key': `${key}`, 'data-value': dec || null, title: dec }, dec || '…'),
     hex ? h('code', { class: 'hex', 'data-hex-of': key }, ` ${hex}`) : null);
+}
+
+/** A step's value: its integer, or for a pointer input the object it points to. */
+function stepCell(key: string, s: TraceLine, differs = false): HTMLElement {
+  return s.points_to ? h('code', { class: 'pointer', 'data-points-to-of': key }, `&${s.points_to}`) : intCell(key, s.value, s.hex, differs);
 }
 
 function compute(ctx: PanelContext, delay = 0): void {
@@ -145,9 +150,9 @@ function stepsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
       h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
         ...s.terms.map((tm, j) => (tm.call && tm.steps ? callSteps(tm, `${k}.terms.${j}`) : null))),
       h('td', {}, s.var ? h('code', {}, s.var) : ''),
-      h('td', { class: 'r' }, s.value === null ? '' : intCell(`${k}.value`, s.value, s.hex, differs), h('div', { class: 'ctype' }, s.type)),
+      h('td', { class: 'r' }, s.value === null && !s.points_to ? '' : stepCell(`${k}.value`, s, differs), h('div', { class: 'ctype' }, s.type)),
       h('td', {}, flagChips(s.flags)),
-      b ? h('td', { class: 'r' }, o ? [intCell(`code.${b.target}.steps.${i}.value`, o.value, o.hex, differs), h('div', { class: 'ctype' }, o.type)] : '—') : null,
+      b ? h('td', { class: 'r' }, o ? [stepCell(`code.${b.target}.steps.${i}.value`, o, differs), h('div', { class: 'ctype' }, o.type)] : '—') : null,
       b ? h('td', {}, o ? flagChips(o.flags) : '') : null));
     if (s.terms.length) {
       const terms = s.terms.map((tm, j) => {
@@ -180,11 +185,19 @@ function callSteps(tm: TraceTerm, key: string): HTMLElement {
     h('td', {}, h('code', {}, s.code), s.branch ? h('span', { class: 'hint' }, ` → ${s.branch}`) : null,
       ...s.terms.map((inner, j) => (inner.call && inner.steps ? callSteps(inner, `${key}.steps.${i}.terms.${j}`) : null))),
     h('td', {}, s.var ? h('code', {}, s.var) : ''),
-    h('td', { class: 'r' }, s.value === null ? '' : intCell(`${key}.steps.${i}.value`, s.value, s.hex), h('div', { class: 'ctype' }, s.type)),
+    h('td', { class: 'r' }, s.value === null && !s.points_to ? '' : stepCell(`${key}.steps.${i}.value`, s), h('div', { class: 'ctype' }, s.type)),
     h('td', {}, flagChips(s.flags))));
   return h('details', { class: 'code-call' }, h('summary', {}, t('codeCall', { name: tm.call ?? '', n: steps.length })),
     table(['L:C', t('codeSource'), t('codeVariable'), '', t('flags')], rows, 'code-steps'));
 }
+
+/** A variable's value: its integer, or for a pointer the object it points to (`&handle.filter`). */
+function varCell(key: string, v: TraceVar, differs: boolean): HTMLElement {
+  if (v.c_type !== 'pointer') return intCell(key, v.value, v.hex, differs);
+  return h('code', { class: `pointer${differs ? ' differs' : ''}`, 'data-points-to-of': key }, v.points_to ? `&${v.points_to}` : 'NULL');
+}
+
+const typeNote = (v: TraceVar): string => (v.bits === null ? v.c_type : `${v.c_type}, ${v.bits} bit`);
 
 function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
   const diff = new Set(differingVars(a.vars, b?.vars));
@@ -194,9 +207,9 @@ function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
     const meaning = v.real !== undefined ? `${v.real.toPrecision(6)}${v.si !== undefined ? ` → ${v.si.toPrecision(6)} ${v.unit ?? ''}` : ''} (Q${v.q})` : '';
     return h('tr', { class: d ? 'differs' : '' },
       h('td', {}, h('code', {}, name), v.input ? h('span', { class: 'hint' }, ` ${t('codeInputMark')}`) : null),
-      h('td', { title: v.c_type }, `${v.type}`, h('div', { class: 'ctype' }, `${v.c_type}, ${v.bits} bit`)),
-      h('td', { class: 'r' }, intCell(`code.${a.target}.vars.${name}.value`, v.value, v.hex, d)),
-      b ? h('td', { class: 'r' }, o ? [intCell(`code.${b.target}.vars.${name}.value`, o.value, o.hex, d), h('div', { class: 'ctype' }, `${o.c_type}, ${o.bits} bit`)] : '—') : null,
+      h('td', { title: v.c_type }, `${v.type}`, h('div', { class: 'ctype' }, typeNote(v))),
+      h('td', { class: 'r' }, varCell(`code.${a.target}.vars.${name}.value`, v, d)),
+      b ? h('td', { class: 'r' }, o ? [varCell(`code.${b.target}.vars.${name}.value`, o, d), h('div', { class: 'ctype' }, typeNote(o))] : '—') : null,
       b ? h('td', {}, d ? h('span', { class: 'flag flag-differs' }, t('codeDiffers')) : '') : null,
       h('td', {}, meaning));
   });
