@@ -26,9 +26,14 @@ export function otherField(e: ApiErr): string | null {
 
 export class InputForm {
   constructor(private root: HTMLElement, private session: ComputeSession) {
-    // A shared link's units (&u=) win over the ones this browser chose last; both checked.
-    const fromLink = decodeUnits(location.hash);
-    session.units = checkUnits(fromLink ? JSON.stringify(fromLink) : load(UNITS_KEY));
+    this.useUnits(location.hash);
+  }
+
+  /** The display units to show: a link's (`hash` with &u=) win over the ones this browser chose
+   * last; both checked. */
+  useUnits(hash: string): void {
+    const fromLink = decodeUnits(hash);
+    this.session.units = checkUnits(fromLink ? JSON.stringify(fromLink) : load(UNITS_KEY));
   }
 
   /** The display unit chosen for each field (the session keeps it for links). */

@@ -81,7 +81,7 @@ export class Layout {
       return;
     }
     this.views = viewsFor(panels.map((p) => p.id));
-    if (!this.views.some((v) => v.id === this.view)) this.view = (this.openOn && this.viewOf(this.openOn)) || (this.views[0]?.id ?? '');
+    if (!this.views.some((v) => v.id === this.view)) this.view = this.openingView();
     for (const sec of sections) this.revealOnScroll(sec);
     // Bases and per-unit values side by side on wide screens.
     const ib = panels.findIndex((p) => p.id === 'bases');
@@ -116,6 +116,16 @@ export class Layout {
   /** The views (tabs) of this page, and the one shown. */
   private views: View[] = [];
   private view = '';
+
+  /** The view the page opens on: the one of `openOn`, else the first. */
+  private openingView(): string {
+    return (this.openOn && this.viewOf(this.openOn)) || (this.views[0]?.id ?? '');
+  }
+
+  /** Show the view the page opens on (a link opened in this tab). */
+  showOpeningView(): void {
+    this.showView(this.openingView());
+  }
 
   /** Show the view `id`: its panels, its tab marked, the panel links of its sub-navigation. */
   showView(id: string): void {

@@ -1,0 +1,68 @@
+// The page as a user meets it, past the first screen: a share link opened in a tab that is
+// already open, one Python call per keystroke whichever firmware is shipped, and what a new
+// user's pass over the five datasheet motors found.
+// Run alone: node tests/e2e/run.mjs screens-pass   (E2E_NO_BUILD=1 to reuse dist/)
+import { join } from 'node:path';
+
+export default async function screensPass(ctx) {
+  const { check, assert, newPage, subSrv, ready, waitValue, cpython, golden, SHOTS } = ctx;
+  const seed = golden('01_seed_motor.json');
+  const link = (inp) => `${subSrv.url}#in=${encodeURIComponent(JSON.stringify(inp))}`;
+
+  await check('screens-pass: a share link differing only in its hash, opened in an open tab, sets the inputs, units, view and numbers', async () => {
+    const g = golden('04_ind380_7k5.json');
+    const p = await newPage({ context: { viewport: { width: 390, height: 844 } } });
+    await p.goto(subSrv.url);
+    await ready(p);
+    await waitValue(p, 'vendor.Rpm.value', seed.expected.vendor.Rpm.value);
+    await p.click('nav.tabs a[data-view="loops"]');
+    await p.click('nav.tabs .inputs-toggle');
+    await p.evaluate(() => { window.sameDocument = true; });
+    await p.goto(`${link(g.input)}&u=${encodeURIComponent(JSON.stringify({ 'motor.ld_h': 'mH' }))}`);
+    await waitValue(p, 'vendor.Rpm.value', g.expected.vendor.Rpm.value);
+    assert(await p.evaluate(() => window.sameDocument === true), 'the page was reloaded: not a hash-only change');
+    await p.waitForFunction(() => document.documentElement.dataset.numbers === 'live');
+    const view = await p.$eval('nav.tabs a.on', (a) => a.dataset.view);
+    assert(view === 'design', `view ${view} kept from before the link`);
+    assert(!(await p.$eval('#panel-review', (e) => e.hidden)) && await p.$eval('#panel-loop', (e) => e.hidden), 'panels of the old view shown');
+    assert(!(await p.evaluate(() => document.body.classList.contains('inputs-open'))), 'drawer left open over the new answer');
+    assert((await p.inputValue('input[name="motor.rated_voltage_v"]')) === '380', 'inputs not from the link');
+    const ld = [await p.inputValue('select[data-unit-for="motor.ld_h"]'), await p.inputValue('input[name="motor.ld_h"]')];
+    assert(ld.join(' ') === 'mH 8.5', `units not from the link: ${ld}`);
+    assert(await p.isVisible('section.answer [data-key="vendor.Rpm.value"]'), 'answer not on screen');
+    await p.screenshot({ path: join(SHOTS, 'screens-390-hash-link.png') });
+    await p.context().close();
+  });
+
+  await check('screens-pass: with a non-Inovance firmware shipped, one report call per keystroke serves the numbers and the answer strip', async () => {
+    const g = golden('04_ind380_7k5.json');
+    const inp = { ...g.input, conventions: { firmware: 'microchip' } };
+    const want = cpython(inp);
+    const p = await newPage();
+    // Count the page's calls to the Python workers by kind and channel (the SharedWorker's port).
+    await p.addInitScript(() => {
+      window.pyCalls = [];
+      const post = MessagePort.prototype.postMessage;
+      MessagePort.prototype.postMessage = function (m, ...rest) {
+        if (m && m.type === 'call') window.pyCalls.push(`${m.kind}/${m.channel}`);
+        return post.call(this, m, ...rest);
+      };
+    });
+    await p.goto(link(inp));
+    await ready(p);
+    const key = 'profiles.microchip.constants.KII.value';
+    await waitValue(p, key, want.profiles.microchip.constants.KII.value);
+    await p.waitForTimeout(1500); // the first simulation and the panels' own calls settle
+    await p.evaluate(() => { window.pyCalls.length = 0; });
+    await p.fill('input[name="motor.rs_ohm"]', '0.84');
+    const after = cpython({ ...inp, motor: { ...inp.motor, rs_ohm: 0.84 } });
+    await waitValue(p, key, after.profiles.microchip.constants.KII.value);
+    await p.waitForFunction(() => document.documentElement.dataset.numbers === 'live');
+    await p.waitForTimeout(300); // before the simulation's pause (400 ms): nothing else may follow
+    const calls = await p.evaluate(() => window.pyCalls.filter((c) => c.startsWith('report/')));
+    assert(JSON.stringify(calls) === JSON.stringify(['report/report']), `report calls per keystroke: ${calls}`);
+    assert(after.profiles.microchip.constants.KII.value !== want.profiles.microchip.constants.KII.value, 'the edit does not move KII: not a test');
+    await p.context().close();
+  });
+
+}
