@@ -1,4 +1,4 @@
-"""Independent oracle for five real motors entered as their datasheets print them; never imports pulab.
+"""Independent oracle for six real motors entered as their datasheets print them; never imports pulab.
 
 Each motor's printed values (tests/golden/datasheets/README.md names the documents) are
 turned into the SI motor by the physics written out here, through the magnet flux
@@ -90,6 +90,18 @@ MOTORS = {
                        "rs_line_ohm": 0.608, "l_line_h": 0.000463, "dc_bus_v": 24},
          "motor": {"rated_current_a": 3.21, "pole_pairs": 8},
          "drive": {"ts_s": 0.00005}, "current_loop": {"bandwidth_hz": 600}}),
+    "emrax_228_lv": (
+        {"maximal battery voltage [Vdc] (max load RPM)": "160 (5500)",
+         "continuous motor current [Arms]": 450, "maximal motor current [Arms]": 900,
+         "number of pole pairs": 10, "internal phase resistance at 25 °C [mΩ]": "1,1",
+         "wire connection": "star", "induction in Ld/Lq [µH] of 1 phase": "10,3/10,6",
+         "AC voltage between two phases [Vrms/1RPM]": "0,0176",
+         "torque / motor current [Nm/1Aph rms]": "0,27", "magnetic flux – axial [Vs]": "0,0131"},
+        {"datasheet": {"speed_rpm": 5500, "ke_v_per_krpm": 17.6, "ke_measure": "rms",
+                       "kt_nm_per_a": 0.27, "psi_wb": 0.0131, "rs_phase_ohm": 0.0011,
+                       "ld_phase_h": 0.0000103, "lq_phase_h": 0.0000106, "dc_bus_v": 160},
+         "motor": {"rated_current_a": 450, "pole_pairs": 10},
+         "drive": {"ts_s": 0.0000625}, "current_loop": {"bandwidth_hz": 800}}),
 }
 
 
@@ -126,11 +138,12 @@ def motor_si(inp: dict) -> tuple[dict, dict, dict | None]:
     delta = ds.get("winding") == "delta"
     for key, fields in (("rs", ("rs_ohm",)), ("l", ("ld_h", "lq_h"))):
         unit = "ohm" if key == "rs" else "h"
-        line, phase = ds.get(f"{key}_line_{unit}"), ds.get(f"{key}_phase_{unit}")
-        # a star's terminals see two phases in series; a delta phase's star equivalent is a third
-        value = line / 2.0 if line is not None else phase / 3.0 if delta else phase
         for f in fields:
-            m[f] = value
+            # an axis-specific value (Ld, Lq) wins over one L for both axes
+            axis = f"{f[:2]}_" if key == "l" and any(k.startswith(f[:2] + "_") for k in ds) else f"{key}_"
+            line, phase = ds.get(f"{axis}line_{unit}"), ds.get(f"{axis}phase_{unit}")
+            # a star's terminals see two phases in series; a delta phase's star equivalent is a third
+            m[f] = line / 2.0 if line is not None else phase / 3.0 if delta else phase
     if "dc_bus_v" in ds:
         m["rated_voltage_v"] = ds["dc_bus_v"] / R2  # linear SVPWM: line amplitude = U_dc
         d.setdefault("udc_v", ds["dc_bus_v"])

@@ -18,6 +18,10 @@ describe('toSI: display unit → the SI value of the input JSON (exact for the u
     [1.1, 'µH', 0.0000011],
     [1e-7, 'mH', 1e-10],
     [12.5, 'kHz', 0.00008],
+    // EMRAX prints Ke as "0,0176 Vrms/1RPM": the input is V/krpm
+    [0.0176, 'V/rpm', 17.6],
+    [0.0304, 'V/rpm', 30.4],
+    [57, 'V/krpm', 57],
   ];
   for (const [v, u, want] of cases) it(`${v} ${u} → ${want}`, () => expect(toSI(v, u)).toBe(want));
 });
@@ -30,6 +34,7 @@ describe('fromSI: SI → display unit (12 significant digits)', () => {
     [0.0001, 'kHz', 10],
     [0.0000625, 'kHz', 16],
     [0.2, 'ms', 200],
+    [17.6, 'V/rpm', 0.0176],
   ];
   for (const [v, u, want] of cases) it(`${v} → ${want} ${u}`, () => expect(fromSI(v, u)).toBe(want));
 });

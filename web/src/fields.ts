@@ -68,6 +68,7 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
   'motor.ld_h': { units: L_UNITS, placeholderFrom: 'input.motor.ld_h' },
   'motor.lq_h': { units: L_UNITS, placeholderFrom: 'input.motor.lq_h' },
   'motor.bemf_v': { placeholderFrom: 'input.motor.bemf_v' },
+  'datasheet.ke_v_per_krpm': { units: ['V/krpm', 'V/rpm'] },
   'datasheet.l_line_h': { units: L_UNITS },
   'datasheet.ld_line_h': { units: L_UNITS },
   'datasheet.lq_line_h': { units: L_UNITS },

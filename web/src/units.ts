@@ -2,7 +2,7 @@
 // Powers of ten shift the decimal exponent (4.2 mH → "4.2e-3" → 0.0042), so the SI value is the
 // shortest decimal the user meant, never 4.2/1000 = 0.004200000000000001.
 
-export type UnitId = 'H' | 'mH' | 'µH' | 's' | 'ms' | 'µs' | 'kHz';
+export type UnitId = 'H' | 'mH' | 'µH' | 's' | 'ms' | 'µs' | 'kHz' | 'V/krpm' | 'V/rpm';
 
 interface UnitDef {
   /** SI = display / div ... */
@@ -19,6 +19,9 @@ export const UNITS: Record<UnitId, UnitDef> = {
   ms: { div: 1e3 },
   'µs': { div: 1e6 },
   kHz: { recip: 1e3 },
+  // A back-EMF constant as some datasheets print it: volts per single rpm (EMRAX "Vrms/1RPM").
+  'V/krpm': { div: 1 },
+  'V/rpm': { div: 1e-3 },
 };
 
 /** `x`·10^-k through the decimal text of x (exact for every decimal the user can type). */

@@ -199,10 +199,16 @@ export default async function screens(ctx) {
     await waitValue(page, 'vendor.Rpm.value', 15022);
   });
 
-  // Five real motors (tests/golden/datasheets, hand calculations by a pulab-free oracle): typed into
-  // a blank form as the datasheet prints them, inductances in mH, Ts in µs.
-  const DATASHEETS = ['siemens_1ft7044_ak7', 'rexroth_mhd041a_144', 'rexroth_mhp112a_024', 'maxon_ec45flat_50w_24v', 'maxon_ec45flat_70w_411812'];
-  const typed = (path, v) => String(Number((/_h$/.test(path) ? v * 1e3 : path === 'drive.ts_s' ? v * 1e6 : v).toPrecision(12)));
+  // Six real motors (tests/golden/datasheets, hand calculations by a pulab-free oracle): typed into
+  // a blank form as the datasheet prints them, inductances in the datasheet's unit, Ts in µs.
+  const DATASHEETS = ['siemens_1ft7044_ak7', 'rexroth_mhd041a_144', 'rexroth_mhp112a_024', 'maxon_ec45flat_50w_24v', 'maxon_ec45flat_70w_411812', 'emrax_228_lv'];
+  // EMRAX prints µH and a Ke in "Vrms/1RPM": the form's unit choices take them as printed.
+  const PRINTED_UNITS = { emrax_228_lv: { L: 'µH', 'datasheet.ke_v_per_krpm': 'V/rpm' } };
+  const SCALE = { 'µH': 1e6, mH: 1e3, 'V/rpm': 1e-3 };
+  const typed = (path, v, units) => {
+    const unit = /_h$/.test(path) ? units.L : units[path];
+    return String(Number((unit ? v * SCALE[unit] : path === 'drive.ts_s' ? v * 1e6 : v).toPrecision(12)));
+  };
   const flat = (o, p = '', out = []) => {
     if (o && typeof o === 'object' && !Array.isArray(o)) for (const [k, v] of Object.entries(o)) flat(v, p ? `${p}.${k}` : k, out);
     else if (typeof o === 'number') out.push([p, o]);
@@ -213,12 +219,15 @@ export default async function screens(ctx) {
     await check(`screens: ${name} typed from a blank datasheet gives the hand calculation, every firmware's integers or its limits`, async () => {
       const g = JSON.parse(readFileSync(join(ROOT, `tests/golden/datasheets/${name}.json`), 'utf8'));
       await page.click('button.from-datasheet');
-      await page.selectOption('select[data-unit-for="datasheet.l_line_h"]', 'mH');
+      const units = { L: 'mH', ...PRINTED_UNITS[name] };
+      for (const [path, unit] of Object.entries(units)) {
+        await page.selectOption(`select[data-unit-for="${path === 'L' ? 'datasheet.l_line_h' : path}"]`, unit);
+      }
       for (const [section, fields] of Object.entries(g.input)) {
         for (const [k, v] of Object.entries(fields)) {
           const path = `${section}.${k}`;
           if (typeof v === 'string') await page.selectOption(`select[name="${path}"]`, v);
-          else await page.fill(`input[name="${path}"]`, typed(path, v));
+          else await page.fill(`input[name="${path}"]`, typed(path, v, units));
         }
       }
       await page.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 15_000 });
@@ -247,6 +256,7 @@ export default async function screens(ctx) {
     });
   }
   await page.selectOption('select[data-unit-for="motor.ld_h"]', 'µH');
+  await page.selectOption('select[data-unit-for="datasheet.ke_v_per_krpm"]', 'V/krpm');
 
   await check('screens: sweep boundaries print the decimal a user would type, the exact double in data-value', async () => {
     await page.$eval('#panel-sweep', (e) => e.scrollIntoView());
