@@ -2,10 +2,11 @@
 // already open, one Python call per keystroke whichever firmware is shipped, and what a new
 // user's pass over the five datasheet motors found.
 // Run alone: node tests/e2e/run.mjs screens-pass   (E2E_NO_BUILD=1 to reuse dist/)
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
 export default async function screensPass(ctx) {
-  const { check, assert, newPage, subSrv, ready, waitValue, cpython, golden, SHOTS } = ctx;
+  const { check, assert, newPage, subSrv, ready, waitValue, cpython, golden, ROOT, SHOTS } = ctx;
   const seed = golden('01_seed_motor.json');
   const link = (inp) => `${subSrv.url}#in=${encodeURIComponent(JSON.stringify(inp))}`;
 
@@ -65,4 +66,31 @@ export default async function screensPass(ctx) {
     await p.context().close();
   });
 
+
+  await check('screens-pass: a firmware that cannot hold a datasheet motor says why at its own panel, first in the Firmware view, and in the strip once shipped', async () => {
+    // The Rexroth MHP112A-024 as printed: Microchip's MCAF_MOTOR_PSI_BASE_DT needs 1.68× its Q13
+    // (the pulab-free oracle's integers, tests/golden/datasheets); Inovance holds it.
+    const g = JSON.parse(readFileSync(join(ROOT, 'tests/golden/datasheets/rexroth_mhp112a_024.json'), 'utf8'));
+    const want = g.expected.profiles.microchip.MCAF_MOTOR_PSI_BASE_DT;
+    assert(want.value === 32767, `oracle: stored ${want.value}`);
+    const p = await newPage({ context: { viewport: { width: 390, height: 844 } } });
+    await p.goto(`${link(g.input).replace('#', '?lang=zh#')}`);
+    await ready(p);
+    await p.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 30_000 });
+    await p.click('nav.tabs a[data-view="firmware"]');
+    const order = await p.$$eval('section.panel:not([hidden])', (s) => s.map((e) => e.dataset.panel));
+    const nav = await p.$$eval('nav.subtabs a[data-nav]', (as) => as.map((a) => a.dataset.nav));
+    assert(JSON.stringify(order) === JSON.stringify(nav) && order[0] === 'vendors', `Firmware view shows ${order}, its navigation lists ${nav}`);
+    const box = '#panel-vendors .firmware-limits[data-firmware="microchip"]';
+    await p.waitForSelector(`${box} [data-field="profiles.microchip.MCAF_MOTOR_PSI_BASE_DT"]`, { timeout: 30_000 });
+    assert(/Q12/.test(await p.textContent(box)), 'the advice does not name the Q format that holds it');
+    assert((await p.$$('#panel-vendors .firmware-limits')).length === 1, 'a firmware that holds the motor shows a limits box');
+    const lines = await p.$$eval('#panel-vendors > h2 .why, #panel-vendors > h2 .scroll-cue', (els) => els.map((e) => e.getClientRects().length));
+    assert(lines.length === 2 && lines.every((n) => n === 1), `"why?" or the scroll cue broken over lines: ${lines}`);
+    await p.screenshot({ path: join(SHOTS, 'screens-pass-390-zh-firmware-limits.png') });
+    await p.selectOption('select[name="answer.profile"]', 'microchip');
+    await waitValue(p, 'profiles.microchip.constants.MCAF_MOTOR_PSI_BASE_DT.value', want.value);
+    await p.waitForSelector('section.answer .firmware-limits[data-firmware="microchip"] [data-field="profiles.microchip.MCAF_MOTOR_PSI_BASE_DT"]', { timeout: 10_000 });
+    await p.context().close();
+  });
 }

@@ -83,11 +83,14 @@ export class Layout {
     this.views = viewsFor(panels.map((p) => p.id));
     if (!this.views.some((v) => v.id === this.view)) this.view = this.openingView();
     for (const sec of sections) this.revealOnScroll(sec);
+    // In the order the views list them (their sub-navigation's order), not the registry's.
+    const ids = this.views.flatMap((v) => v.panels);
+    const ordered = ids.map((id) => sections[panels.findIndex((p) => p.id === id)]);
     // Bases and per-unit values side by side on wide screens.
-    const ib = panels.findIndex((p) => p.id === 'bases');
-    const body = has('bases') && has('pu') && panels[ib + 1]?.id === 'pu'
-      ? [...sections.slice(0, ib), h('div', { class: 'pair' }, sections[ib], sections[ib + 1]), ...sections.slice(ib + 2)]
-      : sections;
+    const ib = ids.indexOf('bases');
+    const body = has('bases') && has('pu') && ids[ib + 1] === 'pu'
+      ? [...ordered.slice(0, ib), h('div', { class: 'pair' }, ordered[ib], ordered[ib + 1]), ...ordered.slice(ib + 2)]
+      : ordered;
     this.root.replaceChildren(
       chrome,
       h('div', { class: 'layout' },
