@@ -329,10 +329,10 @@ MESSAGES = {
                                           "{advice}",
                                           "{profile} 固件无法表示这台电机：{results} 超出其字长，只能存下"
                                           "最大整数。{advice}"),
-    "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and {source} = "
-                     "{si:g} {si_unit} needs {value}; a 16-bit parameter would keep {stored} "
-                     "({stored_si:g} {si_unit}). Not computed: {results}",
-                     "{name} 是以 {unit} 为单位的 Uint16，最大只能表示 {max:g} {si_unit}；{source} = "
+    "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and "
+                     "{source_label} = {si:g} {si_unit} needs {value}; a 16-bit parameter would "
+                     "keep {stored} ({stored_si:g} {si_unit}). Not computed: {results}",
+                     "{name} 是以 {unit} 为单位的 Uint16，最大只能表示 {max:g} {si_unit}；{source_label} = "
                      "{si:g} {si_unit} 需要 {value}，16 位参数只会存下 {stored}（{stored_si:g} "
                      "{si_unit}）。无法计算：{results}"),
     "limit.uint16_advice": ("This is a limit of the vendor's code, not of the motor or of your inputs: "

@@ -93,4 +93,18 @@ export default async function screensPass(ctx) {
     await p.waitForSelector('section.answer .firmware-limits[data-firmware="microchip"] [data-field="profiles.microchip.MCAF_MOTOR_PSI_BASE_DT"]', { timeout: 10_000 });
     await p.context().close();
   });
+
+  await check('screens-pass: why a firmware cannot hold the motor names the form field by its label, in the reader\'s language', async () => {
+    const robot = golden('23_limit_robot_28krpm.json');
+    for (const [lang, label] of [['zh', '频率基值 f_b（最大频率） = 3266.67 Hz'], ['en', 'Base frequency f_b (drive max.) = 3266.67 Hz']]) {
+      const p = await newPage();
+      await p.goto(link(robot.input).replace('#', `?lang=${lang}#`));
+      await ready(p);
+      const sel = 'section.answer .firmware-limits [data-field="raw.FullFreq01"]';
+      await p.waitForSelector(sel, { timeout: 30_000 });
+      const text = await p.textContent(sel);
+      assert(text.includes(label) && !text.includes('drive.base_freq_hz'), `${lang}: "${text}"`);
+      await p.context().close();
+    }
+  });
 }
