@@ -223,3 +223,12 @@ def test_the_firmware_shipped_grades_the_others_limits_as_notes():
     assert x[0]["severity"] == "note" and x[0]["field"] == "conventions.firmware"
     assert x[0]["label"] == "Firmware you ship" and x[0]["label_zh"] == "所用固件"
     assert r["review"]["headroom"]["limit_v"] == 24 / math.sqrt(2)
+
+
+def test_a_firmware_that_cannot_hold_the_motor_is_named_as_the_reader_knows_it():
+    """The finding names the profile as the picker does (Inovance, 汇川), not by its id."""
+    inp = json.loads((ROOT / "tests/golden/23_limit_robot_28krpm.json").read_text())["input"]
+    x = [x for x in report(inp)["review"]["findings"] if x["code"] == "unrepresentable"][0]
+    assert x["message"].startswith("the Inovance firmware cannot hold this motor (raw.FullFreq01")
+    assert x["message_zh"].startswith("汇川固件无法表示这台电机（raw.FullFreq01")
+    assert x["key"] == "firmware.inovance"

@@ -94,8 +94,9 @@ export default async function screensPass(ctx) {
     await p.context().close();
   });
 
-  await check('screens-pass: why a firmware cannot hold the motor names the form field by its label, in the reader\'s language', async () => {
+  await check('screens-pass: why a firmware cannot hold the motor names the form field by its label and the firmware by its name, in the reader\'s language', async () => {
     const robot = golden('23_limit_robot_28krpm.json');
+    const NAMED = { zh: '汇川固件无法表示这台电机', en: 'the Inovance firmware cannot hold this motor' };
     for (const [lang, label] of [['zh', '频率基值 f_b（最大频率） = 3266.67 Hz'], ['en', 'Base frequency f_b (drive max.) = 3266.67 Hz']]) {
       const p = await newPage();
       await p.goto(link(robot.input).replace('#', `?lang=${lang}#`));
@@ -104,6 +105,9 @@ export default async function screensPass(ctx) {
       await p.waitForSelector(sel, { timeout: 30_000 });
       const text = await p.textContent(sel);
       assert(text.includes(label) && !text.includes('drive.base_freq_hz'), `${lang}: "${text}"`);
+      // the review's finding names the firmware as the picker does
+      const finding = await p.textContent('#panel-review li.finding[data-finding="firmware.inovance"] .msg');
+      assert(finding.startsWith(NAMED[lang]), `${lang}: "${finding}"`);
       await p.context().close();
     }
   });
