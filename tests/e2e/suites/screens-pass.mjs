@@ -111,4 +111,23 @@ export default async function screensPass(ctx) {
       await p.context().close();
     }
   });
+
+  await check('screens-pass: on a phone the datasheet conversions keep each formula whole and the values on screen', async () => {
+    // The maxon EC 45 flat 50 W as printed: seven conversions (terminal R and L, Kv, the DC bus).
+    const g = JSON.parse(readFileSync(join(ROOT, 'tests/golden/datasheets/maxon_ec45flat_50w_24v.json'), 'utf8'));
+    const p = await newPage({ context: { viewport: { width: 390, height: 844 } } });
+    await p.goto(link(g.input).replace('#', '?lang=zh#'));
+    await ready(p);
+    await p.waitForFunction(() => document.documentElement.dataset.numbers === 'live', null, { timeout: 30_000 });
+    await p.$eval('#panel-datasheet', (e) => e.scrollIntoView());
+    await p.waitForSelector('table.conversions [data-key="datasheet.conversions.0.value"]');
+    const cells = await p.$$eval('table.conversions tbody tr', (rows) => rows.map((r) => ({
+      lines: r.querySelector('code.formula').getClientRects().length,
+      right: r.querySelector('[data-key$=".value"]').getBoundingClientRect().right,
+    })));
+    assert(cells.length === 7, `${cells.length} conversions`);
+    assert(cells.every((c) => c.lines <= 3 && c.right <= 390), `formula lines / value right edge: ${JSON.stringify(cells)}`);
+    await (await p.$('#panel-datasheet')).screenshot({ path: join(SHOTS, 'screens-pass-390-zh-datasheet.png') });
+    await p.context().close();
+  });
 }
