@@ -84,6 +84,8 @@ export default async function screensPass(ctx) {
     const box = '#panel-vendors .firmware-limits[data-firmware="microchip"]';
     await p.waitForSelector(`${box} [data-field="profiles.microchip.MCAF_MOTOR_PSI_BASE_DT"]`, { timeout: 30_000 });
     assert(/Q12/.test(await p.textContent(box)), 'the advice does not name the Q format that holds it');
+    const said = await p.$eval(`${box} li`, (li) => [...li.childNodes].filter((n) => !(n instanceof Element && n.classList.contains('hint'))).map((n) => n.textContent).join(''));
+    assert(said.split('MCAF_MOTOR_PSI_BASE_DT').length === 2, `the constant named more than once: "${said}"`);
     assert((await p.$$('#panel-vendors .firmware-limits')).length === 1, 'a firmware that holds the motor shows a limits box');
     const lines = await p.$$eval('#panel-vendors > h2 .why, #panel-vendors > h2 .scroll-cue', (els) => els.map((e) => e.getClientRects().length));
     assert(lines.length === 2 && lines.every((n) => n === 1), `"why?" or the scroll cue broken over lines: ${lines}`);
