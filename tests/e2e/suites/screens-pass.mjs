@@ -114,7 +114,7 @@ export default async function screensPass(ctx) {
     }
   });
 
-  await check('screens-pass: on a phone the datasheet conversions keep each formula whole and the values on screen', async () => {
+  await check('screens-pass: on a phone the datasheet conversions keep each formula whole and the values on screen; U_dc from the datasheet shows at its field', async () => {
     // The maxon EC 45 flat 50 W as printed: seven conversions (terminal R and L, Kv, the DC bus).
     const g = JSON.parse(readFileSync(join(ROOT, 'tests/golden/datasheets/maxon_ec45flat_50w_24v.json'), 'utf8'));
     const p = await newPage({ context: { viewport: { width: 390, height: 844 } } });
@@ -130,6 +130,8 @@ export default async function screensPass(ctx) {
     assert(cells.length === 7, `${cells.length} conversions`);
     assert(cells.every((c) => c.lines <= 3 && c.right <= 390), `formula lines / value right edge: ${JSON.stringify(cells)}`);
     await (await p.$('#panel-datasheet')).screenshot({ path: join(SHOTS, 'screens-pass-390-zh-datasheet.png') });
+    // U_dc not typed: its field shows the datasheet's DC bus in use, as the other derived fields do
+    assert((await p.getAttribute('input[name="drive.udc_v"]', 'placeholder')) === '= 24', 'U_dc from the datasheet not shown at its field');
     await p.context().close();
   });
 }
