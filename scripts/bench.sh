@@ -14,3 +14,5 @@ if [ -f tests/e2e/bench-page.mjs ]; then node tests/e2e/bench-page.mjs; fi
 PYTHONPATH=py .venv/bin/python tests/bench/family_bench.py
 # Family proofs: 6-dimensional boxes (the Pyodide numbers are tests/bench/prove.bench.ts above).
 PYTHONPATH=py .venv/bin/python tests/bench/prove_bench.py
+# The tracer on its 60-line unit (add --before REV to compare builds side by side).
+PYTHONPATH=py .venv/bin/python tests/bench/trace_bench.py

@@ -45,7 +45,7 @@ def _fail(e: InputError) -> str:
     reply = {"ok": False, "field": e.field, "message": e.message, "message_zh": e.message_zh,
              "code": e.code, "params": _strict(e.params)}
     # The tracer's errors say where in the code, and which inputs the code has when it compiled.
-    for key in ("line", "column", "inputs", "functions"):
+    for key in ("line", "column", "inputs", "functions", "macros"):
         if hasattr(e, key):
             reply[key] = getattr(e, key)
     return json.dumps(reply, allow_nan=False)
@@ -130,6 +130,7 @@ _TRACE_KEYS = ("code", "target", "set", "global_q", "define", "entry", "zero_uns
 
 def _trace(req) -> dict:
     from .ctrace import TraceError, compile_code, trace_checked
+    from .ctrace.macro_entry import entry_macros
     from .ctrace.parser import parse as parse_c
     if not isinstance(req, dict):
         raise InputError("input", code="not_object", got=shown(req))
@@ -139,10 +140,10 @@ def _trace(req) -> dict:
                          expected=", ".join(_TRACE_KEYS))
     zero_unset = req.get("zero_unset", False)
     if not isinstance(zero_unset, bool):
-        raise InputError("zero_unset", f"must be true or false, got {shown(zero_unset)}")
+        raise InputError("zero_unset", code="not_flag", got=shown(zero_unset))
     defines = req.get("define") or []
     if not isinstance(defines, list):
-        raise InputError("define", "must be a list of NAME[=VALUE] texts")
+        raise InputError("define", code="trace_define_list")
     sets = req.get("set") or {}
     if not isinstance(sets, dict):
         raise InputError("set", code="not_object", got=shown(sets))
@@ -153,8 +154,9 @@ def _trace(req) -> dict:
     except InputError as e:
         if isinstance(code, str) and (e.field in ("entry", "set") or (
                 isinstance(e, TraceError) and e.field.startswith("set."))):
-            try:  # the code parses: offer its functions so the user can pick one
-                e.functions = list(parse_c(code).functions)
+            try:  # the code parses: offer its functions (and macros) so the user can pick one
+                program = parse_c(code)
+                e.functions, e.macros = list(program.functions), entry_macros(program)
             except InputError:
                 pass
         raise
@@ -162,7 +164,8 @@ def _trace(req) -> dict:
         reply = trace_checked(checked, sets, req.get("global_q"), zero_unset)
     except InputError as e:
         e.inputs = checked.inputs
-        e.functions = list(checked.functions)
+        e.functions = [f for f in checked.functions if f not in checked.program.macros]
+        e.macros = entry_macros(checked.program)
         raise
     reply.pop("ok", None)
     return reply
@@ -204,8 +207,9 @@ def _prove(op: str):
     """The family proof's kinds (:mod:`pulab.analyses.prove`): ``prove`` (every integer, in
     slices), ``prove.plan`` (the integer names and the raw box), ``prove.integer`` with
     ``name`` (one entry, in slices: a page proves integer by integer to show progress),
-    ``prove.summary`` with ``integers`` (the entries → the whole result) and, for profile
-    ``ti``, ``prove.propose`` (the finest GLOBAL_Q proven over the box)."""
+    ``prove.summary`` with ``integers`` (the entries → the whole result) and
+    ``prove.propose`` (each constant's finest format in its vendor's form,
+    :mod:`pulab.analyses.propose`)."""
     def handler(req):
         from .analyses import prove as pv  # imported on first use: report-only pages stay lean
         body = {k: v for k, v in req.items() if k not in ("op", "name", "integers")} \
@@ -227,9 +231,8 @@ def _prove(op: str):
                     isinstance(e, dict) and "verdict" in e for e in entries.values()):
                 raise InputError("prove.integers", code="not_object", got=shown(entries))
             return {"proof": pv.summary(problem, entries)}
-        if problem.profile != "ti":
-            raise InputError("prove.propose", code="prove_propose_ti")
-        return {"proposal": pv.propose_global_q(body)}
+        from .analyses.propose import propose
+        return {"proposal": propose(body)}
     return handler
 
 

@@ -74,13 +74,15 @@ def sim_csv(r: dict, which: str) -> str:
 
     One column per variant and signal, its unit in the name: ``t_s``, ``si.id_A``,
     ``fixed.uq_V`` (phase voltage), ``q15.theta_hat_rad``, ``pu.omega_hat_rad_per_s``
-    (electrical).
+    (electrical); then, for the current loop, each other firmware's run that exists
+    (``ti.id_A``, …, ``microchip.uq_V``, ``sim.current.by_profile``).
     """
     s = r.get("sim", {}).get(which)
     if s is None:
         raise ValueError(f"the report has no {which} simulation")
     cols, names = [s["t"]], ["t_s"]
-    for variant, series in s["variants"].items():
+    runs = {name: run["variant"] for name, run in s.get("by_profile", {}).items() if run["ran"]}
+    for variant, series in [*s["variants"].items(), *runs.items()]:
         for sig, vals in series.items():
             cols.append(vals)
             names.append(f"{variant}.{sig}_{_CSV_UNITS[sig]}")

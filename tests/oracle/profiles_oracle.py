@@ -41,14 +41,16 @@ def nearest(x: float, q: int) -> int:
 
 def rec(value: int, ideal_real: float, q: int, scale: float) -> dict:
     ideal = float(ideal_real) * 2.0 ** q
-    return {"value": int(value), "ideal": ideal, "si": value / 2.0 ** q * scale}
+    return {"value": int(value), "ideal": ideal, "si": value / 2.0 ** q * scale, "q": q}
 
 
 def sat(v: int, lo: int, hi: int) -> int:
     return int(np.clip(v, lo, hi))
 
 
-def profiles(inp: dict) -> dict:
+def profiles(inp: dict, choices: dict | None = None) -> dict:
+    """Every profile's constants; ``choices``, when given, receives the shifts, divisors and
+    Qs each profile chose ({profile: {name: integer}})."""
     prof_in = inp.get("profiles") or {}
     base = {k: v for k, v in inp.items() if k != "profiles"}
     o = oracle_report(base)
@@ -186,8 +188,15 @@ def profiles(inp: dict) -> dict:
     mc["KIP"] = q16(kp / z, gq(kp / z), z)
     mc["KII"] = q16(ki * ts / z, gq(ki * ts / z), z / ts)
     out["microchip"] = mc
+    if choices is not None:
+        choices.update(nxp={"M1_TO_THETA_SHIFT": sh}, st={"TF_KPDIV": kpdiv, "TF_KIDIV": kidiv},
+                       microchip={"KIP_Q": gq(kp / z), "KII_Q": gq(ki * ts / z)})
+        # The real value each constant stores (before its own scaling by 2^q, after the shift).
+        choices["real"] = {name: {k: r_["ideal"] / 2.0 ** r_["q"] * 2.0 ** r_.get("shift", 0)
+                                  for k, r_ in p.items()} for name, p in out.items()
+                           if name != "inovance"}
     return {name: {k: {kk: float(vv) if kk != "value" and kk != "shift" else vv
-                       for kk, vv in r_.items()} for k, r_ in p.items()}
+                       for kk, vv in r_.items() if kk != "q"} for k, r_ in p.items()}
             for name, p in out.items()}
 
 
@@ -200,6 +209,40 @@ CASES = {
         "microchip": {"voltage_base_v": 400.0, "current_base_a": 11.0,
                       "velocity_base_hz": 500.0}}},
 }
+
+
+# The C word each constant is stored in and how the vendor rounds into it (vendor-scaling.md
+# and the files named there): (min, max, 'trunc' | 'nearest').
+_I16, _U16, _I32 = (-2 ** 15, 2 ** 15 - 1), (0, 2 ** 16 - 1), (-2 ** 31, 2 ** 31 - 1)
+WORDS = {
+    "ti": {k: (*_I32, "trunc") for k in ("Kp_Id", "Ki_Id", "Kp_Iq", "Ki_Iq", "Kp_Id_default",
+                                         "Ki_Id_default", "Kp_Iq_default", "Ki_Iq_default",
+                                         "Kp_spd_default", "Ki_spd_default", "Rs_pu")},
+    "nxp": {**{k: (*_I32, "trunc") for k in ("M1_D_KP_GAIN", "M1_D_KI_GAIN", "M1_Q_KP_GAIN",
+                                            "M1_Q_KI_GAIN", "M1_I_SCALE", "M1_U_SCALE",
+                                            "M1_E_SCALE", "M1_WI_SCALE")},
+            "M1_TO_THETA_GAIN": (*_I16, "trunc")},
+    "st": {**{k: (*_I16, "nearest") for k in ("PID_FLUX_KP_DEFAULT", "PID_FLUX_KI_DEFAULT",
+                                              "PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT",
+                                              "NOMINAL_CURRENT")},
+           "CURRENT_CONV_FACTOR": (*_U16, "trunc"), "MAX_BEMF_VOLTAGE": (*_U16, "trunc"),
+           "MAX_VOLTAGE": (*_I16, "trunc"), "C1": (*_I32, "trunc"), "C3": (*_I32, "trunc"),
+           "C5": (*_I32, "trunc")},
+    "microchip": {k: (*_I16, "nearest") for k in (
+        "MCAF_MOTOR_RS", "MCAF_MOTOR_LD_BASE_DT", "MCAF_MOTOR_LD_BASE_OMEGA_E",
+        "MCAF_MOTOR_LQ_BASE_DT", "MCAF_MOTOR_LQ_BASE_OMEGA_E", "MCAF_MOTOR_PSI_BASE_OMEGA_E",
+        "MCAF_MOTOR_PSI_BASE_DT", "MCAF_MOTOR_KE", "KIP", "KII")},
+}
+
+
+def fails(profile: str, key: str, rec: dict) -> bool:
+    """Whether a constant breaks (docs/contract.md, "Family proof"): the real it stores,
+    rounded the vendor's way, is outside its word (a saturating macro clamps it, a C cast is
+    undefined), or it stores 0 for a non-zero real (all resolution lost)."""
+    lo, hi, how = WORDS[profile][key]
+    x = rec["ideal"]
+    r = np.trunc(x) if how == "trunc" else np.sign(x) * np.floor(np.abs(x) + 0.5)
+    return not lo <= r <= hi or (rec["value"] == 0 and x != 0)
 
 
 def main(argv: list[str]) -> int:

@@ -247,6 +247,19 @@ def test_cli_bad_input_exits_2_with_one_line(args, stdin, prefix):
     assert p.stderr.startswith(prefix) and p.stderr.count("\n") == 1, p.stderr
 
 
+def test_cli_reads_latin1_comments_and_refuses_such_bytes_outside_them(tmp_path):
+    f = tmp_path / "gbk.c"
+    f.write_bytes(b"/* Rule\xa011.4 */ long a = 3; // e\xba\xcd\nlong b = a * 2;\n")
+    p = subprocess.run([sys.executable, "-m", "pulab", "trace", str(f), "--format", "text"],
+                       capture_output=True, text=True, cwd=ROOT,
+                       env={"PYTHONPATH": str(ROOT / "py")})
+    assert p.returncode == 0 and "b = 6" in p.stdout, p.stderr
+    f.write_bytes(b"long a = 3;\nlong b = a \xd7 2;\n")
+    p = subprocess.run([sys.executable, "-m", "pulab", "trace", str(f)], capture_output=True,
+                       text=True, cwd=ROOT, env={"PYTHONPATH": str(ROOT / "py")})
+    assert p.returncode == 2 and p.stderr.startswith("error: code: 2:12: unexpected character")
+
+
 def test_fuzzed_api_requests_give_only_error_replies():
     rng = random.Random(11)
     values = [None, True, 0, -1, 2**70, 1.5, "", "c28x", "arm", "0x10", [], {}, [1], {"a": 1},
@@ -280,3 +293,25 @@ def test_cli_text_format_is_one_line_per_statement(tmp_path):
     # >> rounds toward -inf: -21 >> 2 = -6 loses 0.75 LSB (-21/4 = -5.25)
     assert "(floor, 0.75 LSB lost)" in lines[3]
     assert lines[5] == "rounding acc: 1 toward -inf, 0 toward zero, at most 0.75 LSB"
+
+
+@pytest.mark.parametrize("code,where,reason,text", [
+    ("int f(int x) {\n  int g(int y) { return y; }\n  return x;\n}", "2:7", "trace_nested_function",
+     "a function g(…) can only be declared at file scope (a function definition is not "
+     "supported inside a function)"),
+    ("union u { int a; };", "1:1", "trace_not_supported", "'union' is not supported"),
+    ("long x = 1.5;", "1:10", "trace_float_constant", "1.5: only integer constants"),
+    ("int f(int x, ...) { return x; }", "1:14", "trace_variadic",
+     "variadic functions are not supported"),
+    ("struct s { int a : 3; };", "1:18", "trace_bitfield", "bit-fields are not supported"),
+    ("int f(int x) { return x, 1; }", "1:24", "trace_comma", "the comma operator"),
+    ("long x = 3 @ 4;", "1:12", "trace_character", "unexpected character '@'"),
+    ("int f(int x) { goto out; }", "1:16", "trace_not_supported", "'goto' is not supported"),
+])
+def test_parser_errors_are_catalog_codes_naming_the_construct(code, where, reason, text):
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", entry=None)
+    err = e.value
+    assert err.code == "trace_at" and err.params["reason"]["code"] == reason, err.params
+    assert f"{err.line}:{err.column}" == where and text in err.message, err.message
+    assert chinese(err.message_zh)

@@ -165,6 +165,28 @@ albe_t scaled(phase_t x, int16_t gain_q12)
 }
 """
 
+HANDLE = r"""
+#include <stdint.h>
+typedef struct _Lim_ { int32_t gain; int32_t state; int32_t hi; int32_t lo; } Lim;
+typedef struct _Lim_ *LimHandle;
+typedef struct { int32_t gain; int32_t state; int32_t hi; int32_t lo; } LimView;
+
+static inline int32_t lim_run(LimHandle handle, const int32_t x)
+{
+  Lim *obj = (Lim *)handle;
+  void *raw = (void *)obj;
+  const LimView *view = (const LimView *)raw;
+  int32_t y = (int32_t)(((int64_t)obj->gain * x) >> 12) + view->state;
+  obj->state = y >> 4;
+  return y > obj->hi ? obj->hi : (y < obj->lo ? obj->lo : y);
+}
+
+int32_t lim_step(Lim *lim, int32_t x)
+{
+  return lim_run((LimHandle)lim, x);
+}
+"""
+
 ISQRT = r"""
 #include <stdint.h>
 uint16_t isqrt32(uint32_t v)
@@ -284,6 +306,8 @@ def test_unset_inputs_error_names_them_or_read_as_zero():
     ("int f(int x) { while (x) { x = 1; } return x; }", "f", {"x": 1}, "code",
      "more than 10000 statements executed"),
     ("struct s; int f(struct s *p) { return 0; }", "f", {}, "code",
+     "p is a handle to an object of unknown type: the entry casts it to none"),
+    ("struct s; int f(struct s x) { return 0; }", "f", {}, "code",
      "struct s is declared but its fields are not pasted"),
     ("typedef struct { int a; } S; int f(S *p) { return p->b; }", "f", {}, "code",
      "struct S has no field b"),
@@ -291,6 +315,13 @@ def test_unset_inputs_error_names_them_or_read_as_zero():
     ("int f(int x) { int y; return y; }", "f", {"x": 1}, "code",
      "y is read before it has a value"),
     ("int f(int x) { return x; }", "f", {"q": 1}, "set.q", "no variable q is declared"),
+    ("#include <stdint.h>\nint16_t f(int32_t *p) {\n  return *(int16_t *)p; }", "f", {}, "code",
+     "3:11: (int16_t *)p would read int * as short *"),
+    ("typedef struct { int a; } A; typedef struct { int b; } B;\n"
+     "int f(A *p) { void *v = p; B *q = (B *)v; return q->b; }", "f", {}, "code",
+     "2:35: (B *)v would read struct A * as struct B * (a different memory layout"),
+    ("int f(int x) { return *(int *)x; }", "f", {}, "code",
+     "(int *)x: a pointer cast needs a pointer, not int"),
 ])
 def test_errors_name_the_construct(code, entry, sets, field, text):
     with pytest.raises(InputError) as e:
@@ -357,6 +388,10 @@ UNITS = {
                      [("int16_t", "x.a"), ("int16_t", "x.b"), ("int16_t", "gain_q12")],
                      [("int16_t", "return.alpha"), ("int16_t", "return.beta")], ret="albe_t"),
                 {}),
+    "handle": (Unit(HANDLE, "lim_step", [("Lim *", "lim"), ("int32_t", "x")],
+                    [("int32_t", "x"), ("int32_t", "lim.gain"), ("int32_t", "lim.state"),
+                     ("int32_t", "lim.hi"), ("int32_t", "lim.lo")],
+                    [("int32_t", "return"), ("int32_t", "lim.state")]), {}),
     "isqrt": (Unit(ISQRT, "isqrt32", [("uint32_t", "v")], [("uint32_t", "v")],
                    [("uint16_t", "return")]), {}),
 }
@@ -390,6 +425,66 @@ def test_units_match_the_compilers(target, capsys):
     assert pairs == VECTORS * len(UNITS)
 
 
+MODEL = r"""
+#include <stdint.h>
+typedef struct { int16_t gain; uint16_t shift; } Cfg;
+typedef struct { int32_t acc; int16_t out; int16_t hist[2]; } State;
+typedef struct tag_M Model;
+struct tag_M { const Cfg *cfg; State *st; int16_t in; };
+
+static void push(int16_t y[2], int16_t v)
+{
+  y[1] = y[0];
+  y[0] = v;
+}
+
+static State *model_state(const Model *m)
+{
+  return m->st;
+}
+
+void model_step(Model *const m)
+{
+  const Cfg *c = (const Cfg *)m->cfg;
+  State *s = ((State *) m->st);
+  s->acc += (int32_t)m->in * c->gain;
+  s->out = (int16_t)(s->acc >> (c->shift & 15U));
+  push(model_state(m)->hist, s->out);
+}
+"""
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_pointer_fields_of_the_entry_object_are_objects_of_their_own(target, capsys):
+    """As a generated model's step(RT_MODEL *const rtM): each pointer field points to an
+    object named after it (m.cfg.gain), also when a getter returns it; the compilers get the
+    objects from a caller this test writes."""
+    require(target, capsys)
+    # the tracer's name -> the C expression: the objects themselves (the driver loads the
+    # inputs before the caller points m's fields at them)
+    c_name = {"m.in": "m.in", "m.cfg.gain": "m_cfg.gain", "m.cfg.shift": "m_cfg.shift",
+              "m.st.acc": "m_st.acc", "m.st.out": "m_st.out", "m.st.hist[0]": "m_st.hist[0]",
+              "m.st.hist[1]": "m_st.hist[1]"}
+    outs = ("m.st.acc", "m.st.out", "m.st.hist[0]", "m.st.hist[1]")
+    checked = compile_code(MODEL, target, entry="model_step")
+    assert sorted(checked.inputs) == ["m.cfg.gain", "m.cfg.shift", "m.in", "m.st.acc",
+                                      "m.st.hist[0]"]
+    caller = "Cfg m_cfg; State m_st; Model m;\nvoid run_model(void) " \
+        "{ m.cfg = &m_cfg; m.st = &m_st; model_step(&m); }\n"
+    spell = {n: checked.symbols[n].spelling for n in c_name}
+    unit = Unit(MODEL + caller, "run_model", [],
+                [(spell[n], c_name[n]) for n in checked.inputs],
+                [(spell[n], c_name[n]) for n in outs])
+    rng = random.Random(f"model-{target}")
+    vectors = [random_vector(rng, unit, target) for _ in range(100)]
+    expected = []
+    for vec in vectors:
+        ev = run_checked(checked, {n: vec[c_name[n]] for n in checked.inputs}, None,
+                         record=False)
+        expected.append({c_name[n]: ev.values[n] for n in outs})
+    assert expected == run_unit(unit, vectors, target)
+
+
 CHAIN = "".join(f"int f{i}(int x) {{ return f{i + 1}(x); }}\n" for i in range(40)) + \
     "int f40(int x) { return x; } int f(int x) { return f0(x); }"
 TREE = "".join(f"int f{i}(int x) {{ return f{i + 1}(x) + f{i + 1}(x); }}\n" for i in range(24)) + \
@@ -408,4 +503,76 @@ def test_each_limit_is_a_one_line_error(code, text):
     with pytest.raises(TraceError) as e:
         trace(code, "arm", {"x": 1}, entry="f")
     assert text in e.value.message and "\n" not in e.value.message
+    assert chinese(e.value.message_zh)
+
+
+def test_a_header_extern_then_the_definition_is_one_object():
+    code = "typedef struct { short a[2]; } C;\nextern const C tab;\nextern int k;\n" \
+        "const C tab = { { 3, 4 } };\nint f(void) { return tab.a[1] + k; }"
+    r = trace(code, "arm", {"k": 10}, entry="f")
+    assert r["inputs"] == ["k"] and r["vars"]["return"]["value"] == 14
+    with pytest.raises(TraceError) as e:
+        trace("int k = 1;\nint k = 2;", "arm")
+    assert "2:5: k is already declared at 1:5" in str(e.value)
+
+
+def test_what_was_written_before_a_call_stays_written_after_it():
+    code = "typedef struct { int a; int b; } S;\nstatic int one(void) { return 1; }\n" \
+        "int f(S *p) { p->a = 2; p->b = one(); return p->a + p->b; }"
+    r = trace(code, "arm", {}, entry="f")
+    assert r["inputs"] == [] and r["vars"]["return"]["value"] == 3
+
+
+OPAQUE = r"""
+#include <stdint.h>
+typedef struct _LPF_ { int32_t b0; int32_t a1; int32_t y1; } LPF_Obj;
+typedef struct _LPF_Obj_ *LPF_Handle;   /* a tag never defined, as TI's modules have it */
+#define LPF_B0_DEFAULT _IQ(1.0/3.0)
+
+static inline int32_t LPF_run(LPF_Handle handle, const int32_t x)
+{
+  LPF_Obj *obj = (LPF_Obj *)handle;
+  int32_t y0 = _IQmpy(obj->b0, x) - _IQmpy(obj->a1, obj->y1);
+  obj->y1 = y0;
+  return y0;
+}
+
+int32_t LPF_default(LPF_Handle handle, const int32_t x)
+{
+  LPF_Obj *obj = (LPF_Obj *)handle;
+  obj->b0 = LPF_B0_DEFAULT;
+  return LPF_run(handle, x);
+}
+"""
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_an_opaque_handle_is_the_object_the_entry_casts_it_to(target, capsys):
+    """A handle typedef'd to a struct tag that is never defined points to the object its
+    casts name; _IQ of a constant expression folds as the compiler folds it."""
+    require(target, capsys)
+    checked = compile_code(OPAQUE, target, entry="LPF_default")
+    assert checked.inputs == ["x", "handle.a1", "handle.y1"]
+    unit = Unit(OPAQUE, "LPF_default", [("struct _LPF_ *", "handle"), ("int32_t", "x")],
+                [("int32_t", "x"), ("int32_t", "handle.a1"), ("int32_t", "handle.y1")],
+                [("int32_t", "return"), ("int32_t", "handle.b0"), ("int32_t", "handle.y1")])
+    rng = random.Random(f"opaque-{target}")
+    vectors = [random_vector(rng, unit, target) for _ in range(100)]
+    expected = [{n: run_checked(checked, v, None, record=False).values[n]
+                 for _, n in unit.outputs} for v in vectors]
+    assert expected == run_unit(unit, vectors, target)
+    assert expected[0]["handle.b0"] == 5592405  # (long)(1.0/3.0 * 2^24)
+
+
+def test_a_float_field_is_refused_only_where_it_is_used():
+    code = "#include <stdint.h>\ntypedef float float_t;\n" \
+        "typedef struct { int16_t avg; float_t conv; } Pow;\n" \
+        "void run(Pow *p, int16_t x) { p->avg += (int16_t)((x - p->avg) / 16); }\n" \
+        "int16_t scaled(Pow *p) { return (int16_t)p->conv; }"
+    r = trace(code, "arm", {"p.avg": 32, "x": 0}, entry="run")
+    assert r["vars"]["p.avg"]["value"] == 30 and "p.conv" not in r["vars"]
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", {}, entry="scaled", zero_unset=True)
+    assert "5:42: field conv of struct Pow: float_t is a floating-point type (typedef at 2:15)" \
+        in str(e.value)
     assert chinese(e.value.message_zh)

@@ -14,12 +14,12 @@ import time
 
 import pytest
 
-from ctrace_compilers import require, run_cases
+from ctrace_compilers import Unit, require, run_cases, run_unit
 from ctrace_gen import Case, random_vector
 from pulab.ctrace import TraceError, compile_code, run_checked, trace
 from pulab.ctrace.lexer import tokenize
 from pulab.ctrace.preprocess import MAX_EXPANDED_TOKENS, MAX_IF_DEPTH, preprocess
-from pulab.schema.messages import has_chinese
+from conftest import chinese
 
 VECTORS = 300
 
@@ -168,7 +168,7 @@ def test_bad_directives_name_line_and_construct(code, line, text):
     with pytest.raises(TraceError) as e:
         trace(code, "c28x")
     assert e.value.line == line and text in e.value.reason, e.value.message
-    assert has_chinese(e.value.message), e.value.message
+    assert chinese(e.value.message_zh), e.value.message
 
 
 def test_expansion_and_nesting_are_bounded():
@@ -202,7 +202,7 @@ def test_typedefs_and_vendor_type_names():
 def test_unsupported_constructs_are_named(code, column, text):
     with pytest.raises(TraceError) as e:
         trace(code, "arm")
-    assert e.value.column == column and text in e.value.reason and has_chinese(e.value.message)
+    assert e.value.column == column and text in e.value.reason and chinese(e.value.message_zh)
 
 
 IQ_CONSTANTS = ["0.1", "-0.57735026918963", "0.1f", "0.99999999", "1.0e-3", "-1", "0.5L",
@@ -246,7 +246,7 @@ def test_iq_conversion_macros_shift_as_iqmathlib(expr, value):
 def test_iq_of_a_variable_is_refused_by_name():
     with pytest.raises(TraceError) as e:
         trace("_iq x = 3;\n_iq y = _IQ(x);", "c28x")
-    assert "_IQ(…) needs a floating constant" in e.value.reason and has_chinese(e.value.message)
+    assert "_IQ(…) needs a floating constant" in e.value.reason and chinese(e.value.message_zh)
 
 
 def test_api_and_cli_take_defines(tmp_path):
@@ -282,7 +282,53 @@ def test_floating_typedefs_wait_until_used():
     with pytest.raises(TraceError) as e:
         trace(code + "real32_T f;", "arm")
     assert (e.value.line, e.value.column) == (4, 1) and "typedef at 1:15" in e.value.reason
-    assert has_chinese(e.value.message)
+    assert chinese(e.value.message_zh)
     # static and inline are qualifiers of a function definition
     r = trace("static inline int16_t f(int16_t x) { return x; }", "arm", {"x": 3}, entry="f")
     assert r["vars"]["return"]["value"] == 3
+
+
+@pytest.mark.parametrize("arg,value", [
+    ("4.0/3.0", 22369621),        # floor(2^24 * 4/3), folded in binary64
+    ("4/3", 1 << 24),             # integer division first, as C
+    ("-(1.0/3.0)", -5592405),     # toward zero
+    ("2.0*(1.5-0.25)", 41943040),
+])
+def test_iq_of_a_constant_expression_folds_as_the_compiler(arg, value):
+    assert trace(f"long x = _IQ({arg});", "c28x")["vars"]["x"]["value"] == value
+
+
+def test_iq_of_a_variable_or_float_suffix_expression_is_refused():
+    for code in ("long y; long x = _IQ(y / 3.0);", "long x = _IQ(1.0f / 3.0f);"):
+        with pytest.raises(TraceError) as e:
+            trace(code, "c28x")
+        assert "needs a floating constant" in str(e.value)
+
+
+IQ_CONSTANTS = ["240.0/360.0", "300.0/360.0", "0.57735026918963", "4.0/3.0", "1.0/3*2", "0.1",
+                "-(2.0/3.0)", "0.8660254038"]
+
+
+@pytest.mark.parametrize("target", ["avr", "arm"])
+def test_iq_constants_fold_in_the_targets_double(target, capsys):
+    """avr-gcc's double is binary32, gcc -m32's binary64: _IQ(240.0/360.0) differs by one LSB
+    between them, and the tracer gives each compiler's value."""
+    require(target, capsys)
+    code = "".join(f"long k{i};\n" for i in range(len(IQ_CONSTANTS))) + "void f(void)\n{\n" + \
+        "".join(f"  k{i} = _IQ({c});\n" for i, c in enumerate(IQ_CONSTANTS)) + "}\n"
+    outs = [("int32_t", f"k{i}") for i in range(len(IQ_CONSTANTS))]
+    got = run_unit(Unit(code, "f", [], [], outs), [{}], target)[0]
+    r = trace(code, target, entry="f")
+    assert {n: r["vars"][n]["value"] for _, n in outs} == got
+    assert got["k0"] == (11184811 if target == "avr" else 11184810)
+
+
+def test_iqmathlib_include_defines_global_q_as_the_header_does():
+    code = '#include "IQmathLib.h"\nlong q = GLOBAL_Q;\nlong x = _IQ(0.5);'
+    r = trace(code, "c28x")
+    assert (r["vars"]["q"]["value"], r["vars"]["x"]["value"]) == (24, 1 << 23)
+    assert r["unresolved_includes"] == []
+    r = trace(code, "c28x", global_q=20)
+    assert (r["vars"]["q"]["value"], r["vars"]["x"]["value"]) == (20, 1 << 19)
+    r = trace("#define GLOBAL_Q 15\n" + code, "c28x")  # the code's own GLOBAL_Q wins
+    assert (r["vars"]["q"]["value"], r["vars"]["x"]["value"]) == (15, 1 << 14)

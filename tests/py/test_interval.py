@@ -1,5 +1,6 @@
 """Interval C arithmetic encloses every concrete result (exhaustive on small intervals)."""
 import itertools
+import math
 import random
 
 import pytest
@@ -101,3 +102,63 @@ def test_real_intervals_enclose_the_doubles_the_concrete_code_computes():
     with pytest.raises(Undecided):
         RInterval(1.0, 2.0) / RInterval(-1.0, 1.0)
     assert RInterval(-2.5, 2.5).round_half_away().value == (-3, 3)
+
+
+# Choices (a shift, a divisor) over intervals: pulab.fixedpoint.interval.choose.
+def test_choose_splits_where_the_choice_differs_and_clips_each_piece():
+    from pulab.fixedpoint.interval import ANY, Branch, Empty, RInterval, choose, forcing
+    pick = lambda x: int(x >= 2.0) + int(x >= 4.0)  # noqa: E731
+    region = lambda c: [(0.0, 2.0), (2.0, 4.0), (4.0, 8.0)][c]  # noqa: E731
+    assert choose("s", RInterval(2.5, 3.5), pick, region)[0] == 1
+    with pytest.raises(Branch) as b:
+        choose("s", RInterval(1.0, 5.0), pick, region)
+    assert b.value.site == "s" and b.value.choices == [0, 1, 2]
+    with forcing({"s": 1}):
+        c, x = choose("s", RInterval(1.0, 5.0), pick, region)
+        assert c == 1 and x.value == (2.0, 4.0)
+    with forcing({"s": 2}), pytest.raises(Empty):
+        choose("s", RInterval(1.0, 3.0), pick, region)
+    with forcing({"s": ANY}):
+        c, x = choose("s", RInterval(1.0, 5.0), pick, region)
+        assert c == 0 and x.value == (1.0, 5.0)
+    assert choose("s", 4.5, pick, region) == (2, 4.5)
+
+
+def _neighbours(x, n=3):
+    out = [x]
+    for step in (math.inf, -math.inf):
+        y = x
+        for _ in range(n):
+            y = math.nextafter(y, step)
+            out.append(y)
+    return out
+
+
+def test_choice_regions_hold_every_double_the_rule_maps_there():
+    """For each shift/exponent the rule picks at doubles next to every boundary, the forced
+    region of that choice holds the double (the proof clips to it, so it must)."""
+    from pulab.fixedpoint.interval import RInterval, forcing
+    from pulab.profiles.common import mantissa_shift, pow2_exponent
+    xs = [y for e in range(-20, 6) for y in _neighbours(2.0 ** e)]
+    xs += [y for n in range(0, 16) for y in _neighbours(32767.5 / 2.0 ** n)]
+    for x in xs:
+        m, s = mantissa_shift(x)
+        with forcing({"t": s}):
+            mi, si = mantissa_shift(RInterval(x, x), "t")
+        assert si == s and mi.lo <= m <= mi.hi, x
+        for largest in (14, 15):
+            n, _ = pow2_exponent(x, 32767, largest)
+            with forcing({"d": n}):
+                _, k = pow2_exponent(RInterval(x, x), 32767, largest, "d")
+            assert k.lo <= x <= k.hi, (x, n)
+
+
+def test_interval_abs_floor_trunc_round_and_maximum():
+    from pulab.fixedpoint.interval import RInterval, maximum
+    assert abs(RInterval(-3.0, 2.0)).value == (0.0, 3.0)
+    assert abs(RInterval(-3.0, -2.0)).value == (2.0, 3.0)
+    assert math.floor(RInterval(-1.5, 2.5)).value == (-2, 2)
+    assert math.trunc(RInterval(-1.5, 2.5)).value == (-1, 2)
+    assert round(RInterval(0.5, 2.5)).value == (0, 2)  # Python rounds half to even, as the code
+    assert maximum(RInterval(1.0, 3.0), RInterval(2.0, 2.5)).value == (2.0, 3.0)
+    assert maximum(1.0, 2.0) == 2.0

@@ -111,7 +111,7 @@ def test_division_by_zero_is_a_counterexample():
     ({"input": SEED, "ranges": {"motor.name": [1, 2]}}, "prove.ranges.motor.name"),
     ({"input": SEED, "ranges": {"raw.Current": [1.5, 2]}}, "prove.ranges.raw.Current"),
     ({"input": SEED, "ranges": {"motor.rs_ohm": [-1, 2]}}, "motor.rs_ohm"),
-    ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "profile": "nxp"}, "prove.profile"),
+    ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "profile": "renesas"}, "prove.profile"),
     ({"input": SEED, "ranges": {"motor.rs_ohm": [1, 2]}, "budget": 0}, "prove.budget"),
     ({"ranges": {"motor.rs_ohm": [1, 2]}}, "input"),
     ([], "prove"),
@@ -143,8 +143,9 @@ def test_cli_exit_status_is_the_verdict(tmp_path):
     (("--range", "motor.rs_ohm=1"), "error: prove.ranges: expected PATH=LO:HI, got 'motor.rs_ohm=1'"),
     (("--range", "motor.rs_ohm=2:1"), "error: prove.ranges.motor.rs_ohm: lo must be ≤ hi, got 2 > 1"),
     ((), "error: prove.ranges: give at least one input range (PATH=LO:HI)"),
-    (("--range", "motor.rs_ohm=1:2", "--profile", "st"),
-     "error: prove.profile: a proof covers the profiles inovance, ti, got 'st'"),
+    (("--range", "motor.rs_ohm=1:2", "--profile", "renesas"),
+     "error: prove.profile: a proof covers the profiles inovance, ti, nxp, st, microchip, "
+     "got 'renesas'"),
 ])
 def test_cli_bad_request_is_one_line_and_exit_2(tmp_path, args, line):
     r = _cli(tmp_path, *args)
@@ -161,3 +162,46 @@ def test_api_by_integer_then_summary_equals_the_whole_proof():
     assert merged["proof"] == whole
     err = json.loads(prove_json(json.dumps({**req, "op": "integer", "name": "vendor.X"})))
     assert err["ok"] is False and err["field"] == "prove.name"
+
+
+@pytest.mark.parametrize("profile, ranges, key, flag", [
+    ("nxp", {"motor.ld_h": [1e-3, 1], "motor.rated_current_a": [5, 200]}, "M1_D_KP_GAIN",
+     "saturate"),
+    ("st", {"motor.rated_current_a": [0.01, 2]}, "CURRENT_CONV_FACTOR", "out_of_range"),
+    ("microchip", {"motor.rated_current_a": [1, 40]}, "MCAF_MOTOR_RS", "out_of_range"),
+])
+def test_vendor_counterexamples_reproduce_in_the_report(profile, ranges, key, flag):
+    r = _prove(ranges, profile=profile)
+    e = r["integers"][f"profiles.{profile}.constants.{key}"]
+    assert r["verdict"] == "violated" and e["verdict"] == "violated"
+    c = report(e["counterexample"])["profiles"][profile]["constants"][key]
+    assert flag in c["flags"]
+
+
+def test_shifts_and_divisors_are_integers_of_the_proof():
+    ranges = {"drive.ts_s": [1e-5, 2e-4], "drive.base_freq_hz": [50, 2000]}
+    shift = _prove(ranges, profile="nxp")["integers"]["profiles.nxp.shifts.M1_TO_THETA_SHIFT"]
+    # T_s·ω_max/π = 2·T_s·f_b spans [1e-3, 0.8]: mantissa in [0.5, 1) with shifts −9 … 0.
+    assert shift["verdict"] == "proven" and shift["range"] == [-9, 0]
+    st = _prove({"motor.ld_h": [1e-4, 1e-2]}, profile="st")["integers"]
+    # Kp grows with L_d, so the divisor falls: its ends are the oracle's at the box's ends.
+    from conftest import ROOT
+    sys.path.insert(0, str(ROOT / "tests/oracle"))
+    import profiles_oracle
+    ends = []
+    for ld in (1e-2, 1e-4):
+        chosen = {}
+        profiles_oracle.profiles({**SEED, "motor": {**SEED["motor"], "ld_h": ld},
+                                  "profiles": {"st": {}}}, chosen)
+        ends.append(chosen["st"]["TF_KPDIV"])
+    assert st["profiles.st.divisors.TF_KPDIV"]["range"] == ends and ends[0] < ends[1]
+    assert st["profiles.st.constants.PID_FLUX_KP_DEFAULT"]["error_bound"] is True
+
+
+def test_cli_propose_for_a_vendor_profile(tmp_path):
+    r = _cli(tmp_path, "--range", "motor.rated_current_a=1:40", "--profile", "microchip",
+             "--propose")
+    out = json.loads(r.stdout)
+    assert r.returncode == 1  # Q15 does not hold R_s/(V_b/I_b) up to 7
+    rs = out["proposal"]["constants"]["MCAF_MOTOR_RS"]
+    assert rs["format"] == "Q12" and rs["holds"] and rs["current"] == "Q15"

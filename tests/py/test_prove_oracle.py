@@ -2,6 +2,7 @@
 pulab): no "proven" contradicted, every range encloses every value, every counterexample
 fails in the oracle too, and no small box is left unknown."""
 import itertools
+import math
 import random
 import sys
 
@@ -185,3 +186,158 @@ def test_proposed_global_q_is_the_finest_the_oracle_accepts():
     ti = profiles_oracle.profiles({**{k: v for k, v in ce.items() if k != "profiles"},
                                    "profiles": {"ti": {"global_q": q + 1}}})["ti"]
     assert any(fails(c) for c in ti.values())
+
+
+# NXP, ST and Microchip: the profiles oracle's constants, shifts, divisors and Qs (never imports
+# pulab) on a dense grid of each box, ends included, and seeded random points. Boxes where the
+# shift, divisor or Q changes inside the box, where each verdict occurs, and where both do.
+VENDOR_BOXES = [
+    ("nxp", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),          # proven
+    ("nxp", {"drive.ts_s": [1e-5, 2e-4], "drive.base_freq_hz": [50, 2000]}),          # shift −9…0
+    ("nxp", {"motor.ld_h": [1e-3, 1], "motor.rated_current_a": [5, 200],
+             "drive.udc_v": [12, 48]}),                                                # ACC32 saturates
+    ("st", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),           # TF_KPDIV 64…16384
+    ("st", {"motor.rated_current_a": [0.01, 2], "drive.udc_v": [12, 600]}),           # uint16 overflow
+    ("st", {"drive.ts_s": [2e-5, 2e-4], "motor.bemf_v": [1, 300],
+            "motor.lq_h": [1e-5, 1e-2]}),                                              # MAX_BEMF → 0
+    ("microchip", {"motor.rated_current_a": [1, 4], "motor.rs_ohm": [0.5, 2],
+                   "current_loop.bandwidth_hz": [100, 3000]}),                         # KIP_Q 12…15
+    ("microchip", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),    # Q15 > 1
+    ("microchip", {"motor.ld_h": [1e-5, 1e-3], "drive.ts_s": [5e-5, 2e-4]}),
+]
+
+
+def _points(ranges, n, count, seed):
+    yield from _grid(ranges, n)
+    rng = random.Random(seed)
+    for _ in range(count):  # log-uniform: the ranges span decades
+        yield {p: lo * (hi / lo) ** rng.random() if lo > 0 else lo + (hi - lo) * rng.random()
+               for p, (lo, hi) in ranges.items()}
+
+
+@pytest.mark.parametrize("profile, ranges", VENDOR_BOXES)
+def test_vendor_profiles_agree_with_the_profiles_oracle(profile, ranges):
+    import profiles_oracle as pr
+    r = prove({"input": SEED_INPUT, "ranges": ranges, "profile": profile})
+    truth = []
+    for pt in _points(ranges, 7 if len(ranges) < 3 else 5, 300, len(truth)):
+        chosen = {}
+        truth.append((pr.profiles({**_at(SEED_INPUT, pt), "profiles": {profile: {}}}, chosen)[profile],
+                      chosen[profile]))
+    assert r["integers"]
+    for name, e in r["integers"].items():
+        _, _, group, key = name.split(".")
+        assert e["verdict"] != "unknown", name
+        if group != "constants":  # a shift, divisor or Q: its range holds every choice
+            assert e["verdict"] == "proven", name
+            assert all(e["range"][0] <= c[key] <= e["range"][1] for _, c in truth), name
+            continue
+        if e["verdict"] == "proven":
+            for t, _ in truth:
+                assert not pr.fails(profile, key, t[key]), (name, t[key])
+                assert e["range"][0] <= t[key]["value"] <= e["range"][1], (name, t[key])
+                if e["error_bound"] and t[key]["ideal"] != 0:
+                    err = abs(100.0 * (t[key]["value"] - t[key]["ideal"]) / t[key]["ideal"])
+                    assert err <= e["worst_error_pct"] * (1 + 1e-9), (name, err)
+        else:
+            ce = e["counterexample"]
+            for path, (lo, hi) in ranges.items():
+                sec, k = path.split(".")
+                assert lo <= ce[sec][k] <= hi, name
+            assert pr.fails(profile, key, pr.profiles(ce)[profile][key]), name
+    verdicts = {e["verdict"] for e in r["integers"].values()}
+    assert verdicts <= {"proven", "violated"}
+
+
+# Proposals: at every oracle point of the box, the proposed format stores the oracle's real value
+# without overflow or 0, within the stated worst error; one bit finer fails at some point.
+PROPOSE_BOXES = [
+    ("nxp", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),
+    ("nxp", {"drive.ts_s": [1e-5, 2e-4], "drive.base_freq_hz": [50, 2000]}),
+    ("st", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),
+    ("microchip", {"motor.rated_current_a": [1, 40], "motor.ld_h": [1e-4, 1e-2]}),
+    ("microchip", {"motor.rated_current_a": [1, 4], "motor.rs_ohm": [0.5, 2],
+                   "current_loop.bandwidth_hz": [100, 3000]}),
+    ("nxp", {"motor.ld_h": [1e-3, 1], "motor.rated_current_a": [5, 200],
+             "drive.udc_v": [12, 48]}),                                     # some hold no format
+]
+
+
+def _store(x, n, how):
+    y = x * 2.0 ** n
+    return math.trunc(y) if how == "trunc" else int(math.copysign(math.floor(abs(y) + 0.5), y))
+
+
+@pytest.mark.parametrize("profile, ranges", PROPOSE_BOXES)
+def test_proposals_hold_at_every_oracle_point(profile, ranges):
+    import profiles_oracle as pr
+    from pulab.analyses.propose import propose
+    p = propose({"input": SEED_INPUT, "ranges": ranges, "profile": profile})
+    how = "trunc" if profile == "nxp" else "nearest"
+    reals = []
+    for pt in _points(ranges, 7 if len(ranges) < 3 else 5, 300, 1):
+        chosen = {}
+        pr.profiles({**_at(SEED_INPUT, pt), "profiles": {profile: {}}}, chosen)
+        reals.append(chosen["real"][profile])
+    assert p["constants"]
+    finer_fails = held = 0
+    for key, e in p["constants"].items():
+        assert e is not None, key
+        if not e["holds"]:
+            # "No format holds" must be true of the oracle's own values: at every n, some
+            # point overflows int16 or stores 0.
+            assert e["impossible"], key
+            assert not any(all(-32768 <= _store(x[key], n, how) <= 32767
+                               and _store(x[key], n, how) != 0 for x in reals)
+                           for n in range(-64, 64)), key
+            continue
+        held += 1
+        n = e["frac_bits"]
+        stored = [(_store(x[key], n, how), x[key]) for x in reals]
+        for v, x in stored:
+            assert -32768 <= v <= 32767 and v != 0, (key, x)
+            assert e["range"][0] <= v <= e["range"][1], (key, v)
+            err = abs(100.0 * (v - x * 2.0 ** n) / (x * 2.0 ** n))
+            assert err <= e["worst_error_pct"] * (1 + 1e-9), (key, err)
+        # The finest: one more fractional bit overflows int16 somewhere in the box (or, for a
+        # bound that is not tight, the enclosure's end does — then the oracle grid may miss it).
+        finer_fails += any(not -32768 <= _store(x[key], n + 1, how) <= 32767 for x in reals)
+    assert held and finer_fails >= held // 2
+    if profile == "st":
+        assert set(p["confirmed"].values()) == {"proven"}
+
+
+# The product family of chapter 04 ("Proving a whole family"): three 400 V servo datasheets in a
+# 9-D box. Every vendor profile's verdicts against the profiles oracle at the box's 512 corners and
+# 300 random points, and the chapter's table.
+FAMILY_RANGES = {"motor.rated_voltage_v": [150, 430], "motor.rated_current_a": [1, 7],
+                 "motor.rated_freq_hz": [150, 300], "motor.rs_ohm": [0.5, 4],
+                 "motor.ld_h": [4e-3, 7.5e-3], "motor.lq_h": [4e-3, 7.5e-3],
+                 "motor.bemf_v": [150, 350], "drive.ts_s": [6.25e-5, 1.25e-4],
+                 "drive.udc_v": [540, 600]}
+
+
+@pytest.mark.parametrize("profile, verdict", [("ti", "proven"), ("nxp", "proven"),
+                                              ("st", "proven"), ("microchip", "violated")])
+def test_servo_family_of_the_chapter(profile, verdict):
+    import json
+    import profiles_oracle as pr
+    from pulab.analyses.prove import _explicit
+    base = _explicit(json.loads((ROOT / "tests/golden/datasheets/siemens_1ft7044_ak7.json")
+                                .read_text())["input"])
+    r = prove({"input": base, "ranges": FAMILY_RANGES, "profile": profile})
+    assert r["verdict"] == verdict
+    truth = [pr.profiles({**_at(base, pt), "profiles": {profile: {}}})[profile]
+             for pt in _points(FAMILY_RANGES, 2, 300, 7)]
+    for name, e in r["integers"].items():
+        _, _, group, key = name.split(".")
+        if group != "constants":
+            continue
+        if e["verdict"] == "proven":
+            assert not any(pr.fails(profile, key, t[key]) for t in truth), name
+        else:
+            assert pr.fails(profile, key, pr.profiles(e["counterexample"])[profile][key]), name
+    if profile == "microchip":
+        assert sorted(k.split(".")[-1] for k, e in r["integers"].items()
+                      if e["verdict"] == "violated") == [
+            "MCAF_MOTOR_LD_BASE_DT", "MCAF_MOTOR_LQ_BASE_DT", "MCAF_MOTOR_PSI_BASE_DT"]

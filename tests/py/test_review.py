@@ -232,3 +232,24 @@ def test_a_firmware_that_cannot_hold_the_motor_is_named_as_the_reader_knows_it()
     assert x["message"].startswith("the Inovance firmware cannot hold this motor (raw.FullFreq01")
     assert x["message_zh"].startswith("汇川固件无法表示这台电机（raw.FullFreq01")
     assert x["key"] == "firmware.inovance"
+
+
+def test_the_shipped_firmwares_integer_pi_wraps_are_an_error():
+    # 20 kHz bandwidth: Microchip's KIP needs Q11 (gain > 1), the DKNP shift then overflows
+    # int32 in the step (the C oracle counts the same wraps, test_vendor_loop).  Shipping
+    # Microchip: an error naming the count and the bandwidth; shipping Inovance: no such finding.
+    inp = _seed()
+    inp["current_loop"] = {"bandwidth_hz": 20000}
+    inp["sim"] = {"current": {}}
+    inp["conventions"] = {"firmware": "microchip"}
+    r = report(inp)
+    wraps = r["sim"]["current"]["by_profile"]["microchip"]["events"]["wrap"]
+    assert wraps > 0
+    hit = [x for x in r["review"]["findings"] if x["code"] == "pi_wrap"]
+    assert len(hit) == 1 and hit[0]["severity"] == "error"
+    assert hit[0]["key"] == "sim.current.by_profile.microchip.events.wrap"
+    assert hit[0]["value"] == wraps and hit[0]["field"] == "current_loop.bandwidth_hz"
+    assert f"wrapped {wraps} times" in hit[0]["message"] and "Microchip" in hit[0]["message"]
+    assert chinese(hit[0]["message_zh"])
+    inp["conventions"] = {"firmware": "inovance"}
+    assert not [x for x in report(inp)["review"]["findings"] if x["code"].startswith("pi_")]

@@ -21,7 +21,7 @@ export interface TraceRequest {
   set?: Record<string, string | number>;
   global_q?: number;
   define?: string[];
-  /** The function of the code to run (absent: the statements outside functions). */
+  /** The function of the code to run, or a statement macro as `NAME` / `NAME(TYPE, …)` (absent: the statements outside functions). */
   entry?: string;
   zero_unset?: boolean;
 }
@@ -32,6 +32,8 @@ export interface TraceVar { type: string; c_type: string; bits: number; signed: 
 export interface Trace {
   target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[];
   entry: string | null; functions: string[];
+  /** The function-like macros that assign (each can be the entry: `NAME` or `NAME(TYPE, …)`). */
+  macros: string[];
   rounding: Record<string, { floor: number; toward_zero: number; max_lost: number }>;
 }
 export interface TraceExample { id: string; title: string; title_zh: string; code: string }
@@ -69,3 +71,29 @@ export interface ProveEntry {
   counterexample?: Input;
 }
 export interface Proof { verdict: ProveVerdict; profile: string; integers: Record<string, ProveEntry>; not_analysed: string[]; counterexample?: Input; first_violated?: string }
+/** `prove.propose`: each constant's finest format in its vendor's form (pulab.analyses.propose). */
+export interface ProposalEntry {
+  format: string;
+  frac_bits: number;
+  range: [number, number] | null;
+  worst_error_pct: number | null;
+  real_range: [number, number];
+  witnessed: [number, number] | null;
+  holds: boolean;
+  impossible?: boolean;
+  current: string;
+  shift?: number;
+  q?: number;
+  current_q?: number;
+}
+export interface Proposal {
+  profile: string;
+  form: string;
+  constants?: Record<string, ProposalEntry | null>;
+  divisors?: Record<string, number>;
+  confirmed?: Record<string, ProveVerdict>;
+  global_q?: number | null;
+  tried?: Record<string, string>;
+  worst_error_pct?: Record<string, number | null>;
+  integers?: Record<string, { headroom_bits: number | null; worst_error_pct: number | null; error_bound: boolean }>;
+}

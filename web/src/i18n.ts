@@ -15,12 +15,13 @@ import datasheet from './i18n/datasheet';
 import ctrace from './i18n/ctrace';
 import prove from './i18n/prove';
 import course from './i18n/course';
+import simfirmware from './i18n/simfirmware';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en, ...course.en };
+  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en };
 
 export type Key = keyof typeof en;
 
@@ -40,6 +41,7 @@ const zh: Record<Key, string> = {
   ...ctrace.zh,
   ...prove.zh,
   ...course.zh,
+  ...simfirmware.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

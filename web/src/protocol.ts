@@ -2,7 +2,7 @@
 // (in the spirit of stlite's types.ts), and every request kind has its request and reply types.
 // The worker only forwards JSON text to pulab.api.call_json.
 
-import type { BatchChunk, BatchRequest, Proof, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
+import type { BatchChunk, BatchRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
 import type { Chunk, Plan, Points, Summary } from './family/types';
 import type { Report } from './report-types';
 import type { Input } from './state';
@@ -70,7 +70,7 @@ export interface ReplyBody {
   'prove.plan': { plan: { names: string[]; raw_box: Record<string, [number, number]> } };
   'prove.integer': { integer: ProveEntry };
   'prove.summary': { proof: Proof };
-  'prove.propose': { proposal: { global_q: number | null; tried: Record<string, string> } };
+  'prove.propose': { proposal: Proposal };
   'course.spec': { exercises: ExerciseSpec[] };
   'course.check': { result: { id: string; state: 'correct' | 'wrong'; expected: Json; tolerance: Tolerance } };
   'course.answers': { answers: Record<string, { chapter: string; expected: Json; unit: string; tolerance: Tolerance }> };
@@ -90,6 +90,8 @@ export type ApiErr = {
   line?: number; column?: number; inputs?: string[];
   /** The tracer's: the functions the code defines, whenever it parsed (to pick the entry). */
   functions?: string[];
+  /** The tracer's: the statement macros the code defines (entries too). */
+  macros?: string[];
 };
 /** A kind's reply when it succeeds. */
 export type Ok<K extends ApiKind> = { ok: true } & ReplyBody[K];

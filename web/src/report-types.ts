@@ -40,8 +40,15 @@ export interface SimCurrent {
   t: number[];
   variants: Record<string, { id: number[]; iq: number[]; ud: number[]; uq: number[]; [k: string]: number[] }>;
   metrics: Record<string, unknown>;
+  /** TI's, NXP's, ST's and Microchip's own integer PI (docs/contract.md, "Every other firmware"). */
+  by_profile?: Record<string, SimProfileRun>;
   [k: string]: unknown;
 }
+/** One firmware's fixed-point current-loop run, or the problems that keep it from running. */
+export type SimProfileRun =
+  | { ran: true; lsb_a: number; events: Record<SimEvent, number>; variant: { id: number[]; iq: number[]; ud: number[]; uq: number[] }; metrics: Record<string, number | null> }
+  | { ran: false; problems: { field: string; code: string }[] };
+export type SimEvent = 'feedback_saturate' | 'wrap' | 'saturate' | 'integral_limit' | 'output_limit';
 export interface SimPll {
   t: number[];
   variants: Record<string, { theta: number[]; theta_hat: number[]; omega_hat: number[]; [k: string]: number[] }>;

@@ -30,9 +30,14 @@ The current-PI integers ``pm_kp``/``pm_ki`` (seed 2.2-9) are designed in floatin
 point: the report's design code runs over intervals of the ranged inputs themselves
 (:class:`~pulab.fixedpoint.interval.RInterval`, rounded outward so that it encloses the
 double the code computes), a branch or comparison that differs inside a box splits it,
-and the rounding to the integer is monotone.  TI MotorWare's IQ constants (``profile``
-``ti``) run the same way through that profile's own code (:func:`pulab.profiles.ti.constants`):
-encoding into IQ is monotone, so the ends of an interval bound its integers.
+and the rounding to the integer is monotone.  The vendor profiles' constants (``profile``
+``ti``, ``nxp``, ``st``, ``microchip``) run the same way through each profile's own code (its
+``constants``, what the report runs): encoding is monotone, so the ends of an interval bound its
+integers.  A shift, divisor or Q the code chooses from the motor is a monotone step function of
+one quantity (:func:`pulab.fixedpoint.interval.choose`); where it differs across a box the box is
+cut into one piece per choice, evaluated with that choice forced and the quantity clipped to the
+values that make it, so each choice is treated exactly.  A proven constant's worst quantization
+error is then bounded over the box: its rounding's LSB over the smallest ideal of each piece.
 
 Examples
 --------
@@ -56,7 +61,7 @@ import math
 from typing import NamedTuple
 
 from ..fixedpoint.cint import UINT16, CDivisionByZero
-from ..fixedpoint.interval import ICInt, RInterval, Undecided
+from ..fixedpoint.interval import ANY, Branch, Empty, ICInt, RInterval, Undecided, forcing
 from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR_READS,
                                       VENDOR_RESULTS, Block, raw_source, raw_value)
 from ..schema.errors import InputError
@@ -72,8 +77,25 @@ __all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "
            "DEFAULT_BUDGET", "MAX_BUDGET"]
 
 VERDICTS = ("proven", "violated", "unknown")
-#: The profiles a proof covers: the seed's Inovance code, and TI MotorWare's IQ constants.
-PROFILES = ("inovance", "ti")
+#: The profiles a proof covers: the seed's Inovance code and the four vendor profiles' constants.
+PROFILES = ("inovance", "ti", "nxp", "st", "microchip")
+#: The choices a profile's code makes from the motor (a shift, a divisor, a Q), proven as
+#: integers of their own: name → (its sites in :func:`~pulab.fixedpoint.interval.choose`, the
+#: constants that use it — the first one's record carries it —, how to read it from that
+#: record).  A constant that uses no choice of a site is evaluated with that site at ``ANY``,
+#: so its box is not cut where the choice changes.
+CHOICES = {
+    "nxp": {"shifts.M1_TO_THETA_SHIFT": (("nxp.M1_TO_THETA_SHIFT",), ("M1_TO_THETA_GAIN",),
+                                         lambda c: c["shift"])},
+    "st": {"divisors.TF_KPDIV": (("st.TF_KPDIV.d", "st.TF_KPDIV.q"),
+                                 ("PID_TORQUE_KP_DEFAULT", "PID_FLUX_KP_DEFAULT"),
+                                 lambda c: 1 << c["q"]),
+           "divisors.TF_KIDIV": (("st.TF_KIDIV.d", "st.TF_KIDIV.q"),
+                                 ("PID_TORQUE_KI_DEFAULT", "PID_FLUX_KI_DEFAULT"),
+                                 lambda c: 1 << c["q"])},
+    "microchip": {"q.KIP_Q": (("microchip.KIP_Q",), ("KIP",), lambda c: c["q"]),
+                  "q.KII_Q": (("microchip.KII_Q",), ("KII",), lambda c: c["q"])},
+}
 #: What breaks an integer: wrapped mid-way (a PI gain: beyond long, which the report refuses),
 #: changed by its Uint16 store, divided by zero, zero (all resolution lost), a raw parameter
 #: the Uint16 cannot hold, or a PI design the report refuses (damping with kp ≤ 0).
@@ -129,8 +151,8 @@ def make_problem(req) -> Problem:
     req : dict
         ``input`` (a report input), ``ranges`` ({path: [lo, hi]}, numeric input paths,
         lo ≤ hi; a raw path takes integers), optional ``profile`` (``inovance``, the
-        default, or its alias ``vendor``; or ``ti``) and ``budget`` (boxes per integer,
-        1..1000000, default 4000).
+        default, or its alias ``vendor``; ``ti``, ``nxp``, ``st``, ``microchip``) and
+        ``budget`` (boxes per integer, 1..1000000, default 4000).
 
     Raises
     ------
@@ -212,7 +234,8 @@ def make_problem(req) -> Problem:
         r = report({**inp, "profiles": {profile: options}})["profiles"][profile]
         problem.options = {k: r["inputs"][k] for k in options}
         problem.constants = r["constants"]
-        problem.names = tuple(f"profiles.{profile}.constants.{k}" for k in r["constants"])
+        problem.names = tuple(f"profiles.{profile}.constants.{k}" for k in r["constants"]) + \
+            tuple(f"profiles.{profile}.{k}" for k in CHOICES.get(profile, {}))
     return problem
 
 
@@ -510,17 +533,17 @@ def _pi_input(problem: Problem, box: dict) -> dict:
     return n
 
 
-def _pi_enclose(problem: Problem, name: str, box: dict) -> tuple:
-    """(kinds, (lo, hi)) of a current-PI integer over an SI box; ``undecided`` when a branch
-    or comparison of the design code differs inside the box."""
+def _pi_enclose(problem: Problem, name: str, box: dict, forced: dict = None) -> tuple:
+    """(kinds, (lo, hi), None) of a current-PI integer over an SI box; ``undecided`` when a
+    branch or comparison of the design code differs inside the box."""
     try:
         v = _pi_at(_pi_input(problem, box), name)
     except Undecided:
-        return {"undecided"}, None
+        return {"undecided"}, None, None
     except InputError as e:  # raised only when every point of the box fails the same way
-        return {"wrap" if e.code == "long_overflow" else "invalid"}, None
+        return {"wrap" if e.code == "long_overflow" else "invalid"}, None, None
     lo, hi = v.value if isinstance(v, RInterval) else (v, v)
-    return ({"zero"} if lo <= 0 <= hi else set()), (lo, hi)
+    return ({"zero"} if lo <= 0 <= hi else set()), (lo, hi), None
 
 
 def _pi_point(problem: Problem, name: str, pt: dict) -> tuple:
@@ -567,18 +590,58 @@ def _profile_constants(n: dict, problem: Problem) -> dict:
     return mod.constants(ctx, opt)
 
 
-def _profile_enclose(problem: Problem, name: str, box: dict) -> tuple:
-    """(kinds, (lo, hi)) of a profile constant over an SI box (see :func:`_pi_enclose`)."""
+def _constant_of(problem: Problem, name: str) -> tuple:
+    """(the constant's key, how to read the integer from its record) for a profile name."""
+    _, profile, group, key = name.split(".")
+    if group == "constants":
+        return key, lambda c: c["value"]
+    _, users, read = CHOICES[profile][f"{group}.{key}"]
+    return users[0], read
+
+
+def _unused_choices(problem: Problem, key: str) -> dict:
+    """The sites constant ``key`` does not use, forced to ``ANY``."""
+    return {site: ANY for sites, users, _ in CHOICES.get(problem.profile, {}).values()
+            if key not in users for site in sites}
+
+
+def _profile_enclose(problem: Problem, name: str, box: dict, forced: dict = None) -> tuple:
+    """(kinds, (lo, hi), bound) of a profile integer over an SI box under the ``forced``
+    choices (see :func:`_pi_enclose`): ``bound`` is the box's worst |error| in percent (None
+    when not bounded), kinds ``branch`` with the :class:`Branch` when a choice differs
+    across the box, ``empty`` when no point of the box makes the forced choices."""
+    key, read = _constant_of(problem, name)
     try:
-        c = _profile_constants(_pi_input(problem, box), problem)[name.split(".")[-1]]
+        with forcing({**_unused_choices(problem, key), **(forced or {})}):
+            c = _profile_constants(_pi_input(problem, box), problem)[key]
+    except Branch as b:
+        return {"branch"}, None, b
+    except Empty:
+        return {"empty"}, None, None
     except Undecided:
-        return {"undecided"}, None
+        return {"undecided"}, None, None
     except InputError as e:
-        return {"wrap" if e.code == "long_overflow" else "invalid"}, None
-    v = c["value"]
+        return {"wrap" if e.code == "long_overflow" else "invalid"}, None, None
+    v = read(c)
     lo, hi = v.value if isinstance(v, RInterval) else (v, v)
+    if key != name.split(".")[-1]:  # a choice: its failures are its constant's; no rounding
+        return set(), (lo, hi), None
     kinds = {_PROFILE_FLAGS[f] for f in c["flags"] if f in _PROFILE_FLAGS}
-    return kinds | ({"zero"} if lo <= 0 <= hi else set()), (lo, hi)
+    return kinds | ({"zero"} if lo <= 0 <= hi else set()), (lo, hi), _error_bound(c)
+
+
+def _error_bound(c: dict):
+    """The worst |error_pct| of a constant over a box: |stored − ideal| ≤ error_lsb LSB for
+    its rounding, and |ideal| ≥ the low end of its enclosure (None when it may be 0 or the
+    integer comes from other rounded integers)."""
+    ideal = c["ideal"]
+    if not isinstance(ideal, RInterval):
+        return abs(c["error_pct"])
+    lsb = c.get("error_lsb")
+    low = min(abs(ideal.lo), abs(ideal.hi))
+    if lsb is None or ideal.lo <= 0 <= ideal.hi or low == 0:
+        return None
+    return math.nextafter(100.0 * lsb / low, math.inf)
 
 
 #: A profile constant's flags that break it: the vendor's macro clamped, or C's cast of an
@@ -592,25 +655,28 @@ def _profile_kind(c: dict):
 
 
 def _profile_point(problem: Problem, name: str, pt: dict) -> tuple:
-    """(kind or None, value, error_pct, input) of a profile constant at an SI point (the
+    """(kind or None, value, error_pct, input) of a profile integer at an SI point (the
     input carries this profile's options, so the report gives the same constant)."""
     inp = _with(problem.input, {p: (v, v) for p, v in pt.items()}, 0)
     inp = {**inp, "profiles": {problem.profile: problem.options}}
+    key, read = _constant_of(problem, name)
     try:
-        c = _profile_constants(normalize(inp), problem)[name.split(".")[-1]]
+        c = _profile_constants(normalize(inp), problem)[key]
     except InputError as e:
         return ("wrap" if e.code == "long_overflow" else "invalid"), None, None, inp
+    if key != name.split(".")[-1]:
+        return None, read(c), None, inp
     return _profile_kind(c), c["value"], c["error_pct"], inp
 
 
 def _profile_reproduces(inp: dict, name: str, kind: str) -> bool:
     from ..report import report
-    _, profile, _, key = name.split(".")
+    _, profile, group, key = name.split(".")
     try:
         c = report(inp)["profiles"][profile]["constants"][key]
     except InputError as e:
         return kind in ("wrap", "invalid") and e.field.startswith("current_loop")
-    return _profile_kind(c) == kind
+    return group == "constants" and _profile_kind(c) == kind
 
 
 class _Float(NamedTuple):
@@ -627,8 +693,14 @@ def _float_spec(problem: Problem, name: str) -> _Float:
     if name.startswith("current_pi."):
         return _Float(_pi_enclose, _pi_point, _pi_reproduces, "long",
                       f"{name.split('.')[-1]} = round(…) (seed 2.2-9)")
-    c = problem.constants[name.split(".")[-1]]
-    word = {16: "int16", 32: "long"}[c["word_bits"]] if c["format"] else "long"
+    key, _ = _constant_of(problem, name)
+    c = problem.constants[key]
+    if key != name.split(".")[-1]:
+        return _Float(_profile_enclose, _profile_point, _profile_reproduces,
+                      "Uint16" if ".divisors." in name else "int16",
+                      f"{name.split('.')[-1]}: chosen from {c['name']} = {c['expression']}")
+    word = {16: "Uint16" if c["format"] == "uint16_t" else "int16",
+            32: "long"}[c["word_bits"]] if c["format"] else "long"
     return _Float(_profile_enclose, _profile_point, _profile_reproduces, word,
                   f"{c['name']} = {c['format']}({c['expression']})")
 
@@ -638,26 +710,48 @@ def _prove_float(problem: Problem, name: str):
     returning its entry).
 
     The box is split in the ranged inputs themselves; a box's corners (all of them up to 6
-    inputs) and centre are run concretely.
+    inputs) and centre are run concretely.  Where a choice of the code (a shift, a divisor)
+    differs across a box, the box is cut into one *piece* per choice, each evaluated with its
+    choice forced (:func:`pulab.fixedpoint.interval.choose`): together they hold every point
+    exactly once.  A piece's share of the box is its box's share over its number of choices
+    (``proven_fraction`` counts pieces so, an estimate where choices split a box).
     """
     spec = _float_spec(problem, name)
     full = {p: r for p, r in problem.ranges.items()
             if not p.startswith("raw.") and r[0] != r[1]}
     dims = list(full)
-    heap = [(-1.0, 0, dict(full))]
+    heap = [(-1.0, 0, dict(full), {}, 1.0)]
     order, evaluated, proven_share = 1, 0, 0.0
     rng = rng_proven = worst = None
+    bound, bounded = 0.0, True  # the worst |error| over the proven pieces, all bounded?
+    corners_run = False
     statement = spec.statement
     while heap and evaluated < problem.budget:
         if evaluated and evaluated % _SLICE_BOXES == 0:
             yield
-        neg_share, _, box = heapq.heappop(heap)
+        neg_share, _, box, forced, box_share = heapq.heappop(heap)
         evaluated += 1
-        kinds, enc = spec.enclose(problem, name, box)
+        kinds, enc, extra = spec.enclose(problem, name, box, forced)
+        if kinds == {"empty"}:
+            proven_share += -neg_share
+            continue
+        if kinds == {"branch"}:
+            for c in extra.choices:
+                heapq.heappush(heap, (neg_share / len(extra.choices), order, box,
+                                      {**forced, extra.site: c}, box_share))
+                order += 1
+            continue
         rng = _hull(rng, enc)
+        if enc is not None and box_share == 1.0 and len(dims) > 1:
+            # Split only inputs the integer depends on: fixing one it does not leaves the whole
+            # box's enclosure as it is.
+            moving = [q for q in dims if _fixed(spec, problem, name, box, forced, q) != enc]
+            dims = moving or dims
         if not kinds:
             rng_proven = _hull(rng_proven, enc)
             proven_share += -neg_share
+            bounded = bounded and extra is not None
+            bound = max(bound, extra) if extra is not None else bound
             for end in (0, 1):
                 pt = {p: r[end] for p, r in box.items()}
                 worst = _worse(worst, spec.point(problem, name, pt)[:3], pt)
@@ -665,8 +759,9 @@ def _prove_float(problem: Problem, name: str):
         # Every corner of the whole box (a monotone design breaks at one); the centre of each
         # smaller box, where a break inside the box is closed in on.
         corners = [{}]
-        for p in dims if len(dims) <= 6 and evaluated == 1 else ():
+        for p in dims if len(dims) <= 6 and not corners_run and box_share == 1.0 else ():
             corners = [{**c, p: e} for c in corners for e in box[p]]
+        corners_run = corners_run or box_share == 1.0
         centre = {p: (lo + hi) / 2 for p, (lo, hi) in box.items()}
         for pt in [{**{p: lo for p, (lo, _) in box.items()}, **c} for c in corners] + [centre]:
             kind, value, err, inp = spec.point(problem, name, pt)
@@ -675,20 +770,53 @@ def _prove_float(problem: Problem, name: str):
                               kind=kind, statement=statement, raw={"value": value},
                               counterexample=inp)
             worst = _worse(worst, (kind, value, err), pt)
-        if -neg_share < _MIN_SHARE or not dims:
+        if box_share < _MIN_SHARE or not dims:
             continue
-        p = max(dims, key=lambda q: _log_width(box[q]) / _log_width(full[q]))
+        p = _split_dim(spec, problem, name, box, forced, dims, full,
+                       round(-math.log2(box_share)))
         lo, hi = box[p]
         # Ratios of inputs (I_max/I_FS …) narrow by the ratio hi/lo: split at the geometric
         # mean while it is large.
         mid = math.sqrt(lo * hi) if lo > 0 and hi > 4 * lo else lo + (hi - lo) / 2
         for half in ((lo, mid), (mid, hi)):
-            share = neg_share * (half[1] - half[0]) / (hi - lo)
-            heapq.heappush(heap, (share, order, {**box, p: half}))
+            part = (half[1] - half[0]) / (hi - lo)
+            heapq.heappush(heap, (neg_share * part, order, {**box, p: half}, forced,
+                                  box_share * part))
             order += 1
     if not heap and proven_share >= 1.0 - 1e-9:
-        return _entry("proven", rng_proven, spec.word, 1.0, worst, boxes=evaluated)
+        entry = _entry("proven", rng_proven, spec.word, 1.0, worst, boxes=evaluated)
+        if ".constants." not in name and not name.startswith("current_pi."):
+            entry["headroom_bits"] = None  # a shift or divisor: no fractional bits to add
+        if bounded and rng_proven is not None:
+            entry["worst_error_pct"], entry["worst_error_raw"] = bound, None
+            entry["error_bound"] = True
+        return entry
     return _entry("unknown", rng, spec.word, min(proven_share, 1.0), worst, boxes=evaluated)
+
+
+def _fixed(spec: _Float, problem: Problem, name: str, box: dict, forced: dict, q: str):
+    """The enclosure with input ``q`` fixed at its midpoint (None when it does not evaluate)."""
+    mid = (box[q][0] + box[q][1]) / 2
+    kinds, e, _ = spec.enclose(problem, name, {**box, q: (mid, mid)}, forced)
+    return None if kinds & {"branch", "undecided", "empty"} else e
+
+
+def _split_dim(spec: _Float, problem: Problem, name: str, box: dict, forced: dict, dims,
+               full: dict, depth: int) -> str:
+    """The input to split a box along, alternating by depth: the relatively widest, and the
+    one whose fixing (at its midpoint) narrows the enclosure most — so that an input that
+    cancels out of a formula (I in I·R_shunt(I), a dependency interval arithmetic does not
+    see) is split too, while the widest-first order still closes in on a curved boundary."""
+    widest = max(dims, key=lambda q: _log_width(box[q]) / _log_width(full[q]))
+    live = [q for q in dims if box[q][0] < box[q][1]]
+    if depth % 2 == 0 or len(live) < 2:
+        return widest
+
+    def width(q):
+        e = _fixed(spec, problem, name, box, forced, q)
+        return math.inf if e is None else e[1] - e[0]
+
+    return min(live, key=width)
 
 
 def integer_names() -> tuple:
@@ -720,7 +848,7 @@ def integer_steps(problem: Problem, name: str):
         entry = yield from _prove_float(problem, name)
     else:
         entry = yield from _prove_vendor(problem, key)
-    entry["error_bound"] = False
+    entry.setdefault("error_bound", False)
     return entry
 
 
@@ -784,10 +912,11 @@ def prove(req) -> dict:
         ``verdict`` (proven | violated | unknown: the worst over the integers),
         ``integers`` {name: {verdict, range [lo, hi] (a sound enclosure of every value over
         the box where the code completes), type and word [min, max] of its C type,
-        proven_fraction, worst_error_pct (raw parameters: a bound; vendor results: the
-        worst at the points run, error_bound false), and when violated: kind (wrap, store,
-        div0, zero, outside), statement, raw (the raw point) and counterexample (an input
-        JSON inside the box)}}, ``counterexample`` (the first violated integer's),
+        proven_fraction, worst_error_pct and error_bound (raw parameters and proven profile
+        constants: a bound over the box; else the worst at the points run, error_bound
+        false), and when violated: kind (wrap, store, div0, zero, outside, saturate,
+        invalid), statement, raw (the raw point) and counterexample (an input JSON inside
+        the box)}}, ``counterexample`` (the first violated integer's),
         ``raw_box`` and ``not_analysed``.
     """
     return finish(prove_steps(req))

@@ -17,7 +17,9 @@ Checks:
   FreqRated01 (what FreqPer is computed from), not on the typed floats;
 - voltage headroom: back-EMF at f_b, and R·I and ω·L·I at rated current, against the
   firmware's voltage limit pm_maxout_vol (seed 2.2-1);
-- with a PLL simulation: lock and the angle error after lock (pulab.analyses.sim.metrics).
+- with a PLL simulation: lock and the angle error after lock (pulab.analyses.sim.metrics);
+- with a current-loop simulation: wraps and saturations of the shipped firmware's integer
+  current PI (``sim.current.by_profile``; Inovance's run does not count them).
 
 Examples
 --------
@@ -327,6 +329,25 @@ def _pll(f: list, sim: dict | None) -> None:
         return  # the firmware's variant when present, else the next one
 
 
+#: The vendors' names as their documents print them.
+_VENDOR_NAMES = {"ti": "TI", "nxp": "NXP", "st": "ST", "microchip": "Microchip"}
+
+
+def _pi_arithmetic(f: list, sim: dict | None, shipped: str) -> None:
+    """The shipped firmware's integer current PI in the simulated step: a wrap gives a wrong
+    voltage (error), a saturating operation that clipped loses the value (warning); the
+    designed output and integral limits are not findings."""
+    run = (sim or {}).get("current", {}).get("by_profile", {}).get(shipped)
+    if not run or not run["ran"]:
+        return
+    key = f"sim.current.by_profile.{shipped}.events"
+    for event, severity in (("wrap", "error"), ("saturate", "warning")):
+        count = run["events"][event]
+        if count:
+            _finding(f, severity, f"pi_{event}", f"{key}.{event}", "current_loop.bandwidth_hz",
+                     count, profile=_VENDOR_NAMES[shipped], count=count, key=key)
+
+
 def _robust(f: list, loop: dict | None) -> None:
     """The nominal gains lose a margin on the hot, saturated or low-bus motor: a warning whose
     remedy is the designed bandwidth (the safe band is in the message)."""
@@ -365,7 +386,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     ----------
     n : dict — normalized input ; raw : dict — raw integers used
     vendor : dict — vendor results ; pi : dict — ``current_pi``
-    sim : dict or None — the ``sim`` output, for the PLL checks
+    sim : dict or None — the ``sim`` output, for the PLL and integer-PI checks
     loop : dict or None — the ``loop`` output, for the robustness check
     firmware : dict or None — the ``firmware`` output: one finding per firmware that cannot
         hold this motor
@@ -388,6 +409,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     h = headroom(n, vendor)
     _voltage(f, h, n)
     _pll(f, sim)
+    _pi_arithmetic(f, sim, n["conventions"]["firmware"])
     _robust(f, loop)
     _firmware(f, firmware or {}, n["conventions"]["firmware"])
     if unit == "uH":

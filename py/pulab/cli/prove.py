@@ -3,10 +3,12 @@
 ::
 
     pulab prove INPUT.json --range motor.rated_current_a=1:60 --range drive.base_freq_hz=100:400
-                [--profile inovance|ti] [--budget N] [--format json|text]
+                [--profile inovance|ti|nxp|st|microchip] [--budget N] [--propose]
+                [--format json|text]
 
 INPUT.json is the base motor; each ``--range PATH=LO:HI`` makes that input range over
-``[LO, HI]`` (:mod:`pulab.analyses.prove`).  Exit status: 0 when every integer is proven,
+``[LO, HI]`` (:mod:`pulab.analyses.prove`); ``--propose`` adds each constant's finest format
+in its vendor's form (:mod:`pulab.analyses.propose`).  Exit status: 0 when every integer is proven,
 1 when one is violated (its counterexample is in the JSON) or unknown, 2 with one line
 ``error: FIELD: MESSAGE`` on stderr when the request is unusable.
 """
@@ -30,10 +32,12 @@ def add_prove_parser(sub) -> None:
     p.add_argument("--range", dest="ranges", action="append", default=[],
                    metavar="PATH=LO:HI", help="an input's range (repeat for each input)")
     p.add_argument("--profile", default=None,
-                   help="inovance (the seed's code; the default) or ti (MotorWare's IQ constants)")
+                   help="inovance (the seed's code; the default), ti, nxp, st or microchip "
+                        "(that vendor's constants)")
     p.add_argument("--budget", type=int, default=None, help="boxes per integer (default 4000)")
     p.add_argument("--propose", action="store_true",
-                   help="with --profile ti: the finest GLOBAL_Q proven over the box")
+                   help="propose each constant's finest format in the vendor's own form "
+                        "(GLOBAL_Q, FRAC16 + shift, power-of-two divisor, Q) proven over the box")
     p.add_argument("--format", choices=("json", "text"), default="json")
     p.set_defaults(run=_run)
 
@@ -76,12 +80,38 @@ def format_prove_text(r: dict) -> str:
     if r["not_analysed"]:
         lines += ["", "Not analysed: " + ", ".join(r["not_analysed"])]
     if "proposal" in r:
-        lines += ["", f"Proposed GLOBAL_Q: {r['proposal']['global_q']} (the finest proven over "
-                      "the box)"]
+        lines += [""] + _proposal_lines(r["proposal"])
     if "counterexample" in r:
         lines += ["", f"Counterexample ({r['first_violated']}):",
                   json.dumps(r["counterexample"], ensure_ascii=False)]
     return "\n".join(lines) + "\n"
+
+
+def _proposal_lines(p: dict) -> list:
+    """The proposal in the vendor's form, one line per constant."""
+    if p["profile"] == "ti":
+        return [f"Proposed GLOBAL_Q: {p['global_q']} (the finest proven over the box)"]
+    if p["profile"] == "inovance":
+        return ["Fixed formats (the seed's code); headroom of each proven integer:"] + [
+            f"  {k:<22} +{e['headroom_bits']} bits" for k, e in p["integers"].items()]
+    lines = [f"Proposed formats ({p['form']}), finest that holds over the box:"]
+    for k, e in p["constants"].items():
+        if e is None:
+            lines.append(f"  {k:<28} not enclosed within the budget")
+        elif e["holds"]:
+            lines.append(f"  {k:<28} {e['format']:<16} integers [{e['range'][0]}, "
+                         f"{e['range'][1]}], worst error ≤ {e['worst_error_pct']:.3g} % "
+                         f"(now {e['current']})")
+        elif e["impossible"]:
+            lines.append(f"  {k:<28} no {p['form']} holds: motors of the box take "
+                         f"[{e['witnessed'][0]:.4g}, {e['witnessed'][1]:.4g}]")
+        else:
+            lines.append(f"  {k:<28} none found: the enclosure [{e['real_range'][0]:.4g}, "
+                         f"{e['real_range'][1]:.4g}] is too wide (one may exist)")
+    if p.get("divisors"):
+        lines.append("  divisors: " + ", ".join(f"{k.upper()} = {v}"
+                                               for k, v in p["divisors"].items()))
+    return lines
 
 
 def _run(args) -> int:
@@ -97,10 +127,8 @@ def _run(args) -> int:
             req["budget"] = args.budget
         r = prove(req)
         if args.propose:
-            if r["profile"] != "ti":
-                raise InputError("prove.propose", code="prove_propose_ti")
-            from ..analyses.prove import propose_global_q
-            r["proposal"] = propose_global_q(req)
+            from ..analyses.propose import propose
+            r["proposal"] = propose(req, r)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2

@@ -129,11 +129,16 @@ def trace_main(args: argparse.Namespace) -> int:
     """Run the ``trace`` subcommand; returns the exit status."""
     try:
         if args.code == "-":
-            code = sys.stdin.read()
+            raw = sys.stdin.buffer.read()
         else:
-            with open(args.code, encoding="utf-8") as f:
-                code = f.read()
-    except (OSError, UnicodeDecodeError) as e:
+            with open(args.code, "rb") as f:
+                raw = f.read()
+        try:
+            code = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            # vendor files carry Latin-1/GBK bytes in comments; outside them the lexer refuses
+            code = raw.decode("latin-1")
+    except OSError as e:
         print(f"error: code: cannot read {args.code}: {getattr(e, 'strerror', None) or e}",
               file=sys.stderr)
         return 2

@@ -30,12 +30,15 @@ Examples
 
 from __future__ import annotations
 
+import re
+
 from ..fixedpoint.cint import CType
 from .errors import TraceError
+from .macro_entry import entry_macros
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
-                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
-                     Program, Ptr, Return, StructDef, Switch, Unary, Var, constant_value,
-                     IQ_FUNCTIONS)
+                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Node, Num,
+                     Program, Ptr, Return, Stmt, StructDef, Switch, Unary, Unsupported, Var,
+                     constant_value, IQ_FUNCTIONS)
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
@@ -100,6 +103,23 @@ def _same(a, b) -> bool:
     return a is b
 
 
+def same_layout(a, b) -> bool:
+    """Whether objects of types ``a`` and ``b`` are the same memory read the same way: equal
+    integer types, and structs, arrays and pointers whose parts match field by field in order,
+    names included (a pointer cast between them views the same object by the same paths)."""
+    if a is b:
+        return True
+    if isinstance(a, StructT) and isinstance(b, StructT):
+        fa, fb = list(a.fields.items()), list(b.fields.items())
+        return len(fa) == len(fb) and all(x[0] == y[0] and same_layout(x[1][0], y[1][0])
+                                          for x, y in zip(fa, fb))
+    if isinstance(a, ArrT) and isinstance(b, ArrT):
+        return a.n == b.n and same_layout(a.of, b.of)
+    if isinstance(a, PtrT) and isinstance(b, PtrT):
+        return a.to is VOID or b.to is VOID or same_layout(a.to, b.to)
+    return _same(a, b)
+
+
 def describe(t) -> str:
     """A type as C spells it, for messages."""
     if isinstance(t, StructT):
@@ -114,6 +134,8 @@ def describe(t) -> str:
 def _accepts(t, vt) -> bool:
     """Whether a value of type ``vt`` may initialize an object of type ``t`` or be passed
     for a parameter of it: any integer for an integer, else the same type (arrays decay)."""
+    if isinstance(t, PtrT) and t.to is VOID and t.n is None:  # any object pointer to void *
+        return isinstance(_decay(vt), PtrT)
     return isinstance(vt, CType) if isinstance(t, CType) else _same(t, _decay(vt))
 
 
@@ -159,7 +181,8 @@ class Checked:
     declaration order), ``inputs``, ``functions`` (name → Function), ``entry`` (Function or
     None)."""
 
-    __slots__ = ("program", "target", "symbols", "inputs", "functions", "entry", "objects")
+    __slots__ = ("program", "target", "symbols", "inputs", "functions", "entry", "objects",
+                 "roots", "pointees")
 
     def __init__(self, program: Program, target: Target, symbols: dict, inputs: list,
                  functions: dict | None = None, entry=None, objects: dict | None = None
@@ -168,14 +191,35 @@ class Checked:
         self.functions, self.entry = functions or {}, entry
         #: path of every array object -> its length (pointer arithmetic stays inside it)
         self.objects = objects or {}
+        #: key of every declared object -> its type (a pointer parameter: what it points to)
+        self.roots: dict = {}
+        #: pointer field of the entry's objects -> the object it points to (see :func:`linked`)
+        self.pointees: dict = {}
+
+    def type_at(self, path: str):
+        """The type of the object at ``path`` (``obj.f[2].g``), or None if unknown."""
+        head = re.match(r"[^.\[]+", path)[0]
+        t = self.roots.get(head)
+        if isinstance(t, PtrT):
+            t = t.to if t.n is None else ArrT(t.to, t.n)
+        for part in re.findall(r"\.(\w+)|\[(\d+)\]", path[len(head):]):
+            if isinstance(t, PtrT):  # a pointer field's own object (see linked)
+                t = t.to
+            if part[0] and isinstance(t, StructT) and part[0] in t.fields:
+                t = t.fields[part[0]][0]
+            elif part[1] and isinstance(t, ArrT):
+                t = t.of
+            else:
+                return None
+        return t
 
 
 def _type_of(target: Target, spelling: str, node) -> object:
     try:
         return target.type_named(spelling)
     except KeyError:
-        raise TraceError(node.line, node.column,
-                         f"{spelling} does not exist on {target.name}") from None
+        raise TraceError(node.line, node.column, code="trace_no_type_on_target", name=spelling,
+                         target=target.name) from None
 
 
 def _flat_name(e) -> str | None:
@@ -200,6 +244,7 @@ class _Checker:
         self.functions: dict = {}
         self.broken: dict = {}  # function name -> the TraceError its definition raised
         self.arrays: dict = {}
+        self.roots: dict = {}  # key -> type of every object declared
 
     # -- names and types
     def lookup(self, name: str) -> Symbol | None:
@@ -214,15 +259,14 @@ class _Checker:
         found = self.program.refused.get(name)
         if found is not None:
             err = found[0]
-            raise TraceError(node.line, node.column, f"{name} (at {err.line}:{err.column}) is "
-                             f"outside the subset: {err.reason}")
+            raise TraceError(node.line, node.column, code="trace_refused_use", name=name,
+                             at=f"{err.line}:{err.column}", reason=err.reason_error())
 
     def symbol(self, var: Var) -> Symbol:
         sym = self.lookup(var.name)
         if sym is None:
             self.refused(var.name, var)
-            raise TraceError(var.line, var.column, f"{var.name} is not declared (declare it "
-                             f"with its type, e.g. 'Uint16 {var.name};')")
+            raise TraceError(var.line, var.column, code="trace_undeclared", name=var.name)
         return sym
 
     def resolve(self, desc, node) -> object:
@@ -230,22 +274,26 @@ class _Checker:
         if isinstance(desc, str):
             return VOID if desc == "void" else _type_of(self.target, desc, node)
         if isinstance(desc, Ptr):
+            if isinstance(desc.to, StructDef) and desc.to.fields is None and desc.size is None:
+                # a handle to a struct never defined (TI's `struct _PI_Obj_ *PI_Handle` beside
+                # `typedef struct _PI_ {…} PI_Obj`): opaque as void *, its casts checked
+                return PtrT(VOID)
             to = self.resolve(desc.to, node)
             if isinstance(to, PtrT):
-                raise TraceError(node.line, node.column, "pointers to pointers are not "
-                                 "supported")
+                raise TraceError(node.line, node.column, code="trace_pointer_pointer")
             n = None
             if desc.size is not None:
-                n = constant_value(desc.size, "an array size")
+                n = constant_value(desc.size, "trace_const_array_size")
                 if not 1 <= n <= MAX_ELEMENTS:
                     raise TraceError(desc.size.line, desc.size.column, code="trace_array_size",
                                      n=n, limit=MAX_ELEMENTS)
             return PtrT(to, n)
+        if isinstance(desc, Unsupported):
+            return desc  # refused where the field is used
         if isinstance(desc, Arr):
             if desc.size is None:
-                raise TraceError(node.line, node.column, "an array needs a size or an "
-                                 "initializer")
-            n = constant_value(desc.size, "an array size")
+                raise TraceError(node.line, node.column, code="trace_array_no_size")
+            n = constant_value(desc.size, "trace_const_array_size")
             of = self.resolve(desc.of, node)
             if not 1 <= n <= MAX_ELEMENTS or n * max(1, len(leaves("", of))) > MAX_ELEMENTS:
                 raise TraceError(desc.size.line, desc.size.column, code="trace_array_size", n=n,
@@ -258,14 +306,14 @@ class _Checker:
         if st is not None:
             return st
         if sdef.fields is None:
-            raise TraceError(node.line, node.column, f"struct {sdef.name} is declared but its "
-                             "fields are not pasted")
+            raise TraceError(node.line, node.column, code="trace_struct_incomplete",
+                             name=sdef.name)
         st = sdef.resolved[self.target.name] = StructT(sdef.name)
         for name, desc, spelling in sdef.fields:
             ft = self.resolve(desc, node)
             if ft is VOID or ft is st:
-                raise TraceError(sdef.line, sdef.column, f"field {name} of struct {sdef.name} "
-                                 "has an incomplete type")
+                raise TraceError(sdef.line, sdef.column, code="trace_field_incomplete", name=name,
+                                 struct=sdef.name)
             st.fields[name] = (ft, spelling)
         if len(leaves("", st)) > MAX_ELEMENTS:
             raise TraceError(sdef.line, sdef.column, code="trace_struct_size", name=sdef.name,
@@ -276,8 +324,13 @@ class _Checker:
         scope = self.scopes[-1]
         if name in scope:
             prev = scope[name]
-            raise TraceError(node.line, node.column, f"{name} is already declared "
-                             f"at {prev.line}:{prev.column}")
+            if len(self.scopes) == 1 and not (prev.initialized and initialized) and \
+                    same_layout(prev.ctype, ctype):
+                # C99 6.9.2: `extern T x;` (a header) then the definition `T x = {…};`
+                prev.initialized = prev.initialized or initialized
+                return prev
+            raise TraceError(node.line, node.column, code="trace_declared_twice", name=name,
+                             at=f"{prev.line}:{prev.column}")
         f = self.function
         key = name if f is None or not f.prefix else f"{f.prefix}{name}"
         if f is not None and not f.prefix and (self.lookup_global(name) is not None):
@@ -289,6 +342,7 @@ class _Checker:
         self.used_keys.add(key)
         sym = Symbol(name, spelling, ctype, initialized, node.line, node.column, key)
         scope[name] = sym
+        self.roots[key] = ctype
         if isinstance(ctype, ArrT):
             self.arrays[key] = ctype.n
         return sym
@@ -329,15 +383,19 @@ class _Checker:
             f = self.function
             if f.ret is VOID:
                 if s.value is not None:
-                    raise TraceError(s.line, s.column, f"{f.name}() returns void: "
-                                     "'return' takes no value")
+                    raise TraceError(s.line, s.column, code="trace_return_void_value", name=f.name)
             elif s.value is None:
-                raise TraceError(s.line, s.column, f"{f.name}() must return a value")
+                raise TraceError(s.line, s.column, code="trace_return_no_value", name=f.name)
+            elif isinstance(f.ret, PtrT):
+                vt = self.expr(s.value)
+                if not _accepts(f.ret, vt):
+                    raise TraceError(s.value.line, s.value.column, code="trace_return_type",
+                                     name=f.name, ret=describe(f.ret), got=describe(vt))
             elif isinstance(f.ret, StructT):
                 vt = self.expr(s.value)
                 if vt is not f.ret:
-                    raise TraceError(s.value.line, s.value.column, f"{f.name}() returns "
-                                     f"{describe(f.ret)}, not {describe(vt)}")
+                    raise TraceError(s.value.line, s.value.column, code="trace_return_type",
+                                     name=f.name, ret=describe(f.ret), got=describe(vt))
             else:
                 self.scalar(s.value)
         elif isinstance(s, Switch):
@@ -346,18 +404,17 @@ class _Checker:
             for inner in s.body.statements:
                 if isinstance(inner, Label):
                     k = None if inner.value is None else constant_value(inner.value,
-                                                                        "a case label")
+                                                                        "trace_const_case")
                     if k in seen:
                         prev = seen[k]
-                        raise TraceError(inner.line, inner.column, "a case label repeats the "
-                                         f"one at {prev.line}:{prev.column}")
+                        raise TraceError(inner.line, inner.column, code="trace_case_twice",
+                                         at=f"{prev.line}:{prev.column}")
                     seen[k] = inner
                     inner.value_int = k
             self.statement(s.body)
         elif isinstance(s, Label):
             if not hasattr(s, "value_int"):
-                raise TraceError(s.line, s.column, "a case label inside a nested statement is "
-                                 "not supported (labels at the top of the switch's block only)")
+                raise TraceError(s.line, s.column, code="trace_case_nested")
         elif isinstance(s, Jump):
             pass
         else:
@@ -371,42 +428,40 @@ class _Checker:
             if isinstance(t, ArrT):
                 items = init.items
                 if len(items) > t.n:
-                    raise TraceError(init.line, init.column, f"{len(items)} initializers for "
-                                     f"an array of {t.n}")
+                    raise TraceError(init.line, init.column, code="trace_init_array",
+                                     n=len(items), size=t.n)
                 for item in items:
                     self.initializer(item, t.of)
             elif isinstance(t, StructT):
                 if len(init.items) > len(t.fields):
-                    raise TraceError(init.line, init.column, f"{len(init.items)} initializers "
-                                     f"for struct {t.name} of {len(t.fields)} fields")
+                    raise TraceError(init.line, init.column, code="trace_init_struct",
+                                     n=len(init.items), name=t.name, size=len(t.fields))
                 for item, (ft, _) in zip(init.items, t.fields.values()):
                     self.initializer(item, ft)
             elif len(init.items) == 1 and not isinstance(init.items[0], InitList):
                 self.initializer(init.items[0], t)
                 init.ctype = t
             else:
-                raise TraceError(init.line, init.column, "a braced list initializes an array "
-                                 "or a struct")
+                raise TraceError(init.line, init.column, code="trace_init_braces")
             init.ctype = t
             return
         vt = self.expr(init)
         if not _accepts(t, vt):
-            raise TraceError(init.line, init.column, f"cannot initialize {describe(t)} with "
-                             f"{describe(vt)}")
+            raise TraceError(init.line, init.column, code="trace_init_type", dst=describe(t),
+                             src=describe(vt))
 
     # -- expressions
     def expr(self, e, void_ok: bool = False) -> object:
         t = self._expr(e)
         e.ctype = t
         if t is VOID and not void_ok:
-            raise TraceError(e.line, e.column, f"{e.name}() returns void: it has no value")
+            raise TraceError(e.line, e.column, code="trace_void_value", name=e.name)
         return t
 
     def scalar(self, e) -> CType:
         t = self.expr(e)
         if not isinstance(t, CType):
-            raise TraceError(e.line, e.column, f"{describe(t)} where an integer is needed "
-                             "(only integers are computed)")
+            raise TraceError(e.line, e.column, code="trace_not_scalar", got=describe(t))
         return t
 
     def _expr(self, e) -> object:
@@ -419,8 +474,8 @@ class _Checker:
                 t = target.types[name]
                 if e.value <= t.max:
                     return t
-            raise TraceError(e.line, e.column, f"{e.text} is too large for every integer "
-                             f"type of its kind ({', '.join(e.ctype)})")
+            raise TraceError(e.line, e.column, code="trace_constant_large", text=e.text,
+                             types=", ".join(e.ctype))
         if kind is Var:
             sym = self.symbol(e)
             e.sym = sym
@@ -435,17 +490,23 @@ class _Checker:
             bt = self.expr(e.base)
             if e.arrow:
                 if not isinstance(bt, PtrT):
-                    raise TraceError(e.line, e.column, f"'->' needs a pointer to a struct, "
-                                     f"not {describe(bt)}")
+                    raise TraceError(e.line, e.column, code="trace_arrow_needs_pointer",
+                                     got=describe(bt))
                 bt = bt.to
             if not isinstance(bt, StructT):
                 name = flat or self.program.source[e.base.start:e.base.end]
-                raise TraceError(e.line, e.column, f"{name} is not declared as a struct "
-                                 f"(declare {flat or 'it'} with its type)" if flat
-                                 else f"'.' needs a struct, not {describe(bt)}")
+                if flat:
+                    raise TraceError(e.line, e.column, code="trace_not_struct", name=name)
+                raise TraceError(e.line, e.column, code="trace_dot_needs_struct", got=describe(bt))
             field = bt.fields.get(e.field)
             if field is None:
-                raise TraceError(e.line, e.column, f"struct {bt.name} has no field {e.field}")
+                raise TraceError(e.line, e.column, code="trace_no_field", name=bt.name,
+                                 field_name=e.field)
+            if isinstance(field[0], Unsupported):
+                raise TraceError(e.line, e.column, code="trace_field_unsupported",
+                                 name=e.field, struct=bt.name,
+                                 reason={"code": field[0].reason["code"], "params": {
+                                     k: v for k, v in field[0].reason.items() if k != "code"}})
             return field[0]
         if kind is Index:
             bt = self.expr(e.base)
@@ -454,8 +515,7 @@ class _Checker:
                 return bt.of
             if isinstance(bt, PtrT):
                 return bt.to
-            raise TraceError(e.line, e.column, f"'[]' needs an array or a pointer, not "
-                             f"{describe(bt)}")
+            raise TraceError(e.line, e.column, code="trace_index_needs_array", got=describe(bt))
         if kind is Unary:
             if e.op == "&":
                 return PtrT(self.expr(e.operand))
@@ -463,7 +523,8 @@ class _Checker:
                 t = self.expr(e.operand)
                 if isinstance(t, (PtrT, ArrT)):
                     return t.to if isinstance(t, PtrT) else t.of
-                raise TraceError(e.line, e.column, f"'*' needs a pointer, not {describe(t)}")
+                raise TraceError(e.line, e.column, code="trace_deref_needs_pointer",
+                                 got=describe(t))
             t = self.scalar(e.operand)
             return self.int if e.op == "!" else promote(target, t)
         if kind is Binary:
@@ -481,17 +542,20 @@ class _Checker:
             self.scalar(e.test)
             return common_type(target, self.scalar(e.then), self.scalar(e.other))
         if kind is Cast:
+            if isinstance(e.type_name, Ptr):
+                return self.pointer_cast(e)
             self.scalar(e.operand)
             return _type_of(target, e.type_name, e)
         if kind is Assign:
             tt = self.expr(e.target)
             if not isinstance(tt, CType):
                 if e.op != "=":
-                    raise TraceError(e.line, e.column, f"'{e.op}' on {describe(tt)}")
+                    raise TraceError(e.line, e.column, code="trace_op_on", op=e.op,
+                                     got=describe(tt))
                 vt = self.expr(e.value)
-                if isinstance(tt, ArrT) or not _same(tt, _decay(vt)):
-                    raise TraceError(e.line, e.column, f"cannot assign {describe(vt)} to "
-                                     f"{describe(tt)}")
+                if isinstance(tt, ArrT) or not _accepts(tt, vt):
+                    raise TraceError(e.line, e.column, code="trace_assign_type", src=describe(vt),
+                                     dst=describe(tt))
                 return tt
             vt = self.scalar(e.value)
             if e.op != "=":
@@ -501,13 +565,28 @@ class _Checker:
         if kind is IncDec:
             tt = self.expr(e.target)
             if not isinstance(tt, CType):
-                raise TraceError(e.line, e.column, f"'{e.op}' on {describe(tt)} is not "
-                                 "supported")
+                raise TraceError(e.line, e.column, code="trace_op_unsupported", op=e.op,
+                                 got=describe(tt))
             e.operand_type = common_type(target, tt, self.int)
             return tt
         if kind is Call:
             return self.call(e)
         raise AssertionError(kind.__name__)  # the parser makes no other node
+
+    def pointer_cast(self, e: Cast) -> PtrT:
+        """``(T *)p``: the same object seen as a ``T``; allowed when the layouts match field
+        by field, to ``void *``, and from ``void *`` (the object is checked when it runs)."""
+        tt = self.resolve(e.type_name, e)
+        vt = _decay(self.expr(e.operand))
+        text = " ".join(self.program.source[e.start:e.end].split())
+        if not isinstance(vt, PtrT):
+            raise TraceError(e.line, e.column, code="trace_cast_not_pointer", cast=text,
+                             got=describe(vt))
+        if not same_layout(vt, tt):
+            raise TraceError(e.line, e.column, code="trace_cast_reinterprets", cast=text,
+                             src=describe(vt), dst=describe(tt))
+        e.from_void = vt.to is VOID and tt.to is not VOID
+        return PtrT(tt.to)
 
     def call(self, e: Call) -> object:
         if e.q is not None or e.name in IQ_FUNCTIONS:
@@ -525,13 +604,13 @@ class _Checker:
         if self.function is not None:
             self.function.calls.add(f.name)
         if len(e.args) != len(f.params):
-            raise TraceError(e.line, e.column, f"{e.name}() takes {len(f.params)} arguments, "
-                             f"got {len(e.args)}")
+            raise TraceError(e.line, e.column, code="trace_builtin_arity", name=e.name,
+                             n=len(f.params), got=len(e.args))
         for a, p in zip(e.args, f.params):
             at = self.expr(a)
             if not _accepts(p.ctype, at):
-                raise TraceError(a.line, a.column, f"argument {p.name} of {e.name}() is "
-                                 f"{describe(p.ctype)}, got {describe(at)}")
+                raise TraceError(a.line, a.column, code="trace_argument_type", name=p.name,
+                                 function=e.name, want=describe(p.ctype), got=describe(at))
         return f.ret
 
     def signature(self, f: Function, entry: bool) -> None:
@@ -544,9 +623,10 @@ class _Checker:
         f.scope = self.scopes.pop()
         self.function = None
         f.ret = self.resolve(node.ret, node)
-        if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID:
-            raise TraceError(node.line, node.column, f"{f.name}() returns {describe(f.ret)}: "
-                             "only integer, struct and void results are supported")
+        if not isinstance(f.ret, (CType, StructT)) and f.ret is not VOID and not (
+                isinstance(f.ret, PtrT) and f.ret.n is None and not entry):
+            raise TraceError(node.line, node.column, code="trace_result_type", name=f.name,
+                             ret=describe(f.ret))
 
     def body(self, f: Function) -> None:
         self.function = f
@@ -574,6 +654,7 @@ class _Inputs:
         self.active: list = []
         self.visits = 0
         self.returns: list | None = None
+        self.results: list = []  # the paths the current function's pointer returns give
 
     def tick(self, node) -> None:
         self.visits += 1
@@ -632,6 +713,10 @@ class _Inputs:
             return None if base is None else f"{base}[0]"
         if isinstance(e, Unary) and e.op == "&":
             return self.place(e.operand, a)
+        if isinstance(e, Cast):
+            return self.pointer(e.operand, a)
+        if isinstance(e, Call):
+            return self.call(e, a)
         path = self.place(e, a) if isinstance(e, (Var, Member, Index)) or (
             isinstance(e, Unary) and e.op == "*") else None
         return self.pointers.get(path) if path is not None else None
@@ -690,12 +775,14 @@ class _Inputs:
             for item in e.items:
                 self.expr(item, a)
 
-    def call(self, e: Call, a) -> None:
+    def call(self, e: Call, a) -> str | None:
+        """Follow a call of a function of the code; a pointer result's path when every
+        ``return`` gives the same one."""
         f = e.func
         if f is None:
             for arg in e.args:
                 self.expr(arg, a)
-            return
+            return None
         if f.name in self.active:
             raise TraceError(e.line, e.column, code="trace_recursion", name=f.name)
         bound = []
@@ -711,17 +798,20 @@ class _Inputs:
             self.write(p.key, p.ctype, a)
         self.pointers.update(bound)
         self.active.append(f.name)
-        outer = self.returns
-        self.returns = []
+        outer, outer_results = self.returns, self.results
+        self.returns, self.results = [], []
         end = self.block(f.node.body.statements, a)
         ends = self.returns + [end]
-        self.returns = outer
+        results = set(self.results)
+        self.returns, self.results = outer, outer_results
         self.active.pop()
         if a is not None:
             live = [x for x in ends if x is not None]
-            if live:
+            if live:  # (a itself may be one of them: intersect before clearing it)
+                both = set.intersection(*live)
                 a.clear()
-                a.update(set.intersection(*live))
+                a.update(both)
+        return results.pop() if len(results) == 1 else None
 
     def block(self, statements, a):
         for s in statements:
@@ -770,7 +860,9 @@ class _Inputs:
                 return inner if inner is not None else a
             return a
         if isinstance(s, Return):
-            if s.value is not None:
+            if s.value is not None and isinstance(s.value.ctype, PtrT):
+                self.results.append(self.pointer(s.value, a))
+            elif s.value is not None:
                 self.expr(s.value, a)
             if self.returns is not None:
                 self.returns.append(a)
@@ -808,12 +900,14 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         # without an entry every statement runs: the first one outside the subset is the error
         raise program.refused[entry][0] if entry is not None else \
             next(iter(program.refused.values()))[0]
-    if entry is not None and entry not in program.functions:
-        known = ", ".join(program.functions) or "none"
-        raise InputError("entry", code="trace_no_entry", name=entry, known=known)
-    if entry is None and program.functions and not any(
-            not isinstance(s, Decl) for s in program.statements if not isinstance(s, Block)):
-        raise InputError("entry", code="trace_choose_entry", known=", ".join(program.functions))
+    if entry is None or entry not in program.functions:
+        entries = [*program.functions, *(f"{m}(…)" for m in entry_macros(program))]
+        if entry is not None:
+            raise InputError("entry", code="trace_no_entry", name=entry,
+                             known=", ".join(entries) or "none")
+        if entries and not any(not isinstance(s, Decl) for s in program.statements
+                               if not isinstance(s, Block)):
+            raise InputError("entry", code="trace_choose_entry", known=", ".join(entries))
     for s in program.statements:
         c.statement(s)
     for name, node in program.functions.items():
@@ -840,6 +934,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
     for name, err in c.broken.items():
         program.refused[name] = (err, True)
         del c.functions[name]
+    if entry is not None:
+        _handles(c.functions[entry], c.roots)
     calls = set(c.functions[entry].calls) if entry is not None else set()
     seen: set = set()
     while calls - seen:  # a broken function the entry reaches is an error at its call
@@ -847,8 +943,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         seen.add(name)
         if name in program.refused and program.refused[name][1]:
             err = program.refused[name][0]
-            raise TraceError(err.line, err.column, f"{name} (called from {entry}) is outside "
-                             f"the subset: {err.reason}")
+            raise TraceError(err.line, err.column, code="trace_refused_call", name=name,
+                             entry=entry, reason=err.reason_error())
         if name in c.functions:
             calls |= c.functions[name].calls
     # User-facing integers: globals and, for an entry, its parameters, the objects its
@@ -868,6 +964,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
             not sym.initialized)
     f = c.functions.get(entry) if entry is not None else None
     objects = dict(c.arrays)
+    pointees: dict = {}  # a pointer field of an entry's object -> the object it points to
     if f is not None:
         for p in f.params:
             if isinstance(p.ctype, PtrT):
@@ -875,6 +972,9 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
                 add(path, t, p.spelling, p.line, p.column, False, True)
                 if isinstance(t, ArrT):
                     objects[path] = t.n
+                for ptr, obj, ot, sp in linked(path, t):
+                    add(obj, ot, sp, p.line, p.column, False, True)
+                    pointees[ptr] = obj
             else:
                 add(p.key, p.ctype, p.spelling, p.line, p.column, False, True)
         for sym in _entry_locals(f.node.body):
@@ -883,8 +983,8 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
             add("return", f.ret, f.ret_spelling, f.node.line, f.node.column, True, False)
     for note in program.notes.values():
         if note.name not in symbols:
-            raise TraceError(note.line, note.column, f"the annotation names {note.name}, "
-                             "which is not declared")
+            raise TraceError(note.line, note.column, code="trace_note_undeclared",
+                             name=note.name)
     analysis = _Inputs(c, settable.__contains__)
     assigned: set = set()
     analysis.block(program.statements, assigned)
@@ -892,13 +992,16 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         for p in f.params:  # every integer parameter is an input, in order
             if isinstance(p.ctype, PtrT):
                 analysis.pointers[p.key] = pointee(p)[2]
+                analysis.pointers.update(pointees)
             elif isinstance(p.ctype, CType):
                 analysis.read(p.key, p.ctype, set())
                 assigned.add(p.key)
         analysis.active.append(f.name)
         analysis.returns = []
         analysis.block(f.node.body.statements, assigned)
-    return Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
+    checked = Checked(program, target, symbols, analysis.inputs, c.functions, f, objects)
+    checked.roots, checked.pointees = c.roots, pointees
+    return checked
 
 
 def pointee(p: Symbol) -> tuple:
@@ -909,6 +1012,52 @@ def pointee(p: Symbol) -> tuple:
         return p.name, ArrT(t.to, t.n), f"{p.name}[0]"
     path = p.name if isinstance(t.to, StructT) else f"*{p.name}"
     return path, t.to, path
+
+
+def _handles(f: Function, roots: dict) -> None:
+    """An entry parameter that is an opaque handle (``void *`` or a pointer to a struct never
+    defined) points to an object of the type the entry casts it to: ``(PI_Obj *)handle``."""
+    for p in f.params:
+        if not (isinstance(p.ctype, PtrT) and p.ctype.to is VOID):
+            continue
+        seen: set = set()
+
+        def walk(node):
+            if isinstance(node, Cast) and isinstance(node.operand, Var) and \
+                    getattr(node.operand, "sym", None) is p and isinstance(node.ctype, PtrT):
+                seen.add(node.ctype.to)
+            for name in getattr(node, "__slots__", ()):
+                child = getattr(node, name, None)
+                for item in (child if isinstance(child, list) else [child]):
+                    if isinstance(item, tuple):
+                        for x in item:
+                            if isinstance(x, (Node, Stmt)):
+                                walk(x)
+                    elif isinstance(item, (Node, Stmt)):
+                        walk(item)
+
+        walk(f.node.body)
+        if len(seen) != 1:
+            raise TraceError(p.line, p.column, code="trace_opaque_entry", name=p.name,
+                             types=", ".join(describe(t) for t in seen) or "none")
+        p.ctype = roots[p.key] = PtrT(seen.pop())
+
+
+def linked(path: str, t, chain: tuple = ()) -> list:
+    """The objects the pointer fields of the object at ``path`` point to, each an object of
+    its own named after the field (``rtM.dwork`` → ``rtM.dwork.FIELD``, an integer ``*rtM.n``):
+    a list of (pointer path, object path, object type), nested pointers followed, a struct
+    already on the way not again (a linked list's next stays unset)."""
+    out = []
+    chain = chain + (t,)
+    for leaf, lt, sp in leaves(path, t):
+        if not isinstance(lt, PtrT) or lt.n is not None or lt.to is VOID or lt.to in chain:
+            continue
+        obj = leaf if isinstance(lt.to, StructT) else f"*{leaf}"
+        out.append((leaf, obj, lt.to, sp))
+        if isinstance(lt.to, StructT):
+            out += linked(obj, lt.to, chain)
+    return out
 
 
 def _entry_locals(body) -> list:

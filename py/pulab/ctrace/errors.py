@@ -38,3 +38,10 @@ class TraceError(InputError):
             self.reason = render(code, params, "en")
         self.line = line
         self.column = column
+
+    def reason_error(self) -> dict:
+        """The reason without the position, as a message parameter (an error of its own,
+        rendered in the language of the message it is part of)."""
+        if self.code == "trace_at":
+            return self.params["reason"]
+        return {"code": "text", "params": {"text": self.reason}}

@@ -37,7 +37,8 @@ Examples
 from __future__ import annotations
 
 from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
-from .check import ArrT, Checked, PtrT, StructT, VOID, leaves, pointee
+from .check import (ArrT, Checked, PtrT, StructT, VOID, describe, leaves, linked, pointee,
+                    same_layout)
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
                      Index, InitList, Jump, Label, Logical, Loop, Member, Num, Return, Switch,
@@ -175,9 +176,8 @@ class Evaluator:
                                  code="trace_unset_input", name=path,
                                  unset=", ".join(self.unset))
             if self.checked.entry is None:
-                raise TraceError(node.line, node.column, f"{path} is read before it has a value"
-                                 " (give it an input value or an initializer)",
-                                 field=f"set.{path}")
+                raise TraceError(node.line, node.column, field=f"set.{path}",
+                                 code="trace_unset_global", name=path)
             raise TraceError(node.line, node.column, code="trace_unset_local", name=path)
         return v
 
@@ -200,6 +200,9 @@ class Evaluator:
                     obj, t, value = pointee(p)
                     self.mem[p.key] = value
                     given = leaves(obj, t, p.spelling)
+                    for ptr, obj2, t2, sp in linked(obj, t):
+                        self.mem[ptr] = obj2
+                        given += leaves(obj2, t2, sp)
                 else:
                     given = leaves(p.key, p.ctype, p.spelling)
                 for path, t, spelling in given:
@@ -284,6 +287,9 @@ class Evaluator:
             if s.value is None:
                 self.step(s, src[s.start:s.end], None, None, VOID)
                 raise _Return(None)
+            if isinstance(f.ret, PtrT):  # an object's path (a handle getter)
+                self.step(s, src[s.start:s.end], None, None, VOID)
+                raise _Return(self.eval(s.value))
             if isinstance(f.ret, StructT):  # copied out: the callee's frame goes on the next call
                 self.copy(f"{f.prefix}return", self.eval(s.value), f.ret)
                 self.step(s, src[s.start:s.end], "return", None, VOID)
@@ -446,7 +452,12 @@ class Evaluator:
         if i == 0:
             return ptr
         head, bracket, k = ptr[:-1].rpartition("[")
-        n = self.checked.objects.get(head) if bracket and ptr.endswith("]") else None
+        n = None
+        if bracket and ptr.endswith("]"):
+            n = self.checked.objects.get(head)
+            if n is None:  # an array field of a struct
+                t = self.checked.type_at(head)
+                n = t.n if isinstance(t, ArrT) else None
         if n is None:
             raise TraceError(node.line, node.column, code="trace_one_object", name=ptr)
         j = int(k) + i
@@ -472,6 +483,15 @@ class Evaluator:
             return self.assign(e)
         if kind is Cast:
             v = self.eval(e.operand)
+            if isinstance(e.ctype, PtrT):  # the same object; from void * its type is checked
+                if e.from_void and v is not None:
+                    t = self.checked.type_at(v)
+                    if t is None or not same_layout(t, e.ctype.to):
+                        raise TraceError(e.line, e.column, code="trace_cast_reinterprets",
+                                         cast=" ".join(self.source[e.start:e.end].split()),
+                                         src=f"{describe(t)} *" if t else "void *",
+                                         dst=describe(e.ctype))
+                return v
             w, flags = self.store(v, e.ctype)
             self.term(e, w, flags)
             return w
@@ -503,7 +523,7 @@ class Evaluator:
         """``a op b`` in type ``t`` (operands already converted); returns (value, flags)."""
         if op in ("+", "-", "*", "/"):
             if op == "/" and b == 0:
-                raise TraceError(node.line, node.column, "division by zero")
+                raise TraceError(node.line, node.column, code="trace_division_zero")
             x, y = CInt(a, t), CInt(b, t)
             r = x + y if op == "+" else x - y if op == "-" else x * y if op == "*" else x // y
             flags = []
@@ -516,7 +536,7 @@ class Evaluator:
             return r.value, flags
         if op == "%":
             if b == 0:
-                raise TraceError(node.line, node.column, "remainder by zero")
+                raise TraceError(node.line, node.column, code="trace_remainder_zero")
             # a % b overflows exactly when a / b does (C11 6.5.5p6).
             if t.signed and a == t.min and b == -1:
                 self.undefined.add("division_overflow")
@@ -665,7 +685,7 @@ class Evaluator:
             t = e.ctype
             scalar = isinstance(t, CType)
             self.terms.append({"expr": self.source[e.start:e.end], "line": e.line,
-                               "column": e.column, "type": t.name,
+                               "column": e.column, "type": describe(t),
                                "value": value if scalar else None,
                                "hex": hex_of(value, t.bits) if scalar else None,
                                "flags": flags, "call": f.name, "steps": inner})

@@ -59,7 +59,7 @@ class Token(NamedTuple):
 def tokenize(source: str) -> list:
     """Split ``source`` into tokens; raises :class:`TraceError` at the first bad character."""
     if len(source) > MAX_SOURCE_CHARS:
-        raise TraceError(1, 1, f"code is longer than {MAX_SOURCE_CHARS} characters")
+        raise TraceError(1, 1, code="trace_code_length", limit=MAX_SOURCE_CHARS)
     if source[:1] == "\ufeff":
         source = " " + source[1:]  # a UTF-8 byte-order mark, kept as one column
     tokens: list = []
@@ -82,11 +82,13 @@ def tokenize(source: str) -> list:
         text = m.group(kind)
         if kind not in _SKIP:
             if kind == "bad":
-                raise TraceError(line, pos - line_start + 1, f"unexpected character {text!r}")
+                raise TraceError(line, pos - line_start + 1, code="trace_character",
+                                 char=repr(text))
             if kind == "unclosed":
-                raise TraceError(line, pos - line_start + 1, "comment not closed: */ missing")
+                raise TraceError(line, pos - line_start + 1, code="trace_comment_open")
             if kind == "directive" and source[line_start:pos].strip():
-                raise TraceError(line, pos - line_start + 1, "unexpected character '#'")
+                raise TraceError(line, pos - line_start + 1, code="trace_character",
+                                 char="'#'")
             # tuple.__new__ skips NamedTuple's Python-level __new__ (a third of the lexer's time).
             append(_new(Token, (kind, text, line, pos - line_start + 1, pos, pos + len(text))))
         if kind != "number" and kind != "name" and kind != "op":

@@ -39,6 +39,7 @@ from .types import BASE_TYPE_WORDS, TARGETS
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
            "Cast", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
            "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr", "Arr",
+           "Unsupported",
            "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
@@ -132,10 +133,13 @@ class Cond(Node):
 
 
 class Cast(Node):
-    __slots__ = ("type_name", "operand")
+    """``(TYPE)operand``: ``type_name`` a scalar spelling or a :class:`Ptr` descriptor;
+    ``from_void`` (set by the checker) when a ``void *`` becomes an object pointer."""
 
-    def __init__(self, type_name: str, operand: Node) -> None:
-        self.type_name, self.operand = type_name, operand
+    __slots__ = ("type_name", "operand", "from_void")
+
+    def __init__(self, type_name, operand: Node) -> None:
+        self.type_name, self.operand, self.from_void = type_name, operand, False
 
 
 class Assign(Node):
@@ -201,6 +205,16 @@ class Ptr:
 
     def __init__(self, to, size=None) -> None:
         self.to, self.size = to, size
+
+
+class Unsupported:
+    """Type descriptor of a struct field the subset cannot compute (``float_t ConvFact;``):
+    ``reason`` is the error a use of the field raises (a catalog code and its params)."""
+
+    __slots__ = ("reason",)
+
+    def __init__(self, reason: dict) -> None:
+        self.reason = reason
 
 
 class Arr:
@@ -328,10 +342,12 @@ class QNote:
 
 class Program:
     """Parsed code: ``statements`` (outside functions), ``functions`` (name → FuncDef, in
-    definition order), ``notes`` (name → QNote), ``global_q`` from ``#define``."""
+    definition order), ``notes`` (name → QNote), ``global_q`` from ``#define``, ``macros``
+    (name → the preprocessor's macro, as defined at the end) and ``aliases`` (typedef
+    name → type descriptor)."""
 
     __slots__ = ("source", "statements", "notes", "global_q", "unresolved", "functions",
-                 "refused")
+                 "refused", "macros", "aliases")
 
     def __init__(self, source: str, statements: list, notes: dict, global_q: int | None,
                  functions: dict | None = None, refused: dict | None = None) -> None:
@@ -347,21 +363,28 @@ def _unknown_type(tok: Token) -> TraceError:
     return TraceError(tok.line, tok.column, code="trace_unknown_type", name=tok.text)
 
 
-def _fail(tok: Token, message: str) -> TraceError:
-    return TraceError(tok.line, tok.column, message)
+def _fail(tok: Token, message: str | None = None, code: str | None = None,
+          **params) -> TraceError:
+    """The error at ``tok``: a catalog ``code`` with ``params`` (or, still, free text)."""
+    return TraceError(tok.line, tok.column, message, code=code, **params)
+
+
+def _got(tok: Token):
+    """What was found instead, as a message parameter (the end of the code in words)."""
+    return {"code": "trace_end_of_code", "params": {}} if tok.kind == "end" else repr(tok.text)
 
 
 def _note(tok: Token) -> QNote:
     m = _NOTE.match(tok.text)
     if m is None:
-        raise _fail(tok, "annotation must read '// @q NAME Qn [base=NUMBER [UNIT]]'")
+        raise _fail(tok, code="trace_annotation_syntax")
     q = m["q"][1:]
     n = int(q.split(".")[1]) if "." in q else int(q)
     if n > 63:
-        raise _fail(tok, f"Q{n}: at most 63 fraction bits")
+        raise _fail(tok, code="trace_q_bits", n=n)
     base = float(m["base"]) if m["base"] is not None else None
     if base is not None and not (base == base and abs(base) != float("inf")):
-        raise _fail(tok, "base must be a finite number")
+        raise _fail(tok, code="trace_base_finite")
     return QNote(m["name"], n, base, m["unit"] or "", tok.line, tok.column)
 
 
@@ -383,17 +406,17 @@ def _int_constant(tok: Token) -> tuple:
     text = tok.text
     m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)([A-Za-z_0-9]*)", text)
     if m is None or "." in text:
-        raise _fail(tok, f"{text}: only integer constants are supported (no floating point)")
+        raise _fail(tok, code="trace_float_constant", text=text)
     digits, suffix = m[1], m[2]
     if not _SUFFIX.fullmatch(suffix) or "lL" in suffix or "Ll" in suffix:
-        raise _fail(tok, f"{text}: bad integer suffix {suffix!r}")
+        raise _fail(tok, code="trace_int_suffix", text=text, suffix=repr(suffix))
     if digits[:2] in ("0x", "0X"):
         value, decimal = int(digits[2:], 16), False
     elif digits[:2] in ("0b", "0B"):
         value, decimal = int(digits[2:], 2), False
     elif len(digits) > 1 and digits[0] == "0":
         if not re.fullmatch(r"[0-7]+", digits):
-            raise _fail(tok, f"{text}: bad octal constant")
+            raise _fail(tok, code="trace_octal", text=text)
         value, decimal = int(digits, 8), False
     else:
         value, decimal = int(digits), True
@@ -445,19 +468,23 @@ class _Parser:
         # Only operator tokens have symbol text (names, numbers and directives cannot).
         return self.tokens[self.pos + k].text == text
 
-    def expect(self, text: str, what: str = "") -> Token:
+    def expect(self, text: str, where: str | None = None, **params) -> Token:
+        """Take the operator ``text``; else the error names it, where it was expected (a
+        ``trace_where_*`` catalog code with ``params``) and what came instead."""
         tok = self.peek()
         if tok.kind == "op" and tok.text == text:
             return self.take()
-        got = "end of code" if tok.kind == "end" else repr(tok.text)
-        raise _fail(tok, f"expected '{text}'{what}, got {got}")
+        if where is None:
+            raise _fail(tok, code="trace_expected_bare", token=text, got=_got(tok))
+        raise _fail(tok, code="trace_expected", token=text, got=_got(tok),
+                    where={"code": f"trace_where_{where}", "params": params})
 
     def deeper(self) -> None:
         """One more level of recursion: bounds the parser's and the evaluator's stacks."""
         self.depth += 1
         self.height += 1
         if self.depth > MAX_DEPTH:
-            raise _fail(self.peek(), f"nested more than {MAX_DEPTH} deep")
+            raise _fail(self.peek(), code="trace_nested", limit=MAX_DEPTH)
 
     def shallower(self) -> None:
         self.depth -= 1
@@ -492,7 +519,7 @@ class _Parser:
         while level:
             tok = self.take()
             if tok.kind == "end":
-                raise _fail(open_tok, "'(' is never closed")
+                raise _fail(open_tok, code="trace_paren_open")
             level += (tok.text == "(") - (tok.text == ")")
 
     def specifiers(self) -> tuple:
@@ -513,9 +540,7 @@ class _Parser:
         if tok.kind == "name" and tok.text in self.type_names and \
                 tok.text not in BASE_TYPE_WORDS:
             if tok.text in self.floating:
-                at, what = self.floating[tok.text]
-                raise _fail(tok, f"{tok.text} is {what} (typedef at {at.line}:{at.column}), "
-                                 "not supported")
+                raise _fail(tok, **self.floating_error(tok.text))
             self.take()
             static = self.qualifiers() or static
             return self.aliases.get(tok.text, tok.text), tok.text, static
@@ -529,16 +554,16 @@ class _Parser:
                 words.append(w)
         if not words:
             if tok.kind == "name" and tok.text in _FLOATING:
-                raise _fail(tok, f"'{tok.text}' is not supported (integer types only)")
+                raise _fail(tok, code="trace_not_integer", word=tok.text)
             if tok.kind == "name":
                 raise _unknown_type(tok)
-            raise _fail(first, "expected a type")
+            raise _fail(first, code="trace_expected_type")
         sign = [w for w in words if w in ("signed", "unsigned")]
         longs = words.count("long")
         kinds = [w for w in words if w in ("char", "short", "int")]
         if len(sign) > 1 or longs > 2 or len(kinds) > 1 or \
                 (kinds and kinds[0] != "int" and longs) or (words.count("int") > 1):
-            raise _fail(first, f"not a C type: {' '.join(words)}")
+            raise _fail(first, code="trace_not_c_type", words=" ".join(words))
         base = "long long" if longs == 2 else "long" if longs == 1 else \
             (kinds[0] if kinds else "int")
         if sign == ["unsigned"]:
@@ -548,59 +573,83 @@ class _Parser:
         static = self.qualifiers() or static
         return base, base, static
 
-    def type_spelling(self) -> str:
-        """A scalar type's spelling (casts), normalized: ``unsigned long int`` → ``unsigned long``."""
+    def type_spelling(self):
+        """A cast's type: a scalar type's spelling, normalized (``unsigned long int`` →
+        ``unsigned long``), or a :class:`Ptr` descriptor."""
         first = self.peek()
         desc, _, _ = self.specifiers()
         while self.is_op("*"):
             self.take()
             desc = Ptr(desc)
-        if not isinstance(desc, str) or desc == "void":
-            raise _fail(first, "a cast to a pointer, struct or void is not supported")
+            self.qualifiers()
+        if isinstance(desc, StructDef) or desc == "void":
+            raise _fail(first, code="trace_cast_struct_void")
         return desc
 
     def tagged(self):
         """``struct [tag] [{ fields }]`` or ``enum [tag] [{ constants }]``."""
         kw = self.take()
         if kw.text == "union":
-            raise _fail(kw, "'union' is not supported")
+            raise _fail(kw, code="trace_not_supported", word="union")
         tag = self.take() if self.peek().kind == "name" else None
         if kw.text == "enum":
             if self.is_op("{"):
                 self.enumerators()
             return "int"
         if tag is None and not self.is_op("{"):
-            raise _fail(kw, "expected a struct tag or '{'")
+            raise _fail(kw, code="trace_struct_tag")
         key = tag.text if tag is not None else f"<anonymous at {kw.line}:{kw.column}>"
         sdef = self.structs.get(key)
         if sdef is None:
             sdef = self.structs[key] = StructDef(key, kw.line, kw.column)
         if self.is_op("{"):
             if sdef.fields is not None:
-                raise _fail(kw, f"struct {key} is already defined at {sdef.line}:{sdef.column}")
+                raise _fail(kw, code="trace_struct_redefined", name=key,
+                            at=f"{sdef.line}:{sdef.column}")
             open_tok = self.take()
             fields: list = []
             names: set = set()
             while not self.is_op("}"):
                 if self.peek().kind == "end":
-                    raise _fail(open_tok, f"'{{' at {open_tok.line}:{open_tok.column} is "
-                                          "never closed")
-                desc, spelling, _ = self.specifiers()
+                    raise _fail(open_tok, code="trace_brace_open",
+                                at=f"{open_tok.line}:{open_tok.column}")
+                desc, spelling = self.field_specifiers()
                 while True:
                     name, d, at = self.declarator(desc)
                     if self.is_op(":"):
-                        raise _fail(self.peek(), "bit-fields are not supported")
+                        raise _fail(self.peek(), code="trace_bitfield")
                     if name in names:
-                        raise _fail(at, f"field {name} is declared twice in struct {key}")
+                        raise _fail(at, code="trace_field_twice", name=name, struct=key)
                     names.add(name)
                     fields.append((name, d, spelling))
                     if not self.is_op(","):
                         break
                     self.take()
-                self.expect(";", " after a struct field")
+                self.expect(";", "struct_field")
             self.take()
             sdef.fields = fields
         return sdef
+
+    def floating_error(self, name: str) -> dict:
+        """The error for a use of a floating-point or pointer typedef: code and params."""
+        at, what = self.floating[name]
+        return {"code": "trace_typedef_pointer" if what == "a pointer type" else
+                "trace_typedef_float", "name": name, "at": f"{at.line}:{at.column}"}
+
+    def field_specifiers(self) -> tuple:
+        """A struct field's type: as :meth:`specifiers`, except that a floating or pointer
+        typedef (as in a handle beside the integers) is an :class:`Unsupported` field,
+        refused where it is used."""
+        self.qualifiers()
+        tok = self.peek()
+        if tok.kind == "name" and (tok.text in self.floating or tok.text in _FLOATING):
+            reason = self.floating_error(tok.text) if tok.text in self.floating else \
+                {"code": "trace_not_integer", "word": tok.text}
+            self.take()
+            self.qualifiers()
+            return Unsupported(reason), tok.text
+        desc, spelling, _ = self.specifiers()
+        return desc, spelling
 
     def enumerators(self) -> None:
         self.take()
@@ -608,17 +657,17 @@ class _Parser:
         while not self.is_op("}"):
             name = self.take()
             if name.kind != "name":
-                raise _fail(name, "expected an enumerator name")
+                raise _fail(name, code="trace_enumerator_name")
             if self.is_op("="):
                 self.take()
-                value = self.constant(self.conditional(), "an enumerator's value")
+                value = self.constant(self.conditional(), "trace_const_enum")
             else:
                 value += 1
             self.enums[name.text] = value
             if not self.is_op(","):
                 break
             self.take()
-        self.expect("}", " to close the enum")
+        self.expect("}", "close_enum")
 
     def constant(self, node: Node, what: str) -> int:
         return constant_value(node, what)
@@ -631,13 +680,13 @@ class _Parser:
             self.qualifiers()
         tok = self.peek()
         if self.is_op("("):
-            raise _fail(tok, "function pointers are not supported")
-        var = self.var_name("a variable name after the type")
+            raise _fail(tok, code="trace_function_pointer")
+        var = self.var_name()
         sizes = []
         while self.is_op("["):
             self.take()
             size = None if self.is_op("]") else self.conditional()
-            self.expect("]", " to close the array size")
+            self.expect("]", "close_array_size")
             sizes.append(size)
         for size in reversed(sizes):
             desc = Arr(desc, size)
@@ -662,8 +711,8 @@ class _Parser:
             if isinstance(item, FuncDef):
                 prev = self.functions.get(item.name)
                 if prev is not None:
-                    raise _fail(self.tokens[self.pos - 1], f"function {item.name} is already "
-                                f"defined at {prev.line}:{prev.column}")
+                    raise _fail(self.tokens[self.pos - 1], code="trace_function_redefined",
+                                name=item.name, at=f"{prev.line}:{prev.column}")
                 self.functions[item.name] = item
             elif item is not None:
                 out.append(item)
@@ -713,7 +762,7 @@ class _Parser:
         body = []
         while not self.is_op("}"):
             if self.peek().kind == "end":
-                raise _fail(self.peek(), f"'{{' at {tok.line}:{tok.column} is never closed")
+                raise _fail(self.peek(), code="trace_brace_open", at=f"{tok.line}:{tok.column}")
             body.append(self.statement())
         self.take()
         self.shallower()
@@ -735,9 +784,9 @@ class _Parser:
         word = tok.text if tok.kind == "name" else None
         if word == "if":
             self.take()
-            self.expect("(", " after 'if'")
+            self.expect("(", "after", word="if")
             test = self.expression()
-            self.expect(")", " to close the condition")
+            self.expect(")", "close_condition")
             then = self.body()
             other = None
             if self.peek().kind == "name" and self.peek().text == "else":
@@ -748,11 +797,11 @@ class _Parser:
             return self.loop()
         if word == "switch":
             self.take()
-            self.expect("(", " after 'switch'")
+            self.expect("(", "after", word="switch")
             test = self.expression()
-            self.expect(")", " to close the condition")
+            self.expect(")", "close_condition")
             if not self.is_op("{"):
-                raise _fail(self.peek(), "expected '{' after 'switch (…)'")
+                raise _fail(self.peek(), code="trace_switch_brace")
             self.switches += 1
             body = self.block()
             self.switches -= 1
@@ -760,27 +809,27 @@ class _Parser:
         if word in ("case", "default"):
             self.take()
             if not self.switches:
-                raise _fail(tok, f"'{word}' outside a switch")
+                raise _fail(tok, code="trace_outside_switch", word=word)
             value = self.conditional() if word == "case" else None
-            self.expect(":", f" after '{word}'")
+            self.expect(":", "after", word=word)
             return Label(value).at(tok, self.last())
         if word in ("break", "continue"):
             self.take()
             if not self.loops and (word == "continue" or not self.switches):
-                raise _fail(tok, f"'{word}' outside a loop")
-            self.expect(";", f" after '{word}'")
+                raise _fail(tok, code="trace_outside_loop", word=word)
+            self.expect(";", "after", word=word)
             return Jump(word).at(tok, self.last())
         if word == "return":
             self.take()
             if not self.in_function:
-                raise _fail(tok, "'return' outside a function")
+                raise _fail(tok, code="trace_return_outside")
             value = None if self.is_op(";") else self.expression()
-            self.expect(";", " at the end of the statement")
+            self.expect(";", "statement_end")
             return Return(value).at(tok, self.last())
         if word == "else":
-            raise _fail(tok, "'else' without 'if'")
+            raise _fail(tok, code="trace_else_without_if")
         if word in _UNSUPPORTED:
-            raise _fail(tok, f"'{word}' is not supported")
+            raise _fail(tok, code="trace_not_supported", word=word)
         if word == "typedef":
             return self.typedef()
         if self.starts_type():
@@ -790,7 +839,7 @@ class _Parser:
                 self.tokens[self.pos + 3].text in ("=", ",", "["))):
             raise _unknown_type(tok)  # NAME NAME: a declaration with a type never defined
         expr = self.expression()
-        self.expect(";", " at the end of the statement")
+        self.expect(";", "statement_end")
         return ExprStmt(expr).at(tok, self.last())
 
     def loop(self) -> Stmt:
@@ -801,14 +850,14 @@ class _Parser:
             body = self.body()
             w = self.peek()
             if w.text != "while":
-                raise _fail(w, "expected 'while' after the body of 'do'")
+                raise _fail(w, code="trace_do_while")
             self.take()
-            self.expect("(", " after 'while'")
+            self.expect("(", "after", word="while")
             test = self.expression()
-            self.expect(")", " to close the condition")
-            self.expect(";", " after 'do … while (…)'")
+            self.expect(")", "close_condition")
+            self.expect(";", "do_while")
         else:
-            self.expect("(", f" after '{tok.text}'")
+            self.expect("(", "after", word=tok.text)
             if tok.text == "for":
                 if self.is_op(";"):
                     self.take()
@@ -817,13 +866,13 @@ class _Parser:
                 else:
                     first = self.peek()
                     init = ExprStmt(self.expression()).at(first, self.last())
-                    self.expect(";", " after the loop's first clause")
+                    self.expect(";", "loop_first")
                 test = None if self.is_op(";") else self.expression()
-                self.expect(";", " after the loop's condition")
+                self.expect(";", "loop_condition")
                 step = None if self.is_op(")") else self.expression()
             else:
                 test = self.expression()
-            self.expect(")", " to close the condition")
+            self.expect(")", "close_condition")
             body = self.body()
         self.loops -= 1
         return Loop(tok.text, init, test, step, body).at(tok, self.last())
@@ -839,10 +888,10 @@ class _Parser:
             name, d, at = self.declarator(desc)
             if self.is_op("("):
                 if not top or items:
-                    raise _fail(at, f"a function {name}(…) can only be declared at file scope")
+                    raise _fail(at, code="trace_nested_function", name=name)
                 return self.function(tok, at, d, spelling)
             if d == "void":
-                raise _fail(at, f"{name} cannot have type void")
+                raise _fail(at, code="trace_void_object", name=name)
             init = None
             if self.is_op("="):
                 self.take()
@@ -851,7 +900,7 @@ class _Parser:
             if not self.is_op(","):
                 break
             self.take()
-        self.expect(";", " at the end of the declaration")
+        self.expect(";", "declaration_end")
         return Decl(spelling, items, static).at(tok, self.last())
 
     def initializer(self) -> Node:
@@ -863,12 +912,12 @@ class _Parser:
         items = []
         while not self.is_op("}"):
             if self.is_op("."):
-                raise _fail(self.peek(), "designated initializers are not supported")
+                raise _fail(self.peek(), code="trace_designated")
             items.append(self.initializer())
             if not self.is_op(","):
                 break
             self.take()
-        self.expect("}", f" to close '{{' at {tok.line}:{tok.column}")
+        self.expect("}", "close_brace", at=f"{tok.line}:{tok.column}")
         self.shallower()
         return InitList(items).at(tok, self.last())
 
@@ -880,7 +929,7 @@ class _Parser:
             self.take()
         while not self.is_op(")"):
             if self.is_op("..."):
-                raise _fail(self.peek(), "variadic functions are not supported")
+                raise _fail(self.peek(), code="trace_variadic")
             ptok = self.peek()
             desc, spelling, _ = self.specifiers()
             if self.is_op(",") or self.is_op(")"):
@@ -890,22 +939,21 @@ class _Parser:
             if isinstance(d, Arr):
                 d = Ptr(d.of, d.size)  # an array parameter is a pointer (C99 6.7.5.3p7)
             if d == "void":
-                raise _fail(at, "a parameter cannot have type void")
+                raise _fail(at, code="trace_void_param")
             params.append((pname, d, spelling, at))
             if not self.is_op(","):
                 break
             self.take()
-        self.expect(")", f" to close '(' at {open_tok.line}:{open_tok.column}")
+        self.expect(")", "close_paren", at=f"{open_tok.line}:{open_tok.column}")
         self.qualifiers()
         if self.is_op(";"):
             self.take()
             return None
         if not self.is_op("{"):
             got = self.peek()
-            raise _fail(got, f"expected '{{' or ';' after {name_tok.text}(…), got "
-                             f"{'end of code' if got.kind == 'end' else repr(got.text)}")
+            raise _fail(got, code="trace_after_params", name=name_tok.text, got=_got(got))
         if any(not p[0] for p in params):
-            raise _fail(name_tok, f"every parameter of {name_tok.text}(…) needs a name")
+            raise _fail(name_tok, code="trace_param_name", name=name_tok.text)
         self.in_function = True
         body = self.block()
         self.in_function = False
@@ -932,11 +980,9 @@ class _Parser:
                 pointer = pointer or self.take().text == "*"
             name = self.take()
             if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
-                raise _fail(name, f"expected a name after typedef {spelling}, got "
-                                  f"{'end of code' if name.kind == 'end' else repr(name.text)}")
+                raise _fail(name, code="trace_typedef_name", spelling=spelling, got=_got(name))
             if self.is_op("(") or self.is_op("["):
-                raise _fail(self.peek(), f"typedef {name.text}: function and array typedefs "
-                                         "are not supported")
+                raise _fail(self.peek(), code="trace_typedef_function", name=name.text)
             if isinstance(base, StructDef) and base.name.startswith("<"):
                 base.name = name.text  # typedef struct { … } NAME: messages call it NAME
             if pointer and isinstance(base, StructDef):
@@ -950,14 +996,13 @@ class _Parser:
             if not self.is_op(","):
                 break
             self.take()
-        self.expect(";", " at the end of the declaration")
+        self.expect(";", "declaration_end")
         return Block([]).at(tok, self.last())
 
-    def var_name(self, what: str) -> Var:
+    def var_name(self) -> Var:
         tok = self.peek()
         if tok.kind != "name" or tok.text in BASE_TYPE_WORDS or tok.text in _QUALIFIERS:
-            got = "end of code" if tok.kind == "end" else repr(tok.text)
-            raise _fail(tok, f"expected {what}, got {got}")
+            raise _fail(tok, code="trace_expected_name", got=_got(tok))
         tokens = self.tokens
         pos = self.pos + 1
         name = tok.text
@@ -971,7 +1016,7 @@ class _Parser:
     def expression(self) -> Node:
         e = self.assignment()
         if self.is_op(","):
-            raise _fail(self.peek(), "the comma operator is not supported")
+            raise _fail(self.peek(), code="trace_comma")
         return e
 
     def assignment(self) -> Node:
@@ -981,7 +1026,7 @@ class _Parser:
         tok = self.peek()
         if tok.kind == "op" and tok.text in _ASSIGN_OPS:
             if not _is_place(left):
-                raise _fail(tok, f"'{tok.text}' needs a variable on its left")
+                raise _fail(tok, code="trace_lvalue_left", op=tok.text)
             self.take()
             value = self.assignment()
             left = Assign(tok.text, left, value).at(first, self.last())
@@ -996,7 +1041,7 @@ class _Parser:
         self.take()
         self.deeper()
         then = self.expression()
-        self.expect(":", " in '?:'")
+        self.expect(":", "conditional")
         other = self.conditional()
         self.shallower()
         return Cond(test, then, other).at(first, self.last())
@@ -1017,7 +1062,7 @@ class _Parser:
             chain += 1
             self.height += 1
             if self.height > MAX_HEIGHT:
-                raise _fail(tok, f"expression more than {MAX_HEIGHT} operators deep")
+                raise _fail(tok, code="trace_height", limit=MAX_HEIGHT)
             self.deeper()
             right = self.binary(prec + 1)
             self.shallower()
@@ -1033,7 +1078,7 @@ class _Parser:
             operand = self.unary()
             self.shallower()
             if tok.text == "&" and not _is_place(operand):
-                raise _fail(tok, "'&' needs a variable")
+                raise _fail(tok, code="trace_needs_variable", op="&")
             return Unary(tok.text, operand).at(tok, self.last())
         if tok.text in ("++", "--"):
             self.take()
@@ -1041,12 +1086,12 @@ class _Parser:
             target = self.unary()
             self.shallower()
             if not _is_place(target):
-                raise _fail(tok, f"'{tok.text}' needs a variable")
+                raise _fail(tok, code="trace_needs_variable", op=tok.text)
             return IncDec(tok.text, True, target).at(tok, self.last())
         if tok.text == "(" and self.starts_type(1):
             self.take()
             type_name = self.type_spelling()
-            self.expect(")", " to close the cast")
+            self.expect(")", "close_cast")
             self.deeper()
             operand = self.unary()
             self.shallower()
@@ -1063,13 +1108,13 @@ class _Parser:
             if text in ("++", "--"):
                 op = self.take()
                 if not _is_place(node):
-                    raise _fail(op, f"'{op.text}' needs a variable")
+                    raise _fail(op, code="trace_needs_variable", op=op.text)
                 node = IncDec(op.text, False, node).at(first, self.last())
             elif text in (".", "->"):
                 op = self.take()
                 name = self.take()
                 if name.kind != "name":
-                    raise _fail(name, f"expected a field name after '{op.text}'")
+                    raise _fail(name, code="trace_field_name", op=op.text)
                 self.deeper()
                 chain += 1
                 node = Member(node, name.text, op.text == "->").at(first, name)
@@ -1078,7 +1123,7 @@ class _Parser:
                 self.deeper()
                 chain += 1
                 index = self.expression()
-                self.expect("]", " to close the index")
+                self.expect("]", "close_index")
                 node = Index(node, index).at(first, self.last())
             else:
                 break
@@ -1099,7 +1144,10 @@ class _Parser:
             self.take()
             self.deeper()
             e = self.expression()
-            self.expect(")", f" to close '(' at {tok.line}:{tok.column}")
+            if self.is_op(")"):
+                self.take()
+            else:
+                self.expect(")", "close_paren", at=f"{tok.line}:{tok.column}")
             self.shallower()
             # Keep the parentheses in the shown text.
             e.start, e.end = tok.start, self.last().end
@@ -1107,7 +1155,7 @@ class _Parser:
             return e
         if tok.kind == "name":
             if tok.text in _UNSUPPORTED or tok.text in BASE_TYPE_WORDS or tok.text in _TAGS:
-                raise _fail(tok, f"'{tok.text}' is not supported here")
+                raise _fail(tok, code="trace_not_here", word=tok.text)
             if self.is_op("(", 1):
                 return self.call()
             self.take()
@@ -1116,8 +1164,7 @@ class _Parser:
                 n.ctype = ["int"]
                 return n
             return Var(tok.text).at(tok, tok)
-        got = "end of code" if tok.kind == "end" else repr(tok.text)
-        raise _fail(tok, f"expected a value, got {got}")
+        raise _fail(tok, code="trace_expected_value", got=_got(tok))
 
     def call(self) -> Node:
         tok = self.take()
@@ -1136,16 +1183,16 @@ class _Parser:
                 if not self.is_op(","):
                     break
                 self.take()
-        self.expect(")", f" to close {name}(")
+        self.expect(")", "close_call", name=name)
         self.shallower()
         if nargs is None:  # a function of the pasted code: resolved by the checker
             return Call(name, args, None).at(tok, self.last())
         if len(args) != nargs:
-            raise _fail(tok, f"{name}() takes {nargs} arguments, got {len(args)}")
+            raise _fail(tok, code="trace_builtin_arity", name=name, n=nargs, got=len(args))
         if name == "__IQmpy":
             qa = args[2]
             if not isinstance(qa, Num) or not 0 <= qa.value <= 62:
-                raise _fail(tok, "__IQmpy(a, b, q): q must be an integer constant 0..62")
+                raise _fail(tok, code="trace_iqmpy_q")
             q = qa.value
             args = args[:2]
         return Call(name, args, q).at(tok, self.last())
@@ -1153,7 +1200,8 @@ class _Parser:
 
 def constant_value(node: Node, what: str) -> int:
     """The value of an integer constant expression made of numbers and operators
-    (array sizes, enumerators); mathematical integers, as the compiler folds them."""
+    (array sizes, enumerators); mathematical integers, as the compiler folds them.  ``what``
+    is the catalog code of the error when ``node`` is not one (``trace_const_array_size``…)."""
     if isinstance(node, Num):
         return node.value
     if isinstance(node, Unary) and node.op in ("-", "+", "~"):
@@ -1164,11 +1212,11 @@ def constant_value(node: Node, what: str) -> int:
     if isinstance(node, Binary) and node.op in _CONST_OPS:
         a, b = constant_value(node.left, what), constant_value(node.right, what)
         if node.op in ("/", "%") and b == 0:
-            raise TraceError(node.right.line, node.right.column, "division by zero")
+            raise TraceError(node.right.line, node.right.column, code="trace_division_zero")
         if node.op in ("<<", ">>") and not 0 <= b < 64:
-            raise TraceError(node.right.line, node.right.column, f"shift by {b}")
+            raise TraceError(node.right.line, node.right.column, code="trace_shift_by", n=b)
         return _CONST_OPS[node.op](a, b)
-    raise TraceError(node.line, node.column, f"{what} must be an integer constant")
+    raise TraceError(node.line, node.column, code=what or "trace_const")
 
 
 def _is_place(node: Node) -> bool:
@@ -1190,12 +1238,14 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
         At the first thing outside the subset, naming line and column.
     """
     if not isinstance(source, str):
-        raise TraceError(1, 1, "code must be text")
+        raise TraceError(1, 1, code="trace_code_text")
     pre = preprocess(tokenize(source), defines, global_q,
-                     target.limits() if target is not None else None)
+                     target.limits() if target is not None else None,
+                     target.double_bits if target is not None else 64)
     tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names
     prog = Program(source, p.program(), notes, pre.global_q, p.functions, p.refused)
     prog.unresolved = pre.unresolved
+    prog.macros, prog.aliases = pre.macros, p.aliases
     return prog

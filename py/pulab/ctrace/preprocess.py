@@ -105,6 +105,7 @@ class _Macro:
 
 
 _new = tuple.__new__  # builds a Token without NamedTuple's slow keyword path
+_NO_HIDE: frozenset = frozenset()  # the macros a source token may expand: all
 _TEXT_TOKENS: dict = {}
 
 
@@ -118,8 +119,8 @@ def _tokens(text: str) -> list:
     return toks
 
 
-def _fail(tok: Token, message: str) -> TraceError:
-    return TraceError(tok.line, tok.column, message)
+def _fail(tok: Token, code: str, **params) -> TraceError:
+    return TraceError(tok.line, tok.column, code=code, **params)
 
 
 def _body_tokens(text: str, at: Token, what: str) -> list:
@@ -131,24 +132,24 @@ def _body_tokens(text: str, at: Token, what: str) -> list:
             toks.append(Token("op", piece, at.line, at.column, at.start, at.end))
             continue
         try:
-            toks.extend(tokenize(piece)[:-1])
+            toks.extend(_tokens(piece))  # cached: a header's definitions recur on every run
         except TraceError as e:
-            raise _fail(at, f"in {what}: {e.reason}") from None
+            raise _fail(at, "trace_in_directive", what=what, reason=e.reason_error()) from None
     if any(t.kind in ("directive", "annotation") for t in toks):
-        raise _fail(at, f"{what}: unexpected text")
+        raise _fail(at, "trace_directive_text", what=what)
     return [t._replace(line=at.line, column=at.column, start=at.start, end=at.end) for t in toks]
 
 
 def _define(rest: str, at: Token) -> _Macro:
     m = re.match(r"\s*([A-Za-z_]\w*)(\()?", rest)
     if m is None:
-        raise _fail(at, "#define needs a name")
+        raise _fail(at, "trace_define_name")
     name = m[1]
     if not m[2]:
         return _Macro(name, None, False, _body_tokens(rest[m.end():], at, f"#define {name}"))
     close = rest.find(")", m.end())
     if close < 0:
-        raise _fail(at, f"#define {name}(: ')' missing after the parameters")
+        raise _fail(at, "trace_define_paren", name=name)
     params = [p.strip() for p in rest[m.end():close].split(",")]
     if params == [""]:
         params = []
@@ -157,12 +158,12 @@ def _define(rest: str, at: Token) -> _Macro:
         params[-1] = "__VA_ARGS__"
     for p in params[:len(params) - variadic]:
         if not _NAME.match(p):
-            raise _fail(at, f"#define {name}(…): bad parameter {p!r}")
+            raise _fail(at, "trace_define_param", name=name, param=repr(p))
     if len(set(params)) != len(params):
-        raise _fail(at, f"#define {name}(…): a parameter is named twice")
+        raise _fail(at, "trace_define_param_twice", name=name)
     body = _body_tokens(rest[close + 1:], at, f"#define {name}")
     if body and (body[0].text == "##" or body[-1].text == "##"):
-        raise _fail(at, f"#define {name}: '##' cannot begin or end a macro body")
+        raise _fail(at, "trace_define_paste_edge", name=name)
     return _Macro(name, params, variadic, body)
 
 
@@ -176,7 +177,7 @@ def parse_define(text: str) -> tuple:
     name = name.strip()
     head = re.match(r"[A-Za-z_]\w*(\([^)]*\))?\Z", name)
     if head is None:
-        raise TraceError(1, 1, f"-D {text!r}: NAME[=VALUE] needs a C name", field="define")
+        raise TraceError(1, 1, field="define", code="trace_define_option", text=repr(text))
     return name, (value if eq else "1")
 
 
@@ -185,6 +186,7 @@ class _Pre:
         self.src = iter(tokens)
         self.headers = headers
         self.default_q = global_q
+        self.single = False  # the target's double is binary32 (set by preprocess)
         self.macros: dict = {}
         self.global_q = None
         self.unresolved: list = []
@@ -202,7 +204,7 @@ class _Pre:
             b = mac.body
             if mac.params is not None or len(b) != 1 or not b[0].text.isdigit() or \
                     not 1 <= int(b[0].text) <= 30:
-                raise _fail(at, "GLOBAL_Q must be an integer 1..30")
+                raise _fail(at, "trace_global_q")
             self.global_q = int(b[0].text)
 
     def active(self) -> bool:
@@ -214,18 +216,18 @@ class _Pre:
         live = self.active()
         if word in ("if", "ifdef", "ifndef"):
             if len(self.conds) >= MAX_IF_DEPTH:
-                raise _fail(tok, f"#if nested deeper than {MAX_IF_DEPTH}")
+                raise _fail(tok, "trace_if_depth", limit=MAX_IF_DEPTH)
             take = live and self.condition(word, rest, tok)
             self.conds.append([take, take, False, tok, live])
             return
         if word in ("elif", "else", "endif"):
             if not self.conds:
-                raise _fail(tok, f"#{word} without #if")
+                raise _fail(tok, "trace_without_if", word=word)
             c = self.conds[-1]
             if word == "endif":
                 self.conds.pop()
             elif c[2]:
-                raise _fail(tok, f"#{word} after #else")
+                raise _fail(tok, "trace_after_else", word=word)
             elif word == "else":
                 c[0], c[2] = c[4] and not c[1], True
                 c[1] = c[1] or c[0]
@@ -242,16 +244,19 @@ class _Pre:
         elif word == "include":
             self.include(rest, tok)
         elif word == "error":
-            raise _fail(tok, f"#error{rest.rstrip()}")
+            raise _fail(tok, "trace_error_directive", rest=rest.rstrip())
         elif word not in ("pragma", "line", "warning", "") or (word == "" and rest.strip()):
-            raise _fail(tok, f"#{word or rest.strip()[:20]} is not a preprocessor directive "
-                             "this tracer knows")
+            raise _fail(tok, "trace_unknown_directive", word=word or rest.strip()[:20])
 
     def include(self, rest: str, tok: Token) -> None:
         m = re.match(r'\s*(?:<([^>\n]+)>|"([^"\n]+)")', rest)
         if m is None:
-            raise _fail(tok, "#include needs <header> or \"header\"")
+            raise _fail(tok, "trace_include_syntax")
         header = (m[1] or m[2]).strip()
+        if header == "IQmathLib.h":  # its conversions are built in; it defines GLOBAL_Q
+            if "GLOBAL_Q" not in self.macros:
+                self.define(_define(f"GLOBAL_Q {self.default_q}", tok), tok)
+            return
         known = self.headers.get(header)
         if known is None:
             if header not in self.unresolved:
@@ -265,7 +270,7 @@ class _Pre:
         toks = _body_tokens(rest, tok, f"#{word}")
         if word != "if":
             if len(toks) != 1 or toks[0].kind != "name":
-                raise _fail(tok, f"#{word} needs one name")
+                raise _fail(tok, "trace_directive_name", word=word)
             return (toks[0].text in self.macros) == (word == "ifdef")
         # defined X / defined(X) are replaced before expansion (C99 6.10.1p1).
         resolved, i = [], 0
@@ -277,7 +282,7 @@ class _Pre:
                 j += paren
                 if j >= len(toks) or toks[j].kind != "name" or \
                         (paren and (j + 1 >= len(toks) or toks[j + 1].text != ")")):
-                    raise _fail(tok, "defined needs a macro name")
+                    raise _fail(tok, "trace_defined_name")
                 resolved.append(t._replace(kind="number",
                                            text="1" if toks[j].text in self.macros else "0"))
                 i = j + 1 + paren
@@ -286,7 +291,7 @@ class _Pre:
             i += 1
         expanded = self.expand_list(resolved)
         if not expanded:
-            raise _fail(tok, f"#{word} needs an expression")
+            raise _fail(tok, "trace_if_expression", word=word)
         return _IfExpr(expanded, tok).value() != 0
 
     # -- expansion ----------------------------------------------------------------------
@@ -297,14 +302,14 @@ class _Pre:
                 self.directive(tok)
             elif tok.kind == "end":
                 if self.conds:
-                    raise _fail(self.conds[-1][3], "#if without #endif")
+                    raise _fail(self.conds[-1][3], "trace_if_open")
                 self.end = tok
                 return
             elif self.active():
                 yield tok
 
     def expand_list(self, toks: list) -> list:
-        return self.run(deque((t, frozenset()) for t in toks), None)
+        return self.run(deque((t, _NO_HIDE) for t in toks), None)
 
     def run(self, pending: deque, more) -> list:
         """Expand ``pending`` (then the tokens of iterator ``more``) to the end."""
@@ -317,17 +322,23 @@ class _Pre:
             if more is not None:
                 t = next(more, None)
                 if t is not None:
-                    return t, frozenset()
+                    return t, _NO_HIDE
             return None
 
+        append = out.append
         while True:
-            item = pull()
-            if item is None:
-                return out
-            tok, hide = item
-            mac = macros.get(tok.text) if tok.kind == "name" else None
-            if mac is None and tok.kind == "name" and tok.text[:2] in ("_I", "_Q") and \
-                    _IQ_BUILTIN.match(tok.text):
+            if pending:
+                tok, hide = pending.popleft()
+            else:
+                tok = next(more, None) if more is not None else None
+                if tok is None:
+                    return out
+                hide = _NO_HIDE
+            if tok.kind != "name":  # most tokens: nothing to expand
+                append(tok)
+                continue
+            mac = macros.get(tok.text)
+            if mac is None and tok.text[:2] in ("_I", "_Q") and _IQ_BUILTIN.match(tok.text):
                 nxt = pull()
                 if nxt is not None and nxt[0].text == "(" and nxt[0].kind == "op":
                     args, last = self.arguments(_Macro(tok.text, ["A"], False, []), tok, pull)
@@ -339,11 +350,10 @@ class _Pre:
                 if nxt is not None:
                     pending.appendleft(nxt)
             if mac is None or tok.text in hide:
-                out.append(tok)
+                append(tok)
                 continue
             if len(hide) >= MAX_MACRO_DEPTH:
-                raise _fail(tok, f"macro {tok.text}: expansion nested deeper than "
-                                 f"{MAX_MACRO_DEPTH} macros")
+                raise _fail(tok, "trace_macro_depth", name=tok.text, limit=MAX_MACRO_DEPTH)
             hs = hide | {mac.name}
             if mac.params is None:
                 where = (tok.line, tok.column, tok.start, tok.end)
@@ -362,8 +372,7 @@ class _Pre:
                         for t in self.substitute(mac, args, tok)]
             self.produced += len(body)
             if self.produced > MAX_EXPANDED_TOKENS:
-                raise _fail(tok, f"macro {tok.text}: more than {MAX_EXPANDED_TOKENS} tokens "
-                                 "after expansion")
+                raise _fail(tok, "trace_macro_tokens", name=tok.text, limit=MAX_EXPANDED_TOKENS)
             pending.extendleft(reversed(body))
 
     def iq(self, use: Token, arg: list) -> list:
@@ -394,15 +403,15 @@ class _Pre:
             i += 1
         core = [t for t in arg[i:] if t.text not in ("(", ")")]
         m = _FLOAT.match(core[0].text) if len(core) == 1 and core[0].kind == "number" else None
-        if m is None:
-            raise _fail(use, f"{use.text}(…) needs a floating constant (a variable would need "
-                             "floating point at run time)")
-        value = float(m[1])
-        if m[2] in ("f", "F"):
-            value = struct.unpack("<f", struct.pack("<f", value))[0]
+        if m is not None:
+            value = float(m[1])
+            if m[2] in ("f", "F") or self.single:
+                value = _f32(value)
+        else:  # a constant expression such as 4.0/3.0, folded as C does in double
+            value = _ConstFloat(arg[i:], use, self.single).value()
         scaled = int(sign * value * 2.0 ** n)  # * 2**n is exact in binary floating point
         if not -(1 << 31) <= scaled < (1 << 31):
-            raise _fail(use, f"{use.text}(…) = {scaled} does not fit a 32-bit long")
+            raise _fail(use, "trace_iq_range", name=use.text, value=scaled)
         return scaled
 
     def text_around(self, head: str, arg: list, tail: str) -> list:
@@ -414,7 +423,7 @@ class _Pre:
         while True:
             item = pull()
             if item is None:
-                raise _fail(use, f"macro {mac.name}(: ')' missing")
+                raise _fail(use, "trace_macro_paren", name=mac.name)
             t = item[0]
             if t.kind == "op" and t.text == ")" and depth == 0:
                 break
@@ -430,8 +439,8 @@ class _Pre:
         if mac.variadic and len(args) == len(mac.params) - 1:
             args.append([])
         if len(args) != len(mac.params):
-            raise _fail(use, f"macro {mac.name}() takes {len(mac.params)} arguments, "
-                             f"got {len(args)}")
+            raise _fail(use, "trace_macro_args", name=mac.name, n=len(mac.params),
+                        got=len(args))
         return args, t
 
     def substitute(self, mac: _Macro, args: list, use: Token) -> list:
@@ -478,8 +487,8 @@ class _Pre:
                     except TraceError:
                         new = []
                     if len(new) != 1:
-                        raise _fail(use, f"'##' pasting {left.text!r} and {right.text!r} "
-                                         "does not give one token")
+                        raise _fail(use, "trace_paste", left=repr(left.text),
+                                    right=repr(right.text))
                     out.append(new[0]._replace(line=left.line, column=left.column,
                                                start=left.start, end=left.end))
                 i += 2
@@ -487,6 +496,95 @@ class _Pre:
             out.append(t)
             i += 1
         return [t for t in out if t.kind != "placemarker"]
+
+
+def _f32(x: float) -> float:
+    """``x`` rounded to binary32 (a 32-bit ``double``, as avr-gcc's)."""
+    return struct.unpack("<f", struct.pack("<f", x))[0]
+
+
+class _ConstFloat:
+    """``+ - * /`` and parentheses over number literals: an integer operation as C's
+    (division toward zero), one with a ``double`` operand in binary64 (binary32 when
+    ``single``: the target's double is 32 bits); ``f`` literals refused here (their
+    arithmetic precision depends on FLT_EVAL_METHOD)."""
+
+    def __init__(self, toks: list, use: Token, single: bool = False) -> None:
+        self.toks, self.pos, self.use = toks, 0, use
+        self.round = _f32 if single else float
+
+    def fail(self):
+        raise _fail(self.use, "trace_iq_constant", name=self.use.text)
+
+    def value(self) -> float:
+        if not self.toks:
+            self.fail()
+        v = self.sum()
+        if self.pos != len(self.toks):
+            self.fail()
+        return float(v)
+
+    def peek(self) -> str:
+        return self.toks[self.pos].text if self.pos < len(self.toks) else ""
+
+    def sum(self):
+        v = self.product()
+        while self.peek() in ("+", "-"):
+            op = self.toks[self.pos].text
+            self.pos += 1
+            v, w = self.usual(v, self.product())
+            v = v + w if op == "+" else v - w
+            v = v if isinstance(v, int) else self.round(v)
+        return v
+
+    def usual(self, v, w):
+        """C's usual arithmetic conversions: an integer beside a double becomes a double
+        (rounded to the target's double)."""
+        if isinstance(v, int) != isinstance(w, int):
+            v, w = (self.round(float(x)) if isinstance(x, int) else x for x in (v, w))
+        return v, w
+
+    def product(self):
+        v = self.unary()
+        while self.peek() in ("*", "/"):
+            op = self.toks[self.pos].text
+            self.pos += 1
+            v, w = self.usual(v, self.unary())
+            if op == "*":
+                v = v * w
+            elif w == 0:
+                self.fail()
+            elif isinstance(v, int) and isinstance(w, int):
+                v = abs(v) // abs(w) * (1 if (v < 0) == (w < 0) else -1)
+            else:
+                v = self.round(v / w)
+            if op == "*" and not isinstance(v, int):
+                v = self.round(v)
+        return v
+
+    def unary(self):
+        t = self.peek()
+        if t in ("+", "-"):
+            self.pos += 1
+            v = self.unary()
+            return -v if t == "-" else v
+        if t == "(":
+            self.pos += 1
+            v = self.sum()
+            if self.peek() != ")":
+                self.fail()
+            self.pos += 1
+            return v
+        tok = self.toks[self.pos] if self.pos < len(self.toks) else None
+        if tok is None or tok.kind != "number":
+            self.fail()
+        self.pos += 1
+        m = _FLOAT.match(tok.text)
+        if m is not None and m[2] not in ("f", "F") and not re.fullmatch(r"\d+[uUlL]*", tok.text):
+            return self.round(float(m[1]))
+        if re.fullmatch(r"\d+[uUlL]*", tok.text):
+            return int(re.match(r"\d+", tok.text)[0])
+        self.fail()
 
 
 class _IfExpr:
@@ -499,8 +597,8 @@ class _IfExpr:
     def __init__(self, toks: list, at: Token) -> None:
         self.toks, self.i, self.at = toks, 0, at
 
-    def fail(self, message: str):
-        return _fail(self.at, f"#if: {message}")
+    def fail(self, code: str, **params):
+        return _fail(self.at, "trace_if", reason={"code": code, "params": params})
 
     def peek(self):
         return self.toks[self.i] if self.i < len(self.toks) else None
@@ -508,7 +606,7 @@ class _IfExpr:
     def value(self) -> int:
         v = self.cond()
         if self.peek() is not None:
-            raise self.fail(f"unexpected {self.peek().text!r}")
+            raise self.fail("trace_if_unexpected", text=repr(self.peek().text))
         return v
 
     def cond(self) -> int:
@@ -519,7 +617,7 @@ class _IfExpr:
             a = self.cond()
             t = self.peek()
             if t is None or t.text != ":":
-                raise self.fail("':' missing")
+                raise self.fail("trace_if_missing", char=":")
             self.i += 1
             b = self.cond()
             return a if test else b
@@ -547,13 +645,13 @@ class _IfExpr:
     def apply(self, op: str, a: int, b: int) -> int:
         if op in ("/", "%"):
             if b == 0:
-                raise self.fail("division by zero")
+                raise self.fail("trace_division_zero")
             q = abs(a) // abs(b) * (1 if (a < 0) == (b < 0) else -1)
             r = a - q * b
             return _wrap(q if op == "/" else r)
         if op in ("<<", ">>"):
             if not 0 <= b < 64:
-                raise self.fail(f"shift by {b}")
+                raise self.fail("trace_shift_by", n=b)
             return _wrap(a << b if op == "<<" else a >> b)
         return _wrap({"+": a + b, "-": a - b, "*": a * b, "&": a & b, "|": a | b, "^": a ^ b,
                       "==": int(a == b), "!=": int(a != b), "<": int(a < b), ">": int(a > b),
@@ -562,7 +660,7 @@ class _IfExpr:
     def unary(self) -> int:
         t = self.peek()
         if t is None:
-            raise self.fail("expression ends early")
+            raise self.fail("trace_if_ends")
         self.i += 1
         if t.kind == "op" and t.text in ("-", "+", "~", "!"):
             v = self.unary()
@@ -571,7 +669,7 @@ class _IfExpr:
             v = self.cond()
             t = self.peek()
             if t is None or t.text != ")":
-                raise self.fail("')' missing")
+                raise self.fail("trace_if_missing", char=")")
             self.i += 1
             return v
         if t.kind == "name":
@@ -579,12 +677,12 @@ class _IfExpr:
         if t.kind == "number":
             m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)[uUlL]*", t.text)
             if m is None:
-                raise self.fail(f"{t.text} is not an integer constant")
+                raise self.fail("trace_if_not_constant", text=t.text)
             d = m[1]
             if d[:2] in ("0x", "0X", "0b", "0B"):
                 return _wrap(int(d[2:], 16 if d[1] in "xX" else 2))
             return _wrap(int(d, 8 if len(d) > 1 and d[0] == "0" else 10))
-        raise self.fail(f"unexpected {t.text!r}")
+        raise self.fail("trace_if_unexpected", text=repr(t.text))
 
 
 def _wrap(v: int) -> int:
@@ -592,7 +690,7 @@ def _wrap(v: int) -> int:
 
 
 def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
-               limits: dict | None = None) -> Preprocessed:
+               limits: dict | None = None, double_bits: int = 64) -> Preprocessed:
     """Run the directives of ``tokens`` and expand macros.
 
     Parameters
@@ -606,6 +704,9 @@ def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
     limits : dict, optional
         What ``<limits.h>`` defines on the target (:meth:`pulab.ctrace.types.Target.limits`);
         without it the header defines nothing.
+    double_bits : {64, 32}, optional
+        The width of the target compiler's ``double`` (32 on avr-gcc): ``_IQ(…)`` folds its
+        constant in that precision, as the compiler does.
 
     Returns
     -------
@@ -615,6 +716,7 @@ def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
     """
     headers = dict(STANDARD_HEADERS, **({"limits.h": limits} if limits else {}))
     pre = _Pre(tokens, defines or {}, global_q, headers)
+    pre.single = double_bits == 32
     out = pre.run(deque(), pre.source_tokens())
     out.append(pre.end)
     return Preprocessed(out, pre.global_q, pre.unresolved, pre.macros)

@@ -12,13 +12,12 @@ Examples
 
 from __future__ import annotations
 
-import re
-
 from ..fixedpoint.cint import CType
 from .check import Checked, check
 from .evaluate import Evaluator, hex_of
 from .errors import TraceError
 from .parser import parse
+from .macro_entry import entry_macros, split_entry, wrapper
 from .preprocess import parse_define
 from .types import TARGETS
 from ..schema.errors import InputError
@@ -35,11 +34,12 @@ def _defines(defines) -> dict:
     out = {}
     for i, item in enumerate(defines or ()):
         if not isinstance(item, str):
-            raise InputError(f"define[{i}]", f"must be text NAME[=VALUE], got {item!r}")
+            raise InputError(f"define[{i}]", code="trace_define_text", got=shown(item))
         try:
             name, value = parse_define(item)
         except TraceError as e:
-            raise InputError(f"define[{i}]", e.reason) from None
+            reason = e.reason_error()
+            raise InputError(f"define[{i}]", code=reason["code"], **reason["params"]) from None
         out[name] = value
     return out
 
@@ -49,16 +49,27 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     """Parse and type ``code`` for ``target`` (reusable for many input vectors);
     ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``; ``global_q`` is the Q the
     IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q;
-    ``entry`` the function to run (None: the statements outside functions)."""
-    if entry is not None and (not isinstance(entry, str) or
-                              not re.fullmatch(r"[A-Za-z_]\w*", entry.strip())):
+    ``entry`` the function to run (None: the statements outside functions), or a
+    function-like macro as ``NAME`` or ``NAME(TYPE, …)`` (see :mod:`~pulab.ctrace.macro_entry`)."""
+    if entry is not None and (not isinstance(entry, str) or split_entry(entry) is None):
         raise InputError("entry", code="trace_entry_name", got=shown(entry))
     if not isinstance(target, str) or target not in TARGETS:
-        raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
+        raise InputError("target", code="not_choice", choices=", ".join(TARGETS), got=shown(target))
     t = TARGETS[target]
     gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
-    return check(parse(code, defines=_defines(defines), global_q=gq, target=t), t,
-                 entry.strip() if entry is not None else None)
+    defs = _defines(defines)
+    program = parse(code, defines=defs, global_q=gq, target=t)
+    if entry is None:
+        return check(program, t)
+    name = split_entry(entry)[0]
+    if name not in program.functions:
+        macro = wrapper(program, entry)
+        if macro is not None:  # the code again, then the objects and the one invocation
+            program = parse(code + macro.text, defines=defs, global_q=gq, target=t)
+            f = program.functions.pop(macro.function)
+            f.name = name
+            program.functions[name] = f
+    return check(program, t, name)
 
 
 def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> dict:
@@ -70,23 +81,21 @@ def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> d
         sym = checked.symbols.get(name)
         if sym is None:
             shown_name = name if field == f"set.{name}" else shown(name)
-            raise InputError(field, f"no variable {shown_name} is declared in the code")
+            raise InputError(field, code="trace_no_variable", name=shown_name)
         if sym.initialized:
-            raise InputError(field, f"{name} has an initializer in the code")
+            raise InputError(field, code="trace_has_initializer", name=name)
         if isinstance(value, str):
             try:
                 value = int(value.strip().replace("_", ""), 0)
             except ValueError:
-                raise InputError(field, f"must be an integer, got {value!r}") from None
+                raise InputError(field, code="not_integer", got=shown(value)) from None
         if isinstance(value, bool) or not isinstance(value, int):
-            raise InputError(field, f"must be an integer, got {value!r}")
+            raise InputError(field, code="not_integer", got=shown(value))
         t = sym.ctype
         if not t.min <= value <= t.max:
-            raise InputError(field, f"must be {t.min}..{t.max} for {sym.spelling}, got {value}")
+            raise InputError(field, code="trace_value_range", lo=t.min, hi=t.max,
+                             type=sym.spelling, got=value)
         out[name] = value
-    if zero_unset:
-        for name in checked.inputs:
-            out.setdefault(name, 0)
     if zero_unset:
         for name in checked.inputs:
             out.setdefault(name, 0)
@@ -188,7 +197,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     """:func:`trace` for code already compiled by :func:`compile_code`."""
     if global_q is not None and (isinstance(global_q, bool) or not isinstance(global_q, int)
                                  or not 1 <= global_q <= 30):
-        raise InputError("global_q", f"must be an integer 1..30, got {global_q!r}")
+        raise InputError("global_q", code="integer_range", lo=1, hi=30, got=shown(global_q))
     inputs = inputs or {}
     ev = run_checked(checked, inputs, global_q, zero_unset=zero_unset)
     values, steps = ev.values, ev.steps
@@ -222,6 +231,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     return {"ok": True, "target": checked.target.name, "global_q": gq,
             "entry": entry.name if entry is not None else None,
             "rounding": rounding_summary(steps),
-            "functions": list(checked.functions),
+            "functions": [f for f in checked.functions if f not in checked.program.macros],
+            "macros": entry_macros(checked.program),
             "unresolved_includes": list(checked.program.unresolved),
             "inputs": checked.inputs, "vars": out_vars, "steps": steps}

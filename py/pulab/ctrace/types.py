@@ -58,12 +58,15 @@ class Target:
     char_bits, int_bits : int in {8, 16, 32}
     char_signed : bool
         Whether plain ``char`` is signed.
+    double_bits : {64, 32}
+        The width of ``double`` (avr-gcc's is 32 bits): the precision ``_IQ(…)`` folds in.
     """
 
     name: str
     char_bits: int
     int_bits: int
     char_signed: bool
+    double_bits: int = 64
     types: dict = field(init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -140,7 +143,7 @@ class Target:
 
 TARGETS = {
     "c28x": Target("c28x", 16, 16, True),
-    "avr": Target("avr", 8, 16, True),
+    "avr": Target("avr", 8, 16, True, double_bits=32),
     "msp430": Target("msp430", 8, 16, True),
     "arm": Target("arm", 8, 32, False),
 }

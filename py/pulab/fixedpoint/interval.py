@@ -34,7 +34,8 @@ import math
 
 from .cint import CDivisionByZero, CInt, CType, _common, trunc_div, wrap_to
 
-__all__ = ["ICInt", "lift", "DIV0", "RInterval", "Undecided"]
+__all__ = ["ICInt", "lift", "DIV0", "RInterval", "Undecided", "Branch", "Empty", "choose",
+           "forcing", "maximum", "ANY"]
 
 _NO_FLAGS = frozenset()
 _WRAP = frozenset({"wrap"})
@@ -279,8 +280,126 @@ class RInterval:
     def __bool__(self) -> bool:
         return self._compare(0, self.lo > 0 or self.hi < 0, self.lo == self.hi == 0)
 
+    def __abs__(self) -> "RInterval":
+        if self.lo >= 0:
+            return self
+        if self.hi <= 0:
+            return -self
+        return RInterval(0.0, max(-self.lo, self.hi))
+
+    # floor, trunc and round are monotone: the ends' integers bound every point's.
+    def __floor__(self) -> "RInterval":
+        return RInterval(math.floor(self.lo), math.floor(self.hi))
+
+    def __trunc__(self) -> "RInterval":
+        return RInterval(math.trunc(self.lo), math.trunc(self.hi))
+
+    def __round__(self) -> "RInterval":
+        return RInterval(round(self.lo), round(self.hi))
+
+    def clip(self, lo: float, hi: float) -> "RInterval":
+        """The part of the interval inside [lo, hi]; :class:`Empty` when there is none."""
+        a, b = max(self.lo, lo), min(self.hi, hi)
+        if a > b:
+            raise Empty(f"{self!r} misses [{lo}, {hi}]")
+        return RInterval(a, b)
+
     def round_half_away(self) -> "RInterval":
         """The integers ``round(x)`` (ties away from zero) takes: monotone, so the ends'."""
         def r(x: float) -> int:
             return int(math.copysign(math.floor(abs(x) + 0.5), x))
         return RInterval(r(self.lo), r(self.hi))
+
+
+def maximum(*xs):
+    """``max`` of numbers some of which may be intervals (Python's ``max`` would compare them).
+
+    >>> maximum(RInterval(1.0, 3.0), 2.0).value
+    (2.0, 3.0)
+    """
+    if not any(isinstance(x, RInterval) for x in xs):
+        return max(xs)
+    rs = [_real(x) for x in xs]
+    return RInterval(max(r.lo for r in rs), max(r.hi for r in rs))
+
+
+class Branch(Undecided):
+    """A choice the code makes (a shift, a divisor) differs across a box.
+
+    Attributes
+    ----------
+    site : str — which choice (e.g. ``st.TF_KPDIV``)
+    choices : list of int — every choice some point of the box may make
+    """
+
+    def __init__(self, site: str, choices: list) -> None:
+        super().__init__(f"{site} takes {choices} over the box")
+        self.site, self.choices = site, choices
+
+
+class Empty(ArithmeticError):
+    """No point of a box makes the forced choice: that piece of the box is empty."""
+
+
+#: A forced choice that takes any one choice and keeps the whole interval: for evaluating what
+#: does not depend on that choice, without cutting the box at it.
+ANY = "any"
+
+#: The choices forced for the evaluation under way (see :func:`forcing`).
+_FORCED: dict = {}
+
+
+class forcing:
+    """Evaluate with these choices forced: ``with forcing({"st.TF_KPDIV": 10}): …``.
+
+    Under a forced choice, :func:`choose` keeps only the part of its quantity where the
+    choice is made; the evaluation then covers exactly the points of the box that make it.
+    """
+
+    def __init__(self, forced: dict) -> None:
+        self.forced, self.saved = forced, None
+
+    def __enter__(self) -> None:
+        global _FORCED
+        self.saved, _FORCED = _FORCED, self.forced
+
+    def __exit__(self, *exc) -> None:
+        global _FORCED
+        _FORCED = self.saved
+
+
+def choose(site: str, x, pick, region):
+    """A choice made from a quantity: ``(pick(x), x)`` for a number; over an interval, the
+    choice every point makes and the interval, or (under :class:`forcing`) the forced choice
+    and the part of ``x`` inside ``region(choice)`` (the whole of ``x`` and its low end's
+    choice when forced to :data:`ANY`).
+
+    Parameters
+    ----------
+    site : str
+        The choice's name (the key :class:`forcing` uses).
+    x : float or RInterval
+    pick : callable float → int
+        The concrete rule, monotone in ``x`` (either way): the choices of an interval are the
+        integers between its ends' choices.
+    region : callable int → (lo, hi)
+        A closed interval holding every ``x`` that ``pick`` maps to the choice.
+
+    Raises
+    ------
+    Branch
+        When the ends choose differently and the choice is not forced.
+    Empty
+        When no point of ``x`` makes the forced choice.
+    """
+    if not isinstance(x, RInterval):
+        return pick(x), x
+    if site in _FORCED:
+        c = _FORCED[site]
+        if c is ANY:
+            return pick(x.lo), x
+        return c, x.clip(*region(c))
+    a, b = pick(x.lo), pick(x.hi)
+    if a == b:
+        return a, x
+    raise Branch(site, list(range(min(a, b), max(a, b) + 1)))

@@ -27,11 +27,11 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ..fixedpoint.interval import RInterval
+from ..fixedpoint.interval import RInterval, choose
 from ..fixedpoint.qformat import QEncoded, QFormat, encode
 
-__all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "SOURCES",
-           "derived"]
+__all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "pow2_exponent",
+           "within", "SOURCES", "derived"]
 
 SQRT2 = math.sqrt(2.0)
 SQRT3 = math.sqrt(3.0)
@@ -41,7 +41,7 @@ TWO_PI = 2.0 * math.pi
 def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: float,
           unit: str, expression: str, source: str, *, rounding: str = "nearest",
           clamps: bool = False, fmt: str | None = None, signed: bool = True,
-          shift: int = 0, value: int | None = None) -> dict:
+          shift: int = 0, value: int | None = None, error_lsb=None) -> dict:
     """One stored integer: the real ``ideal`` quantized into a ``word_bits`` word.
 
     Parameters
@@ -63,6 +63,9 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
     value : int, optional
         The stored integer when the firmware computes it from other rounded integers
         (ST's C5 uses the truncated MAX_VOLTAGE); ``ideal`` stays the exact value.
+    error_lsb : float, optional
+        With ``value`` over a box (a family proof): a bound on |value − ideal·2^n| in LSB
+        over the box, when the caller can give one (else the constant has no error bound).
     """
     q = QFormat(word_bits, frac_bits, signed)
     if isinstance(ideal, RInterval):
@@ -76,7 +79,7 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
     exact = ideal * 2.0 ** frac_bits
     raw = e.raw if value is None else value
     inexact = "rounded" in e.flags if value is None else \
-        Fraction(raw) != Fraction(ideal) * (1 << frac_bits)
+        isinstance(raw, RInterval) or Fraction(raw) != Fraction(ideal) * (1 << frac_bits)
     flags = []
     if rounding != "nearest" and inexact and "saturate" not in e.flags:
         flags.append("truncation")
@@ -88,27 +91,84 @@ def fixed(name: str, ideal: float, word_bits: int, frac_bits: int, si_per_unit: 
             "format": fmt or q.name, "q": frac_bits, "word_bits": word_bits, "shift": shift,
             "si": si, "si_ideal": ideal * 2.0 ** shift * si_per_unit, "unit": unit,
             "scale": 2.0 ** shift * si_per_unit,
-            "expression": expression, "source": source, "flags": flags}
+            "expression": expression, "source": source, "flags": flags,
+            **({"error_lsb": _ERROR_LSB[rounding] if value is None else error_lsb}
+               if isinstance(ideal, RInterval) else {})}
 
 
-def mantissa_shift(k: float) -> tuple[float, int]:
+#: |stored − ideal·2^n| in LSB at most, for each rounding of one real (a family proof's
+#: worst-error bound, :mod:`pulab.analyses.prove`; a value computed from other rounded
+#: integers has none).
+_ERROR_LSB = {"nearest": 0.5, "zero": 1.0, "floor": 1.0}
+
+
+def _shift_of(k: float) -> int:
+    """The shift of :func:`mantissa_shift`, exactly: the mantissa lands in [0.5, 1] (k ≥ 1,
+    where 1.0 saturates FRAC16) or [0.5, 1) (k < 1).  ``frexp`` is exact where ``log2`` may
+    round across an integer within an ulp of a power of two; this rule is monotone in k."""
+    m, e = math.frexp(k)
+    return e - 1 if k >= 1.0 and m == 0.5 else e
+
+
+def mantissa_shift(k, site: str = "shift") -> tuple:
     """NXP MCAT's FRAC16 mantissa and shift for a positive constant K.
 
     shift = ceil(log2 K) for K ≥ 1, −ceil(log2(1/K) − 1) for K < 1; mantissa = K·2^−shift
     (Masmiseim36/nxpSDK : middleware/motor_control/freemaster/pmsm_frac/mcat/src/
-    JS_functions/inner_PoSpeBemfDQ.js, tracking-observer and theta gains).
+    JS_functions/inner_PoSpeBemfDQ.js, tracking-observer and theta gains).  The shift is
+    computed exactly (:func:`_shift_of`); K may be an interval (a family proof), the shift
+    then a choice (:func:`pulab.fixedpoint.interval.choose`) named ``site``.
 
     >>> mantissa_shift(3.0), mantissa_shift(0.1)
     ((0.75, 2), (0.8, -3))
     """
-    if k >= 1.0:
-        s = math.ceil(math.log2(k))
-    else:
-        s = -math.ceil(math.log2(1.0 / k) - 1.0)
+    s, k = choose(site, k, _shift_of, lambda s: (2.0 ** (s - 1), 2.0 ** s if s >= 0
+                                                  else math.nextafter(2.0 ** s, 0.0)))
+    if isinstance(k, RInterval):  # scaling by 2^-s is exact: no outward rounding
+        return RInterval(math.ldexp(k.lo, -s), math.ldexp(k.hi, -s)), s
     return k * 2.0 ** -s, s
 
 
-def pow2_divisor(k: float, limit: int = 32767, largest: int = 16384) -> int:
+def pow2_exponent(k, limit: int = 32767, largest: int = 14, site: str = "divisor") -> tuple:
+    """The largest n ≤ ``largest`` with round(|k|·2^n) ≤ ``limit`` (0 when none), and k.
+
+    k may be an interval (a family proof): n is then a choice named ``site``
+    (:func:`pulab.fixedpoint.interval.choose`) and the k returned keeps only the part of the
+    interval that makes it.
+
+    >>> pow2_exponent(18.06)[0], pow2_exponent(0.001)[0]
+    (10, 14)
+    """
+    def pick(a: float) -> int:
+        n = largest
+        while n > 0 and math.floor(a * 2.0 ** n + 0.5) > limit:  # nearest, ties away
+            n -= 1
+        return n
+
+    def region(n: int) -> tuple:
+        # |k|·2^n is exact and so is adding 1/2 below 2^52: round(|k|·2^n) ≤ limit exactly
+        # when |k|·2^n < limit + 1/2.
+        edge = limit + 0.5
+        lo = 0.0 if n == largest else edge / 2.0 ** (n + 1)
+        return lo, math.inf if n == 0 else math.nextafter(edge / 2.0 ** n, 0.0)
+
+    n, a = choose(site, abs(k), pick, region)
+    return n, within(k, a, exact=True)
+
+
+def within(k, bound, exact: bool = False):
+    """k where |k| ≤ bound (an interval's part that a choice on |k| keeps); ``exact``: where
+    |k| lies in bound (when bound is |k| itself, not a larger quantity)."""
+    if not isinstance(k, RInterval):
+        return k
+    if exact and k.lo >= 0:
+        return k.clip(bound.lo, bound.hi)
+    if exact and k.hi <= 0:
+        return k.clip(-bound.hi, -bound.lo)
+    return k.clip(-bound.hi, bound.hi)
+
+
+def pow2_divisor(k, limit: int = 32767, largest: int = 16384, site: str = "divisor") -> int:
     """The largest power-of-two divisor D ≤ ``largest`` with round(|k|·D) ≤ ``limit``.
 
     pulab's choice for ST's ``TF_KPDIV``/``TF_KIDIV`` when none is given (the Motor
@@ -117,10 +177,7 @@ def pow2_divisor(k: float, limit: int = 32767, largest: int = 16384) -> int:
     >>> pow2_divisor(18.06), pow2_divisor(0.001)
     (1024, 16384)
     """
-    d = largest
-    while d > 1 and math.floor(abs(k) * d + 0.5) > limit:  # nearest, ties away
-        d //= 2
-    return d
+    return 1 << pow2_exponent(k, limit, largest.bit_length() - 1, site)[0]
 
 
 #: Public files each profile's formulas were read in ("repository : path").

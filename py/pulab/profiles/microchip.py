@@ -24,11 +24,11 @@ from __future__ import annotations
 
 import math
 
-from .common import SOURCES, TWO_PI, fixed
+from .common import SOURCES, TWO_PI, fixed, pow2_exponent
 from .headers import define, guard
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_q", "gain_fields",
-           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "header"]
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants", "header"]
 
 OPTIONS = (
     ("voltage_base_v", lambda c: c["udc"], "V_b, the DC-link voltage full scale; default U_dc"),
@@ -83,26 +83,25 @@ def _q(name, x, n, scale, unit, expr, source):
     return fixed(name, x, 16, n, scale, unit, expr, source, fmt=f"Q{n}")
 
 
-def gain_q(x: float) -> int:
+def gain_q(x) -> int:
     """KIP_Q/KII_Q: 15, or fewer fractional bits when |x| ≥ 1 (the PI then shifts by
     DKNP = 15 − KIP_Q, foc_params.h); pulab takes the largest Q that fits int16.
 
     >>> gain_q(0.155), gain_q(2.5)
     (15, 13)
     """
-    q = 15
-    while q > 0 and math.floor(abs(x) * 2 ** q + 0.5) > 32767:  # nearest, ties away
-        q -= 1
-    return q
+    return pow2_exponent(x, 32767, 15)[0]
 
 
-def gains_to_ints(kp: float, ki: float, ctx: dict, opt: dict, axis: str) -> dict:
-    """KIP, KII (Q15, or Q(KIP_Q) when the gain exceeds 1) for SI kp [V/A], ki [V/(A·s)]."""
+def gains_to_ints(kp, ki, ctx: dict, opt: dict, axis: str) -> dict:
+    """KIP, KII (Q15, or Q(KIP_Q) when the gain exceeds 1) for SI kp [V/A], ki [V/(A·s)]
+    (intervals in a family proof: each Q is then a choice, ``microchip.KIP_Q``/``KII_Q``)."""
     v, i, _, dt = _bases(ctx, opt)
     z = v / i
-    kp_n, ki_n = kp / z, ki * dt / z
-    return {"KIP": _q("KIP", kp_n, gain_q(kp_n), z, "V/A", "kp/(V_b/I_b)", SOURCES["mchp_foc"]),
-            "KII": _q("KII", ki_n, gain_q(ki_n), z / dt, "V/(A·s)", "ki/(V_b/(I_b·Δt))",
+    q_kp, kp_n = pow2_exponent(kp / z, 32767, 15, "microchip.KIP_Q")
+    q_ki, ki_n = pow2_exponent(ki * dt / z, 32767, 15, "microchip.KII_Q")
+    return {"KIP": _q("KIP", kp_n, q_kp, z, "V/A", "kp/(V_b/I_b)", SOURCES["mchp_foc"]),
+            "KII": _q("KII", ki_n, q_ki, z / dt, "V/(A·s)", "ki/(V_b/(I_b·Δt))",
                       SOURCES["mchp_foc"])}
 
 
@@ -117,6 +116,11 @@ def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> 
 
 def profile(ctx: dict, opt: dict) -> dict:
     """MCAF constants: motor parameters in both inductance bases, ψ, Ke, KIP/KII (q axis)."""
+    return {"inputs": opt, "constants": constants(ctx, opt)}
+
+
+def constants(ctx: dict, opt: dict) -> dict:
+    """The Q integers of :func:`profile` (the inputs may be intervals: a family proof)."""
     v, i, wb, dt = _bases(ctx, opt)
     z, src = v / i, SOURCES["mchp_motor"]
     out = {"MCAF_MOTOR_RS": _q("MCAF_MOTOR_RS", ctx["rs"] / z, 15, z, "Ω", "R_s/(V_b/I_b)",
@@ -136,7 +140,7 @@ def profile(ctx: dict, opt: dict) -> dict:
     out["MCAF_MOTOR_KE"] = _q("MCAF_MOTOR_KE", psi * ctx["pp"] / ke_scale, 12, ke_scale,
                               "V/(rad/s)", "p·ψ/(V_b/(ω_b/p)), per mechanical rad/s", src)
     out.update(gains_to_ints(*ctx["gains"]["q"], ctx, opt, "q"))
-    return {"inputs": opt, "constants": out}
+    return out
 
 
 def header(p: dict, ctx: dict) -> str:

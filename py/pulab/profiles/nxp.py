@@ -35,7 +35,7 @@ from .common import SOURCES, SQRT3, TWO_PI, fixed, mantissa_shift
 from .headers import define, define_float, guard
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "u_max", "gain_fields",
-           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "header"]
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants", "header"]
 
 OPTIONS = (
     ("udcb_max_v", lambda c: c["udc"], "U_DCB_MAX, DC-bus full scale; default U_dc"),
@@ -120,6 +120,16 @@ def profile(ctx: dict, opt: dict) -> dict:
     """NXP constants: current-loop gains and the back-EMF observer scales."""
     um, im = _scales(opt)
     em = opt["e_max_v"] if opt["e_max_v"] is not None else um
+    return {"inputs": {**opt, "u_max_v": um, "e_max_v": em,
+                       "w_max_rad_s": TWO_PI * ctx["f_base"]},
+            "constants": constants(ctx, opt)}
+
+
+def constants(ctx: dict, opt: dict) -> dict:
+    """The ACC32 and FRAC16 integers of :func:`profile` (the inputs may be intervals: a
+    family proof; the theta gain's shift is then a choice, ``nxp.M1_TO_THETA_SHIFT``)."""
+    um, im = _scales(opt)
+    em = opt["e_max_v"] if opt["e_max_v"] is not None else um
     ts, rs, ld, lq = ctx["ts"], ctx["rs"], ctx["ld"], ctx["lq"]
     w_max = TWO_PI * ctx["f_base"]
     out = {}
@@ -134,12 +144,11 @@ def profile(ctx: dict, opt: dict) -> dict:
                                "T_s/(L_d + T_s·R_s)·E_max/I_max", src)
     out["M1_WI_SCALE"] = _acc32("M1_WI_SCALE", lq * ts / den * w_max, 1.0 / w_max, "s",
                                 "L_q·T_s/(L_d + T_s·R_s)·ω_max", src)
-    mant, shift = mantissa_shift(ts * w_max / math.pi)
+    mant, shift = mantissa_shift(ts * w_max / math.pi, "nxp.M1_TO_THETA_SHIFT")
     out["M1_TO_THETA_GAIN"] = fixed("M1_TO_THETA_GAIN", mant, 16, 15, math.pi / ts, "rad/s",
                                     "T_s·ω_max/π = mantissa·2^shift", src, rounding="zero",
                                     clamps=True, fmt=f"FRAC16 · 2^{shift}", shift=shift)
-    return {"inputs": {**opt, "u_max_v": um, "e_max_v": em, "w_max_rad_s": w_max},
-            "constants": out}
+    return out
 
 
 def header(p: dict, ctx: dict) -> str:

@@ -33,12 +33,13 @@ from __future__ import annotations
 import math
 
 from ..fixedpoint.cint import trunc_div
-from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor
+from ..fixedpoint.interval import RInterval
+from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent
 from .headers import define, define_float, guard
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "max_current",
            "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains", "pi_first_output",
-           "profile", "header"]
+           "profile", "constants", "header"]
 
 _GAIN = 8.0
 OPTIONS = (
@@ -104,23 +105,44 @@ def gain_range(axis: str) -> tuple[int, int]:
 
 def divisors(ctx: dict, opt: dict) -> tuple[int, int]:
     """TF_KPDIV, TF_KIDIV: given, or pulab's choice for the larger of the two axes."""
-    r = _v_over_i(ctx, opt)
-    kp = max(abs(ctx["gains"][a][0]) for a in ("d", "q")) / r
-    ki = max(abs(ctx["gains"][a][1]) for a in ("d", "q")) * ctx["ts"] / r
-    return (opt["tf_kpdiv"] or pow2_divisor(kp), opt["tf_kidiv"] or pow2_divisor(ki))
+    return _divisors(ctx, opt)[:2]
 
 
-def gains_to_ints(kp: float, ki: float, ctx: dict, opt: dict, axis: str) -> dict:
-    """int16 Kp, Ki over TF_KPDIV, TF_KIDIV for SI gains kp [V/A], ki [V/(A·s)]."""
+def _divisors(ctx: dict, opt: dict) -> tuple:
+    """TF_KPDIV, TF_KIDIV and each axis's Kp, Ki per unit ({axis: (kp, ki)}).
+
+    The divisor suits the larger gain of the two axes: the largest D whose gain fits is
+    monotone in |gain|, so D for max(|g_d|, |g_q|) is the smaller of the two axes' own D.
+    Over intervals (a family proof) each axis's exponent is a choice (``st.TF_KPDIV.d`` …)
+    and its gain keeps only the part of its interval that makes it."""
+    r, t = _v_over_i(ctx, opt), ctx["ts"]
+    per_axis = {a: [ctx["gains"][a][0] / r, ctx["gains"][a][1] * t / r] for a in ("d", "q")}
+    divs = []
+    for i, (key, site) in enumerate((("tf_kpdiv", "st.TF_KPDIV"), ("tf_kidiv", "st.TF_KIDIV"))):
+        if opt[key]:
+            divs.append(opt[key])
+            continue
+        ns = []
+        for a in ("d", "q"):
+            n, per_axis[a][i] = pow2_exponent(per_axis[a][i], 32767, 14, f"{site}.{a}")
+            ns.append(n)
+        divs.append(1 << min(ns))
+    return divs[0], divs[1], per_axis
+
+
+def gains_to_ints(kp, ki, ctx: dict, opt: dict, axis: str, per_unit: tuple = None) -> dict:
+    """int16 Kp, Ki over TF_KPDIV, TF_KIDIV for SI gains kp [V/A], ki [V/(A·s)];
+    ``per_unit`` (from :func:`_divisors`): Kp, Ki per unit already computed."""
     r, t = _v_over_i(ctx, opt), ctx["ts"]
     kpdiv = opt["tf_kpdiv"] or pow2_divisor(kp / r)
     kidiv = opt["tf_kidiv"] or pow2_divisor(ki * t / r)
+    x_kp, x_ki = per_unit or (kp / r, ki * t / r)
     kp_name, ki_name = gain_fields(axis)
     src = derived("kp·MAX_CURRENT/(U_dc/√3), the Workbench rule is not public; the PI form "
                   "(int16 gain >> log2 divisor) is MCSDK pid_regulator.c")
-    return {kp_name: fixed(kp_name, kp / r, 16, int(math.log2(kpdiv)), r, "V/A",
+    return {kp_name: fixed(kp_name, x_kp, 16, kpdiv.bit_length() - 1, r, "V/A",
                            "kp·MAX_CURRENT/(U_dc/√3)", src, fmt=f"int16 / {kpdiv}"),
-            ki_name: fixed(ki_name, ki * t / r, 16, int(math.log2(kidiv)), r / t, "V/(A·s)",
+            ki_name: fixed(ki_name, x_ki, 16, kidiv.bit_length() - 1, r / t, "V/(A·s)",
                            "ki·T·MAX_CURRENT/(U_dc/√3)", src, fmt=f"int16 / {kidiv}")}
 
 
@@ -152,13 +174,48 @@ def _c_trunc(x: float) -> int:
     return math.trunc(x)
 
 
+def _carried(per_unit, ideal):
+    """|C − ideal| in LSB for C = trunc(F1·N/den) of a truncated integer N (N ≤ x < N + 1):
+    below 1 (the cast) + F1/den (the input's truncation, carried) + a few roundings of the
+    doubles; over a box (intervals) its largest value, else None (a point needs none)."""
+    if not isinstance(per_unit, RInterval):
+        return None
+    return 1.0 + per_unit.hi * (1 + 1e-12) + 1e-15 * max(abs(ideal.lo), abs(ideal.hi))
+
+
 def profile(ctx: dict, opt: dict) -> dict:
     """ST constants: PID defaults, current conversion, observer C1, C3, C5."""
     kpdiv, kidiv = divisors(ctx, opt)
     o = {**opt, "tf_kpdiv": kpdiv, "tf_kidiv": kidiv}
+    out = constants(ctx, opt)
+    imax = max_current(o)
+    f_reg = round(1.0 / ctx["ts"])
+    max_rpm = 60.0 * ctx["f_base"] / ctx["pp"]
+    o.update(max_current_a=imax, pwm_frequency_hz=f_reg, max_application_speed_rpm=max_rpm,
+             motor_voltage_constant=_ke(ctx))
+    # A ±0.1 % current error through the torque PI: the shift and the MISRA build disagree
+    # on the negative side (rounding down vs toward zero).
+    e = max(1, round(0.001 * 32768))
+    kp_i, ki_i = out["PID_TORQUE_KP_DEFAULT"]["value"], out["PID_TORQUE_KI_DEFAULT"]["value"]
+    example = [{"error": err,
+                "shift": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, False),
+                "misra": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, True)}
+               for err in (e, -e)]
+    return {"inputs": o, "constants": out, "pi_example": example}
+
+
+def _ke(ctx: dict):
+    """MOTOR_VOLTAGE_CONSTANT, V rms line-to-line per krpm."""
+    return ctx["bemf_v"] / (60.0 * ctx["f_rated"] / ctx["pp"] / 1000.0)
+
+
+def constants(ctx: dict, opt: dict) -> dict:
+    """The integers of :func:`profile` (the inputs may be intervals: a family proof)."""
+    kpdiv, kidiv, per_axis = _divisors(ctx, opt)
+    o = {**opt, "tf_kpdiv": kpdiv, "tf_kidiv": kidiv}
     out = {}
     for axis in ("d", "q"):
-        out.update(gains_to_ints(*ctx["gains"][axis], ctx, o, axis))
+        out.update(gains_to_ints(*ctx["gains"][axis], ctx, o, axis, tuple(per_axis[axis])))
     vref, rsh, g = o["adc_reference_v"], o["rshunt_ohm"], o["amplification_gain"]
     imax = max_current(o)
     f_reg = round(1.0 / ctx["ts"])  # PWM_FREQUENCY / REGULATION_EXECUTION_RATE (= 1)
@@ -179,8 +236,7 @@ def profile(ctx: dict, opt: dict) -> dict:
     out["C1"] = fixed("C1", f1 * ctx["rs"] / (ls * f_reg), 32, 0, ls * f_reg / f1, "Ω",
                       "F1·RS/(LS·f_reg)", conv, rounding="zero", fmt="int32_t")
     max_rpm = 60.0 * ctx["f_base"] / ctx["pp"]
-    ke = ctx["bemf_v"] / (60.0 * ctx["f_rated"] / ctx["pp"] / 1000.0)  # V rms LL per krpm
-    bemf_exact = max_rpm * 1.2 * ke * SQRT2 / (1000.0 * SQRT3)
+    bemf_exact = max_rpm * 1.2 * _ke(ctx) * SQRT2 / (1000.0 * SQRT3)
     bemf = fixed("MAX_BEMF_VOLTAGE", bemf_exact, 16, 0, 1.0, "V",
                  "MAX_APPLICATION_SPEED_RPM·1.2·MOTOR_VOLTAGE_CONSTANT·√2/(1000·√3)", conv,
                  rounding="zero", signed=False, fmt="uint16_t")
@@ -188,21 +244,13 @@ def profile(ctx: dict, opt: dict) -> dict:
     den = ls * imax * f_reg
     out["C3"] = fixed("C3", f1 * bemf_exact / den, 32, 0, den / f1, "V",
                       "F1·MAX_BEMF_VOLTAGE/(LS·MAX_CURRENT·f_reg)", conv, rounding="zero",
-                      fmt="int32_t", value=_c_trunc(f1 * bemf["value"] / den))
+                      fmt="int32_t", value=_c_trunc(f1 * bemf["value"] / den),
+                      error_lsb=_carried(f1 / den, f1 * bemf_exact / den))
     out["C5"] = fixed("C5", f1 * mv_exact / den, 32, 0, den / f1, "V",
                       "F1·MAX_VOLTAGE/(LS·MAX_CURRENT·f_reg)", conv, rounding="zero",
-                      fmt="int32_t", value=_c_trunc(f1 * out["MAX_VOLTAGE"]["value"] / den))
-    o.update(max_current_a=imax, pwm_frequency_hz=f_reg, max_application_speed_rpm=max_rpm,
-             motor_voltage_constant=ke)
-    # A ±0.1 % current error through the torque PI: the shift and the MISRA build disagree
-    # on the negative side (rounding down vs toward zero).
-    e = max(1, round(0.001 * 32768))
-    kp_i, ki_i = out["PID_TORQUE_KP_DEFAULT"]["value"], out["PID_TORQUE_KI_DEFAULT"]["value"]
-    example = [{"error": err,
-                "shift": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, False),
-                "misra": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, True)}
-               for err in (e, -e)]
-    return {"inputs": o, "constants": out, "pi_example": example}
+                      fmt="int32_t", value=_c_trunc(f1 * out["MAX_VOLTAGE"]["value"] / den),
+                      error_lsb=_carried(f1 / den, f1 * mv_exact / den))
+    return out
 
 
 def header(p: dict, ctx: dict) -> str:

@@ -1,15 +1,15 @@
-"""Chinese text for the C tracer's messages (:mod:`pulab.ctrace`), by pattern.
+"""Chinese text, by pattern, for the few messages still raised as English text.
 
-Every other error and warning of pulab is data — a code and parameters — whose English and
-Chinese text come from :mod:`pulab.schema.catalog`.  The tracer still raises its errors as
-English text; this table turns each into Chinese until they carry catalog codes too.  A
-message with no pattern here comes back unchanged (``tests/py/test_ctrace.py`` makes sure
-every tracer message has one).
+Every error and warning of pulab is data — a code and parameters — whose English and Chinese
+text come from :mod:`pulab.schema.catalog`, the C tracer's (:mod:`pulab.ctrace`) included.  The
+robustness inputs (``analysis.robust``, ``pulab robust``) still raise some errors as English
+text; this table turns each into Chinese until they carry catalog codes too.  A message with no
+pattern here comes back unchanged.
 
 Examples
 --------
->>> to_zh("3:14: division by zero")
-'3:14：除以零'
+>>> to_zh("must be [low, high] in °C")
+'必须是 [下限, 上限]，单位 °C'
 """
 
 from __future__ import annotations
@@ -20,160 +20,6 @@ __all__ = ["to_zh", "has_chinese", "CATALOG"]
 
 #: (English pattern, Chinese replacement); the first full match wins.
 CATALOG = [
-    # the tracer's own input checks (target, --set values, GLOBAL_Q)
-    (r"must be one of (.*), got (.*)", r"必须是以下之一：\1；当前为 \2"),
-    (r"must be an integer, got (.*)", r"必须是整数，当前为 \1"),
-    (r"must be an integer 1\.\.30, got (.*)", r"必须是 1..30 的整数，当前为 \1"),
-    # the C tracer (pulab.ctrace): a position prefix, then the reason
-    (r"(\d+:\d+): (.*)", lambda m: f"{m[1]}：{to_zh(m[2])}"),
-    (r"code is longer than (\d+) characters", r"代码超过 \1 个字符"),
-    (r"code must be text", "代码必须是文本"),
-    (r"unexpected character (.*)", r"意外的字符 \1"),
-    (r"comment not closed: \*/ missing", "注释未闭合：缺少 */"),
-    (r"annotation must read (.*)", r"注解格式应为 \1"),
-    (r"Q(\d+): at most 63 fraction bits", r"Q\1：小数位最多 63 位"),
-    (r"base must be a finite number", "base 必须是有限数"),
-    (r"#define needs a name", "#define 需要一个名字"),
-    (r"expected a name after typedef (.*), got (.*)", r"typedef \1 之后应为名字，实际为 \2"),
-    (r"(\w+) is a floating-point type \(typedef at (\S+)\), not supported",
-     r"\1 是浮点类型（typedef 于 \2），不支持"),
-    (r"(\w+) is a pointer type \(typedef at (\S+)\), not supported",
-     r"\1 是指针类型（typedef 于 \2），不支持"),
-    # functions, structs, pointers, arrays, loops (pulab.ctrace.parser/check/evaluate)
-    (r"'\(' is never closed", "'(' 没有闭合"),
-    (r"'(\w+)' is not supported \(integer types only\)", r"不支持 '\1'（只支持整数类型）"),
-    (r"a cast to a pointer, struct or void is not supported", "不支持转换为指针、结构体或 void"),
-    (r"'(\w+)' is not supported", r"不支持 '\1'"),
-    (r"expected a struct tag or '\{'", "此处应为结构体标签或 '{'"),
-    (r"struct (\S+) is already defined at (\S+)", r"结构体 \1 已在 \2 处定义"),
-    (r"bit-fields are not supported", "不支持位域"),
-    (r"field (\w+) is declared twice in struct (\S+)", r"结构体 \2 中字段 \1 声明了两次"),
-    (r"expected an enumerator name", "此处应为枚举常量名"),
-    (r"an array size must be an integer constant", "数组大小必须是整数常量"),
-    (r"an enumerator's value must be an integer constant", "枚举值必须是整数常量"),
-    (r"function pointers are not supported", "不支持函数指针"),
-    (r"function (\w+) is already defined at (\S+)", r"函数 \1 已在 \2 处定义"),
-    (r"'(\w+)' outside a loop", r"'\1' 不在循环内"),
-    (r"'return' outside a function", "'return' 不在函数内"),
-    (r"expected 'while' after the body of 'do'", "'do' 的循环体之后应为 'while'"),
-    (r"a function (\w+)\(…\) can only be declared at file scope", r"函数 \1(…) 只能在文件作用域声明"),
-    (r"(\S+) cannot have type void", r"\1 的类型不能是 void"),
-    (r"designated initializers are not supported", "不支持指定初始化器"),
-    (r"variadic functions are not supported", "不支持可变参数函数"),
-    (r"a parameter cannot have type void", "参数的类型不能是 void"),
-    (r"expected '\{' or ';' after (\S+), got (.*)",
-     lambda m: f"{m[1]} 之后应为 '{{' 或 ';'，实际为 {_GOT.get(m[2], m[2])}"),
-    (r"every parameter of (\S+) needs a name", r"\1 的每个参数都需要名字"),
-    (r"typedef (\w+): function and array typedefs are not supported",
-     r"typedef \1：不支持函数和数组类型的 typedef"),
-    (r"expected a field name after '(\S+)'", r"'\1' 之后应为字段名"),
-    (r"pointers to pointers are not supported", "不支持指向指针的指针"),
-    (r"an array needs a size or an initializer", "数组需要大小或初始值"),
-    (r"struct (\S+) is declared but its fields are not pasted", r"结构体 \1 已声明，但没有粘贴其字段"),
-    (r"field (\w+) of struct (\S+) has an incomplete type", r"结构体 \2 的字段 \1 类型不完整"),
-    (r"(\w+)\(\) returns void: 'return' takes no value", r"\1() 返回 void：'return' 不能带值"),
-    (r"(\w+)\(\) must return a value", r"\1() 必须返回一个值"),
-    (r"(\d+) initializers for an array of (\d+)", r"\1 个初始值，但数组只有 \2 个元素"),
-    (r"(\d+) initializers for struct (\S+) of (\d+) fields", r"\1 个初始值，但结构体 \2 只有 \3 个字段"),
-    (r"a braced list initializes an array or a struct", "花括号列表只能初始化数组或结构体"),
-    (r"cannot initialize (.+) with (.+)", r"不能用 \2 初始化 \1"),
-    (r"(\w+)\(\) returns void: it has no value", r"\1() 返回 void：没有值"),
-    (r"(.+) where an integer is needed \(only integers are computed\)",
-     r"此处需要整数，实际为 \1（只计算整数）"),
-    (r"'->' needs a pointer to a struct, not (.+)", r"'->' 需要指向结构体的指针，而不是 \1"),
-    (r"(\S+) is not declared as a struct \(declare (\S+) with its type\)",
-     r"\1 没有声明为结构体（请带类型声明 \2）"),
-    (r"'\.' needs a struct, not (.+)", r"'.' 需要结构体，而不是 \1"),
-    (r"struct (\S+) has no field (\w+)", r"结构体 \1 没有字段 \2"),
-    (r"'\[\]' needs an array or a pointer, not (.+)", r"'[]' 需要数组或指针，而不是 \1"),
-    (r"'\*' needs a pointer, not (.+)", r"'*' 需要指针，而不是 \1"),
-    (r"'(\S+)' on (.+) is not supported", r"不支持对 \2 使用 '\1'"),
-    (r"'(\S+)' on (.+)", r"不能对 \2 使用 '\1'"),
-    (r"cannot assign (.+) to (.+)", r"不能把 \1 赋给 \2"),
-    (r"argument (\w+) of (\w+)\(\) is (.+), got (.+)", r"\2() 的参数 \1 是 \3，实际为 \4"),
-    (r"(\w+)\(\) returns (.+): only integer, struct and void results are supported",
-     r"\1() 返回 \2：只支持整数、结构体和 void 返回值"),
-    (r"(\w+)\(\) returns (.+), not (.+)", r"\1() 返回 \2，而不是 \3"),
-    (r"a case label repeats the one at (\S+)", r"case 标签与 \1 处的重复"),
-    (r"a case label inside a nested statement is not supported \(labels at the top of the "
-     r"switch's block only\)", "不支持嵌套语句中的 case 标签（只支持 switch 块顶层的标签）"),
-    (r"'(\w+)' outside a switch", r"'\1' 不在 switch 内"),
-    (r"expected '\{' after 'switch \(…\)'", "'switch (…)' 之后应为 '{'"),
-    (r"a case label must be an integer constant", "case 标签必须是整数常量"),
-    (r"(\S+) \(at (\S+)\) is outside the subset: (.*)",
-     lambda m: f"{m[1]}（{m[2]}）超出支持的子集：{to_zh(m[3])}"),
-    # the preprocessor (pulab.ctrace.preprocess)
-    (r"must be a list of NAME\[=VALUE\] texts", "必须是 NAME[=VALUE] 文本的列表"),
-    (r"must be text NAME\[=VALUE\], got (.*)", r"必须是文本 NAME[=VALUE]，当前为 \1"),
-    (r"(\w+)\(…\) needs a floating constant \(a variable would need floating point at run "
-     r"time\)", r"\1(…) 需要浮点常量（变量需要运行时浮点运算）"),
-    (r"(\w+)\(…\) = (\S+) does not fit a 32-bit long", r"\1(…) = \2 超出 32 位 long 的范围"),
-    (r"in (#\w+(?: \w+)?|[\w.]+\.h): (.*)", lambda m: f"在 {m[1]} 中：{to_zh(m[2])}"),
-    (r"(#\w+(?: \w+)?|[\w.]+\.h): unexpected text", r"\1：有意外的内容"),
-    (r"#define (\w+)\(: '\)' missing after the parameters", r"#define \1(：参数后缺少 ')'"),
-    (r"#define (\w+)\(…\): bad parameter (.*)", r"#define \1(…)：错误的参数 \2"),
-    (r"#define (\w+)\(…\): a parameter is named twice", r"#define \1(…)：参数重名"),
-    (r"#define (\w+): '##' cannot begin or end a macro body",
-     r"#define \1：'##' 不能出现在宏体的开头或结尾"),
-    (r"-D (.*): NAME\[=VALUE\] needs a C name", r"-D \1：NAME[=VALUE] 需要一个 C 名字"),
-    (r"#(\w+) without #if", r"#\1 没有对应的 #if"),
-    (r"#(\w+) after #else", r"#\1 出现在 #else 之后"),
-    (r"#if without #endif", "#if 没有对应的 #endif"),
-    (r"#if nested deeper than (\d+)", r"#if 嵌套超过 \1 层"),
-    (r"#error(.*)", r"#error（代码要求停止）\1"),
-    (r"#(.*) is not a preprocessor directive this tracer knows", r"#\1 不是本工具认识的预处理指令"),
-    (r"#include needs <header> or \"header\"", "#include 需要 <头文件> 或 \"头文件\""),
-    (r"#(\w+) needs one name", r"#\1 需要一个名字"),
-    (r"defined needs a macro name", "defined 需要一个宏名"),
-    (r"#if needs an expression", "#if 需要一个表达式"),
-    (r"#if: (.*)", lambda m: f"#if：{to_zh(m[1])}"),
-    (r"expression ends early", "表达式不完整"),
-    (r"unexpected (.*)", r"意外的 \1"),
-    (r"'(.)' missing", r"缺少 '\1'"),
-    (r"shift by (.*)", r"移位位数为 \1"),
-    (r"(.*) is not an integer constant", r"\1 不是整数常量"),
-    (r"macro (\w+): expansion nested deeper than (\d+) macros", r"宏 \1：展开嵌套超过 \2 层"),
-    (r"macro (\w+): more than (\d+) tokens after expansion", r"宏 \1：展开后超过 \2 个记号"),
-    (r"macro (\w+)\(: '\)' missing", r"宏 \1(：缺少 ')'"),
-    (r"macro (\w+)\(\) takes (\d+) arguments, got (\d+)", r"宏 \1() 需要 \2 个参数，实际为 \3 个"),
-    (r"'##' pasting (.*) and (.*) does not give one token", r"'##' 拼接 \1 和 \2 得不到一个记号"),
-    (r"GLOBAL_Q must be an integer 1\.\.30", "GLOBAL_Q 必须是 1..30 的整数"),
-    (r"(.*): only integer constants are supported \(no floating point\)",
-     r"\1：只支持整数常量（不支持浮点）"),
-    (r"(.*): bad integer suffix (.*)", r"\1：错误的整数后缀 \2"),
-    (r"(.*): bad octal constant", r"\1：错误的八进制常量"),
-    (r"expected '(.*?)'(.*), got (.*)", lambda m: f"此处应为 '{m[1]}'{_where(m[2])}"
-     f"，实际为 {_GOT.get(m[3], m[3])}"),
-    (r"expected (a type|a value|a name|a variable name after the type), got (.*)",
-     lambda m: f"此处应为{_EXPECTED[m[1]]}，实际为 {_GOT.get(m[2], m[2])}"),
-    (r"nested more than (\d+) deep", r"嵌套超过 \1 层"),
-    (r"expression more than (\d+) operators deep", r"表达式的运算符嵌套超过 \1 层"),
-    (r"not a C type: (.*)", r"不是 C 类型：\1"),
-    (r"'\{' at (\S+) is never closed", r"\1 处的 '{' 没有闭合"),
-    (r"'else' without 'if'", "'else' 没有对应的 'if'"),
-    (r"the comma operator is not supported", "不支持逗号运算符"),
-    (r"'(\S+)' needs a variable on its left", r"'\1' 的左边必须是变量"),
-    (r"'(\S+)' needs a variable", r"'\1' 需要一个变量"),
-    (r"'(\S+)' is not supported here", r"此处不支持 '\1'"),
-    (r"(\S+) takes (\d+) arguments, got (\d+)", r"\1 需要 \2 个参数，实际为 \3 个"),
-    (r"__IQmpy\(a, b, q\): q must be an integer constant 0\.\.62",
-     "__IQmpy(a, b, q)：q 必须是 0..62 的整数常量"),
-    (r"(.+) does not exist on (\w+)", r"\2 上没有 \1 类型"),
-    (r"(\S+) is not declared \(declare it with its type, e\.g\. (.*)\)",
-     r"\1 未声明（请带类型声明，例如 \2）"),
-    (r"(\S+) is already declared at (\S+)", r"\1 已在 \2 处声明"),
-    (r"(\S+) is too large for every integer type of its kind \((.*)\)",
-     r"\1 超出其所有可用整数类型的范围（\2）"),
-    (r"the annotation names (\S+), which is not declared", r"注解中的 \1 未声明"),
-    (r"(\S+) is read before it has a value \(give it an input value or an initializer\)",
-     r"\1 在赋值之前被读取（请给它输入值或初始值）"),
-    (r"division by zero", "除以零"),
-    (r"remainder by zero", "对零取余"),
-    (r"no variable (\S+) is declared in the code", r"代码中没有声明变量 \1"),
-    (r"(\S+) has an initializer in the code", r"\1 在代码中已有初始值"),
-    (r"must be (\S+)\.\.(\S+) for (.+), got (.*)", r"对 \3 必须在 \1..\2 之间，当前为 \4"),
-    (r"must be an integer 1\.\.30, got (.*)", r"必须是 1..30 的整数，当前为 \1"),
-    (r"--set needs NAME=VALUE, got (.*)", r"--set 需要 NAME=VALUE，当前为 \1"),
     # the robustness input (analysis.robust) and `pulab robust`
     (r"must be \[low, high\] in °C", "必须是 [下限, 上限]，单位 °C"),
     (r"must be between (\S+) and (\S+) with low ≤ high, got (.*)",
@@ -189,28 +35,6 @@ CATALOG = [
     (r"must be ≥ 0, got (.*)", r"必须大于等于 0，当前为 \1"),
     (r"must be true or false, got (.*)", r"必须是 true 或 false，当前为 \1"),
 ]
-_WHERE = {"": "", " after 'if'": "（在 'if' 之后）", " to close the condition": "（闭合条件）",
-          " at the end of the declaration": "（声明末尾）",
-          " at the end of the statement": "（语句末尾）", " in '?:'": "（在 '?:' 中）",
-          " to close the cast": "（闭合类型转换）", " after a struct field": "（结构体字段之后）",
-          " to close the enum": "（闭合枚举）", " to close the array size": "（闭合数组大小）",
-          " to close the index": "（闭合下标）", " after 'while'": "（在 'while' 之后）",
-          " after 'for'": "（在 'for' 之后）", " after 'break'": "（在 'break' 之后）",
-          " after 'continue'": "（在 'continue' 之后）",
-          " after 'do … while (…)'": "（在 'do … while (…)' 之后）",
-          " after the loop's first clause": "（循环的第一个子句之后）",
-          " after the loop's condition": "（循环条件之后）", " after 'switch'": "（在 'switch' 之后）",
-          " after 'case'": "（在 'case' 之后）", " after 'default'": "（在 'default' 之后）"}
-_GOT = {"end of code": "代码结尾"}
-
-
-def _where(text: str) -> str:
-    if text in _WHERE:
-        return _WHERE[text]
-    m = re.fullmatch(r" to close '\(' at (\S+)", text) or re.fullmatch(r" to close (\S+)", text)
-    return f"（闭合 {m[1]} 处的 '('）" if m and ":" in m[1] else f"（闭合 {m[1]}）" if m else text
-_EXPECTED = {"a type": "类型", "a value": "一个值", "a name": "一个名字",
-             "a variable name after the type": "类型之后的变量名"}
 _COMPILED = [(re.compile(p, re.S), r) for p, r in CATALOG]
 
 
@@ -226,7 +50,7 @@ def to_zh(message: str) -> str:
 def has_chinese(message: str) -> bool:
     """True when the catalog turns ``message`` into text with Chinese characters.
 
-    >>> has_chinese("division by zero"), has_chinese("no such pattern")
+    >>> has_chinese("must be [low, high] in °C"), has_chinese("no such pattern")
     (True, False)
     """
     zh = to_zh(message)

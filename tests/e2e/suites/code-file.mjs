@@ -22,6 +22,13 @@ int16_t pi_step(pi_t *p, int16_t err, int16_t *sat)
 }
 `;
 
+// A header of a math block as TI keeps them: a struct typedef and a statement macro over it.
+const MACRO_FILE = `typedef struct { long ia; long ib; long al; long be; } ALBE;
+#define ALBE_RUN(w)                                       \\
+    w.al = w.ia;                                          \\
+    w.be = _IQmpy((w.ia + (w.ib << 1)), _IQ(0.57735026918963));
+`;
+
 export default async function codeFile(ctx) {
   const { check, assert, newPage, ready, waitValue, subSrv, ROOT, SHOTS } = ctx;
   const cli = (target, set) => JSON.parse(execFileSync('python3',
@@ -64,5 +71,28 @@ export default async function codeFile(ctx) {
       await p.context().close();
     });
   }
+  await check('code file: a header of macros opens on its macro, run on an object of the struct it uses', async () => {
+    const mset = { 'w.ia': 1 << 23, 'w.ib': -(1 << 21) };
+    const want = JSON.parse(execFileSync('python3', ['-m', 'pulab', 'trace', '-', '--target', 'c28x', '--entry', 'ALBE_RUN',
+      ...Object.entries(mset).flatMap(([k, v]) => ['--set', `${k}=${v}`])],
+    { cwd: ROOT, env: { ...process.env, PYTHONPATH: join(ROOT, 'py') }, input: MACRO_FILE }).toString());
+    const murl = `${subSrv.url}?code=${encodeURIComponent(MACRO_FILE)}&target=c28x&${Object.entries(mset).map(([k, v]) => `set.${encodeURIComponent(k)}=${v}`).join('&')}`;
+    for (const [width, locale] of [[390, 'zh-CN'], [900, 'en-US'], [1366, 'en-US'], [1366, 'zh-CN']]) {
+      const p = await newPage({ locale, context: { viewport: { width, height: 900 } } });
+      await p.goto(murl);
+      await p.click('nav.tabs a[data-view="firmware"]');
+      await p.waitForSelector('[data-key="code.c28x.vars.w.be.value"][data-value]', { timeout: 60_000 });
+      const labels = await p.$$eval('select[name="entry"] option', (els) => els.map((e) => e.textContent));
+      assert(labels.includes('ALBE_RUN(…)'), `menu ${labels}`);
+      assert((await p.$eval('select[name="entry"]', (e) => e.value)) === 'ALBE_RUN', 'the macro chosen');
+      await waitValue(p, 'code.c28x.vars.w.be.value', want.vars['w.be'].value);
+      await waitValue(p, 'code.c28x.vars.w.al.value', want.vars['w.al'].value);
+      await p.$eval('#panel-code', (e) => e.scrollIntoView());
+      await p.screenshot({ path: join(SHOTS, `code-macro-${width}-${locale}.png`) });
+      const overflow = await p.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+      assert(overflow <= 1, `page wider than the viewport by ${overflow}px`);
+      await p.context().close();
+    }
+  });
   await page.context().close();
 }

@@ -75,6 +75,63 @@ export default async function prove(ctx) {
     await runProof();
   });
 
+  await check('prove: NXP, ST and Microchip constants, shifts and divisors equal CPython\'s, with proposals', async () => {
+    const boxes = {
+      nxp: [['motor.ld_h', 1e-3, 1], ['motor.rated_current_a', 5, 200]],
+      st: [['motor.rated_current_a', 1, 40], ['motor.ld_h', 1e-4, 1e-2]],
+      microchip: [['motor.rated_current_a', 1, 40], ['motor.ld_h', 1e-4, 1e-2]],
+    };
+    for (const [profile, box] of Object.entries(boxes)) {
+      await page.selectOption('select[name="prove.profile"]', profile);
+      await setRows(box);
+      await runProof();
+      const args = ['prove', '-', '--profile', profile, '--propose', ...box.flatMap(([p, a, b]) => ['--range', `${p}=${a}:${b}`])];
+      const want = JSON.parse(py(args, JSON.stringify(seed.input)));
+      assert(await page.evaluate(() => document.documentElement.dataset.proveDone) === want.verdict, `${profile}: overall verdict`);
+      for (const [name, e] of Object.entries(want.integers)) {
+        const verdict = await page.$eval(`[data-verdict-for="${name}"]`, (el) => el.className.match(/pr-(\w+)/)[1]);
+        assert(verdict === e.verdict, `${name}: page ${verdict}, CPython ${e.verdict}`);
+        if (e.range) {
+          const hi = await page.$eval(`[data-key="prove.integers.${name}.range.1"]`, (el) => JSON.parse(el.dataset.value));
+          assert(hi === e.range[1], `${name}: page hi ${hi}, CPython ${e.range[1]}`);
+        }
+        if (e.verdict === 'violated') {
+          const ce = JSON.parse(await page.$eval(`a[data-open-ce="${name}"]`, (a) => decodeURIComponent(a.getAttribute('href').replace(/^#in=/, ''))));
+          for (const [path, lo, hi] of box) {
+            const [sec, key] = path.split('.');
+            assert(ce[sec][key] >= lo && ce[sec][key] <= hi, `${name}: counterexample ${path} = ${ce[sec][key]} outside the box`);
+          }
+          // The page's counterexample breaks the constant in CPython's report too.
+          const c = JSON.parse(py(['report', '-'], JSON.stringify(ce))).profiles[profile].constants[name.split('.').pop()];
+          assert(c.flags.includes('saturate') || c.flags.includes('out_of_range') || (c.value === 0 && c.ideal !== 0), `${name}: report on the counterexample: ${JSON.stringify(c)}`);
+        }
+      }
+      await page.click('button.run-propose');
+      await page.waitForSelector('.prove-proposal', { timeout: 60_000 });
+      for (const [name, e] of Object.entries(want.proposal.constants)) {
+        if (!e || !e.holds) continue;
+        const fmt = await page.$eval(`[data-key="prove.proposal.constants.${name}.format"]`, (el) => JSON.parse(el.dataset.value));
+        const err = await page.$eval(`[data-key="prove.proposal.constants.${name}.worst_error_pct"]`, (el) => JSON.parse(el.dataset.value));
+        assert(fmt === e.format && err === e.worst_error_pct, `${name}: page ${fmt} ≤ ${err} %, CPython ${e.format} ≤ ${e.worst_error_pct} %`);
+      }
+      await page.$eval('.prove-table', (e) => e.scrollIntoView());
+      await page.screenshot({ path: join(SHOTS, `prove-${profile}.png`), fullPage: false });
+    }
+    await page.selectOption('select[name="prove.profile"]', 'inovance');
+    await setRows(rows);
+    await runProof();
+    // Inovance's fixed formats: the proposal is each proven integer's headroom, as CPython's.
+    await page.click('button.run-propose');
+    await page.waitForSelector('.prove-proposal', { timeout: 60_000 });
+    const ino = JSON.parse(py(['prove', '-', '--propose', ...rows.flatMap(([p, a, b]) => ['--range', `${p}=${a}:${b}`])], JSON.stringify(seed.input))).proposal;
+    const inoNames = Object.keys(ino.integers);
+    assert(inoNames.length > 3, `headroom rows: ${inoNames}`);
+    for (const [name, e] of Object.entries(ino.integers)) {
+      const bits = await page.$eval(`[data-key="prove.proposal.integers.${name}.headroom_bits"]`, (el) => JSON.parse(el.dataset.value));
+      assert(bits === e.headroom_bits, `${name}: page +${bits} bits, CPython +${e.headroom_bits}`);
+    }
+  });
+
   await check('prove: a counterexample opens as the page input, where LD breaks', async () => {
     const ce = JSON.parse(await page.$eval('a[data-open-ce="vendor.LD"]', (a) => decodeURIComponent(a.getAttribute('href').replace(/^#in=/, ''))));
     await page.click('a[data-open-ce="vendor.LD"]');
@@ -119,6 +176,23 @@ export default async function prove(ctx) {
     }
     const overflow = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
     assert(overflow <= 1, `page scrolls sideways by ${overflow} px`);
+    // A vendor profile with its proposal, in both languages and at each width.
+    await page.selectOption('select[name="prove.profile"]', 'microchip');
+    await setRows([['motor.rated_current_a', 1, 40], ['motor.ld_h', 1e-4, 1e-2]]);
+    await runProof();
+    await page.click('button.run-propose');
+    await page.waitForSelector('.prove-proposal', { timeout: 60_000 });
+    for (const lang of ['en', 'zh']) {
+      for (const w of [390, 900, 1366]) {
+        await page.setViewportSize({ width: w, height: 900 });
+        await page.click(`button[data-lang="${lang}"]`);
+        await page.$eval('.pr-proposal', (e) => e.scrollIntoView());
+        await page.waitForTimeout(200);
+        await page.screenshot({ path: join(SHOTS, `prove-vendor-${lang}-${w}.png`) });
+      }
+    }
+    const wide = await page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
+    assert(wide <= 1, `page scrolls sideways by ${wide} px with a proposal`);
   });
   await page.context().close();
 }

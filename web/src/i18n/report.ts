@@ -40,7 +40,7 @@ export default dict(
     puGains: 'Per-unit',
     intGains: 'Firmware integers',
     backGains: 'Back from the integers',
-    stepExample: 'First vendor PI update after a 10 % i_d step (error = {e} in Q12)',
+    stepExample: 'First Inovance PI update after a 10 % i_d step (error = {e} in Q12)',
     impliedBw: 'implied bandwidth',
     integratorGain: 'Integrator gain',
     wn: 'ω_n',

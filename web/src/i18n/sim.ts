@@ -22,7 +22,7 @@ export default dict(
     no: 'no',
     variant_si: 'SI float',
     variant_pu: 'per-unit float',
-    variant_fixed: 'vendor fixed point',
+    variant_fixed: 'Inovance fixed point',
     variant_q15: 'integer (Q15 angle)',
     variant_naive: 'naive (SI gains)',
     error: 'error',

@@ -17,8 +17,10 @@ let state: CodeState | null = null;
 let examples: TraceExample[] | null = null;
 let targets: string[] = FALLBACK_TARGETS;
 let inputs: string[] = [];
-/** The functions the pasted code defines (from the last reply that parsed it). */
+/** The functions the pasted code defines, then its statement macros (from the last reply that parsed it). */
 let functions: string[] = [];
+/** Those of `functions` that are function-like macros (run as the entry on objects they name). */
+let macros: string[] = [];
 let main: Reply | null = null;
 let other: Reply | null = null;
 let lastKey = '';
@@ -69,12 +71,13 @@ function run(ctx: PanelContext): void {
     if (id !== seq) return;
     main = a;
     other = b;
-    const found = a?.functions ?? [];
+    const found = [...(a?.functions ?? []), ...(a?.macros ?? [])];
     // A file of functions and nothing else to run: start with the last one defined.
     const pick = a && !a.ok && a.field === 'entry' && !s.entry && found.length > 0;
     if (pick) s.entry = found[found.length - 1];
     if (pick || JSON.stringify(found) !== JSON.stringify(functions)) {
       functions = found;
+      macros = a?.macros ?? [];
       builtFor = ''; // the function menu changes
       const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
       if (el && lastCtx) codePanel.render(el, lastCtx);
@@ -314,7 +317,7 @@ export const codePanel: Panel = {
             changed();
           })),
           functions.length || s.entry ? h('label', { title: t('codeEntryHint') }, `${t('codeEntry')} `,
-            select('entry', s.entry ?? '', [['', t('codeEntryNone')], ...[...new Set([...functions, ...(s.entry ? [s.entry] : [])])].map((x): [string, string] => [x, `${x}()`])], (v) => {
+            select('entry', s.entry ?? '', [['', t('codeEntryNone')], ...[...new Set([...functions, ...(s.entry ? [s.entry] : [])])].map((x): [string, string] => [x, macros.includes(x) ? `${x}(…)` : `${x}()`])], (v) => {
               s.entry = v;
               s.set = {};
               changed();

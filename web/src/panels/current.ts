@@ -1,9 +1,11 @@
 import { h, num, patch, tex } from '../dom';
-import { t } from '../i18n';
-import type { PiAxis } from '../report-types';
-import { renderCurrentStep } from '../figures/current-step';
+import { t, type Key } from '../i18n';
+import type { PiAxis, Report, SimCurrent, SimEvent } from '../report-types';
+import { fixedRun, renderCurrentStep } from '../figures/current-step';
 import { keptFigure, simPlaceholder } from '../figures/figure';
-import { metricsTable } from './metrics';
+import { shippedProfile } from '../page/answer';
+import { metricsTable, type MetricColumn, type MetricRow } from './metrics';
+import { hardwareTyped } from './vendors';
 import type { Panel } from './panel';
 import { traceTable } from './vendor';
 
@@ -32,6 +34,40 @@ function axisRow(a: 'd' | 'q', g: PiAxis | undefined): HTMLElement {
   );
 }
 
+const METRIC_ROWS: MetricRow[] = [
+  { key: 'rise_time_s', label: 'riseTime', unit: 'ms', scale: 1e3 },
+  { key: 'overshoot_pct', label: 'overshoot', unit: '%' },
+  { key: 'settling_time_s', label: 'settling', unit: 'ms', scale: 1e3 },
+  { key: 'steady_state_error_a', label: 'sse', unit: 'A' },
+];
+const EVENTS: SimEvent[] = ['feedback_saturate', 'wrap', 'saturate', 'integral_limit', 'output_limit'];
+
+/** At the plot: why the shipped firmware has no fixed-point trace (the fields its panel names). */
+function noTrace(sim: SimCurrent, fw: string, report: Report | null | undefined): HTMLElement | null {
+  if (fixedRun(sim, fw)) return null;
+  const run = sim.by_profile?.[fw];
+  const fields = fw === 'inovance' ? (report?.firmware?.inovance?.problems ?? []).map((p) => p.field)
+    : run && !run.ran ? run.problems.map((p) => p.field) : [];
+  return h('p', { class: 'note bad-text sim-no-trace', role: 'status', 'data-firmware': fw },
+    t('sf_cannot', { name: t(`vd_${fw}` as Key), fields: [...new Set(fields)].join(', ') || '—' }));
+}
+
+/** The shipped firmware's run below the table: its distance from SI and its wraps and saturations. */
+function profileNotes(sim: SimCurrent, fw: string): (HTMLElement | null)[] {
+  const run = sim.by_profile?.[fw];
+  if (!run?.ran) return [];
+  const name = t(`vd_${fw}` as Key);
+  const p = `sim.current.by_profile.${fw}`;
+  return [
+    hardwareTyped(fw) ? h('p', { class: 'note sim-hw-defaults' }, t('sf_hw_defaults', { name })) : null,
+    h('p', { class: 'note' }, `${t('sf_vs_si', { name })}: `,
+      num(`${p}.metrics.vs_si_max_abs_a`, run.metrics.vs_si_max_abs_a, { unit: 'A' }), ' = ',
+      num(`${p}.metrics.vs_si_max_lsb`, run.metrics.vs_si_max_lsb, { sig: 4 }), ` ${t('sf_lsb')}`),
+    h('p', { class: 'note sim-events' }, t('sf_events', { name }), ' ',
+      ...EVENTS.flatMap((e, i) => [i ? ', ' : '', `${t(`sf_ev_${e}` as Key)} `, num(`${p}.events.${e}`, run.events[e], { kind: 'int' })])),
+  ];
+}
+
 export const currentPanel: Panel = {
   id: 'current',
   usesSim: true,
@@ -43,6 +79,12 @@ export const currentPanel: Panel = {
     const ex = pi?.step_example;
     const sim = simReport?.sim?.current;
     const axis = (String((input.sim?.current as Record<string, unknown> | undefined)?.axis ?? 'd') === 'q' ? 'q' : 'd') as 'd' | 'q';
+    const fw = shippedProfile(ctx);
+    const run = sim?.by_profile?.[fw];
+    // The shipped firmware's column: Inovance's `metrics.fixed`, another's `by_profile` run.
+    const fxMetrics = fw === 'inovance' ? (sim?.metrics.fixed as Record<string, unknown> | undefined) : run?.ran ? run.metrics : undefined;
+    const extra: MetricColumn[] = fxMetrics ? [{ label: t('sf_fixed', { name: t(`vd_${fw}` as Key) }),
+      path: fw === 'inovance' ? 'sim.current.metrics.fixed' : `sim.current.by_profile.${fw}.metrics`, metrics: fxMetrics }] : [];
     patch(el, ...[
       h('div', { class: 'formulas' },
         tex(DESIGN()[method] ?? DESIGN().manual, true),
@@ -53,18 +95,15 @@ export const currentPanel: Panel = {
           h('tr', {}, h('th', {}, t('axis')), h('th', {}, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', { class: 'sep' }, 'kp_pu'), h('th', {}, 'ki_pu [1/s]'), h('th', { class: 'sep' }, 'pm_kp (Q12)'), h('th', {}, 'pm_ki (Q16·Ts)'), h('th', { class: 'sep' }, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', {}, `${t('impliedBw')} [Hz]`))),
         h('tbody', {}, axisRow('d', pi?.d), axisRow('q', pi?.q))),
       h('h3', {}, t('plotCurrent')),
+      sim ? noTrace(sim, fw, report) : null,
       h('div', { class: 'figure', 'data-keep': 'current-step' }),
-      sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu', 'fixed'], [
-        { key: 'rise_time_s', label: 'riseTime', unit: 'ms', scale: 1e3 },
-        { key: 'overshoot_pct', label: 'overshoot', unit: '%' },
-        { key: 'settling_time_s', label: 'settling', unit: 'ms', scale: 1e3 },
-        { key: 'steady_state_error_a', label: 'sse', unit: 'A' },
-      ]) : null,
-      sim ? h('p', { class: 'note' }, `${t('fixedVsSi')}: `,
+      sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu'], METRIC_ROWS, extra) : null,
+      sim && fw === 'inovance' ? h('p', { class: 'note' }, `${t('fixedVsSi')}: `,
         num('sim.current.metrics.fixed_vs_si_max_abs_a', sim.metrics.fixed_vs_si_max_abs_a, { unit: 'A' }), ' = ',
         num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' })) : null,
+      ...(sim ? profileNotes(sim, fw) : []),
       ex ? h('div', { class: 'step-example' }, h('h3', {}, t('stepExample', { e: ex.error })), traceTable('current_pi.step_example.trace', ex.trace)) : null,
     ]);
-    keptFigure(el, 'current-step', sim, (fig) => renderCurrentStep(fig, sim!, axis, ctx.report?.input.drive?.ts_s as number | undefined), () => simPlaceholder(ctx));
+    keptFigure(el, 'current-step', sim, (fig) => renderCurrentStep(fig, sim!, axis, ctx.report?.input.drive?.ts_s as number | undefined, fw), () => simPlaceholder(ctx));
   },
 };

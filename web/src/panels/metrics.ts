@@ -11,18 +11,28 @@ export interface MetricRow {
   bool?: boolean;
 }
 
-export function metricsTable(prefix: string, metrics: Record<string, unknown>, variants: string[], rows: MetricRow[]): HTMLElement {
+/** A column of its own: a label and where its metrics sit in the report (`path` = their JSON path). */
+export interface MetricColumn {
+  label: string;
+  path: string;
+  metrics: Record<string, unknown>;
+}
+
+export function metricsTable(prefix: string, metrics: Record<string, unknown>, variants: string[], rows: MetricRow[], extra: MetricColumn[] = []): HTMLElement {
+  const cols: MetricColumn[] = [
+    ...variants.map((v) => ({ label: t(`variant_${v}` as Key), path: `${prefix}.${v}`, metrics: (metrics[v] ?? {}) as Record<string, unknown> })),
+    ...extra,
+  ];
   return table(
-    [t('metrics'), ...variants.map((v) => t(`variant_${v}` as Key))],
+    [t('metrics'), ...cols.map((c) => c.label)],
     rows.map((r) => [
       `${t(r.label)}${r.unit ? ` [${r.unit}]` : ''}`,
-      ...variants.map((v) => {
-        const m = (metrics[v] ?? {}) as Record<string, unknown>;
+      ...cols.map(({ path, metrics: m }) => {
         const x = m[r.key];
-        if (r.bool) return h('span', { class: x ? 'ok' : 'bad-text', 'data-key': `${prefix}.${v}.${r.key}`, 'data-value': JSON.stringify(x ?? null) }, x === undefined ? '—' : x ? `✔ ${t('yes')}` : `✘ ${t('no')}`);
-        if (typeof x !== 'number') return h('span', { class: 'num', 'data-key': `${prefix}.${v}.${r.key}`, 'data-value': 'null' }, '—');
+        if (r.bool) return h('span', { class: x ? 'ok' : 'bad-text', 'data-key': `${path}.${r.key}`, 'data-value': JSON.stringify(x ?? null) }, x === undefined ? '—' : x ? `✔ ${t('yes')}` : `✘ ${t('no')}`);
+        if (typeof x !== 'number') return h('span', { class: 'num', 'data-key': `${path}.${r.key}`, 'data-value': 'null' }, '—');
         const shown = x * (r.scale ?? 1);
-        return num(`${prefix}.${v}.${r.key}`, x, { text: Number(shown.toPrecision(4)).toString() });
+        return num(`${path}.${r.key}`, x, { text: Number(shown.toPrecision(4)).toString() });
       }),
     ]),
     'metrics',

@@ -7,12 +7,12 @@ import { effectiveInput } from '../fields';
 import { errText, getLang, t, type Key } from '../i18n';
 import { encodeHash, getPath, type Input } from '../state';
 import type { ApiErr } from '../protocol';
-import type { Proof, ProveEntry as Entry, ProveRequest, ProveVerdict as Verdict } from '../api-types';
+import type { Proof, Proposal, ProveEntry as Entry, ProveRequest, ProveVerdict as Verdict } from '../api-types';
 import type { Panel, PanelContext } from './panel';
 import { sweepPaths } from './sweep';
 
 /** The profiles a proof covers (pulab.analyses.prove.PROFILES). */
-const PROFILES = ['inovance', 'ti'] as const;
+const PROFILES = ['inovance', 'ti', 'nxp', 'st', 'microchip'] as const;
 type Profile = (typeof PROFILES)[number];
 
 interface RangeRow { path: string; lo: string; hi: string }
@@ -26,6 +26,8 @@ const st = {
   names: [] as string[],
   entries: {} as Record<string, Entry>,
   proof: null as Proof | null,
+  proposal: null as Proposal | null,
+  proposing: false,
   error: null as ApiErr | null,
   note: null as null | { key: Key; vars: Record<string, string | number> },
 };
@@ -50,7 +52,7 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
   const client = ctx.client;
   const req = request(effectiveInput(ctx.input));
   const job: Job = { cancelled: false };
-  Object.assign(st, { job, names: [], entries: {}, proof: null, error: null, note: null });
+  Object.assign(st, { job, names: [], entries: {}, proof: null, proposal: null, error: null, note: null });
   delete document.documentElement.dataset.proveDone;
   provePanel.render(el, ctx);
   const t0 = performance.now();
@@ -81,6 +83,63 @@ async function run(el: HTMLElement, ctx: PanelContext): Promise<void> {
   st.job = null;
   document.documentElement.dataset.proveDone = st.proof?.verdict ?? 'cancelled';
   provePanel.render(el, ctx);
+}
+
+async function propose(el: HTMLElement, ctx: PanelContext): Promise<void> {
+  if (!ctx.client) return;
+  Object.assign(st, { proposing: true, proposal: null, error: null });
+  provePanel.render(el, ctx);
+  const r = await ctx.client.call('prove.propose', request(effectiveInput(ctx.input)), CHANNEL);
+  st.proposing = false;
+  if (r.result.ok) st.proposal = r.result.proposal;
+  else st.error = r.result;
+  provePanel.render(el, ctx);
+}
+
+const pct = (key: string, v: number | null) => (v === null ? '—' : h('span', {}, '≤ ', num(key, v, { kind: 'pct' })));
+
+/** The proposal in the vendor's own form: a table per constant, or TI's one GLOBAL_Q. */
+function proposalView(p: Proposal): HTMLElement {
+  const key = 'prove.proposal';
+  const head = h('h4', {}, t('prpTitle', { form: t(`pform_${p.profile}` as Key) }));
+  if (p.integers) {
+    return h('div', { class: 'pr-proposal' }, head, h('p', { class: 'hint' }, t('prpHeadroom')),
+      h('div', { class: 'scroll' }, table([t('prInteger'), t('prpBits'), t('prWorst')],
+        Object.entries(p.integers).map(([n, e]) => h('tr', {}, h('td', {}, h('code', {}, n)),
+          h('td', { class: 'r' }, num(`${key}.integers.${n}.headroom_bits`, e.headroom_bits, { kind: 'int' })),
+          h('td', { class: 'r' }, e.worst_error_pct === null ? '—' : h('span', {}, e.error_bound ? '≤ ' : '', num(`${key}.integers.${n}.worst_error_pct`, e.worst_error_pct, { kind: 'pct' }))))),
+        'prove-proposal')));
+  }
+  if (p.worst_error_pct !== undefined || p.global_q !== undefined) {
+    return h('div', { class: 'pr-proposal' }, head,
+      h('p', { 'data-key': `${key}.global_q`, 'data-value': JSON.stringify(p.global_q ?? null) },
+        p.global_q === null ? t('prpNoGlobalQ') : t('prpGlobalQ', { q: p.global_q ?? '' })),
+      p.worst_error_pct ? h('div', { class: 'scroll' }, table([t('prpConstant'), t('prpErr')],
+        Object.entries(p.worst_error_pct).map(([n, v]) => h('tr', {}, h('td', {}, h('code', {}, n)), h('td', { class: 'r' }, pct(`${key}.worst_error_pct.${n}`, v)))),
+        'prove-proposal')) : null);
+  }
+  const rows = Object.entries(p.constants ?? {}).map(([n, e]) => {
+    const k = `${key}.constants.${n}`;
+    if (!e) return h('tr', { class: 'bad' }, h('td', {}, h('code', {}, n)), h('td', { colspan: 4 }, '—'));
+    if (!e.holds || !e.range) {
+      return h('tr', { class: 'bad' }, h('td', {}, h('code', {}, n)),
+        h('td', { colspan: 3 }, e.impossible && e.witnessed
+          ? t('prpNone', { lo: e.witnessed[0].toPrecision(4), hi: e.witnessed[1].toPrecision(4) })
+          : t('prpNotFound', { lo: e.real_range[0].toPrecision(4), hi: e.real_range[1].toPrecision(4) })),
+        h('td', {}, e.current));
+    }
+    return h('tr', {}, h('td', {}, h('code', {}, n)),
+      h('td', { 'data-key': `${k}.format`, 'data-value': JSON.stringify(e.format) }, h('code', {}, e.format)),
+      h('td', { class: 'r' }, '[', num(`${k}.range.0`, e.range[0], { kind: 'int' }), ', ', num(`${k}.range.1`, e.range[1], { kind: 'int' }), ']'),
+      h('td', { class: 'r' }, pct(`${k}.worst_error_pct`, e.worst_error_pct)),
+      h('td', {}, e.current));
+  });
+  const verdicts = Object.values(p.confirmed ?? {});
+  const confirmed = verdicts.length && verdicts.every((v) => v === 'proven') ? 'proven' : verdicts.includes('violated') ? 'violated' : 'unknown';
+  return h('div', { class: 'pr-proposal' }, head,
+    h('div', { class: 'scroll' }, table([t('prpConstant'), t('prpFormat'), t('prpInts'), t('prpErr'), t('prpNow')], rows, 'prove-proposal')),
+    p.divisors && Object.keys(p.divisors).length ? h('p', { class: 'hint', 'data-proposal-divisors': JSON.stringify(p.divisors) },
+      t('prpDivisors', { list: Object.entries(p.divisors).map(([d, v]) => `${d.toUpperCase()} = ${v}`).join(', '), verdict: t(`v_${confirmed}` as Key) })) : null);
 }
 
 const chip = (v: Verdict, name: string) => h('span', { class: `flag pr-${v}`, 'data-verdict-for': name }, t(`v_${v}` as Key));
@@ -140,7 +199,7 @@ export const provePanel: Panel = {
   render(el, ctx) {
     if (!st.rows) st.rows = [defaultRow(ctx, 'motor.rated_current_a', 0.5, 2), defaultRow(ctx, 'motor.rated_voltage_v', 0.5, 2)];
     // Typing in the motor re-renders every panel; this one is rebuilt only for its own state.
-    const key = [getLang(), !!ctx.client, !!st.job, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
+    const key = [getLang(), !!ctx.client, !!st.job, st.proposing, !!st.proposal, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
     if (el.querySelector('.prove') && el.dataset.rendered === key) return;
     const running = st.job !== null;
     const done = Object.keys(st.entries).length;
@@ -148,12 +207,13 @@ export const provePanel: Panel = {
     el.replaceChildren(h('div', { class: 'prove' },
       h('p', { class: 'hint' }, t('prIntro')),
       h('label', { class: 'field inline' }, h('span', { class: 'lbl' }, t('prProfile')), ' ',
-        h('select', { name: 'prove.profile', onchange: (ev: Event) => { st.profile = (ev.target as HTMLSelectElement).value as Profile; } },
-          PROFILES.map((p) => h('option', { value: p, selected: p === st.profile }, p)))),
+        h('select', { name: 'prove.profile', onchange: (ev: Event) => { st.profile = (ev.target as HTMLSelectElement).value as Profile; if (st.proposal) { st.proposal = null; provePanel.render(el, ctx); } } },
+          PROFILES.map((p) => h('option', { value: p, selected: p === st.profile }, t(`pf_${p}` as Key))))),
       rangeRows(el, ctx),
       h('div', { class: 'sweep-run' },
         h('button', { type: 'button', class: 'run-prove', disabled: running || !ctx.client, onclick: () => void run(el, ctx) }, t('prRun')),
         h('button', { type: 'button', class: 'cancel-prove', disabled: !running, onclick: () => { if (st.job) st.job.cancelled = true; } }, t('prCancel')),
+        h('button', { type: 'button', class: 'run-propose', disabled: running || st.proposing || !ctx.client, onclick: () => void propose(el, ctx) }, st.proposing ? t('prpRunning') : t('prPropose')),
         h('progress', { class: 'prove-progress', max: Math.max(1, st.names.length), value: done }),
         h('span', { class: 'prove-count' }, st.names.length ? `${done} / ${st.names.length}` : ''),
         h('span', { class: 'hint prove-note' }, st.note ? t(st.note.key, st.note.vars) : '')),
@@ -162,7 +222,8 @@ export const provePanel: Panel = {
       st.names.length ? h('div', { class: 'scroll' }, table([t('prInteger'), t('prVerdict'), t('prRange'), t('prBar'), t('prWorst'), t('prWhere')],
         st.names.map((n) => row(n, st.entries[n])), 'prove-table')) : null,
       st.names.length ? h('p', { class: 'hint' }, t('prWorstHint')) : null,
-      st.proof?.not_analysed.length ? h('p', { class: 'hint' }, t('prNotAnalysed', { names: st.proof.not_analysed.join(', ') })) : null));
+      st.proof?.not_analysed.length ? h('p', { class: 'hint' }, t('prNotAnalysed', { names: st.proof.not_analysed.join(', ') })) : null,
+      st.proposal ? proposalView(st.proposal) : null));
     el.dataset.rendered = key;
   },
 };

@@ -22,12 +22,13 @@ export function findingItem(f: Finding): HTMLElement {
 }
 
 /**
- * The findings for the page: the report's, plus the PLL findings of the simulation report (only
- * that one has simulated the PLL), most severe first.
+ * The findings for the page: the report's, plus the findings about the simulations (their `key`
+ * is in `sim`: the PLL's lock, the shipped firmware's integer current PI) of the simulation report
+ * (only that one has simulated), most severe first.
  */
 export function allFindings(ctx: Pick<PanelContext, 'report' | 'simReport'>): Finding[] {
   const main = ctx.report?.review?.findings ?? [];
-  const sim = ctx.simReport?.review?.findings.filter((f) => f.code.startsWith('pll_')) ?? [];
+  const sim = ctx.simReport?.review?.findings.filter((f) => f.key.startsWith('sim.')) ?? [];
   const order = ['error', 'warning', 'note'];
   return [...main, ...sim].sort((a, b) => order.indexOf(a.severity) - order.indexOf(b.severity));
 }

@@ -75,6 +75,11 @@ export function profilesSection(hw: Record<string, string>): { ok: true; section
   return { ok: true, section };
 }
 
+/** Whether the reader typed a hardware value for vendor `v` (the simulation uses its defaults). */
+export function hardwareTyped(v: string): boolean {
+  return HW_FIELDS.some(([w, k]) => w === v && (vstate.hw[`profiles.${w}.${k}`] ?? '').trim() !== '');
+}
+
 function baseInput(ctx: PanelContext, section: Record<string, unknown>): Input {
   return { ...reportInput(effectiveInput(ctx.input)), profiles: section as Input[string] };
 }

@@ -8,6 +8,7 @@ Modules, one concept each:
 
 - :mod:`.plant` — PMSM dq model (seed 1.2-3), exact zero-order-hold discretization;
 - :mod:`.current` — current loop: SI float, per-unit float, vendor fixed point;
+- :mod:`.vendor_pi`, :mod:`.vendor_loop` — TI's, NXP's, ST's and Microchip's integer PI;
 - :mod:`.pll` — PLL: SI, per unit, int16 angle (Q15 of π), naive gains;
 - :mod:`.metrics` — rise/settling/overshoot, lock detection;
 - :mod:`.inputs` — validation and defaults;
@@ -29,11 +30,12 @@ most :data:`MAX_POINTS` samples, metrics from the full-rate series)::
              "metrics": {"si"|"pu"|"q15"|"naive": {"locked", "lock_time_s",
                                                    "speed_error_hz", "max_angle_error_deg"}}}}
 
-Metrics that do not exist for a run (e.g. never settled) are ``null``.  The fixed-point
-current loop is the Inovance firmware's PI (seed 2.2; the other profiles have no fixed-point
-simulation): when that firmware cannot compute its voltage limits for this drive
-(``firmware.inovance``), ``fixed`` is absent, ``fixed_vs_si_*`` are null and the float
-variants, which always run, clamp at U_dc/√2.
+Metrics that do not exist for a run (e.g. never settled) are ``null``.  ``fixed`` is the
+Inovance firmware's PI (seed 2.2): when that firmware cannot compute its voltage limits for
+this drive (``firmware.inovance``), ``fixed`` is absent, ``fixed_vs_si_*`` are null and the
+float variants, which always run, clamp at U_dc/√2.  ``current.by_profile`` holds TI's,
+NXP's, ST's and Microchip's own integer PI (:mod:`.vendor_loop`), each with its metrics and
+its count of wraps and saturations, or the problems that keep it from running.
 """
 
 from __future__ import annotations
@@ -101,10 +103,21 @@ def _current_section(report: dict, cfg: dict):
         metrics[name] = step_metrics(t, v[key], ref, v["sat"], ts)
         yield
     si, fx = r["variants"]["si"], r["variants"].get("fixed")
-    diff = None if fx is None else max(max(abs(a - b) for a, b in zip(fx["id"], si["id"])),
-                                       max(abs(a - b) for a, b in zip(fx["iq"], si["iq"])))
+    diff = None if fx is None else _max_diff(fx, si)
     metrics["fixed_vs_si_max_abs_a"] = diff
     metrics["fixed_vs_si_max_lsb"] = None if diff is None else diff / (report["base"]["I_b"] / 4096.0)
+    by_profile = {}
+    for name, run in r["by_profile"].items():
+        if "problems" in run:
+            by_profile[name] = {"ran": False, "problems": run["problems"]}
+            continue
+        m = step_metrics(t, run[key], ref, run["sat"], ts)
+        d = _max_diff(run, si)
+        m.update(vs_si_max_abs_a=d, vs_si_max_lsb=d / run["lsb_a"])
+        by_profile[name] = {"ran": True, "lsb_a": run["lsb_a"], "events": run["events"],
+                            "variant": {k: _pick(run[k], idx) for k in ("id", "iq", "ud", "uq")},
+                            "metrics": m}
+        yield
     # First-order design value (bandwidth design: closed loop 1/(1 + s/ω_c)):
     # t_r = ln(9)/ω_c ≈ 2.2/(2π·bw).  Shown next to the simulated value, deviation included.
     cl = report["input"]["current_loop"]
@@ -118,7 +131,14 @@ def _current_section(report: dict, cfg: dict):
     metrics["first_order_rise_time_s"] = first
     metrics["wc_ts"] = wc_ts
     metrics["rise_time_deviation_pct"] = dev
-    return {"t": _pick(t, idx), "variants": variants, "metrics": metrics}
+    return {"t": _pick(t, idx), "variants": variants, "metrics": metrics,
+            "by_profile": by_profile}
+
+
+def _max_diff(a: dict, b: dict) -> float:
+    """The largest |a − b| over both axes' currents, full rate, A."""
+    return max(max(abs(x - y) for x, y in zip(a["id"], b["id"])),
+               max(abs(x - y) for x, y in zip(a["iq"], b["iq"])))
 
 
 def _pll_section(report: dict, cfg: dict):

@@ -3,8 +3,9 @@
 ``PYTHONPATH=py python3 -m pulab.analyses.sim.bench [STEPS]`` runs STEPS controller
 periods (default 20 000) of each current-loop variant on the seed's motor with a
 step at t = 0 (so the run is mostly steady state, as a real step response is)
-and prints seconds and steps per second.  Target: the three variants
-together under 0.5 s in CPython, under 1 s in Pyodide.  :func:`bench` returns the
+and prints seconds and steps per second.  Target: every variant (si, pu, fixed and
+the four other vendors' integer PIs of ``by_profile``) together under 0.5 s in CPython,
+under 1 s in Pyodide.  :func:`bench` returns the
 numbers, so a Pyodide runner can call it and compute the Pyodide/CPython ratio.
 """
 
@@ -34,12 +35,14 @@ def bench(steps: int = 20000, repeat: int = 3) -> dict:
     Returns
     -------
     dict
-        ``steps``, ``total_s`` and ``steps_per_s`` (steps of all three variants
-        together per second, :func:`pulab.analyses.sim.current.run`), and single-variant
-        times ``float_variant_s``, ``fixed_variant_s``, ``fixed_no_memo_s`` (the
-        worst case, every step a call of :func:`pulab.profiles.inovance_code.current_pi_step`).
+        ``steps``, ``total_s`` and ``steps_per_s`` (steps of all variants together per
+        second, :func:`pulab.analyses.sim.current.run`), and single-variant times
+        ``float_variant_s``, ``fixed_variant_s``, ``fixed_no_memo_s`` (the worst case,
+        every step a call of :func:`pulab.profiles.inovance_code.current_pi_step`) and
+        ``vendors_s`` (TI, NXP, ST and Microchip together, :mod:`.vendor_loop`).
     """
     from ... import report
+    from ..slices import finish
     from . import current, validate
 
     rep = report(SEED_INPUT)
@@ -73,6 +76,14 @@ def bench(steps: int = 20000, repeat: int = 3) -> dict:
                       pi["q"]["pm_kp"], pi["q"]["pm_ki"], vendor["maxu"]["value"],
                       vendor["pm_maxout_vol"]["value"], 2048, 0, 0, steps - 1, False, memo=False)
     per["fixed_no_memo_s"] = time.perf_counter() - t0
+    from . import vendor_loop
+    ctls = vendor_loop.controllers(vendor_loop.profile_data(rep)[0], umax * 2 ** 0.5,
+                                   inp["drive"]["udc_v"])
+    t0 = time.perf_counter()
+    for name in vendor_loop.NAMES:
+        finish(vendor_loop.run_profile_steps(z, ctls[name], 2 ** 0.5, 0.75, 0.0, z.bemf,
+                                             steps - 1, False))
+    per["vendors_s"] = time.perf_counter() - t0
     return {"steps": r["n"] + 1, "total_s": best, "steps_per_s": (r["n"] + 1) / best, **per}
 
 
@@ -81,13 +92,15 @@ def main(argv: list | None = None) -> int:
     argv = sys.argv[1:] if argv is None else argv
     steps = int(argv[0]) if argv else 20000
     r = bench(steps)
-    print(f"pulab.analyses.sim current loop, {r['steps']} controller steps × 3 variants "
-          f"(si, pu, fixed) in {sys.implementation.name} {sys.version.split()[0]}:")
+    print(f"pulab.analyses.sim current loop, {r['steps']} controller steps × 7 variants "
+          f"(si, pu, fixed; ti, nxp, st, microchip) in {sys.implementation.name} "
+          f"{sys.version.split()[0]}:")
     print(f"  total {r['total_s']:.3f} s  →  {r['steps_per_s']:.0f} steps/s "
-          f"(all three variants per step; target < 0.5 s)")
+          f"(all variants per step; target < 0.5 s)")
     print(f"  one float variant {r['float_variant_s']:.3f} s, fixed variant "
           f"{r['fixed_variant_s']:.3f} s (without the current_pi_step memo, i.e. every "
-          f"step a new integer state: {r['fixed_no_memo_s']:.3f} s)")
+          f"step a new integer state: {r['fixed_no_memo_s']:.3f} s); TI, NXP, ST and "
+          f"Microchip together {r['vendors_s']:.3f} s")
     return 0
 
 

@@ -17,6 +17,9 @@ those of the number representation:
     integer update :func:`pulab.profiles.inovance_code.current_pi_step` (Q12 error, Q24
     integral, pm_kp Q12, pm_ki Q16, clamps ±maxu and ±pm_maxout_vol), and the
     Q12 output turned into plant voltage.
+``by_profile``
+    TI's, NXP's, ST's and Microchip's own integer PI on the same plant
+    (:mod:`pulab.analyses.sim.vendor_loop`).
 
 Line or phase voltage (seed 1.3, 2.2)
 -------------------------------------
@@ -59,6 +62,7 @@ from ..slices import SLICE_STEPS, finish
 from ...profiles.inovance_code import current_pi_step, round_half_away
 from .inputs import periods
 from .plant import zoh
+from . import vendor_loop
 
 __all__ = ["voltage_limits", "run_float", "run_fixed", "run", "run_float_steps", "run_fixed_steps", "run_steps",
            "MAX_STEPS", "Q12_CURRENT_LIMIT_PU"]
@@ -291,7 +295,8 @@ def run_steps(report: dict, cfg: dict):
     generator — yields None every SLICE_STEPS periods (:mod:`pulab.analyses.slices`), returns a dict
         ``t`` (s), ``ts``, ``n``, ``axis``, ``ref_a`` (A), and ``variants``:
         ``si``/``pu``/``fixed`` → ``id, iq, ud, uq`` in A and V (phase) plus ``sat``;
-        no ``fixed`` when the Inovance firmware cannot compute its voltage limits.
+        no ``fixed`` when the Inovance firmware cannot compute its voltage limits;
+        ``by_profile``: TI, NXP, ST, Microchip (:func:`_profile_runs`).
 
     Raises
     ------
@@ -339,16 +344,44 @@ def run_steps(report: dict, cfg: dict):
          "ud": [x * u_b for x in p["ud"]], "uq": [x * u_b for x in p["uq"]], "sat": p["sat"]}
     yield  # the unit conversions are a slice of their own
     variants = {"si": si, "pu": p}
+    by_profile = yield from _profile_runs(report, z_si, umax_pu * u_b, ref_d, ref_q, n,
+                                          cfg["delay"])
     if not fixed:
         return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n,
-                "axis": axis, "ref_a": step, "variants": variants}
+                "axis": axis, "ref_a": step, "variants": variants, "by_profile": by_profile}
     variants["fixed"] = yield from run_fixed_steps(z_si, i_b, u_b, gd["pm_kp"], gd["pm_ki"], gq["pm_kp"],
                                     gq["pm_ki"], maxu, maxout,
                                     round_half_away(ref_d / i_b * 4096.0),
                                     round_half_away(ref_q / i_b * 4096.0),
                                     round_half_away(z_pu.bemf * 16777216.0), n, cfg["delay"])
     return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "axis": axis,
-            "ref_a": step, "variants": variants}
+            "ref_a": step, "variants": variants, "by_profile": by_profile}
+
+
+def _profile_runs(report: dict, z, umax_v: float, ref_d: float, ref_q: float, n: int,
+                  delay: bool):
+    """TI's, NXP's, ST's and Microchip's integer PI on the plant (:mod:`.vendor_loop`).
+
+    Returns (through the generator) NAME → the run, or → ``{"problems": [...]}`` (the
+    codes and fields of ``firmware.NAME.problems``) when that firmware cannot represent
+    the motor.
+    """
+    profiles, status = vendor_loop.profile_data(report)
+    peak = math.sqrt(2.0) if report["input"]["conventions"]["base"] == "rms" else 1.0
+    ctls = None
+    out = {}
+    for name in vendor_loop.NAMES:
+        st = status[name]
+        if not st["representable"]:
+            out[name] = {"problems": [{"field": x["field"], "code": x["code"]}
+                                      for x in st["problems"]]}
+            continue
+        if ctls is None:
+            ctls = vendor_loop.controllers(profiles, umax_v * peak,
+                                           report["input"]["drive"]["udc_v"])
+        out[name] = yield from vendor_loop.run_profile_steps(z, ctls[name], peak, ref_d, ref_q,
+                                                             z.bemf, n, delay)
+    return out
 
 
 def run(*args, **kwargs):
