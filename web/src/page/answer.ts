@@ -6,11 +6,11 @@ import { t, type Key } from '../i18n';
 import { VENDOR_NAMES, type ProfileReport } from '../report-types';
 import type { PanelContext } from '../panels/panel';
 import { limitsBox } from '../panels/limits';
-import { VENDORS, shippedProfile, type Vendor } from '../panels/vendors';
+import { VENDORS, shippedProfileReport, type Vendor } from '../panels/vendors';
 import { allFindings, reviewCounts } from '../panels/review';
 
 /** The firmware the reader ships: the input's `conventions.firmware` (the review grades by it). */
-export function shippedFirmware(ctx: Pick<PanelContext, 'input'>): Vendor {
+export function shippedProfile(ctx: Pick<PanelContext, 'input'>): Vendor {
   const v = ctx.input.conventions?.firmware;
   return (VENDORS as readonly unknown[]).includes(v) ? (v as Vendor) : 'inovance';
 }
@@ -35,7 +35,7 @@ function inovanceChips(ctx: PanelContext): HTMLElement[] {
   return [...ints, ...pi];
 }
 
-/** Another vendor: every constant of its profile (vendors.ts shippedProfile). */
+/** Another vendor: every constant of its profile (vendors.ts shippedProfileReport). */
 function profileChips(p: ProfileReport | undefined, v: Vendor): HTMLElement[] {
   if (!p) return [h('span', { class: 'num pending' }, t('answerPending'))];
   return Object.entries(p.constants).map(([k, c]) => chip(k, `profiles.${v}.constants.${k}.value`, c.value, c.flags.some((f) => f === 'out_of_range' || f === 'saturate')));
@@ -56,8 +56,8 @@ function reviewLine(ctx: PanelContext): HTMLElement[] {
 /** Render the strip into `el`; `again` renders it once more (a profile's report arrived); `pick`
  * sets the shipped firmware in the input. */
 export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => void, pick: (v: Vendor) => void): void {
-  const v = shippedFirmware(ctx);
-  const other = v === 'inovance' ? null : shippedProfile(ctx, v, again);
+  const v = shippedProfile(ctx);
+  const other = v === 'inovance' ? null : shippedProfileReport(ctx, v, again);
   const picker = h('select', {
     name: 'answer.profile', 'aria-label': t('answerProfile'),
     onchange: (ev: Event) => pick((ev.target as HTMLSelectElement).value as Vendor),

@@ -116,7 +116,7 @@ function rerender(): void {
  * inputs typed here for `v` are the panel's own profiles asked for, even while it is off screen,
  * and `changed` is called when they arrive. Null until known.
  */
-export function shippedProfile(ctx: PanelContext, v: Vendor, changed: () => void): { profile: ProfileReport; status: FirmwareStatus | undefined } | null {
+export function shippedProfileReport(ctx: PanelContext, v: Vendor, changed: () => void): { profile: ProfileReport; status: FirmwareStatus | undefined } | null {
   const typed = HW_FIELDS.some(([x, k]) => x === v && (vstate.hw[`profiles.${x}.${k}`] ?? '').trim() !== '');
   if (!typed) {
     const profile = ctx.report?.profiles?.[v];
