@@ -134,4 +134,26 @@ export default async function screensPass(ctx) {
     assert((await p.getAttribute('input[name="drive.udc_v"]', 'placeholder')) === '= 24', 'U_dc from the datasheet not shown at its field');
     await p.context().close();
   });
+
+  await check('screens-pass: every unit choice shows its whole unit (V/krpm was cut to "V/krpn")', async () => {
+    for (const [w, lang] of [[1366, 'en'], [390, 'zh']]) {
+      const p = await newPage({ context: { viewport: { width: w, height: 800 } } });
+      await p.goto(`${subSrv.url}?lang=${lang}`);
+      await ready(p);
+      if (w < 1000) await p.click('nav.tabs .inputs-toggle');
+      await p.$$eval('aside.inputs details.section', (ds) => ds.forEach((d) => { d.open = true; }));
+      // each option's text against the select's inner width less the dropdown arrow (≈ 18 px)
+      const cut = await p.$$eval('select.unit', (sels) => {
+        const ctx = document.createElement('canvas').getContext('2d');
+        return sels.flatMap((s) => {
+          const cs = getComputedStyle(s);
+          ctx.font = `${cs.fontSize} ${cs.fontFamily}`;
+          const room = s.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight) - 18;
+          return [...s.options].filter((o) => ctx.measureText(o.text).width > room).map((o) => `${s.dataset.unitFor}: ${o.text} (${Math.round(ctx.measureText(o.text).width)} > ${Math.round(room)} px)`);
+        });
+      });
+      assert(cut.length === 0, `${w} ${lang}: ${cut.join('; ')}`);
+      await p.context().close();
+    }
+  });
 }

@@ -74,7 +74,7 @@ export class InputForm {
     const unitEl = f.units
       ? h('select', { class: 'unit', 'data-unit-for': f.path, 'aria-label': t('unit'), disabled: !enabled, onchange: (ev: Event) => this.onUnit(f, (ev.target as HTMLSelectElement).value as UnitId) },
           // "kHz" on a period field is the control frequency f_s = 1/Ts (said in the tooltip: a
-          // longer label is cut in the 64 px unit box).
+          // longer label is cut in the 72 px unit box).
           f.units.map((u) => h('option', { value: u, selected: this.unitOf(f) === u, title: u === 'kHz' ? 'f_s = 1/Ts' : null }, u)))
       : f.unit ? h('span', { class: 'unit' }, f.unit) : null;
     return h('label', { class: `field kind-${f.kind}${enabled ? '' : ' disabled'}` },
