@@ -126,18 +126,17 @@ def _batch(req) -> dict:
 
 
 _TRACE_KEYS = ("code", "target", "set", "global_q", "define", "entry", "zero_unset")
+_PROVE_KEYS = _TRACE_KEYS + ("range", "budget")
 
 
-def _trace(req) -> dict:
-    from .ctrace import TraceError, compile_code, trace_checked
-    from .ctrace.macro_entry import entry_macros
-    from .ctrace.parser import parse as parse_c
+def _trace_request(req, keys: tuple) -> tuple:
+    """The checked fields of a tracer request: (code, defines, sets, zero_unset)."""
     if not isinstance(req, dict):
         raise InputError("input", code="not_object", got=shown(req))
-    unknown = set(req) - set(_TRACE_KEYS)
+    unknown = set(req) - set(keys)
     if unknown:
         raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
-                         expected=", ".join(_TRACE_KEYS))
+                         expected=", ".join(keys))
     zero_unset = req.get("zero_unset", False)
     if not isinstance(zero_unset, bool):
         raise InputError("zero_unset", code="not_flag", got=shown(zero_unset))
@@ -147,7 +146,14 @@ def _trace(req) -> dict:
     sets = req.get("set") or {}
     if not isinstance(sets, dict):
         raise InputError("set", code="not_object", got=shown(sets))
-    code = req.get("code", "")
+    return req.get("code", ""), defines, sets, zero_unset
+
+
+def _trace(req) -> dict:
+    from .ctrace import TraceError, compile_code, trace_checked
+    from .ctrace.macro_entry import entry_macros
+    from .ctrace.parser import parse as parse_c
+    code, defines, sets, zero_unset = _trace_request(req, _TRACE_KEYS)
     try:
         checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
                                req.get("entry") or None)
@@ -169,6 +175,17 @@ def _trace(req) -> dict:
         raise
     reply.pop("ok", None)
     return reply
+
+
+def _trace_prove(req):
+    """The code proof (:mod:`pulab.ctrace.prove`), in slices: the tracer's request plus
+    ``range`` {NAME: [lo, hi]} and ``budget``."""
+    from .ctrace.prove import DEFAULT_BUDGET, prove_code_steps
+    code, defines, sets, zero_unset = _trace_request(req, _PROVE_KEYS)
+    proof = yield from prove_code_steps(code, req.get("target", "c28x"), req.get("entry") or None,
+                                        req.get("range"), sets, defines, req.get("global_q"),
+                                        req.get("budget", DEFAULT_BUDGET), zero_unset)
+    return {"proof": proof}
 
 
 def _trace_examples(req) -> dict:
@@ -274,6 +291,7 @@ KINDS = {
     "batch": ("batch", _batch),
     "trace": ("input", _trace),
     "trace.examples": ("input", _trace_examples),
+    "trace.prove": ("input", _trace_prove),
     "vendors.header": ("input", _vendors("header")),
     "vendors.translate": ("input", _vendors("translate")),
     **{f"prove.{op}" if op != "prove" else "prove": ("prove", _prove(op))
@@ -284,7 +302,8 @@ KINDS = {
     "course.trainees": ("input", _course("trainees")),
 }
 #: The kinds whose handlers are generators (computed in slices).
-_STEPPED = {"report", "prove", "prove.plan", "prove.integer", "prove.summary", "prove.propose"}
+_STEPPED = {"report", "prove", "prove.plan", "prove.integer", "prove.summary", "prove.propose",
+            "trace.prove"}
 
 
 def _answer(kind, req):

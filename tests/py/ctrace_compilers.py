@@ -80,8 +80,9 @@ def require(target: str, capsys) -> None:
     missing = available(target)
     if not missing:
         return
+    hint = "clang gcc-multilib" if target == "clang" else "gcc-avr avr-libc simavr gcc-multilib"
     msg = (f"SKIPPED: compiler cross-check for {target} needs {', '.join(missing)} "
-           "(apt-get install gcc-avr avr-libc simavr gcc-multilib)")
+           f"(apt-get install {hint})")
     if os.environ.get("CI") == "true":
         pytest.fail(msg + " — mandatory under CI=true")
     with capsys.disabled():
@@ -91,8 +92,9 @@ def require(target: str, capsys) -> None:
 
 def available(target: str) -> list:
     """The missing tools for ``target`` (empty when it can run): the programs, and a compile
-    of an empty program (avr-libc's headers; gcc-multilib's 32-bit libraries)."""
-    tools = ["avr-gcc", "simavr"] if target == "avr" else ["gcc"]
+    of an empty program (avr-libc's headers; gcc-multilib's 32-bit libraries; for ``clang``,
+    the code proof's sanitizer oracle, its 32-bit sanitizer runtime)."""
+    tools = {"avr": ["avr-gcc", "simavr"], "clang": ["clang"]}.get(target, ["gcc"])
     missing = [t for t in tools if shutil.which(t) is None]
     if missing:
         return missing
@@ -101,9 +103,11 @@ def available(target: str) -> list:
         with open(src, "w") as f:
             f.write("#include <stdint.h>\n" + ("#include <avr/io.h>\n" if target == "avr" else "")
                     + "int main(void) { return 0; }\n")
-        cmd = ["avr-gcc", "-mmcu=atmega2560"] if target == "avr" else ["gcc", "-m32"]
+        cmd = {"avr": ["avr-gcc", "-mmcu=atmega2560"],
+               "clang": ["clang", "-m32", "-fsanitize=signed-integer-overflow,implicit-conversion"]
+               }.get(target, ["gcc", "-m32"])
         if subprocess.run(cmd + [src, "-o", os.path.join(d, "t")], capture_output=True).returncode:
-            return ["avr-libc" if target == "avr" else "gcc-multilib"]
+            return ["avr-libc" if target == "avr" else "gcc-multilib"]  # clang's -m32 uses it too
     return []
 
 

@@ -24,7 +24,7 @@ def test_kinds_are_the_documented_ones():
     assert sorted(KINDS) == sorted([
         "report", "qcalc", "export.header", "export.csv_current", "export.csv_pll", "sweep",
         "sweep.plan", "sweep.chunk", "sweep.merge", "batch", "trace", "trace.examples",
-        "vendors.header", "vendors.translate", "prove", "prove.plan", "prove.integer",
+        "trace.prove", "vendors.header", "vendors.translate", "prove", "prove.plan", "prove.integer",
         "prove.summary", "prove.propose",
         "course.check", "course.answers", "course.spec",
         "course.trainees"])
@@ -48,6 +48,10 @@ def test_kinds_are_the_documented_ones():
     ("trace", {"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}},
      lambda r: r["vars"]["x"]["value"] == 4),
     ("trace.examples", {}, lambda r: "c28x" in r["targets"] and r["examples"][0]["code"]),
+    # arm: a·2 is an int; 20000·2 = 40000 does not fit the int16 b
+    ("trace.prove", {"code": "int16_t f(int16_t a) { int16_t b = a * 2; return b; }",
+                     "target": "arm", "entry": "f", "range": {"a": [0, 20000]}},
+     lambda r: r["proof"]["verdict"] == "violated" and r["proof"]["counterexample"]["a"] > 16383),
     ("vendors.header", {"input": SEED_INPUT, "profile": "ti"},
      lambda r: "#define USER_MTR1_KP_IQ_IQ" in r["text"]),
     ("vendors.translate", {"input": SEED_INPUT, "from": "inovance", "axis": "q",

@@ -174,7 +174,9 @@ KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "r
              "sweep": ["input", "x", "y", "profile"], "sweep.plan": ["input", "x", "y", "profile"],
              "sweep.chunk": ["input", "x", "start", "count"], "sweep.merge": ["input", "x", "summaries"],
              "batch": ["csv", "start", "count"], "trace": ["code", "target", "set", "global_q", "define", "entry", "zero_unset"],
-             "trace.examples": ["x"], "vendors.header": ["input", "profile"],
+             "trace.examples": ["x"],
+             "trace.prove": ["code", "target", "range", "budget", "define", "entry", "zero_unset"],
+             "vendors.header": ["input", "profile"],
              "vendors.translate": ["input", "from", "axis", "values"],
              "prove": ["input", "ranges", "budget"], "prove.plan": ["input", "ranges"],
              "prove.integer": ["input", "ranges", "name"],
@@ -194,7 +196,7 @@ def test_fuzzed_kinds_keep_the_api_contract():
              "set": {"v": 6554},
              "profile": "ti", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
              "summaries": [], "start": 0, "count": 1, "ranges": {"motor.rs_ohm": [1, 2]},
-             "budget": 20, "name": "vendor.Rpm", "integers": {},
+             "budget": 20, "name": "vendor.Rpm", "integers": {}, "range": {"v": [0, 7000]},
              "id": "vendor-rpm", "answer": "1"}
     seen = Counter()
     for _ in range(60):

@@ -28,7 +28,7 @@ export interface TraceRequest {
 /** A term; a call of a function of the code carries `call` and the statements it ran. */
 export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number | null; hex: string | null; flags: string[]; var?: string; rounding?: 'floor' | 'toward_zero'; lost?: number; call?: string; steps?: TraceLine[] }
 export interface TraceLine { line: number; column: number; code: string; var: string | null; type: string; value: number | null; hex: string | null; flags: string[]; terms: TraceTerm[]; spelling?: string; input?: boolean; branch?: string }
-export interface TraceVar { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string }
+export interface TraceVar { type: string; c_type: string; bits: number; signed: boolean; value: number | null; hex: string | null; input: boolean; q?: number; real?: number; si?: number; unit?: string; q_auto?: boolean }
 export interface Trace {
   target: string; global_q: number; inputs: string[]; vars: Record<string, TraceVar>; steps: TraceLine[];
   entry: string | null; functions: string[];
@@ -37,6 +37,34 @@ export interface Trace {
   rounding: Record<string, { floor: number; toward_zero: number; max_lost: number }>;
 }
 export interface TraceExample { id: string; title: string; title_zh: string; code: string }
+
+/** `trace.prove`: the tracer's request plus integer ranges of inputs (docs/contract.md, "Code proof"). */
+export interface CodeProveRequest extends TraceRequest { range: Record<string, [number | string, number | string]>; budget?: number }
+/** A failure a statement is proven free of (or shown to have). */
+export type CodeFailure = 'signed_overflow' | 'unsigned_wrap' | 'conversion' | 'shift_count' | 'division_by_zero' | 'index' | 'error';
+export interface CodeStatement {
+  line: number; column: number; code: string; var: string | null;
+  type: string | null; word: [number, number] | null; range: [number, number] | null;
+  /** The exact value the statement's store converts (before C's modulo rule). */
+  computed: [number, number] | null;
+  verdict: 'proven' | 'violated' | 'unknown'; kinds: CodeFailure[]; kind: CodeFailure | null;
+  proven_fraction: number; headroom_bits: number | null;
+  /** Every input's value at a point where the statement fails (violated only). */
+  counterexample?: Record<string, number>;
+}
+export interface CodeProof {
+  verdict: 'proven' | 'violated' | 'unknown'; target: string; global_q: number; entry: string | null;
+  inputs: string[]; box: Record<string, [number, number]>; set: Record<string, number>;
+  budget: number; work: number; boxes: number; decided_fraction: number; proven_fraction: number;
+  statements: CodeStatement[]; counterexample?: Record<string, number>;
+  /** With `// @q NAME auto` inputs: the Q proposed for each, and the real ranges given. */
+  proposals?: Record<string, QProposal>; real?: Record<string, [number, number]>;
+}
+export interface QProposal {
+  q: number | null; type: string; bits: number; signed: boolean; range_real: [number, number];
+  raw_range: [number, number] | null; max_error: number | null; max_error_pct: number | null;
+  tried: Record<string, 'proven' | 'violated' | 'unknown'>;
+}
 
 /** `vendors.translate`: a vendor's two current-loop integers in every other vendor's scaling. */
 export interface TranslateRequest { input: Input; from: string; axis: 'd' | 'q'; values: Record<string, number> }

@@ -16,12 +16,13 @@ import ctrace from './i18n/ctrace';
 import prove from './i18n/prove';
 import course from './i18n/course';
 import simfirmware from './i18n/simfirmware';
+import codeprove from './i18n/codeprove';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en };
+  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en };
 
 export type Key = keyof typeof en;
 
@@ -42,6 +43,7 @@ const zh: Record<Key, string> = {
   ...prove.zh,
   ...course.zh,
   ...simfirmware.zh,
+  ...codeprove.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

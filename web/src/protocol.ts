@@ -2,7 +2,7 @@
 // (in the spirit of stlite's types.ts), and every request kind has its request and reply types.
 // The worker only forwards JSON text to pulab.api.call_json.
 
-import type { BatchChunk, BatchRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
+import type { BatchChunk, BatchRequest, CodeProof, CodeProveRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
 import type { Chunk, Plan, Points, Summary } from './family/types';
 import type { Report } from './report-types';
 import type { Input } from './state';
@@ -36,6 +36,7 @@ export interface Request {
   batch: BatchRequest;
   trace: TraceRequest;
   'trace.examples': Record<string, never>;
+  'trace.prove': CodeProveRequest;
   'vendors.header': { input: Input; profile: string };
   'vendors.translate': TranslateRequest;
   prove: ProveRequest;
@@ -64,6 +65,7 @@ export interface ReplyBody {
   batch: BatchChunk;
   trace: Trace;
   'trace.examples': { examples: TraceExample[]; targets: string[] };
+  'trace.prove': { proof: CodeProof };
   'vendors.header': { text: string };
   'vendors.translate': { translation: Translation };
   prove: { proof: Proof };
@@ -103,7 +105,7 @@ export type ApiResult = Reply[ApiKind];
 /** The kinds computed in slices (`pulab.api.call_json_steps`, a generator yielding between
  * slices): a newer call on the same channel cancels a running one between two slices
  * (`superseded`). */
-export const STEPPED_KINDS: readonly ApiKind[] = ['report', 'prove', 'prove.integer'];
+export const STEPPED_KINDS: readonly ApiKind[] = ['report', 'prove', 'prove.integer', 'trace.prove'];
 
 /**
  * The channel of the page's own numbers: a queued call on it is computed before every other

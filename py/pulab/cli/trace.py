@@ -1,9 +1,11 @@
 """``python -m pulab trace FILE.c --target c28x [--entry F] --set NAME=VALUE …
-[-D NAME[=VALUE]]… [--zero-unset] [--global-q N] [--format json|text]``.
+[-D NAME[=VALUE]]… [--zero-unset] [--global-q N] [--format json|text]
+[--prove --range NAME=LO:HI … [--budget N]]``.
 
-Prints the :func:`~pulab.ctrace.trace` JSON on stdout; bad code or input exits
-with status 2 and one line on stderr, ``error: code: LINE:COLUMN: MESSAGE`` or
-``error: set.NAME: MESSAGE``.
+Prints the :func:`~pulab.ctrace.trace` JSON on stdout (with ``--prove``, the
+:func:`~pulab.ctrace.prove.prove_code` JSON: exit 0 proven, 1 violated or unknown); bad
+code or input exits with status 2 and one line on stderr, ``error: code: LINE:COLUMN:
+MESSAGE`` or ``error: set.NAME: MESSAGE``.
 """
 
 from __future__ import annotations
@@ -17,7 +19,8 @@ from ..schema.validate import shown
 from ..ctrace.tracing import trace
 from ..ctrace.types import TARGETS
 
-__all__ = ["add_trace_parser", "trace_main", "parse_sets", "format_text"]
+__all__ = ["add_trace_parser", "trace_main", "parse_sets", "parse_ranges", "format_text",
+           "format_prove_text"]
 
 
 def add_trace_parser(sub) -> None:
@@ -42,6 +45,14 @@ def add_trace_parser(sub) -> None:
                     help="json (default) or text: one line per executed statement")
     tp.add_argument("--global-q", type=str, default=None,
                     help="IQmath GLOBAL_Q, 1..30 (default 24; #define GLOBAL_Q in the code wins)")
+    tp.add_argument("--prove", action="store_true",
+                    help="prove every statement free of overflow, wrap and conversion loss "
+                         "over the --range box (or give a counterexample)")
+    tp.add_argument("--range", dest="ranges", action="append", default=[],
+                    metavar="NAME=LO:HI", help="with --prove: an input's integer range "
+                                               "(repeat for each; the others keep --set)")
+    tp.add_argument("--budget", type=str, default=None,
+                    help="with --prove: runs allowed (default 3000)")
 
 
 def parse_sets(items: list) -> dict:
@@ -125,6 +136,65 @@ def _step_lines(steps: list, lines: list, indent: str) -> None:
                 _step_lines(t["steps"], lines, indent + "    ")
 
 
+def parse_ranges(items: list) -> dict:
+    """``["e=-100:100", "p.Kp=0x10:0x7FFF"]`` → ``{"e": ["-100", "100"], "p.Kp": [...]}``
+    (the integers are checked by the proof).
+
+    >>> parse_ranges(["e=-100:100"])
+    {'e': ['-100', '100']}
+    """
+    out = {}
+    for item in items:
+        name, eq, rng = item.partition("=")
+        parts = rng.split(":")
+        if not eq or not name.strip() or len(parts) != 2:
+            raise InputError("range", code="prove_range_syntax", got=shown(item))
+        out[name.strip()] = parts
+    return out
+
+
+def format_prove_text(r: dict) -> str:
+    """One line per statement: position, verdict, proven range against its word, the kinds
+    of failure and the counterexample."""
+    box = ", ".join(f"{k} in [{lo}, {hi}]" for k, (lo, hi) in r["box"].items())
+    lines = [f"proof over {box}: {r['verdict'].upper()} ({r['work']} runs, {r['boxes']} boxes)"]
+    for s in r["statements"]:
+        rng = "-" if s["range"] is None else f"[{s['range'][0]}, {s['range'][1]}]"
+        word = "" if s["word"] is None else f" of {s['type']}"
+        line = f"{s['line']}:{s['column']}  {s['verdict']:<8} {rng}{word}  {s['code']}"
+        if s["verdict"] == "violated":
+            line += f"  {', '.join(s['kinds'])} at " + \
+                ", ".join(f"{k}={v}" for k, v in s["counterexample"].items())
+        elif s["verdict"] == "unknown":
+            line += f"  (proven for {100 * s['proven_fraction']:.1f} % of the box)"
+        lines.append(line)
+    for name, p in r.get("proposals", {}).items():
+        lo, hi = p["range_real"]
+        lines.append(f"@q {name} auto over [{lo:g}, {hi:g}]: " + (
+            f"Q{p['q']} in {p['type']}, raw {p['raw_range']}, error <= {p['max_error']:g}"
+            if p["q"] is not None else "no Q keeps every statement proven"))
+    return "\n".join(lines)
+
+
+def _prove(code: str, args: argparse.Namespace, gq) -> int:
+    from ..ctrace.prove import DEFAULT_BUDGET, MAX_BUDGET, prove_code
+    budget = DEFAULT_BUDGET
+    if args.budget is not None:
+        try:
+            budget = int(args.budget)
+        except ValueError:
+            raise InputError("budget", code="integer_range", lo=1, hi=MAX_BUDGET,
+                             got=shown(args.budget)) from None
+    r = prove_code(code, args.target, args.entry, parse_ranges(args.ranges),
+                   parse_sets(args.set), args.define, gq, budget, args.zero_unset)
+    if args.format == "text":
+        sys.stdout.write(format_prove_text(r) + "\n")
+    else:
+        json.dump(r, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
+        sys.stdout.write("\n")
+    return 0 if r["verdict"] == "proven" else 1
+
+
 def trace_main(args: argparse.Namespace) -> int:
     """Run the ``trace`` subcommand; returns the exit status."""
     try:
@@ -150,6 +220,8 @@ def trace_main(args: argparse.Namespace) -> int:
             except ValueError:
                 raise InputError("global_q", code="integer_range", lo=1, hi=30,
                                  got=shown(args.global_q)) from None
+        if args.prove:
+            return _prove(code, args, gq)
         result = trace(code, args.target, parse_sets(args.set), gq, args.define, args.entry,
                        args.zero_unset)
     except InputError as e:

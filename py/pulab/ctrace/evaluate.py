@@ -167,6 +167,18 @@ class Evaluator:
             self.steps.append(d)
         self.terms = []
 
+    # Hooks the interval evaluator (pulab.ctrace.abstract) overrides: a value that decides
+    # control flow, and one that names a place (an index, a case).
+    @staticmethod
+    def truth(value) -> bool:
+        """Whether a condition's value is true (non-zero, or a non-null pointer)."""
+        return value != 0 if isinstance(value, int) else value is not None
+
+    @staticmethod
+    def scalar(value) -> int:
+        """The one integer an index or a ``switch`` test designates."""
+        return value
+
     # -- memory
     def read(self, path: str, node) -> int:
         v = self.mem.get(path)
@@ -266,7 +278,7 @@ class Evaluator:
             self.step(s, src[s.start:s.end], var, v, e.ctype, **extra)
         elif kind is If:
             v = self.eval(s.test)
-            taken = v != 0
+            taken = self.truth(v)
             self.step(s, f"if ({src[s.test.start:s.test.end]})", None, int(taken), self.int,
                       branch="then" if taken else ("else" if s.other is not None else "none"))
             if taken:
@@ -304,7 +316,7 @@ class Evaluator:
         """Jump to the matching label (the case constants convert to the promoted type of the
         test, C99 6.8.4.2p5), run on until ``break`` or the end."""
         t = s.test.ctype
-        v = self.eval(s.test)
+        v = self.scalar(self.eval(s.test))
         body = s.body.statements
         start, default = None, None
         for i, inner in enumerate(body):
@@ -321,6 +333,10 @@ class Evaluator:
                   branch=taken)
         if start is None:
             return
+        self.run_case(body, start)
+
+    def run_case(self, body: list, start: int) -> None:
+        """Run a ``switch`` body from its statement ``start`` until ``break`` or the end."""
         try:
             for inner in body[start:]:
                 self.statement(inner)
@@ -352,7 +368,7 @@ class Evaluator:
                 if self.count > MAX_STEPS:
                     self.too_long(s)
                 if s.test is not None:
-                    taken = self.eval(s.test) != 0
+                    taken = self.truth(self.eval(s.test))
                     self.step(s, head, None, int(taken), self.int,
                               branch="loop" if taken else "exit")
                     if not taken:
@@ -435,7 +451,7 @@ class Evaluator:
                 raise TraceError(e.line, e.column, code="trace_null_pointer")
             return f"{base}.{e.field}"
         if kind is Index:
-            i = self.eval(e.index)
+            i = self.scalar(self.eval(e.index))
             bt = e.base.ctype
             if isinstance(bt, ArrT):
                 base = self.place(e.base)
@@ -503,13 +519,13 @@ class Evaluator:
                 return self.read(path, e) if isinstance(e.ctype, (CType, PtrT)) else path
             return self.unary(e)
         if kind is Logical:
-            a = self.eval(e.left) != 0
+            a = self.truth(self.eval(e.left))
             if (e.op == "&&") == a:  # && continues on true, || on false
-                a = self.eval(e.right) != 0
+                a = self.truth(self.eval(e.right))
             self.term(e, int(a), [])
             return int(a)
         if kind is Cond:
-            branch = e.then if self.eval(e.test) else e.other
+            branch = e.then if self.truth(self.eval(e.test)) else e.other
             w, flags = self.store(self.eval(branch), e.ctype)
             self.term(e, w, flags)
             return w

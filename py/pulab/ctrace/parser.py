@@ -14,7 +14,8 @@ The subset is what firmware scaling code is made of:
 - the preprocessor of :mod:`pulab.ctrace.preprocess` (macros, ``#if`` family,
   standard headers; ``#define GLOBAL_Q n`` also sets IQmath's Q);
 - annotations ``// @q NAME Qn [base=NUMBER [UNIT]]``: the variable holds a Qn number
-  (real = value/2**n) whose per-unit base is NUMBER UNIT, so its SI value is real·base.
+  (real = value/2**n) whose per-unit base is NUMBER UNIT, so its SI value is real·base;
+  ``// @q NAME auto``: its Q is to be proposed by the code proof (``q`` None).
 
 Everything else (loops, functions, pointers, floating point) is refused with a
 :class:`TraceError` naming line and column.
@@ -74,7 +75,7 @@ _PRECEDENCE = {op: level for level, ops in enumerate(
      ("<<", ">>"), ("+", "-"), ("*", "/", "%")]) for op in ops}
 _ASSIGN_OPS = frozenset({"=", "+=", "-=", "*=", "/=", "%=", "<<=", ">>=", "&=", "^=", "|="})
 _SUFFIX = re.compile(r"(?i)(u?(l|ll)?|(l|ll)u)")
-_NOTE = re.compile(r"//\s*@q\s+(?P<name>[A-Za-z_][\w.]*)\s+(?P<q>Q(?:\d+\.)?\d+)"
+_NOTE = re.compile(r"//\s*@q\s+(?P<name>[A-Za-z_][\w.]*)\s+(?P<q>Q(?:\d+\.)?\d+|auto)"
                    r"(?:\s+base=(?P<base>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?))?"
                    r"(?:\s+(?P<unit>\S+))?\s*$")
 
@@ -378,6 +379,8 @@ def _note(tok: Token) -> QNote:
     m = _NOTE.match(tok.text)
     if m is None:
         raise _fail(tok, code="trace_annotation_syntax")
+    if m["q"] == "auto":  # the code proof proposes the Q (pulab.ctrace.prove)
+        return QNote(m["name"], None, None, "", tok.line, tok.column)
     q = m["q"][1:]
     n = int(q.split(".")[1]) if "." in q else int(q)
     if n > 63:

@@ -205,7 +205,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     if zero_unset:
         given |= set(checked.inputs)
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
-    notes = checked.program.notes
+    notes = {k: n for k, n in checked.program.notes.items() if n.q is not None}  # not "@q auto"
     for s in steps:
         if s["var"] in notes:
             s.update(_meaning(notes[s["var"]], s["value"]))
@@ -222,6 +222,9 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
              "input": name in given}
         if name in notes and v is not None:
             d.update(_meaning(notes[name], v))
+        elif name in checked.program.notes and checked.program.notes[name].q is None:
+            # "// @q NAME auto": the code proof proposes its Q
+            d["q_auto"] = True
         out_vars[name] = d
     if entry is not None and isinstance(entry.ret, CType):
         v = values.get("return")

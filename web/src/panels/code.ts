@@ -6,6 +6,7 @@ import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
+import { renderProve, type ProveHost } from './code-prove';
 import type { TraceExample, TraceLine, TraceTerm } from '../api-types';
 import type { ApiErr, Ok } from '../protocol';
 
@@ -202,8 +203,27 @@ function varsTable(a: TraceOk, b: TraceOk | null): HTMLElement {
   return table([t('codeVariable'), t('codeType'), a.target, ...(b ? [b.target, ''] : []), t('codeMeaning')], rows, 'code-vars');
 }
 
+/** The Prove mode's view of this panel: its state, its inputs, and loading a counterexample. */
+const proveHost: ProveHost = {
+  state: st,
+  inputs: () => inputs,
+  auto: () => (main?.ok ? Object.keys(main.vars).filter((n) => main?.ok && main.vars[n].q_auto) : []),
+  load(values) {
+    const s = st();
+    for (const [name, v] of Object.entries(values)) s.set[name] = String(v);
+    const el = document.querySelector<HTMLElement>('#panel-code .panel-body');
+    if (!el || !lastCtx) return;
+    el.querySelector<HTMLElement>('.code-inputs')?.removeAttribute('data-key'); // show the values
+    update(el, lastCtx);
+    compute(lastCtx);
+    el.querySelector('.code-trace')?.scrollIntoView({ block: 'start' });
+  },
+};
+
 function update(el: HTMLElement, ctx: PanelContext): void {
   const s = st();
+  const proveBox = el.querySelector<HTMLElement>('.code-prove-box');
+  if (proveBox) renderProve(proveBox, ctx, proveHost);
   const box = el.querySelector<HTMLElement>('.code-inputs');
   const boxKey = JSON.stringify([inputs, ctx.report ? prefill(inputs, ctx.report) : null, getLang()]);
   if (box && box.dataset.key !== boxKey) {
@@ -341,6 +361,7 @@ export const codePanel: Panel = {
             h('h3', {}, t('codeInputs')),
             h('div', { class: 'code-inputs fields' })),
           h('div', { class: 'code-out' })),
+        h('div', { class: 'code-prove-box' }),
         h('div', { class: 'code-trace' })),
     );
     const ta = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');

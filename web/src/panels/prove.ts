@@ -144,8 +144,9 @@ function proposalView(p: Proposal): HTMLElement {
 
 const chip = (v: Verdict, name: string) => h('span', { class: `flag pr-${v}`, 'data-verdict-for': name }, t(`v_${v}` as Key));
 
-/** The proven range as a bar inside the word's limits (linear; a sliver at least, so it shows). */
-function bar(e: Entry): HTMLElement | null {
+/** The proven range as a bar inside the word's limits (linear; a sliver at least, so it shows);
+ * the code proof's statements draw the same bar. */
+export function bar(e: Pick<Entry, 'range' | 'word' | 'type' | 'verdict'>): HTMLElement | null {
   if (!e.range || !e.word) return null;
   const [w0, w1] = e.word;
   const span = w1 - w0;
