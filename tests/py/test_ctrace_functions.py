@@ -717,6 +717,11 @@ def test_a_bad_pointer_value_names_the_input(value, text):
     with pytest.raises(InputError) as e:
         trace(TRIM, "arm", {"x": 1, "handle.pLimit": "&handle.avg"}, entry="TRIM_run")
     assert "handle.pLimit points to int, but handle.avg is struct _AVG_" in e.value.message
+    code = "int *gp; int a; int f(void) { return *gp; }"
+    assert trace(code, "arm", {"gp": "&a", "a": 7}, entry="f")["vars"]["return"]["value"] == 7
+    with pytest.raises(InputError) as e:  # a global pointer is no object of its own
+        trace(code, "arm", {"gp": "&gp"}, entry="f")
+    assert "gp cannot point to gp: no such object" in e.value.message
 
 
 def test_an_unset_pointer_input_stays_unset_and_its_error_says_how_to_give_it():

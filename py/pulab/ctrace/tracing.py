@@ -137,7 +137,10 @@ def _pointer_value(checked: Checked, field: str, name: str, value) -> str:
     if not text.startswith("&") or not _OBJECT.fullmatch(path):
         raise InputError(field, code="trace_pointer_syntax", name=name, got=shown(value))
     head = re.match(r"\w+", path)[0]
-    t = checked.type_at(path) if head in checked.heads else None
+    params = {p.key for p in checked.entry.params} if checked.entry is not None else set()
+    t = None  # a global pointer names no object of its own (a pointer parameter names its)
+    if head in checked.heads and (head in params or not isinstance(checked.roots.get(head), PtrT)):
+        t = checked.type_at(path)
     if t is None or isinstance(t, PtrT):
         raise InputError(field, code="trace_pointer_no_object", name=name, got=path)
     if isinstance(ptr.to, (CType, StructT)) and not same_layout(t, ptr.to) or \

@@ -41,8 +41,10 @@ MESSAGES = {
                              "{name} 是指针：其值应为 &对象（全局变量、入口参数所指对象，或其字段、"
                              "元素），当前为 {got}"),
     "trace_pointer_no_object": ("{name} cannot point to {got}: no such object among the globals "
-                                "and the entry's parameters",
-                                "{name} 不能指向 {got}：全局变量和入口参数中没有这个对象"),
+                                "and the entry's parameters (nor a pointer: pointers to pointers "
+                                "are not supported)",
+                                "{name} 不能指向 {got}：全局变量和入口参数中没有这个对象（也不能是指针："
+                                "不支持指向指针的指针）"),
     "trace_pointer_type": ("{name} points to {want}, but {got} is {type}",
                            "{name} 指向 {want}，但 {got} 的类型是 {type}"),
     "trace_return_local": ("{name}() returns the address of {got}, which ends with the call "
