@@ -737,6 +737,18 @@ def test_an_unset_pointer_input_stays_unset_and_its_error_says_how_to_give_it():
         e.value.message
 
 
+def test_a_proof_ranges_the_fields_read_through_a_pointer_input():
+    from pulab.ctrace.prove import prove_code
+    sets = {"handle.avgHandle": "&handle.avg", "handle.pLimit": "&limits[1]", "limits[1]": 0,
+            "handle.bias": 0, "handle.avg.y1": 0}
+    r = prove_code(TRIM, "arm", "TRIM_run", {"x": [0, 1000], "handle.avg.k": [0, 1 << 24]},
+                   sets)
+    assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "handle.avg.y1",
+                           "handle.avg.k", "limits[1]"]
+    # y1 = k·x >> 24 with k ≤ 1.0: no statement can fail
+    assert r["verdict"] == "proven"
+
+
 def test_an_entry_returning_a_local_address_is_an_error():
     code = "int *f(int x) { int y = x; return &y; }\nint g; int *h(void) { return &g; }"
     with pytest.raises(TraceError) as e:

@@ -162,10 +162,11 @@ class BoxEvaluator(Evaluator):
 
     @classmethod
     def over(cls, checked, box: dict, global_q: int) -> "BoxEvaluator":
-        """An evaluator for ``box`` (input path → (lo, hi) integers of its type)."""
+        """An evaluator for ``box`` (input path → (lo, hi) integers of its type; a pointer
+        input → (object, object), its one value)."""
         syms = checked.symbols
-        return cls(checked, {k: ICInt(lo, hi, syms[k].ctype) for k, (lo, hi) in box.items()},
-                   global_q)
+        return cls(checked, {k: lo if k in checked.pointers else ICInt(lo, hi, syms[k].ctype)
+                             for k, (lo, hi) in box.items()}, global_q)
 
     def run_box(self) -> dict:
         """Run; (line, column) → record ``{"kinds", "lo", "hi", "ctype", "var", "node",

@@ -123,16 +123,17 @@ class Evaluator:
         When False only ``values`` is kept (the compiler cross-check runs many vectors).
     """
 
-    def __init__(self, checked: Checked, inputs: dict, global_q: int, record: bool = True,
-                 names: list | None = None) -> None:
+    def __init__(self, checked: Checked, inputs: dict, global_q: int, record: bool = True
+                 ) -> None:
         self.checked = checked
         self.source = checked.program.source
         self.mem: dict = {}
         self.written: set = set()
         self.values: dict = {}
         self.inputs = inputs
-        #: the input names (``checked.inputs``, or those with the pointer inputs set)
-        self.names = checked.inputs if names is None else names
+        #: the input names: ``checked.inputs`` with the pointer inputs given pointing there
+        self.names = checked.inputs_with({k: v for k, v in inputs.items()
+                                          if k in checked.pointers})
         self.unset = [n for n in self.names if n not in inputs]
         self.global_q = global_q
         self.record = record

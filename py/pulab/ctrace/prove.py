@@ -44,7 +44,7 @@ from ..schema.validate import key_path, shown
 from .abstract import FAILURES, BoxEvaluator, Split
 from .errors import TraceError
 from .parser import Block, If, Loop, Switch
-from .tracing import DEFAULT_GLOBAL_Q, _input_values, compile_code, run_checked
+from .tracing import DEFAULT_GLOBAL_Q, _input_values, compile_code, inputs_for, run_checked
 
 __all__ = ["prove_code", "prove_code_steps", "DEFAULT_BUDGET", "MAX_BUDGET"]
 
@@ -57,16 +57,18 @@ _SLICE_S = 0.02
 _CORNERS = 8
 
 
-def _ranges(checked, ranges) -> dict:
+def _ranges(checked, ranges, names: list) -> dict:
+    """The box; ``names`` the inputs (with the pointer inputs given, see
+    :func:`~pulab.ctrace.tracing.inputs_for`)."""
     if not isinstance(ranges, dict) or not ranges:
         raise InputError("range", code="prove_no_ranges")
     box = {}
     for name, pair in ranges.items():
         path = name.strip().replace("->", ".") if isinstance(name, str) else name
         field = key_path("range", path)
-        if path not in checked.inputs or path in checked.pointers:  # a pointer has no range
+        if path not in names or path in checked.pointers:  # a pointer has no range
             raise InputError(field, code="prove_not_input", inputs=", ".join(
-                n for n in checked.inputs if n not in checked.pointers) or "none")
+                n for n in names if n not in checked.pointers) or "none")
         if not isinstance(pair, (list, tuple)) or len(pair) != 2:
             raise InputError(field, code="prove_pair", got=shown(pair))
         ends = []
@@ -125,6 +127,7 @@ class _Problem:
     def __init__(self, checked, box: dict, fixed: dict, global_q: int) -> None:
         self.checked, self.box, self.fixed, self.global_q = checked, box, fixed, global_q
         self.names = list(box)
+        self.inputs = checked.inputs  # with the pointer inputs given: set by the caller
         source = checked.program.source
         self.source = source
         self.line_starts = [0] + [m.end() for m in re.finditer("\n", source)]
@@ -269,12 +272,15 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
         if name not in ranges:
             raise InputError(field, code="prove_auto_range", name=name)
         real[name] = _parse_real(field, ranges[name])
-    box = _ranges(checked, {k: (v if k not in real else [0, 0]) for k, v in ranges.items()})
+    names = inputs_for(checked, inputs if isinstance(inputs, dict) else {})
+    box = _ranges(checked, {k: (v if k not in real else [0, 0]) for k, v in ranges.items()},
+                  names)
     sets = {k: v for k, v in (inputs or {}).items()
             if (k.strip().replace("->", ".") if isinstance(k, str) else k) not in box}
     fixed = _input_values(checked, sets, zero_unset)
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     pb = _Problem(checked, box, fixed, gq)
+    pb.inputs = names
     if not auto:
         out = yield from _search(pb, box, budget)
     else:
@@ -438,7 +444,7 @@ def _search(pb: _Problem, box: dict, budget: int):
         "proven" if credited == total and verdicts <= {"proven"} else "unknown"
     out = {"verdict": verdict, "target": checked.target.name, "global_q": gq,
            "entry": checked.entry.name if checked.entry is not None else None,
-           "inputs": checked.inputs, "box": {k: list(v) for k, v in box.items()},
+           "inputs": pb.inputs, "box": {k: list(v) for k, v in box.items()},
            "set": fixed, "budget": budget, "work": work, "boxes": finals,
            "decided_fraction": decided / total, "proven_fraction": clean / total,
            "statements": statements}

@@ -165,9 +165,7 @@ def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
     not set the value 0); returns the finished :class:`~pulab.ctrace.evaluate.Evaluator`
     (``values``, ``steps``, ``undefined``)."""
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
-    values = _input_values(checked, inputs or {}, zero_unset)
-    names = checked.inputs_with({k: v for k, v in values.items() if k in checked.pointers})
-    ev = Evaluator(checked, values, gq, record, names)
+    ev = Evaluator(checked, _input_values(checked, inputs or {}, zero_unset), gq, record)
     ev.run()
     return ev
 

@@ -126,6 +126,8 @@ export default async function codeFile(ctx) {
       const shown = await p.$eval('[data-points-to-of="code.c28x.vars.handle.avgHandle.value"]', (e) => e.textContent);
       assert(shown === '&handle.avg', `pointer shown as ${shown}`);
       assert(await p.$('input[name="set.handle.avgHandle"]'), 'a field for the pointer input');
+      await p.waitForSelector('input[name="range.handle.avg.k.0"]', { state: 'attached' }); // in the closed Prove box
+      assert(!(await p.$('input[name="range.handle.avgHandle.0"]')), 'no proof range for a pointer');
       await p.$eval('.code-vars', (e) => e.scrollIntoView());
       await p.screenshot({ path: join(SHOTS, `code-pointer-${width}-${locale}.png`) });
       const overflow = await p.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);

@@ -18,6 +18,8 @@ export interface ProveHost {
   inputs(): string[];
   /** The inputs annotated `// @q NAME auto` (their ranges are in real units). */
   auto(): string[];
+  /** The pointer inputs (given as `&OBJECT`: they take no range). */
+  pointers(): string[];
   /** Put these input values into the trace's fields and trace them. */
   load(values: Record<string, number>): void;
 }
@@ -50,6 +52,9 @@ function defaultRange(host: ProveHost, report: unknown, name: string): { lo: str
   return { lo: String(x - d), hi: String(x + d) };
 }
 
+/** The inputs a range can be given to: all but the pointers. */
+const ranged = (host: ProveHost): string[] => host.inputs().filter((n) => !host.pointers().includes(n));
+
 async function run(first: HTMLElement, ctx: PanelContext, host: ProveHost): Promise<void> {
   if (!ctx.client) return;
   // The panel may be rebuilt while the proof runs: draw into the box that is on the page.
@@ -61,7 +66,7 @@ async function run(first: HTMLElement, ctx: PanelContext, host: ProveHost): Prom
   draw();
   const t0 = performance.now();
   const range: Record<string, [string, string]> = {};
-  for (const name of host.inputs()) {
+  for (const name of ranged(host)) {
     const r = ps.ranges[name];
     if (r && (r.lo.trim() !== '' || r.hi.trim() !== '')) range[name] = [r.lo.trim(), r.hi.trim()];
   }
@@ -135,7 +140,7 @@ function proposals(p: CodeProof): HTMLElement | null {
 
 /** Draw the Prove mode into `box` (the code panel calls it on every update). */
 export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost): void {
-  const names = host.inputs();
+  const names = ranged(host);
   for (const n of names) ps.ranges[n] ??= defaultRange(host, ctx.report, n);
   const key = [getLang(), !!ctx.client, ps.open, !!ps.job, ps.round, JSON.stringify(ps.note), ps.error?.message ?? '', ps.proof?.work ?? -1, names.join(',')].join('|');
   if (box.dataset.rendered === key && box.firstChild) return;

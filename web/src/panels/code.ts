@@ -221,6 +221,7 @@ const proveHost: ProveHost = {
   state: st,
   inputs: () => inputs,
   auto: () => (main?.ok ? Object.keys(main.vars).filter((n) => main?.ok && main.vars[n].q_auto) : []),
+  pointers: () => (main?.ok ? Object.keys(main.vars).filter((n) => main?.ok && main.vars[n].c_type === 'pointer') : []),
   load(values) {
     const s = st();
     for (const [name, v] of Object.entries(values)) s.set[name] = String(v);
