@@ -708,6 +708,7 @@ def test_an_entry_returning_a_pointer_names_its_object(target, capsys):
     ("&handle.nothing", "handle.avgHandle cannot point to handle.nothing: no such object"),
     ("&obj", "handle.avgHandle cannot point to obj: no such object"),  # an entry local
     ("&handle.avgHandle", "cannot point to handle.avgHandle"),  # a pointer to a pointer
+    ("&limits[3]", "handle.avgHandle cannot point to limits[3]: no such object"),
 ])
 def test_a_bad_pointer_value_names_the_input(value, text):
     with pytest.raises(InputError) as e:

@@ -139,7 +139,9 @@ def _pointer_value(checked: Checked, field: str, name: str, value) -> str:
     head = re.match(r"\w+", path)[0]
     params = {p.key for p in checked.entry.params} if checked.entry is not None else set()
     t = None  # a global pointer names no object of its own (a pointer parameter names its)
-    if head in checked.heads and (head in params or not isinstance(checked.roots.get(head), PtrT)):
+    if head in checked.heads and (head in params or not isinstance(checked.roots.get(head), PtrT)) \
+            and (path in checked.symbols or any(k.startswith((path + ".", path + "["))
+                                                for k in checked.symbols)):  # indexes in range
         t = checked.type_at(path)
     if t is None or isinstance(t, PtrT):
         raise InputError(field, code="trace_pointer_no_object", name=name, got=path)
