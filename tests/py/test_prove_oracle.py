@@ -390,3 +390,32 @@ def test_servo_family_of_the_chapter(profile, verdict):
         assert sorted(k.split(".")[-1] for k, e in r["integers"].items()
                       if e["verdict"] == "violated") == [
             "MCAF_MOTOR_LD_BASE_DT", "MCAF_MOTOR_LQ_BASE_DT", "MCAF_MOTOR_PSI_BASE_DT"]
+
+
+def test_inovance_family_of_the_chapter_has_error_bounds_that_hold():
+    # The chapter's servo family on the seed's code: every integer proven with a bound, the
+    # bounds the chapter quotes, and no sampled motor's error (tests/oracle/oracle.py) above one.
+    import json
+    from pulab.analyses.prove import _explicit
+    base = _explicit(json.loads((ROOT / "tests/golden/datasheets/siemens_1ft7044_ak7.json")
+                                .read_text())["input"])
+    r = prove({"input": base, "ranges": FAMILY_RANGES})
+    e = r["integers"]
+    assert r["verdict"] == "proven" and all(x["error_bound"] for x in e.values())
+    quoted = {"vendor.Rpm": 1.62, "vendor.LD": 0.91, "vendor.FluxRotor": 0.17,
+              "vendor.pm_maxout_vol": 0.34, "current_pi.d.pm_ki": 4.0}
+    assert {k: round(e[k]["worst_error_pct"], 2) for k in quoted} == quoted
+    worst = dict.fromkeys(e, 0.0)
+    for pt in _points(FAMILY_RANGES, 2, 300, 11):
+        o = oracle.oracle_report(_at(base, pt))
+        for name in po.READS:
+            worst[f"vendor.{name}"] = max(worst[f"vendor.{name}"],
+                                          abs(o["vendor"][name]["error_pct"]))
+        t = _oracle_pi(_at(base, pt))
+        for k in (n for n in t if not n.endswith(".ideal")):
+            worst[k] = max(worst[k], abs(100.0 * (t[k] - t[f"{k}.ideal"]) / t[f"{k}.ideal"]))
+    for k, w in worst.items():
+        if not k.startswith("raw."):
+            assert w <= e[k]["worst_error_pct"], (k, w, e[k]["worst_error_pct"])
+    print({k: (round(w, 4), round(e[k]["worst_error_pct"], 4)) for k, w in worst.items()
+           if not k.startswith("raw.")})
