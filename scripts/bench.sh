@@ -9,7 +9,7 @@ PYTHONPATH=py .venv/bin/python -c "import json,sys; from pulab.benchmark import 
 BENCH_CPYTHON_JSON="$out" npx vitest run --config tests/bench/vitest.config.ts --reporter dot
 rm -f "$out"
 if [ -f tests/e2e/bench-page.mjs ]; then node tests/e2e/bench-page.mjs; fi
-# The family view (issue 13): sweeps and a 10,000-row batch in CPython (the Pyodide sweeps are
+# The family view: sweeps and a 10,000-row batch in CPython (the Pyodide sweeps are
 # tests/bench/family.bench.ts, in the vitest run above).
 PYTHONPATH=py .venv/bin/python tests/bench/family_bench.py
 # Family proofs: 6-dimensional boxes (the Pyodide numbers are tests/bench/prove.bench.ts above).

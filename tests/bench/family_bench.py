@@ -1,4 +1,4 @@
-"""Benchmarks of the family view (issue 13), medians printed (numbers, not tests).
+"""Benchmarks of the family view, medians printed (numbers, not tests).
 
     PYTHONPATH=py python3 tests/bench/family_bench.py     # CPython: sweep and 10,000-row batch
 

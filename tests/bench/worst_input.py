@@ -1,4 +1,4 @@
-"""The work bomb of issue 14: the worst input the contract allows, timed and measured.
+"""The work bomb: the worst input the contract allows, timed and measured.
 
 Both simulations at their period caps (200 000 current-loop and 500 000 PLL
 periods), ``pm_kp = pm_ki = 2^31 − 1``.  Each run is a fresh process so its

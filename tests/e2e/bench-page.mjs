@@ -220,7 +220,7 @@ if (SCEN.has('elements')) {
 }
 
 if (SCEN.has('input')) {
-  // Two drivers, each in a fresh context: Playwright's fill (as measured since issue 8 was filed;
+  // Two drivers, each in a fresh context: Playwright's fill (as measured from the start;
   // it also runs its actionability checks in the page, forcing layouts) and plain keyboard events
   // (select all, type the text: what a user's keyboard sends). 40 edits each, the first one 3 s
   // after the numbers went live; the first 10 and the rest are printed apart (the first ones after

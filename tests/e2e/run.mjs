@@ -1,5 +1,5 @@
 #!/usr/bin/env node
-// End-to-end: build, serve dist/ (at / and at a sub-path, with the CSP of issue 4), drive
+// End-to-end: build, serve dist/ (at / and at a sub-path, with the README's CSP), drive
 // /usr/bin/chromium through playwright-core, run every suite in tests/e2e/suites/*.mjs (in name
 // order), then the checks that hold over all of them (no off-origin request, no console error).
 // No Chromium: a loud SKIPPED line and exit 0 — unless CI is set, then failure.

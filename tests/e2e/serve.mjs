@@ -1,5 +1,5 @@
 // A tiny static server for dist/ that behaves like a well-configured production server (README,
-// "Serving"): correct MIME types, the CSP of issue 4 as an HTTP header, the site mounted at any
+// "Serving"): correct MIME types, the README's CSP as an HTTP header, the site mounted at any
 // sub-path prefix (e.g. /tools/pu-lab/), the build's precompressed twins (.br, .gz) sent by
 // Accept-Encoding, validators (ETag, Last-Modified → 304), and long caching of hashed files only.
 import { createServer } from 'node:http';

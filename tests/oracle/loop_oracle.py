@@ -1,4 +1,4 @@
-"""Independent oracle for the report's "loop" section (issue 11); writes tests/golden/loop/*.json.
+"""Independent oracle for the report's "loop" section; writes tests/golden/loop/*.json.
 
     .venv/bin/python tests/oracle/loop_oracle.py          # (re)write the files
     .venv/bin/python tests/oracle/loop_oracle.py --check  # exit 1 if any file is stale

@@ -1,4 +1,4 @@
-"""Independent oracle for the vendor profiles (docs/contract.md "Vendor profiles"; issue 12).
+"""Independent oracle for the vendor profiles (docs/contract.md "Vendor profiles").
 
 Written from the contract and the vendors' public files, never importing pulab. The SI gains
 and the Inovance integers come from the existing oracle (oracle.py). Fixed-point conversions

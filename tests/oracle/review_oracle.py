@@ -1,4 +1,4 @@
-"""Independent oracle for datasheet entry and the design review (issue 9); never imports pulab.
+"""Independent oracle for datasheet entry and the design review; never imports pulab.
 
 Datasheet conversions are written here from the physics, not from pulab's code: a
 datasheet's line-to-line Ke is turned into the phase flux amplitude first and the

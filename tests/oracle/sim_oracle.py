@@ -5,7 +5,7 @@
 
 Never imports pulab.  Bases, per-unit values, gains and vendor integers come from the
 report oracle next to this file (tests/oracle/oracle.py, itself independent of pulab); the
-time-domain part is written here from issue 3 and the seed:
+time-domain part is written here from the contract and the seed:
 
 - plant (seed 1.2-3): ZOH transition from an eigendecomposition in numpy,
   Φ = V·e^{ΛT}·V⁻¹, Γ = V·diag(expm1(λT)/λ)·V⁻¹·B — a different algorithm from pulab's

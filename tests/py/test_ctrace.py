@@ -117,7 +117,7 @@ def test_q_annotation_gives_real_and_si():
 
 
 def test_flux_lines_differ_between_c28x_and_arm():
-    """The 'done when' of issue 10: the seed's flux lines, c28x vs arm."""
+    """The seed's flux lines, c28x vs arm: the tracer's first acceptance case."""
     raw = {"gMotorInfo.FreqRated01": 22000, "gBasePar.FullFreq01": 22000,
            "gMotorExtInfo.BemfVolt": 120, "gMotorInfo.Voltage": 6554}
     c28x = trace(EXAMPLES["flux"]["code"], "c28x", raw)["vars"]

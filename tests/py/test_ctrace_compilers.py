@@ -1,4 +1,4 @@
-"""pulab.ctrace against real compilers (issue 10): avr-gcc + simavr (16-bit int, as C28x)
+"""pulab.ctrace against real compilers: avr-gcc + simavr (16-bit int, as C28x)
 and gcc -m32 (32-bit int and long, as ARM).
 
 Random snippets (tests/py/ctrace_gen.py: expression trees over every supported operator

@@ -1,4 +1,4 @@
-// Issue 14: what the status line says when Python cannot start.
+// What the status line says when Python cannot start.
 import { describe, it, expect } from 'vitest';
 import { describeError, missingRuntimeFile } from '../../web/src/worker-logic';
 

@@ -1,4 +1,4 @@
-// Issue 14: a failed boot is tried again with backoff before it is fatal (rpc.ts PulabClient).
+// A failed boot is tried again with backoff before it is fatal (rpc.ts PulabClient).
 import { describe, it, expect, vi, afterEach } from 'vitest';
 import { BOOT_RETRY_MS, PulabClient, type WorkerLike } from '../../web/src/rpc';
 import type { MainToWorker } from '../../web/src/protocol';

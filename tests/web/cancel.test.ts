@@ -1,4 +1,4 @@
-// Issue 14: a new input cancels a running simulation. The worst allowed simulation (both runs at
+// A new input cancels a running simulation. The worst allowed simulation (both runs at
 // their period caps, pm_kp = pm_ki = 2^31 − 1: the e2e check's input) runs on a channel in the
 // worker logic on real Pyodide; a newer call on that channel supersedes it between two slices.
 // Latencies are printed (measured, not asserted tightly: the machine is shared).

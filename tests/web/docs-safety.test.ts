@@ -1,4 +1,4 @@
-// Latent cases of the chapter renderer (issue 14): chapters and report values are data, not markup.
+// Latent cases of the chapter renderer: chapters and report values are data, not markup.
 import { describe, it, expect } from 'vitest';
 import katex from 'katex';
 import { renderMarkdown, safeHref, texValue } from '../../web/src/docs/render';

@@ -1,4 +1,4 @@
-// The loop analysis rides on the simulation request only (issue 11): the plain report stays fast.
+// The loop analysis rides on the simulation request only: the plain report stays fast.
 import { describe, it, expect } from 'vitest';
 import { SEED_INPUT, initialInput, reportInput, simInput, type Input } from '../../web/src/state';
 import { effectiveInput } from '../../web/src/fields';

@@ -1,5 +1,5 @@
 // @vitest-environment happy-dom
-// dom.morph (issue 8): a new report patches a pure panel in place. Named by what is rendered
+// dom.morph: a new report patches a pure panel in place. Named by what is rendered
 // before and after, and what must hold of the patched DOM.
 import { describe, expect, it } from 'vitest';
 import { h, morph, patch as show, tex } from '../../web/src/dom';

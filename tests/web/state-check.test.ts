@@ -1,4 +1,4 @@
-// Hostile saved and linked states (issue 14): each table row is input → what is kept, what is named.
+// Hostile saved and linked states: each table row is input → what is kept, what is named.
 import { describe, it, expect } from 'vitest';
 import { checkInput, checkInputText, checkUnits, shownValue } from '../../web/src/state-check';
 import { SEED_INPUT, encodeHash, getPath, initialInput, reportInput } from '../../web/src/state';

@@ -12,7 +12,7 @@ describe('toSI: display unit → the SI value of the input JSON (exact for the u
     [16, 'kHz', 0.0000625],
     [5, 'ms', 0.005],
     [0.0006, 'H', 0.0006],
-    // shortest round-trip decimals (issue 9: 4.2/1000 = 0.004200000000000001)
+    // shortest round-trip decimals (4.2/1000 = 0.004200000000000001)
     [4.2, 'mH', 0.0042],
     [4.2, 'ms', 0.0042],
     [1.1, 'µH', 0.0000011],

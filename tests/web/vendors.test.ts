@@ -1,4 +1,4 @@
-// Vendor profiles (issue 12): the panel's pure helpers, and the profiles' golden vectors
+// Vendor profiles: the panel's pure helpers, and the profiles' golden vectors
 // (tests/golden/profiles, from the independent numpy oracle) through Pyodide as the worker runs them.
 import { describe, it, expect, beforeAll } from 'vitest';
 import { readdirSync, readFileSync } from 'node:fs';

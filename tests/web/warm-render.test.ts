@@ -1,5 +1,5 @@
 // @vitest-environment happy-dom
-// Layout.settle (issue 8): once the first live numbers are shown, the pure panels are rendered
+// Layout.settle: once the first live numbers are shown, the pure panels are rendered
 // WARM_RENDERS more times into detached elements while idle (the page itself is not touched),
 // so that the first keystrokes' renders run optimized code.
 import { afterEach, describe, expect, it, vi } from 'vitest';

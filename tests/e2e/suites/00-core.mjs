@@ -1,4 +1,4 @@
-// The page's core checks (issue 4): golden numbers, typing, errors, share links, language,
+// The page's core checks: golden numbers, typing, errors, share links, language,
 // embed, explainer, Q calculator, units and presets, exports, the site root.
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';

@@ -1,4 +1,4 @@
-// Issue 14: hostile page states and faults. Each scenario asserts a message, a usable form and,
+// Hostile page states and faults. Each scenario asserts a message, a usable form and,
 // where the cause goes away, recovery; no scenario may raise a pageerror (an uncaught exception or
 // an unhandled promise rejection). Fault pages break requests on purpose, so they use their own
 // browser contexts (not ctx.newPage, whose console-error check would count the failed loads).

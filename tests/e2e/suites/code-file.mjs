@@ -1,4 +1,4 @@
-// "Your code" with a whole file (issue 21): a file of functions opens on the last one defined,
+// "Your code" with a whole file: a file of functions opens on the last one defined,
 // the function menu lists them, a struct field and an out-parameter are inputs and results, a
 // call's statements open under it, the CLI (--entry) agrees; screenshots in both languages.
 import { execFileSync } from 'node:child_process';

@@ -1,4 +1,4 @@
-// "Your code" panel (issue 10): the seed's flux lines and a TI _IQmpy line traced on c28x and
+// "Your code" panel: the seed's flux lines and a TI _IQmpy line traced on c28x and
 // arm, inputs prefilled from the motor's raw integers, where the targets differ, bad code named
 // by line:column at the field, the shareable link and the embed; screenshots in both languages.
 import { execFileSync } from 'node:child_process';

@@ -1,4 +1,4 @@
-// Issue 8, instant start: <html data-numbers> (build → live, cached → live, stale while typing
+// Instant start: <html data-numbers> (build → live, cached → live, stale while typing
 // before Python is ready), the snapshot refused → full boot, no SharedWorker → dedicated Worker,
 // embeds sharing one runtime per kind, and the server's compression and validators.
 import { readdirSync, statSync, writeFileSync } from 'node:fs';

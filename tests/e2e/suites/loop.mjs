@@ -1,4 +1,4 @@
-// Loop design (issue 11): the page's loop panel equals python-control (tests/golden/loop), the
+// Loop design: the page's loop panel equals python-control (tests/golden/loop), the
 // default design's phase margin with the realistic delay, a design meeting a chosen margin, the
 // naive PLL's negative margin, the speed loop's integers and responses, Bode plots drawn, the
 // chapter in both languages, screenshots at three widths in zh and en.

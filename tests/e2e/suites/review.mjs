@@ -1,4 +1,4 @@
-// Issue 9: datasheet entry, the graded design review, input handling, every screen.
+// Datasheet entry, the graded design review, input handling, every screen.
 // Run alone: node tests/e2e/run.mjs review   (E2E_NO_BUILD=1 to reuse dist/)
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';

@@ -1,4 +1,4 @@
-// The family view on the page (issue 13): a sweep of the seed motor shows the exact LD wrap and
+// The family view on the page: a sweep of the seed motor shows the exact LD wrap and
 // m_BaseL = 0 boundaries CPython's `pulab sweep` finds; the page stays responsive while it runs;
 // cancel stops it; a worst case opens as the current motor; a 2-D map draws; a batch of the
 // 1,000-motor catalogue gives the same CSV as `pulab batch`, bad rows reported.

@@ -1,4 +1,4 @@
-// Vendor profiles panel (issue 12): profiles equal CPython pulab, hardware inputs recompute,
+// Vendor profiles panel: profiles equal CPython pulab, hardware inputs recompute,
 // bad input is shown at its field, the translator round-trips, each vendor header downloads.
 import { join } from 'node:path';
 
