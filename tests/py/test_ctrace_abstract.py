@@ -2,7 +2,7 @@
 comparison, against the concrete tracer run at every point of the box.
 
 For ``if (L OP R)`` with ``OP`` each of ``< <= > >= == !=``, the operands a variable and a
-constant in both orders or two variables, of signed and unsigned 16- and 32-bit types, each
+constant in both orders or two variables, of signed and unsigned 16- and 32-bit types on a 32-bit and a 16-bit `int`, each
 box a few values either side of the comparison's boundary: every value a branch's copy
 statement stores at some point lies in its proven range (soundness), and where the
 comparison's operands keep their values in its type (the narrowing applies) the proven range
@@ -15,35 +15,41 @@ from __future__ import annotations
 import itertools
 import random
 
+import pytest
+
 from pulab.ctrace import compile_code, run_checked
 from pulab.ctrace.prove import prove_code
 
 OPS = ("<", "<=", ">", ">=", "==", "!=")
-#: (C type, lo, hi, rank ≥ int) of the arm target (32-bit int).
-TYPES = {"int16_t": (-32768, 32767, False), "uint16_t": (0, 65535, False),
-         "int32_t": (-2 ** 31, 2 ** 31 - 1, True), "uint32_t": (0, 2 ** 32 - 1, True)}
+#: C type → (lo, hi).
+TYPES = {"int16_t": (-32768, 32767), "uint16_t": (0, 65535),
+         "int32_t": (-2 ** 31, 2 ** 31 - 1), "uint32_t": (0, 2 ** 32 - 1)}
 SEED = 20261127
 
 
-def _operand_range(tx: str, ty: str) -> tuple:
-    """The range of the type both operands convert to (C99 6.3.1.8 on arm: 16-bit types
-    promote to int; int32 with uint32 is unsigned)."""
-    unsigned = any(t == "uint32_t" for t in (tx, ty))
-    return (0, 2 ** 32 - 1) if unsigned else (-2 ** 31, 2 ** 31 - 1)
+def _operand_range(target: str, tx: str, ty: str) -> tuple:
+    """The range of the type both operands convert to (C99 6.3.1.8). arm (32-bit int): 16-bit
+    types promote to int, int32 with uint32 is unsigned. c28x (16-bit int): uint16 is unsigned
+    int, int32 is long (which holds every unsigned int), uint32 unsigned long."""
+    if "uint32_t" in (tx, ty):
+        return 0, 2 ** 32 - 1
+    if target == "arm" or "int32_t" in (tx, ty):
+        return -2 ** 31, 2 ** 31 - 1
+    return (0, 65535) if "uint16_t" in (tx, ty) else (-32768, 32767)
 
 
 def _near(rng, t: str, centre: int, width: int) -> list:
-    lo, hi = TYPES[t][:2]
+    lo, hi = TYPES[t]
     a = max(lo, min(hi - width, centre - rng.randint(0, width)))
     return [a, a + width]
 
 
-def _case(rng):
-    """(code, box, the operands' value ranges): one comparison at its boundary."""
+def _case(rng, target: str):
+    """(code, box, whether the narrowing applies): one comparison at its boundary."""
     op = rng.choice(OPS)
     form = rng.choice(("x_c", "c_x", "x_y"))
     tx, ty = rng.choice(list(TYPES)), rng.choice(list(TYPES))
-    lo, hi, _ = TYPES[tx]
+    lo, hi = TYPES[tx]
     c = rng.choice([lo, hi, 0, 1, -1 if lo < 0 else 2, rng.randint(lo, hi)])
     c = max(lo, min(hi, c))
     box = {"x": _near(rng, tx, c, rng.randint(0, 5))}
@@ -51,8 +57,9 @@ def _case(rng):
         box["y"] = _near(rng, ty, c + rng.randint(-3, 3), rng.randint(0, 5))
         test, ranges = "x OP y", [box["x"], box["y"]]
     else:
+        # the literal has the type of x (a suffix or a cast where the target's int differs)
         ty = tx
-        lit = f"{c}u" if tx == "uint32_t" else str(c) if c != -2 ** 31 else "(-2147483647 - 1)"
+        lit = f"({tx}){c}" if c != -2 ** 31 else "(int32_t)(-2147483647 - 1)"
         box["y"] = [0, 0]
         test = f"x OP {lit}" if form == "x_c" else f"{lit} OP x"
         ranges = [box["x"], [c, c]]
@@ -65,18 +72,19 @@ def _case(rng):
     {ty} ey = y;
   }}
 }}"""
-    olo, ohi = _operand_range(tx, ty)
+    olo, ohi = _operand_range(target, tx, ty)
     narrows = all(olo <= v <= ohi for r in ranges for v in r)
     return code, box, narrows
 
 
-def test_branch_ranges_are_the_hulls_of_the_traced_values_at_every_boundary():
+@pytest.mark.parametrize("target", ["arm", "c28x"])
+def test_branch_ranges_are_the_hulls_of_the_traced_values_at_every_boundary(target):
     rng = random.Random(SEED)
     tally = {"cases": 0, "exact": 0, "points": 0, "dead_sides": 0}
     for _ in range(800):
-        code, box, narrows = _case(rng)
-        checked = compile_code(code, "arm", entry="f")
-        r = prove_code(code, "arm", "f", box)
+        code, box, narrows = _case(rng, target)
+        checked = compile_code(code, target, entry="f")
+        r = prove_code(code, target, "f", box)
         ranges = {(s["line"], s["column"]): s["range"] for s in r["statements"]
                   if s["range"] is not None and s["line"] >= 3 and s["code"] != "} else {"}
         hulls: dict = {}
