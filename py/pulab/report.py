@@ -29,7 +29,8 @@ __all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", 
 def _profile_warnings(prof: dict) -> list:
     """One warning per profile constant the firmware could not store as intended, as
     ``(catalog code, params)`` pairs."""
-    w = [("warning.ti_check", {"code": code, "why": why}) for code, why in prof["ti"]["checks"]]
+    w = [("warning.ti_check", {"code": code, "why": why})
+         for code, why in prof["ti"]["checks"]] if "ti" in prof else []
     for name, p in prof.items():
         for k, c in p["constants"].items():
             params = {"path": f"profiles.{name}.{k}", "ideal": c["ideal"], "format": c["format"],
@@ -141,11 +142,16 @@ def report_steps(inp: dict):
     pi = current_pi_section(n, b)
     pi["step_example"] = _pi_example(pi["d"], vendor) if _LIMITS <= vendor.keys() else None
     prof = None
-    if "profiles" in n:  # only when asked: the five profiles cost more than the rest
+    shipped = c["firmware"]
+    # The five profiles only when asked (they cost more than the rest); the one shipped always,
+    # so that one report holds its integers and the review grades what it cannot hold.
+    if "profiles" in n or shipped != "inovance":
         from . import profiles as _profiles
         ctx = _profiles.context(n, raw, vendor, pi, firmware["inovance"]["problems"])
-        n["profiles"] = _profiles.options(n["profiles"], ctx)
-        prof = _profiles.profiles(ctx, n["profiles"])
+        opts = _profiles.options(n.get("profiles"), ctx)
+        if "profiles" in n:
+            n["profiles"] = opts
+        prof = _profiles.profiles(ctx, opts, None if "profiles" in n else (shipped,))
         firmware.update({name: p.pop("status") for name, p in prof.items()})
     out = {
         "input": {k: v for k, v in n.items() if k not in ("sim", "analysis", "datasheet")},

@@ -4,9 +4,10 @@
 //   default page cold (fresh profile) and warm (reload), share link cold (#in=, not the seed),
 //   a page with 6 different ?embed= iframes (runtimes started, time to all live, PSS of Chromium),
 //   a docs page of another origin with 12 <pu-lab-panel> (the same numbers),
-//   input → all numbers updated (in page, dataset.updateMs), typed by Playwright fill and by keyboard events.
+//   input → all numbers updated (in page, dataset.updateMs), typed by Playwright fill and by keyboard events,
+//   typing: keystroke → numbers and answer strip current, Inovance and Microchip side by side (fresh profiles).
 // Each boot is printed in phases (ms since navigation) from <html data-t-…> marks.
-// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=cold,warm,share,nosnap,embeds,elements,input
+// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=cold,warm,share,nosnap,embeds,elements,input,typing
 // picks scenarios (nosnap: cold with the snapshot refused, the fallback boot).
 import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
@@ -23,7 +24,7 @@ if (!existsSync(CHROMIUM)) {
   process.exit(0);
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
-const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,nosnap,embeds,elements,input').split(','));
+const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,nosnap,embeds,elements,input,typing').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
 if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--configLoader', 'runner', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
@@ -191,15 +192,21 @@ function reportEmbeds(name, runs, what = '6 ?embed= iframes') {
 async function freshProfiles(elements) {
   await browser.close();
   const runs = [];
-  for (let i = 0; i < RUNS; i++) {
-    const dir = mkdtempSync(join(tmpdir(), 'pulab-bench-profile-'));
-    const ctx = await chromium.launchPersistentContext(dir, { executablePath: CHROMIUM, args: CHROMIUM_ARGS, viewport: { width: 1366, height: 768 } });
-    runs.push(await embedsRun(ctx, await ctx.newCDPSession(ctx.pages()[0]), dir, elements));
+  for (let i = 0; i < RUNS; i++) runs.push(await inFreshProfile(async (ctx, dir) => embedsRun(ctx, await ctx.newCDPSession(ctx.pages()[0]), dir, elements)));
+  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
+  return runs;
+}
+
+/** `run(ctx, dir)` in a Chromium of its own with a new profile on disk (`dir`), removed after. */
+async function inFreshProfile(run) {
+  const dir = mkdtempSync(join(tmpdir(), 'pulab-bench-profile-'));
+  const ctx = await chromium.launchPersistentContext(dir, { executablePath: CHROMIUM, args: CHROMIUM_ARGS, viewport: { width: 1366, height: 768 } });
+  try {
+    return await run(ctx, dir);
+  } finally {
     await ctx.close();
     rmSync(dir, { recursive: true, force: true });
   }
-  browser = await chromium.launch({ executablePath: CHROMIUM, args: CHROMIUM_ARGS });
-  return runs;
 }
 
 if (SCEN.has('embeds')) {
@@ -262,6 +269,79 @@ if (SCEN.has('input')) {
     console.log(`page: input → all numbers updated (${driver.padEnd(8)}) p50 ${q(upd, 0.5).toFixed(1)} ms, p95 ${q(upd, 0.95).toFixed(1)} ms   (target p95 ≤ 30); first 10 edits p50 ${q(first, 0.5).toFixed(1)} ms, the other 30 p50 ${q(rest, 0.5).toFixed(1)} / p95 ${q(rest, 0.95).toFixed(1)} ms`);
     console.log(`page:   report round trip to the worker  p50 ${q(rep, 0.5).toFixed(1)} ms, p95 ${q(rep, 0.95).toFixed(1)} ms  (in the worker: p50 ${q(wrk, 0.5).toFixed(1)} ms, p95 ${q(wrk, 0.95).toFixed(1)} ms)`);
     console.log(`page:   rendering the new report         p50 ${q(ren, 0.5).toFixed(1)} ms, p95 ${q(ren, 0.95).toFixed(1)} ms;  slowest panels (median ms when among the 3 slowest): ${[...slow].sort((a, b) => q(b[1], 0.5) - q(a[1], 0.5)).slice(0, 5).map(([id, v]) => `${id} ${q(v, 0.5).toFixed(1)}`).join(', ')}`);
+  }
+}
+/** `pick(report)` of CPython's pulab for the input JSON `text` with R_s = each of `digits` Ω. */
+function typingExpected(text, digits, pick) {
+  const inputs = digits.map((d) => {
+    // the report the page asks for: no simulation, no loop analysis
+    const { sim: _s, analysis: _a, ...inp } = JSON.parse(text);
+    inp.motor.rs_ohm = d;
+    return inp;
+  });
+  const reports = JSON.parse(execFileSync('python3', ['-c', 'import json,sys; from pulab import report; print(json.dumps([report(i) for i in json.load(sys.stdin)]))'], {
+    cwd: ROOT, env: { ...process.env, PYTHONPATH: join(ROOT, 'py') }, input: JSON.stringify(inputs),
+  }).toString());
+  return reports.map(pick);
+}
+
+if (SCEN.has('typing')) {
+  // Typing with the answer strip, Inovance and a non-Inovance firmware side by side: in a fresh
+  // profile per run, the default page, the firmware picked in the strip, then keystrokes in R_s as
+  // a user overtypes a value (select all, one digit: R_s = 2, 3, 4, 5, 1 Ω, twice). Each is timed
+  // in the page from the key's event time to the DOM mutation that makes the numbers current:
+  // <html data-numbers="live"> and the strip's integer that R_s moves equal to CPython's pulab.
+  const DIGITS = [2, 3, 4, 5, 1, 2, 3, 4, 5, 1];
+  const FIRMWARE = [['inovance', 'current_pi.d.pm_ki', (r) => r.current_pi.d.pm_ki], ['microchip', 'profiles.microchip.constants.KII.value', (r) => r.profiles.microchip.constants.KII.value]];
+  const rows = [];
+  for (const [fw, key, pick] of FIRMWARE) {
+    let want = null;
+    const loadBefore = loadavg()[0];
+    const ms = [];
+    const runMedians = [];
+    const pageMs = [];
+    for (let i = 0; i < RUNS; i++) {
+      await inFreshProfile(async (ctx) => {
+        const p = ctx.pages()[0] ?? await ctx.newPage();
+        await boot(p, url);
+        if (fw !== 'inovance') await p.selectOption('select[name="answer.profile"]', fw);
+        await p.waitForSelector(`section.answer [data-key="${key}"][data-value]`, { timeout: 30_000 });
+        await p.waitForFunction(isLive, null, { timeout: 30_000 });
+        await p.waitForTimeout(3000); // the simulation runtime's boot and first run
+        // The page's own input (its link), with each typed R_s, computed by CPython's pulab.
+        want ??= typingExpected(await p.evaluate(() => decodeURIComponent(/[#&]in=([^&]*)/.exec(location.hash)[1])), DIGITS, pick);
+        const field = 'input[name="motor.rs_ohm"]';
+        await p.focus(field);
+        const one = [];
+        for (let k = 0; k < DIGITS.length; k++) {
+          await p.keyboard.press('Control+A');
+          await p.evaluate(([sel, w]) => {
+            window.benchKey = new Promise((resolve, reject) => {
+              let t0 = null;
+              const current = () => document.documentElement.dataset.numbers === 'live'
+                && JSON.parse(document.querySelector(sel)?.dataset.value ?? 'null') === w;
+              const obs = new MutationObserver(() => {
+                if (t0 === null || !current()) return;
+                obs.disconnect();
+                resolve(performance.now() - t0);
+              });
+              obs.observe(document.documentElement, { attributes: true, childList: true, subtree: true, characterData: true });
+              window.addEventListener('keydown', (ev) => { t0 = ev.timeStamp; }, { once: true, capture: true });
+              setTimeout(() => reject(new Error(`no current numbers for ${w} within 10 s`)), 10_000);
+            });
+          }, [`section.answer [data-key="${key}"]`, want[k]]);
+          await p.keyboard.press(String(DIGITS[k]));
+          one.push(await p.evaluate(() => window.benchKey));
+          pageMs.push(Number(await p.evaluate(() => document.documentElement.dataset.updateMs)));
+        }
+        ms.push(...one);
+        runMedians.push(q(one, 0.5));
+      });
+    }
+    rows.push({ fw, ms, runMedians, pageMs, load: [loadBefore, loadavg()[0]] });
+  }
+  for (const r of rows) {
+    console.log(`page: keystroke → numbers + answer strip current (${r.fw.padEnd(9)}) p50 ${q(r.ms, 0.5).toFixed(1)} ms, p95 ${q(r.ms, 0.95).toFixed(1)} ms over ${r.ms.length} keystrokes; run medians ${r.runMedians.map((x) => x.toFixed(1)).join(', ')} ms; the page's own updateMs p50 ${q(r.pageMs, 0.5).toFixed(1)} ms; load (1 min) ${r.load.map((x) => x.toFixed(2)).join(' → ')}`);
   }
 }
 await browser.close();

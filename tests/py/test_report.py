@@ -100,6 +100,26 @@ def test_firmware_limits_leave_the_physics(seed_input, patch, field, missing):
     assert p.returncode == 0 and json.loads(p.stdout)["firmware"]["inovance"] == st
 
 
+def test_the_firmware_shipped_is_in_the_plain_report():
+    """conventions.firmware = microchip without a profiles section: the report holds that
+    profile (the page's answer strip needs no second call), and the review grades what it
+    cannot hold as a warning. The 380 V motor's Microchip current base (2·√2·15 A) overflows."""
+    inp = json.loads((ROOT / "tests/golden/04_ind380_7k5.json").read_text())["input"]
+    plain = report(inp)
+    assert set(plain["firmware"]) == {"inovance"} and "profiles" not in plain
+    shipped = copy.deepcopy(inp)
+    shipped.setdefault("conventions", {})["firmware"] = "microchip"
+    r = report(shipped)
+    assert set(r["profiles"]) == {"microchip"} and "profiles" not in r["input"]
+    assert not r["firmware"]["microchip"]["representable"]
+    x = [x for x in r["review"]["findings"] if x["key"] == "firmware.microchip"]
+    assert len(x) == 1 and x[0]["severity"] == "warning"
+    # the same integers as the five profiles asked for (the vendors panel's request)
+    full = report({**shipped, "profiles": {}})
+    assert r["profiles"]["microchip"] == full["profiles"]["microchip"]
+    assert r["firmware"]["microchip"] == full["firmware"]["microchip"]
+
+
 def test_missing_field(seed_input):
     del seed_input["motor"]["bemf_v"]
     with pytest.raises(InputError, match="motor.bemf_v: is required"):

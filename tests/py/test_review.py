@@ -225,6 +225,15 @@ def test_the_firmware_shipped_grades_the_others_limits_as_notes():
     assert r["review"]["headroom"]["limit_v"] == 24 / math.sqrt(2)
 
 
+def test_a_firmware_that_cannot_hold_the_motor_is_named_as_the_reader_knows_it():
+    """The finding names the profile as the picker does (Inovance, 汇川), not by its id."""
+    inp = json.loads((ROOT / "tests/golden/23_limit_robot_28krpm.json").read_text())["input"]
+    x = [x for x in report(inp)["review"]["findings"] if x["code"] == "unrepresentable"][0]
+    assert x["message"].startswith("the Inovance firmware cannot hold this motor (raw.FullFreq01")
+    assert x["message_zh"].startswith("汇川固件无法表示这台电机（raw.FullFreq01")
+    assert x["key"] == "firmware.inovance"
+
+
 def test_the_shipped_firmwares_integer_pi_wraps_are_an_error():
     # 20 kHz bandwidth: Microchip's KIP needs Q11 (gain > 1), the DKNP shift then overflows
     # int32 in the step (the C oracle counts the same wraps, test_vendor_loop).  Shipping

@@ -162,6 +162,13 @@ def test_report_metrics_of_every_profile(seed_input):
         assert len(b["variant"]["iq"]) == len(c["t"])
 
 
+def test_every_profile_runs_whichever_firmware_is_shipped(seed_input):
+    # The report then holds the shipped profile alone; the simulation still runs all of them.
+    r = report({**seed_input, "sim": {}, "conventions": {"firmware": "ti"}})
+    assert list(r["profiles"]) == ["ti"]
+    assert sorted(r["sim"]["current"]["by_profile"]) == sorted(vendor_loop.NAMES)
+
+
 def test_a_profile_that_cannot_hold_the_gains_does_not_run(seed_input):
     # 500 kHz bandwidth: kp·I_FS/V_FS = 2π·5e5·6e-4·4.243/24 ≈ 333, beyond IQ24's ±128 —
     # TI's Kp does not fit, so TI has no run; it names the fields of firmware.ti.problems.

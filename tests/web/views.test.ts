@@ -31,4 +31,19 @@ describe('views', () => {
     expect(root.querySelector('nav.tabs a.on')?.getAttribute('data-view')).toBe('loops');
     root.remove();
   });
+
+  it('each view shows its panels in the order its sub-navigation lists them', () => {
+    const root = h('div');
+    document.body.append(root);
+    const layout = new Layout(root, null);
+    layout.build(h('header'));
+    for (const v of VIEWS.filter((x) => x.id !== 'learn')) {
+      layout.showView(v.id);
+      const shown = [...root.querySelectorAll<HTMLElement>('section.panel')].filter((s) => !s.hidden).map((s) => s.dataset.panel);
+      const nav = [...root.querySelectorAll<HTMLElement>('nav.subtabs a[data-nav]')].map((a) => a.dataset.nav);
+      expect(shown).toEqual(v.panels);
+      expect(nav).toEqual(v.panels);
+    }
+    root.remove();
+  });
 });

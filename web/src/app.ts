@@ -15,6 +15,7 @@ import { pageEnv } from './page/env';
 import { ComputeSession } from './page/session';
 import { InputForm } from './page/form';
 import { Layout } from './page/layout';
+import { closeInputs } from './page/drawer';
 import { StatusLine } from './page/status';
 import { langSwitch, renderHeader } from './page/header';
 import { handleLinks } from './page/links';
@@ -78,16 +79,29 @@ export class App {
     this.status = new StatusLine(root, this.session);
     this.useInitial(this.init);
     if (this.embed) linkToHost(this.embed, () => this.session.report);
-    window.addEventListener('hashchange', () => {
-      const next = initialInput(location.hash, null);
-      if (next.source === 'url' && JSON.stringify(effectiveInput(next.input)) !== JSON.stringify(effectiveInput(this.session.input))) {
-        this.session.replaceInput(next.input);
-        this.init = next;
-        this.useInitial(next);
-        this.form.render();
-        this.showStateBanner();
-      }
-    });
+    window.addEventListener('hashchange', () => this.followLink());
+  }
+
+  /**
+   * A link opened in this tab that differs only in its hash (the browser does not reload): the
+   * page becomes what opening it afresh gives — its inputs and display units, their numbers, the
+   * opening view from the top, the inputs drawer closed. The page's own writes to the address bar
+   * (history.replaceState) fire no hashchange; a hash without state (#panel-…) changes nothing.
+   */
+  private followLink(): void {
+    const next = initialInput(location.hash, null);
+    if (next.source !== 'url') return;
+    // The units first: before Python is ready the session writes the address bar at once.
+    this.form.useUnits(location.hash);
+    if (JSON.stringify(effectiveInput(next.input)) !== JSON.stringify(effectiveInput(this.session.input))) this.session.replaceInput(next.input);
+    this.init = next;
+    this.useInitial(next);
+    this.form.render();
+    this.showErrors();
+    this.showStateBanner();
+    this.layout.showOpeningView();
+    closeInputs();
+    window.scrollTo({ top: 0 });
   }
 
   /** Problems of the opened state: notes at their fields, and the link kept while it is broken. */

@@ -76,6 +76,8 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
   'datasheet.ld_phase_h': { units: L_UNITS },
   'datasheet.lq_phase_h': { units: L_UNITS },
   'drive.base_freq_hz': { placeholderFrom: 'base.f_b' },
+  // from the datasheet's DC bus when not typed: the bus every voltage limit is graded against
+  'drive.udc_v': { placeholderFrom: 'input.drive.udc_v' },
   'drive.ts_s': { units: ['µs', 'kHz', 's'] },
   'current_loop.bandwidth_hz': { enabled: (i) => loop(i) === 'bandwidth' || loop(i) === 'damping' },
   'current_loop.damping': { enabled: (i) => loop(i) === 'damping' },

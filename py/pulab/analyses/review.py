@@ -371,7 +371,8 @@ def _firmware(f: list, firmware: dict, shipped: str) -> None:
         _finding(f, "warning" if name == shipped else "note", "unrepresentable",
                  f"firmware.{name}", _FIRMWARE, name,
                  None if missing else "unrepresentable_constants",
-                 profile=name, fields=", ".join(x["field"] for x in p),
+                 profile=name, profile_name={"vendor": name},
+                 fields=", ".join(x["field"] for x in p),
                  results=", ".join(results), advice={"code": p[0]["code"] + "_advice"
                  if p[0]["code"].startswith("limit.") else "limit.constant_advice",
                  "params": p[0]["params"]})

@@ -113,15 +113,16 @@ def bases_table(name: str, ctx: dict, p: dict) -> dict:
             "Z_b": u / i, "L_b": l_b, "kp_per_unit_of_1_ohm": i / u}
 
 
-def profiles(ctx: dict, opts: dict) -> dict:
-    """Every profile: ``inputs`` (options used), ``constants``, ``bases``, ``files`` and
-    ``status`` (:func:`pulab.profiles.limits.status`: what this firmware cannot hold).
+def profiles(ctx: dict, opts: dict, names: tuple | None = None) -> dict:
+    """Every profile (or those in ``names``): ``inputs`` (options used), ``constants``,
+    ``bases``, ``files`` and ``status`` (:func:`pulab.profiles.limits.status`: what this
+    firmware cannot hold).
 
     Each profile is a lens that fails on its own: a constant that does not fit its word is
     a problem of that profile, never an error of the report.
     """
     out = {}
-    for name in NAMES:
+    for name in names or NAMES:
         p = MODULES[name].profile(ctx, opts[name])
         p["bases"] = bases_table(name, ctx, p)
         p["files"] = MODULES[name].FILES

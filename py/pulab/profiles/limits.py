@@ -65,7 +65,8 @@ def raw_problem(name: str, value: int, results: list, inductance_unit: str = "10
     stored = value & 0xFFFF
     max_si = round(0xFFFF / scale, 12)
     params = {"name": name, "unit": unit[0], "max": max_si, "si_unit": unit[1], "source": path,
-              "si": value / scale, "value": value, "stored": stored,
+              # the text names that SI field by its form label, in the reader's language
+              "source_label": {"label": path}, "si": value / scale, "value": value, "stored": stored,
               "stored_si": stored / scale, "results": ", ".join(sorted(results)) or "—"}
     return _entry(f"raw.{name}", "limit.uint16", params, results, "limit.uint16_advice",
                   value=value, stored=stored, max_si=max_si)

@@ -5,7 +5,8 @@ this table gives its words.  A parameter that is itself an error
 (``{"code": …, "params": …}``) is rendered in the same language, so a derived
 value's error reads as one sentence in either language.
 
-A parameter ``{"label": path}`` is that input's form label in the language of the text.
+A parameter ``{"label": path}`` is that input's form label in the language of the text, and
+``{"vendor": name}`` a firmware profile's name (``inovance`` is Inovance, 汇川).
 
 Adding an error: one entry here; ``tests/py/test_schema.py`` renders every code
 in both languages.
@@ -578,18 +579,18 @@ MESSAGES = {
                               "loop.robust.{name}：{axis} 轴{what} {shown}，工况 {temp_c:g} °C、"
                               "{current_a:.4g} A、U_dc {udc_v:.4g} V（低于 {threshold}；固件增益按标称"
                               "电机整定）；{fix}"),
-    "finding.unrepresentable": ("the {profile} firmware cannot hold this motor ({fields}): {results} "
-                                "are not computed. {advice}",
-                                "{profile} 固件无法表示这台电机（{fields}）：{results} 无法计算。{advice}"),
-    "finding.unrepresentable_constants": ("the {profile} firmware cannot hold this motor: {results} do "
-                                          "not fit their words and keep the largest integer instead. "
-                                          "{advice}",
-                                          "{profile} 固件无法表示这台电机：{results} 超出其字长，只能存下"
+    "finding.unrepresentable": ("the {profile_name} firmware cannot hold this motor ({fields}): "
+                                "{results} are not computed. {advice}",
+                                "{profile_name}固件无法表示这台电机（{fields}）：{results} 无法计算。{advice}"),
+    "finding.unrepresentable_constants": ("the {profile_name} firmware cannot hold this motor: "
+                                          "{results} do not fit their words and keep the largest "
+                                          "integer instead. {advice}",
+                                          "{profile_name}固件无法表示这台电机：{results} 超出其字长，只能存下"
                                           "最大整数。{advice}"),
-    "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and {source} = "
-                     "{si:g} {si_unit} needs {value}; a 16-bit parameter would keep {stored} "
-                     "({stored_si:g} {si_unit}). Not computed: {results}",
-                     "{name} 是以 {unit} 为单位的 Uint16，最大只能表示 {max:g} {si_unit}；{source} = "
+    "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and "
+                     "{source_label} = {si:g} {si_unit} needs {value}; a 16-bit parameter would "
+                     "keep {stored} ({stored_si:g} {si_unit}). Not computed: {results}",
+                     "{name} 是以 {unit} 为单位的 Uint16，最大只能表示 {max:g} {si_unit}；{source_label} = "
                      "{si:g} {si_unit} 需要 {value}，16 位参数只会存下 {stored}（{stored_si:g} "
                      "{si_unit}）。无法计算：{results}"),
     "limit.uint16_advice": ("This is a limit of the vendor's code, not of the motor or of your inputs: "
@@ -631,6 +632,20 @@ MESSAGES = {
 }
 
 
+#: A firmware profile's name in each language (``{"vendor": name}``).
+VENDOR_NAMES = {"inovance": ("Inovance", "汇川"), "ti": ("TI", "TI"), "nxp": ("NXP", "NXP"),
+                "st": ("ST", "ST"), "microchip": ("Microchip", "Microchip")}
+
+
+def _word(v, lang: str):
+    """A parameter as its text's word: a form label or a profile's name; else ``v`` itself."""
+    if isinstance(v, dict) and set(v) == {"label"}:
+        return _label(v["label"], lang)
+    if isinstance(v, dict) and set(v) == {"vendor"} and v["vendor"] in VENDOR_NAMES:
+        return VENDOR_NAMES[v["vendor"]][0 if lang == "en" else 1]
+    return v
+
+
 def _label(path: str, lang: str) -> str:
     from .fields import FIELD  # data only; imported late to keep this module first to load
     f = FIELD.get(path)
@@ -649,9 +664,8 @@ def render(code: str, params: dict, lang: str) -> str:
         from .messages import to_zh
         return to_zh(params["text"])
     en, zh = MESSAGES[code]
-    # A field's form label in this language: {"label": path}.
-    params = {k: _label(v["label"], lang) if isinstance(v, dict) and set(v) == {"label"} else v
-              for k, v in params.items()}
+    # A field's form label or a profile's name in this language.
+    params = {k: _word(v, lang) for k, v in params.items()}
     # A nested error sees the outer params it does not set itself (e.g. a finding's label).
     plain = {k: v for k, v in params.items() if not (isinstance(v, dict) and "code" in v)}
     values = {k: render(v["code"], {**plain, **v["params"]}, lang)

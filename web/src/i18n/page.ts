@@ -4,7 +4,7 @@ import { dict } from './dict';
 export default dict(
   {
     title: 'pu-lab',
-    subtitle: 'Per-unit & Q-format scaling of Inovance C2000 PMSM firmware',
+    subtitle: 'Per-unit & Q-format scaling of PMSM firmware: Inovance, TI, NXP, ST, Microchip',
     preset: 'Preset',
     presetCustom: '(your values)',
     copyLink: 'Copy link',
@@ -60,7 +60,7 @@ export default dict(
   },
   {
     title: 'pu-lab',
-    subtitle: '汇川 C2000 永磁同步电机固件的标幺化与 Q 格式定标',
+    subtitle: '永磁同步电机固件的标幺化与 Q 格式定标：汇川、TI、NXP、ST、Microchip',
     preset: '预设',
     presetCustom: '（自定义参数）',
     copyLink: '复制链接',

@@ -3,10 +3,10 @@
 // repeated data-keys, equal values); a firmware that cannot hold the motor says why here too, with the same box as its panel.
 import { h, num, patch } from '../dom';
 import { t, type Key } from '../i18n';
-import { VENDOR_NAMES } from '../report-types';
+import { VENDOR_NAMES, type ProfileReport } from '../report-types';
 import type { PanelContext } from '../panels/panel';
 import { limitsBox } from '../panels/limits';
-import { VENDORS, profilesFor, type Vendor } from '../panels/vendors';
+import { VENDORS, shippedProfileReport, type Vendor } from '../panels/vendors';
 import { allFindings, reviewCounts } from '../panels/review';
 
 /** The firmware the reader ships: the input's `conventions.firmware` (the review grades by it). */
@@ -35,11 +35,10 @@ function inovanceChips(ctx: PanelContext): HTMLElement[] {
   return [...ints, ...pi];
 }
 
-/** Another vendor: every constant of its profile (a report of its own, see vendors.ts). */
-function profileChips(ctx: PanelContext, v: Vendor, again: () => void): HTMLElement[] {
-  const consts = profilesFor(ctx, again)?.[v]?.constants;
-  if (!consts) return [h('span', { class: 'num pending' }, t('answerPending'))];
-  return Object.entries(consts).map(([k, c]) => chip(k, `profiles.${v}.constants.${k}.value`, c.value, c.flags.some((f) => f === 'out_of_range' || f === 'saturate')));
+/** Another vendor: every constant of its profile (vendors.ts shippedProfileReport). */
+function profileChips(p: ProfileReport | undefined, v: Vendor): HTMLElement[] {
+  if (!p) return [h('span', { class: 'num pending' }, t('answerPending'))];
+  return Object.entries(p.constants).map(([k, c]) => chip(k, `profiles.${v}.constants.${k}.value`, c.value, c.flags.some((f) => f === 'out_of_range' || f === 'saturate')));
 }
 
 /**
@@ -58,6 +57,7 @@ function reviewLine(ctx: PanelContext): HTMLElement[] {
  * sets the shipped firmware in the input. */
 export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => void, pick: (v: Vendor) => void): void {
   const v = shippedProfile(ctx);
+  const other = v === 'inovance' ? null : shippedProfileReport(ctx, v, again);
   const picker = h('select', {
     name: 'answer.profile', 'aria-label': t('answerProfile'),
     onchange: (ev: Event) => pick((ev.target as HTMLSelectElement).value as Vendor),
@@ -68,8 +68,8 @@ export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => vo
       h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), picker),
       reviewLine(ctx)),
     h('div', { class: 'answer-ints', 'data-profile': v },
-      h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(ctx, v, again),
+      h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(other?.profile, v),
         h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers'))),
-      limitsBox(v, ctx.report?.firmware?.[v])),
+      limitsBox(v, v === 'inovance' ? ctx.report?.firmware?.inovance : other?.status)),
   );
 }

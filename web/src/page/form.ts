@@ -26,9 +26,14 @@ export function otherField(e: ApiErr): string | null {
 
 export class InputForm {
   constructor(private root: HTMLElement, private session: ComputeSession) {
-    // A shared link's units (&u=) win over the ones this browser chose last; both checked.
-    const fromLink = decodeUnits(location.hash);
-    session.units = checkUnits(fromLink ? JSON.stringify(fromLink) : load(UNITS_KEY));
+    this.useUnits(location.hash);
+  }
+
+  /** The display units to show: a link's (`hash` with &u=) win over the ones this browser chose
+   * last; both checked. */
+  useUnits(hash: string): void {
+    const fromLink = decodeUnits(hash);
+    this.session.units = checkUnits(fromLink ? JSON.stringify(fromLink) : load(UNITS_KEY));
   }
 
   /** The display unit chosen for each field (the session keeps it for links). */
@@ -69,7 +74,7 @@ export class InputForm {
     const unitEl = f.units
       ? h('select', { class: 'unit', 'data-unit-for': f.path, 'aria-label': t('unit'), disabled: !enabled, onchange: (ev: Event) => this.onUnit(f, (ev.target as HTMLSelectElement).value as UnitId) },
           // "kHz" on a period field is the control frequency f_s = 1/Ts (said in the tooltip: a
-          // longer label is cut in the 64 px unit box).
+          // longer label is cut in the 72 px unit box).
           f.units.map((u) => h('option', { value: u, selected: this.unitOf(f) === u, title: u === 'kHz' ? 'f_s = 1/Ts' : null }, u)))
       : f.unit ? h('span', { class: 'unit' }, f.unit) : null;
     return h('label', { class: `field kind-${f.kind}${enabled ? '' : ' disabled'}` },

@@ -81,13 +81,16 @@ export class Layout {
       return;
     }
     this.views = viewsFor(panels.map((p) => p.id));
-    if (!this.views.some((v) => v.id === this.view)) this.view = (this.openOn && this.viewOf(this.openOn)) || (this.views[0]?.id ?? '');
+    if (!this.views.some((v) => v.id === this.view)) this.view = this.openingView();
     for (const sec of sections) this.revealOnScroll(sec);
+    // In the order the views list them (their sub-navigation's order), not the registry's.
+    const ids = this.views.flatMap((v) => v.panels);
+    const ordered = ids.map((id) => sections[panels.findIndex((p) => p.id === id)]);
     // Bases and per-unit values side by side on wide screens.
-    const ib = panels.findIndex((p) => p.id === 'bases');
-    const body = has('bases') && has('pu') && panels[ib + 1]?.id === 'pu'
-      ? [...sections.slice(0, ib), h('div', { class: 'pair' }, sections[ib], sections[ib + 1]), ...sections.slice(ib + 2)]
-      : sections;
+    const ib = ids.indexOf('bases');
+    const body = has('bases') && has('pu') && ids[ib + 1] === 'pu'
+      ? [...ordered.slice(0, ib), h('div', { class: 'pair' }, ordered[ib], ordered[ib + 1]), ...ordered.slice(ib + 2)]
+      : ordered;
     this.root.replaceChildren(
       chrome,
       h('div', { class: 'layout' },
@@ -116,6 +119,16 @@ export class Layout {
   /** The views (tabs) of this page, and the one shown. */
   private views: View[] = [];
   private view = '';
+
+  /** The view the page opens on: the one of `openOn`, else the first. */
+  private openingView(): string {
+    return (this.openOn && this.viewOf(this.openOn)) || (this.views[0]?.id ?? '');
+  }
+
+  /** Show the view the page opens on (a link opened in this tab). */
+  showOpeningView(): void {
+    this.showView(this.openingView());
+  }
 
   /** Show the view `id`: its panels, its tab marked, the panel links of its sub-navigation. */
   showView(id: string): void {

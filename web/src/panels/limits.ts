@@ -10,7 +10,12 @@ export function limitsBox(name: string, status: FirmwareStatus | undefined): HTM
   const zh = getLang() === 'zh';
   return h('div', { class: 'firmware-limits', role: 'note', 'data-firmware': name },
     h('p', { class: 'lbl' }, t('fw_cannot_hold')),
-    h('ul', {}, status.problems.map((p) => h('li', { 'data-field': p.field },
-      h('code', {}, p.field), ' ', zh ? p.message_zh : p.message,
-      h('div', { class: 'hint' }, zh ? p.advice_zh : p.advice)))));
+    h('ul', {}, status.problems.map((p) => {
+      const message = zh ? p.message_zh : p.message;
+      // The field's name once: most messages begin with it already.
+      const named = message.includes(p.field.split('.').pop() ?? p.field);
+      return h('li', { 'data-field': p.field },
+        named ? null : [h('code', {}, p.field), ' '], message,
+        h('div', { class: 'hint' }, zh ? p.advice_zh : p.advice));
+    })));
 }

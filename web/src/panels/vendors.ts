@@ -111,14 +111,21 @@ function rerender(): void {
 }
 
 /**
- * The profiles for the input in `ctx` (with this panel's hardware inputs), computed even while the
- * panel is off screen: for a reader who picked a profile other than Inovance. `changed` is called
- * when they arrive; until then the last ones (or null) are returned.
+ * The firmware the reader ships (`v`, not Inovance) as this panel shows it. The page's own report
+ * holds that profile with its default hardware (one Python call per keystroke); only with hardware
+ * inputs typed here for `v` are the panel's own profiles asked for, even while it is off screen,
+ * and `changed` is called when they arrive. Null until known.
  */
-export function profilesFor(ctx: PanelContext, changed: () => void): Record<string, ProfileReport> | null {
+export function shippedProfileReport(ctx: PanelContext, v: Vendor, changed: () => void): { profile: ProfileReport; status: FirmwareStatus | undefined } | null {
+  const typed = HW_FIELDS.some(([x, k]) => x === v && (vstate.hw[`profiles.${x}.${k}`] ?? '').trim() !== '');
+  if (!typed) {
+    const profile = ctx.report?.profiles?.[v];
+    return profile ? { profile, status: ctx.report?.firmware[v] } : null;
+  }
   onProfiles = changed;
   refresh(ctx);
-  return profiles;
+  const profile = profiles?.[v];
+  return profile ? { profile, status: firmware[v] } : null;
 }
 
 function refresh(ctx: PanelContext): void {

@@ -60,7 +60,8 @@ def profile_data(report: dict) -> tuple[dict, dict]:
     (profiles, status) — NAME → profile section, NAME → {representable, problems}
     """
     from ... import profiles as _profiles
-    if "profiles" in report:
+    # all five only when the input asked (a report without them holds the shipped one alone)
+    if "profiles" in report["input"]:
         return report["profiles"], report["firmware"]
     ctx = _profiles.context_of(report)
     prof = _profiles.profiles(ctx, _profiles.options({}, ctx))
