@@ -365,3 +365,7 @@ def test_q_auto_on_a_local_proposes_the_shift_its_stores_allow(box):
         assert got["shift"] == _best_shift(v, *word), (name, got)
         assert got["max_error_lsb"] == (2 ** -got["shift"] - 1 if got["shift"] < 0 else 0)
     assert set(r["proposals"]) == {"p", "y"}  # the inputs are not auto: no proposal
+    from pulab.cli.trace import format_prove_text
+    text = format_prove_text(r)
+    want = f"@q y auto (local): its stores compute {r['proposals']['y']['computed']}"
+    assert want in text and (("value >> 1" in text) == (r["proposals"]["y"]["shift"] == -1))
