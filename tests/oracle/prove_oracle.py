@@ -91,6 +91,28 @@ def block(name: str, raw: dict):
     return value, r.fail | outside | (value == 0)
 
 
+def ideal(name: str, raw: dict):
+    """The real value each result's integer stands for, from the per-unit bases of the same raw
+    parameters (seed 1.4-13: U_b = U_LL/√3, I_b, f_b; inductance raw in 0.01 mH), as float64
+    arrays: R_s/Z_b·2^16, L/L_b·2^13, f_n/f_b·2^15, ψ_r/ψ_b·2^12 (ψ_r from the line back-EMF at
+    f_n), (U_dc/√2)/U_LL·2^12 and ·2^24."""
+    f = {k: np.asarray(v, dtype=np.float64) for k, v in raw.items()}
+    u_b = f.get("Voltage", np.nan) / np.sqrt(3.0)
+    i_b, f_b = f.get("Current", np.nan) / 100.0, f.get("FullFreq01", np.nan) / 100.0
+    w_b = 2.0 * np.pi * f_b
+    if name == "Rpm":
+        return f["RsPm"] / 1000.0 / (u_b / i_b) * 2.0 ** 16
+    if name in ("LD", "LQ"):
+        return f[name] * 1e-5 / (u_b / (w_b * i_b)) * 2.0 ** 13
+    if name == "FreqPer":
+        return f["FreqRated01"] / 100.0 / f_b * 2.0 ** 15
+    if name == "FluxRotor":
+        psi = f["BemfVolt"] / 10.0 / np.sqrt(3.0) / (2.0 * np.pi * f["FreqRated01"] / 100.0)
+        return psi / (u_b / w_b) * 2.0 ** 12
+    q = 12 if name == "pm_maxout_vol" else 24
+    return f["uDCFilter"] / 10.0 / np.sqrt(2.0) / f["Voltage"] * 2.0 ** q
+
+
 def raw_box(inp: dict, ranges: dict) -> dict:
     """raw name → (lo, hi): the oracle's own SI → raw map at both ends of every range."""
     lo, hi = _raw_at(inp, ranges, 0), _raw_at(inp, ranges, 1)
@@ -135,7 +157,8 @@ def enumerate_box(name: str, box: dict, dims: list) -> dict:
     -------
     dict
         ``points`` (how many), ``fails`` (how many fail), ``first_fail`` (a failing raw
-        point or None), ``min``/``max`` of the value over the points that do not fail.
+        point or None), ``min``/``max`` of the value over the points that do not fail and
+        ``max_error_pct``, the largest |value − ideal|/ideal there, in percent.
     """
     keys = READS[name]
     used = [d for d in dims if set(d) & set(keys)]
@@ -155,9 +178,12 @@ def enumerate_box(name: str, box: dict, dims: list) -> dict:
     if fail.any():
         i = int(np.argmax(fail))
         first = {k: int(raw[k][i]) for k in keys}
+    with np.errstate(divide="ignore", invalid="ignore"):
+        err = np.abs(100.0 * (value - ideal(name, raw)) / ideal(name, raw))
     return {"points": int(fail.size), "fails": int(fail.sum()), "first_fail": first,
             "min": int(value[ok].min()) if ok.any() else None,
-            "max": int(value[ok].max()) if ok.any() else None}
+            "max": int(value[ok].max()) if ok.any() else None,
+            "max_error_pct": float(err[ok].max()) if ok.any() else None}
 
 
 def fails_at(name: str, point: dict) -> bool:
@@ -166,4 +192,4 @@ def fails_at(name: str, point: dict) -> bool:
     return bool(fail[0])
 
 
-__all__ = ["READS", "block", "raw_box", "raw_point", "dimensions", "enumerate_box", "fails_at"]
+__all__ = ["READS", "block", "ideal", "raw_box", "raw_point", "dimensions", "enumerate_box", "fails_at"]

@@ -324,3 +324,48 @@ def test_the_trace_marks_q_auto_inputs():
     assert r["vars"]["k"].get("q_auto") is True and "q_auto" not in r["vars"]["x"]
     r = trace("int16_t k; // @q k Q12\nint16_t y = k;", "arm", {"k": 4096})
     assert "q_auto" not in r["vars"]["k"] and r["vars"]["k"]["real"] == 1.0
+
+
+LOCALS = """int16_t gain(int16_t x, int16_t k) {
+  int32_t p = (int32_t)x * k; // @q p auto
+  int16_t y = p >> 12; // @q y auto
+  y += 3;
+  return y;
+}"""
+
+
+def _best_shift(values, lo, hi) -> int:
+    """The largest s with every value in [lo, hi] carrying s more fractional bits (s ≥ 0:
+    v·2^s … (v+1)·2^s − 1), or after dropping −s of them (s < 0: v >> −s)."""
+    for s in range(62, -64, -1):
+        if all(lo <= (v << s if s >= 0 else v >> -s) and
+               (((v + 1) << s) - 1 if s >= 0 else v >> -s) <= hi for v in values):
+            return s
+    raise AssertionError("no shift fits")
+
+
+@pytest.mark.parametrize("box", [{"x": [30000, 30010], "k": [8190, 8200]},
+                                 {"x": [-100, 100], "k": [32700, 32767]},
+                                 {"x": [-32768, -32760], "k": [-32768, -32765]}])
+def test_q_auto_on_a_local_proposes_the_shift_its_stores_allow(box):
+    # Exhaustive enumeration of the stores' values before conversion (C's >> of a negative
+    # int32: arithmetic on every target the tracer models, as Python's >>).
+    stores = {"p": set(), "y": set()}
+    for x in range(box["x"][0], box["x"][1] + 1):
+        for k in range(box["k"][0], box["k"][1] + 1):
+            p = x * k
+            y = ((p + 2 ** 31) % 2 ** 32 - 2 ** 31) >> 12  # p as int32 holds it
+            stores["p"].add(p)
+            stores["y"] |= {y, (y + 2 ** 15) % 2 ** 16 - 2 ** 15 + 3}
+    r = prove_code(LOCALS, "arm", "gain", box, budget=4000)
+    for name, word in (("p", (-2 ** 31, 2 ** 31 - 1)), ("y", (-2 ** 15, 2 ** 15 - 1))):
+        got = r["proposals"][name]
+        v = stores[name]
+        assert got["computed"] == [min(v), max(v)], (name, got)
+        assert got["shift"] == _best_shift(v, *word), (name, got)
+        assert got["max_error_lsb"] == (2 ** -got["shift"] - 1 if got["shift"] < 0 else 0)
+    assert set(r["proposals"]) == {"p", "y"}  # the inputs are not auto: no proposal
+    from pulab.cli.trace import format_prove_text
+    text = format_prove_text(r)
+    want = f"@q y auto (local): its stores compute {r['proposals']['y']['computed']}"
+    assert want in text and (("value >> 1" in text) == (r["proposals"]["y"]["shift"] == -1))

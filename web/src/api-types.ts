@@ -59,10 +59,15 @@ export interface CodeProof {
   budget: number; work: number; boxes: number; decided_fraction: number; proven_fraction: number;
   statements: CodeStatement[]; counterexample?: Record<string, number>;
   /** With `// @q NAME auto` inputs: the Q proposed for each, and the real ranges given. */
-  proposals?: Record<string, QProposal>; real?: Record<string, [number, number]>;
+  proposals?: Record<string, QProposal | LocalProposal>; real?: Record<string, [number, number]>;
+}
+/** `// @q NAME auto` on a local: what its stores compute over the box and the shift that fits them. */
+export interface LocalProposal {
+  local: true; type: string; bits: number; signed: boolean; computed: [number, number];
+  shift: number; max_error_lsb: number;
 }
 export interface QProposal {
-  q: number | null; type: string; bits: number; signed: boolean; range_real: [number, number];
+  local?: undefined; q: number | null; type: string; bits: number; signed: boolean; range_real: [number, number];
   raw_range: [number, number] | null; max_error: number | null; max_error_pct: number | null;
   tried: Record<string, 'proven' | 'violated' | 'unknown'>;
 }

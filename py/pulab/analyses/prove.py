@@ -21,7 +21,8 @@ of raw integers.  The vendor code itself (:data:`~pulab.profiles.inovance_code.V
 the statements the report runs) is evaluated over intervals of those integers
 (:class:`~pulab.fixedpoint.interval.ICInt`, the exact C semantics on ``[lo, hi]``),
 so its result encloses every value and flag of every point.  A box whose
-enclosure raises nothing is proven; otherwise its corners and centre are run
+enclosure raises nothing is proven (and its quantization error bounded by the floors of
+its statements, :func:`~pulab.profiles.inovance_code.error_bound`); otherwise its corners and centre are run
 concretely (a failure there is the counterexample), and else it is split in two
 along its relatively widest raw input.  A box of one raw point is evaluated
 exactly, so the split ends.
@@ -63,7 +64,8 @@ from typing import NamedTuple
 from ..fixedpoint.cint import UINT16, CDivisionByZero
 from ..fixedpoint.interval import ANY, Branch, Empty, ICInt, RInterval, Undecided, forcing
 from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR_READS,
-                                      VENDOR_RESULTS, Block, raw_source, raw_value)
+                                      VENDOR_RESULTS, Block, error_bound, raw_source,
+                                      raw_value)
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.inputs import SECTIONS, normalize
@@ -328,15 +330,10 @@ def _outside_statement(name: str, value: int) -> str:
 
 def _enclose(name: str, box: dict, unit: str) -> tuple:
     """(kinds, (lo, hi), word) of vendor result ``name`` over a raw box, by interval evaluation."""
-    kinds = set()
-    raw = {}
-    for k in VENDOR_READS[name]:
-        lo, hi = box[k]
-        if hi > _UINT16_MAX:
-            kinds.add("outside")
-        if lo > _UINT16_MAX:
-            return kinds, None, None
-        raw[k] = ICInt(lo, min(hi, _UINT16_MAX), UINT16)
+    kinds = {"outside"} if any(box[k][1] > _UINT16_MAX for k in VENDOR_READS[name]) else set()
+    if any(box[k][0] > _UINT16_MAX for k in VENDOR_READS[name]):
+        return kinds, None, None
+    raw = _raw_intervals(name, box)
     b = Block()
     try:
         VENDOR_CODE[name](b, raw, unit)
@@ -348,6 +345,12 @@ def _enclose(name: str, box: dict, unit: str) -> tuple:
     if lo <= 0 <= hi:
         kinds.add("zero")
     return kinds, (lo, hi), b.trace[-1]["type"]
+
+
+def _raw_intervals(name: str, box: dict) -> dict:
+    """The raw parameters result ``name`` reads, as Uint16 intervals (the part of each range
+    a Uint16 holds)."""
+    return {k: ICInt(box[k][0], min(box[k][1], _UINT16_MAX), UINT16) for k in VENDOR_READS[name]}
 
 
 def _volume(box: dict, dims) -> int:
@@ -404,6 +407,7 @@ def _prove_vendor(problem: Problem, name: str):
     rng = rng_proven = None  # hull of every box's enclosure, of the proven boxes' only
     word = None
     worst = None  # (|error_pct|, error_pct, raw point) over the points run
+    bound, bounded = 0.0, True  # the worst |error| over the proven boxes, all bounded?
     evaluated = 0
     while heap:
         if evaluated >= problem.budget:
@@ -418,6 +422,10 @@ def _prove_vendor(problem: Problem, name: str):
         if not kinds:
             rng_proven = _hull(rng_proven, enc)
             proven_volume += -neg_vol
+            if bounded:
+                b = error_bound(name, _raw_intervals(name, box), unit)
+                bounded = b is not None
+                bound = max(bound, b or 0.0)
             for pt in (box_lo(box), {k: hi for k, (_, hi) in box.items()}):  # tied: equal ends
                 worst = _worse(worst, _point(name, pt, unit), pt)
             continue
@@ -440,7 +448,10 @@ def _prove_vendor(problem: Problem, name: str):
             heapq.heappush(heap, (-_volume(half, dims), order, half))
             order += 1
     if not heap and proven_volume == total:
-        return _entry("proven", rng_proven, word, 1.0, worst, boxes=evaluated)
+        entry = _entry("proven", rng_proven, word, 1.0, worst, boxes=evaluated)
+        if bounded:
+            entry.update(worst_error_pct=bound, worst_error_raw=None, error_bound=True)
+        return entry
     return _entry("unknown", rng, word, proven_volume / total, worst, boxes=evaluated)
 
 
@@ -534,8 +545,10 @@ def _pi_input(problem: Problem, box: dict) -> dict:
 
 
 def _pi_enclose(problem: Problem, name: str, box: dict, forced: dict = None) -> tuple:
-    """(kinds, (lo, hi), None) of a current-PI integer over an SI box; ``undecided`` when a
-    branch or comparison of the design code differs inside the box."""
+    """(kinds, (lo, hi), bound) of a current-PI integer over an SI box; ``undecided`` when a
+    branch or comparison of the design code differs inside the box.  ``bound``: the box's
+    worst |error_pct| — the integer rounds its ideal to nearest, so |ideal| ≥ min|value| − ½
+    and the error is at most ½ over that (None when the range holds 0)."""
     try:
         v = _pi_at(_pi_input(problem, box), name)
     except Undecided:
@@ -543,7 +556,10 @@ def _pi_enclose(problem: Problem, name: str, box: dict, forced: dict = None) -> 
     except InputError as e:  # raised only when every point of the box fails the same way
         return {"wrap" if e.code == "long_overflow" else "invalid"}, None, None
     lo, hi = v.value if isinstance(v, RInterval) else (v, v)
-    return ({"zero"} if lo <= 0 <= hi else set()), (lo, hi), None
+    if lo <= 0 <= hi:
+        return {"zero"}, (lo, hi), None
+    low = min(abs(lo), abs(hi)) - 0.5
+    return set(), (lo, hi), math.nextafter(50.0 / low, math.inf) + 1e-10
 
 
 def _pi_point(problem: Problem, name: str, pt: dict) -> tuple:
@@ -912,9 +928,9 @@ def prove(req) -> dict:
         ``verdict`` (proven | violated | unknown: the worst over the integers),
         ``integers`` {name: {verdict, range [lo, hi] (a sound enclosure of every value over
         the box where the code completes), type and word [min, max] of its C type,
-        proven_fraction, worst_error_pct and error_bound (raw parameters and proven profile
-        constants: a bound over the box; else the worst at the points run, error_bound
-        false), and when violated: kind (wrap, store, div0, zero, outside, saturate,
+        proven_fraction, worst_error_pct and error_bound (raw parameters and proven
+        integers: a bound over the box — for a vendor result only where no floor of its code
+        may be 0; else the worst at the points run, error_bound false), and when violated: kind (wrap, store, div0, zero, outside, saturate,
         invalid), statement, raw (the raw point) and counterexample (an input JSON inside
         the box)}}, ``counterexample`` (the first violated integer's),
         ``raw_box`` and ``not_analysed``.

@@ -171,6 +171,13 @@ def format_prove_text(r: dict) -> str:
             line += f"  (proven for {100 * s['proven_fraction']:.1f} % of the box)"
         lines.append(line)
     for name, p in r.get("proposals", {}).items():
+        if p.get("local"):
+            k = p["shift"]
+            lines.append(f"@q {name} auto (local): its stores compute {p['computed']}; {p['type']} "
+                         + (f"holds them with {k} more fractional bits" if k >= 0 else
+                            f"holds them only as value >> {-k} (error <= {p['max_error_lsb']} "
+                            "of the present LSB)"))
+            continue
         lo, hi = p["range_real"]
         lines.append(f"@q {name} auto over [{lo:g}, {hi:g}]: " + (
             f"Q{p['q']} in {p['type']}, raw {p['raw_range']}, error <= {p['max_error']:g}"

@@ -317,7 +317,7 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
         if out is None:  # no Q fits any auto input's word
             pb.box = {**box, **{k: _raw(real[k], 0) for k in auto}}
             out = yield from _search(pb, pb.box, budget)
-        out["proposals"] = proposals
+        out["proposals"] = {**out.get("proposals", {}), **proposals}
         out["real"] = {k: list(v) for k, v in real.items()}
     return out
 
@@ -450,6 +450,36 @@ def _search(pb: _Problem, box: dict, budget: int):
            "statements": statements}
     if first_cx is not None:
         out["counterexample"] = first_cx
+    if credited == total:  # every point's stores are in the hulls: a local's proposal holds
+        locals_ = _local_proposals(checked, statements)
+        if locals_:
+            out["proposals"] = locals_
+    return out
+
+
+def _local_proposals(checked, statements: list) -> dict:
+    """For each local ``// @q NAME auto`` that some statement stores: the hull of what its
+    stores compute (before conversion, over the whole box) and the shift of its scaling that
+    keeps every one of them in its word — k > 0 more fractional bits, or k < 0 to drop (the
+    store then holding ``value >> −k``, which loses up to 2^−k − 1 of the current LSB)."""
+    out = {}
+    for name, note in checked.program.notes.items():
+        if note.q is not None or name in checked.inputs or name not in checked.symbols:
+            continue
+        ends = [s["computed"] for s in statements if s["var"] == name and s["computed"]]
+        t = checked.symbols[name].ctype
+        if not ends or not isinstance(t, CType):
+            continue
+        lo, hi = min(e[0] for e in ends), max(e[1] for e in ends)
+        if t.min <= lo and hi <= t.max:
+            shift = headroom_bits((lo, hi), (t.min, t.max))
+        else:
+            shift = -1
+            while not (t.min <= lo >> -shift and hi >> -shift <= t.max):
+                shift -= 1
+        out[name] = {"local": True, "type": t.name, "bits": t.bits, "signed": t.signed,
+                     "computed": [lo, hi], "shift": shift,
+                     "max_error_lsb": (1 << -shift) - 1 if shift < 0 else 0}
     return out
 
 

@@ -43,7 +43,7 @@ __all__ = [
     "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_split", "raw_from_si",
     "round_half_away", "vendor_split",
     "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
-    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "VENDOR_CODE", "Block",
+    "vendor_results", "error_bound", "VENDOR_RESULTS", "VENDOR_READS", "VENDOR_CODE", "Block",
     "current_pi_step", "PiStep", "to_si",
 ]
 
@@ -375,6 +375,79 @@ VENDOR_READS = {
     "pm_maxout_vol": ("uDCFilter", "Voltage"),
     "maxu": ("uDCFilter", "Voltage"),
 }
+
+
+def _low(step: dict) -> int:
+    v = step["value"]
+    return v[0] if isinstance(v, tuple) else v
+
+
+def _floor(low: int, exponent: int):
+    """floor(y)/y, raised to ``exponent`` (±1), for every real y ≥ ``low`` (a positive
+    integer, the floor's lowest value): floor(y)/y ∈ (1 − 1/low, 1].  None when unbounded."""
+    if low < 1 or exponent < 0 and low < 2:
+        return None
+    f = 1.0 - 1.0 / low
+    return (f, 1.0) if exponent > 0 else (1.0, 1.0 / f)
+
+
+def _ld_factors(trace: list, unit: str) -> list:
+    """LD/LQ over its ideal (seed 1.4-3 … 1.4-15): with B = m_BaseL, z = L·2^14/B and
+    h = floor(B/2)/B ∈ [1/2 − 1/(2B), 1/2], m = floor(z + h) differs from z by
+    (−1/2 − 1/(2B), 1/2]; then floor(m/10); B itself is V·3678·5000/(I·F) times two floors."""
+    b1, b, _, m, ld = (_low(s) for s in trace)
+    z = m - 0.5  # m ≤ z + 1/2
+    if z <= 0 or b < 1:
+        return [None]
+    k = (1e-6 if unit == "uH" else 1e-5) * 8192.0 * TWO_PI * SQRT3 / 1e4
+    c = 16384.0 / (10.0 * 3678.0 * 5000.0) / k
+    return [(c, c), _floor(b1, -1), _floor(b, -1),
+            (1.0 - (0.5 + 0.5 / b) / z, 1.0 + 0.5 / z), _floor(ld, 1)]
+
+
+def error_bound(name: str, raw: dict, unit: str):
+    """A bound on |error_pct| of vendor result ``name`` (its integer against ``ideal``) for
+    every raw point of ``raw`` (integers or intervals,
+    :class:`~pulab.fixedpoint.interval.ICInt`); None where a step it runs (FreqPer's too,
+    for FluxRotor) may wrap, change a store or divide by zero, or a floor may reach 0.
+
+    Every result is its ideal times a constant (the code's integer constants over the real
+    ones: 18597/2^14 for 10^5/(√3·2^16)…) times, per floor of the code, floor(y)/y — in the
+    numerator, or in the denominator (FreqPer inside FluxRotor, m_BaseL inside LD) — and, for
+    LD/LQ, its rounded division; each floor's lowest value over the box bounds its factor.
+    The bound is rounded up by 1e-10 percentage points for the doubles' own rounding.
+
+    >>> raw = {"FreqRated01": 22000, "FullFreq01": 22000}
+    >>> error_bound("FreqPer", raw, "10uH") >= abs(freq_per(raw)["error_pct"])
+    True
+    """
+    b = Block()
+    VENDOR_CODE[name](b, raw, unit)
+    lows = [_low(s) for s in b.trace]
+    steps = list(b.trace)
+    if name in ("LD", "LQ"):
+        factors = _ld_factors(b.trace, unit)
+    elif name == "FluxRotor":  # m·2^15/FreqPer: FreqPer's floor divides
+        fp = Block()
+        _freq_per_code(fp, raw)
+        steps += fp.trace  # a FreqPer that wraps is its own failure, but breaks this bound
+        factors = [_floor(lows[0], 1), _floor(lows[1], 1), _floor(_low(fp.trace[0]), -1)]
+    elif name in ("pm_maxout_vol", "maxu"):  # maxu = pm_maxout_vol·2^12 exactly
+        if name == "maxu":
+            b = Block()
+            _max_vol_code(b, raw)
+            steps += b.trace
+        c = 2316.0 / 32768.0 * 10.0 * math.sqrt(2.0)
+        factors = [(c, c)] + [_floor(_low(s), 1) for s in b.trace]
+    else:
+        c = 18597.0 / 16384.0 / (SQRT3 * 65536.0 / 1e5) if name == "Rpm" else 1.0
+        factors = [(c, c)] + [_floor(v, 1) for v in lows]
+    if any(f is None for f in factors) or any({"wrap", "store", "div0"} & set(s["flags"])
+                                               for s in steps):
+        return None
+    lo = math.prod(f[0] for f in factors)
+    hi = math.prod(f[1] for f in factors)
+    return 100.0 * max(1.0 - lo, hi - 1.0, 0.0) + 1e-10
 
 
 def vendor_results(raw: dict, inductance_unit: str) -> dict:

@@ -89,7 +89,7 @@ export default async function codeProve(ctx) {
   });
 
   await check('code-prove: // @q auto proposes the Q CPython proposes', async () => {
-    const GAIN = 'int16_t gain(int16_t x, int16_t k) { // @q k auto\n  int32_t p = (int32_t)x * k;\n  int16_t y = p >> 12;\n  return y;\n}\n';
+    const GAIN = 'int16_t gain(int16_t x, int16_t k) { // @q k auto\n  int32_t p = (int32_t)x * k;\n  int16_t y = p >> 12; // @q y auto\n  return y;\n}\n';
     await page.goto(url(GAIN, 'gain'));
     await ready(page);
     await open();
@@ -101,6 +101,27 @@ export default async function codeProve(ctx) {
     assert(want.proposals.k.q === 11, `CLI proposes Q${want.proposals.k.q}`);
     const text = await page.$eval('[data-proposal-for="k"]', (e) => e.textContent);
     assert(text.includes('Q11') && text.includes(String(want.proposals.k.max_error)), text);
+    // a local marked auto: what its stores compute and the bits its word has to spare
+    const y = want.proposals.y;
+    assert(y.local && y.shift >= 0, JSON.stringify(y));
+    const local = await page.$eval('[data-proposal-for="y"]', (e) => e.textContent);
+    assert(local.includes(`${y.computed[0]} … ${y.computed[1]}`) && local.includes(`${y.shift} more`), local);
+    for (const lang of ['en', 'zh']) {
+      if (lang === 'zh') {
+        await page.goto(url(GAIN, 'gain', 'zh'));
+        await ready(page);
+        await open();
+        await fill({ x: [-32768, 32767], k: ['-1.5', '2.0'] });
+        await prove();
+      }
+      for (const w of [390, 900, 1366]) {
+        await page.setViewportSize({ width: w, height: 900 });
+        await page.$eval('.code-prove-proposals', (e) => e.scrollIntoView({ block: 'center' }));
+        await page.waitForTimeout(300);
+        await page.screenshot({ path: join(SHOTS, `code-prove-proposals-${lang}-${w}.png`) });
+      }
+      await page.setViewportSize({ width: 1366, height: 768 });
+    }
   });
 
   await check('code-prove: Cancel stops a long proof', async () => {

@@ -134,7 +134,8 @@ function proposals(p: CodeProof): HTMLElement | null {
   const list = Object.entries(p.proposals ?? {});
   if (!list.length) return null;
   return h('ul', { class: 'code-prove-proposals' }, list.map(([name, q]) => h('li', { 'data-proposal-for': name },
-    q.q === null ? t('cpNoProposal', { name })
+    q.local ? t(q.shift >= 0 ? 'cpLocalMore' : 'cpLocalLess', { name, type: q.type, lo: q.computed[0], hi: q.computed[1], n: Math.abs(q.shift), err: q.max_error_lsb })
+    : q.q === null ? t('cpNoProposal', { name })
       : t('cpProposal', { name, q: q.q, type: q.type, err: String(q.max_error), pct: q.max_error_pct === null ? '—' : q.max_error_pct.toPrecision(3) }))));
 }
 
