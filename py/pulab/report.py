@@ -33,8 +33,8 @@ def _profile_warnings(prof: dict) -> list:
          for code, why in prof["ti"]["checks"]] if "ti" in prof else []
     for name, p in prof.items():
         for k, c in p["constants"].items():
-            params = {"path": f"profiles.{name}.{k}", "ideal": c["ideal"], "format": c["format"],
-                      "value": c["value"]}
+            params = {"path": f"profiles.{name}.{k}", "profile_name": {"vendor": name}, "name": k,
+                      "ideal": c["ideal"], "format": c["format"], "value": c["value"]}
             if "out_of_range" in c["flags"] or "saturate" in c["flags"]:
                 w.append(("warning.profile_overflow", params))
             elif c["value"] == 0 and c["ideal"] != 0:

@@ -5,6 +5,7 @@ for three real motors' datasheets and the issue's contract example."""
 import copy
 import json
 import math
+import re
 import subprocess
 import sys
 
@@ -229,8 +230,8 @@ def test_a_firmware_that_cannot_hold_the_motor_is_named_as_the_reader_knows_it()
     """The finding names the profile as the picker does (Inovance, 汇川), not by its id."""
     inp = json.loads((ROOT / "tests/golden/23_limit_robot_28krpm.json").read_text())["input"]
     x = [x for x in report(inp)["review"]["findings"] if x["code"] == "unrepresentable"][0]
-    assert x["message"].startswith("the Inovance firmware cannot hold this motor (raw.FullFreq01")
-    assert x["message_zh"].startswith("汇川固件无法表示这台电机（raw.FullFreq01")
+    assert x["message"].startswith("the Inovance firmware cannot hold this motor (FullFreq01")
+    assert x["message_zh"].startswith("汇川固件无法表示这台电机（FullFreq01")
     assert x["key"] == "firmware.inovance"
 
 
@@ -253,3 +254,50 @@ def test_the_shipped_firmwares_integer_pi_wraps_are_an_error():
     assert chinese(hit[0]["message_zh"])
     inp["conventions"] = {"firmware": "inovance"}
     assert not [x for x in report(inp)["review"]["findings"] if x["code"].startswith("pi_")]
+
+
+#: A JSON path of an input in a text (the firmware's own parameter and constant names — RsPm,
+#: FullFreq01, MCAF_MOTOR_PSI_BASE_DT — are the vendor's identifiers and may stay).
+_PATH = re.compile(r"\b(?:profiles|motor|drive|raw|datasheet|conventions|current_loop|pll|sim|"
+                   r"analysis)\.[A-Za-z_]")
+_DATASHEETS = sorted((ROOT / "tests/golden/datasheets").glob("*.json"))
+
+
+@pytest.mark.parametrize("firmware", ["inovance", "ti", "nxp", "st", "microchip"])
+def test_findings_name_inputs_by_their_labels_not_json_paths(firmware):
+    """Six datasheet motors and the seed, each firmware shipped: no finding's text and no
+    firmware problem's text or advice, in either language, names an input by its JSON path."""
+    inputs = [json.loads(p.read_text())["input"] for p in _DATASHEETS]
+    inputs.append(json.loads((ROOT / "tests/golden/01_seed_motor.json").read_text())["input"])
+    texts = 0
+    for inp in inputs:
+        r = report({**inp, "conventions": {**inp.get("conventions", {}), "firmware": firmware},
+                    "profiles": {}})
+        problems = [x for st in r["firmware"].values() for x in st["problems"]]
+        for x in r["review"]["findings"] + problems:
+            for k in ("message", "message_zh", "advice", "advice_zh"):
+                if k in x:
+                    texts += 1
+                    assert not _PATH.search(x[k]), (x["field"], x[k])
+    assert texts > 20  # the texts checked exist
+
+
+def test_a_constant_too_big_names_the_profiles_options_by_their_labels_and_links_to_one():
+    """Rexroth MHP112A, Microchip shipped: MCAF_MOTOR_PSI_BASE_DT needs Q12; the advice names
+    the three bases as the vendors panel labels them, and the finding opens the first."""
+    inp = json.loads((ROOT / "tests/golden/datasheets/rexroth_mhp112a_024.json").read_text())["input"]
+    r = report({**inp, "conventions": {"firmware": "microchip"}})
+    x = [x for x in r["review"]["findings"] if x["key"] == "firmware.microchip"][0]
+    assert x["field"] == "profiles.microchip.voltage_base_v"
+    assert (x["label"], x["label_zh"]) == ("Microchip · voltage base", "Microchip · 电压基值")
+    assert ("(Microchip · voltage base, Microchip · current base, Microchip · velocity base)"
+            in x["message"])
+    assert "（Microchip · 电压基值、Microchip · 电流基值、Microchip · 速度基值）" in x["message_zh"]
+
+
+def test_every_profile_option_has_a_label_in_both_languages():
+    from pulab.profiles import MODULES, OPTION_LABELS
+    keys = {f"profiles.{n}.{o[0]}" for n, m in MODULES.items() for o in m.OPTIONS}
+    assert set(OPTION_LABELS) == keys and len(keys) == 21
+    for en, zh in OPTION_LABELS.values():
+        assert en and zh and " · " in en and " · " in zh

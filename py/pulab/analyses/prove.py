@@ -602,7 +602,7 @@ def _profile_constants(n: dict, problem: Problem) -> dict:
     ctx = context(n, {}, {}, current_pi_section(n, input_bases(n)))
     mod = MODULES[problem.profile]
     opt = {k: problem.options[k] if k in problem.options else default(ctx)
-           for k, default, _ in mod.OPTIONS}
+           for k, default, *_ in mod.OPTIONS}
     return mod.constants(ctx, opt)
 
 

@@ -34,6 +34,7 @@ import math
 from ..schema.catalog import render
 from ..schema.errors import InputError
 from ..schema.fields import FIELDS
+from ..profiles import OPTION_LABELS
 from ..profiles.inovance_code import RAW_FIELDS, raw_source
 
 __all__ = ["THRESHOLDS", "SEVERITIES", "grade", "review", "headroom"]
@@ -42,8 +43,8 @@ SQRT3 = math.sqrt(3.0)
 SQRT2 = math.sqrt(2.0)
 
 SEVERITIES = ("error", "warning", "note")
-#: The form label (en, zh) of each input a finding may point at.
-_LABELS = {fd.path: fd.label for fd in FIELDS if fd.label[0]}
+#: The form label (en, zh) of each input a finding may point at (the vendors panel's options too).
+_LABELS = {**{fd.path: fd.label for fd in FIELDS if fd.label[0]}, **OPTION_LABELS}
 #: The design choice behind what only the vendor's code decides: which firmware to ship.
 _FIRMWARE = "conventions.firmware"
 #: Lower bounds of each severity (|value| ≥ bound); docs/contract.md "Design review".
@@ -368,11 +369,16 @@ def _firmware(f: list, firmware: dict, shipped: str) -> None:
         results = sorted({r for x in p for r in x["results"]})
         # a raw input or a division the code cannot do: integers missing; else words too small
         missing = any(x["code"].startswith("limit.") for x in p)
+        # words too small: the advice rescales them by the profile's options, so the link goes
+        # to the first of those on the vendors panel
+        scales = [] if missing else p[0]["params"]["options"]
+        field = scales[0]["label"] if isinstance(scales, list) and scales else _FIRMWARE
         _finding(f, "warning" if name == shipped else "note", "unrepresentable",
-                 f"firmware.{name}", _FIRMWARE, name,
+                 f"firmware.{name}", field, name,
                  None if missing else "unrepresentable_constants",
                  profile=name, profile_name={"vendor": name},
-                 fields=", ".join(x["field"] for x in p),
+                 # the firmware's own parameter names (FullFreq01 …), not JSON paths
+                 fields=", ".join(x["field"].rsplit(".", 1)[-1] for x in p),
                  results=", ".join(results), advice={"code": p[0]["code"] + "_advice"
                  if p[0]["code"].startswith("limit.") else "limit.constant_advice",
                  "params": p[0]["params"]})

@@ -2,7 +2,7 @@
 
 One module per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.profiles.inovance_code`),
 :mod:`.ti`, :mod:`.nxp`, :mod:`.st`, :mod:`.microchip` — each with the same small
-interface: ``OPTIONS`` (its hardware inputs and their defaults), ``CONVENTIONS`` and
+interface: ``OPTIONS`` (its hardware inputs, their defaults and form labels), ``CONVENTIONS`` and
 ``CONVENTIONS_ZH`` (its base choices, in words, English and Chinese), ``bases(ctx, opt)``
 (its voltage, current and inductance bases in SI), ``profile(ctx, opt)`` (its constants),
 ``gain_fields``/``gain_range``/``gains_to_ints``/``ints_to_gains`` (its current-loop
@@ -27,17 +27,23 @@ Examples
 from __future__ import annotations
 
 from ..model.bases import flux_linkage
+from ..schema.catalog import VENDOR_NAMES
 from ..schema.errors import InputError
 from ..schema.fields import Field
 from ..schema.validate import integer, object_fields, shown, value
 from . import inovance, limits, microchip, nxp, st, ti
 from .common import SQRT2
 
-__all__ = ["NAMES", "MODULES", "context", "context_of", "options", "profiles", "bases_table",
+__all__ = ["NAMES", "MODULES", "OPTION_LABELS", "context", "context_of", "options", "profiles", "bases_table",
            "header"]
 
 NAMES = ("inovance", "ti", "nxp", "st", "microchip")
 MODULES = {"inovance": inovance, "ti": ti, "nxp": nxp, "st": st, "microchip": microchip}
+#: ``profiles.NAME.KEY`` → the option's form label (en, zh), the vendor's name first: what the
+#: vendors panel shows at the field and what a message names it by.
+OPTION_LABELS = {f"profiles.{name}.{opt[0]}": tuple(f"{v} · {w}" for v, w in
+                                                 zip(VENDOR_NAMES[name], opt[3]))
+                 for name in NAMES for opt in MODULES[name].OPTIONS}
 
 _INTEGERS = {"global_q": (1, 30), "f1": (1, 32767), "tf_kpdiv": (1, 32768),
              "tf_kidiv": (1, 32768)}
@@ -100,9 +106,9 @@ def options(section, ctx: dict) -> dict:
     out = {}
     for name in NAMES:
         spec = MODULES[name].OPTIONS
-        sec = object_fields(given.get(name), f"profiles.{name}", [k for k, _, _ in spec])
+        sec = object_fields(given.get(name), f"profiles.{name}", [k for k, *_ in spec])
         out[name] = {k: _option(name, k, sec[k]) if k in sec else default(ctx)
-                     for k, default, _ in spec}
+                     for k, default, *_ in spec}
     return out
 
 
@@ -127,7 +133,7 @@ def profiles(ctx: dict, opts: dict, names: tuple | None = None) -> dict:
         p["bases"] = bases_table(name, ctx, p)
         p["files"] = MODULES[name].FILES
         problems = ctx["firmware_problems"] if name == "inovance" else []
-        scales = tuple(k for k, _, _ in MODULES[name].OPTIONS if k not in _BOOLEANS)
+        scales = tuple(k for k, *_ in MODULES[name].OPTIONS if k not in _BOOLEANS)
         problems = problems + [limits.constant_problem(name, c, scales)
                                for c in p["constants"].values()
                                if "out_of_range" in c["flags"] or "saturate" in c["flags"]]

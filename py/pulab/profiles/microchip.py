@@ -31,11 +31,14 @@ __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_q
            "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants", "header"]
 
 OPTIONS = (
-    ("voltage_base_v", lambda c: c["udc"], "V_b, the DC-link voltage full scale; default U_dc"),
+    ("voltage_base_v", lambda c: c["udc"], "V_b, the DC-link voltage full scale; default U_dc",
+     ("voltage base", "电压基值")),
     ("current_base_a", lambda c: c["i_fs"],
-     "I_b, the current full scale; default 2·√2·I_rated"),
+     "I_b, the current full scale; default 2·√2·I_rated",
+     ("current base", "电流基值")),
     ("velocity_base_hz", lambda c: c["f_base"],
-     "ω_b/2π, electrical velocity base; default f_b"),
+     "ω_b/2π, electrical velocity base; default f_b",
+     ("velocity base", "速度基值")),
 )
 CONVENTIONS = {
     "voltage_base": "V_b = DC-link full scale (hardware)",

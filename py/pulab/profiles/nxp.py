@@ -38,13 +38,19 @@ __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "u_max"
            "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants", "header"]
 
 OPTIONS = (
-    ("udcb_max_v", lambda c: c["udc"], "U_DCB_MAX, DC-bus full scale; default U_dc"),
-    ("i_max_a", lambda c: c["i_fs"], "I_MAX, phase-current full scale; default 2·√2·I_rated"),
-    ("u_max_coeff", lambda c: SQRT3, "UmaxCoeff: U_max = U_DCB_MAX/UmaxCoeff; default √3"),
-    ("e_max_v", lambda c: None, "E_MAX, back-EMF scale; default U_max"),
-    ("trapezoidal", lambda c: False, "discretization: true halves Ki (k = 2); default false"),
+    ("udcb_max_v", lambda c: c["udc"], "U_DCB_MAX, DC-bus full scale; default U_dc",
+     ("U_DCB max", "母线电压满量程 U_DCB")),
+    ("i_max_a", lambda c: c["i_fs"], "I_MAX, phase-current full scale; default 2·√2·I_rated",
+     ("I max", "电流满量程 I max")),
+    ("u_max_coeff", lambda c: SQRT3, "UmaxCoeff: U_max = U_DCB_MAX/UmaxCoeff; default √3",
+     ("UmaxCoeff", "UmaxCoeff")),
+    ("e_max_v", lambda c: None, "E_MAX, back-EMF scale; default U_max",
+     ("E max (back-EMF scale)", "反电势满量程 E max")),
+    ("trapezoidal", lambda c: False, "discretization: true halves Ki (k = 2); default false",
+     ("trapezoidal discretization", "梯形离散化")),
     ("round_u_max", lambda c: False, "round U_max to 0.1 V as the JavaScript MCAT does; "
-     "default false"),
+     "default false",
+     ("U_max rounded to 0.1 V", "U_max 取整到 0.1 V")),
 )
 CONVENTIONS = {
     "voltage_base": "U_max = U_DCB_MAX/UmaxCoeff (hardware)",

@@ -43,16 +43,23 @@ __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "max_cu
 
 _GAIN = 8.0
 OPTIONS = (
-    ("adc_reference_v", lambda c: 3.3, "ADC_REFERENCE_VOLTAGE; default 3.3 V"),
-    ("amplification_gain", lambda c: _GAIN, "AMPLIFICATION_GAIN; default 8"),
+    ("adc_reference_v", lambda c: 3.3, "ADC_REFERENCE_VOLTAGE; default 3.3 V",
+     ("ADC reference", "ADC 参考电压")),
+    ("amplification_gain", lambda c: _GAIN, "AMPLIFICATION_GAIN; default 8",
+     ("amplifier gain", "放大倍数")),
     ("rshunt_ohm", lambda c: 3.3 / (2.0 * _GAIN * c["i_fs"]),
-     "RSHUNT; default so that MAX_CURRENT = 2·√2·I_rated with the defaults above"),
+     "RSHUNT; default so that MAX_CURRENT = 2·√2·I_rated with the defaults above",
+     ("shunt", "采样电阻")),
     ("vbus_partitioning_factor", lambda c: 3.3 / (2.0 * c["udc"]),
-     "VBUS_PARTITIONING_FACTOR; default puts U_dc at half the ADC range"),
+     "VBUS_PARTITIONING_FACTOR; default puts U_dc at half the ADC range",
+     ("bus voltage divider", "母线分压系数")),
     ("tf_kpdiv", lambda c: None,
-     "TF_KPDIV (power of two); default the largest ≤ 16384 fitting int16"),
-    ("tf_kidiv", lambda c: None, "TF_KIDIV (power of two); default as TF_KPDIV"),
-    ("f1", lambda c: 16384, "observer scaling F1; default 16384"),
+     "TF_KPDIV (power of two); default the largest ≤ 16384 fitting int16",
+     ("TF_KPDIV", "TF_KPDIV")),
+    ("tf_kidiv", lambda c: None, "TF_KIDIV (power of two); default as TF_KPDIV",
+     ("TF_KIDIV", "TF_KIDIV")),
+    ("f1", lambda c: 16384, "observer scaling F1; default 16384",
+     ("observer F1", "观测器 F1")),
 )
 CONVENTIONS = {
     "voltage_base": "U_dc/√3 at 32768 digits (assumed, full modulation)",

@@ -33,15 +33,20 @@ __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_f
            "gain_range", "gains_to_ints", "ints_to_gains", "check_for_errors", "profile", "constants",
            "header"]
 
-#: (input name, default from the motor and drive, meaning)
+#: (input name, default from the motor and drive, meaning, form label (en, zh))
 OPTIONS = (
-    ("full_scale_voltage_v", lambda c: c["udc"], "USER_IQ_FULL_SCALE_VOLTAGE_V; default U_dc"),
+    ("full_scale_voltage_v", lambda c: c["udc"], "USER_IQ_FULL_SCALE_VOLTAGE_V; default U_dc",
+     ("full-scale voltage", "满量程电压")),
     ("full_scale_current_a", lambda c: c["i_fs"],
-     "USER_IQ_FULL_SCALE_CURRENT_A; default 2·√2·I_rated"),
-    ("full_scale_freq_hz", lambda c: c["f_base"], "USER_IQ_FULL_SCALE_FREQ_Hz; default f_b"),
+     "USER_IQ_FULL_SCALE_CURRENT_A; default 2·√2·I_rated",
+     ("full-scale current", "满量程电流")),
+    ("full_scale_freq_hz", lambda c: c["f_base"], "USER_IQ_FULL_SCALE_FREQ_Hz; default f_b",
+     ("full-scale frequency", "满量程频率")),
     ("max_current_a", lambda c: SQRT2 * c["i_rated"],
-     "USER_MOTOR_MAX_CURRENT (peak); default √2·I_rated"),
-    ("global_q", lambda c: 24, "GLOBAL_Q; default 24"),
+     "USER_MOTOR_MAX_CURRENT (peak); default √2·I_rated",
+     ("max. motor current", "电机最大电流")),
+    ("global_q", lambda c: 24, "GLOBAL_Q; default 24",
+     ("GLOBAL_Q", "GLOBAL_Q")),
 )
 CONVENTIONS = {
     "voltage_base": "USER_IQ_FULL_SCALE_VOLTAGE_V (hardware)",

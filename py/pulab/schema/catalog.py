@@ -5,8 +5,9 @@ this table gives its words.  A parameter that is itself an error
 (``{"code": …, "params": …}``) is rendered in the same language, so a derived
 value's error reads as one sentence in either language.
 
-A parameter ``{"label": path}`` is that input's form label in the language of the text, and
-``{"vendor": name}`` a firmware profile's name (``inovance`` is Inovance, 汇川).
+A parameter ``{"label": path}`` is that input's form label in the language of the text (a
+vendor profile's option too: :data:`pulab.profiles.OPTION_LABELS`), ``{"vendor": name}`` a
+firmware profile's name (``inovance`` is Inovance, 汇川), and a list of those its words joined.
 
 Adding an error: one entry here; ``tests/py/test_schema.py`` renders every code
 in both languages.
@@ -467,12 +468,12 @@ MESSAGES = {
                      "buses; the voltage headroom below uses the firmware's limit).",
                      "这是厂商代码的性质：data1 以整伏保存 U_dc/√2，因此固件的电压限幅与 U_dc/√2 相差 "
                      "{pct:+.3g} %（低压母线上才明显；下面的电压裕量按固件限幅计算）。"),
-    "finding.raw_zero": ("raw.{name} = 0: {path} = {si:g} is below the firmware resolution, so the "
+    "finding.raw_zero": ("{name} = 0: {path} = {si:g} is below the firmware resolution, so the "
                          "firmware sees 0. {fix}",
-                         "raw.{name} = 0：{path} = {si:g} 低于固件分辨率，固件看到的是 0。{fix}"),
-    "finding.raw_rounding": ("raw.{name} = {value}: rounding {path} = {si:g} to the firmware unit "
+                         "{name} = 0：{path} = {si:g} 低于固件分辨率，固件看到的是 0。{fix}"),
+    "finding.raw_rounding": ("{name} = {value}: rounding {path} = {si:g} to the firmware unit "
                              "changes it by {pct:+.2f} %. {fix}",
-                             "raw.{name} = {value}：把 {path} = {si:g} 取整到固件单位，改变了 {pct:+.2f} %。"
+                             "{name} = {value}：把 {path} = {si:g} 取整到固件单位，改变了 {pct:+.2f} %。"
                              "{fix}"),
     "fix.parameter_unit": ("A property of the vendor's parameter table (one count is {unit}), not "
                            "of your inputs: it costs this much accuracy in every value the firmware "
@@ -637,10 +638,11 @@ MESSAGES = {
     "robust.no_band": ("no designed bandwidth keeps it at every corner", "没有任何设计带宽能在所有角点满足"),
     "warning.ti_check": ("profiles.ti: USER_checkForErrors would set {code} ({why})",
                          "profiles.ti：USER_checkForErrors 会置位 {code}（{why}）"),
-    "warning.profile_overflow": ("{path}: {ideal:.6g} does not fit {format}; stored {value}",
-                                 "{path}：{ideal:.6g} 超出 {format} 的范围；实际存储 {value}"),
-    "warning.profile_zero": ("{path}: rounds to 0 in {format} (ideal {ideal:.6g})",
-                             "{path}：在 {format} 中取整为 0（理想值 {ideal:.6g}）"),
+    "warning.profile_overflow": ("{profile_name} {name}: {ideal:.6g} does not fit {format}; stored "
+                                 "{value}",
+                                 "{profile_name} {name}：{ideal:.6g} 超出 {format} 的范围；实际存储 {value}"),
+    "warning.profile_zero": ("{profile_name} {name}: rounds to 0 in {format} (ideal {ideal:.6g})",
+                             "{profile_name} {name}：在 {format} 中取整为 0（理想值 {ideal:.6g}）"),
     "set_syntax": ("--set needs NAME=VALUE, got {got}", "--set 需要 NAME=VALUE，当前为 {got}"),
     "json_invalid": ("not valid JSON: {detail}", "不是合法的 JSON：{detail}"),
     "json_not_text": ("not valid JSON: the input is not text", "不是合法的 JSON：输入不是文本"),
@@ -654,8 +656,15 @@ VENDOR_NAMES = {"inovance": ("Inovance", "汇川"), "ti": ("TI", "TI"), "nxp": (
                 "st": ("ST", "ST"), "microchip": ("Microchip", "Microchip")}
 
 
+def _is_word(v) -> bool:
+    return isinstance(v, dict) and (set(v) == {"label"} or set(v) == {"vendor"})
+
+
 def _word(v, lang: str):
-    """A parameter as its text's word: a form label or a profile's name; else ``v`` itself."""
+    """A parameter as its text's word: a form label or a profile's name (a list of them joined);
+    else ``v`` itself."""
+    if isinstance(v, list) and v and all(_is_word(x) for x in v):
+        return (", " if lang == "en" else "、").join(str(_word(x, lang)) for x in v)
     if isinstance(v, dict) and set(v) == {"label"}:
         return _label(v["label"], lang)
     if isinstance(v, dict) and set(v) == {"vendor"} and v["vendor"] in VENDOR_NAMES:
@@ -665,8 +674,10 @@ def _word(v, lang: str):
 
 def _label(path: str, lang: str) -> str:
     from .fields import FIELD  # data only; imported late to keep this module first to load
+    from ..profiles import OPTION_LABELS
     f = FIELD.get(path)
-    return f.label[0 if lang == "en" else 1] if f is not None and f.label[0] else path
+    label = f.label if f is not None and f.label[0] else OPTION_LABELS.get(path)
+    return label[0 if lang == "en" else 1] if label else path
 
 
 def render(code: str, params: dict, lang: str) -> str:

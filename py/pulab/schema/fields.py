@@ -369,9 +369,17 @@ def _plain(f: Field) -> dict:
 
 def schema_json() -> str:
     """The schema as JSON text (``web/src/generated/schema.json``, what the page is built from)."""
+    from ..profiles import OPTION_LABELS  # the profiles import this module
     sections = [{"path": s.path, "title": list(s.title)} for s in SECTIONS.values()]
-    return json.dumps({"sections": sections, "fields": [_plain(f) for f in FIELDS]},
-                      ensure_ascii=False, indent=1) + "\n"
+    # the vendors panel's options: their labels, and the unit their name ends in
+    options = [{"path": p, "label": list(label),
+                "unit": next((u for end, u in _OPTION_UNITS if p.endswith(end)), "")}
+               for p, label in OPTION_LABELS.items()]
+    return json.dumps({"sections": sections, "fields": [_plain(f) for f in FIELDS],
+                       "options": options}, ensure_ascii=False, indent=1) + "\n"
+
+
+_OPTION_UNITS = (("_v", "V"), ("_a", "A"), ("_hz", "Hz"), ("_ohm", "Ω"))
 
 
 def _g(x) -> str:

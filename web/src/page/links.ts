@@ -35,17 +35,24 @@ export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: 
       const el = root.querySelector(`[data-anchor="${CSS.escape(a.dataset.docLink)}"]`);
       scrollToEl(el);
     } else if (a.dataset.field) {
-      // A review finding's "→ field": the input to change (its section opened), focused.
-      const input = root.querySelector<HTMLElement>(`.inputs [name="${CSS.escape(a.dataset.field)}"]`);
-      if (embed || !input) {
-        if (embed) window.open(`./${location.hash}`, '_blank', 'noopener');
-        return;
+      // A review finding's "→ field": the input to change (its section opened), focused; an
+      // option of a panel (a vendor's full scale) is shown in its panel, whose view opens first.
+      const name = CSS.escape(a.dataset.field);
+      const input = root.querySelector<HTMLElement>(`.inputs [name="${name}"]`);
+      const inPanel = input ? null : root.querySelector<HTMLElement>(`section.panel [name="${name}"]`);
+      if (embed) {
+        window.open(`./${location.hash}`, '_blank', 'noopener');
+      } else if (input) {
+        const sec = input.closest<HTMLDetailsElement>('details.section');
+        if (sec) sec.open = true;
+        openInputs();
+        scrollToEl(input.closest('.field'));
+        input.focus();
+      } else if (inPanel) {
+        scrollToEl(inPanel.closest('section.panel'));
+        scrollToEl(inPanel.closest('.field'));
+        inPanel.focus();
       }
-      const sec = input.closest<HTMLDetailsElement>('details.section');
-      if (sec) sec.open = true;
-      openInputs();
-      scrollToEl(input.closest('.field'));
-      input.focus();
     } else if (a.dataset.view) {
       // A tab: its view from the top (the answer strip stays the first thing on screen).
       showView(a.dataset.view);

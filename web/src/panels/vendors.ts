@@ -11,6 +11,7 @@ import type { Translation } from '../api-types';
 import type { ApiErr } from '../protocol';
 import { limitsBox } from './limits';
 import type { Panel, PanelContext } from './panel';
+import schema from '../generated/schema.json';
 
 export const VENDORS = ['inovance', 'ti', 'nxp', 'st', 'microchip'] as const;
 export type Vendor = (typeof VENDORS)[number];
@@ -23,6 +24,15 @@ export const HW_FIELDS: [Vendor, string][] = [
   ['microchip', 'voltage_base_v'], ['microchip', 'current_base_a'], ['microchip', 'velocity_base_hz'],
 ];
 const INTEGER_KEYS = new Set(['global_q', 'tf_kpdiv', 'tf_kidiv']);
+/** Each option's label (vendor first) and unit, as pulab names it in its messages
+ * (pulab.profiles.OPTION_LABELS, written to generated/schema.json by the build). */
+const OPTION_LABEL = new Map(schema.options.map((o) => [o.path, o]));
+function optionLabel(name: string): string {
+  const o = OPTION_LABEL.get(name);
+  if (!o) throw new Error(`web/src/panels/vendors.ts: ${name} is not a profile option`);
+  const label = o.label[getLang() === 'zh' ? 1 : 0];
+  return o.unit ? `${label}${getLang() === 'zh' ? '，' : ', '}${o.unit}` : label;
+}
 
 /** The vendor's names of the current-loop integers (pulab.profiles.*.gain_fields). */
 export function gainFields(v: Vendor, axis: 'd' | 'q'): [string, string] {
@@ -219,7 +229,7 @@ function hwForm(ctx: PanelContext): HTMLElement {
     HW_FIELDS.map(([v, k]) => {
       const name = `profiles.${v}.${k}`;
       const dflt = profiles?.[v]?.inputs?.[k];
-      return field(`${t(`vd_${v}` as Key)} · ${t(`vdf_${k}` as Key)}`,
+      return field(optionLabel(name),
         h('input', { name, value: vstate.hw[name] ?? '', placeholder: typeof dflt === 'number' ? String(Number(dflt.toPrecision(6))) : '', inputmode: 'decimal', spellcheck: 'false',
           oninput: (ev: Event) => { vstate.hw[name] = (ev.target as HTMLInputElement).value; refresh(ctx); rerender(); } }),
         name, errFor(profErr, name));
