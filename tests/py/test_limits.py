@@ -18,8 +18,8 @@ def test_a_raw_parameter_beyond_uint16():
     assert p["params"]["stored_si"] == pytest.approx(645.23, rel=1e-12)
     assert chinese(p["message_zh"]) and chinese(p["advice_zh"]) and "FullFreq01" in p["message"]
     # the SI field it comes from by its form label, in each language (the path stays in params)
-    assert "and Base frequency f_b (drive max.) = 3266.67 Hz needs 326667" in p["message"]
-    assert "频率基值 f_b（最大频率） = 3266.67 Hz 需要 326667" in p["message_zh"]
+    assert "and Base frequency f_b (drive max.) = 3.26667 kHz needs 326667" in p["message"]
+    assert "频率基值 f_b（最大频率） = 3.26667 kHz 需要 326667" in p["message_zh"]
     assert p["params"]["source"] == "drive.base_freq_hz"
 
 

@@ -258,7 +258,7 @@ def test_the_shipped_firmwares_integer_pi_wraps_are_an_error():
 
 #: A JSON path of an input in a text (the firmware's own parameter and constant names — RsPm,
 #: FullFreq01, MCAF_MOTOR_PSI_BASE_DT — are the vendor's identifiers and may stay).
-_PATH = re.compile(r"\b(?:profiles|motor|drive|raw|datasheet|conventions|current_loop|pll|sim|"
+_PATH = re.compile(r"\b(?:profiles|motor|drive|raw|vendor|datasheet|conventions|current_loop|pll|sim|"
                    r"analysis)\.[A-Za-z_]")
 _DATASHEETS = sorted((ROOT / "tests/golden/datasheets").glob("*.json"))
 
@@ -301,3 +301,13 @@ def test_every_profile_option_has_a_label_in_both_languages():
     assert set(OPTION_LABELS) == keys and len(keys) == 21
     for en, zh in OPTION_LABELS.values():
         assert en and zh and " · " in en and " · " in zh
+
+
+def test_a_finding_prints_the_value_with_an_si_prefix_and_keeps_it_exact():
+    """EMRAX 228 LV (Lq = 10.6 µH): the texts say 10.6 µH and 1.1 mΩ, `value` stays the double."""
+    inp = json.loads((ROOT / "tests/golden/datasheets/emrax_228_lv.json").read_text())["input"]
+    f = {x["key"]: x for x in report(inp)["review"]["findings"]}
+    lq, rs = f["vendor.raw.LQ"], f["vendor.raw.RsPm"]
+    assert "Lq = 10.6 µH to the firmware unit" in lq["message"] and "Lq = 10.6 µH 取整" in lq["message_zh"]
+    assert "= 1.1 mΩ to the firmware unit" in rs["message"] and "= 1.1 mΩ 取整" in rs["message_zh"]
+    assert lq["value"] == 100.0 * (1 - 1.06e-05 * 1e5) / (1.06e-05 * 1e5)

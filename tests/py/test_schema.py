@@ -136,3 +136,14 @@ def test_normalize_names_the_field_at_fault():
         with pytest.raises(InputError) as e:
             normalize(inp)
         assert (e.value.field, e.value.code) == (field, code)
+
+
+@pytest.mark.parametrize("lang", ["en", "zh"])
+def test_a_finding_prints_physical_values_with_an_si_prefix(lang):
+    """The seed-format LQ finding of a 10.6 µH motor: the value as a reader writes it."""
+    from pulab.schema.catalog import render
+    text = render("finding.raw_rounding", {"name": "LQ", "value": 1, "path": {"label": "motor.lq_h"},
+                                           "si": 1.06e-05, "si_unit": "H", "pct": -5.66,
+                                           "label": "Unit", "fix": {"code": "fix.inductance_unit", "params": {}}},
+                  lang)
+    assert "Lq = 10.6 µH" in text and "e-05" not in text

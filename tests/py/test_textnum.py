@@ -3,7 +3,7 @@ import pytest
 
 from pulab import InputError
 from pulab.api import qcalc
-from pulab.schema.textnum import parse_int, parse_real
+from pulab.schema.textnum import parse_int, parse_real, si_text
 
 
 @pytest.mark.parametrize("text, want", [
@@ -59,3 +59,30 @@ def test_qcalc_errors_name_the_field(req, field):
     with pytest.raises(InputError) as e:
         qcalc(req)
     assert e.value.field == field
+
+
+@pytest.mark.parametrize("value, unit, sig, text", [
+    (1.06e-05, "H", 6, "10.6 µH"),             # the Lq
+    (0.0011, "Ω", 6, "1.1 mΩ"),
+    (6.25e-05, "s", 6, "62.5 µs"),
+    (1.03e-05, "H", 6, "10.3 µH"),
+    (0.0002315, "H", 6, "231.5 µH"),
+    (113.13708498984761, "V", 6, "113.137 V"),  # 80·√2: six digits, not the double's 17
+    (655.35, "Hz", 6, "655.35 Hz"),
+    (3266.6666666666665, "Hz", 6, "3.26667 kHz"),
+    (999.9996, "V", 6, "1 kV"),                 # rounding carries into the next prefix
+    (12345678.0, "Hz", 6, "12.3457 MHz"),
+    (100.0, "V", 6, "100 V"),
+    (2e-04, "s", 6, "200 µs"),
+    (-0.0025, "A", 6, "-2.5 mA"),
+    (0.0, "H", 6, "0 H"),
+    (-0.0, "H", 6, "0 H"),
+    (1e-13, "H", 6, "0.1 pH"),                  # below pico: the smallest prefix
+    (2.5e12, "Hz", 6, "2500 GHz"),              # above giga: the largest
+    (0.05177344693115979, "Ω", 4, "51.77 mΩ"),
+    (1.5, "", 6, "1.5"),                        # no unit: no prefix
+    (1500.0, "", 6, "1500"),
+    (float("inf"), "V", 6, "inf V"),
+])
+def test_si_text_writes_a_prefix_the_unit_and_the_shortest_digits(value, unit, sig, text):
+    assert si_text(value, unit, sig) == text

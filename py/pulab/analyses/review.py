@@ -45,6 +45,8 @@ SQRT2 = math.sqrt(2.0)
 SEVERITIES = ("error", "warning", "note")
 #: The form label (en, zh) of each input a finding may point at (the vendors panel's options too).
 _LABELS = {**{fd.path: fd.label for fd in FIELDS if fd.label[0]}, **OPTION_LABELS}
+#: The SI unit of each input (what a finding's text prints a value in).
+_UNITS = {fd.path: fd.unit for fd in FIELDS}
 #: The design choice behind what only the vendor's code decides: which firmware to ship.
 _FIRMWARE = "conventions.firmware"
 #: Lower bounds of each severity (|value| ≥ bound); docs/contract.md "Design review".
@@ -182,6 +184,7 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         path, scale = raw_source(name, unit)
         section, key = path.split(".")
         si = n[section][key]
+        si_unit = _UNITS[path]
         exact = si * scale
         finer = name in ("LD", "LQ") and unit == "10uH"
         field = "conventions.inductance_unit" if finer else _FIRMWARE
@@ -190,12 +193,12 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
                "params": {"unit": count}}
         if raw[name] == 0:
             _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name,
-                     path={"label": path}, si=si, fix=fix)
+                     path={"label": path}, si=si, si_unit=si_unit, fix=fix)
             continue
         pct = 100.0 * (raw[name] - exact) / exact
         _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
                  f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path={"label": path},
-                 si=si, pct=pct, fix=fix)
+                 si=si, si_unit=si_unit, pct=pct, fix=fix)
 
 
 def _bemf_check(f: list, n: dict) -> None:

@@ -5,6 +5,10 @@ this table gives its words.  A parameter that is itself an error
 (``{"code": …, "params": …}``) is rendered in the same language, so a derived
 value's error reads as one sentence in either language.
 
+A number parameter formatted ``{x:~H}`` is written with an SI prefix and unit
+(:func:`pulab.schema.textnum.si_text`: ``10.6 µH``); the unit may be another parameter
+(``{si:~{si_unit}}``).
+
 A parameter ``{"label": path}`` is that input's form label in the language of the text (a
 vendor profile's option too: :data:`pulab.profiles.OPTION_LABELS`), ``{"vendor": name}`` a
 firmware profile's name (``inovance`` is Inovance, 汇川), and a list of those its words joined.
@@ -445,12 +449,12 @@ MESSAGES = {
                             "1/(2·Ts) = {nyquist:g} Hz",
                             "输入转速达到 {value:g} Hz，未低于控制频率的一半 1/(2·Ts) = {nyquist:g} Hz"),
     # findings of the design review (pulab.analyses.review), by finding code
-    "finding.constant_wrap": ("vendor.{name} = {value}: the firmware arithmetic wrapped (exact value "
+    "finding.constant_wrap": ("{name} = {value}: the firmware arithmetic wrapped (exact value "
                               "{ideal:.6g}), so the firmware uses a wrong number. {why}",
-                              "vendor.{name} = {value}：固件运算发生回绕（精确值 {ideal:.6g}），固件用的是错误的数。{why}"),
-    "finding.constant_error": ("vendor.{name} = {value} is {pct:+.3g} % off the exact value {ideal:.6g}. "
+                              "{name} = {value}：固件运算发生回绕（精确值 {ideal:.6g}），固件用的是错误的数。{why}"),
+    "finding.constant_error": ("{name} = {value} is {pct:+.3g} % off the exact value {ideal:.6g}. "
                                "{why}",
-                               "vendor.{name} = {value} 与精确值 {ideal:.6g} 相差 {pct:+.3g} %。{why}"),
+                               "{name} = {value} 与精确值 {ideal:.6g} 相差 {pct:+.3g} %。{why}"),
     "cost.rpm": ("A property of the vendor's code (its integer divisions truncate): the firmware's R_s is "
                  "{pct:+.3g} % off, which shifts the resistive drop its model expects; no input changes it.",
                  "这是厂商代码的性质（整数除法截断）：固件中的 R_s 偏差 {pct:+.3g} %，改变其模型中的电阻压降；"
@@ -468,12 +472,12 @@ MESSAGES = {
                      "buses; the voltage headroom below uses the firmware's limit).",
                      "这是厂商代码的性质：data1 以整伏保存 U_dc/√2，因此固件的电压限幅与 U_dc/√2 相差 "
                      "{pct:+.3g} %（低压母线上才明显；下面的电压裕量按固件限幅计算）。"),
-    "finding.raw_zero": ("{name} = 0: {path} = {si:g} is below the firmware resolution, so the "
+    "finding.raw_zero": ("{name} = 0: {path} = {si:~{si_unit}} is below the firmware resolution, so the "
                          "firmware sees 0. {fix}",
-                         "{name} = 0：{path} = {si:g} 低于固件分辨率，固件看到的是 0。{fix}"),
-    "finding.raw_rounding": ("{name} = {value}: rounding {path} = {si:g} to the firmware unit "
+                         "{name} = 0：{path} = {si:~{si_unit}} 低于固件分辨率，固件看到的是 0。{fix}"),
+    "finding.raw_rounding": ("{name} = {value}: rounding {path} = {si:~{si_unit}} to the firmware unit "
                              "changes it by {pct:+.2f} %. {fix}",
-                             "{name} = {value}：把 {path} = {si:g} 取整到固件单位，改变了 {pct:+.2f} %。"
+                             "{name} = {value}：把 {path} = {si:~{si_unit}} 取整到固件单位，改变了 {pct:+.2f} %。"
                              "{fix}"),
     "fix.parameter_unit": ("A property of the vendor's parameter table (one count is {unit}), not "
                            "of your inputs: it costs this much accuracy in every value the firmware "
@@ -605,12 +609,12 @@ MESSAGES = {
                                           "integer instead. {advice}",
                                           "{profile_name}固件无法表示这台电机：{results} 超出其字长，只能存下"
                                           "最大整数。{advice}"),
-    "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:g} {si_unit}, and "
-                     "{source_label} = {si:g} {si_unit} needs {value}; a 16-bit parameter would "
-                     "keep {stored} ({stored_si:g} {si_unit}). Not computed: {results}",
-                     "{name} 是以 {unit} 为单位的 Uint16，最大只能表示 {max:g} {si_unit}；{source_label} = "
-                     "{si:g} {si_unit} 需要 {value}，16 位参数只会存下 {stored}（{stored_si:g} "
-                     "{si_unit}）。无法计算：{results}"),
+    "limit.uint16": ("{name} is a Uint16 in {unit}: it holds at most {max:~{si_unit}}, and "
+                     "{source_label} = {si:~{si_unit}} needs {value}; a 16-bit parameter would "
+                     "keep {stored} ({stored_si:~{si_unit}}). Not computed: {results}",
+                     "{name} 是以 {unit} 为单位的 Uint16，最大只能表示 {max:~{si_unit}}；{source_label} = "
+                     "{si:~{si_unit}} 需要 {value}，16 位参数只会存下 {stored}（{stored_si:~{si_unit}}）。"
+                     "无法计算：{results}"),
     "limit.uint16_advice": ("This is a limit of the vendor's code, not of the motor or of your inputs: "
                             "ship a profile that holds it, or change the unit of {name} in the "
                             "firmware (a coarser one).",
@@ -656,6 +660,19 @@ VENDOR_NAMES = {"inovance": ("Inovance", "汇川"), "ti": ("TI", "TI"), "nxp": (
                 "st": ("ST", "ST"), "microchip": ("Microchip", "Microchip")}
 
 
+class _Number:
+    """A number parameter whose format spec ``~UNIT`` asks for :func:`si_text`."""
+
+    def __init__(self, v):
+        self.v = v
+
+    def __format__(self, spec: str) -> str:
+        if not spec.startswith("~"):
+            return format(self.v, spec)
+        from .textnum import si_text  # imports the validators, which render this catalog
+        return si_text(self.v, spec[1:])
+
+
 def _is_word(v) -> bool:
     return isinstance(v, dict) and (set(v) == {"label"} or set(v) == {"vendor"})
 
@@ -669,6 +686,8 @@ def _word(v, lang: str):
         return _label(v["label"], lang)
     if isinstance(v, dict) and set(v) == {"vendor"} and v["vendor"] in VENDOR_NAMES:
         return VENDOR_NAMES[v["vendor"]][0 if lang == "en" else 1]
+    if isinstance(v, (int, float)) and not isinstance(v, bool):
+        return _Number(v)
     return v
 
 

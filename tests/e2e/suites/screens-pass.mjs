@@ -99,7 +99,7 @@ export default async function screensPass(ctx) {
   await check('screens-pass: why a firmware cannot hold the motor names the form field by its label and the firmware by its name, in the reader\'s language', async () => {
     const robot = golden('23_limit_robot_28krpm.json');
     const NAMED = { zh: '汇川固件无法表示这台电机', en: 'the Inovance firmware cannot hold this motor' };
-    for (const [lang, label] of [['zh', '频率基值 f_b（最大频率） = 3266.67 Hz'], ['en', 'Base frequency f_b (drive max.) = 3266.67 Hz']]) {
+    for (const [lang, label] of [['zh', '频率基值 f_b（最大频率） = 3.26667 kHz'], ['en', 'Base frequency f_b (drive max.) = 3.26667 kHz']]) {
       const p = await newPage();
       await p.goto(link(robot.input).replace('#', `?lang=${lang}#`));
       await ready(p);
