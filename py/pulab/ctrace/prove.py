@@ -77,9 +77,9 @@ def _ranges(checked, ranges, names: list) -> dict:
                 try:
                     v = int(v.strip().replace("_", ""), 0)
                 except ValueError:
-                    raise InputError(field, code="prove_pair", got=shown(pair)) from None
+                    raise InputError(field, code="prove_pair", got=shown(v)) from None
             if isinstance(v, bool) or not isinstance(v, int):
-                raise InputError(field, code="prove_pair", got=shown(pair))
+                raise InputError(field, code="prove_pair", got=shown(v))
             ends.append(v)
         lo, hi = ends
         if lo > hi:
@@ -235,9 +235,9 @@ def _parse_real(field: str, pair) -> tuple:
         try:
             x = float(v.strip()) if isinstance(v, str) else float(v)
         except (TypeError, ValueError):
-            raise InputError(field, code="prove_pair", got=shown(pair)) from None
+            raise InputError(field, code="prove_pair", got=shown(v)) from None
         if isinstance(v, bool) or not math.isfinite(x):
-            raise InputError(field, code="prove_pair", got=shown(pair))
+            raise InputError(field, code="prove_pair", got=shown(v))
         ends.append(x)
     if ends[0] > ends[1]:
         raise InputError(field, code="prove_order", lo=ends[0], hi=ends[1])
