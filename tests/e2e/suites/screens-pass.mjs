@@ -156,4 +156,32 @@ export default async function screensPass(ctx) {
       await p.context().close();
     }
   });
+
+  await check('screens-pass: a vendor constant too big names the profile\'s options by their panel labels, and its finding opens the first of them', async () => {
+    const mhp = golden('datasheets/rexroth_mhp112a_024.json').input;
+    const want = { en: ['Microchip · voltage base', 'Microchip · voltage base, V'], zh: ['Microchip · 电压基值', 'Microchip · 电压基值，V'] };
+    for (const width of [390, 900, 1366]) {
+      for (const lang of ['en', 'zh']) {
+        const p = await newPage({ context: { viewport: { width, height: 900 } } });
+        await p.goto(link({ ...mhp, conventions: { firmware: 'microchip' } }).replace('#', `?lang=${lang}#`));
+        await ready(p);
+        const f = '#panel-review li.finding[data-finding="firmware.microchip"]';
+        await p.waitForSelector(f, { timeout: 30_000 });
+        const msg = await p.textContent(`${f} .msg`);
+        assert(msg.includes(want[lang][0]) && !msg.includes('profiles.'), `${width} ${lang}: "${msg}"`);
+        await p.click(`${f} a.change`);
+        await p.waitForFunction(() => document.activeElement?.getAttribute('name') === 'profiles.microchip.voltage_base_v', null, { timeout: 10_000 });
+        await p.waitForTimeout(300);
+        const [label, top, bottom] = await p.$eval('[name="profiles.microchip.voltage_base_v"]', (e) => {
+          const r = e.closest('.field').getBoundingClientRect();
+          return [e.closest('.field').querySelector('.lbl').textContent, r.top, r.bottom];
+        });
+        // on screen, below the sticky tabs
+        assert(top >= 40 && bottom <= 900, `${width} ${lang}: the field at ${top}..${bottom} px`);
+        assert(label === want[lang][1], `${width} ${lang}: label "${label}"`);
+        await p.screenshot({ path: join(SHOTS, `screens-pass-${width}-${lang}-option-link.png`) });
+        await p.context().close();
+      }
+    }
+  });
 }

@@ -50,8 +50,11 @@ export function handleLinks(root: HTMLElement, embed: PanelId | null, showDocs: 
         input.focus();
       } else if (inPanel) {
         scrollToEl(inPanel.closest('section.panel'));
-        scrollToEl(inPanel.closest('.field'));
-        inPanel.focus();
+        // after the view's panels have laid out (showing a view moves what is above the field)
+        requestAnimationFrame(() => requestAnimationFrame(() => {
+          scrollToEl(inPanel.closest('.field'));
+          inPanel.focus({ preventScroll: true });
+        }));
       }
     } else if (a.dataset.view) {
       // A tab: its view from the top (the answer strip stays the first thing on screen).
