@@ -506,15 +506,15 @@ MESSAGES = {
                           "Ke measured as / between, Kv per volt and kT per ampere.",
                           "超出温度或饱和所能解释的范围：多半混淆了约定（有效值与峰值差 41 %，线与相差 "
                           "73 %）；请核对 Ke 的测量方式/测量端、Kv 的电压单位与 kT 的电流单位。"),
-    "finding.pi_zero": ("current_pi.{axis}.pm_ki rounds to 0: the integral action is lost (ki·Ts is "
+    "finding.pi_zero": ("pm_ki ({axis} axis) rounds to 0: the integral action is lost (ki·Ts is "
                         "below one Q16 LSB of the per-unit gain); a longer {label} or a higher "
                         "current-loop bandwidth makes it count",
-                        "current_pi.{axis}.pm_ki 取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）；"
+                        "pm_ki（{axis} 轴）取整为 0：积分作用丢失（ki·Ts 小于标幺增益的一个 Q16 LSB）；"
                         "加长{label}或提高电流环带宽可使其不为 0"),
-    "finding.pi_rounding": ("current_pi.{axis}.pm_{k} = {value}: coarse, rounding changes {k} by "
+    "finding.pi_rounding": ("pm_{k} ({axis} axis) = {value}: coarse, rounding changes {k} by "
                             "{pct:+.1f} % (the vendor's Q12/Q16 gain format; a higher {label} gives "
                             "larger, finer integers)",
-                            "current_pi.{axis}.pm_{k} = {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"
+                            "pm_{k}（{axis} 轴）= {value}：分辨率粗，取整使 {k} 改变 {pct:+.1f} %"
                             "（厂商的 Q12/Q16 增益格式；提高{label}可得到更大、更细的整数）"),
     "finding.phase_margin": ("current loop, {axis} axis: phase margin {pm:.3g}° with the {delay} delay "
                              "(below {limit:g}°: overshoot and ringing); {fix}",
@@ -523,37 +523,37 @@ MESSAGES = {
     "finding.phase_margin_unstable": ("current loop, {axis} axis: unstable with the {delay} delay; {fix}",
                                       "电流环 {axis} 轴：计入 {delay} 延时后不稳定；{fix}"),
     "finding.phase_margin_fix": ("for the {target:g}° design of the Loop design panel set {label} to "
-                                 "{ok_hz:.4g} Hz (kp = {kp:.4g} Ω, ki = {ki:.4g} Ω/s)",
-                                 "按“环路设计”面板的 {target:g}° 设计，请把{label}设为 {ok_hz:.4g} Hz"
-                                 "（kp = {kp:.4g} Ω，ki = {ki:.4g} Ω/s）"),
+                                 "{ok_hz:~Hz} (kp = {kp:~Ω}, ki = {ki:~Ω/s})",
+                                 "按“环路设计”面板的 {target:g}° 设计，请把{label}设为 {ok_hz:~Hz}"
+                                 "（kp = {kp:~Ω}，ki = {ki:~Ω/s}）"),
     "finding.phase_margin_lower": ("lower {label}", "请降低{label}"),
-    "finding.base_below_rated": ("raw.FullFreq01 = {full} < raw.FreqRated01 = {rated}: base frequency "
+    "finding.base_below_rated": ("FullFreq01 = {full} < FreqRated01 = {rated}: base frequency "
                                  "below rated frequency, FreqPer > 1.0 in Q15; raise "
                                  "{label} to the rated frequency or more",
-                                 "raw.FullFreq01 = {full} < raw.FreqRated01 = {rated}：基值频率低于额定频率，"
+                                 "FullFreq01 = {full} < FreqRated01 = {rated}：基值频率低于额定频率，"
                                  "Q15 的 FreqPer > 1.0；请把{label}提高到不低于额定频率"),
-    "finding.voltage_rated": ("at rated current and rated frequency the motor needs {need:.4g} V (line "
-                              "RMS), above the voltage limit {limit:.4g} V; raise {label}",
-                              "额定电流、额定频率下电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
-                              "{limit:.4g} V；请提高{label}"),
-    "finding.voltage_rated_firmware": ("at rated current and rated frequency the motor needs {need:.4g} V "
-                                       "(line RMS): within U_dc/√2 = {udc_limit:.4g} V, but above the "
-                                       "firmware's limit {limit:.4g} V (U_dc/√2 in whole volts, a "
+    "finding.voltage_rated": ("at rated current and rated frequency the motor needs {need:~V} (line "
+                              "RMS), above the voltage limit {limit:~V}; raise {label}",
+                              "额定电流、额定频率下电机需要 {need:~V}（线电压有效值），超过电压限幅 "
+                              "{limit:~V}；请提高{label}"),
+    "finding.voltage_rated_firmware": ("at rated current and rated frequency the motor needs {need:~V} "
+                                       "(line RMS): within U_dc/√2 = {udc_limit:~V}, but above the "
+                                       "firmware's limit {limit:~V} (U_dc/√2 in whole volts, a "
                                        "property of the vendor's code); the rated point needs a little "
                                        "field weakening, or a higher {label}",
-                                       "额定电流、额定频率下电机需要 {need:.4g} V（线电压有效值）：未超过 "
-                                       "U_dc/√2 = {udc_limit:.4g} V，但超过固件限幅 {limit:.4g} V（U_dc/√2 "
+                                       "额定电流、额定频率下电机需要 {need:~V}（线电压有效值）：未超过 "
+                                       "U_dc/√2 = {udc_limit:~V}，但超过固件限幅 {limit:~V}（U_dc/√2 "
                                        "取整伏，厂商代码的性质）；额定点需要少量弱磁，或提高{label}"),
-    "finding.voltage_bemf": ("back-EMF at f_b = {f_b:g} Hz is {bemf:.4g} V (line RMS), above the "
-                             "voltage limit {limit:.4g} V: field weakening needed above {from_hz:.4g} "
-                             "Hz; lower {label} or raise the DC bus voltage Udc",
-                             "f_b = {f_b:g} Hz 时反电势为 {bemf:.4g} V（线电压有效值），超过电压限幅 "
-                             "{limit:.4g} V：{from_hz:.4g} Hz 以上需要弱磁；请降低{label}或提高直流母线电压 Udc"),
-    "finding.voltage_fb": ("at rated current and f_b = {f_b:g} Hz the motor needs {need:.4g} V (line "
-                           "RMS), above the voltage limit {limit:.4g} V: full current up to f_b needs "
+    "finding.voltage_bemf": ("back-EMF at f_b = {f_b:~Hz} is {bemf:~V} (line RMS), above the "
+                             "voltage limit {limit:~V}: field weakening needed above {from_hz:~Hz}"
+                             "; lower {label} or raise the DC bus voltage Udc",
+                             "f_b = {f_b:~Hz} 时反电势为 {bemf:~V}（线电压有效值），超过电压限幅 "
+                             "{limit:~V}：{from_hz:~Hz} 以上需要弱磁；请降低{label}或提高直流母线电压 Udc"),
+    "finding.voltage_fb": ("at rated current and f_b = {f_b:~Hz} the motor needs {need:~V} (line "
+                           "RMS), above the voltage limit {limit:~V}: full current up to f_b needs "
                            "field weakening (or a lower {label}, or a higher DC bus voltage Udc)",
-                           "额定电流、f_b = {f_b:g} Hz 时电机需要 {need:.4g} V（线电压有效值），超过电压限幅 "
-                           "{limit:.4g} V：满电流运行到 f_b 需要弱磁（或降低{label}、提高直流母线电压 Udc）"),
+                           "额定电流、f_b = {f_b:~Hz} 时电机需要 {need:~V}（线电压有效值），超过电压限幅 "
+                           "{limit:~V}：满电流运行到 f_b 需要弱磁（或降低{label}、提高直流母线电压 Udc）"),
     "finding.pll_unlocked": ("{key}: not locked (|θ − θ̂| ≥ 2° in the last 20 % of the run); change "
                              "{label}", "{key}：未锁定（仿真最后 20 % 内 |θ − θ̂| ≥ 2°）；请修改{label}"),
     "finding.pll_steady": ("{key}.steady_angle_error_deg = {value:.3g}°: angle error after lock; change "
@@ -596,10 +596,10 @@ MESSAGES = {
                                  "loop.speed：电流环带宽只有速度环穿越频率的 {ratio:.2g} 倍；速度环裕度"
                                  "（把内环当作一个周期的延时）偏乐观"),
     "finding.robust_margin": ("loop.robust.{name}: {what} {shown} on the {axis} axis at {temp_c:g} °C, "
-                              "{current_a:.4g} A, U_dc {udc_v:.4g} V (below {threshold}; the firmware "
+                              "{current_a:~A}, U_dc {udc_v:~V} (below {threshold}; the firmware "
                               "gains are tuned for the nominal motor); {fix}",
                               "loop.robust.{name}：{axis} 轴{what} {shown}，工况 {temp_c:g} °C、"
-                              "{current_a:.4g} A、U_dc {udc_v:.4g} V（低于 {threshold}；固件增益按标称"
+                              "{current_a:~A}、U_dc {udc_v:~V}（低于 {threshold}；固件增益按标称"
                               "电机整定）；{fix}"),
     "finding.unrepresentable": ("the {profile_name} firmware cannot hold this motor ({fields}): "
                                 "{results} are not computed. {advice}",
