@@ -41,7 +41,8 @@ def test_a_division_by_zero_and_an_overflowing_constant():
     # 70000/32767 = 2.14: two fractional bits fewer (Q13 keeps 70000/4 = 17500 ≤ 32767)
     assert (c["params"]["bits"], c["params"]["q_new"]) == (2, 13)
     assert c["params"]["factor"] == pytest.approx(70000 / 32767, rel=1e-15)
-    assert c["params"]["options"] == [{"label": "profiles.ti.full_scale_current_a"}]
+    assert c["params"]["options"] == "profiles.ti.full_scale_current_a"
+    assert c["params"]["option_labels"] == [{"label": "profiles.ti.full_scale_current_a"}]
     assert "(TI · full-scale current)" in c["advice"] and "（TI · 满量程电流）" in c["advice_zh"]
     assert c["message"] == "TI Kp_Iq: 70000 does not fit Q15; stored 32767"
 

@@ -374,7 +374,7 @@ def _firmware(f: list, firmware: dict, shipped: str) -> None:
         missing = any(x["code"].startswith("limit.") for x in p)
         # words too small: the advice rescales them by the profile's options, so the link goes
         # to the first of those on the vendors panel
-        scales = [] if missing else p[0]["params"]["options"]
+        scales = [] if missing else p[0]["params"]["option_labels"]
         field = scales[0]["label"] if isinstance(scales, list) and scales else _FIRMWARE
         _finding(f, "warning" if name == shipped else "note", "unrepresentable",
                  f"firmware.{name}", field, name,

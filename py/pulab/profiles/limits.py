@@ -93,8 +93,9 @@ def constant_problem(profile: str, c: dict, options: tuple = ()) -> dict:
     params = {"path": f"profiles.{profile}.{c['name']}", "profile_name": {"vendor": profile},
               "name": c["name"], "ideal": c["ideal"], "format": c["format"], "value": c["value"],
               "factor": factor, "bits": bits, "q_new": c["q"] - bits,
-              # the options by their labels on the vendors panel, in the reader's language
-              "options": [{"label": f"profiles.{profile}.{k}"} for k in options] or "—"}
+              "options": ", ".join(f"profiles.{profile}.{k}" for k in options) or "—",
+              # the same options by their labels on the vendors panel, in the reader's language
+              "option_labels": [{"label": f"profiles.{profile}.{k}"} for k in options] or "—"}
     return _entry(params["path"], "warning.profile_overflow", params, [c["name"]],
                   "limit.constant_advice", value=c["ideal"], stored=c["value"], max_si=None)
 

@@ -627,10 +627,10 @@ MESSAGES = {
                           "厂商 C 代码无法为这台电机计算这些整数（某个值在作除数前截断为 0）；"
                           "这是代码本身的性质：请选用能表示它的配置，或修改固件的单位。"),
     "limit.constant_advice": ("It needs {factor:.3g}× what {format} holds: store it with {bits} "
-                              "fewer fractional bits (Q{q_new}), or change what scales it ({options}) "
+                              "fewer fractional bits (Q{q_new}), or change what scales it ({option_labels}) "
                               "so that it is {factor:.3g}× smaller.",
                               "它需要 {format} 所能表示范围的 {factor:.3g} 倍：请少用 {bits} 位小数"
-                              "（Q{q_new}）存储，或修改它的缩放（{options}），使其缩小 {factor:.3g} 倍。"),
+                              "（Q{q_new}）存储，或修改它的缩放（{option_labels}），使其缩小 {factor:.3g} 倍。"),
     "profile_unrepresentable": ("the {profile} firmware cannot hold this motor: {reason}",
                                 "{profile} 固件无法表示这台电机：{reason}"),
     "raw_missing": ("{name} does not fit its Uint16 parameter", "{name} 超出其 Uint16 参数范围"),
