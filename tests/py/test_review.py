@@ -311,3 +311,23 @@ def test_a_finding_prints_the_value_with_an_si_prefix_and_keeps_it_exact():
     assert "Lq = 10.6 µH to the firmware unit" in lq["message"] and "Lq = 10.6 µH 取整" in lq["message_zh"]
     assert "= 1.1 mΩ to the firmware unit" in rs["message"] and "= 1.1 mΩ 取整" in rs["message_zh"]
     assert lq["value"] == 100.0 * (1 - 1.06e-05 * 1e5) / (1.06e-05 * 1e5)
+
+
+@pytest.mark.parametrize("firmware", ["inovance", "ti", "nxp", "st", "microchip"])
+def test_inovance_parameter_rounding_counts_only_when_inovance_is_shipped(firmware):
+    """EMRAX 228 LV: RsPm = 1 for 1.1 mΩ (−9.09 %), LQ = 1 for 10.6 µH (−5.66 %) are errors of
+    Inovance's parameter table; with another firmware shipped they are notes naming Inovance."""
+    inp = json.loads((ROOT / "tests/golden/datasheets/emrax_228_lv.json").read_text())["input"]
+    r = report({**inp, "conventions": {**inp.get("conventions", {}), "firmware": firmware}})
+    rows = {x["key"]: x for x in r["review"]["findings"] if x["code"] == "raw_rounding"}
+    rs, lq = rows["vendor.raw.RsPm"], rows["vendor.raw.LQ"]
+    assert round(rs["value"], 2) == -9.09 and round(lq["value"], 2) == -5.66
+    if firmware == "inovance":
+        assert rs["severity"] == lq["severity"] == "error"
+        assert rows["vendor.raw.LD"]["severity"] == "warning"
+    else:
+        assert {x["severity"] for x in rows.values()} == {"note"}
+        assert all("Inovance's parameter table" in x["message"] and "汇川参数表" in x["message_zh"]
+                   and x["field"] == "conventions.firmware" for x in rows.values())
+        assert not any(x["code"] in ("raw_rounding", "raw_zero") and x["severity"] != "note"
+                       for x in r["review"]["findings"])

@@ -218,3 +218,27 @@ def test_any_profile_options_run_or_say_why_never_crash(seed_input):
             else:
                 skipped += 1
     assert ran > 40 and skipped > 10, (ran, skipped)
+
+
+def test_lsb_is_one_count_of_each_vendors_own_current_scale():
+    """EMRAX 228 LV (rms bases, TI shipped): one count is the profile's full-scale current (A,
+    phase peak) over its word — TI 2·√2·450 A / 2^24, NXP/ST/Microchip 2·√2·450 A / 2^15 — in the
+    report's dq scale (÷ √2 for rms bases), so |vendor − SI| in counts is that difference over it."""
+    import json
+    root = pathlib.Path(__file__).resolve().parents[2]
+    inp = json.loads((root / "tests/golden/datasheets/emrax_228_lv.json").read_text())["input"]
+    r = report({**inp, "conventions": {"firmware": "ti"}, "sim": {}, "profiles": {}})
+    assert r["input"]["conventions"]["base"] == "rms"
+    full = 2 * math.sqrt(2) * 450.0  # A peak: twice the rated current's peak (1272.79 A)
+    words = {"ti": 2 ** 24, "nxp": 2 ** 15, "st": 2 ** 15, "microchip": 2 ** 15}
+    fields = {"ti": "full_scale_current_a", "nxp": "i_max_a", "st": "max_current_a",
+              "microchip": "current_base_a"}
+    for name, b in r["sim"]["current"]["by_profile"].items():
+        assert r["profiles"][name]["inputs"][fields[name]] == pytest.approx(full, rel=1e-12)
+        lsb = full / words[name] / math.sqrt(2)
+        assert b["lsb_a"] == pytest.approx(lsb, rel=1e-12), name
+        m = b["metrics"]
+        assert m["vs_si_max_lsb"] == pytest.approx(m["vs_si_max_abs_a"] / lsb, rel=1e-12), name
+    # TI: 900 A / 2^24 per count in the rms dq scale is the same count as 1272.79 A / 2^24 peak
+    assert r["sim"]["current"]["by_profile"]["ti"]["lsb_a"] == pytest.approx(900.0 / 2 ** 24,
+                                                                             rel=1e-12)

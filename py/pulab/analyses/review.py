@@ -175,9 +175,11 @@ def _constants(f: list, vendor: dict, unit: str) -> None:
 
 
 def _raw_rounding(f: list, n: dict, raw: dict) -> None:
-    """The firmware's parameter units: the motor's values are not design choices, so the
-    finding points at the inductance unit (LD/LQ in 10 µH) or at the firmware profile."""
+    """Inovance's parameter units: the motor's values are not design choices, so the
+    finding points at the inductance unit (LD/LQ in 10 µH) or at the firmware profile.
+    Graded only when Inovance is shipped; else a note naming it, as another firmware's limits."""
     unit = n["conventions"]["inductance_unit"]
+    shipped = n["conventions"]["firmware"] == "inovance"
     for name in RAW_FIELDS:
         if name in n["raw"] or name not in raw:  # typed, or beyond the firmware: firmware.*
             continue
@@ -191,12 +193,18 @@ def _raw_rounding(f: list, n: dict, raw: dict) -> None:
         count = "1 µH" if name in ("LD", "LQ") and unit == "uH" else _PARAMETER_UNITS[name]
         fix = {"code": "fix.inductance_unit" if finer else "fix.parameter_unit",
                "params": {"unit": count}}
+        if not shipped:
+            field = _FIRMWARE
+            fix = {"code": "fix.parameter_unit_unshipped",
+                   "params": {"unit": count, "vendor": {"vendor": "inovance"},
+                              "shipped": {"vendor": n["conventions"]["firmware"]}}}
         if raw[name] == 0:
-            _finding(f, "error", "raw_zero", f"vendor.raw.{name}", field, 0, name=name,
+            _finding(f, "error" if shipped else "note", "raw_zero", f"vendor.raw.{name}", field, 0, name=name,
                      path={"label": path}, si=si, si_unit=si_unit, fix=fix)
             continue
         pct = 100.0 * (raw[name] - exact) / exact
-        _finding(f, grade(pct, THRESHOLDS["quantization_pct"]), "raw_rounding",
+        sev = grade(pct, THRESHOLDS["quantization_pct"])
+        _finding(f, sev if shipped or sev is None else "note", "raw_rounding",
                  f"vendor.raw.{name}", field, pct, name=name, value=raw[name], path={"label": path},
                  si=si, si_unit=si_unit, pct=pct, fix=fix)
 

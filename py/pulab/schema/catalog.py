@@ -484,6 +484,11 @@ MESSAGES = {
                            "derives from it; only another choice under “{label}” changes it.",
                            "这是厂商参数表的性质（一个计数为 {unit}），不是输入的问题：固件由它导出的每个值"
                            "都损失这么多精度；只有改选“{label}”才能改变。"),
+    "fix.parameter_unit_unshipped": ("A property of {vendor}'s parameter table (one count is "
+                                     "{unit}): it matters only if you ship {vendor}'s firmware "
+                                     "(“{label}” is {shipped}).",
+                                     "这是{vendor}参数表的性质（一个计数为 {unit}）：只有交付{vendor}"
+                                     "固件时才有影响（“{label}”当前为 {shipped}）。"),
     "fix.inductance_unit": ("Set “{label}” to µH: the counts become 10× finer (the firmware must read "
                             "LD/LQ in µH too).",
                             "把“{label}”设为 µH：计数细 10 倍（固件也须按 µH 读取 LD/LQ）。"),
