@@ -1,6 +1,7 @@
 // The compute session without a DOM: what it publishes goes through an injected SessionEnv, and its
 // Python calls through a PulabClient on a fake worker that answers at once.
 import { describe, it, expect } from 'vitest';
+import { readFileSync } from 'node:fs';
 import { ComputeSession, type SessionEnv } from '../../web/src/page/session';
 import { PulabClient, type WorkerLike } from '../../web/src/rpc';
 import { SEED_INPUT, clone, encodeHash, reportKey, type Input } from '../../web/src/state';
@@ -136,5 +137,20 @@ describe('ComputeSession with an injected environment', () => {
     expect(s.report).toBe(REPORT);
     s.publish();
     expect(log.sources.at(-1)).toBe('cached');
+  });
+
+  it('a form replaced without a simulation section (a blank datasheet) is still simulated', async () => {
+    const { env } = fakeEnv();
+    const e = events();
+    const s = new ComputeSession(clone(SEED_INPUT), false, e.events, env);
+    const { client, payloads } = fakeClient(() => REPLY);
+    s.client = client;
+    s.simClient = client;
+    const golden = JSON.parse(readFileSync('tests/golden/datasheets/emrax_228_lv.json', 'utf8')).input as Input;
+    s.replaceInput(golden);
+    await new Promise((res) => setTimeout(res, 600));
+    const simmed = payloads.filter((p) => (p as Input).sim) as Input[];
+    expect(simmed.length).toBe(1);
+    expect(simmed[0].datasheet).toEqual(golden.datasheet);
   });
 });

@@ -22,6 +22,12 @@ describe('toSI: display unit → the SI value of the input JSON (exact for the u
     [0.0176, 'V/rpm', 17.6],
     [0.0304, 'V/rpm', 30.4],
     [57, 'V/krpm', 57],
+    // large motors' datasheets print the winding resistance in mΩ (EMRAX 228: 1.1 mΩ per phase)
+    [1.1, 'mΩ', 0.0011],
+    [4.2, 'mΩ', 0.0042],
+    [0.35, 'mΩ', 0.00035],
+    [12.5, 'mΩ', 0.0125],
+    [0.0011, 'Ω', 0.0011],
   ];
   for (const [v, u, want] of cases) it(`${v} ${u} → ${want}`, () => expect(toSI(v, u)).toBe(want));
 });
@@ -35,6 +41,9 @@ describe('fromSI: SI → display unit (12 significant digits)', () => {
     [0.0000625, 'kHz', 16],
     [0.2, 'ms', 200],
     [17.6, 'V/rpm', 0.0176],
+    [0.0011, 'mΩ', 1.1],
+    [0.0042, 'mΩ', 4.2],
+    [0.0011, 'Ω', 0.0011],
   ];
   for (const [v, u, want] of cases) it(`${v} → ${want} ${u}`, () => expect(fromSI(v, u)).toBe(want));
 });

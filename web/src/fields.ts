@@ -61,14 +61,18 @@ const design = (inp: Input): string => String(inp.analysis?.design ?? 'phase_mar
  * when it is greyed out beyond the schema's own `only_with`. */
 /** Every inductance field offers the same units in the same order: the form shows one unit for all. */
 const L_UNITS: UnitId[] = ['µH', 'mH', 'H'];
+/** Resistances likewise; Ω first, as links handed out before mΩ existed meant Ω. */
+const R_UNITS: UnitId[] = ['Ω', 'mΩ'];
 const PAGE: Record<string, Partial<FieldSpec>> = {
   'motor.rated_voltage_v': { placeholderFrom: 'input.motor.rated_voltage_v' },
   'motor.rated_freq_hz': { placeholderFrom: 'input.motor.rated_freq_hz' },
-  'motor.rs_ohm': { placeholderFrom: 'input.motor.rs_ohm' },
+  'motor.rs_ohm': { units: R_UNITS, placeholderFrom: 'input.motor.rs_ohm' },
   'motor.ld_h': { units: L_UNITS, placeholderFrom: 'input.motor.ld_h' },
   'motor.lq_h': { units: L_UNITS, placeholderFrom: 'input.motor.lq_h' },
   'motor.bemf_v': { placeholderFrom: 'input.motor.bemf_v' },
   'datasheet.ke_v_per_krpm': { units: ['V/krpm', 'V/rpm'] },
+  'datasheet.rs_line_ohm': { units: R_UNITS },
+  'datasheet.rs_phase_ohm': { units: R_UNITS },
   'datasheet.l_line_h': { units: L_UNITS },
   'datasheet.ld_line_h': { units: L_UNITS },
   'datasheet.lq_line_h': { units: L_UNITS },
@@ -91,9 +95,10 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
   'analysis.target_bandwidth_hz': { enabled: (i) => design(i) === 'bandwidth', placeholderFrom: 'current_pi.bandwidth_hz' },
   'analysis.speed.ts_s': { units: ['µs', 'kHz', 's'] },
 };
-/** The fields that share a display unit with `f` (inductances: one choice for the motor and the datasheet). */
+/** The fields that share a display unit with `f` (inductances, resistances: one choice for the
+ * motor and the datasheet). */
 export function unitSiblings(f: FieldSpec): FieldSpec[] {
-  return f.units === L_UNITS ? ALL_FIELDS.filter((g) => g.units === L_UNITS) : [f];
+  return f.units === L_UNITS || f.units === R_UNITS ? ALL_FIELDS.filter((g) => g.units === f.units) : [f];
 }
 /** Set by panels, not typed into the form. */
 const NOT_IN_FORM = new Set(['analysis.bode', 'analysis.speed.response']);

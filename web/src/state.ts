@@ -225,7 +225,8 @@ export function initialInput(hash: string, stored: string | null): Initial {
   return { input: clone(SEED_INPUT), source: 'default', problems, linkBroken: linked !== null };
 }
 
-function withSim(v: Input): Input {
+/** `v` with the seed's "sim" and "analysis" where it has none: the plots need both. */
+export function withSim(v: Input): Input {
   const out = clone(v);
   if (!out.sim) out.sim = clone(SEED_INPUT.sim);
   if (!out.analysis) out.analysis = clone(SEED_INPUT.analysis);

@@ -7,7 +7,7 @@ import { errText, t } from '../i18n';
 import { Superseded, type PulabClient } from '../rpc';
 import type { ApiErr } from '../protocol';
 import type { Report } from '../report-types';
-import { decodeUnits, encodeHash, initialInput, reportKey, simInput, type Input } from '../state';
+import { decodeUnits, encodeHash, initialInput, reportKey, withSim, simInput, type Input } from '../state';
 import type { NumbersSource } from './numbers';
 
 /** What the session needs from the page around it. */
@@ -149,7 +149,8 @@ export class ComputeSession {
 
   /** Replace the whole input (preset, link): earlier errors no longer apply. */
   replaceInput(input: Input): void {
-    this.input = input;
+    // Without a "sim" section nothing is simulated and the plots keep the previous motor's.
+    this.input = withSim(input);
     this.keepLink = false;
     this.stateNotes.clear();
     this.localErrors.clear();
