@@ -21,6 +21,8 @@ interface Job { cancelled: boolean }
 
 const st = {
   rows: null as RangeRow[] | null,
+  /** The user edited a range: until then the rows follow the page's motor. */
+  edited: false,
   profile: 'inovance' as Profile,
   job: null as Job | null,
   names: [] as string[],
@@ -35,7 +37,10 @@ const st = {
 /** The channel of this panel's calls: the worker runs them slice by slice. */
 const CHANNEL = 'prove';
 
-function defaultRow(ctx: PanelContext, path: string, lo: number, hi: number): RangeRow {
+/** 0.5× to 2× the motor's value at `path`: the report's echoed input first, as it holds the
+ * values derived from a datasheet (rated voltage from the DC bus, …). */
+function defaultRow(ctx: PanelContext, path: string): RangeRow {
+  const [lo, hi] = [0.5, 2];
   const v = Number(getPath(ctx.report?.input, path) ?? getPath(ctx.input, path) ?? 1);
   const fmt = (x: number) => String(Number(x.toPrecision(3)));
   return { path, lo: fmt(v * lo), hi: fmt(v * hi) };
@@ -178,9 +183,9 @@ function rangeRows(el: HTMLElement, ctx: PanelContext): HTMLElement {
   const paths = sweepPaths(ctx.input);
   const err = (path: string) => (st.error && st.error.field === `prove.ranges.${path}` ? errText(st.error) : '');
   return h('div', { class: 'pr-ranges' }, rows.map((r, i) => {
-    const set = (k: keyof RangeRow) => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; };
+    const set = (k: keyof RangeRow) => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; st.edited = true; };
     return h('div', { class: 'pr-range' },
-      h('select', { name: `prove.ranges.${i}.path`, 'aria-label': t('prPath'), onchange: (ev: Event) => { r.path = (ev.target as HTMLSelectElement).value; } },
+      h('select', { name: `prove.ranges.${i}.path`, 'aria-label': t('prPath'), onchange: (ev: Event) => { r.path = (ev.target as HTMLSelectElement).value; st.edited = true; } },
         paths.map((p) => h('option', { value: p, selected: p === r.path }, p))),
       h('label', {}, t('prLo'), ' ', h('input', { name: `prove.ranges.${i}.lo`, value: r.lo, inputmode: 'decimal', oninput: set('lo') })),
       h('label', {}, t('prHi'), ' ', h('input', { name: `prove.ranges.${i}.hi`, value: r.hi, inputmode: 'decimal', oninput: set('hi') })),
@@ -188,7 +193,7 @@ function rangeRows(el: HTMLElement, ctx: PanelContext): HTMLElement {
       h('span', { class: 'err', 'data-err-for': `prove.ranges.${r.path}` }, err(r.path)));
   }), h('button', { type: 'button', class: 'pr-add', onclick: () => {
     const used = new Set(rows.map((r) => r.path));
-    rows.push(defaultRow(ctx, paths.find((p) => !used.has(p)) ?? paths[0], 0.5, 2));
+    rows.push(defaultRow(ctx, paths.find((p) => !used.has(p)) ?? paths[0]));
     provePanel.render(el, ctx);
   } }, t('prAdd')));
 }
@@ -198,9 +203,10 @@ export const provePanel: Panel = {
   title: 'p_prove',
   needsPython: true,
   render(el, ctx) {
-    if (!st.rows) st.rows = [defaultRow(ctx, 'motor.rated_current_a', 0.5, 2), defaultRow(ctx, 'motor.rated_voltage_v', 0.5, 2)];
-    // Typing in the motor re-renders every panel; this one is rebuilt only for its own state.
-    const key = [getLang(), !!ctx.client, !!st.job, st.proposing, !!st.proposal, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
+    st.rows = st.edited && st.rows ? st.rows : (st.rows?.map((r) => r.path) ?? ['motor.rated_current_a', 'motor.rated_voltage_v']).map((p) => defaultRow(ctx, p));
+    // Typing in the motor re-renders every panel; this one is rebuilt only for its own state
+    // (and for the default ranges, which follow the motor).
+    const key = [st.edited ? '' : JSON.stringify(st.rows), getLang(), !!ctx.client, !!st.job, st.proposing, !!st.proposal, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
     if (el.querySelector('.prove') && el.dataset.rendered === key) return;
     const running = st.job !== null;
     const done = Object.keys(st.entries).length;
