@@ -39,6 +39,32 @@ export default async function codeProve(ctx) {
     await page.waitForFunction(() => document.documentElement.dataset.codeProveDone !== undefined, null, { timeout: 120_000 });
   };
 
+  await check('code-prove: an input without a range is fixed at its traced value, as the CLI keeps --set', async () => {
+    await page.goto(url(PI, 'pi_saturated'));
+    await ready(page);
+    await page.fill('input[name="set.kp"]', '16384');
+    await page.fill('input[name="set.ki"]', '-7');
+    await open();
+    for (const n of ['kp', 'ki']) {
+      const v = await page.$eval(`input[name="range.${n}.0"]`, (e) => e.value);
+      assert(v === '', `range.${n} starts empty, got "${v}"`);
+    }
+    await page.waitForFunction(() => document.querySelector('[data-fixed-for="kp"]')?.textContent.includes('16384'));
+    await fill({ e: [-4096, 4096], '*integ': [-32768, 32767] });
+    await fill({ ki: ['', ''] }); // an emptied box means fixed too
+    await prove();
+    const box = await page.$$eval('[data-box-for]', (es) => es.map((e) => e.dataset.boxFor).sort());
+    assert(JSON.stringify(box) === JSON.stringify(['*integ', 'e']), `box lists exactly the ranged inputs, got ${box}`);
+    assert(await valueOf(page, 'code.prove.set.kp') === 16384 && await valueOf(page, 'code.prove.set.ki') === -7, 'kp, ki fixed at their traced values');
+    const want = JSON.parse(cli(['--target', 'arm', '--entry', 'pi_saturated', '--prove', '--budget', '300',
+      '--range', 'e=-4096:4096', '--range', '*integ=-32768:32767', '--set', 'kp=16384', '--set', 'ki=-7'], PI));
+    assert(await page.evaluate(() => document.documentElement.dataset.codeProveDone) === want.verdict, `overall verdict ${want.verdict}`);
+    for (const [i, s] of want.statements.entries()) {
+      const v = await page.$eval(`[data-verdict-for="${i}"]`, (e) => e.className);
+      assert(v.includes(`pr-${s.verdict}`), `${s.code}: page ${v}, CPython ${s.verdict}`);
+    }
+  });
+
   await check('code-prove: the PI routine\'s verdicts and ranges equal CPython\'s pulab trace --prove', async () => {
     await page.goto(url(PI, 'pi_saturated'));
     await ready(page);
@@ -93,7 +119,7 @@ export default async function codeProve(ctx) {
     await page.goto(url(GAIN, 'gain'));
     await ready(page);
     await open();
-    await page.waitForFunction(() => document.querySelector('input[name="range.k.0"]')?.value === '-1');
+    await page.waitForSelector('input[name="range.k.0"]');
     await fill({ x: [-32768, 32767], k: ['-1.5', '2.0'] });
     await prove();
     const want = JSON.parse(cli(['--target', 'arm', '--entry', 'gain', '--prove', '--budget', '300',

@@ -32,24 +32,40 @@ const BUDGETS = [300, 2000, 12000];
 
 const ps = {
   open: false,
-  ranges: {} as Record<string, { lo: string; hi: string }>,
+  ranges: {} as Record<string, { lo: string; hi: string; typed: boolean }>,
   job: null as Job | null,
   proof: null as CodeProof | null,
   error: null as ApiErr | null,
   round: 0,
   note: null as null | { key: Key; vars: Record<string, string | number> },
+  /** The ranges the last proof was given, as sent. */
+  sent: {} as Record<string, [string, string]>,
 };
 
-/** A range around the input's current value (typed, or prefilled from the report); for an
- * `@q auto` input, real units: ±1. */
-function defaultRange(host: ProveHost, report: unknown, name: string): { lo: string; hi: string } {
-  if (host.auto().includes(name)) return { lo: '-1', hi: '1' };
+/** The value an input without a range keeps: the one the trace uses (typed, or prefilled
+ * from the report); null when the trace has none for it. */
+function currentValue(host: ProveHost, report: unknown, name: string): string | null {
   const typed = host.state().set[name];
-  const fromReport = prefill(host.inputs(), report)[name]?.value;
-  const v = Number(typed !== undefined && typed.trim() !== '' ? typed.trim() : fromReport ?? 0);
-  const x = Number.isFinite(v) ? Math.round(v) : 0;
-  const d = Math.max(1, Math.floor(Math.abs(x) / 2));
-  return { lo: String(x - d), hi: String(x + d) };
+  if (typed !== undefined && typed.trim() !== '') return typed.trim();
+  const v = prefill(host.inputs(), report)[name]?.value;
+  return v === undefined ? null : String(v);
+}
+
+/** An `@q auto` input must have a range (real units, ±1 to start from); every other input starts
+ * without one, i.e. fixed at its traced value, as the CLI keeps `--set` for inputs without `--range`. */
+function defaultRange(host: ProveHost, name: string): void {
+  // The `@q auto` annotations are known only once the code traces: until the user types in the
+  // box, it follows them (changed in place: the fields' handlers hold the object).
+  const r = (ps.ranges[name] ??= { lo: '', hi: '', typed: false });
+  if (!r.typed) Object.assign(r, host.auto().includes(name) ? { lo: '-1', hi: '1' } : { lo: '', hi: '' });
+}
+
+/** The hint beside an empty range: which value the proof keeps. */
+function fixedHint(host: ProveHost, report: unknown, name: string): string {
+  const r = ps.ranges[name];
+  if (r.lo.trim() !== '' || r.hi.trim() !== '') return '';
+  const v = currentValue(host, report, name);
+  return v === null ? t('cpFixedTraced') : t('cpFixedAt', { v });
 }
 
 /** The inputs a range can be given to: all but the pointers. */
@@ -70,6 +86,7 @@ async function run(first: HTMLElement, ctx: PanelContext, host: ProveHost): Prom
     const r = ps.ranges[name];
     if (r && (r.lo.trim() !== '' || r.hi.trim() !== '')) range[name] = [r.lo.trim(), r.hi.trim()];
   }
+  ps.sent = range;
   for (const [i, budget] of BUDGETS.entries()) {
     ps.round = i + 1;
     draw();
@@ -130,6 +147,18 @@ function statementRow(st: CodeStatement, i: number, host: ProveHost): HTMLElemen
     h('td', { class: 'pr-why' }, why));
 }
 
+/** The box the proof ran over and the inputs it kept fixed, exactly as the result gives them. */
+function usedBox(p: CodeProof, host: ProveHost): HTMLElement {
+  // An `@q auto` input's box is in real units (the raw one depends on the proposed Q).
+  const ranges = Object.entries(p.box).map(([name, [lo, hi]]) => h('span', { 'data-box-for': name },
+    h('code', {}, name), ' ∈ ', host.auto().includes(name) ? `[${ps.sent[name]?.[0]}, ${ps.sent[name]?.[1]}] ${t('cpReal')} `
+      : h('span', {}, '[', num(`code.prove.box.${name}.0`, lo, { kind: 'int' }), ', ', num(`code.prove.box.${name}.1`, hi, { kind: 'int' }), '] ')));
+  const fixed = Object.entries(p.set).filter((e): e is [string, number] => typeof e[1] === 'number').map(([name, v]) => h('span', { 'data-set-for': name },
+    h('code', {}, name), ' = ', num(`code.prove.set.${name}`, v, { kind: 'int' }), ' '));
+  return h('p', { class: 'hint code-prove-used' }, t('cpBoxUsed'), ' ', ...ranges,
+    fixed.length ? h('span', {}, '; ', t('cpFixedUsed'), ' ', ...fixed) : null);
+}
+
 function proposals(p: CodeProof): HTMLElement | null {
   const list = Object.entries(p.proposals ?? {});
   if (!list.length) return null;
@@ -142,8 +171,8 @@ function proposals(p: CodeProof): HTMLElement | null {
 /** Draw the Prove mode into `box` (the code panel calls it on every update). */
 export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost): void {
   const names = ranged(host);
-  for (const n of names) ps.ranges[n] ??= defaultRange(host, ctx.report, n);
-  const key = [getLang(), !!ctx.client, ps.open, !!ps.job, ps.round, JSON.stringify(ps.note), ps.error?.message ?? '', ps.proof?.work ?? -1, names.join(',')].join('|');
+  for (const n of names) defaultRange(host, n);
+  const key = [getLang(), !!ctx.client, ps.open, !!ps.job, ps.round, JSON.stringify(ps.note), ps.error?.message ?? '', ps.proof?.work ?? -1, names.join(','), host.auto().join(','), JSON.stringify(host.state().set)].join('|');
   if (box.dataset.rendered === key && box.firstChild) return;
   box.dataset.rendered = key;
   const running = ps.job !== null;
@@ -158,11 +187,17 @@ export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost
   h('p', { class: 'hint' }, t('cpIntro'), ' ', t('cpAutoHint')),
   h('div', { class: 'code-prove-ranges fields' }, names.map((name) => {
     const r = ps.ranges[name];
-    const set = (k: 'lo' | 'hi') => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; };
+    const fixed = h('span', { class: 'hint', 'data-fixed-for': name }, fixedHint(host, ctx.report, name));
+    const set = (k: 'lo' | 'hi') => (ev: Event) => {
+      r[k] = (ev.target as HTMLInputElement).value;
+      r.typed = true;
+      fixed.textContent = fixedHint(host, ctx.report, name);
+    };
     return h('div', { class: 'code-prove-range' },
       h('code', {}, name), host.auto().includes(name) ? h('span', { class: 'hint' }, t('cpReal')) : null,
       h('label', {}, t('cpLo'), ' ', h('input', { name: `range.${name}.0`, value: r.lo, inputmode: 'numeric', spellcheck: 'false', oninput: set('lo') })),
       h('label', {}, t('cpHi'), ' ', h('input', { name: `range.${name}.1`, value: r.hi, inputmode: 'numeric', spellcheck: 'false', oninput: set('hi') })),
+      fixed,
       h('span', { class: 'err', 'data-err-for': `range.${name}` }, err(name)));
   })),
   h('div', { class: 'sweep-run' },
@@ -173,6 +208,7 @@ export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost
       : ps.note ? t(ps.note.key, ps.note.vars) : '')),
   otherErr ? h('p', { class: 'err' }, otherErr) : null,
   p ? h('p', { class: `pr-overall pr-${p.verdict}`, 'data-verdict': p.verdict }, t('cpOverall', { verdict: t(`v_${p.verdict}` as Key) })) : null,
+  p ? usedBox(p, host) : null,
   p ? proposals(p) : null,
   p ? h('div', { class: 'scroll' }, table(['L:C', t('cpStatement'), t('cpVerdict'), t('cpRange'), t('cpBar'), t('cpWhy')],
     p.statements.map((st, i) => statementRow(st, i, host)), 'code-prove-table')) : null));
