@@ -52,6 +52,16 @@ export default async function code(ctx) {
     await page.screenshot({ path: join(SHOTS, 'code-1366-en-steps.png') });
   });
 
+  await check('code: a code error clears the previous trace and its verdict', async () => {
+    await page.waitForSelector('#panel-code .code-summary');
+    await page.fill('textarea[name="code"]', `${CODE}\nint16_t = ;\n`);
+    await page.waitForFunction(() => document.querySelector('#panel-code [data-err-for="code"]')?.textContent !== '');
+    await page.waitForFunction(() => !document.querySelector('#panel-code .code-summary') && !document.querySelector('#panel-code table.code-steps'),
+      null, { timeout: 15_000 });
+    await page.fill('textarea[name="code"]', CODE);
+    await page.waitForSelector('#panel-code .code-summary');
+  });
+
   await check('code: the PI example with the report\'s gains and step example gives the report\'s vendor PI output', async () => {
     await page.selectOption('select[name="example"]', 'pi');
     const want = ctx.cpython(ctx.golden('01_seed_motor.json').input).current_pi.step_example.trace.at(-1).value;

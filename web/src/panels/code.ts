@@ -256,6 +256,10 @@ function update(el: HTMLElement, ctx: PanelContext): void {
   const other_err = [main, other].find((r): r is ApiErr => r !== null && !r.ok && r.field !== 'code' && !r.field.startsWith('set.'));
   out.querySelector('.code-global-err')?.remove();
   if (!a) {
+    // The previous run's trace and its verdict would read as this code's: nothing stays.
+    out.replaceChildren();
+    el.querySelector('.code-trace')?.replaceChildren();
+    drawn = [];
     out.classList.add('stale');
     if (other_err) out.prepend(h('p', { class: 'err code-global-err' }, `${other_err.field}: ${errText(other_err)}`));
     return;
