@@ -1,6 +1,7 @@
 // The "Your code" panel's state without DOM: reading and writing it in the URL's query
 // (?code=…&target=…&vs=…&entry=…&set.NAME=…, beside #in= which keeps the motor), the trace request,
 // and the inputs prefilled from the report's integers.
+import type { TraceLine } from './api-types';
 
 export interface CodeState {
   code: string;
@@ -86,6 +87,18 @@ export function traceRequest(s: CodeState, target: string, inputs: string[], rep
     else if (name in fromReport) set[name] = fromReport[name].value;
   }
   return s.entry ? { code: s.code, target, set, entry: s.entry } : { code: s.code, target, set };
+}
+
+/** The steps (paired as the steps table pairs them: same statement at the same place) whose value
+ * or one of whose terms' values differs between two traces: a final state can agree while an
+ * intermediate result does not. */
+export function differingSteps(a: TraceLine[], b: TraceLine[] | undefined): TraceLine[] {
+  if (!b) return [];
+  return a.filter((x, i) => {
+    const y = b[i];
+    if (!y || y.code !== x.code || y.line !== x.line || y.column !== x.column) return false;
+    return y.value !== x.value || x.terms.some((tm, j) => y.terms[j]?.expr === tm.expr && y.terms[j].value !== tm.value);
+  });
 }
 
 /** Names of the variables whose final values differ between two traces' `vars`. */

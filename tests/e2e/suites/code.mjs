@@ -62,6 +62,18 @@ export default async function code(ctx) {
     await page.waitForSelector('#panel-code .code-summary');
   });
 
+  await check('code: equal final values with an intermediate difference do not read "all equal"', async () => {
+    // ref - fb overflows int on c28x (-1) and is 65535 on arm; the cast makes out -1 on both.
+    const SUB = 'int16_t out;\nvoid f(int16_t ref, int16_t fb) {\n  out = (int16_t)(ref - fb);\n}\n';
+    const p = await newPage();
+    await p.goto(`${subSrv.url}?code=${encodeURIComponent(SUB)}&target=c28x&vs=arm&entry=f&set.ref=32767&set.fb=-32768`);
+    await p.click('nav.tabs a[data-view="firmware"]');
+    await p.waitForSelector('[data-key="code.arm.vars.out.value"][data-value="-1"]', { timeout: 60_000 });
+    const { n, text } = await p.$eval('#panel-code .code-summary', (e) => ({ n: e.dataset.stepsDiffer, text: e.textContent }));
+    assert(n === '1' && text.includes('3:'), `one differing statement, at line 3: ${n} "${text}"`);
+    await p.context().close();
+  });
+
   await check('code: the PI example with the report\'s gains and step example gives the report\'s vendor PI output', async () => {
     await page.selectOption('select[name="example"]', 'pi');
     const want = ctx.cpython(ctx.golden('01_seed_motor.json').input).current_pi.step_example.trace.at(-1).value;

@@ -3,7 +3,7 @@
 // the trace kind of pulab.api.call_json in the worker; the state lives in the URL query (code-share.ts).
 import { flagChips, focusedInput, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
-import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
+import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingSteps, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
 import type { Panel, PanelContext } from './panel';
 import { renderProve, type ProveHost } from './code-prove';
@@ -269,9 +269,12 @@ function update(el: HTMLElement, ctx: PanelContext): void {
   if (sameItems(shown, drawn) && out.childElementCount) return;
   drawn = shown;
   const diff = b ? differingVars(a.vars, b.vars) : [];
+  const steps = differingSteps(a.steps, b?.steps);
   out.replaceChildren(
-    b ? h('p', { class: `code-summary${diff.length ? ' differs' : ''}`, 'data-differ': String(diff.length) },
-      diff.length ? t('codeDiffCount', { n: diff.length, m: Object.keys(a.vars).length, a: a.target, b: b.target }) : t('codeSame', { a: a.target, b: b.target })) : '',
+    b ? h('p', { class: `code-summary${diff.length || steps.length ? ' differs' : ''}`, 'data-differ': String(diff.length), 'data-steps-differ': String(steps.length) },
+      diff.length ? t('codeDiffCount', { n: diff.length, m: Object.keys(a.vars).length, a: a.target, b: b.target })
+        : steps.length ? t('codeSameFinal', { a: a.target, b: b.target, n: steps.length, at: `${steps[0].line}:${steps[0].column}`, code: steps[0].code })
+          : t('codeSame', { a: a.target, b: b.target })) : '',
     h('h3', {}, t('codeVars')),
     varsTable(a, b),
   );
