@@ -107,10 +107,12 @@ export default async function codeProve(ctx) {
   });
 
   await check('code-prove: a bad range is shown at its field', async () => {
-    await fill({ e: ['x', 10] });
-    await prove();
-    const msg = await page.$eval('[data-err-for="range.e"]', (e) => e.textContent);
-    assert(msg.length > 0, 'an error at range.e');
+    for (const bad of ['abc', '1.5']) {
+      await fill({ e: [bad, 10] });
+      await prove();
+      const msg = await page.$eval('[data-err-for="range.e"]', (e) => e.textContent);
+      assert(msg.includes(bad), `the message at range.e quotes the bad end "${bad}": ${msg}`);
+    }
     await fill(RANGES);
   });
 
