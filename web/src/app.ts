@@ -79,7 +79,9 @@ export class App {
     this.status = new StatusLine(root, this.session);
     this.useInitial(this.init);
     if (this.embed) linkToHost(this.embed, () => this.session.report);
-    window.addEventListener('hashchange', () => this.followLink());
+    // The link navigated to, not location.hash: a report answered in the same moment may have
+    // written its own input into the address bar before this event runs.
+    window.addEventListener('hashchange', (e) => this.followLink(new URL(e.newURL).hash));
   }
 
   /**
@@ -88,11 +90,11 @@ export class App {
    * opening view from the top, the inputs drawer closed. The page's own writes to the address bar
    * (history.replaceState) fire no hashchange; a hash without state (#panel-…) changes nothing.
    */
-  private followLink(): void {
-    const next = initialInput(location.hash, null);
+  private followLink(hash: string): void {
+    const next = initialInput(hash, null);
     if (next.source !== 'url') return;
     // The units first: before Python is ready the session writes the address bar at once.
-    this.form.useUnits(location.hash);
+    this.form.useUnits(hash);
     if (JSON.stringify(effectiveInput(next.input)) !== JSON.stringify(effectiveInput(this.session.input))) this.session.replaceInput(next.input);
     this.init = next;
     this.useInitial(next);
