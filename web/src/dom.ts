@@ -150,13 +150,27 @@ export function focusedInput(el: HTMLElement): string | null {
   return named && el.contains(a) && a.name ? a.name : null;
 }
 
-/** After `el` was rebuilt: the focus back in the input named `name`, the caret at its end. */
-export function refocus(el: HTMLElement, name: string | null): void {
-  const again = name ? el.querySelector<HTMLInputElement>(`input[name="${name}"]`) : null;
+/**
+ * Run `rebuild` (which may replace what `el` shows) and give the focus back to the control of the
+ * same name if the rebuild took it away, the caret where it was: a report or the runtime becoming
+ * ready re-renders panels between two keystrokes, and the second must land in the same box.
+ */
+export function keepFocus(el: HTMLElement, rebuild: () => void): void {
+  const name = focusedInput(el);
+  const before = name ? (document.activeElement as HTMLInputElement | HTMLTextAreaElement) : null;
+  const caret = before && 'selectionStart' in before && typeof before.selectionStart === 'number' && isText(before)
+    ? [before.selectionStart, before.selectionEnd ?? before.selectionStart] : null;
+  rebuild();
+  if (!name || (document.activeElement && el.contains(document.activeElement) && document.activeElement !== document.body)) return;
+  const again = el.querySelector<HTMLInputElement | HTMLTextAreaElement | HTMLSelectElement>(`[name="${CSS.escape(name)}"]`);
   if (!again) return;
   again.focus();
-  const n = again.value.length;
-  again.setSelectionRange(n, n);
+  if (caret && !(again instanceof HTMLSelectElement) && isText(again)) again.setSelectionRange(caret[0], caret[1]);
+}
+
+/** A control whose caret can be set (setSelectionRange throws on number, checkbox, …). */
+function isText(e: HTMLInputElement | HTMLTextAreaElement): boolean {
+  return e instanceof HTMLTextAreaElement || ['text', 'search', 'url', 'tel', 'password', ''].includes(e.type);
 }
 
 /** Flags as coloured chips with a tooltip. */

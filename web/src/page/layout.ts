@@ -1,6 +1,6 @@
 // The page's skeleton (full page or one embedded panel): the answer strip, the views (tabs) and
 // the panels rendered into them, and the stale marking of numbers that no longer match the form.
-import { h } from '../dom';
+import { h, keepFocus } from '../dom';
 import { errText, t, type Key } from '../i18n';
 import type { Panel, PanelContext, PanelId } from '../panels/panel';
 import { PANELS } from '../panels/registry';
@@ -215,7 +215,7 @@ export class Layout {
       const el = this.panelEls.get(p.id);
       if (!el) continue;
       const t0 = performance.now();
-      p.render(el, ctx);
+      keepFocus(el, () => p.render(el, ctx));
       took.push([p.id, performance.now() - t0]);
     }
     // <html data-render-slowest>: the three slowest panels of the last render (the bench prints them).

@@ -1,5 +1,5 @@
 // Standalone Q-format calculator: every result comes from pulab (pulab.qcalc, the qcalc kind) in the worker.
-import { flagChips, focusedInput, h, num, refocus, sameItems, table } from '../dom';
+import { flagChips, h, keepFocus, num, sameItems, table } from '../dom';
 import { parseNumber } from '../format';
 import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
@@ -90,8 +90,7 @@ export const qcalcPanel: Panel = {
     const f = last?.ok ? last.format : undefined;
     const res = last?.ok ? last.result : undefined;
     const otherErr = last && !last.ok && !['qcalc.value', 'qcalc.raw', 'qcalc.format', 'qcalc.word_bits'].includes(last.field ?? '') ? errText(last) : null;
-    const focused = focusedInput(el);
-    el.replaceChildren(
+    keepFocus(el, () => el.replaceChildren(
       h('div', { class: 'qcalc' },
         h('div', { class: 'qform' },
           field(t('qMode'), sel('mode', [['encode', t('qEncode')], ['decode', t('qDecode')]]), 'qcalc.mode'),
@@ -114,7 +113,6 @@ export const qcalcPanel: Panel = {
             [t('qError'), num('qcalc.result.error', res?.error, { sig: 6 })],
             [t('flags'), flagChips(res?.flags)],
           ], 'qtable'))),
-    );
-    refocus(el, focused);
+    ));
   },
 };

@@ -1,7 +1,7 @@
 // Vendor profiles side by side (Inovance, TI, NXP, ST, Microchip), the translator between their
 // current-loop integers, and a C header per vendor. Every number comes from pulab in the worker:
 // the report with a "profiles" section, and the kinds vendors.translate and vendors.header.
-import { flagChips, focusedInput, h, num, refocus, table } from '../dom';
+import { flagChips, h, keepFocus, num, table } from '../dom';
 import { effectiveInput } from '../fields';
 import { parseNumber } from '../format';
 import { errText, getLang, t, type Key } from '../i18n';
@@ -358,14 +358,12 @@ export const vendorsPanel: Panel = {
     // (A language switch builds the page anew: `el` is then empty.)
     if (!visibleNow && el.querySelector('.vendors')) return;
     if (visibleNow) refresh(ctx);
-    const focused = focusedInput(el);
     const other = profErr && !profErr.field.startsWith('profiles.') ? h('p', { class: 'err' }, `${profErr.field}: ${errText(profErr)}`) : null;
-    el.replaceChildren(h('div', { class: 'vendors' },
+    keepFocus(el, () => el.replaceChildren(h('div', { class: 'vendors' },
       h('h3', {}, t('vd_hw')), hwForm(ctx), other,
       h('div', { class: profErr ? 'stale' : '' },
         h('h3', {}, t('vd_bases')), basesTable(),
         h('h3', {}, t('vd_constants')), VENDORS.map((v) => constantsBlock(ctx, v, el))),
-      h('h3', {}, t('vd_translator')), translator(ctx)));
-    refocus(el, focused);
+      h('h3', {}, t('vd_translator')), translator(ctx))));
   },
 };
