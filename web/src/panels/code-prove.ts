@@ -172,6 +172,9 @@ function proposals(p: CodeProof): HTMLElement | null {
 export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost): void {
   const names = ranged(host);
   for (const n of names) defaultRange(host, n);
+  // Opened or closed just now: the toggle event that records it comes a task later than a rebuild may.
+  const shown = box.querySelector<HTMLDetailsElement>('details.code-prove');
+  if (shown) ps.open = shown.open;
   const key = [getLang(), !!ctx.client, ps.open, !!ps.job, ps.round, JSON.stringify(ps.note), ps.error?.message ?? '', ps.proof?.work ?? -1, names.join(','), host.auto().join(','), JSON.stringify(host.state().set)].join('|');
   if (box.dataset.rendered === key && box.firstChild) return;
   box.dataset.rendered = key;
