@@ -35,6 +35,25 @@ export default async function screensPass(ctx) {
     await p.context().close();
   });
 
+  await check('screens-pass: a link opened while a report rewrites the address bar is still followed', async () => {
+    // The race as it happens: the fragment navigation changes the URL, a report answered just
+    // before writes its own input back with replaceState, then the hashchange event runs.
+    const g = golden('04_ind380_7k5.json');
+    const p = await newPage();
+    await p.goto(subSrv.url);
+    await ready(p);
+    await waitValue(p, 'vendor.Rpm.value', seed.expected.vendor.Rpm.value);
+    const target = link(g.input);
+    await p.evaluate((to) => {
+      const old = location.href;
+      history.replaceState(history.state, '', old);
+      window.dispatchEvent(new HashChangeEvent('hashchange', { oldURL: old, newURL: to }));
+    }, target);
+    await waitValue(p, 'vendor.Rpm.value', g.expected.vendor.Rpm.value);
+    assert((await p.inputValue('input[name="motor.rated_voltage_v"]')) === '380', 'inputs not from the link');
+    await p.context().close();
+  });
+
   await check('screens-pass: with a non-Inovance firmware shipped, one report call per keystroke serves the numbers and the answer strip', async () => {
     const g = golden('04_ind380_7k5.json');
     const inp = { ...g.input, conventions: { firmware: 'microchip' } };
