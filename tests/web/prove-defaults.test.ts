@@ -36,4 +36,26 @@ describe('Prove default ranges', () => {
     provePanel.render(el, ctxFor(clone(SEED_INPUT)));
     expect(shown(el, 0)).toEqual([7, 900]);
   });
+  it('Remove and Add act on the rows shown, however often the motor re-renders the panel', () => {
+    const el = document.createElement('div');
+    const ctx = ctxFor(clone(SEED_INPUT));
+    provePanel.render(el, ctx);
+    provePanel.render(el, ctx); // the same motor: nothing rebuilt, the buttons keep their rows
+    const rows = () => el.querySelectorAll('.pr-range').length;
+    const before = rows();
+    el.querySelector<HTMLButtonElement>('.pr-range button.pr-remove')!.click();
+    expect(rows()).toBe(before - 1);
+    el.querySelector<HTMLButtonElement>('button.pr-add')!.click();
+    provePanel.render(el, ctx);
+    expect(rows()).toBe(before);
+  });
+  it('a new input chosen for an untyped row takes that input\'s own default range', () => {
+    const el = document.createElement('div');
+    const ctx = ctxFor(clone(SEED_INPUT));
+    provePanel.render(el, ctx);
+    const sel = el.querySelector<HTMLSelectElement>('select[name="prove.ranges.0.path"]')!;
+    sel.value = 'motor.rs_ohm';
+    sel.dispatchEvent(new Event('change'));
+    expect(shown(el, 0)).toEqual([0.75, 3]); // the seed's 1.5 Ω, halved and doubled
+  });
 });

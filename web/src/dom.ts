@@ -8,8 +8,9 @@ type Attrs = Record<string, string | number | boolean | null | undefined | ((ev:
 
 /** The handlers h() gave each element, by event type: `morph` hands a kept element the new ones. */
 const handlers = new WeakMap<Element, Record<string, (ev: Event) => void>>();
-function dispatch(this: Element, ev: Event): void {
-  handlers.get(this)?.[ev.type]?.(ev);
+function dispatch(ev: Event): void {
+  // currentTarget, not `this`: happy-dom calls a select's change listeners with another `this`.
+  handlers.get(ev.currentTarget as Element)?.[ev.type]?.(ev);
 }
 
 export function h(tag: string, attrs: Attrs = {}, ...children: Child[]): HTMLElement {

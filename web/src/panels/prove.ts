@@ -15,14 +15,14 @@ import { sweepPaths } from './sweep';
 const PROFILES = ['inovance', 'ti', 'nxp', 'st', 'microchip'] as const;
 type Profile = (typeof PROFILES)[number];
 
-interface RangeRow { path: string; lo: string; hi: string }
+/** One input's range; `typed`: the user typed an end, so it no longer follows the motor. */
+interface RangeRow { path: string; lo: string; hi: string; typed?: boolean }
 
 interface Job { cancelled: boolean }
 
 const st = {
+  /** Kept as one array of the same row objects: the fields' handlers hold them. */
   rows: null as RangeRow[] | null,
-  /** The user edited a range: until then the rows follow the page's motor. */
-  edited: false,
   profile: 'inovance' as Profile,
   job: null as Job | null,
   names: [] as string[],
@@ -183,9 +183,13 @@ function rangeRows(el: HTMLElement, ctx: PanelContext): HTMLElement {
   const paths = sweepPaths(ctx.input);
   const err = (path: string) => (st.error && st.error.field === `prove.ranges.${path}` ? errText(st.error) : '');
   return h('div', { class: 'pr-ranges' }, rows.map((r, i) => {
-    const set = (k: keyof RangeRow) => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; st.edited = true; };
+    const set = (k: 'lo' | 'hi') => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; r.typed = true; };
     return h('div', { class: 'pr-range' },
-      h('select', { name: `prove.ranges.${i}.path`, 'aria-label': t('prPath'), onchange: (ev: Event) => { r.path = (ev.target as HTMLSelectElement).value; st.edited = true; } },
+      h('select', { name: `prove.ranges.${i}.path`, 'aria-label': t('prPath'), onchange: (ev: Event) => {
+        r.path = (ev.target as HTMLSelectElement).value;
+        // Another input: its own default range, unless the user already typed this row's ends.
+        if (!r.typed) { Object.assign(r, defaultRow(ctx, r.path)); provePanel.render(el, ctx); }
+      } },
         paths.map((p) => h('option', { value: p, selected: p === r.path }, p))),
       h('label', {}, t('prLo'), ' ', h('input', { name: `prove.ranges.${i}.lo`, value: r.lo, inputmode: 'decimal', oninput: set('lo') })),
       h('label', {}, t('prHi'), ' ', h('input', { name: `prove.ranges.${i}.hi`, value: r.hi, inputmode: 'decimal', oninput: set('hi') })),
@@ -203,10 +207,12 @@ export const provePanel: Panel = {
   title: 'p_prove',
   needsPython: true,
   render(el, ctx) {
-    st.rows = st.edited && st.rows ? st.rows : (st.rows?.map((r) => r.path) ?? ['motor.rated_current_a', 'motor.rated_voltage_v']).map((p) => defaultRow(ctx, p));
+    st.rows ??= ['motor.rated_current_a', 'motor.rated_voltage_v'].map((p) => defaultRow(ctx, p));
+    for (const r of st.rows) if (!r.typed) Object.assign(r, defaultRow(ctx, r.path));
     // Typing in the motor re-renders every panel; this one is rebuilt only for its own state
     // (and for the default ranges, which follow the motor).
-    const key = [st.edited ? '' : JSON.stringify(st.rows), getLang(), !!ctx.client, !!st.job, st.proposing, !!st.proposal, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
+    // Typed ends are in the fields already: they rebuild nothing.
+    const key = [JSON.stringify(st.rows.map((r) => (r.typed ? r.path : [r.path, r.lo, r.hi]))), getLang(), !!ctx.client, !!st.job, st.proposing, !!st.proposal, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
     if (el.querySelector('.prove') && el.dataset.rendered === key) return;
     const running = st.job !== null;
     const done = Object.keys(st.entries).length;
