@@ -142,6 +142,9 @@ def test_cli_exit_status_is_the_verdict(tmp_path):
 @pytest.mark.parametrize("args, line", [
     (("--range", "motor.rs_ohm=1"), "error: prove.ranges: expected PATH=LO:HI, got 'motor.rs_ohm=1'"),
     (("--range", "motor.rs_ohm=2:1"), "error: prove.ranges.motor.rs_ohm: lo must be ≤ hi, got 2 > 1"),
+    # the end that is not whole is quoted, not "a list"
+    (("--range", "motor.pole_pairs=1.5:3"), "error: prove.ranges.motor.pole_pairs: must be [lo, hi] "
+     "(integers for a raw or integer input), got 1.5"),
     ((), "error: prove.ranges: give at least one input range (PATH=LO:HI)"),
     (("--range", "motor.rs_ohm=1:2", "--profile", "renesas"),
      "error: prove.profile: a proof covers the profiles inovance, ti, nxp, st, microchip, "

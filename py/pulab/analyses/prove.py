@@ -193,7 +193,7 @@ def make_problem(req) -> Problem:
         lo, hi = (real(v, field) for v in pair)
         if FIELD[path].kind == "integer":
             if lo != int(lo) or hi != int(hi):
-                raise InputError(field, code="prove_pair", got=shown(pair))
+                raise InputError(field, code="prove_pair", got=shown(lo if lo != int(lo) else hi))
             lo, hi = int(lo), int(hi)
         if not lo <= hi:
             raise InputError(field, code="prove_order", lo=lo, hi=hi)
