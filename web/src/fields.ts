@@ -155,6 +155,11 @@ export function fieldLabel(f: FieldSpec, lang: 'en' | 'zh'): string {
 
 export const ALL_FIELDS: FieldSpec[] = SECTIONS.flatMap((s) => s.fields);
 
+/** The SI unit of an input path as pulab reads it ('' for a count or a raw integer). */
+export function siUnit(path: string): string {
+  return FIELDS.find((f) => f.path === path)?.unit ?? '';
+}
+
 /** The input without the values of disabled fields (what is sent, shared and stored). */
 export function effectiveInput(inp: Input): Input {
   const out = JSON.parse(JSON.stringify(inp)) as Input;

@@ -3,7 +3,7 @@
 // that open as the current motor. Computed chunk by chunk in the worker, with progress and cancel.
 import { h, num, table } from '../dom';
 import { fmtToward } from '../format';
-import { ALL_FIELDS, effectiveInput } from '../fields';
+import { ALL_FIELDS, effectiveInput, fieldLabel, siUnit } from '../fields';
 import { errText, getLang, t, type Key } from '../i18n';
 import { encodeHash, getPath, type Input } from '../state';
 import type { ApiErr, SweepAxis, SweepRequest } from '../protocol';
@@ -37,6 +37,15 @@ const st = {
 /** Numeric inputs a sweep can vary (the form's number fields, without the simulation's). */
 export function sweepPaths(inp: Input): string[] {
   return ALL_FIELDS.filter((f) => (f.kind === 'number' || f.kind === 'int') && !f.path.startsWith('sim.') && (!f.enabled || f.enabled(inp))).map((f) => f.path);
+}
+
+/** A range's input as a choice: its form label and the SI unit its ends are typed in; the path
+ * (what `--range`/`--x` take on the command line) as its tooltip. */
+export function pathOption(path: string, selected: boolean): HTMLElement {
+  const f = ALL_FIELDS.find((x) => x.path === path);
+  const unit = siUnit(path);
+  const text = f ? `${fieldLabel(f, getLang())}${unit ? `, ${unit}` : ''}` : path;
+  return h('option', { value: path, selected, title: path }, text);
 }
 
 function defaultAxis(ctx: PanelContext, path: string, lo: number, hi: number, n: number): AxisForm {
@@ -123,7 +132,7 @@ function axisControls(which: 'x' | 'y', a: AxisForm, paths: string[], onChange: 
     h('label', { class: 'field' }, h('span', { class: 'lbl' }, label), control, h('span', { class: 'err', 'data-err-for': `sweep.${which}.${k}` }, err(k)));
   return h('div', { class: 'sweep-axis' },
     field(t(which === 'x' ? 'swAxisX' : 'swAxisY'), h('select', { name: `sweep.${which}.path`, onchange: set('path') },
-      paths.map((p) => h('option', { value: p, selected: p === a.path }, p))), 'path'),
+      paths.map((p) => pathOption(p, p === a.path))), 'path'),
     field(t('swStart'), h('input', { name: `sweep.${which}.start`, value: a.start, inputmode: 'decimal', oninput: set('start') }), 'start'),
     field(t('swStop'), h('input', { name: `sweep.${which}.stop`, value: a.stop, inputmode: 'decimal', oninput: set('stop') }), 'stop'),
     field(t('swPoints'), h('input', { name: `sweep.${which}.n`, value: a.n, inputmode: 'numeric', oninput: set('n') }), 'n'),
