@@ -58,4 +58,23 @@ describe('Prove default ranges', () => {
     sel.dispatchEvent(new Event('change'));
     expect(shown(el, 0)).toEqual([0.75, 3]); // the seed's 1.5 Ω, halved and doubled
   });
+  it.each([
+    ['drive.base_freq_hz', [110, 440]], // left empty: f_b = f_n = 220 Hz, as the report derives it
+    ['raw.LD', [30, 120]], // the seed's raw LD = 60 (10 µH units), whole numbers
+    ['motor.pole_pairs', [2, 8]],
+  ])('%s, empty in the form, starts at the value the report derived: %j', (path, want) => {
+    const el = document.createElement('div');
+    provePanel.render(el, ctxFor(clone(SEED_INPUT)));
+    const sel = el.querySelector<HTMLSelectElement>('select[name="prove.ranges.0.path"]')!;
+    sel.value = path;
+    sel.dispatchEvent(new Event('change'));
+    expect(shown(el, 0)).toEqual(want);
+  });
+  it('offers only inputs a family proof ranges over (no datasheet or analysis values)', () => {
+    const el = document.createElement('div');
+    provePanel.render(el, ctxFor(clone(SEED_INPUT)));
+    const offered = [...el.querySelectorAll<HTMLOptionElement>('select[name="prove.ranges.0.path"] option')].map((o) => o.value);
+    expect(offered).toContain('raw.LD');
+    expect(offered.filter((p) => /^(datasheet|analysis|sim)\./.test(p))).toEqual([]);
+  });
 });

@@ -87,7 +87,8 @@ export interface BatchRequest { csv: string; start?: number; count?: number }
 export interface BatchChunk { total: number; columns: string[]; rows: string[][]; csv: string }
 
 /** `prove`: a family proof over ranges of inputs (docs/contract.md, "Family proof"). */
-export interface ProveRequest { input: Input; ranges: Record<string, [number, number]>; profile?: string; budget?: number }
+/** A range end that is not a number is sent as typed: pulab names it in its message. */
+export interface ProveRequest { input: Input; ranges: Record<string, [number | string, number | string]>; profile?: string; budget?: number }
 export type ProveVerdict = 'proven' | 'violated' | 'unknown';
 export type ProveKind = 'wrap' | 'store' | 'div0' | 'zero' | 'outside' | 'saturate' | 'invalid';
 export interface ProveEntry {

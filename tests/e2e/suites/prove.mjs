@@ -165,6 +165,26 @@ export default async function prove(ctx) {
     assert(err.includes('lo must be ≤ hi'), `error: ${err}`);
   });
 
+  await check('prove: during a long run, keys typed into a range all land and a mouse press on Cancel stops it', async () => {
+    // Nine inputs over wide ranges: a run of several seconds, its results arriving integer by integer.
+    await setRows([['motor.rated_current_a', 0.01, 1000], ['motor.rated_voltage_v', 1, 1000], ['motor.ld_h', 1e-6, 1],
+      ['motor.rs_ohm', 0.001, 100], ['drive.base_freq_hz', 1, 5000], ['drive.udc_v', 1, 2000],
+      ['motor.bemf_v', 1, 1000], ['motor.pole_pairs', 1, 50], ['drive.ts_s', 1e-6, 0.01]]);
+    await page.evaluate(() => delete document.documentElement.dataset.proveDone);
+    await page.click('button.run-prove');
+    await page.waitForFunction(() => document.querySelector('.prove-count')?.textContent.startsWith('1 /'), null, { timeout: 30_000 });
+    await page.click('input[name="prove.ranges.0.hi"]', { clickCount: 3 });
+    await page.keyboard.type('123456', { delay: 40 });
+    const typed = await page.inputValue('input[name="prove.ranges.0.hi"]');
+    assert(typed === '123456', `typed 123456 during the run, the box holds "${typed}"`);
+    assert(await page.evaluate(() => document.activeElement?.getAttribute('name')) === 'prove.ranges.0.hi', 'focus left the box');
+    assert(await page.evaluate(() => document.documentElement.dataset.proveDone === undefined), 'the run ended before Cancel was pressed: the box is too small');
+    await page.click('button.cancel-prove', { delay: 120 }); // a person's press: down, 120 ms, up
+    await page.waitForFunction(() => document.documentElement.dataset.proveDone !== undefined, null, { timeout: 30_000 });
+    const how = await page.evaluate(() => document.documentElement.dataset.proveDone);
+    assert(how === 'cancelled', `the run ended "${how}", not cancelled`);
+  });
+
   await check('prove: screenshots at 390/900/1366 px, zh and en', async () => {
     await setRows(rows);
     await runProof();

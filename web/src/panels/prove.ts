@@ -2,14 +2,15 @@
 // over the whole box (pulab.analyses.prove) — proven with its range drawn against its C word, or
 // violated with a motor that opens as the page input. Computed integer by integer in the worker,
 // with progress and cancel.
-import { h, num, table } from '../dom';
-import { effectiveInput } from '../fields';
+import { h, keepFocus, num, table } from '../dom';
+import { ALL_FIELDS, effectiveInput } from '../fields';
+import { parseNumber } from '../format';
 import { errText, getLang, t, type Key } from '../i18n';
 import { encodeHash, getPath, type Input } from '../state';
 import type { ApiErr } from '../protocol';
 import type { Proof, Proposal, ProveEntry as Entry, ProveRequest, ProveVerdict as Verdict } from '../api-types';
 import type { Panel, PanelContext } from './panel';
-import { sweepPaths } from './sweep';
+import { pathOption, sweepPaths } from './sweep';
 
 /** The profiles a proof covers (pulab.analyses.prove.PROFILES). */
 const PROFILES = ['inovance', 'ti', 'nxp', 'st', 'microchip'] as const;
@@ -38,17 +39,34 @@ const st = {
 const CHANNEL = 'prove';
 
 /** 0.5× to 2× the motor's value at `path`: the report's echoed input first, as it holds the
- * values derived from a datasheet (rated voltage from the DC bus, …). */
+ * values derived from a datasheet (rated voltage from the DC bus, …), then the value the report
+ * derived for an input left empty (its form placeholder: f_b, a raw parameter); whole numbers for an
+ * integer input. */
 function defaultRow(ctx: PanelContext, path: string): RangeRow {
-  const [lo, hi] = [0.5, 2];
-  const v = Number(getPath(ctx.report?.input, path) ?? getPath(ctx.input, path) ?? 1);
+  const f = ALL_FIELDS.find((x) => x.path === path);
+  const derived = f?.placeholderFrom ? getPath(ctx.report, f.placeholderFrom) : undefined;
+  const v = Number(getPath(ctx.report?.input, path) ?? getPath(ctx.input, path) ?? derived ?? 1);
   const fmt = (x: number) => String(Number(x.toPrecision(3)));
-  return { path, lo: fmt(v * lo), hi: fmt(v * hi) };
+  if (f?.kind === 'int') return { path, lo: String(Math.floor(v / 2)), hi: String(Math.ceil(v * 2)) };
+  return { path, lo: fmt(v / 2), hi: fmt(v * 2) };
+}
+
+/** The inputs a family proof can range over: pulab.schema.inputs.SECTIONS (not the datasheet's,
+ * which are converted once, nor the analyses'). */
+function provePaths(inp: Input): string[] {
+  return sweepPaths(inp).filter((p) => /^(motor|drive|conventions|current_loop|pll|raw)\./.test(p));
+}
+
+/** A range end as the form reads a number (full-width digits, 1,5); anything else as typed,
+ * for pulab to name in its message at the row ("must be a number, got 'abc'"). */
+function end(text: string): number | string {
+  const p = parseNumber(text);
+  return p.ok && p.value !== null ? p.value : text.trim();
 }
 
 function request(input: Input): ProveRequest {
-  const ranges: Record<string, [number, number]> = {};
-  for (const r of st.rows ?? []) ranges[r.path] = [Number(r.lo), Number(r.hi)];
+  const ranges: ProveRequest['ranges'] = {};
+  for (const r of st.rows ?? []) ranges[r.path] = [end(r.lo), end(r.hi)];
   return { input, ranges, profile: st.profile };
 }
 
@@ -178,10 +196,16 @@ function row(name: string, e: Entry | undefined): HTMLElement {
     h('td', { class: 'pr-why' }, why));
 }
 
+/** Whether the error is about row `path`: its range, or the input a range end makes invalid
+ * (motor.rs_ohm at −5). */
+function atRow(path: string): boolean {
+  return !!st.error && (st.error.field === `prove.ranges.${path}` || st.error.field === path);
+}
+
 function rangeRows(el: HTMLElement, ctx: PanelContext): HTMLElement {
   const rows = st.rows as RangeRow[];
-  const paths = sweepPaths(ctx.input);
-  const err = (path: string) => (st.error && st.error.field === `prove.ranges.${path}` ? errText(st.error) : '');
+  const paths = provePaths(ctx.input);
+  const err = (path: string) => (atRow(path) ? errText(st.error as ApiErr) : '');
   return h('div', { class: 'pr-ranges' }, rows.map((r, i) => {
     const set = (k: 'lo' | 'hi') => (ev: Event) => { r[k] = (ev.target as HTMLInputElement).value; r.typed = true; };
     return h('div', { class: 'pr-range' },
@@ -190,7 +214,7 @@ function rangeRows(el: HTMLElement, ctx: PanelContext): HTMLElement {
         // Another input: its own default range, unless the user already typed this row's ends.
         if (!r.typed) { Object.assign(r, defaultRow(ctx, r.path)); provePanel.render(el, ctx); }
       } },
-        paths.map((p) => h('option', { value: p, selected: p === r.path }, p))),
+        paths.map((p) => pathOption(p, p === r.path))),
       h('label', {}, t('prLo'), ' ', h('input', { name: `prove.ranges.${i}.lo`, value: r.lo, inputmode: 'decimal', oninput: set('lo') })),
       h('label', {}, t('prHi'), ' ', h('input', { name: `prove.ranges.${i}.hi`, value: r.hi, inputmode: 'decimal', oninput: set('hi') })),
       h('button', { type: 'button', class: 'pr-remove', disabled: rows.length < 2, onclick: () => { rows.splice(i, 1); provePanel.render(el, ctx); } }, t('prRemove')),
@@ -202,22 +226,16 @@ function rangeRows(el: HTMLElement, ctx: PanelContext): HTMLElement {
   } }, t('prAdd')));
 }
 
-export const provePanel: Panel = {
-  id: 'prove',
-  title: 'p_prove',
-  needsPython: true,
-  render(el, ctx) {
-    st.rows ??= ['motor.rated_current_a', 'motor.rated_voltage_v'].map((p) => defaultRow(ctx, p));
-    for (const r of st.rows) if (!r.typed) Object.assign(r, defaultRow(ctx, r.path));
-    // Typing in the motor re-renders every panel; this one is rebuilt only for its own state
-    // (and for the default ranges, which follow the motor).
-    // Typed ends are in the fields already: they rebuild nothing.
-    const key = [JSON.stringify(st.rows.map((r) => (r.typed ? r.path : [r.path, r.lo, r.hi]))), getLang(), !!ctx.client, !!st.job, st.proposing, !!st.proposal, JSON.stringify(st.note), st.error?.message ?? '', st.rows.length, st.names.length, Object.keys(st.entries).length].join('|');
-    if (el.querySelector('.prove') && el.dataset.rendered === key) return;
-    const running = st.job !== null;
-    const done = Object.keys(st.entries).length;
-    const otherErr = st.error && !st.error.field.startsWith('prove.ranges.') ? `${st.error.field}: ${errText(st.error)}` : null;
-    el.replaceChildren(h('div', { class: 'prove' },
+/** The controls (profile, ranges, buttons): rebuilt only when they change, never for a result,
+ * so that a press on Cancel and the keys typed into a range land on the elements they began on. */
+function controls(box: HTMLElement, el: HTMLElement, ctx: PanelContext): void {
+  const rows = st.rows as RangeRow[];
+  const running = st.job !== null;
+  // Typed ends are in the fields already: they rebuild nothing.
+  const key = [JSON.stringify(rows.map((r) => (r.typed ? r.path : [r.path, r.lo, r.hi]))), getLang(), !!ctx.client, running, st.proposing, st.error?.message ?? ''].join('|');
+  if (box.dataset.rendered !== key) {
+    box.dataset.rendered = key;
+    keepFocus(box, () => box.replaceChildren(
       h('p', { class: 'hint' }, t('prIntro')),
       h('label', { class: 'field inline' }, h('span', { class: 'lbl' }, t('prProfile')), ' ',
         h('select', { name: 'prove.profile', onchange: (ev: Event) => { st.profile = (ev.target as HTMLSelectElement).value as Profile; if (st.proposal) { st.proposal = null; provePanel.render(el, ctx); } } },
@@ -227,16 +245,44 @@ export const provePanel: Panel = {
         h('button', { type: 'button', class: 'run-prove', disabled: running || !ctx.client, onclick: () => void run(el, ctx) }, t('prRun')),
         h('button', { type: 'button', class: 'cancel-prove', disabled: !running, onclick: () => { if (st.job) st.job.cancelled = true; } }, t('prCancel')),
         h('button', { type: 'button', class: 'run-propose', disabled: running || st.proposing || !ctx.client, onclick: () => void propose(el, ctx) }, st.proposing ? t('prpRunning') : t('prPropose')),
-        h('progress', { class: 'prove-progress', max: Math.max(1, st.names.length), value: done }),
-        h('span', { class: 'prove-count' }, st.names.length ? `${done} / ${st.names.length}` : ''),
-        h('span', { class: 'hint prove-note' }, st.note ? t(st.note.key, st.note.vars) : '')),
-      otherErr ? h('p', { class: 'err' }, otherErr) : null,
-      st.proof ? h('p', { class: `pr-overall pr-${st.proof.verdict}`, 'data-verdict': st.proof.verdict }, t('prOverall', { verdict: t(`v_${st.proof.verdict}` as Key) })) : null,
+        h('progress', { class: 'prove-progress' }),
+        h('span', { class: 'prove-count' }),
+        h('span', { class: 'hint prove-note' }))));
+  }
+  // Progress is written into the same elements.
+  const done = Object.keys(st.entries).length;
+  const bar = box.querySelector<HTMLProgressElement>('progress.prove-progress');
+  if (bar) Object.assign(bar, { max: Math.max(1, st.names.length), value: done });
+  box.querySelector('.prove-count')!.textContent = st.names.length ? `${done} / ${st.names.length}` : '';
+  box.querySelector('.prove-note')!.textContent = st.note ? t(st.note.key, st.note.vars) : '';
+}
+
+export const provePanel: Panel = {
+  id: 'prove',
+  title: 'p_prove',
+  needsPython: true,
+  render(el, ctx) {
+    st.rows ??= ['motor.rated_current_a', 'motor.rated_voltage_v'].map((p) => defaultRow(ctx, p));
+    for (const r of st.rows) if (!r.typed) Object.assign(r, defaultRow(ctx, r.path));
+    let root = el.querySelector<HTMLElement>('.prove');
+    if (!root) {
+      root = h('div', { class: 'prove' }, h('div', { class: 'prove-controls' }), h('div', { class: 'prove-results' }));
+      el.replaceChildren(root);
+    }
+    controls(root.children[0] as HTMLElement, el, ctx);
+    // Typing in the motor re-renders every panel; the results are rebuilt only for their own state.
+    const results = root.children[1] as HTMLElement;
+    const key = [getLang(), JSON.stringify(st.note), st.error?.message ?? '', st.proof?.verdict ?? '', !!st.proposal, st.names.length, Object.keys(st.entries).length].join('|');
+    if (results.dataset.rendered === key) return;
+    results.dataset.rendered = key;
+    const otherErr = st.error && !st.rows.some((r) => atRow(r.path)) ? `${st.error.field}: ${errText(st.error)}` : null;
+    results.replaceChildren(
+      otherErr ? h('p', { class: 'err' }, otherErr) : '',
+      st.proof ? h('p', { class: `pr-overall pr-${st.proof.verdict}`, 'data-verdict': st.proof.verdict }, t('prOverall', { verdict: t(`v_${st.proof.verdict}` as Key) })) : '',
       st.names.length ? h('div', { class: 'scroll' }, table([t('prInteger'), t('prVerdict'), t('prRange'), t('prBar'), t('prWorst'), t('prWhere')],
-        st.names.map((n) => row(n, st.entries[n])), 'prove-table')) : null,
-      st.names.length ? h('p', { class: 'hint' }, t('prWorstHint')) : null,
-      st.proof?.not_analysed.length ? h('p', { class: 'hint' }, t('prNotAnalysed', { names: st.proof.not_analysed.join(', ') })) : null,
-      st.proposal ? proposalView(st.proposal) : null));
-    el.dataset.rendered = key;
+        st.names.map((n) => row(n, st.entries[n])), 'prove-table')) : '',
+      st.names.length ? h('p', { class: 'hint' }, t('prWorstHint')) : '',
+      st.proof?.not_analysed.length ? h('p', { class: 'hint' }, t('prNotAnalysed', { names: st.proof.not_analysed.join(', ') })) : '',
+      st.proposal ? proposalView(st.proposal) : '');
   },
 };
