@@ -152,6 +152,17 @@ export default async function codeProve(ctx) {
     }
   });
 
+  await check('code-prove: editing the code after a proof removes its verdicts (they were of the old code)', async () => {
+    await page.goto(url(PI, 'pi_saturated'));
+    await ready(page);
+    await open();
+    await fill(RANGES);
+    await prove();
+    await page.waitForSelector('.code-prove .pr-overall');
+    await page.fill('textarea[name="code"]', PI.replace('>> 12', '>> 2'));
+    await page.waitForFunction(() => !document.querySelector('.code-prove .pr-overall') && !document.querySelector('table.code-prove-table'), null, { timeout: 15_000 });
+  });
+
   await check('code-prove: Cancel stops a long proof', async () => {
     const LOOP = 'int32_t acc(int16_t x, int16_t n) {\n  int32_t s = 0;\n  for (int16_t i = 0; i < n; i++)\n    s += x;\n  return s;\n}\n';
     await page.goto(url(LOOP, 'acc'));

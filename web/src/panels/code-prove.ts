@@ -40,7 +40,12 @@ const ps = {
   note: null as null | { key: Key; vars: Record<string, string | number> },
   /** The ranges the last proof was given, as sent. */
   sent: {} as Record<string, [string, string]>,
+  /** The code, target and entry the proof (running or shown) is of. */
+  of: '',
 };
+
+/** What a proof is of: another code, target or entry makes it another proof. */
+const proofOf = (s: CodeState): string => JSON.stringify([s.code, s.target, s.entry ?? null]);
 
 /** The value an input without a range keeps: the one the trace uses (typed, or prefilled
  * from the report); null when the trace has none for it. */
@@ -77,7 +82,7 @@ async function run(first: HTMLElement, ctx: PanelContext, host: ProveHost): Prom
   const draw = () => renderProve(document.querySelector<HTMLElement>('#panel-code .code-prove-box') ?? first, ctx, host);
   const s = host.state();
   const job: Job = { cancelled: false };
-  Object.assign(ps, { job, proof: null, error: null, round: 0, note: null });
+  Object.assign(ps, { job, proof: null, error: null, round: 0, note: null, of: proofOf(s) });
   delete document.documentElement.dataset.codeProveDone;
   draw();
   const t0 = performance.now();
@@ -175,6 +180,11 @@ export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost
   // Opened or closed just now: the toggle event that records it comes a task later than a rebuild may.
   const shown = box.querySelector<HTMLDetailsElement>('details.code-prove');
   if (shown) ps.open = shown.open;
+  // The code changed under a proof: its verdicts are of other code, so they go (a running one stops).
+  if ((ps.proof || ps.job || ps.note || ps.error) && ps.of !== proofOf(host.state())) {
+    if (ps.job) cancel(ctx);
+    Object.assign(ps, { proof: null, note: null, error: null, round: 0 });
+  }
   const key = [getLang(), !!ctx.client, ps.open, !!ps.job, ps.round, JSON.stringify(ps.note), ps.error?.message ?? '', ps.proof?.work ?? -1, names.join(','), host.auto().join(','), JSON.stringify(host.state().set)].join('|');
   if (box.dataset.rendered === key && box.firstChild) return;
   box.dataset.rendered = key;
@@ -184,7 +194,12 @@ export function renderProve(box: HTMLElement, ctx: PanelContext, host: ProveHost
   const p = ps.proof;
   box.replaceChildren(h('details', {
     class: 'code-prove', open: ps.open,
-    ontoggle: (ev: Event) => { ps.open = (ev.target as HTMLDetailsElement).open; },
+    ontoggle: (ev: Event) => {
+      ps.open = (ev.target as HTMLDetailsElement).open;
+      // Toggled just before a rebuild: the event reaches the old element, the new one follows it.
+      const live = document.querySelector<HTMLDetailsElement>('#panel-code details.code-prove');
+      if (live && live !== ev.target && live.open !== ps.open) live.open = ps.open;
+    },
   },
   h('summary', {}, t('cpTitle')),
   h('p', { class: 'hint' }, t('cpIntro'), ' ', t('cpAutoHint')),
