@@ -89,15 +89,23 @@ def clamp(x, lo, hi):
     return lo if x < lo else hi if x > hi else x
 
 
+def _wrap32(v):
+    return (v + 2 ** 31) % 2 ** 32 - 2 ** 31
+
+
 def vendor_pi(integ, err, kp, ki, maxu, maxout):
-    """seed 2.2: all long (int32), numpy wraps; __IQsat clamps."""
+    """seed 2.2: all long (int32), numpy wraps; __IQsat clamps. Returns (integral, output,
+    whether one of its long operations overflowed, judged on exact Python integers)."""
     with np.errstate(over="ignore"):
         e = np.int32(err)
         s = np.int32(integ) + ((e * np.int32(ki)) >> np.int32(4))
-        s = clamp(int(s), -maxu, maxu) if maxu >= 0 else _iqsat(int(s), maxu, -maxu)
+        # minu = -maxu is a long negation: -(-2^31) wraps to -2^31
+        s = clamp(int(s), -maxu, maxu) if maxu >= 0 else _iqsat(int(s), maxu, _wrap32(-maxu))
         d = (np.int32(s) + e * np.int32(kp)) >> np.int32(12)
         o = clamp(int(d), -maxout, maxout)
-    return s, o
+    p_i, p_p = err * ki, err * kp
+    exact = (-maxu, -maxout, p_i, integ + (_wrap32(p_i) >> 4), p_p, s + _wrap32(p_p))
+    return s, o, any(_wrap32(v) != v for v in exact)
 
 
 def _iqsat(x, hi, lo):
@@ -159,15 +167,18 @@ def current_loop(R, cfg, inp):
     refq = [rha(rd / Ib * 4096.0), rha(rq / Ib * 4096.0)]
     gains = [(C[a]["pm_kp"], C[a]["pm_ki"]) for a in "dq"]
     x = np.zeros(2)
-    integ = [0, clamp(rha(bemf / Ub * 2.0 ** 24), -mu, mu)]
+    integ = [0, _iqsat(rha(bemf / Ub * 2.0 ** 24), mu, _wrap32(-mu))]
     prev = np.array([0.0, clamp(integ[1] >> 12, -mo, mo) * Ub / 4096.0])
     I, U, S = [], [], []
+    wraps = 0
     for _ in range(n + 1):
         I.append(x.copy())
         o = [0, 0]
         for j in range(2):
             fb = int(np.clip(rha(x[j] / Ib * 4096.0), -32768, 32767))
-            integ[j], o[j] = vendor_pi(integ[j], refq[j] - fb, gains[j][0], gains[j][1], mu, mo)
+            integ[j], o[j], w = vendor_pi(integ[j], refq[j] - fb, gains[j][0], gains[j][1],
+                                          mu, mo)
+            wraps += w
         S.append(abs(o[0]) == mo or abs(o[1]) == mo)
         ov = np.array(o, dtype=float) * Ub / 4096.0
         a = prev if delay else ov
@@ -187,6 +198,7 @@ def current_loop(R, cfg, inp):
     diff = float(np.max(np.abs(out["fixed"][0] - out["si"][0])))
     metrics["fixed_vs_si_max_abs_a"] = diff
     metrics["fixed_vs_si_max_lsb"] = diff / (Ib / 4096.0)
+    metrics["fixed_wraps"] = wraps
     first = wcts = dev = None
     if P["method"] == "bandwidth":
         wc = TWO_PI * P["cl_bandwidth_hz"]
@@ -382,6 +394,11 @@ CASES = [
      with_(IND380, sim={"current": {"axis": "q", "step_a": 29.0, "speed_hz": 50.0,
                                     "duration_s": 0.05},
                         "pll": {"angle_step_deg": 180.0, "duration_s": 0.2}})),
+    # A 27 V motor on a 4890.3 V bus: maxu = pm_maxout_vol << 12 = 2^31 wraps to -2^31, so
+    # minu = -maxu wraps too and the integral is pinned at -2^31: the PI's sums wrap.
+    ("05_seed_maxu_wrapped",
+     with_(SEED, motor={"rated_voltage_v": 27}, drive={"udc_v": 4890.3},
+           sim={"current": {"duration_s": 0.005}, "pll": {"duration_s": 0.02}})),
 ]
 
 def compare_rules(inp: dict) -> dict:

@@ -117,3 +117,49 @@ def test_current_pi_step(integral, error, kp, ki, maxu, maxout, out, integ, flag
     else:
         assert (s.integral, s.out) == (integ, out)
         assert flags <= set(s.flags)
+
+
+def test_current_pi_step_at_the_long_edges_against_gcc(tmp_path):
+    """The PI update at every edge of its long words (maxu wrapped to −2^31 by its own shift,
+    integral −2^31, products that wrap) against the seed's C compiled by gcc -m32 -fwrapv
+    (C2000 wraps): the integers equal and never a Python error."""
+    import itertools
+    import subprocess
+    from ctrace_compilers import PRELUDE, available
+    if available("gcc"):
+        pytest.skip(f"missing {available('gcc')}")
+    edges = (-(1 << 31), -(1 << 31) + 1, -4096, -1, 0, 1, 1 << 24, (1 << 31) - 1)
+    cases = list(itertools.product(edges, (-32768, -1, 0, 1, 32767), (0, 1180, (1 << 31) - 1),
+                                   (0, 4720, (1 << 31) - 1), edges[::2], (-(1 << 31), 0, 4096)))
+    rows = ",\n".join("{%d, %d, %d, %d, %d, %d}" % c for c in cases)
+    src = tmp_path / "pi.c"
+    src.write_text(PRELUDE + f"""
+#include <stdio.h>
+static const long long CASES[][6] = {{{rows}}};
+int main(void) {{
+    for (unsigned k = 0; k < sizeof CASES / sizeof CASES[0]; k++) {{
+        long pm_integral_d = CASES[k][0], pm_error_id = CASES[k][1], pm_kp_d = CASES[k][2];
+        long pm_ki_d = CASES[k][3], maxu = CASES[k][4], pm_maxout_vol = CASES[k][5];
+        long minu, data1, pm_ud;
+        minu = -maxu;
+        pm_integral_d = pm_integral_d + (pm_error_id * pm_ki_d >> 4);
+        pm_integral_d = __IQsat(pm_integral_d, maxu, minu);
+        data1 = (pm_integral_d + pm_error_id * pm_kp_d)>>12;
+        data1 = __IQsat(data1, pm_maxout_vol, -pm_maxout_vol);
+        pm_ud = data1;
+        printf("%ld %ld\\n", pm_integral_d, pm_ud);
+    }}
+    return 0;
+}}
+""")
+    exe = tmp_path / "pi"
+    subprocess.run(["gcc", "-m32", "-fwrapv", "-O0", str(src), "-o", str(exe)], check=True)
+    got = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout.split("\n")
+    wrapped_minu = 0
+    for c, line in zip(cases, got):
+        s = current_pi_step(c[0], c[1], c[2], c[3], c[4], c[5])
+        assert f"{s.integral} {s.out}" == line, c
+        if c[4] == -(1 << 31):
+            wrapped_minu += 1
+            assert "wrap" in s.flags, c
+    assert len(got) == len(cases) + 1 and wrapped_minu > 0

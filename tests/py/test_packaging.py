@@ -7,6 +7,7 @@ then runs without PYTHONPATH.
 """
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -51,3 +52,16 @@ def test_wheel_installs_into_a_bare_venv_and_the_pulab_command_runs(tmp_path):
     bad = subprocess.run([str(venv / "bin" / "pulab"), "report", str(tmp_path / "none.json")],
                          capture_output=True, text=True, env=env)
     assert bad.returncode == 2 and bad.stderr.startswith("error: input: cannot read")
+
+
+def test_readme_is_short_and_names_what_ci_installs():
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    assert len(readme.splitlines()) <= 150
+    ci = (ROOT / ".ci" / "run").read_text(encoding="utf-8")
+    installed = set()
+    for line in ci.splitlines():
+        if "apt-get install" in line:
+            words = line.split("apt-get install", 1)[1].split(">")[0].split()
+            installed |= {w for w in words if not w.startswith("-")} - {"python3-venv"}
+    named = set(re.search(r"Debian's `([^`]+)`", readme)[1].split())
+    assert installed and named == installed, (named ^ installed)

@@ -554,3 +554,17 @@ def test_a_drive_inovance_cannot_hold_still_simulates_in_float(name):
     assert set(speed["variants"]) == {"float"} and speed["fixed_vs_float_max_rpm"] is None
     step = r["loop"]["robust"].get("step")
     assert step is None or (step["fixed"] is None and step["metrics"]["fixed"] is None)
+
+
+def test_a_wrapped_maxu_is_simulated_and_flagged_not_a_traceback():
+    # Udc 4890.3 V over a 27 V motor: pm_maxout_vol = 3456·4096/27 = 524288 = 2^19, so
+    # maxu = pm_maxout_vol << 12 = 2^31 wraps to −2^31 and minu = -maxu wraps with it; the
+    # integral is then pinned at −2^31 and the PI's sums wrap (seed 2.2 in 32-bit long).
+    rep = run_sim(with_(SEED, motor={"rated_voltage_v": 27}, drive={"udc_v": 4890.3}))
+    assert rep["vendor"]["maxu"]["value"] == -(1 << 31)
+    m = rep["sim"]["current"]["metrics"]
+    assert m["fixed_wraps"] > 0
+    wraps = [x for x in rep["review"]["findings"] if x["code"] == "pi_wrap"]
+    assert [(x["key"], x["field"], x["value"]) for x in wraps] == \
+        [("sim.current.metrics.fixed_wraps", "drive.udc_v", m["fixed_wraps"])]
+    assert run_sim(SEED)["sim"]["current"]["metrics"]["fixed_wraps"] == 0

@@ -345,11 +345,22 @@ def _pll(f: list, sim: dict | None) -> None:
 _VENDOR_NAMES = {"ti": "TI", "nxp": "NXP", "st": "ST", "microchip": "Microchip"}
 
 
-def _pi_arithmetic(f: list, sim: dict | None, shipped: str) -> None:
+def _pi_arithmetic(f: list, sim: dict | None, shipped: str, vendor: dict) -> None:
     """The shipped firmware's integer current PI in the simulated step: a wrap gives a wrong
     voltage (error), a saturating operation that clipped loses the value (warning); the
     designed output and integral limits are not findings."""
-    run = (sim or {}).get("current", {}).get("by_profile", {}).get(shipped)
+    cur = (sim or {}).get("current", {})
+    wraps = cur.get("metrics", {}).get("fixed_wraps") if shipped == "inovance" else None
+    if wraps:
+        key = "sim.current.metrics.fixed_wraps"
+        # A maxu that wrapped in its own shift (a high bus over a low rated voltage) leaves
+        # the integral no room: the bus is the input to change, not the bandwidth.
+        field = "drive.udc_v" if "wrap" in vendor.get("maxu", {}).get("flags", ()) else \
+            "current_loop.bandwidth_hz"
+        _finding(f, "error", "pi_wrap", key, field, wraps, "pi_wrap_fixed",
+                 count=wraps, key=key)
+        return
+    run = cur.get("by_profile", {}).get(shipped)
     if not run or not run["ran"]:
         return
     key = f"sim.current.by_profile.{shipped}.events"
@@ -426,7 +437,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     h = headroom(n, vendor)
     _voltage(f, h, n)
     _pll(f, sim)
-    _pi_arithmetic(f, sim, n["conventions"]["firmware"])
+    _pi_arithmetic(f, sim, n["conventions"]["firmware"], vendor)
     _robust(f, loop)
     _firmware(f, firmware or {}, n["conventions"]["firmware"])
     if unit == "uH":

@@ -99,3 +99,25 @@ def tokenize(source: str) -> list:
     n = len(source)
     tokens.append(Token("end", "", line, n - line_start + 1, n, n))
     return tokens
+
+
+#: Significant digits that still fit 64 bits, per base.
+_MAX_DIGITS = {2: 64, 8: 22, 10: 20, 16: 16}
+
+
+def integer_digits(digits: str) -> tuple:
+    """(digits without a prefix, base) of an integer constant's digits (``0x1F``, ``017``, ``9``)."""
+    if digits[:2] in ("0x", "0X", "0b", "0B"):
+        return digits[2:], 16 if digits[1] in "xX" else 2
+    return digits, 8 if len(digits) > 1 and digits[0] == "0" else 10
+
+
+def beyond_64_bits(body: str, base: int) -> bool:
+    """More significant digits than any 64-bit value has: too large for every C type, and
+    never converted (Python refuses decimal strings past 4300 digits)."""
+    return len(body.lstrip("0")) > _MAX_DIGITS[base]
+
+
+def quoted(text: str) -> str:
+    """A token as a message shows it: whole up to 40 characters, else its ends and length."""
+    return text if len(text) <= 40 else f"{text[:16]}…{text[-8:]} ({len(text)} characters)"

@@ -33,7 +33,7 @@ import re
 
 from ..fixedpoint.cint import trunc_div
 from .errors import TraceError
-from .lexer import Token, tokenize
+from .lexer import Token, beyond_64_bits, integer_digits, quoted, tokenize
 from .preprocess import preprocess
 from .types import BASE_TYPE_WORDS, TARGETS
 
@@ -409,31 +409,27 @@ def _int_constant(tok: Token) -> tuple:
     text = tok.text
     m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)([A-Za-z_0-9]*)", text)
     if m is None or "." in text:
-        raise _fail(tok, code="trace_float_constant", text=text)
+        raise _fail(tok, code="trace_float_constant", text=quoted(text))
     digits, suffix = m[1], m[2]
     if not _SUFFIX.fullmatch(suffix) or "lL" in suffix or "Ll" in suffix:
-        raise _fail(tok, code="trace_int_suffix", text=text, suffix=repr(suffix))
-    if digits[:2] in ("0x", "0X"):
-        value, decimal = int(digits[2:], 16), False
-    elif digits[:2] in ("0b", "0B"):
-        value, decimal = int(digits[2:], 2), False
-    elif len(digits) > 1 and digits[0] == "0":
-        if not re.fullmatch(r"[0-7]+", digits):
-            raise _fail(tok, code="trace_octal", text=text)
-        value, decimal = int(digits, 8), False
-    else:
-        value, decimal = int(digits), True
-    s = suffix.lower()
-    unsigned = "u" in s
-    length = s.count("l")
-    sizes = ["int", "long", "long long"][length:]
-    if unsigned:
-        cands = ["unsigned " + k for k in sizes]
-    elif decimal:
-        cands = sizes
-    else:
-        cands = [c for k in sizes for c in (k, "unsigned " + k)]
-    return value, cands
+        raise _fail(tok, code="trace_int_suffix", text=quoted(text), suffix=quoted(repr(suffix)))
+    cands = _candidates(suffix.lower(), digits[:1] == "0" and len(digits) > 1)
+    body, base = integer_digits(digits)
+    if base == 8 and not re.fullmatch(r"[0-7]+", digits):
+        raise _fail(tok, code="trace_octal", text=quoted(text))
+    if beyond_64_bits(body, base):
+        raise _fail(tok, code="trace_constant_large", text=quoted(text), types=", ".join(cands))
+    return int(body, base), cands
+
+
+def _candidates(suffix: str, not_decimal: bool) -> list:
+    """The C types an integer constant may take, in order (C99 6.4.4.1); ``suffix`` lower case."""
+    sizes = ["int", "long", "long long"][suffix.count("l"):]
+    if "u" in suffix:
+        return ["unsigned " + k for k in sizes]
+    if not not_decimal:
+        return sizes
+    return [c for k in sizes for c in (k, "unsigned " + k)]
 
 
 class _Parser:

@@ -38,7 +38,7 @@ import struct
 from collections import deque
 
 from .errors import TraceError
-from .lexer import Token, tokenize
+from .lexer import Token, beyond_64_bits, integer_digits, quoted, tokenize
 
 __all__ = ["preprocess", "Preprocessed", "parse_define", "MAX_EXPANDED_TOKENS",
            "MAX_MACRO_DEPTH", "MAX_IF_DEPTH", "STANDARD_HEADERS"]
@@ -203,7 +203,7 @@ class _Pre:
         if mac.name == "GLOBAL_Q":
             b = mac.body
             if mac.params is not None or len(b) != 1 or not b[0].text.isdigit() or \
-                    not 1 <= int(b[0].text) <= 30:
+                    len(b[0].text) > 2 or not 1 <= int(b[0].text) <= 30:
                 raise _fail(at, "trace_global_q")
             self.global_q = int(b[0].text)
 
@@ -380,7 +380,8 @@ class _Pre:
         m = _IQ_BUILTIN.match(use.text)
         gq = self.default_q
         g = self.macros.get("GLOBAL_Q")
-        if g is not None and g.params is None and len(g.body) == 1 and g.body[0].text.isdigit():
+        if g is not None and g.params is None and len(g.body) == 1 and \
+                g.body[0].text.isdigit() and len(g.body[0].text) <= 2:
             gq = int(g.body[0].text)
         if m["op"]:
             shift = {"2": 1, "4": 2, "8": 3, "16": 4, "32": 5, "64": 6}[m["k"]]
@@ -409,7 +410,10 @@ class _Pre:
                 value = _f32(value)
         else:  # a constant expression such as 4.0/3.0, folded as C does in double
             value = _ConstFloat(arg[i:], use, self.single).value()
-        scaled = int(sign * value * 2.0 ** n)  # * 2**n is exact in binary floating point
+        product = sign * value * 2.0 ** n  # * 2**n is exact in binary floating point
+        if product != product or product in (float("inf"), float("-inf")):  # no int() of them
+            raise _fail(use, "trace_iq_range", name=use.text, value=repr(product))
+        scaled = int(product)
         if not -(1 << 31) <= scaled < (1 << 31):
             raise _fail(use, "trace_iq_range", name=use.text, value=scaled)
         return scaled
@@ -678,10 +682,11 @@ class _IfExpr:
             m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)[uUlL]*", t.text)
             if m is None:
                 raise self.fail("trace_if_not_constant", text=t.text)
-            d = m[1]
-            if d[:2] in ("0x", "0X", "0b", "0B"):
-                return _wrap(int(d[2:], 16 if d[1] in "xX" else 2))
-            return _wrap(int(d, 8 if len(d) > 1 and d[0] == "0" else 10))
+            body, base = integer_digits(m[1])
+            if beyond_64_bits(body, base):
+                raise self.fail("trace_constant_large", text=quoted(t.text),
+                                types="intmax_t, uintmax_t")
+            return _wrap(int(body, base))
         raise self.fail("trace_if_unexpected", text=repr(t.text))
 
 

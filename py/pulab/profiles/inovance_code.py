@@ -536,10 +536,14 @@ def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
     PiStep(integral=76875, out=118, flags=frozenset({'truncation'}))
     """
     e = CInt(error, INT32)
+    # minu = -maxu and -pm_maxout_vol are long negations: -(-2^31) wraps to -2^31 (a maxu
+    # that wrapped in its own shift), so the limits come from the C, not from Python's -x.
+    minu = -CInt(maxu, INT32)
     s = CInt(integral, INT32) + ((e * CInt(ki, INT32)) >> 4)
-    integ = iqsat(s.value, maxu, -maxu)
+    integ = iqsat(s.value, maxu, minu.value)
     d = (CInt(integ, INT32) + e * CInt(kp, INT32)) >> 12
-    out = iqsat(d.value, maxout, -maxout)
+    minout = -CInt(maxout, INT32)
+    out = iqsat(d.value, maxout, minout.value)
     if trace is not None:
         for code, value, flags, meaning in (
                 ("pm_integral_d = pm_integral_d + (pm_error_id * pm_ki_d >> 4); //Q24,28-4",
@@ -553,7 +557,7 @@ def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
                 ("pm_ud = data1;", out, set(), "u_d/U_LL·2^12 (Q12)")):
             trace.append({"code": code, "var": code.split(" =")[0], "type": "long",
                           "value": value, "meaning": meaning, "flags": sorted(flags)})
-    flags = set(s.flags | d.flags)
+    flags = set(s.flags | d.flags | minu.flags | minout.flags)
     if integ != s.value or out != d.value:
         flags.add("saturate")
     return PiStep(integ, out, frozenset(flags))

@@ -435,6 +435,12 @@ MESSAGES = {
                       "{value:g} Hz 未低于奈奎斯特频率 1/(2·Ts) = {nyquist:g} Hz"),
     "pm_unreachable": ("{value:g}° is not reached below the Nyquist frequency (the loop keeps more "
                        "phase margin)", "在奈奎斯特频率以下达不到 {value:g}°（环路的相位裕度始终更大）"),
+    "plant_static": ("{value:g} s with L/R = {tau:.3g} s: the current settles within a period "
+                     "(R·Ts/L = {x:.4g} > {limit:g}), so the plant's pole e^(−R·Ts/L) is below "
+                     "rounding and no PI zero can cancel it; a shorter Ts, or check R and L",
+                     "{value:g} s 而 L/R = {tau:.3g} s：电流在一个周期内即已稳定（R·Ts/L = "
+                     "{x:.4g} > {limit:g}），对象极点 e^(−R·Ts/L) 低于舍入误差，PI 零点无法对消；"
+                     "请缩短 Ts，或检查 R 与 L"),
     "speed_kp_low": ("too low for the friction: kp = (2ζωn·J − B)/Kt = {kp:.4g} ≤ 0",
                      "相对摩擦过低：kp = (2ζωn·J − B)/Kt = {kp:.4g} ≤ 0"),
     "step_q12": ("{value:g} A is {pu:.3g} pu; the Q12 current (int16) holds less than ±8 pu "
@@ -571,6 +577,13 @@ MESSAGES = {
                         "{key}.wrap = {count}：{profile} 固件的整数电流 PI 在仿真阶跃中溢出回绕 "
                         "{count} 次，会输出错误的电压；请降低{label}，或为该固件的电流、电压满量程"
                         "留出更多余量（“固件”视图）"),
+    "finding.pi_wrap_fixed": ("{key} = {count}: the Inovance firmware's current PI (long "
+                              "arithmetic) overflowed and wrapped in {count} updates of the "
+                              "simulated step, so it would output a wrong voltage; change {label} "
+                              "until the voltage limits maxu and pm_maxout_vol hold",
+                              "{key} = {count}：汇川固件的电流 PI（long 运算）在仿真阶跃中有 "
+                              "{count} 次更新溢出回绕，会输出错误的电压；请修改{label}，使电压限幅 "
+                              "maxu 与 pm_maxout_vol 不溢出"),
     "finding.pi_saturate": ("{key}.saturate = {count}: the {profile} firmware's integer current "
                             "PI clipped an intermediate value {count} times in the simulated step "
                             "(saturating arithmetic, not its output limit); lower {label}, or give "

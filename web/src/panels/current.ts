@@ -100,7 +100,9 @@ export const currentPanel: Panel = {
       sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu'], METRIC_ROWS, extra) : null,
       sim && fw === 'inovance' ? h('p', { class: 'note' }, `${t('fixedVsSi')}: `,
         num('sim.current.metrics.fixed_vs_si_max_abs_a', sim.metrics.fixed_vs_si_max_abs_a, { unit: 'A' }), ' = ',
-        num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' })) : null,
+        num('sim.current.metrics.fixed_vs_si_max_lsb', sim.metrics.fixed_vs_si_max_lsb, { unit: 'LSB (Q12)' }),
+        '; ', h('span', { class: sim.metrics.fixed_wraps ? 'flag-wrap' : '' }, `${t('fixedWraps')}: `,
+          num('sim.current.metrics.fixed_wraps', sim.metrics.fixed_wraps, { kind: 'int' }))) : null,
       ...(sim ? profileNotes(sim, fw) : []),
       ex ? h('div', { class: 'step-example' }, h('h3', {}, t('stepExample', { e: ex.error })), traceTable('current_pi.step_example.trace', ex.trace)) : null,
     ]);

@@ -116,6 +116,11 @@ def dead_time(ts: float, delay: str) -> float:
     return ts * {"none": 0.5, "computation": 1.5, "computation_pwm": 2.0}[delay]
 
 
+#: R·Ts/L above which the plant's pole e^(−R·Ts/L) < 2.3e-16 is below double rounding next
+#: to 1: the cancelling zero (ki/kp = (1/a − 1)/Ts) would be a number, not a design.
+STATIC_PLANT = 36.0
+
+
 def _shape(rs: float, l_h: float, ts: float, delay: str):
     """S(e^{jθ}) = L/kp with the cancelling zero, and the pole a."""
     a = _hold(rs, l_h, ts)[0]
@@ -155,8 +160,13 @@ def design(rs: float, l_h: float, ts: float, delay: str, by: str, target: float)
     ------
     InputError
         ``analysis.target_phase_margin_deg`` / ``analysis.target_bandwidth_hz``
-        when no gain reaches the target below the Nyquist frequency.
+        when no gain reaches the target below the Nyquist frequency; ``drive.ts_s`` when
+        R·Ts/L exceeds :data:`STATIC_PLANT` (the plant is static at this period).
     """
+    x = rs * ts / l_h
+    if x > STATIC_PLANT:
+        raise InputError("drive.ts_s", code="plant_static", value=ts, tau=l_h / rs, x=x,
+                         limit=STATIC_PLANT)
     s, a = _shape(rs, l_h, ts, delay)
     if by == "bandwidth":
         theta = 2.0 * math.pi * target * ts

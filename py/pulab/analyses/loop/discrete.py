@@ -193,8 +193,11 @@ def loop_margins(num: list, den: list, ts: float) -> dict:
 
     # gain crossovers: |N|² − |D|² = 0
     mag = lambda t: math.log(abs(response(num, den, t)))  # noqa: E731 - local root function
+    # A root where N vanishes too is a pole and a zero cancelling on the unit circle (a PI whose
+    # integral gain rounded to 0 against its integrator), not a crossing: |L| is 0 there, not 1.
     crossings = _unique([_polish(mag, t)
-                         for t in _cosine_roots(_cosine_series([(1.0, n_p), (-1.0, den)]))])
+                         for t in _cosine_roots(_cosine_series([(1.0, n_p), (-1.0, den)]))
+                         if abs(response(num, den, t)) > 0.0])
     pm, wc = None, None
     for t in crossings:
         value = (math.degrees(cmath.phase(response(num, den, t))) % 360.0) - 180.0

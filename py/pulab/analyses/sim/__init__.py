@@ -23,7 +23,7 @@ most :data:`MAX_POINTS` samples, metrics from the full-rate series)::
                  "metrics": {"si"|"pu"|"fixed": {"rise_time_s", "overshoot_pct",
                                                  "settling_time_s", "steady_state_error_a",
                                                  "saturation_time_s"},
-                             "fixed_vs_si_max_abs_a", "fixed_vs_si_max_lsb",
+                             "fixed_vs_si_max_abs_a", "fixed_vs_si_max_lsb", "fixed_wraps",
                              "first_order_rise_time_s", "wc_ts", "rise_time_deviation_pct"}},
      "pll": {"t": [...], "variants": {"si"|"pu"|"q15"|"naive":
                                       {"theta", "theta_hat", "omega_hat": [...]}},
@@ -106,6 +106,7 @@ def _current_section(report: dict, cfg: dict):
     diff = None if fx is None else _max_diff(fx, si)
     metrics["fixed_vs_si_max_abs_a"] = diff
     metrics["fixed_vs_si_max_lsb"] = None if diff is None else diff / (report["base"]["I_b"] / 4096.0)
+    metrics["fixed_wraps"] = None if fx is None else fx["wraps"]
     by_profile = {}
     for name, run in r["by_profile"].items():
         if "problems" in run:

@@ -59,6 +59,8 @@ from array import array
 
 from ...schema.errors import InputError
 from ..slices import SLICE_STEPS, finish
+from ...fixedpoint.cint import INT32, wrap_to
+from ...fixedpoint.qformat import iqsat
 from ...profiles.inovance_code import current_pi_step, round_half_away
 from .inputs import periods
 from .plant import zoh
@@ -175,7 +177,8 @@ def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp
     -------
     generator — yields None every SLICE_STEPS periods (:mod:`pulab.analyses.slices`), returns a dict
         As :func:`run_float`, in A and V (phase), plus ``fb_d, fb_q``: the Q12
-        feedback integers.
+        feedback integers, and ``wraps``: the PI updates (both axes) whose long
+        arithmetic wrapped — what the firmware computes then, not an error.
     """
     p0, p1, p2, p3 = z.phi
     g0, g1, g2, g3 = z.gamma
@@ -184,7 +187,7 @@ def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp
     to_volt = u_b / 4096.0
     xd = xq = 0.0
     integ_d = 0
-    integ_q = max(-maxu, min(maxu, integ_q0))
+    integ_q = iqsat(integ_q0, maxu, wrap_to(-maxu, INT32))  # as the PI clamps it (minu = -maxu)
     prev_d, prev_q = 0.0, max(-maxout, min(maxout, integ_q >> 12)) * to_volt
     ids, iqs, uds, uqs, sats = array("d"), array("d"), array("d"), array("d"), array("b")
     fbd, fbq = array("l"), array("l")
@@ -194,6 +197,7 @@ def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp
     # without re-implementing the vendor arithmetic.
     memo_d: dict = {}
     memo_q: dict = {}
+    wraps = 0
     for k in range(n + 1):
         if k and not k % SLICE_STEPS:
             yield
@@ -213,11 +217,13 @@ def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp
         if r is None:
             r = memo_d[key] = current_pi_step(integ_d, ref_d - fd, pm_kp_d, pm_ki_d, maxu, maxout)
         integ_d, od = r[0], r[1]
+        wraps += "wrap" in r[2]
         key = (integ_q, ref_q - fq)
         r = memo_q.get(key)
         if r is None:
             r = memo_q[key] = current_pi_step(integ_q, ref_q - fq, pm_kp_q, pm_ki_q, maxu, maxout)
         integ_q, oq = r[0], r[1]
+        wraps += "wrap" in r[2]
         if len(memo_d) > 4096 or not memo:
             memo_d.clear()
         if len(memo_q) > 4096 or not memo:
@@ -234,7 +240,8 @@ def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp
         uqs.append(aq)
         vq = aq - bemf
         xd, xq = p0 * xd + p1 * xq + g0 * ad + g1 * vq, p2 * xd + p3 * xq + g2 * ad + g3 * vq
-    return {"id": ids, "iq": iqs, "ud": uds, "uq": uqs, "sat": sats, "fb_d": fbd, "fb_q": fbq}
+    return {"id": ids, "iq": iqs, "ud": uds, "uq": uqs, "sat": sats, "fb_d": fbd, "fb_q": fbq,
+            "wraps": wraps}
 
 
 def run_fixed(*args, **kwargs):
