@@ -24,13 +24,14 @@ function frameMessage(data: unknown): FrameMessage | null {
 /**
  * This script's URL. A classic script is `document.currentScript` while it first runs (null
  * afterwards, and always null in a module script); a module script — deferred, run in document
- * order — is the first `<script src>` of the document whose path ends in `/embed.js`. Loading
- * embed.js by `import()` leaves neither: null.
+ * order — is the first `<script type="module" src>` of the document whose path ends in
+ * `/embed.js`. Loading embed.js by `import()` leaves neither: null.
  */
 function scriptSrc(): string | null {
   const cur = document.currentScript;
   if (cur instanceof HTMLScriptElement && cur.src) return cur.src;
-  const tag = Array.from(document.querySelectorAll<HTMLScriptElement>('script[src]')).find((s) => new URL(s.src, document.baseURI).pathname.endsWith('/embed.js'));
+  const tag = Array.from(document.querySelectorAll<HTMLScriptElement>('script[src]'))
+    .find((s) => s.type.trim().toLowerCase() === 'module' && /\/embed\.js([?#]|$)/.test(s.src));
   return tag ? tag.src : null;
 }
 
