@@ -11,6 +11,7 @@ import { runJsonCPython, seedKey } from './build/prerender';
 import { writeSchema } from './build/schema';
 import { SNAPSHOT_PYODIDE_VERSION, makeSnapshot, pulabFiles } from './build/snapshot';
 import { precompress } from './build/compress';
+import { embedScript } from './build/embed';
 
 const here = dirname(fileURLToPath(import.meta.url));
 // Before anything is bundled: the form is built from pulab's input schema.
@@ -117,7 +118,7 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets(), pulabBuild(true), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
+  plugins: [pyodideAssets(), pulabBuild(true), embedScript(resolve(here, 'src/embed/element.ts'), 'es2022'), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
   optimizeDeps: { exclude: ['pyodide'] },
   worker: { format: 'es', plugins: () => [pulabBuild(false)] },
   server: { fs: { allow: [repo] } },
@@ -128,10 +129,9 @@ export default defineConfig({
     chunkSizeWarningLimit: 1500,
     assetsInlineLimit: 0,
     rollupOptions: {
-      // embed.js: the docs pages' one script tag, at a name that never changes (it is not hashed,
-      // so servers must revalidate it: docs/deploy.md).
-      input: { index: resolve(here, 'index.html'), course: resolve(here, 'course.html'), embed: resolve(here, 'src/embed/element.ts') },
-      output: { entryFileNames: (c) => (c.name === 'embed' ? 'embed.js' : 'assets/[name]-[hash].js') },
+      // embed.js is built apart, as a classic script (build/embed.ts).
+      input: { index: resolve(here, 'index.html'), course: resolve(here, 'course.html') },
+      output: { entryFileNames: 'assets/[name]-[hash].js' },
     },
   },
 });

@@ -263,7 +263,7 @@ def panel_html(panel: str, inp: dict | None, *, site: str, lang: str | None = No
         tables = panel_tables(panel, report(inp), lang or "en")
     link = (f'<p class="pu-lab-link"><a href="{escape(site)}?embed={escape(panel)}">'
             f"pu-lab: {escape(panel)}</a></p>")
-    return (f'<script type="module" src="{escape(site)}embed.js"></script>'
+    return (f'<script src="{escape(site)}embed.js"></script>'
             f"<pu-lab-panel{attr_text}>{tables}{link}</pu-lab-panel>")
 
 

@@ -9,9 +9,27 @@ function attrs(model, el) {
   else el.removeAttribute('input');
 }
 
+/**
+ * The site's embed.js, added once as a classic <script src> (it finds the site from its own tag;
+ * a classic script of another origin needs no CORS header); resolves once <pu-lab-panel> is defined.
+ */
+function loadEmbed(src) {
+  if (customElements.get('pu-lab-panel')) return Promise.resolve();
+  let tag = Array.from(document.scripts).find((s) => s.src === src);
+  if (!tag) {
+    tag = document.createElement('script');
+    tag.src = src;
+    document.head.append(tag);
+  }
+  return new Promise((resolve, reject) => {
+    customElements.whenDefined('pu-lab-panel').then(() => resolve());
+    tag.addEventListener('error', () => reject(new Error(`pu-lab: could not load ${src}`)));
+  });
+}
+
 export default {
   async render({ model, el }) {
-    await import(/* webpackIgnore: true */ new URL('embed.js', model.get('site')).href);
+    await loadEmbed(new URL('embed.js', model.get('site')).href);
     const panel = document.createElement('pu-lab-panel');
     attrs(model, panel);
     panel.addEventListener('pu-lab-report', (e) => {

@@ -1,7 +1,8 @@
 """``PanelWidget``: a live pu-lab panel in a Jupyter notebook (``pip install 'pulab[jupyter]'``).
 
-The widget loads ``embed.js`` from the pu-lab site (so the notebook must reach that site) and
-shows one ``<pu-lab-panel>``; every report the panel shows comes back to Python in ``report``.
+The widget loads ``embed.js`` from the pu-lab site as a classic script (so the notebook must reach
+that site; no CORS header is needed) and shows one ``<pu-lab-panel>``; every report the panel
+shows comes back to Python in ``report``.
 For tables that need no site and no widget, :class:`pulab.html.Report` renders in any notebook.
 
 Examples

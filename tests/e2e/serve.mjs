@@ -19,7 +19,7 @@ const MIME = {
 /** Files whose name carries a content hash (Vite's assets/, the snapshot) never change under that name. */
 export const HASHED = /(^|\/)(assets\/.*-[\w-]{8,}\.\w+|pyodide\/snapshot-[0-9a-f]{12}\.bin)$/;
 
-/** Files other origins' pages load directly (not through a frame of this site). */
+/** Files other origins' pages load directly (not through a frame of this site); as a module script, with CORS. */
 export const CROSS_ORIGIN = /^embed\.js$/;
 
 /** Which stored variant to send: brotli, then gzip, then the file itself. */
@@ -39,7 +39,8 @@ async function variant(file, acceptEncoding) {
  * Serve `root` under `prefix` ('/' or '/a/b/'); resolves to {server, url}. Counts served bytes in
  * `server.bytesSent`. Fault injection for tests: `faults.hold(rel)` may return a promise the
  * response waits for; `faults.refuse` (RegExp) answers 404 for matching paths,
- * `faults.corrupt` (RegExp) 4 KiB of junk.
+ * `faults.corrupt` (RegExp) 4 KiB of junk. `faults.cors: false` sends no Access-Control-Allow-Origin
+ * (a server whose headers the docs team cannot set: only the classic `<script src>` of embed.js works).
  */
 export function serve(root, prefix = '/', port = 0, faults = {}) {
   const server = createServer(async (req, res) => {
@@ -65,8 +66,8 @@ export function serve(root, prefix = '/', port = 0, faults = {}) {
         ETag: etag,
         'Last-Modified': v.stat.mtime.toUTCString(),
         Vary: 'Accept-Encoding',
-        // embed.js is a module script loaded by docs pages of other origins: CORS (docs/deploy.md).
-        ...(CROSS_ORIGIN.test(rel) ? { 'Access-Control-Allow-Origin': '*' } : {}),
+        // embed.js as a module script of another origin's page is fetched with CORS (docs/deploy.md).
+        ...(faults.cors !== false && CROSS_ORIGIN.test(rel) ? { 'Access-Control-Allow-Origin': '*' } : {}),
         ...(v.encoding ? { 'Content-Encoding': v.encoding } : {}),
       };
       const inm = req.headers['if-none-match'];

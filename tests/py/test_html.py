@@ -84,7 +84,7 @@ def test_element_attributes_carry_the_panel_and_the_input():
     page = Page(panel_html("vendor", inp, site="https://intranet/tools/pu-lab/", lang="zh",
                            theme="dark"))
     (script,) = [a for t, a in page.elements if t == "script"]
-    assert script == {"type": "module", "src": "https://intranet/tools/pu-lab/embed.js"}
+    assert script == {"src": "https://intranet/tools/pu-lab/embed.js"}
     (el,) = [a for t, a in page.elements if t == "pu-lab-panel"]
     assert el["panel"] == "vendor" and el["lang"] == "zh" and el["theme"] == "dark"
     assert json.loads(el["input"]) == inp

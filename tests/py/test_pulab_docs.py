@@ -35,7 +35,7 @@ def _check_panel(html: str, panel: str, lang: str | None, inp: dict | None):
     assert len(els) == 1, panel
     assert els[0].get("lang") == lang
     assert (json.loads(els[0]["input"]) if "input" in els[0] else None) == inp
-    assert ("script", {"type": "module", "src": SITE + "embed.js"}) in page.elements
+    assert ("script", {"src": SITE + "embed.js"}) in page.elements
     return page.cells
 
 
@@ -130,7 +130,7 @@ def test_doxygen_snippet_builds_a_page_with_the_panel(tmp_path, capsys):
     out = subprocess.run(["doxygen", "Doxyfile"], cwd=dx, capture_output=True, text=True)
     assert out.returncode == 0, out.stderr
     page = Page((dx / "out" / "html" / "current__loop_8h.html").read_text())
-    assert ("script", {"type": "module", "src": SITE + "embed.js"}) in page.elements
+    assert ("script", {"src": SITE + "embed.js"}) in page.elements
     (el,) = [a for t, a in page.elements if t == "pu-lab-panel"]
     assert el["panel"] == "vendor" and json.loads(el["input"]) == CASE["input"]
 

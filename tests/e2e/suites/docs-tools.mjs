@@ -1,6 +1,7 @@
 // Docs pages built with the real tools from docs/deploy.md's snippets (tests/py/docs_samples.py:
 // Sphinx directive, MkDocs fence, Doxygen \htmlonly, Confluence user macro), served from ANOTHER
-// ORIGIN than pu-lab: with scripts off the Sphinx/MkDocs pages show the numbers pulab prerendered
+// ORIGIN than pu-lab, whose server sends no CORS header (the classic embed.js tag needs none):
+// with scripts off the Sphinx/MkDocs pages show the numbers pulab prerendered
 // at build time; with scripts the panels go live (the oracle's numbers), the prerendered tables
 // give way to the live panel, and every frame is sized to its content (the Confluence iframes by
 // the macro's postMessage listener). Screenshots: tests/e2e/screenshots/docs-*.png.
@@ -43,7 +44,8 @@ async function framesFit(page, assert, site) {
 }
 
 export default async function docsTools(ctx) {
-  const { check, assert, newPage, golden, subSrv, origins, ROOT, SHOTS } = ctx;
+  const { check, assert, newPage, golden, origins, ROOT, SHOTS } = ctx;
+  const subSrv = await ctx.serve(ctx.SUB, { cors: false });
   const other = golden('04_ind380_7k5.json');
   const rpm = String(other.expected.vendor.Rpm.value);
   const out = mkdtempSync(join(tmpdir(), 'pulab-docs-'));

@@ -1,24 +1,32 @@
 // <pu-lab-panel> (dist/embed.js) on a docs page of ANOTHER ORIGIN (the host on its own port):
 // twelve elements go live, size their iframes to their content (no inner scrollbar), raise
 // `pu-lab-report` with numbers the host text quotes (checked against the oracles' golden vectors),
-// follow the host's dark scheme, and start at most two runtimes. On a host of another SITE
-// (http://localhost:PORT; the site is at 127.0.0.1) Chromium denies the frames a SharedWorker
-// (third-party storage blocked): the panels still go live, each on a dedicated runtime.
-// Screenshots: tests/e2e/screenshots/embed-*.png.
+// follow the host's dark scheme, and start at most two runtimes. Both forms of the tag: the module
+// tag (`<script type="module" src>`, its server sends Access-Control-Allow-Origin) and the classic
+// tag (`<script src>` in the host's head) from a pu-lab server sending NO CORS header — the same
+// panels, numbers and events, and the host page fetches nothing from pu-lab but embed.js (no-cors).
+// On a host of another SITE (http://localhost:PORT; the site is at 127.0.0.1) Chromium denies the
+// frames a SharedWorker (third-party storage blocked): the panels still go live, each on a
+// dedicated runtime. Screenshots: tests/e2e/screenshots/embed-*.png.
 import { createServer } from 'node:http';
 import { join } from 'node:path';
 import { watchWorkers } from '../workers.mjs';
 
 const PANELS = ['bases', 'pu', 'vendor', 'constants', 'current', 'pll', 'loop', 'qcalc', 'conventions', 'datasheet', 'review', 'vendors'];
 
-/** The host page: 12 elements (the odd ones with another motor), and text quoting their reports. */
-function hostPage(site, other, lang, panels = PANELS) {
+/**
+ * The host page: 12 elements (the odd ones with another motor), and text quoting their reports.
+ * `classic`: embed.js by a classic tag, and the first element holds prerendered numbers (what the
+ * docs builds put there), which the classic tag in the head must not miss.
+ */
+function hostPage(site, other, lang, panels = PANELS, classic = false) {
+  const pre = (i) => (classic && i === 0 ? '<p class="pre">Rpm <span data-key="vendor.Rpm.value" data-value="0">0</span> (prerendered)</p>' : '');
   const els = panels.map((p, i) => `<h2>${p}</h2><p>Quoted: <span class="quote" data-for="${i}">…</span></p>
-<pu-lab-panel id="p${i}" panel="${p}" lang="${lang}"${i % 2 ? ` input='${JSON.stringify(other)}'` : ''}></pu-lab-panel>`).join('\n');
+<pu-lab-panel id="p${i}" panel="${p}" lang="${lang}"${i % 2 ? ` input='${JSON.stringify(other)}'` : ''}>${pre(i)}</pu-lab-panel>`).join('\n');
   return `<!doctype html><html><head><meta charset="utf-8"><meta name="viewport" content="width=device-width">
 <title>docs host</title><meta name="color-scheme" content="light dark">
 <style>body{font-family:sans-serif;max-width:960px;margin:auto;padding:8px}@media (prefers-color-scheme: dark){body{background:#111;color:#ddd}}</style>
-<script type="module" src="${site}embed.js"></script></head><body>
+<script${classic ? '' : ' type="module"'} src="${site}embed.js"></script></head><body>
 <h1>Motor notes</h1>
 <script>
 window.reports = {};
@@ -40,11 +48,14 @@ function hostServer(html) {
 }
 
 export default async function embed(ctx) {
-  const { check, assert, newPage, golden, browser, subSrv, origins, SHOTS } = ctx;
+  const { check, assert, newPage, golden, browser, subSrv, origins, SHOTS, SUB, compareShown } = ctx;
   const seed = golden('01_seed_motor.json');
   const other = golden('04_ind380_7k5.json');
   let lang = 'en';
-  const host = await hostServer((u) => (u.startsWith('/two') ? hostPage(subSrv.url, other.input, lang, PANELS.slice(1, 3)) : hostPage(subSrv.url, other.input, lang)));
+  // A pu-lab server whose headers the docs team cannot set: no Access-Control-Allow-Origin.
+  const noCors = await ctx.serve(SUB, { cors: false });
+  const host = await hostServer((u) => (u.startsWith('/two') ? hostPage(subSrv.url, other.input, lang, PANELS.slice(1, 3))
+    : u.startsWith('/classic') ? hostPage(noCors.url, other.input, lang, PANELS, true) : hostPage(subSrv.url, other.input, lang)));
   origins.add(new URL(host.url).origin);
   origins.add(new URL(host.crossSite).origin);
   const allLive = (page, n = PANELS.length) => page.waitForFunction((k) => document.querySelectorAll('pu-lab-panel[data-numbers="live"]').length === k, n, { timeout: 120_000, polling: 50 });
@@ -83,6 +94,51 @@ export default async function embed(ctx) {
         assert(ok, `${new URL(f.url()).search}: document ${inner.doc}×${inner.w} px in a ${inner.view}×${inner.vw} px iframe`);
       }
       await page.screenshot({ path: join(SHOTS, 'embed-host-1366-en.png') });
+      await page.context().close();
+    });
+
+    await check('classic <script src="embed.js"> from a pu-lab server with no CORS header: 12 panels live, the same numbers and events, ≤ 2 runtimes', async () => {
+      const head = await fetch(`${noCors.url}embed.js`);
+      assert(head.ok && head.headers.get('access-control-allow-origin') === null, `embed.js: ${head.status}, ACAO ${head.headers.get('access-control-allow-origin')}`);
+      assert((await fetch(`${subSrv.url}embed.js`)).headers.get('access-control-allow-origin') === '*', 'the module form\'s server sends no ACAO');
+      const page = await newPage();
+      const site = new URL(noCors.url).origin;
+      const fromHost = [];
+      page.on('request', (r) => {
+        if (r.frame() === page.mainFrame() && new URL(r.url()).origin === site) fromHost.push(r.allHeaders().then((h) => [new URL(r.url()).pathname, h['sec-fetch-mode'], r.resourceType(), h.origin ?? null]));
+      });
+      const w = await watchWorkers(browser, page);
+      await page.goto(`${host.url}classic`);
+      await allLive(page);
+      await page.waitForTimeout(1500); // a simulation runtime started late would be counted too
+      const started = [...w.kinds];
+      await w.stop();
+      assert(!started.includes('worker'), `dedicated workers: ${started.join(',')}`);
+      const shared = started.filter((k) => k === 'shared_worker').length;
+      assert(shared >= 1 && shared <= 2, `runtimes: ${shared}`);
+      // Only embed.js is fetched by the host page itself, as a classic script (no CORS request); the frames load the rest.
+      const navs = (await Promise.all(fromHost)).filter(([, , t]) => t !== 'document');
+      assert(navs.length === 1 && navs[0][0] === `${SUB}embed.js` && navs[0][1] === 'no-cors' && navs[0][2] === 'script' && navs[0][3] === null, `host page requests to pu-lab: ${JSON.stringify(navs)}`);
+      // The same events and quoted numbers as the module form.
+      const quotes = await page.$$eval('.quote', (q) => q.map((e) => e.textContent));
+      quotes.forEach((q, i) => {
+        const want = (i % 2 ? other : seed).expected.vendor.Rpm.value;
+        assert(q === `${want} (live)`, `panel ${i} quoted ${q}, oracle ${want}`);
+      });
+      const reports = await page.evaluate(() => window.reports);
+      assert(Object.keys(reports).length === PANELS.length && reports[3].panel === 'constants', 'one report event per element, naming its panel');
+      // Every number each frame shows (data-key/data-value) is the oracle's for that element's motor.
+      let n = 0;
+      for (let i = 0; i < PANELS.length; i++) {
+        const frame = await (await page.$(`#p${i} > iframe`)).contentFrame();
+        assert(new URL(frame.url()).origin === site, `frame ${i} at ${frame.url()}`);
+        n += await compareShown(frame, (i % 2 ? other : seed).expected);
+      }
+      assert(n > 50, `only ${n} numbers compared`);
+      // The prerendered numbers inside the first element were seen (the tag is in the head) and give way to the live panel.
+      assert(await page.$eval('#p0 > .pre', (e) => e.hidden), 'prerendered numbers not hidden once the panel is live');
+      console.log(`      classic tag, no CORS header: ${n} numbers match the oracles; workers started: ${started.join(',')}`);
+      await page.screenshot({ path: join(SHOTS, 'embed-host-classic-1366-en.png') });
       await page.context().close();
     });
 

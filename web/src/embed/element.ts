@@ -1,12 +1,15 @@
-// embed.js — the one script tag a docs page adds to show pu-lab panels:
-//   <script type="module" src="https://host/tools/pu-lab/embed.js"></script>
+// embed.js — the one script tag a docs page adds to show pu-lab panels, in either form:
+//   <script src="https://host/tools/pu-lab/embed.js"></script>                (classic: no CORS)
+//   <script type="module" src="https://host/tools/pu-lab/embed.js"></script>  (needs CORS)
 //   <pu-lab-panel panel="vendor" lang="zh" input='{"motor": {...}}'></pu-lab-panel>
-// Each element holds an iframe of the site's `?embed=` page, found relative to this script's own
-// URL (any sub-path, any origin). An iframe, not rendering into the host page: the host's CSS and
-// CSP stay out of the panel, and every frame of the site's origin shares the runtime its
-// SharedWorker already is (many panels, one or two runtimes). The frame reports its height and
-// its numbers by postMessage (messages.ts); the element sizes itself and re-raises the report as a
-// `pu-lab-report` DOM event. Contract: docs/contract.md, "Embedding".
+// Built as one classic script (an IIFE: no import/export, no import.meta), so the same file runs
+// in both forms. Each element holds an iframe of the site's `?embed=` page, found relative to this
+// script's own URL (any sub-path, any origin; see scriptSrc). An iframe, not rendering into the
+// host page: the host's CSS and CSP stay out of the panel, and every frame of the site's origin
+// shares the runtime its SharedWorker already is (many panels, one or two runtimes). The host page
+// never fetches anything else from the site: the frame loads the rest, same-origin. The frame
+// reports its height and its numbers by postMessage (messages.ts); the element sizes itself and
+// re-raises the report as a `pu-lab-report` DOM event. Contract: docs/contract.md, "Embedding".
 import type { FrameMessage, SizeMessage, ReportMessage, Theme } from './messages';
 
 /** A message from a frame this element understands, or null. */
@@ -18,12 +21,27 @@ function frameMessage(data: unknown): FrameMessage | null {
   return null;
 }
 
-const SITE = new URL(/* @vite-ignore */ './', import.meta.url);
+/**
+ * This script's URL. A classic script is `document.currentScript` while it first runs (null
+ * afterwards, and always null in a module script); a module script — deferred, run in document
+ * order — is the first `<script type="module" src>` of the document whose path ends in
+ * `/embed.js`. Loading embed.js by `import()` leaves neither: null.
+ */
+function scriptSrc(): string | null {
+  const cur = document.currentScript;
+  if (cur instanceof HTMLScriptElement && cur.src) return cur.src;
+  const tag = Array.from(document.querySelectorAll<HTMLScriptElement>('script[src]'))
+    .find((s) => s.type.trim().toLowerCase() === 'module' && /\/embed\.js([?#]|$)/.test(s.src));
+  return tag ? tag.src : null;
+}
+
+const SRC = scriptSrc();
+const SITE = new URL('./', SRC ?? document.baseURI);
 const PANEL_ATTRS = ['panel', 'lang', 'input', 'theme'] as const;
 const dark = window.matchMedia('(prefers-color-scheme: dark)');
 
 /** The `?embed=` page for these attributes. */
-export function frameUrl(panel: string, lang: string | null, input: string | null, theme: Theme): string {
+function frameUrl(panel: string, lang: string | null, input: string | null, theme: Theme): string {
   const u = new URL(SITE);
   u.searchParams.set('embed', panel);
   if (lang === 'zh' || lang === 'en') u.searchParams.set('lang', lang);
@@ -32,7 +50,7 @@ export function frameUrl(panel: string, lang: string | null, input: string | nul
   return u.href;
 }
 
-export class PuLabPanel extends HTMLElement {
+class PuLabPanel extends HTMLElement {
   static observedAttributes = [...PANEL_ATTRS];
   private frame: HTMLIFrameElement | null = null;
   private src = '';
@@ -109,6 +127,14 @@ export class PuLabPanel extends HTMLElement {
   };
 }
 
-if (!customElements.get('pu-lab-panel')) {
+function define(): void {
+  if (customElements.get('pu-lab-panel')) return;
+  if (SRC === null) throw new Error('pu-lab: load embed.js with a <script src> tag (classic or type="module"), not import()');
   customElements.define('pu-lab-panel', PuLabPanel);
 }
+
+// A classic tag in the page's head runs before the elements below it are parsed; defined then,
+// an element would be connected before its children (the prerendered numbers) exist. Defining
+// once the document is parsed — when a module tag runs anyway — gives both forms the same start.
+if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', define, { once: true });
+else define();
