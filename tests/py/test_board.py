@@ -16,7 +16,10 @@ The BOOSTXL-DRV8323RS divider (82 kΩ over 4.99 kΩ) is the reconstruction that 
 57.52845691 V to ten digits; TI's header prints only the result.
 """
 import copy
+import json
+import pathlib
 import subprocess
+import sys
 
 import pytest
 
@@ -24,6 +27,9 @@ import pulab
 from conftest import SEED_INPUT
 from ctrace_compilers import available
 from pulab import InputError
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "oracle"))
+from golden_files import differences  # noqa: E402 - the oracles' own tolerance rule
 
 
 def _report(board, **sections):
@@ -179,3 +185,22 @@ def test_findings_a_user_can_act_on():
 def test_no_board_changes_nothing():
     r = pulab.report(copy.deepcopy(SEED_INPUT))
     assert "board" not in r and "board" not in r["input"] and "board" not in r["review"]["thresholds"]
+
+
+# Golden vectors of the independent oracle (tests/oracle/board_oracle.py, Fractions, never
+# imports pulab); the same files go through Pyodide in tests/web/golden-board.test.ts.
+GOLDEN = sorted((pathlib.Path(__file__).resolve().parents[1] / "golden" / "board").glob("*.json"))
+
+
+def test_board_golden_files_are_fresh():
+    assert len(GOLDEN) >= 4
+    r = subprocess.run([sys.executable, "board_oracle.py", "--check"], capture_output=True,
+                       text=True, cwd=pathlib.Path(__file__).resolve().parents[1] / "oracle")
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+@pytest.mark.parametrize("path", GOLDEN, ids=[p.stem for p in GOLDEN])
+def test_board_golden(path):
+    case = json.loads(path.read_text(encoding="utf-8"))
+    got = pulab.report(case["input"])["board"]
+    assert differences(case["expected"], got, 1e-12, 0.0) == []
