@@ -11,6 +11,7 @@ Examples
 
 from __future__ import annotations
 
+from .model.board import board
 from .model.bases import bases, flux_linkage, per_unit
 from .profiles.inovance_magic import magic_constants
 from .model.datasheet import mechanical
@@ -167,6 +168,10 @@ def report_steps(inp: dict):
     }
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
+    if "board" in n:
+        out["board"] = board(n["board"], b["I_b"],
+                             flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
+                             m["pole_pairs"], d["udc_v"])
     if prof is not None:
         out["profiles"] = prof
     if n["analysis"] is not None:
@@ -176,7 +181,8 @@ def report_steps(inp: dict):
         out["input"]["analysis"] = _loop.validate(n["analysis"])
     if sim_in is not None:
         out["sim"] = yield from _sim.simulate_steps(out, sim_in)
-    out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"), firmware)
+    out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"), firmware,
+                           out.get("board"))
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]

@@ -28,6 +28,12 @@ describe('toSI: display unit → the SI value of the input JSON (exact for the u
     [0.35, 'mΩ', 0.00035],
     [12.5, 'mΩ', 0.0125],
     [0.0011, 'Ω', 0.0011],
+    // the board: shunts in mΩ, dividers in kΩ, dead times in ns
+    [7, 'mΩ', 0.007],
+    [4.99, 'kΩ', 4990],
+    [82, 'kΩ', 82000],
+    [800, 'ns', 8e-7],
+    [1.5, 'ns', 1.5e-9],
   ];
   for (const [v, u, want] of cases) it(`${v} ${u} → ${want}`, () => expect(toSI(v, u)).toBe(want));
 });

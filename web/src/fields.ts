@@ -94,6 +94,10 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
   'analysis.target_phase_margin_deg': { enabled: (i) => design(i) === 'phase_margin' },
   'analysis.target_bandwidth_hz': { enabled: (i) => design(i) === 'bandwidth', placeholderFrom: 'current_pi.bandwidth_hz' },
   'analysis.speed.ts_s': { units: ['µs', 'kHz', 's'] },
+  'board.current.shunt_ohm': { units: ['mΩ', 'Ω'] },
+  'board.bus.r_top_ohm': { units: ['kΩ', 'Ω'] },
+  'board.bus.r_bottom_ohm': { units: ['kΩ', 'Ω'] },
+  'board.pwm.deadtime_s': { units: ['ns', 'µs', 's'] },
 };
 /** The fields that share a display unit with `f` (inductances, resistances: one choice for the
  * motor and the datasheet). */
@@ -135,6 +139,9 @@ const LAYOUT: Omit<SectionSpec, 'fields'>[] = [
   { id: 'current_loop', title: 'sec_current_loop' },
   { id: 'pll', title: 'sec_pll' },
   { id: 'raw', title: 'sec_raw', hint: 'rawHint', collapsed: true },
+  { id: 'board.current', title: 'sec_board_current', hint: 'boardHint', collapsed: true },
+  { id: 'board.bus', title: 'sec_board_bus', collapsed: true },
+  { id: 'board.pwm', title: 'sec_board_pwm', collapsed: true },
   { id: 'sim.current', title: 'sec_sim_current', collapsed: true },
   { id: 'sim.pll', title: 'sec_sim_pll', collapsed: true },
   { id: 'analysis', title: 'sec_analysis', collapsed: true },

@@ -36,6 +36,9 @@ export interface Constant {
   derivation?: string;
   derivation_zh?: string;
 }
+/** One chain of the board: numbers, `from` ('chain' or the typed value), null where not computable. */
+export type BoardRow = Record<string, number | string | null>;
+
 export interface SimCurrent {
   t: number[];
   variants: Record<string, { id: number[]; iq: number[]; ud: number[]; uq: number[]; [k: string]: number[] }>;
@@ -76,6 +79,8 @@ export interface Report {
   firmware: Record<string, FirmwareStatus>;
   review: Review;
   datasheet?: { given: Record<string, unknown>; conversions: Conversion[] };
+  /** Present when the input has a `board` section (docs/contract.md, "Output: board"). */
+  board?: { current: BoardRow | null; bus: BoardRow | null; pwm: BoardRow | null };
   loop?: LoopReport;
   /** Present when the input has a `profiles` section (docs/contract.md, "Output: profiles.NAME"). */
   profiles?: Record<string, ProfileReport>;

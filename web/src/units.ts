@@ -2,7 +2,7 @@
 // Powers of ten shift the decimal exponent (4.2 mH → "4.2e-3" → 0.0042), so the SI value is the
 // shortest decimal the user meant, never 4.2/1000 = 0.004200000000000001.
 
-export type UnitId = 'H' | 'mH' | 'µH' | 'Ω' | 'mΩ' | 's' | 'ms' | 'µs' | 'kHz' | 'V/krpm' | 'V/rpm';
+export type UnitId = 'H' | 'mH' | 'µH' | 'Ω' | 'mΩ' | 'kΩ' | 's' | 'ms' | 'µs' | 'ns' | 'kHz' | 'V/krpm' | 'V/rpm';
 
 interface UnitDef {
   /** SI = display / div ... */
@@ -17,9 +17,11 @@ export const UNITS: Record<UnitId, UnitDef> = {
   'µH': { div: 1e6 },
   'Ω': { div: 1 },
   'mΩ': { div: 1e3 },
+  'kΩ': { div: 1e-3 },
   s: { div: 1 },
   ms: { div: 1e3 },
   'µs': { div: 1e6 },
+  ns: { div: 1e9 },
   kHz: { recip: 1e3 },
   // A back-EMF constant as some datasheets print it: volts per single rpm (EMRAX "Vrms/1RPM").
   'V/krpm': { div: 1 },

@@ -406,8 +406,71 @@ def _firmware(f: list, firmware: dict, shipped: str) -> None:
                  "params": p[0]["params"]})
 
 
+#: Limits of the board's findings (echoed in ``review.thresholds.board`` when a board is given).
+BOARD_THRESHOLDS = {
+    # rated peak current / largest measurable current: below it resolution is lost; at or
+    # above 1 the ADC clips
+    "adc_use": {"warning": 0.25, "error": 1.0},
+    # the fit a suggested gain aims at (share of the measurable current)
+    "adc_fit": 0.8,
+    # dead-time voltage error / the voltage needed at 10 % rated speed and rated current
+    "deadtime_share": {"warning": 0.2},
+    # duty-cycle resolution, bits
+    "duty_bits": {"warning": 10.0},
+}
+
+
+def _board(f: list, n: dict, board: dict | None) -> None:
+    """The board's chain against the motor: the ADC range, the dead time, the PWM."""
+    if not board:
+        return
+    m = n["motor"]
+    peak = math.sqrt(2.0) * m["rated_current_a"]
+    lim = BOARD_THRESHOLDS
+    c, given = board["current"], n["board"].get("current") or {}
+    if c is not None:
+        use = peak / c["max_a"]
+        field = ("board.current.max_a" if c["from"] == "max_a" else
+                 "board.current.sensitivity_v_per_a" if given.get("sensitivity_v_per_a") else
+                 "board.current.gain")
+        if use >= lim["adc_use"]["error"]:
+            _finding(f, "error", "board_adc_clip", "board.current.max_a", field, use,
+                     peak=peak, max_a=c["max_a"], pct=100.0 * use)
+        elif use < lim["adc_use"]["warning"]:
+            scale = lim["adc_fit"] / use    # what multiplies the chain's sensitivity
+            if field == "board.current.gain":
+                fit = f"{given.get('gain') or 1.0:.4g} → {(given.get('gain') or 1.0) * scale:.4g} V/V"
+            elif field == "board.current.sensitivity_v_per_a":
+                fit = f"{c['sensitivity_v_per_a']:.4g} → {c['sensitivity_v_per_a'] * scale:.4g} V/A"
+            else:
+                fit = f"±{c['max_a']:.4g} → ±{c['max_a'] / scale:.4g} A"
+            _finding(f, "warning", "board_adc_low", "board.current.max_a", field, use,
+                     peak=peak, max_a=c["max_a"], pct=100.0 * use, fit=fit,
+                     fit_pct=100.0 * lim["adc_fit"])
+    p = board["pwm"]
+    if p is None:
+        return
+    if p["deadtime_error_v"] is not None:
+        psi = m["bemf_v"] * math.sqrt(2.0 / 3.0) / (2.0 * math.pi * m["rated_freq_hz"])
+        need = m["rs_ohm"] * peak + 0.1 * 2.0 * math.pi * m["rated_freq_hz"] * psi
+        share = p["deadtime_error_v"] / need
+        if share > lim["deadtime_share"]["warning"]:
+            _finding(f, "warning", "board_deadtime", "board.pwm.deadtime_error_v",
+                     "board.pwm.deadtime_s", share, err=p["deadtime_error_v"], need=need,
+                     pct=100.0 * share)
+    if p["duty_bits"] is not None and p["duty_bits"] < lim["duty_bits"]["warning"]:
+        _finding(f, "warning", "board_duty_bits", "board.pwm.duty_bits", "board.pwm.freq_hz",
+                 p["duty_bits"], bits=p["duty_bits"], steps=2.0 ** p["duty_bits"])
+    ts = n["drive"]["ts_s"]
+    if abs(p["control_period_s"] - ts) > 1e-6 * ts:
+        _finding(f, "warning", "board_ts", "board.pwm.control_period_s",
+                 "board.pwm.periods_per_control", p["control_period_s"],
+                 period=p["control_period_s"], ts=ts)
+
+
 def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
-           loop: dict | None = None, firmware: dict | None = None) -> dict:
+           loop: dict | None = None, firmware: dict | None = None,
+           board: dict | None = None) -> dict:
     """All findings for one report, most severe first.
 
     Parameters
@@ -418,6 +481,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     loop : dict or None — the ``loop`` output, for the robustness check
     firmware : dict or None — the ``firmware`` output: one finding per firmware that cannot
         hold this motor
+    board : dict or None — the ``board`` output: the ADC range, dead time and PWM checks
 
     Returns
     -------
@@ -440,10 +504,12 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     _pi_arithmetic(f, sim, n["conventions"]["firmware"], vendor)
     _robust(f, loop)
     _firmware(f, firmware or {}, n["conventions"]["firmware"])
+    _board(f, n, board)
     if unit == "uH":
         _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":
         _finding(f, "note", "custom_bases", "base.U_b", "conventions.base", "custom")
     f.sort(key=lambda x: SEVERITIES.index(x["severity"]))
     return {"findings": f, "counts": {s: sum(x["severity"] == s for x in f) for s in SEVERITIES},
-            "thresholds": THRESHOLDS, "headroom": h}
+            "thresholds": {**THRESHOLDS, "board": BOARD_THRESHOLDS} if board else THRESHOLDS,
+            "headroom": h}

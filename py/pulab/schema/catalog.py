@@ -441,6 +441,12 @@ MESSAGES = {
                      "{value:g} s 而 L/R = {tau:.3g} s：电流在一个周期内即已稳定（R·Ts/L = "
                      "{x:.4g} > {limit:g}），对象极点 e^(−R·Ts/L) 低于舍入误差，PI 零点无法对消；"
                      "请缩短 Ts，或检查 R 与 L"),
+    "board_either": ("give this or {other}, not both (one replaces the other)",
+                     "此项与 {other} 只能填一个（二者互相替代）"),
+    "board_needs": ("is needed with {other}", "填写 {other} 时必须同时填写此项"),
+    "board_pwm_ticks": ("the timer clock {clock:g} Hz gives {ticks:.3g} ticks per period: fewer "
+                        "than a period register can hold", "定时器时钟 {clock:g} Hz 每周期只有 "
+                        "{ticks:.3g} 个计数：周期寄存器无法表示"),
     "speed_kp_low": ("too low for the friction: kp = (2ζωn·J − B)/Kt = {kp:.4g} ≤ 0",
                      "相对摩擦过低：kp = (2ζωn·J − B)/Kt = {kp:.4g} ≤ 0"),
     "step_q12": ("{value:g} A is {pu:.3g} pu; the Q12 current (int16) holds less than ±8 pu "
@@ -584,6 +590,27 @@ MESSAGES = {
                               "{key} = {count}：汇川固件的电流 PI（long 运算）在仿真阶跃中有 "
                               "{count} 次更新溢出回绕，会输出错误的电压；请修改{label}，使电压限幅 "
                               "maxu 与 pm_maxout_vol 不溢出"),
+    "finding.board_adc_clip": ("the rated peak current {peak:.4g} A is {pct:.0f} % of the ±{max_a:.4g} A "
+                               "the current ADC measures: it clips; change {label}",
+                               "额定峰值电流 {peak:.4g} A 达到电流 ADC 可测范围 ±{max_a:.4g} A 的 "
+                               "{pct:.0f} %：会削顶；请修改{label}"),
+    "finding.board_adc_low": ("the rated peak current {peak:.4g} A uses {pct:.1f} % of the ±{max_a:.4g} A "
+                              "the current ADC measures: resolution is lost; {label} {fit} puts it "
+                              "at {fit_pct:.0f} %",
+                              "额定峰值电流 {peak:.4g} A 只用到电流 ADC 可测范围 ±{max_a:.4g} A 的 "
+                              "{pct:.1f} %：分辨率被浪费；{label} {fit} 可使其达到 {fit_pct:.0f} %"),
+    "finding.board_deadtime": ("the dead time costs {err:.3g} V of average voltage, {pct:.0f} % of the "
+                               "{need:.3g} V (phase peak) the motor needs at rated current and 10 % "
+                               "of rated speed: a shorter {label} or dead-time compensation",
+                               "死区造成 {err:.3g} V 的平均电压误差，是额定电流、10 % 额定转速时所需 "
+                               "{need:.3g} V（相峰值）的 {pct:.0f} %：请缩短{label}或加死区补偿"),
+    "finding.board_duty_bits": ("the PWM period leaves {bits:.1f} bits of duty resolution ({steps:.0f} "
+                                "steps); a lower {label} or a faster timer clock",
+                                "PWM 周期只有 {bits:.1f} 位占空比分辨率（{steps:.0f} 级）；请降低{label}或"
+                                "提高定时器时钟"),
+    "finding.board_ts": ("the PWM gives a control period of {period:.6g} s, the drive says Ts = {ts:.6g} s; "
+                         "change {label} or Ts",
+                         "PWM 给出的控制周期为 {period:.6g} s，而驱动器 Ts = {ts:.6g} s；请修改{label}或 Ts"),
     "finding.pi_saturate": ("{key}.saturate = {count}: the {profile} firmware's integer current "
                             "PI clipped an intermediate value {count} times in the simulated step "
                             "(saturating arithmetic, not its output limit); lower {label}, or give "

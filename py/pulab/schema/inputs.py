@@ -95,6 +95,9 @@ def normalize(inp: dict) -> dict:
         out["datasheet"] = {"given": ds, "conversions": conversions}
         if bemf_check is not None:
             out["datasheet"]["bemf_check"] = bemf_check
+    if inp.get("board") is not None:
+        given = object_fields(inp["board"], "board", children("board"))
+        out["board"] = {k: read(f"board.{k}", given[k]) for k in children("board") if k in given}
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
     if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor

@@ -17,6 +17,7 @@ import { sweepPanel } from './sweep';
 import { provePanel } from './prove';
 import { batchPanel } from './batch';
 import { vendorsPanel } from './vendors';
+import { boardPanel } from './board';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -36,6 +37,7 @@ export const PANELS: Panel[] = [
   provePanel,
   batchPanel,
   vendorsPanel,
+  boardPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
