@@ -106,4 +106,8 @@ def expected(inp: dict) -> dict:
         "pll-int-gain": L["integrator_gain"],
         "pll-naive-kts": g_naive * L["kp"] * ts,
         "pll-naive-locks": "yes" if naive["stable"] else "no",
+        # TI's BOOSTXL-DRV8323RS: 7 mΩ × 10 on a bipolar 12-bit ADC at 3.3 V
+        "board-counts": 4096 * 0.007 * 10 / 3.3,
+        "board-pu": 3.3 / (0.007 * 10) / 4096 / B["I_b"],
+        "board-gain": 0.8 * 3.3 / (2 * 0.007 * math.sqrt(2) * P["rated_current_a"]),
     }

@@ -144,6 +144,23 @@ def _line_trap(c: _Ctx) -> int:
     return round(g["kp"] * i_b / c.r["input"]["motor"]["rated_voltage_v"] * 4096)
 
 
+#: The board of the board exercises: TI's BOOSTXL-DRV8323RS current sensing (7 mΩ shunts, gain 10,
+#: a bipolar 12-bit ADC at 3.3 V; its header prints 47.14285714 A full scale).
+EXAMPLE_BOARD = {"current": {"shunt_ohm": 0.007, "gain": 10}}
+
+
+def _board(c: _Ctx) -> dict:
+    """The report's board chain of the trainee's motor on :data:`EXAMPLE_BOARD`."""
+    from ..report import report
+    return report({**c.input, "board": EXAMPLE_BOARD})["board"]["current"]
+
+
+def _board_gain(c: _Ctx) -> float:
+    """The gain that puts the rated peak current at 80 % of the example board's measurable range."""
+    peak = math.sqrt(2.0) * c.r["input"]["motor"]["rated_current_a"]
+    return EXAMPLE_BOARD["current"]["gain"] * 0.8 * _board(c)["max_a"] / peak
+
+
 EXERCISES: tuple[Exercise, ...] = (
     # day one, step 1: per-unit intuition
     Exercise("warmup-current", "00-warm-up", "real", lambda c: 2.0 / c.r["base"]["I_b"], 0.01),
@@ -186,6 +203,11 @@ EXERCISES: tuple[Exercise, ...] = (
              lambda c: c.r["pll"]["integrator_gain"] * c.r["pll"]["kp"] * c.r["input"]["drive"]["ts_s"], 0.01),
     Exercise("pll-naive-locks", "03-pll", "choice",
              lambda c: "yes" if c.loop()["pll"]["naive"]["stable"] else "no", choices=("yes", "no")),
+    # reference: the board sets the scales
+    Exercise("board-counts", "09-vendors", "real", lambda c: _board(c)["counts_per_a"], 0.01,
+             "counts/A"),
+    Exercise("board-pu", "09-vendors", "real", lambda c: _board(c)["pu_per_count"], 0.01),
+    Exercise("board-gain", "09-vendors", "real", _board_gain, 0.01, "V/V"),
 )
 _BY_ID = {e.id: e for e in EXERCISES}
 
