@@ -14,7 +14,7 @@ import json
 import sys
 import time
 
-__all__ = ["run", "report_timing", "loop_timing", "trace_timing", "format_run", "MOTORS",
+__all__ = ["run", "report_timing", "loop_timing", "trace_timing", "board_timing", "format_run", "MOTORS",
            "TRACE_SNIPPET", "TRACE_INPUTS"]
 
 #: Motors of different sizes; timing differs little, but one motor would hide outliers.
@@ -200,13 +200,36 @@ def trace_timing(n: int = 200) -> dict:
     return out
 
 
+#: TI's BOOSTXL-DRV8323RS on a 100 MHz F28004x: every chain of the board section.
+BOARD = {"current": {"shunt_ohm": 0.007, "gain": 10}, "bus": {"r_top_ohm": 82e3, "r_bottom_ohm": 4.99e3},
+         "pwm": {"clock_hz": 100e6, "freq_hz": 1e4, "deadtime_s": 2e-7}}
+
+
+def board_timing(n: int = 200) -> dict:
+    """Median milliseconds of the seed motor's report with every profile, without and with
+    :data:`BOARD`, measured interleaved (one of each per round, so load hits both alike), and
+    their ratio (target ≤ 1.3)."""
+    from .report import report
+    plain = {**MOTORS["seed 17 V"], "profiles": {}}
+    board = {**plain, "board": BOARD}
+    report(plain), report(board)
+    a, b = [], []
+    for _ in range(n):
+        for inp, out in ((plain, a), (board, b)):
+            t0 = time.perf_counter()
+            report(inp)
+            out.append((time.perf_counter() - t0) * 1e3)
+    a.sort(), b.sort()
+    return {"without_ms": a[n // 2], "with_ms": b[n // 2], "ratio": b[n // 2] / a[n // 2]}
+
+
 def run(sim_steps: int = 20000) -> dict:
     """All core benchmarks: ``report_ms`` per motor, ``loop_ms``, ``sim`` (see pulab.analyses.sim.bench),
     ``trace``."""
     from .analyses.sim.bench import bench
     return {"python": f"{sys.implementation.name} {sys.version.split()[0]}",
             "platform": sys.platform, "report_ms": report_timing(), "loop_ms": loop_timing(),
-            "sim": bench(sim_steps), "trace": trace_timing()}
+            "sim": bench(sim_steps), "trace": trace_timing(), "board": board_timing()}
 
 
 def format_run(r: dict) -> str:
@@ -217,6 +240,10 @@ def format_run(r: dict) -> str:
     for name, ms in r.get("loop_ms", {}).items():
         lines.append(f"  report() + loop analysis + Bode, {name:<13} {ms:7.3f} ms median  "
                      f"(target ≤ 20 ms in Pyodide)")
+    if "board" in r:
+        b = r["board"]
+        lines.append(f"  report() with every profile, seed motor: {b['without_ms']:.3f} ms median, with a "
+                     f"board {b['with_ms']:.3f} ms = {b['ratio']:.3f}× (target ≤ 1.3×)")
     s = r["sim"]
     lines.append(f"  sim: {s['steps']} steps × 7 variants (si, pu, fixed; ti, nxp, st, microchip) "
                  f"in {s['total_s']:.3f} s = {s['steps_per_s']:.0f} steps/s (target < 0.5 s "
