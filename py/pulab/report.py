@@ -179,10 +179,13 @@ def report_steps(inp: dict):
         from .analyses import loop as _loop
         out["loop"] = _loop.analyze(out, n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
+        if out["input"]["analysis"]["fw"] is not None:
+            from .analyses import envelope as _envelope
+            out["fw"] = _envelope.analyze(out, out["input"]["analysis"]["fw"])
     if sim_in is not None:
         out["sim"] = yield from _sim.simulate_steps(out, sim_in)
     out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"), firmware,
-                           out.get("board"))
+                           out.get("board"), out.get("fw"))
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]

@@ -468,9 +468,31 @@ def _board(f: list, n: dict, board: dict | None) -> None:
                  period=p["control_period_s"], ts=ts)
 
 
+def _fw(f: list, n: dict, fw: dict | None) -> None:
+    """Above base speed: the rated point beyond it, a range drawn beyond the maximum speed, a
+    stored table too coarse."""
+    if not fw:
+        return
+    m = n["motor"]
+    rated_rpm = m["rated_freq_hz"] * 60.0 / m["pole_pairs"]
+    if rated_rpm > fw["base_speed_rpm"] * (1.0 + 1e-9):
+        _finding(f, "warning", "fw_rated_beyond_base", "fw.base_speed_rpm", "drive.udc_v",
+                 fw["base_speed_rpm"], rated=rated_rpm, base=fw["base_speed_rpm"])
+    top, given = fw["max_speed_rpm"], (n.get("analysis") or {}).get("fw") or {}
+    if top is not None and given.get("speed_max_rpm") is not None and given["speed_max_rpm"] > top:
+        _finding(f, "warning", "fw_beyond_max", "fw.max_speed_rpm", "analysis.fw.speed_max_rpm",
+                 top, want=given["speed_max_rpm"], top=top)
+    for name, t in fw["tables"].items():
+        if t["error_bound"] > 0.01 * fw["current_limit_a"]:
+            _finding(f, "note", "fw_table_coarse", f"fw.tables.{name}.error_bound",
+                     "analysis.fw.table_points", t["error_bound"], table=name,
+                     err=t["error_bound"], pct=100.0 * t["error_bound"] / fw["current_limit_a"],
+                     n=len(t["values"]))
+
+
 def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
            loop: dict | None = None, firmware: dict | None = None,
-           board: dict | None = None) -> dict:
+           board: dict | None = None, fw: dict | None = None) -> dict:
     """All findings for one report, most severe first.
 
     Parameters
@@ -482,6 +504,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     firmware : dict or None — the ``firmware`` output: one finding per firmware that cannot
         hold this motor
     board : dict or None — the ``board`` output: the ADC range, dead time and PWM checks
+    fw : dict or None — the ``fw`` output: base and maximum speed, the tables' error bounds
 
     Returns
     -------
@@ -505,6 +528,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     _robust(f, loop)
     _firmware(f, firmware or {}, n["conventions"]["firmware"])
     _board(f, n, board)
+    _fw(f, n, fw)
     if unit == "uH":
         _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":

@@ -441,6 +441,7 @@ MESSAGES = {
                      "{value:g} s 而 L/R = {tau:.3g} s：电流在一个周期内即已稳定（R·Ts/L = "
                      "{x:.4g} > {limit:g}），对象极点 e^(−R·Ts/L) 低于舍入误差，PI 零点无法对消；"
                      "请缩短 Ts，或检查 R 与 L"),
+    "fw_no_voltage": ("leaves a voltage limit of {value:g} V", "电压极限为 {value:g} V，无可用电压"),
     "board_either": ("give this or {other}, not both (one replaces the other)",
                      "此项与 {other} 只能填一个（二者互相替代）"),
     "board_needs": ("is needed with {other}", "填写 {other} 时必须同时填写此项"),
@@ -590,6 +591,19 @@ MESSAGES = {
                               "{key} = {count}：汇川固件的电流 PI（long 运算）在仿真阶跃中有 "
                               "{count} 次更新溢出回绕，会输出错误的电压；请修改{label}，使电压限幅 "
                               "maxu 与 pm_maxout_vol 不溢出"),
+    "finding.fw_rated_beyond_base": ("the rated speed {rated:.5g} rpm is above the base speed {base:.5g} rpm "
+                                     "of this bus and current limit: rated torque there needs field "
+                                     "weakening; a higher {label} or a lower rated point",
+                                     "额定转速 {rated:.5g} rpm 高于该母线电压和电流极限下的基速 {base:.5g} "
+                                     "rpm：额定点需要弱磁才能输出额定转矩；请提高{label}或降低额定点"),
+    "finding.fw_beyond_max": ("the range drawn ends at {want:.5g} rpm, above the maximum speed {top:.5g} "
+                              "rpm: no current within the limit gives positive torque there; lower {label}",
+                              "绘制范围到 {want:.5g} rpm，高于最高转速 {top:.5g} rpm：那里没有电流能在极限内"
+                              "产生正转矩；请降低{label}"),
+    "finding.fw_table_coarse": ("table {table} ({n} points) misses the exact curve by up to {err:.3g} A "
+                                "({pct:.2g} % of the current limit); more {label}",
+                                "表 {table}（{n} 点）与精确曲线相差最多 {err:.3g} A（电流极限的 {pct:.2g} %）；"
+                                "请增加{label}"),
     "finding.board_adc_clip": ("the rated peak current {peak:.4g} A is {pct:.0f} % of the ±{max_a:.4g} A "
                                "the current ADC measures: it clips; change {label}",
                                "额定峰值电流 {peak:.4g} A 达到电流 ADC 可测范围 ±{max_a:.4g} A 的 "

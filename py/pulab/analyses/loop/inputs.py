@@ -36,7 +36,8 @@ def validate(value) -> dict:
         Naming the JSON path of the first bad field.
     """
     a = read("analysis", value)
-    speed, robust = a.get("speed"), a.get("robust")
+    speed, robust, fw = a.get("speed"), a.get("robust"), a.get("fw")
     a["speed"] = None if speed is None else read("analysis.speed", speed)
+    a["fw"] = None if fw is None else read("analysis.fw", fw)
     a["robust"] = None if robust is None else _robust.settings(robust)
     return a

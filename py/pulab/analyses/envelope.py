@@ -1,0 +1,253 @@
+"""Above base speed: MTPA, the voltage limit, field weakening and the tables firmware stores.
+
+Steady state with R, phase-peak quantities (ψ the phase-peak flux linkage the report derives from
+the back-EMF)::
+
+    v_d = R·i_d − ω·L_q·i_q,   v_q = R·i_q + ω·(L_d·i_d + ψ),   |v| ≤ V,   |i| ≤ I
+    T = 1.5·p·(ψ·i_q + (L_d − L_q)·i_d·i_q),   P = T·ω/p
+
+MTPA at a current magnitude ``i`` (dT/dβ = 0):
+``i_d = (ψ − √(ψ² + 8·ΔL²·i²))/(4·ΔL)``, ΔL = L_q − L_d (``i_d = 0`` when ΔL = 0).
+The base speed is where the MTPA point at the current limit reaches the voltage limit (a
+quadratic in ω). Above it the largest torque lies on the voltage boundary: on its intersection
+with the current circle, or inside the circle (MTPV); it is found on the boundary parametrized
+by the voltage angle, refined by bisection (circle) and golden section (MTPV).
+The maximum speed is where the voltage limit meets the current limit at i = (−I, 0): with
+ψ/L_d > I, ω_max = √(V² − R²I²)/(ψ − L_d·I) (beyond it no current within the limit has positive
+torque: |v| grows from that point into i_q > 0). With ψ/L_d ≤ I the characteristic current lies
+inside the limit and the speed is unbounded (torque falls towards 0); ``max_speed_rpm`` is null.
+
+Examples
+--------
+>>> m = {"rs_ohm": 0.75, "ld_h": 1.05e-3, "lq_h": 1.05e-3, "pole_pairs": 4}
+>>> psi = 3.8 / (3 ** 0.5 * 2 * 3.141592653589793 * 1000 * 4 / 60)   # MathWorks BLY171D
+>>> lim = limits(m, psi, 24 / 3 ** 0.5, 1.8)
+>>> round(base_speed(lim) * 60 / (2 * 3.141592653589793) / 4)         # mcb.PMSMSpeeds: 5393
+5393
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+from ..schema.errors import InputError
+
+__all__ = ["Limits", "limits", "mtpa", "base_speed", "max_speed", "best_torque", "analyze",
+           "voltage_limit"]
+
+RPM = 60.0 / (2.0 * math.pi)
+#: Voltage-angle samples of the boundary search (each then refined to rounding).
+_SAMPLES = 360
+_GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
+
+
+class Limits(NamedTuple):
+    """The motor and its two limits, SI, phase peak."""
+    r: float
+    ld: float
+    lq: float
+    psi: float
+    p: int
+    v: float
+    i: float
+
+
+def limits(motor: dict, psi: float, v: float, i: float) -> Limits:
+    return Limits(motor["rs_ohm"], motor["ld_h"], motor["lq_h"], psi, motor["pole_pairs"], v, i)
+
+
+def voltage_limit(modulation, udc: float) -> float:
+    """Phase-peak voltage limit: SVPWM U_dc/√3, sinusoidal U_dc/2, or a number times U_dc."""
+    if modulation == "svpwm":
+        return udc / math.sqrt(3.0)
+    if modulation == "spwm":
+        return udc / 2.0
+    return float(modulation) * udc
+
+
+def torque(m: Limits, i_d: float, i_q: float) -> float:
+    return 1.5 * m.p * (m.psi * i_q + (m.ld - m.lq) * i_d * i_q)
+
+
+def volts(m: Limits, w: float, i_d: float, i_q: float) -> float:
+    return math.hypot(m.r * i_d - w * m.lq * i_q, m.r * i_q + w * (m.ld * i_d + m.psi))
+
+
+def mtpa(m: Limits, i: float) -> tuple:
+    """(i_d, i_q) of maximum torque per ampere at current magnitude ``i``."""
+    dl = m.lq - m.ld
+    if dl == 0.0:
+        return 0.0, i
+    i_d = (m.psi - math.sqrt(m.psi * m.psi + 8.0 * dl * dl * i * i)) / (4.0 * dl)
+    return i_d, math.sqrt(max(i * i - i_d * i_d, 0.0))
+
+
+def base_speed(m: Limits) -> float:
+    """Electrical rad/s where the MTPA point at the current limit meets the voltage limit; 0 when
+    the resistance alone needs more than the voltage limit at that current."""
+    i_d, i_q = mtpa(m, m.i)
+    a = (m.lq * i_q) ** 2 + (m.ld * i_d + m.psi) ** 2
+    b = 2.0 * (-(m.r * i_d) * m.lq * i_q + m.r * i_q * (m.ld * i_d + m.psi))
+    c = (m.r * m.r) * (i_d * i_d + i_q * i_q) - m.v * m.v
+    if c >= 0.0:
+        return 0.0
+    return (-b + math.sqrt(b * b - 4.0 * a * c)) / (2.0 * a)
+
+
+def max_speed(m: Limits) -> float | None:
+    """Electrical rad/s beyond which no current within the limit gives positive torque; None when
+    unbounded (characteristic current ψ/L_d within the current limit)."""
+    if m.psi / m.ld <= m.i:
+        return None
+    if m.r * m.i >= m.v:
+        return 0.0
+    return math.sqrt(m.v * m.v - (m.r * m.i) ** 2) / (m.psi - m.ld * m.i)
+
+
+def _current_of(m: Limits, w: float, phi: float) -> tuple:
+    """The current whose voltage is V·(cos φ, sin φ) at electrical speed w."""
+    vd, vq = m.v * math.cos(phi), m.v * math.sin(phi) - w * m.psi
+    det = m.r * m.r + w * w * m.ld * m.lq
+    return (m.r * vd + w * m.lq * vq) / det, (-w * m.ld * vd + m.r * vq) / det
+
+
+def best_torque(m: Limits, w: float) -> tuple:
+    """(T, i_d, i_q) of the largest torque at electrical speed ``w`` within both limits, or
+    (0, −I, 0) when no current gives positive torque."""
+    i_d, i_q = mtpa(m, m.i)
+    if volts(m, w, i_d, i_q) <= m.v:
+        return torque(m, i_d, i_q), i_d, i_q
+    best = (0.0, -m.i, 0.0)
+
+    def at(phi):
+        cd, cq = _current_of(m, w, phi)
+        ok = cd * cd + cq * cq <= m.i * m.i and cq >= 0.0
+        return ok, torque(m, cd, cq), cd, cq
+
+    step = 2.0 * math.pi / _SAMPLES
+    pts = [at(k * step) for k in range(_SAMPLES + 1)]
+    for k in range(_SAMPLES):
+        (ok0, t0, *_), (ok1, t1, *_) = pts[k], pts[k + 1]
+        if ok0 and t0 > best[0]:
+            best = pts[k][1:]
+        if ok0 != ok1:  # the current circle (or i_q = 0) crossed: bisect to it
+            lo, hi = (k * step, (k + 1) * step) if ok0 else ((k + 1) * step, k * step)
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                if at(mid)[0]:
+                    lo = mid
+                else:
+                    hi = mid
+            p = at(lo)
+            if p[0] and p[1] > best[0]:
+                best = p[1:]
+    # an interior maximum of the voltage boundary (MTPV): golden section around the best sample
+    k = max(range(1, _SAMPLES), key=lambda j: pts[j][1] if pts[j][0] else -math.inf)
+    if pts[k][0] and pts[k - 1][0] and pts[k + 1][0] and pts[k][1] >= max(pts[k - 1][1], pts[k + 1][1]):
+        a, b = (k - 1) * step, (k + 1) * step
+        for _ in range(80):
+            c1, c2 = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
+            if at(c1)[1] >= at(c2)[1]:
+                b = c2
+            else:
+                a = c1
+        p = at(0.5 * (a + b))
+        if p[0] and p[1] > best[0]:
+            best = p[1:]
+    return best
+
+
+def _interp(xs: list, ys: list, x: float) -> float:
+    if x <= xs[0]:
+        return ys[0]
+    for k in range(1, len(xs)):
+        if x <= xs[k]:
+            t = (x - xs[k - 1]) / (xs[k] - xs[k - 1]) if xs[k] > xs[k - 1] else 0.0
+            return ys[k - 1] + t * (ys[k] - ys[k - 1])
+    return ys[-1]
+
+
+def _table(quantity: str, xs: list, exact, scale: float, unit: str, dense: list) -> dict:
+    """A table of ``len(xs)`` breakpoints stored as Q15 of the current limit, and its error bound
+    (linear interpolation of the stored integers against the exact curve at ``dense``)."""
+    ys = [exact(x) for x in xs]
+    values = [max(-32768, min(32767, round(y / scale))) for y in ys]
+    stored = [v * scale for v in values]
+    err = max(abs(_interp(xs, stored, x) - exact(x)) for x in dense) if dense else 0.0
+    return {"quantity": quantity, "x": xs, "y": ys, "values": values, "format": "Q15",
+            "scale": scale, "unit": unit, "error_bound": err, "interpolation": "linear"}
+
+
+def analyze(report: dict, cfg: dict) -> dict:
+    """The report's ``fw`` section (docs/contract.md, "Output: fw").
+
+    Parameters
+    ----------
+    report : dict
+        The report so far (``input``, ``mechanical`` not needed).
+    cfg : dict
+        Normalized ``analysis.fw``.
+
+    Raises
+    ------
+    InputError
+        ``analysis.fw.modulation`` for a limit that leaves no voltage.
+    """
+    inp = report["input"]
+    mo, d = inp["motor"], inp["drive"]
+    psi = math.sqrt(2.0 / 3.0) * mo["bemf_v"] / (2.0 * math.pi * mo["rated_freq_hz"])
+    i_lim = cfg["current_limit_a"] if cfg["current_limit_a"] is not None else \
+        math.sqrt(2.0) * mo["rated_current_a"]
+    v_lim = voltage_limit(cfg["modulation"], d["udc_v"])
+    if not v_lim > 0.0:
+        raise InputError("analysis.fw.modulation", code="fw_no_voltage", value=v_lim)
+    m = limits(mo, psi, v_lim, i_lim)
+    p, n = m.p, cfg["points"]
+    wb, wmax = base_speed(m), max_speed(m)
+    to_rpm = RPM / p
+    top_rpm = cfg["speed_max_rpm"] if cfg["speed_max_rpm"] is not None else \
+        (1.2 * wmax * to_rpm if wmax is not None else 3.0 * wb * to_rpm)
+    end_rpm = top_rpm if wmax is None else min(top_rpm, wmax * to_rpm)
+    mt = []
+    for k in range(n):
+        i = m.i * k / (n - 1)
+        i_d, i_q = mtpa(m, i)
+        mt.append({"iq_a": i_q, "id_a": i_d, "torque_nm": torque(m, i_d, i_q)})
+    env = []
+    for k in range(n):
+        rpm = end_rpm * k / (n - 1)
+        w = rpm / to_rpm
+        t, i_d, i_q = best_torque(m, w)
+        env.append({"speed_rpm": rpm, "torque_nm": t, "power_w": t * w / p, "id_a": i_d,
+                    "iq_a": i_q, "v_pk": volts(m, w, i_d, i_q)})
+    npts = cfg["table_points"]
+    scale = m.i / 32768.0
+    iq_top = mtpa(m, m.i)[1]
+    iq_x = [iq_top * k / (npts - 1) for k in range(npts)]
+
+    def id_of_iq(iq):
+        # the MTPA i_d for a given i_q: i = |(i_d, i_q)| solved by bisection on the magnitude
+        lo, hi = iq, m.i
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            if mtpa(m, mid)[1] < iq:
+                lo = mid
+            else:
+                hi = mid
+        return mtpa(m, 0.5 * (lo + hi))[0]
+
+    tables = {"mtpa_id_of_iq": _table("id_a(iq_a)", iq_x, id_of_iq, scale, "A",
+                                      [iq_top * k / 400 for k in range(401)])}
+    fw_end = end_rpm
+    if fw_end > wb * to_rpm:
+        sx = [wb * to_rpm + (fw_end - wb * to_rpm) * k / (npts - 1) for k in range(npts)]
+        tables["fw_id_of_speed"] = _table(
+            "id_a(speed_rpm)", sx, lambda s: best_torque(m, s / to_rpm)[1], scale, "A",
+            [wb * to_rpm + (fw_end - wb * to_rpm) * k / 100 for k in range(101)])
+    return {"voltage_limit_v": v_lim, "current_limit_a": m.i, "psi_wb": psi,
+            "characteristic_current_a": psi / m.ld,
+            "base_speed_rpm": wb * to_rpm,
+            "max_speed_rpm": None if wmax is None else wmax * to_rpm,
+            "speed_max_rpm": top_rpm,
+            "mtpa": mt, "envelope": env, "tables": tables}

@@ -1,0 +1,121 @@
+"""Above base speed (pulab.analyses.envelope): golden vectors of the brute-force numpy oracle
+(tests/oracle/fw_oracle.py: MTPA by a dense angle scan, the envelope as the maximum over a polar
+grid of the whole current disk), MathWorks' published base speed, the stored tables against the
+exact curves, and the input errors.
+
+Regenerate the golden files with ``.venv/bin/python tests/oracle/fw_oracle.py`` (about 30 s of
+CPU: not run by the suite).
+"""
+import copy
+import json
+import math
+import pathlib
+
+import pytest
+
+import pulab
+from pulab import InputError
+from pulab.analyses import envelope
+
+GOLDEN = sorted((pathlib.Path(__file__).resolve().parents[1] / "golden" / "fw").glob("*.json"))
+
+
+def _rel(a, b):
+    return abs(a - b) / max(abs(a), abs(b), 1e-300)
+
+
+@pytest.mark.parametrize("path", GOLDEN, ids=[p.stem for p in GOLDEN])
+def test_fw_matches_the_brute_force_oracle(path):
+    case = json.loads(path.read_text(encoding="utf-8"))
+    exp, rule = case["expected"], case["compare"]
+    fw = pulab.report(case["input"])["fw"]
+    assert _rel(fw["base_speed_rpm"], exp["base_speed_rpm"]) <= rule["rel"]
+    assert _rel(fw["characteristic_current_a"], exp["characteristic_current_a"]) <= 1e-12
+    if exp["max_speed_rpm"] is None:
+        assert fw["max_speed_rpm"] is None
+    else:
+        assert _rel(fw["max_speed_rpm"], exp["max_speed_rpm"]) <= rule["max_speed_rel"]
+    # MTPA at 0, ¼ … 1 of the current limit: every fourth of 5 points is not on the 11-point grid,
+    # so the engine is asked directly at the oracle's magnitudes
+    m = case["input"]["motor"]
+    lim = envelope.limits(m, fw["psi_wb"], fw["voltage_limit_v"], fw["current_limit_a"])
+    for k, (i_d, i_q) in enumerate(zip(exp["mtpa_id_a"], exp["mtpa_iq_a"])):
+        got = envelope.mtpa(lim, fw["current_limit_a"] * k / 4)
+        assert abs(got[0] - i_d) <= 1e-9 * fw["current_limit_a"] and abs(got[1] - i_q) <= 1e-9 * fw["current_limit_a"]
+    t_max = max(exp["envelope_torque_nm"])
+    speeds = [p["speed_rpm"] for p in fw["envelope"]]
+    assert len(speeds) == len(exp["envelope_speed_rpm"])
+    for got, s, t in zip(fw["envelope"], exp["envelope_speed_rpm"], exp["envelope_torque_nm"]):
+        assert abs(got["speed_rpm"] - s) <= 1e-9 * max(s, 1.0)
+        # the grid's maximum is below the true one by at most its resolution
+        assert got["torque_nm"] >= t - 1e-12 and got["torque_nm"] - t <= rule["torque_rel"] * t_max
+        assert got["id_a"] ** 2 + got["iq_a"] ** 2 <= fw["current_limit_a"] ** 2 * (1 + 1e-12)
+        assert got["v_pk"] <= fw["voltage_limit_v"] * (1 + 1e-12)
+
+
+def test_mathworks_bly171d_base_speed():
+    # MathWorks mcb.PMSMSpeeds(BLY171D, DRV8312-C2-KIT): 5393 rpm; its d-q currents at that
+    # milestone are (0, 1.8) A at ω_e = 2259.1 rad/s (outputAll=1).
+    case = json.loads(GOLDEN[0].read_text(encoding="utf-8"))
+    fw = pulab.report(case["input"])["fw"]
+    assert round(fw["base_speed_rpm"]) == 5393
+    assert round(fw["base_speed_rpm"] * 4 * 2 * math.pi / 60, 1) == 2259.1
+
+
+def test_tables_hold_their_error_bound():
+    case = json.loads(GOLDEN[2].read_text(encoding="utf-8"))  # the interior motulator motor
+    fw = pulab.report(case["input"])["fw"]
+    t = fw["tables"]["mtpa_id_of_iq"]
+    assert len(t["values"]) == 8 and t["format"] == "Q15"
+    assert all(-32768 <= v <= 32767 and isinstance(v, int) for v in t["values"])
+    assert [v * t["scale"] for v in t["values"]] == pytest.approx(t["y"], abs=t["scale"] / 2 + 1e-15)
+    # the bound is a maximum over a dense grid: an independent denser check stays within ~it
+    lim = envelope.limits(case["input"]["motor"], fw["psi_wb"], fw["voltage_limit_v"], fw["current_limit_a"])
+    worst = 0.0
+    for k in range(2001):
+        mag = fw["current_limit_a"] * k / 2000
+        i_d, i_q = envelope.mtpa(lim, mag)
+        if i_q > t["x"][-1]:
+            break
+        j = max(1, next(j for j in range(1, len(t["x"])) if i_q <= t["x"][j] or j == len(t["x"]) - 1))
+        x0, x1 = t["x"][j - 1], t["x"][j]
+        y = t["values"][j - 1] * t["scale"] + (i_q - x0) / (x1 - x0) * (t["values"][j] - t["values"][j - 1]) * t["scale"]
+        worst = max(worst, abs(y - i_d))
+    assert worst <= t["error_bound"] * 1.01 + 1e-12 and t["error_bound"] > 0
+    fwt = fw["tables"]["fw_id_of_speed"]
+    assert fwt["x"][0] == pytest.approx(fw["base_speed_rpm"]) and fwt["values"][0] <= 0
+
+
+def test_unbounded_when_the_characteristic_current_is_inside_the_limit():
+    case = json.loads(GOLDEN[0].read_text(encoding="utf-8"))
+    inp = copy.deepcopy(case["input"])
+    inp["analysis"]["fw"] = {"current_limit_a": 6.0, "points": 5}   # ψ/L_d = 4.99 A < 6 A
+    fw = pulab.report(inp)["fw"]
+    assert fw["max_speed_rpm"] is None
+    assert fw["speed_max_rpm"] == pytest.approx(3 * fw["base_speed_rpm"])
+    assert all(p["torque_nm"] > 0 for p in fw["envelope"])
+
+
+@pytest.mark.parametrize("fw, field", [
+    ({"modulation": "sine"}, "analysis.fw.modulation"),
+    ({"modulation": 0}, "analysis.fw.modulation"),
+    ({"points": 1}, "analysis.fw.points"),
+    ({"table_points": 1.5}, "analysis.fw.table_points"),
+    ({"current_limit_a": -1}, "analysis.fw.current_limit_a"),
+    ({"speed": 1}, "analysis.fw.speed"),
+    ([], "analysis.fw"),
+])
+def test_bad_fw_inputs_name_the_field(fw, field):
+    inp = copy.deepcopy(json.loads(GOLDEN[0].read_text(encoding="utf-8"))["input"])
+    inp["analysis"]["fw"] = fw
+    with pytest.raises(InputError) as e:
+        pulab.report(inp)
+    assert e.value.field == field and e.value.message_zh
+
+
+def test_mathworks_second_milestone_is_on_the_envelope():
+    # mcb.PMSMSpeeds(…, FWCMethod="cvcp", outputAll=1): (−1.1, 1.4) A at ω_e = 2935.5 rad/s
+    m = {"rs_ohm": 0.75, "ld_h": 1.05e-3, "lq_h": 1.05e-3, "pole_pairs": 4}
+    lim = envelope.limits(m, 3.8 / (math.sqrt(3) * 2 * math.pi * 1000 * 4 / 60), 24 / math.sqrt(3), 1.8)
+    _, i_d, i_q = envelope.best_torque(lim, 2935.5)
+    assert (round(i_d, 1), round(i_q, 1)) == (-1.1, 1.4)
