@@ -26,7 +26,12 @@ from pulab.schema.fields import FIELDS, RAW_FIELDS
 CASES = 1500
 UINT16_EDGES = (0, 1, 2, 3, 10, 27, 255, 256, 4095, 4096, 32767, 32768, 48903, 65534, 65535)
 NUMBERS = [f for f in FIELDS if f.kind == "number" and f.lo is not None and f.hi is not None
-           and not f.path.startswith(("analysis.robust.", "sim.", "datasheet."))]
+           and not f.path.startswith(("analysis.", "sim.", "datasheet.", "board."))]
+#: The board's chains drawn whole (a shunt with its gain, a divider's two resistors), so that the
+#: draw reaches reports rather than "give one or the other".
+BOARD_DRAWS = {"current.shunt_ohm": (1e-6, 10.0), "current.gain": (1e-3, 1e3),
+               "bus.r_top_ohm": (1.0, 1e9), "bus.r_bottom_ohm": (1.0, 1e9),
+               "pwm.clock_hz": (1e5, 1e10), "pwm.freq_hz": (10.0, 1e6), "pwm.deadtime_s": (1e-9, 1e-4)}
 
 
 def _extreme(rng: random.Random) -> dict:
@@ -44,8 +49,17 @@ def _extreme(rng: random.Random) -> dict:
                                "bandwidth_hz": 10 ** rng.uniform(0, 5),
                                "damping": 10 ** rng.uniform(-3, 2)}
     inp["sim"] = {"current": {"duration_s": 2e-3}, "pll": {"duration_s": 2e-3}}
+    if rng.random() < 0.3:
+        board: dict = {}
+        for path, (lo, hi) in BOARD_DRAWS.items():
+            section, key = path.split(".")
+            board.setdefault(section, {})[key] = math.exp(rng.uniform(math.log(lo), math.log(hi)))
+        inp["board"] = board
     if rng.random() < 0.4:
         inp["analysis"] = {}
+        if rng.random() < 0.3:
+            inp["analysis"]["fw"] = {"points": 5, "table_points": 4,
+                                     "modulation": rng.choice(["svpwm", "spwm", 0.05, 1.0])}
     if rng.random() < 0.3:
         inp["profiles"] = {}
     return inp

@@ -262,7 +262,7 @@ TABLE = (
       label=('Divider, top resistor', '分压上电阻')),
     F('board.bus.r_bottom_ohm', 'number', 'Ω', sign='>0', lo=1e-9, hi=1e12,
       label=('Divider, bottom resistor', '分压下电阻')),
-    F('board.bus.ratio', 'number', '', sign='>0', hi=1.0,
+    F('board.bus.ratio', 'number', '', sign='>0', lo=1e-9, hi=1.0,
       label=('Divider ratio (V at the ADC / V on the bus)', '分压比（ADC 端电压 / 母线电压）')),
     F('board.bus.adc_bits', 'integer', 'bit', lo=1, hi=32, default=12,
       label=('Bus ADC resolution', '母线 ADC 位数')),
