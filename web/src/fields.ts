@@ -104,8 +104,8 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
 export function unitSiblings(f: FieldSpec): FieldSpec[] {
   return f.units === L_UNITS || f.units === R_UNITS ? ALL_FIELDS.filter((g) => g.units === f.units) : [f];
 }
-/** Set by panels, not typed into the form. */
-const NOT_IN_FORM = new Set(['analysis.bode', 'analysis.speed.response']);
+/** Set by panels, or only in the JSON (the modulation: a choice or a number), not typed into the form. */
+const NOT_IN_FORM = new Set(['analysis.bode', 'analysis.speed.response', 'analysis.fw.modulation']);
 // A field renamed or removed in the schema must not leave page settings behind (fails the build).
 for (const p of [...Object.keys(PAGE), ...NOT_IN_FORM]) {
   if (!FIELDS.some((f) => f.path === p)) throw new Error(`web/src/fields.ts: ${p} is not in the input schema`);
@@ -146,6 +146,7 @@ const LAYOUT: Omit<SectionSpec, 'fields'>[] = [
   { id: 'sim.pll', title: 'sec_sim_pll', collapsed: true },
   { id: 'analysis', title: 'sec_analysis', collapsed: true },
   { id: 'analysis.speed', title: 'sec_speed', collapsed: true },
+  { id: 'analysis.fw', title: 'sec_fw', collapsed: true },
 ];
 
 export const SECTIONS: SectionSpec[] = LAYOUT.map((s) => ({

@@ -39,6 +39,24 @@ export interface Constant {
 /** One chain of the board: numbers, `from` ('chain' or the typed value), null where not computable. */
 export type BoardRow = Record<string, number | string | null>;
 
+/** One stored table of the field-weakening output. */
+export interface FwTable { quantity: string; x: number[]; y: number[]; values: number[]; format: string; scale: number; unit: string; error_bound: number; interpolation: string }
+
+/** The report's "fw" section (pulab.analyses.envelope). */
+export interface FwReport {
+  voltage_limit_v: number;
+  current_limit_a: number;
+  psi_wb: number;
+  characteristic_current_a: number;
+  base_speed_rpm: number;
+  max_speed_rpm: number | null;
+  speed_max_rpm: number;
+  mtpa: { iq_a: number; id_a: number; torque_nm: number }[];
+  envelope: { speed_rpm: number; torque_nm: number; power_w: number; id_a: number; iq_a: number; v_pk: number }[];
+  tables: Record<string, FwTable>;
+  curves: { circle: { id_a: number[]; iq_a: number[] }; ellipses: { speed_rpm: number; id_a: number[]; iq_a: number[] }[] };
+}
+
 export interface SimCurrent {
   t: number[];
   variants: Record<string, { id: number[]; iq: number[]; ud: number[]; uq: number[]; [k: string]: number[] }>;
@@ -79,6 +97,8 @@ export interface Report {
   firmware: Record<string, FirmwareStatus>;
   review: Review;
   datasheet?: { given: Record<string, unknown>; conversions: Conversion[] };
+  /** Present when the input has `analysis.fw` (docs/contract.md, "Output: fw"). */
+  fw?: FwReport;
   /** Present when the input has a `board` section (docs/contract.md, "Output: board"). */
   board?: { current: BoardRow | null; bus: BoardRow | null; pwm: BoardRow | null };
   loop?: LoopReport;

@@ -135,7 +135,9 @@ export function simInput(inp: Input): Input {
   if (inp.analysis) {
     const speed = inp.analysis.speed;
     // The robustness view: drift, saturation and 200 tolerance samples with the defaults.
-    out.analysis = { ...inp.analysis, bode: true, robust: { samples: 200 } };
+    // The field-weakening view asks for its own section (pulab.analyses.envelope costs more).
+    const { fw: _fw, ...analysis } = inp.analysis;
+    out.analysis = { ...analysis, bode: true, robust: { samples: 200 } };
     if (speed && typeof speed === 'object' && !Array.isArray(speed)) out.analysis.speed = { ...speed, response: true };
   }
   return out;

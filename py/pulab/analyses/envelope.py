@@ -245,7 +245,19 @@ def analyze(report: dict, cfg: dict) -> dict:
         tables["fw_id_of_speed"] = _table(
             "id_a(speed_rpm)", sx, lambda s: best_torque(m, s / to_rpm)[1], scale, "A",
             [wb * to_rpm + (fw_end - wb * to_rpm) * k / 100 for k in range(101)])
-    return {"voltage_limit_v": v_lim, "current_limit_a": m.i, "psi_wb": psi,
+    # what the page draws in the i_d–i_q plane: the current limit and the voltage limit at
+    # three speeds (base, and two above it), each as the currents whose |v| is exactly V
+    marks = [wb, 1.5 * wb, 2.0 * wb] if wmax is None else [wb, 0.5 * (wb + wmax), wmax]
+    curves = {"circle": {"id_a": [m.i * math.cos(math.pi * k / 90) for k in range(181)],
+                         "iq_a": [m.i * math.sin(math.pi * k / 90) for k in range(181)]},
+              "ellipses": []}
+    for w in marks:
+        if w <= 0.0:
+            continue
+        pts = [_current_of(m, w, 2.0 * math.pi * k / 180) for k in range(181)]
+        curves["ellipses"].append({"speed_rpm": w * to_rpm, "id_a": [x[0] for x in pts],
+                                   "iq_a": [x[1] for x in pts]})
+    return {"voltage_limit_v": v_lim, "current_limit_a": m.i, "psi_wb": psi, "curves": curves,
             "characteristic_current_a": psi / m.ld,
             "base_speed_rpm": wb * to_rpm,
             "max_speed_rpm": None if wmax is None else wmax * to_rpm,

@@ -18,6 +18,7 @@ import { provePanel } from './prove';
 import { batchPanel } from './batch';
 import { vendorsPanel } from './vendors';
 import { boardPanel } from './board';
+import { fwPanel } from './fw';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -38,6 +39,7 @@ export const PANELS: Panel[] = [
   batchPanel,
   vendorsPanel,
   boardPanel,
+  fwPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);

@@ -1,0 +1,52 @@
+// Above base speed: the view's numbers equal CPython pulab for the page's motor and the form's
+// options, a bad option is shown, and the view is looked at in zh and en at 390/900/1366 px.
+import { join } from 'node:path';
+
+export default async function fw({ check, assert, newPage, subSrv, ready, waitValue, cpython, compareShown, SHOTS }) {
+  // MathWorks' BLY171D on a 24 V DRV8312 kit: base speed 5393 rpm (mcb.PMSMSpeeds)
+  const bly = { motor: { rated_voltage_v: 24, rated_current_a: 1.8 / Math.SQRT2, rated_freq_hz: 4000 * 4 / 60,
+    rs_ohm: 0.75, ld_h: 1.05e-3, lq_h: 1.05e-3, bemf_v: 3.8 * 4 / Math.SQRT2, pole_pairs: 4 }, drive: { udc_v: 24, ts_s: 5e-5 } };
+  const page = await newPage();
+  const open = async () => {
+    await page.click('nav.tabs a[data-view="loops"]');
+    await page.$eval('#panel-fw', (e) => e.scrollIntoView());
+  };
+
+  await check('fw: base and maximum speed equal CPython pulab; 5393 rpm for the BLY171D', async () => {
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(bly))}`);
+    await ready(page);
+    await open();
+    await page.waitForSelector('#panel-fw [data-key="fw.base_speed_rpm"][data-value]', { timeout: 60_000 });
+    const want = cpython({ ...bly, analysis: { fw: {} } });
+    const n = await compareShown(page, want, '#panel-fw');
+    assert(n >= 6, `only ${n} numbers compared`);
+    assert(Math.round(want.fw.base_speed_rpm) === 5393, 'MathWorks base speed');
+    await page.waitForSelector('#panel-fw [data-keep="fw-plane"] .main-svg', { timeout: 60_000 });
+  });
+
+  await check('fw: a current limit typed in the form recomputes; a bad one is named', async () => {
+    const box = 'input[name="analysis.fw.current_limit_a"]';
+    await page.$eval(box, (e) => e.closest('details')?.setAttribute('open', ''));
+    await page.fill(box, '6');
+    const want = cpython({ ...bly, analysis: { fw: { current_limit_a: 6 } } });
+    assert(want.fw.max_speed_rpm === null, 'ψ/L_d = 4.99 A inside a 6 A limit: unbounded');
+    await waitValue(page, 'fw.base_speed_rpm', want.fw.base_speed_rpm, 1e-12, 60_000);
+    await page.waitForFunction(() => document.querySelector('[data-key="fw.max_speed_rpm"]')?.getAttribute('data-value') === 'null');
+    await page.fill(box, '');
+  });
+
+  await check('fw: screenshots at 390/900/1366 px, zh and en', async () => {
+    for (const lang of ['en', 'zh']) {
+      for (const w of [390, 900, 1366]) {
+        await page.setViewportSize({ width: w, height: 900 });
+        await page.click(`button[data-lang="${lang}"]`);
+        await open();
+        await page.waitForSelector('#panel-fw [data-keep="fw-speed"] .main-svg', { timeout: 60_000 });
+        const overflow = await page.$eval('#panel-fw', (e) => e.scrollWidth - e.clientWidth);
+        assert(overflow <= 1, `fw panel overflows by ${overflow}px at ${w} (${lang})`);
+        await (await page.$('#panel-fw')).screenshot({ path: join(SHOTS, `fw-${w}-${lang}.png`) });
+      }
+    }
+  });
+  await page.close();
+}

@@ -1,0 +1,87 @@
+// Above base speed: base and maximum speed, the current plane and the torque–speed envelope, and
+// the tables firmware stores — the report's "fw" section for the page's motor and the form's
+// analysis.fw options, asked of pulab by this panel (it costs more than a report, so it has its
+// own request and never delays the numbers of the others).
+import { h, num, patch, table } from '../dom';
+import { errText, t } from '../i18n';
+import { effectiveInput } from '../fields';
+import { reportInput, type Input } from '../state';
+import { keptFigure } from '../figures/figure';
+import { renderFwPlane, renderFwSpeed } from '../figures/fw';
+import type { FwReport } from '../report-types';
+import type { Panel, PanelContext } from './panel';
+
+/** The input pulab computes the "fw" section from: the plain report input and analysis.fw. */
+export function fwInput(inp: Input): Input {
+  const eff = effectiveInput(inp);
+  const fw = inp.analysis?.fw;
+  return { ...reportInput(eff), analysis: { fw: fw && typeof fw === 'object' && !Array.isArray(fw) ? fw : {} } };
+}
+
+class FwView {
+  key = '';
+  fw: FwReport | null = null;
+  error: string | null = null;
+  pending = false;
+
+  ask(el: HTMLElement, ctx: PanelContext): void {
+    if (!ctx.client) return;
+    const req = fwInput(ctx.input);
+    const key = JSON.stringify(req);
+    if (key === this.key) return;
+    this.key = key;
+    this.pending = true;
+    void ctx.client.call('report', req, 'fw').then(({ result }) => {
+      if (key !== this.key) return;
+      this.pending = false;
+      if (result.ok) {
+        this.fw = result.report.fw ?? null;
+        this.error = null;
+      } else {
+        this.error = `${result.field}: ${errText(result)}`;
+      }
+      fwPanel.render(el, ctx);
+    }, () => undefined);
+  }
+}
+
+const views = new WeakMap<HTMLElement, FwView>();
+
+function cArray(name: string, values: number[]): string {
+  return `static const int16_t ${name}[${values.length}] = { ${values.join(', ')} };`;
+}
+
+export const fwPanel: Panel = {
+  id: 'fw',
+  title: 'p_fw',
+  needsPython: true,
+  render(el, ctx) {
+    let v = views.get(el);
+    if (!v) views.set(el, (v = new FwView()));
+    v.ask(el, ctx);
+    const fw = v.fw;
+    patch(el,
+      h('p', { class: 'note' }, t('fwIntro')),
+      v.error ? h('p', { class: 'sim-error', role: 'alert' }, v.error) : null,
+      fw ? table([t('quantity'), t('value')], [
+        [t('fwBase'), num('fw.base_speed_rpm', fw.base_speed_rpm, { unit: 'rpm' })],
+        [t('fwMax'), fw.max_speed_rpm === null ? h('span', { 'data-key': 'fw.max_speed_rpm', 'data-value': 'null' }, t('fwUnbounded')) : num('fw.max_speed_rpm', fw.max_speed_rpm, { unit: 'rpm' })],
+        [t('fwChar'), num('fw.characteristic_current_a', fw.characteristic_current_a, { unit: 'A' })],
+        [t('fwCurrentLimit'), num('fw.current_limit_a', fw.current_limit_a, { unit: 'A' })],
+        [t('fwVoltageLimit'), num('fw.voltage_limit_v', fw.voltage_limit_v, { unit: 'V' })],
+        [t('fwPsi'), num('fw.psi_wb', fw.psi_wb, { unit: 'Wb' })],
+      ], 'fw-summary') : h('div', { class: 'plot-placeholder' }, v.pending ? t('fwComputing') : t('fwWaiting')),
+      h('h3', {}, t('fwPlane')),
+      h('div', { class: 'figure', 'data-keep': 'fw-plane' }),
+      h('h3', {}, t('fwSpeedCurves')),
+      h('div', { class: 'figure', 'data-keep': 'fw-speed' }),
+      h('h3', {}, t('fwTables')),
+      ...(fw ? Object.entries(fw.tables).map(([name, tb]) => h('div', { class: 'fw-table' },
+        h('p', {}, h('code', {}, name), ` — ${tb.quantity}, ${tb.format} (`, num(`fw.tables.${name}.scale`, tb.scale, { unit: `${tb.unit}/LSB` }),
+          `), ${t('fwErrorBound')} `, num(`fw.tables.${name}.error_bound`, tb.error_bound, { unit: tb.unit })),
+        h('pre', { class: 'c-array' }, cArray(name, tb.values)))) : []),
+    );
+    keptFigure(el, 'fw-plane', fw, (fig) => renderFwPlane(fig, fw!));
+    keptFigure(el, 'fw-speed', fw, (fig) => renderFwSpeed(fig, fw!));
+  },
+};
