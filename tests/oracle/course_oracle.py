@@ -53,6 +53,36 @@ def fb_max(inp: dict, limit_v: float) -> float:
     return 0.0 if f < m["rated_freq_hz"] else min(f, 655.35)
 
 
+def fw_answers(inp: dict) -> dict:
+    """Above base speed at the current limit √2·I_n and V = U_dc/√3: the MTPA point by a dense
+    scan of the current angle, the base speed by bisection on |v| (not pulab's closed forms)."""
+    m, udc = inp["motor"], inp["drive"]["udc_v"]
+    psi = math.sqrt(2 / 3) * m["bemf_v"] / (2 * math.pi * m["rated_freq_hz"])
+    r, ld, lq, p = m["rs_ohm"], m["ld_h"], m["lq_h"], m["pole_pairs"]
+    i, v = math.sqrt(2) * m["rated_current_a"], udc / math.sqrt(3)
+    def t(b):
+        return 1.5 * p * (psi * i * math.sin(b) + (ld - lq) * i * math.cos(b) * i * math.sin(b))
+    h = math.pi / 20000
+    best = max((t(h * k), h * k) for k in range(20001))[1]
+    a, b = max(0.0, best - h), min(math.pi, best + h)
+    for _ in range(100):  # ternary search on the unimodal torque around the scan's best angle
+        m1, m2 = a + (b - a) / 3, b - (b - a) / 3
+        a, b = (m1, b) if t(m1) < t(m2) else (a, m2)
+    best = (a + b) / 2
+    i_d, i_q = i * math.cos(best), i * math.sin(best)
+
+    def vmag(w):
+        return math.hypot(r * i_d - w * lq * i_q, r * i_q + w * (ld * i_d + psi))
+    lo, hi = 0.0, 1.0
+    while vmag(hi) < v:
+        hi *= 2
+    for _ in range(200):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if vmag(mid) < v else (lo, mid)
+    return {"fw-char": psi / ld, "fw-unbounded": "yes" if psi / ld <= i else "no",
+            "fw-base": lo * 60 / (2 * math.pi * p)}
+
+
 def expected(inp: dict) -> dict:
     """Exercise id → expected answer for one motor."""
     P = parse(inp)
@@ -106,6 +136,7 @@ def expected(inp: dict) -> dict:
         "pll-int-gain": L["integrator_gain"],
         "pll-naive-kts": g_naive * L["kp"] * ts,
         "pll-naive-locks": "yes" if naive["stable"] else "no",
+        **fw_answers(inp),
         # TI's BOOSTXL-DRV8323RS: 7 mΩ × 10 on a bipolar 12-bit ADC at 3.3 V
         "board-counts": 4096 * 0.007 * 10 / 3.3,
         "board-pu": 3.3 / (0.007 * 10) / 4096 / B["I_b"],

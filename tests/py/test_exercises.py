@@ -18,9 +18,12 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "oracle"))
 import course_oracle  # noqa: E402
 
 #: Floats: the oracle and pulab compute the same formulas in another order; the base frequency of
-#: pi-choose-fb is pulab's bisection on its review against the oracle's closed form.
+#: pi-choose-fb is pulab's bisection on its review against the oracle's closed form; the base
+#: speed of fw-base is pulab's closed-form MTPA against the oracle's numeric maximum of the torque,
+#: whose angle a flat maximum fixes only to about √ε (1e-8 relative).
 REL = 1e-9
 REL_FB = 1e-6
+ROUGH = {"pi-choose-fb", "fw-base"}
 
 
 @pytest.mark.parametrize("n", sorted(course_oracle.TRAINEES))
@@ -38,7 +41,7 @@ def test_answers_match_oracle(n):
     for k, w in want.items():
         g = got[k]
         if isinstance(w, float):
-            rel = REL_FB if k == "pi-choose-fb" else REL
+            rel = REL_FB if k in ROUGH else REL
             assert isinstance(g, float) and math.isclose(g, w, rel_tol=rel, abs_tol=1e-12), (k, g, w)
         else:
             assert type(g) is type(w) and g == w, (k, g, w)

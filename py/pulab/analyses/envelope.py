@@ -37,8 +37,10 @@ __all__ = ["Limits", "limits", "mtpa", "base_speed", "max_speed", "best_torque",
            "voltage_limit"]
 
 RPM = 60.0 / (2.0 * math.pi)
-#: Voltage-angle samples of the boundary search (each then refined to rounding).
-_SAMPLES = 360
+#: Voltage-angle samples of the boundary search (each then refined to rounding); four times
+#: more, twice, when the feasible arc slipped between them (it shrinks to a point at the
+#: maximum speed).
+_SAMPLES = 120
 _GOLDEN = (math.sqrt(5.0) - 1.0) / 2.0
 
 
@@ -118,6 +120,14 @@ def best_torque(m: Limits, w: float) -> tuple:
     i_d, i_q = mtpa(m, m.i)
     if volts(m, w, i_d, i_q) <= m.v:
         return torque(m, i_d, i_q), i_d, i_q
+    for samples in (_SAMPLES, 4 * _SAMPLES, 16 * _SAMPLES):
+        best = _on_the_voltage_limit(m, w, samples)
+        if best[0] > 0.0:
+            return best
+    return best
+
+
+def _on_the_voltage_limit(m: Limits, w: float, samples: int) -> tuple:
     best = (0.0, -m.i, 0.0)
 
     def at(phi):
@@ -125,15 +135,15 @@ def best_torque(m: Limits, w: float) -> tuple:
         ok = cd * cd + cq * cq <= m.i * m.i and cq >= 0.0
         return ok, torque(m, cd, cq), cd, cq
 
-    step = 2.0 * math.pi / _SAMPLES
-    pts = [at(k * step) for k in range(_SAMPLES + 1)]
-    for k in range(_SAMPLES):
+    step = 2.0 * math.pi / samples
+    pts = [at(k * step) for k in range(samples + 1)]
+    for k in range(samples):
         (ok0, t0, *_), (ok1, t1, *_) = pts[k], pts[k + 1]
         if ok0 and t0 > best[0]:
             best = pts[k][1:]
         if ok0 != ok1:  # the current circle (or i_q = 0) crossed: bisect to it
             lo, hi = (k * step, (k + 1) * step) if ok0 else ((k + 1) * step, k * step)
-            for _ in range(60):
+            for _ in range(52):
                 mid = 0.5 * (lo + hi)
                 if at(mid)[0]:
                     lo = mid
@@ -143,10 +153,10 @@ def best_torque(m: Limits, w: float) -> tuple:
             if p[0] and p[1] > best[0]:
                 best = p[1:]
     # an interior maximum of the voltage boundary (MTPV): golden section around the best sample
-    k = max(range(1, _SAMPLES), key=lambda j: pts[j][1] if pts[j][0] else -math.inf)
+    k = max(range(1, samples), key=lambda j: pts[j][1] if pts[j][0] else -math.inf)
     if pts[k][0] and pts[k - 1][0] and pts[k + 1][0] and pts[k][1] >= max(pts[k - 1][1], pts[k + 1][1]):
         a, b = (k - 1) * step, (k + 1) * step
-        for _ in range(80):
+        for _ in range(60):
             c1, c2 = b - _GOLDEN * (b - a), a + _GOLDEN * (b - a)
             if at(c1)[1] >= at(c2)[1]:
                 b = c2

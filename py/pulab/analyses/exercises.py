@@ -47,6 +47,7 @@ class _Ctx:
         self.r = report(inp)
         self._loop = None
         self._trace = None
+        self.fw = None
 
     def loop(self) -> dict:
         if self._loop is None:
@@ -161,6 +162,15 @@ def _board_gain(c: _Ctx) -> float:
     return EXAMPLE_BOARD["current"]["gain"] * 0.8 * _board(c)["max_a"] / peak
 
 
+def _fw(c: _Ctx) -> dict:
+    """The trainee motor's field-weakening section at the defaults (current limit √2·I_n, SVPWM),
+    computed once per context (three exercises read it)."""
+    if c.fw is None:
+        from ..report import report
+        c.fw = report({**c.input, "analysis": {"fw": {"points": 2, "table_points": 2}}})["fw"]
+    return c.fw
+
+
 EXERCISES: tuple[Exercise, ...] = (
     # day one, step 1: per-unit intuition
     Exercise("warmup-current", "00-warm-up", "real", lambda c: 2.0 / c.r["base"]["I_b"], 0.01),
@@ -203,6 +213,11 @@ EXERCISES: tuple[Exercise, ...] = (
              lambda c: c.r["pll"]["integrator_gain"] * c.r["pll"]["kp"] * c.r["input"]["drive"]["ts_s"], 0.01),
     Exercise("pll-naive-locks", "03-pll", "choice",
              lambda c: "yes" if c.loop()["pll"]["naive"]["stable"] else "no", choices=("yes", "no")),
+    # reference: above base speed
+    Exercise("fw-char", "08-loop-design", "real", lambda c: _fw(c)["characteristic_current_a"], 0.01, "A"),
+    Exercise("fw-unbounded", "08-loop-design", "choice",
+             lambda c: "yes" if _fw(c)["max_speed_rpm"] is None else "no", choices=("yes", "no")),
+    Exercise("fw-base", "08-loop-design", "real", lambda c: _fw(c)["base_speed_rpm"], 0.01, "rpm"),
     # reference: the board sets the scales
     Exercise("board-counts", "09-vendors", "real", lambda c: _board(c)["counts_per_a"], 0.01,
              "counts/A"),
