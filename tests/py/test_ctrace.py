@@ -13,7 +13,7 @@ import sys
 import pytest
 
 from conftest import ROOT, chinese
-from pulab.api import trace_json
+from pulab.api import call_json
 from pulab.ctrace import TraceError, trace
 from pulab.ctrace.examples import EXAMPLES
 from pulab.schema.errors import InputError
@@ -201,12 +201,12 @@ def test_pathological_code_never_crashes(code):
         assert chinese(e.message_zh)
 
 
-def test_api_trace_json_error_reply_has_position_and_inputs():
-    r = json.loads(trace_json(json.dumps({"code": "Uint16 v;\nlong x = v / 0;",
+def test_api_trace_error_reply_has_position_and_inputs():
+    r = json.loads(call_json("trace", json.dumps({"code": "Uint16 v;\nlong x = v / 0;",
                                           "set": {"v": 1}})))
     assert r["ok"] is False and (r["line"], r["column"]) == (2, 14)
     assert r["field"] == "code" and r["inputs"] == ["v"] and "除以零" in r["message_zh"]
-    ok = json.loads(trace_json(json.dumps({"code": "Uint16 v; long x = v * 10;",
+    ok = json.loads(call_json("trace", json.dumps({"code": "Uint16 v; long x = v * 10;",
                                            "target": "arm", "set": {"v": 6554}})))
     assert ok["ok"] and ok["vars"]["x"] == {"type": "long", "c_type": "long", "bits": 32,
                                             "signed": True, "value": 65540,
@@ -270,7 +270,7 @@ def test_fuzzed_api_requests_give_only_error_replies():
         if rng.random() < 0.3:
             req["set"] = {rng.choice(["v", "a", "x"]): rng.choice(values)}
         text = json.dumps(req) if rng.random() < 0.9 else rng.choice(["", "[", "nul", "1"])
-        r = json.loads(trace_json(text))
+        r = json.loads(call_json("trace", text))
         assert r["ok"] is True or (r["field"] and chinese(r["message_zh"])), (req, r)
 
 

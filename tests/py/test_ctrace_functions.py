@@ -21,7 +21,7 @@ import pytest
 from conftest import ROOT, chinese
 from ctrace_compilers import Unit, require, run_unit
 from ctrace_gen import random_vector
-from pulab.api import trace_json
+from pulab.api import call_json
 from pulab.ctrace import TraceError, compile_code, run_checked, trace
 from pulab.schema.errors import InputError
 
@@ -333,10 +333,10 @@ def test_errors_name_the_construct(code, entry, sets, field, text):
 
 
 def test_api_offers_the_functions_and_takes_entry():
-    r = json.loads(trace_json(json.dumps({"code": PI})))
+    r = json.loads(call_json("trace", json.dumps({"code": PI})))
     assert r["ok"] is False and r["field"] == "entry" and r["functions"] == ["clamp32",
                                                                              "pi_step"]
-    r = json.loads(trace_json(json.dumps({"code": PARK, "entry": "park", "target": "arm",
+    r = json.loads(call_json("trace", json.dumps({"code": PARK, "entry": "park", "target": "arm",
                                           "set": {"ia": 1, "ib": 2}, "zero_unset": True})))
     assert r["ok"] and r["entry"] == "park" and r["vars"]["dq.d"]["value"] == 0
 
@@ -688,7 +688,7 @@ def test_an_entry_returning_a_pointer_names_its_object(target, capsys):
     for vec in vectors:
         given = {"x": vec["x"], "handle.level": vec["t.level"],
                  "handle.pLimit": "&limits[1]"}
-        r = trace_json(json.dumps({"code": TRIM, "target": target, "entry": "TRIM_pick",
+        r = call_json("trace", json.dumps({"code": TRIM, "target": target, "entry": "TRIM_pick",
                                    "set": given}))
         ret = json.loads(r)["vars"]["return"]
         assert ret["c_type"] == "pointer" and ret["type"] == "int32_t *"
@@ -763,10 +763,10 @@ def test_an_error_reply_offers_the_inputs_read_through_the_pointers_given():
     through a pointer input still names that field (a bad pointer value adds nothing)."""
     req = {"code": TRIM, "target": "arm", "entry": "TRIM_run",
            "set": {"x": 1, "handle->avgHandle": "&handle.avg"}}
-    r = json.loads(trace_json(json.dumps(req)))
+    r = json.loads(call_json("trace", json.dumps(req)))
     assert r["ok"] is False and r["field"] == "set.handle.bias"
     assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "handle.avg.y1",
                            "handle.avg.k", "*handle.pLimit"]
     req["set"]["handle->avgHandle"] = "handle.avg"
-    r = json.loads(trace_json(json.dumps(req)))
+    r = json.loads(call_json("trace", json.dumps(req)))
     assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "*handle.pLimit"]

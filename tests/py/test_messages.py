@@ -8,7 +8,7 @@ import pytest
 
 from conftest import ROOT, chinese
 from pulab import report
-from pulab.api import qcalc_json, run_json
+from pulab.api import call_json
 from pulab.schema.catalog import render
 
 ERRORS = json.loads((ROOT / "tests/golden/errors.json").read_text())
@@ -17,7 +17,7 @@ GOLDEN = sorted((ROOT / "tests/golden").glob("*.json"))
 
 @pytest.mark.parametrize("case", ERRORS, ids=lambda c: c["field"])
 def test_every_golden_error_has_chinese(case):
-    out = json.loads(run_json(json.dumps(case["input"])))
+    out = json.loads(call_json("report", json.dumps(case["input"])))
     assert out["ok"] is False and chinese(out["message_zh"]), out
     assert out["message"] == render(out["code"], out["params"], "en")
     assert out["message_zh"] == render(out["code"], out["params"], "zh")
@@ -40,5 +40,5 @@ def test_every_golden_warning_has_chinese(path):
     {"format": "Q0.15", "value": 0.1, "rounding": "up"}, {"format": "Q0.15", "raw": 1.5},
 ])
 def test_qcalc_errors_have_chinese(req):
-    out = json.loads(qcalc_json(json.dumps(req)))
+    out = json.loads(call_json("qcalc", json.dumps(req)))
     assert out["ok"] is False and chinese(out["message_zh"]) and out["code"] != "text", out
