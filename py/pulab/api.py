@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import fields, is_dataclass
 
 from .schema.errors import InputError
 from .schema.validate import key_path, shown
@@ -54,10 +55,11 @@ __all__ = ["KINDS", "call_json", "call_json_steps"]
 def _fail(e: InputError) -> str:
     reply = {"ok": False, "field": e.field, "message": e.message, "message_zh": e.message_zh,
              "code": e.code, "params": _strict(e.params)}
-    # The tracer's errors say where in the code, and which inputs the code has when it compiled.
-    for key in ("line", "column", "inputs", "functions", "macros"):
-        if hasattr(e, key):
-            reply[key] = getattr(e, key)
+    # An error that declares fields (the tracer's: where in the code, what the code offers
+    # instead) carries those that are set; testing for the class would import the tracer.
+    if is_dataclass(e):
+        reply.update((f.name, getattr(e, f.name)) for f in fields(e)
+                     if getattr(e, f.name) is not None)
     return json.dumps(reply, allow_nan=False)
 
 
@@ -160,30 +162,10 @@ def _trace_request(req, keys: tuple) -> tuple:
 
 
 def _trace(req) -> dict:
-    from .ctrace import TraceError, compile_code, trace_checked
-    from .ctrace.macro_entry import entry_macros
-    from .ctrace.parser import parse as parse_c
-    from .ctrace.tracing import inputs_for
+    from .ctrace import trace
     code, defines, sets, zero_unset = _trace_request(req, _TRACE_KEYS)
-    try:
-        checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
-                               req.get("entry") or None)
-    except InputError as e:
-        if isinstance(code, str) and (e.field in ("entry", "set") or (
-                isinstance(e, TraceError) and e.field.startswith("set."))):
-            try:  # the code parses: offer its functions (and macros) so the user can pick one
-                program = parse_c(code)
-                e.functions, e.macros = list(program.functions), entry_macros(program)
-            except InputError:
-                pass
-        raise
-    try:
-        reply = trace_checked(checked, sets, req.get("global_q"), zero_unset)
-    except InputError as e:
-        e.inputs = inputs_for(checked, sets if isinstance(sets, dict) else {})
-        e.functions = [f for f in checked.functions if f not in checked.program.macros]
-        e.macros = entry_macros(checked.program)
-        raise
+    reply = trace(code, req.get("target", "c28x"), sets, req.get("global_q"), defines,
+                  req.get("entry") or None, zero_unset)
     reply.pop("ok", None)
     return reply
 

@@ -327,9 +327,13 @@ def test_errors_name_the_construct(code, entry, sets, field, text):
     with pytest.raises(InputError) as e:
         trace(code, "arm", sets, entry=entry, zero_unset=True)
     assert e.value.field == field and text in e.value.message, e.value.message
-    assert chinese(e.value.message_zh)
-    if isinstance(e.value, TraceError):
+    assert chinese(e.value.message_zh) and isinstance(e.value, TraceError)
+    if field == "code":  # the code at fault: the error says where
         assert e.value.line >= 1 and e.value.column >= 1
+    elif field == "entry":  # the code's functions come with it, to choose one
+        assert e.value.line is None and e.value.functions == ["clamp32", "pi_step"]
+    else:  # a bad input value: the code compiled, its inputs come with it
+        assert e.value.line is None and e.value.inputs == ["x"]
 
 
 def test_api_offers_the_functions_and_takes_entry():

@@ -364,12 +364,6 @@ def _unknown_type(tok: Token) -> TraceError:
     return TraceError(tok.line, tok.column, code="trace_unknown_type", name=tok.text)
 
 
-def _fail(tok: Token, message: str | None = None, code: str | None = None,
-          **params) -> TraceError:
-    """The error at ``tok``: a catalog ``code`` with ``params`` (or, still, free text)."""
-    return TraceError(tok.line, tok.column, message, code=code, **params)
-
-
 def _got(tok: Token):
     """What was found instead, as a message parameter (the end of the code in words)."""
     return {"code": "trace_end_of_code", "params": {}} if tok.kind == "end" else repr(tok.text)
@@ -378,16 +372,16 @@ def _got(tok: Token):
 def _note(tok: Token) -> QNote:
     m = _NOTE.match(tok.text)
     if m is None:
-        raise _fail(tok, code="trace_annotation_syntax")
+        raise TraceError.at(tok, code="trace_annotation_syntax")
     if m["q"] == "auto":  # the code proof proposes the Q (pulab.ctrace.prove)
         return QNote(m["name"], None, None, "", tok.line, tok.column)
     q = m["q"][1:]
     n = int(q.split(".")[1]) if "." in q else int(q)
     if n > 63:
-        raise _fail(tok, code="trace_q_bits", n=n)
+        raise TraceError.at(tok, code="trace_q_bits", n=n)
     base = float(m["base"]) if m["base"] is not None else None
     if base is not None and not (base == base and abs(base) != float("inf")):
-        raise _fail(tok, code="trace_base_finite")
+        raise TraceError.at(tok, code="trace_base_finite")
     return QNote(m["name"], n, base, m["unit"] or "", tok.line, tok.column)
 
 
@@ -409,17 +403,17 @@ def _int_constant(tok: Token) -> tuple:
     text = tok.text
     m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)([A-Za-z_0-9]*)", text)
     if m is None or "." in text:
-        raise _fail(tok, code="trace_float_constant", text=text)
+        raise TraceError.at(tok, code="trace_float_constant", text=text)
     digits, suffix = m[1], m[2]
     if not _SUFFIX.fullmatch(suffix) or "lL" in suffix or "Ll" in suffix:
-        raise _fail(tok, code="trace_int_suffix", text=text, suffix=repr(suffix))
+        raise TraceError.at(tok, code="trace_int_suffix", text=text, suffix=repr(suffix))
     if digits[:2] in ("0x", "0X"):
         value, decimal = int(digits[2:], 16), False
     elif digits[:2] in ("0b", "0B"):
         value, decimal = int(digits[2:], 2), False
     elif len(digits) > 1 and digits[0] == "0":
         if not re.fullmatch(r"[0-7]+", digits):
-            raise _fail(tok, code="trace_octal", text=text)
+            raise TraceError.at(tok, code="trace_octal", text=text)
         value, decimal = int(digits, 8), False
     else:
         value, decimal = int(digits), True
@@ -478,16 +472,16 @@ class _Parser:
         if tok.kind == "op" and tok.text == text:
             return self.take()
         if where is None:
-            raise _fail(tok, code="trace_expected_bare", token=text, got=_got(tok))
-        raise _fail(tok, code="trace_expected", token=text, got=_got(tok),
-                    where={"code": f"trace_where_{where}", "params": params})
+            raise TraceError.at(tok, code="trace_expected_bare", token=text, got=_got(tok))
+        raise TraceError.at(tok, code="trace_expected", token=text, got=_got(tok),
+                            where={"code": f"trace_where_{where}", "params": params})
 
     def deeper(self) -> None:
         """One more level of recursion: bounds the parser's and the evaluator's stacks."""
         self.depth += 1
         self.height += 1
         if self.depth > MAX_DEPTH:
-            raise _fail(self.peek(), code="trace_nested", limit=MAX_DEPTH)
+            raise TraceError.at(self.peek(), code="trace_nested", limit=MAX_DEPTH)
 
     def shallower(self) -> None:
         self.depth -= 1
@@ -522,7 +516,7 @@ class _Parser:
         while level:
             tok = self.take()
             if tok.kind == "end":
-                raise _fail(open_tok, code="trace_paren_open")
+                raise TraceError.at(open_tok, code="trace_paren_open")
             level += (tok.text == "(") - (tok.text == ")")
 
     def specifiers(self) -> tuple:
@@ -543,7 +537,7 @@ class _Parser:
         if tok.kind == "name" and tok.text in self.type_names and \
                 tok.text not in BASE_TYPE_WORDS:
             if tok.text in self.floating:
-                raise _fail(tok, **self.floating_error(tok.text))
+                raise TraceError.at(tok, **self.floating_error(tok.text))
             self.take()
             static = self.qualifiers() or static
             return self.aliases.get(tok.text, tok.text), tok.text, static
@@ -557,16 +551,16 @@ class _Parser:
                 words.append(w)
         if not words:
             if tok.kind == "name" and tok.text in _FLOATING:
-                raise _fail(tok, code="trace_not_integer", word=tok.text)
+                raise TraceError.at(tok, code="trace_not_integer", word=tok.text)
             if tok.kind == "name":
                 raise _unknown_type(tok)
-            raise _fail(first, code="trace_expected_type")
+            raise TraceError.at(first, code="trace_expected_type")
         sign = [w for w in words if w in ("signed", "unsigned")]
         longs = words.count("long")
         kinds = [w for w in words if w in ("char", "short", "int")]
         if len(sign) > 1 or longs > 2 or len(kinds) > 1 or \
                 (kinds and kinds[0] != "int" and longs) or (words.count("int") > 1):
-            raise _fail(first, code="trace_not_c_type", words=" ".join(words))
+            raise TraceError.at(first, code="trace_not_c_type", words=" ".join(words))
         base = "long long" if longs == 2 else "long" if longs == 1 else \
             (kinds[0] if kinds else "int")
         if sign == ["unsigned"]:
@@ -586,43 +580,43 @@ class _Parser:
             desc = Ptr(desc)
             self.qualifiers()
         if isinstance(desc, StructDef) or desc == "void":
-            raise _fail(first, code="trace_cast_struct_void")
+            raise TraceError.at(first, code="trace_cast_struct_void")
         return desc
 
     def tagged(self):
         """``struct [tag] [{ fields }]`` or ``enum [tag] [{ constants }]``."""
         kw = self.take()
         if kw.text == "union":
-            raise _fail(kw, code="trace_not_supported", word="union")
+            raise TraceError.at(kw, code="trace_not_supported", word="union")
         tag = self.take() if self.peek().kind == "name" else None
         if kw.text == "enum":
             if self.is_op("{"):
                 self.enumerators()
             return "int"
         if tag is None and not self.is_op("{"):
-            raise _fail(kw, code="trace_struct_tag")
+            raise TraceError.at(kw, code="trace_struct_tag")
         key = tag.text if tag is not None else f"<anonymous at {kw.line}:{kw.column}>"
         sdef = self.structs.get(key)
         if sdef is None:
             sdef = self.structs[key] = StructDef(key, kw.line, kw.column)
         if self.is_op("{"):
             if sdef.fields is not None:
-                raise _fail(kw, code="trace_struct_redefined", name=key,
-                            at=f"{sdef.line}:{sdef.column}")
+                raise TraceError.at(kw, code="trace_struct_redefined", name=key,
+                                    at=f"{sdef.line}:{sdef.column}")
             open_tok = self.take()
             fields: list = []
             names: set = set()
             while not self.is_op("}"):
                 if self.peek().kind == "end":
-                    raise _fail(open_tok, code="trace_brace_open",
-                                at=f"{open_tok.line}:{open_tok.column}")
+                    raise TraceError.at(open_tok, code="trace_brace_open",
+                                        at=f"{open_tok.line}:{open_tok.column}")
                 desc, spelling = self.field_specifiers()
                 while True:
                     name, d, at = self.declarator(desc)
                     if self.is_op(":"):
-                        raise _fail(self.peek(), code="trace_bitfield")
+                        raise TraceError.at(self.peek(), code="trace_bitfield")
                     if name in names:
-                        raise _fail(at, code="trace_field_twice", name=name, struct=key)
+                        raise TraceError.at(at, code="trace_field_twice", name=name, struct=key)
                     names.add(name)
                     fields.append((name, d, spelling))
                     if not self.is_op(","):
@@ -660,7 +654,7 @@ class _Parser:
         while not self.is_op("}"):
             name = self.take()
             if name.kind != "name":
-                raise _fail(name, code="trace_enumerator_name")
+                raise TraceError.at(name, code="trace_enumerator_name")
             if self.is_op("="):
                 self.take()
                 value = self.constant(self.conditional(), "trace_const_enum")
@@ -683,7 +677,7 @@ class _Parser:
             self.qualifiers()
         tok = self.peek()
         if self.is_op("("):
-            raise _fail(tok, code="trace_function_pointer")
+            raise TraceError.at(tok, code="trace_function_pointer")
         var = self.var_name()
         sizes = []
         while self.is_op("["):
@@ -714,8 +708,8 @@ class _Parser:
             if isinstance(item, FuncDef):
                 prev = self.functions.get(item.name)
                 if prev is not None:
-                    raise _fail(self.tokens[self.pos - 1], code="trace_function_redefined",
-                                name=item.name, at=f"{prev.line}:{prev.column}")
+                    raise TraceError.at(self.tokens[self.pos - 1], code="trace_function_redefined",
+                                        name=item.name, at=f"{prev.line}:{prev.column}")
                 self.functions[item.name] = item
             elif item is not None:
                 out.append(item)
@@ -765,7 +759,8 @@ class _Parser:
         body = []
         while not self.is_op("}"):
             if self.peek().kind == "end":
-                raise _fail(self.peek(), code="trace_brace_open", at=f"{tok.line}:{tok.column}")
+                raise TraceError.at(self.peek(), code="trace_brace_open",
+                                    at=f"{tok.line}:{tok.column}")
             body.append(self.statement())
         self.take()
         self.shallower()
@@ -804,7 +799,7 @@ class _Parser:
             test = self.expression()
             self.expect(")", "close_condition")
             if not self.is_op("{"):
-                raise _fail(self.peek(), code="trace_switch_brace")
+                raise TraceError.at(self.peek(), code="trace_switch_brace")
             self.switches += 1
             body = self.block()
             self.switches -= 1
@@ -812,27 +807,27 @@ class _Parser:
         if word in ("case", "default"):
             self.take()
             if not self.switches:
-                raise _fail(tok, code="trace_outside_switch", word=word)
+                raise TraceError.at(tok, code="trace_outside_switch", word=word)
             value = self.conditional() if word == "case" else None
             self.expect(":", "after", word=word)
             return Label(value).at(tok, self.last())
         if word in ("break", "continue"):
             self.take()
             if not self.loops and (word == "continue" or not self.switches):
-                raise _fail(tok, code="trace_outside_loop", word=word)
+                raise TraceError.at(tok, code="trace_outside_loop", word=word)
             self.expect(";", "after", word=word)
             return Jump(word).at(tok, self.last())
         if word == "return":
             self.take()
             if not self.in_function:
-                raise _fail(tok, code="trace_return_outside")
+                raise TraceError.at(tok, code="trace_return_outside")
             value = None if self.is_op(";") else self.expression()
             self.expect(";", "statement_end")
             return Return(value).at(tok, self.last())
         if word == "else":
-            raise _fail(tok, code="trace_else_without_if")
+            raise TraceError.at(tok, code="trace_else_without_if")
         if word in _UNSUPPORTED:
-            raise _fail(tok, code="trace_not_supported", word=word)
+            raise TraceError.at(tok, code="trace_not_supported", word=word)
         if word == "typedef":
             return self.typedef()
         if self.starts_type():
@@ -853,7 +848,7 @@ class _Parser:
             body = self.body()
             w = self.peek()
             if w.text != "while":
-                raise _fail(w, code="trace_do_while")
+                raise TraceError.at(w, code="trace_do_while")
             self.take()
             self.expect("(", "after", word="while")
             test = self.expression()
@@ -891,10 +886,10 @@ class _Parser:
             name, d, at = self.declarator(desc)
             if self.is_op("("):
                 if not top or items:
-                    raise _fail(at, code="trace_nested_function", name=name)
+                    raise TraceError.at(at, code="trace_nested_function", name=name)
                 return self.function(tok, at, d, spelling)
             if d == "void":
-                raise _fail(at, code="trace_void_object", name=name)
+                raise TraceError.at(at, code="trace_void_object", name=name)
             init = None
             if self.is_op("="):
                 self.take()
@@ -915,7 +910,7 @@ class _Parser:
         items = []
         while not self.is_op("}"):
             if self.is_op("."):
-                raise _fail(self.peek(), code="trace_designated")
+                raise TraceError.at(self.peek(), code="trace_designated")
             items.append(self.initializer())
             if not self.is_op(","):
                 break
@@ -932,7 +927,7 @@ class _Parser:
             self.take()
         while not self.is_op(")"):
             if self.is_op("..."):
-                raise _fail(self.peek(), code="trace_variadic")
+                raise TraceError.at(self.peek(), code="trace_variadic")
             ptok = self.peek()
             desc, spelling, _ = self.specifiers()
             if self.is_op(",") or self.is_op(")"):
@@ -942,7 +937,7 @@ class _Parser:
             if isinstance(d, Arr):
                 d = Ptr(d.of, d.size)  # an array parameter is a pointer (C99 6.7.5.3p7)
             if d == "void":
-                raise _fail(at, code="trace_void_param")
+                raise TraceError.at(at, code="trace_void_param")
             params.append((pname, d, spelling, at))
             if not self.is_op(","):
                 break
@@ -954,9 +949,9 @@ class _Parser:
             return None
         if not self.is_op("{"):
             got = self.peek()
-            raise _fail(got, code="trace_after_params", name=name_tok.text, got=_got(got))
+            raise TraceError.at(got, code="trace_after_params", name=name_tok.text, got=_got(got))
         if any(not p[0] for p in params):
-            raise _fail(name_tok, code="trace_param_name", name=name_tok.text)
+            raise TraceError.at(name_tok, code="trace_param_name", name=name_tok.text)
         self.in_function = True
         body = self.block()
         self.in_function = False
@@ -983,9 +978,10 @@ class _Parser:
                 pointer = pointer or self.take().text == "*"
             name = self.take()
             if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
-                raise _fail(name, code="trace_typedef_name", spelling=spelling, got=_got(name))
+                raise TraceError.at(name, code="trace_typedef_name", spelling=spelling,
+                                    got=_got(name))
             if self.is_op("(") or self.is_op("["):
-                raise _fail(self.peek(), code="trace_typedef_function", name=name.text)
+                raise TraceError.at(self.peek(), code="trace_typedef_function", name=name.text)
             if isinstance(base, StructDef) and base.name.startswith("<"):
                 base.name = name.text  # typedef struct { … } NAME: messages call it NAME
             if pointer and isinstance(base, StructDef):
@@ -1005,7 +1001,7 @@ class _Parser:
     def var_name(self) -> Var:
         tok = self.peek()
         if tok.kind != "name" or tok.text in BASE_TYPE_WORDS or tok.text in _QUALIFIERS:
-            raise _fail(tok, code="trace_expected_name", got=_got(tok))
+            raise TraceError.at(tok, code="trace_expected_name", got=_got(tok))
         tokens = self.tokens
         pos = self.pos + 1
         name = tok.text
@@ -1019,7 +1015,7 @@ class _Parser:
     def expression(self) -> Node:
         e = self.assignment()
         if self.is_op(","):
-            raise _fail(self.peek(), code="trace_comma")
+            raise TraceError.at(self.peek(), code="trace_comma")
         return e
 
     def assignment(self) -> Node:
@@ -1029,7 +1025,7 @@ class _Parser:
         tok = self.peek()
         if tok.kind == "op" and tok.text in _ASSIGN_OPS:
             if not _is_place(left):
-                raise _fail(tok, code="trace_lvalue_left", op=tok.text)
+                raise TraceError.at(tok, code="trace_lvalue_left", op=tok.text)
             self.take()
             value = self.assignment()
             left = Assign(tok.text, left, value).at(first, self.last())
@@ -1065,7 +1061,7 @@ class _Parser:
             chain += 1
             self.height += 1
             if self.height > MAX_HEIGHT:
-                raise _fail(tok, code="trace_height", limit=MAX_HEIGHT)
+                raise TraceError.at(tok, code="trace_height", limit=MAX_HEIGHT)
             self.deeper()
             right = self.binary(prec + 1)
             self.shallower()
@@ -1081,7 +1077,7 @@ class _Parser:
             operand = self.unary()
             self.shallower()
             if tok.text == "&" and not _is_place(operand):
-                raise _fail(tok, code="trace_needs_variable", op="&")
+                raise TraceError.at(tok, code="trace_needs_variable", op="&")
             return Unary(tok.text, operand).at(tok, self.last())
         if tok.text in ("++", "--"):
             self.take()
@@ -1089,7 +1085,7 @@ class _Parser:
             target = self.unary()
             self.shallower()
             if not _is_place(target):
-                raise _fail(tok, code="trace_needs_variable", op=tok.text)
+                raise TraceError.at(tok, code="trace_needs_variable", op=tok.text)
             return IncDec(tok.text, True, target).at(tok, self.last())
         if tok.text == "(" and self.starts_type(1):
             self.take()
@@ -1111,13 +1107,13 @@ class _Parser:
             if text in ("++", "--"):
                 op = self.take()
                 if not _is_place(node):
-                    raise _fail(op, code="trace_needs_variable", op=op.text)
+                    raise TraceError.at(op, code="trace_needs_variable", op=op.text)
                 node = IncDec(op.text, False, node).at(first, self.last())
             elif text in (".", "->"):
                 op = self.take()
                 name = self.take()
                 if name.kind != "name":
-                    raise _fail(name, code="trace_field_name", op=op.text)
+                    raise TraceError.at(name, code="trace_field_name", op=op.text)
                 self.deeper()
                 chain += 1
                 node = Member(node, name.text, op.text == "->").at(first, name)
@@ -1158,7 +1154,7 @@ class _Parser:
             return e
         if tok.kind == "name":
             if tok.text in _UNSUPPORTED or tok.text in BASE_TYPE_WORDS or tok.text in _TAGS:
-                raise _fail(tok, code="trace_not_here", word=tok.text)
+                raise TraceError.at(tok, code="trace_not_here", word=tok.text)
             if self.is_op("(", 1):
                 return self.call()
             self.take()
@@ -1167,7 +1163,7 @@ class _Parser:
                 n.ctype = ["int"]
                 return n
             return Var(tok.text).at(tok, tok)
-        raise _fail(tok, code="trace_expected_value", got=_got(tok))
+        raise TraceError.at(tok, code="trace_expected_value", got=_got(tok))
 
     def call(self) -> Node:
         tok = self.take()
@@ -1191,11 +1187,11 @@ class _Parser:
         if nargs is None:  # a function of the pasted code: resolved by the checker
             return Call(name, args, None).at(tok, self.last())
         if len(args) != nargs:
-            raise _fail(tok, code="trace_builtin_arity", name=name, n=nargs, got=len(args))
+            raise TraceError.at(tok, code="trace_builtin_arity", name=name, n=nargs, got=len(args))
         if name == "__IQmpy":
             qa = args[2]
             if not isinstance(qa, Num) or not 0 <= qa.value <= 62:
-                raise _fail(tok, code="trace_iqmpy_q")
+                raise TraceError.at(tok, code="trace_iqmpy_q")
             q = qa.value
             args = args[:2]
         return Call(name, args, q).at(tok, self.last())

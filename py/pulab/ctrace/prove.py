@@ -180,12 +180,12 @@ class _Problem:
 
 
 def _error_kind(e: TraceError):
-    code = ((e.params or {}).get("reason") or {}).get("code") or ""
+    code = e.reason_error()["code"]
     if code == "trace_steps":
         return None  # the tracer's statement cap, not a failure of the code
     if code == "trace_index":
         return "index"
-    if "zero" in code or (e.reason or "").endswith("by zero"):
+    if code in ("trace_division_zero", "trace_remainder_zero"):
         return "division_by_zero"
     return "error"
 
