@@ -201,6 +201,13 @@ def test_pathological_code_never_crashes(code):
         assert chinese(e.message_zh)
 
 
+def test_a_qualifier_after_a_typedef_star_is_read():
+    # `typedef int * const P;` looped for ever: the qualifier after the '*' was never taken
+    assert trace("typedef int * const P; int x = 1;", "arm")["vars"]["x"]["value"] == 1
+    with pytest.raises(TraceError, match="pq is a pointer type"):
+        trace("typedef int16_t * static pq; pq p;", "arm")
+
+
 def test_api_trace_error_reply_has_position_and_inputs():
     r = json.loads(call_json("trace", json.dumps({"code": "Uint16 v;\nlong x = v / 0;",
                                           "set": {"v": 1}})))

@@ -975,7 +975,7 @@ class _Parser:
             pointer = False
             while self.is_op("*") or (self.peek().kind == "name" and
                                       self.peek().text in _QUALIFIERS):
-                pointer = pointer or self.take().text == "*"
+                pointer = self.take().text == "*" or pointer  # a qualifier after the * too
             name = self.take()
             if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
                 raise TraceError.at(name, code="trace_typedef_name", spelling=spelling,
