@@ -16,6 +16,7 @@ from conftest import ROOT, chinese
 from pulab.api import call_json
 from pulab.ctrace import TraceError, trace
 from pulab.ctrace.examples import EXAMPLES
+from pulab.ctrace.parser import Node, NodeVisitor, Stmt, parse
 from pulab.schema.errors import InputError
 
 
@@ -206,6 +207,36 @@ def test_a_qualifier_after_a_typedef_star_is_read():
     assert trace("typedef int * const P; int x = 1;", "arm")["vars"]["x"]["value"] == 1
     with pytest.raises(TraceError, match="pq is a pointer type"):
         trace("typedef int16_t * static pq; pq p;", "arm")
+
+
+def _slot_nodes(node) -> list:
+    """The sub-nodes of ``node`` found by reading every slot (lists and tuples included)."""
+    out = []
+    for name in node.__slots__:
+        value = getattr(node, name, None)
+        for item in value if isinstance(value, list) else [value]:
+            out += [x for x in (item if isinstance(item, tuple) else (item,))
+                    if isinstance(x, (Node, Stmt))]
+    return out
+
+
+@pytest.mark.parametrize("example", sorted(EXAMPLES))
+def test_children_are_every_sub_node_and_the_visitor_walks_them(example):
+    program = parse(EXAMPLES[example]["code"])
+
+    class Count(NodeVisitor):
+        def __init__(self):
+            self.seen = []
+
+        def generic_visit(self, node):
+            self.seen.append(node)
+            assert sorted(map(id, node.children())) == sorted(map(id, _slot_nodes(node)))
+            super().generic_visit(node)
+
+    walk = Count()
+    for s in program.statements + [f for f in program.functions.values()]:
+        walk.visit(s)
+    assert len(walk.seen) > 20 and len(set(map(id, walk.seen))) == len(walk.seen)
 
 
 def test_api_trace_error_reply_has_position_and_inputs():

@@ -1,24 +1,40 @@
-"""Parser of the C subset: statements, expressions, ``#define`` constants, ``// @q`` notes.
+"""Parser of the C subset: the integer C that firmware scaling code is made of.
 
-The subset is what firmware scaling code is made of:
+What it accepts:
 
-- declarations ``[const|static|volatile] TYPE name [= expr] {, name [= expr]};`` with
-  the C spellings and firmware names of :mod:`pulab.ctrace.types`, and the names that
-  ``typedef INTEGER-TYPE NAME;`` makes (a typedef name stands for its integer type);
-- expression statements: assignments, compound assignments, ``++``/``--``;
-- ``if (…) … else …`` and ``{ … }`` (one flat scope: a name is declared once);
-- every C integer operator, casts, ``?:``, integer constants (decimal, hex, octal,
-  binary, suffixes ``U``, ``L``, ``LL``), names with dots (``gMotorInfo.Voltage``
-  is one variable) and the IQmath calls ``_IQmpy``, ``_IQNmpy``, ``__IQmpy(a,b,q)``,
-  ``_IQsat``, ``__IQsat``;
+- a script of file-scope declarations and statements, run top to bottom; or function
+  definitions with file-scope declarations as their globals, one function (or a
+  function-like macro, :mod:`~pulab.ctrace.macro_entry`) chosen as the entry.  Functions
+  return an integer, a struct, a pointer or nothing; calls may nest but not recurse;
+- declarations ``[qualifiers] TYPE a [= init], *p, t[N];`` with the C spellings and firmware
+  names of :mod:`pulab.ctrace.types`, the names ``typedef`` gives integer and struct types,
+  ``struct`` types (tagged, typedef'd, nested), ``enum`` constants, one level of pointers,
+  arrays with braced initializers; each block has its own scope;
+- statements: expressions, ``if``/``else``, blocks, ``for``, ``while``, ``do … while``,
+  ``switch`` with its ``case``/``default`` labels at the top of its block, ``break``,
+  ``continue``, ``return``;
+- every C integer operator (compound assignments, ``++``/``--`` and ``?:`` included), casts
+  (to integer types, and pointer casts between the same memory layout), ``.``, ``->``,
+  ``[]``, unary ``&`` and ``*``, integer constants (decimal, hex, octal, binary, suffixes
+  ``U``, ``L``, ``LL``), calls of the code's functions and the IQmath calls ``_IQmpy``,
+  ``_IQNmpy``, ``__IQmpy(a,b,q)``, ``_IQsat``, ``__IQsat``, ``_IQabs``;
 - the preprocessor of :mod:`pulab.ctrace.preprocess` (macros, ``#if`` family,
   standard headers; ``#define GLOBAL_Q n`` also sets IQmath's Q);
 - annotations ``// @q NAME Qn [base=NUMBER [UNIT]]``: the variable holds a Qn number
   (real = value/2**n) whose per-unit base is NUMBER UNIT, so its SI value is real·base;
   ``// @q NAME auto``: its Q is to be proposed by the code proof (``q`` None).
 
-Everything else (loops, functions, pointers, floating point) is refused with a
-:class:`TraceError` naming line and column.
+Refused, with a :class:`TraceError` naming line and column (a catalog code each): floating
+point (constants and objects; a floating or pointer ``typedef`` only where it is used, as
+is a definition outside the subset), character and string literals, ``union``, ``goto``,
+``sizeof``, bit-fields, pointers to pointers, function pointers, variadic functions,
+function and array typedefs, nested function definitions, designated initializers, the
+comma operator.  The checker (:mod:`pulab.ctrace.check`) then refuses what is well-formed
+but not computable: types a target lacks, names never declared, mismatched types.
+
+The tree: expressions are :class:`Node` subclasses, statements :class:`Stmt` subclasses;
+each has ``children()`` (its sub-nodes, in source order), and :class:`NodeVisitor` walks
+them (pycparser's ``c_ast.NodeVisitor`` is the model).
 
 Examples
 --------
@@ -39,8 +55,8 @@ from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
            "Cast", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
-           "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr", "Arr",
-           "Unsupported",
+           "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr",
+           "Arr", "Unsupported", "NodeVisitor",
            "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
@@ -80,7 +96,53 @@ _NOTE = re.compile(r"//\s*@q\s+(?P<name>[A-Za-z_][\w.]*)\s+(?P<q>Q(?:\d+\.)?\d+|
                    r"(?:\s+(?P<unit>\S+))?\s*$")
 
 
-class Node:
+class _Syntax:
+    """What expressions, statements and function definitions share: their sub-nodes."""
+
+    __slots__ = ()
+    #: The slots that hold sub-nodes (a node, a list of nodes, or None), in source order.
+    CHILDREN: tuple = ()
+
+    def children(self) -> list:
+        """The sub-nodes (expressions and statements), in source order."""
+        out = []
+        for name in self.CHILDREN:
+            v = getattr(self, name)
+            if type(v) is list:
+                out.extend(v)
+            elif v is not None:
+                out.append(v)
+        return out
+
+
+class NodeVisitor:
+    """A walk over the syntax tree (pycparser's ``c_ast.NodeVisitor`` is the model).
+
+    :meth:`visit` calls the subclass's ``visit_<Class>(node)`` (``visit_Cast``, ``visit_Decl``
+    …) when it has one, else :meth:`generic_visit`, which visits the node's children; a
+    ``visit_`` method that is to go on below its node calls :meth:`generic_visit` itself.
+    """
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._methods = {}  # node class -> the method that visits it (the evaluator's hot path)
+
+    _methods: dict = {}
+
+    def visit(self, node):
+        kind = type(node)
+        method = self._methods.get(kind)
+        if method is None:
+            method = self._methods[kind] = getattr(type(self), "visit_" + kind.__name__,
+                                                   type(self).generic_visit)
+        return method(self, node)
+
+    def generic_visit(self, node) -> None:
+        for child in node.children():
+            self.visit(child)
+
+
+class Node(_Syntax):
     """An expression: ``start``/``end`` are source offsets, ``ctype`` is set by the checker."""
 
     __slots__ = ("line", "column", "start", "end", "ctype")
@@ -107,6 +169,7 @@ class Var(Node):
 
 class Unary(Node):
     __slots__ = ("op", "operand")
+    CHILDREN = ("operand",)
 
     def __init__(self, op: str, operand: Node) -> None:
         self.op, self.operand = op, operand
@@ -114,6 +177,7 @@ class Unary(Node):
 
 class Binary(Node):
     __slots__ = ("op", "left", "right", "operand_type")
+    CHILDREN = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -121,6 +185,7 @@ class Binary(Node):
 
 class Logical(Node):
     __slots__ = ("op", "left", "right")
+    CHILDREN = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -128,6 +193,7 @@ class Logical(Node):
 
 class Cond(Node):
     __slots__ = ("test", "then", "other")
+    CHILDREN = ("test", "then", "other")
 
     def __init__(self, test: Node, then: Node, other: Node) -> None:
         self.test, self.then, self.other = test, then, other
@@ -138,6 +204,7 @@ class Cast(Node):
     ``from_void`` (set by the checker) when a ``void *`` becomes an object pointer."""
 
     __slots__ = ("type_name", "operand", "from_void")
+    CHILDREN = ("operand",)
 
     def __init__(self, type_name, operand: Node) -> None:
         self.type_name, self.operand, self.from_void = type_name, operand, False
@@ -145,6 +212,7 @@ class Cast(Node):
 
 class Assign(Node):
     __slots__ = ("op", "target", "value", "operand_type")
+    CHILDREN = ("target", "value")
 
     def __init__(self, op: str, target: Var, value: Node) -> None:
         self.op, self.target, self.value = op, target, value
@@ -152,6 +220,7 @@ class Assign(Node):
 
 class IncDec(Node):
     __slots__ = ("op", "prefix", "target", "operand_type")
+    CHILDREN = ("target",)
 
     def __init__(self, op: str, prefix: bool, target: Var) -> None:
         self.op, self.prefix, self.target = op, prefix, target
@@ -159,6 +228,7 @@ class IncDec(Node):
 
 class Call(Node):
     __slots__ = ("name", "args", "q", "func")
+    CHILDREN = ("args",)
 
     def __init__(self, name: str, args: list, q: int | None) -> None:
         self.name, self.args, self.q, self.func = name, args, q, None
@@ -168,6 +238,7 @@ class Member(Node):
     """``base.field`` or ``base->field`` (``arrow``)."""
 
     __slots__ = ("base", "field", "arrow", "flat")
+    CHILDREN = ("base",)
 
     def __init__(self, base: Node, field: str, arrow: bool) -> None:
         self.base, self.field, self.arrow, self.flat = base, field, arrow, None
@@ -175,6 +246,7 @@ class Member(Node):
 
 class Index(Node):
     __slots__ = ("base", "index")
+    CHILDREN = ("base", "index")
 
     def __init__(self, base: Node, index: Node) -> None:
         self.base, self.index = base, index
@@ -184,6 +256,7 @@ class InitList(Node):
     """A braced initializer ``{a, b, {c}}``."""
 
     __slots__ = ("items",)
+    CHILDREN = ("items",)
 
     def __init__(self, items: list) -> None:
         self.items = items
@@ -227,7 +300,7 @@ class Arr:
         self.of, self.size = of, size
 
 
-class Stmt:
+class Stmt(_Syntax):
     """A statement; ``start``/``end`` span its source text."""
 
     __slots__ = ("line", "column", "start", "end")
@@ -247,9 +320,15 @@ class Decl(Stmt):
     def __init__(self, type_name, items: list, static: bool = False) -> None:
         self.type_name, self.items, self.static = type_name, items, static
 
+    def children(self) -> list:
+        """Each declared variable, then its initializer (the type descriptors are not
+        sub-nodes: an array size is a constant the checker reads)."""
+        return [x for var, init, _ in self.items for x in (var, init) if x is not None]
+
 
 class ExprStmt(Stmt):
     __slots__ = ("expr",)
+    CHILDREN = ("expr",)
 
     def __init__(self, expr: Node) -> None:
         self.expr = expr
@@ -257,6 +336,7 @@ class ExprStmt(Stmt):
 
 class If(Stmt):
     __slots__ = ("test", "then", "other")
+    CHILDREN = ("test", "then", "other")
 
     def __init__(self, test: Node, then: Stmt, other: Stmt | None) -> None:
         self.test, self.then, self.other = test, then, other
@@ -264,6 +344,7 @@ class If(Stmt):
 
 class Block(Stmt):
     __slots__ = ("statements",)
+    CHILDREN = ("statements",)
 
     def __init__(self, statements: list) -> None:
         self.statements = statements
@@ -271,6 +352,7 @@ class Block(Stmt):
 
 class Return(Stmt):
     __slots__ = ("value",)
+    CHILDREN = ("value",)
 
     def __init__(self, value: Node | None) -> None:
         self.value = value
@@ -281,6 +363,7 @@ class Loop(Stmt):
     ``step`` (an expression or None), ``body``; ``kind`` is the keyword."""
 
     __slots__ = ("kind", "init", "test", "step", "body")
+    CHILDREN = ("init", "test", "step", "body")
 
     def __init__(self, kind: str, init, test, step, body) -> None:
         self.kind, self.init, self.test, self.step, self.body = kind, init, test, step, body
@@ -291,6 +374,7 @@ class Switch(Stmt):
     statements include the :class:`Label` markers."""
 
     __slots__ = ("test", "body")
+    CHILDREN = ("test", "body")
 
     def __init__(self, test, body) -> None:
         self.test, self.body = test, body
@@ -301,6 +385,7 @@ class Label(Stmt):
     ``value_int`` is set by the checker (the constant, None for default)."""
 
     __slots__ = ("value", "value_int")
+    CHILDREN = ("value",)
 
     def __init__(self, value) -> None:
         self.value = value
@@ -315,12 +400,13 @@ class Jump(Stmt):
         self.kind = kind
 
 
-class FuncDef:
+class FuncDef(_Syntax):
     """A function definition: ``ret`` (type descriptor or ``"void"``), ``params`` (list of
     (name, type descriptor, spelling, token)), ``body`` (Block)."""
 
     __slots__ = ("name", "ret", "ret_spelling", "params", "body", "line", "column", "start",
                  "end", "close_line", "close_column")
+    CHILDREN = ("body",)
 
     def __init__(self, name, ret, ret_spelling, params, body, tok) -> None:
         self.name, self.ret, self.ret_spelling, self.params, self.body = name, ret, \
