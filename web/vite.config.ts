@@ -7,7 +7,7 @@ import { fileURLToPath } from 'node:url';
 import { dirname, resolve } from 'node:path';
 import { offlineCache } from './offline/plugin';
 import { createHash } from 'node:crypto';
-import { runJsonCPython, seedKey } from './build/prerender';
+import { reportCPython, seedKey } from './build/prerender';
 import { writeSchema } from './build/schema';
 import { SNAPSHOT_PYODIDE_VERSION, makeSnapshot, pulabFiles } from './build/snapshot';
 import { precompress } from './build/compress';
@@ -58,7 +58,7 @@ function buildSnapshot(warn: (m: string) => void): Promise<{ info: SnapshotInfo;
   snapshotJob ??= (async () => {
     if (process.env.PULAB_SNAPSHOT === '0') return null;
     const key = seedKey();
-    const r = await makeSnapshot(pyodideDir + '/', pulabFiles(repo), key, runJsonCPython(key));
+    const r = await makeSnapshot(pyodideDir + '/', pulabFiles(repo), key, reportCPython(key));
     if (!r.ok) {
       warn(`no Python memory snapshot (${r.reason}); pages boot Python normally`);
       return null;
@@ -91,7 +91,7 @@ function pulabBuild(emit: boolean): Plugin {
       return [
         `export const PULAB_HASH = ${JSON.stringify(sha(JSON.stringify(pulabFiles(repo))).slice(0, 16))};`,
         `export const SEED_KEY = ${JSON.stringify(key)};`,
-        `export const SEED_RESULT = ${JSON.stringify(runJsonCPython(key))};`,
+        `export const SEED_RESULT = ${JSON.stringify(reportCPython(key))};`,
         `export const SNAPSHOT = ${JSON.stringify(snap?.info ?? null)};`,
       ].join('\n');
     },

@@ -12,7 +12,7 @@ named at the end)::
 
     fixedpoint/   Q formats and C integer arithmetic           qformat, cint
     schema/       what an input is and how it is read and      errors, jsontext, textnum,
-                  checked; the error texts                     inputs, messages
+                  checked; the error texts                     inputs, catalog
     model/        the per-unit model of one motor and drive    bases, gains, datasheet
     profiles/     firmware scaling, one module per vendor      inovance (+ inovance_code:
                                                                the seed's C code bit-exact,

@@ -2,10 +2,9 @@
 
 Every request goes through :func:`call_json` (or :func:`call_json_steps`, the same in
 slices): one parser (:func:`pulab.schema.jsontext.parse`, its size and nesting limits) and
-one dispatch key, ``kind`` (:data:`KINDS`).  The older one-function-per-kind entry points
-(:func:`run_json`, :func:`sweep_json` with ``op``, :func:`vendors_json` with ``action``,
-:func:`export_json` with ``kind`` …) are kept: each reads its old key and calls the same
-handler.
+one dispatch key, ``kind`` (:data:`KINDS`).  There is no other entry point: a kind that
+used to be chosen by a key of the request (``op``, ``action``) is named by ``kind`` itself
+(``sweep.plan``, ``vendors.header`` …).
 
 Errors never escape as exceptions: bad input comes back as
 ``{"ok": false, "field": ..., "message": ..., "message_zh": ..., "code": ..., "params": ...}``
@@ -20,12 +19,26 @@ Examples
 16384
 >>> json.loads(call_json("qcalc.encode", "{}"))["field"]
 'kind'
+>>> req = {"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3}}
+>>> json.loads(call_json("sweep.plan", json.dumps(req)))["plan"]["x"]["values"]
+[1.0, 1.5, 2.0]
+>>> json.loads(call_json("sweep.chunk", json.dumps({**req, "start": 0, "count": 2})))[
+...     "chunk"]["points"]["error"][0]
+'motor.rated_voltage_v: is required (or give datasheet.dc_bus_v)'
+>>> r = json.loads(call_json("trace", '{"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}}'))
+>>> r["vars"]["x"]["value"], r["target"]
+(4, 'c28x')
+>>> json.loads(call_json("trace", '{"code": "x = 1 +;"}'))["message"]
+"1:8: expected a value, got ';'"
+>>> [e["id"] for e in json.loads(call_json("trace.examples", "{}"))["examples"]][:2]
+['rpm', 'ld']
 """
 
 from __future__ import annotations
 
 import json
 import math
+from dataclasses import fields, is_dataclass
 
 from .schema.errors import InputError
 from .schema.validate import key_path, shown
@@ -36,18 +49,17 @@ from .qcalc import qcalc
 from .report import report, report_steps
 from .analyses.slices import finish
 
-__all__ = ["KINDS", "call_json", "call_json_steps", "run_json", "run_json_steps", "qcalc",
-           "qcalc_json", "export_json", "sweep_json", "batch_json", "trace_json",
-           "trace_examples_json", "vendors_json", "prove_json"]
+__all__ = ["KINDS", "call_json", "call_json_steps"]
 
 
 def _fail(e: InputError) -> str:
     reply = {"ok": False, "field": e.field, "message": e.message, "message_zh": e.message_zh,
              "code": e.code, "params": _strict(e.params)}
-    # The tracer's errors say where in the code, and which inputs the code has when it compiled.
-    for key in ("line", "column", "inputs", "functions", "macros"):
-        if hasattr(e, key):
-            reply[key] = getattr(e, key)
+    # An error that declares fields (the tracer's: where in the code, what the code offers
+    # instead) carries those that are set; testing for the class would import the tracer.
+    if is_dataclass(e):
+        reply.update((f.name, getattr(e, f.name)) for f in fields(e)
+                     if getattr(e, f.name) is not None)
     return json.dumps(reply, allow_nan=False)
 
 
@@ -150,30 +162,10 @@ def _trace_request(req, keys: tuple) -> tuple:
 
 
 def _trace(req) -> dict:
-    from .ctrace import TraceError, compile_code, trace_checked
-    from .ctrace.macro_entry import entry_macros
-    from .ctrace.parser import parse as parse_c
-    from .ctrace.tracing import inputs_for
+    from .ctrace import trace
     code, defines, sets, zero_unset = _trace_request(req, _TRACE_KEYS)
-    try:
-        checked = compile_code(code, req.get("target", "c28x"), defines, req.get("global_q"),
-                               req.get("entry") or None)
-    except InputError as e:
-        if isinstance(code, str) and (e.field in ("entry", "set") or (
-                isinstance(e, TraceError) and e.field.startswith("set."))):
-            try:  # the code parses: offer its functions (and macros) so the user can pick one
-                program = parse_c(code)
-                e.functions, e.macros = list(program.functions), entry_macros(program)
-            except InputError:
-                pass
-        raise
-    try:
-        reply = trace_checked(checked, sets, req.get("global_q"), zero_unset)
-    except InputError as e:
-        e.inputs = inputs_for(checked, sets if isinstance(sets, dict) else {})
-        e.functions = [f for f in checked.functions if f not in checked.program.macros]
-        e.macros = entry_macros(checked.program)
-        raise
+    reply = trace(code, req.get("target", "c28x"), sets, req.get("global_q"), defines,
+                  req.get("entry") or None, zero_unset)
     reply.pop("ok", None)
     return reply
 
@@ -337,153 +329,3 @@ def call_json(kind: str, text: str) -> str:
     ``{"ok": false, "field", "message", "message_zh", "code", "params"}``.
     """
     return finish(call_json_steps(kind, text))
-
-
-# ---- the entry points of one kind each (kept: pages and scripts call them) ----------------
-
-def run_json(text: str) -> str:
-    """``report`` on a JSON string; returns ``{"ok": true, "report": {...}}`` or an error."""
-    return call_json("report", text)
-
-
-def run_json_steps(text: str):
-    """:func:`run_json` in slices: a generator that yields None between slices of the simulation
-    and returns the same JSON text; closing it cancels the computation."""
-    return call_json_steps("report", text)
-
-
-def qcalc_json(text: str) -> str:
-    """:func:`pulab.qcalc.qcalc` on a JSON string; ``{"ok": true, ...}`` or an error naming
-    the field."""
-    return call_json("qcalc", text)
-
-
-def _by_key(text: str, field: str, key: str, default, kinds: dict, first) -> str:
-    """The reply of a request whose old key ``key`` (named ``field`` in errors) chooses its
-    kind: ``kinds`` maps the key's values to kinds of :data:`KINDS`.  An unknown value is
-    reported after ``first(request)``'s errors, as it always was."""
-    try:
-        req = parse(text, KINDS[next(iter(kinds.values()))][0])
-        what = req.get(key, default) if isinstance(req, dict) else default
-        if isinstance(what, (dict, list)) or what not in kinds:
-            first(req)
-            raise InputError(field, code="not_choice", choices=", ".join(kinds), got=shown(what))
-    except InputError as e:
-        return _fail(e)
-    return finish(_answer(kinds[what], req))
-
-
-def export_json(text: str) -> str:
-    """Exports for the page: ``{"input": {...}, "kind": "header"|"csv_current"|"csv_pll"}``
-    (the kinds ``export.header`` … of :func:`call_json`).
-
-    Returns ``{"ok": true, "text": ...}`` or an error naming the field.
-    """
-    return _by_key(text, "kind", "kind", None,
-                   {k: f"export.{k}" for k in ("header", "csv_current", "csv_pll")}, _export_input)
-
-
-def sweep_json(text: str) -> str:
-    """A family sweep (:mod:`pulab.analyses.sweep`) on a JSON string, whole or in chunks.
-
-    The request is a sweep request (``input``, ``x``, optional ``y`` and ``profile``) with
-    ``op``: ``"sweep"`` (default: everything at once), ``"plan"`` (the axes and the number
-    of points, nothing computed), ``"chunk"`` with ``start`` and ``count`` (those points and
-    their summary; a page computes a sweep chunk by chunk to show progress and cancel), or
-    ``"merge"`` with ``summaries`` (the chunks' summaries → the sweep's summary): the kinds
-    ``sweep``, ``sweep.plan``, ``sweep.chunk`` and ``sweep.merge`` of :func:`call_json`.
-
-    Returns ``{"ok": true, ...}`` with ``plan``, ``chunk`` or ``summary``, or an error
-    naming the field.
-
-    >>> import json
-    >>> req = {"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3}}
-    >>> json.loads(sweep_json(json.dumps({**req, "op": "plan"})))["plan"]["x"]["values"]
-    [1.0, 1.5, 2.0]
-    >>> json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": 0, "count": 2})))[
-    ...     "chunk"]["points"]["error"][0]
-    'motor.rated_voltage_v: is required (or give datasheet.dc_bus_v)'
-    """
-    return _by_key(text, "sweep.op", "op", "sweep", {"sweep": "sweep", "plan": "sweep.plan",
-                   "chunk": "sweep.chunk", "merge": "sweep.merge"}, _sweep_plan)
-
-
-def prove_json(text: str) -> str:
-    """A family proof on a JSON string: a proof request (``input``, ``ranges``, optional
-    ``profile``, ``budget``) with ``op``: ``"prove"`` (default), ``"plan"``, ``"integer"``
-    with ``name``, ``"summary"`` with ``integers`` or ``"propose"`` — the kinds ``prove``,
-    ``prove.plan`` … of :func:`call_json`.
-
-    >>> import json
-    >>> seed = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
-    ...     "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
-    ...     "drive": {"udc_v": 24, "ts_s": 1e-4}}
-    >>> req = {"input": seed, "ranges": {"motor.rated_current_a": [1, 4]}}
-    >>> json.loads(prove_json(json.dumps({**req, "op": "integer", "name": "vendor.LD"})))[
-    ...     "integer"]["range"]
-    [692, 2808]
-    """
-    def first(req):
-        from .analyses.prove import make_problem
-        make_problem({k: v for k, v in req.items() if k != "op"} if isinstance(req, dict) else req)
-    return _by_key(text, "prove.op", "op", "prove",
-                   {op: f"prove.{op}" if op != "prove" else "prove"
-                    for op in ("prove", "plan", "integer", "summary", "propose")}, first)
-
-
-def batch_json(text: str) -> str:
-    """A batch (:mod:`pulab.analyses.batch`) on ``{"csv": text, "start": int, "count": int}``.
-
-    Returns ``{"ok": true, "total": rows, "columns": [...], "rows": [[cell, ...]], "csv":
-    text}`` for data rows ``start`` … ``start+count−1`` (``csv`` has the header when
-    ``start`` is 0, so the chunks' texts joined are the CLI's output), or an error naming
-    the field when the file as a whole is unreadable.  Bad rows come back in their
-    ``error`` cell.
-    """
-    return call_json("batch", text)
-
-
-def trace_json(text: str) -> str:
-    """The "Your code" tracer: ``{"code", "target", "entry", "set": {NAME: VALUE}, "global_q",
-    "zero_unset", …}`` (``entry``: the function of the code to run); see below,
-    "define": ["NAME[=VALUE]", …]}`` (``define`` as a compiler's ``-D``).
-
-    Returns :func:`pulab.ctrace.trace`'s result, or ``{"ok": false, "field", "message",
-    "message_zh"}`` with ``line`` and ``column`` when the code is at fault, and
-    ``inputs`` whenever the code compiled (so the page can offer input fields).
-
-    >>> r = json.loads(trace_json('{"code": "Uint16 v; long x = v*10;", "set": {"v": 6554}}'))
-    >>> r["vars"]["x"]["value"], r["target"]
-    (4, 'c28x')
-    >>> json.loads(trace_json('{"code": "x = 1 +;"}'))["message"]
-    "1:8: expected a value, got ';'"
-    """
-    return call_json("trace", text)
-
-
-def trace_examples_json(text: str = "") -> str:
-    """The tracer's example code and targets for the page: ``{"ok": true, "examples": [...],
-    "targets": [...]}``; each example has ``id``, ``title``, ``title_zh`` and ``code``.
-
-    >>> [e["id"] for e in json.loads(trace_examples_json())["examples"]][:2]
-    ['rpm', 'ld']
-    """
-    return call_json("trace.examples", text or "{}")
-
-
-def vendors_json(text: str) -> str:
-    """Vendor profiles for the page (docs/contract.md, "Vendor profiles").
-
-    ``{"input": {...}, "action": "header", "profile": NAME}`` → ``{"ok": true, "text": ...}``;
-    ``{"input": {...}, "action": "translate", "from": NAME, "axis": "d"|"q",
-    "values": {FIELD: int, FIELD: int}}`` → ``{"ok": true, "translation": {...}}``
-    (the kinds ``vendors.header`` and ``vendors.translate`` of :func:`call_json`);
-    bad input → an error naming the field.
-
-    >>> import json
-    >>> req = {"input": {"motor": {}}, "action": "header", "profile": "ti"}
-    >>> json.loads(vendors_json(json.dumps(req)))["field"]
-    'motor.rated_voltage_v'
-    """
-    return _by_key(text, "action", "action", None,
-                   {"header": "vendors.header", "translate": "vendors.translate"}, _vendor_input)

@@ -2,7 +2,7 @@
 
 :func:`qcalc` reads one request (dict → dict, like :func:`pulab.report`); the arithmetic is
 :mod:`pulab.fixedpoint.qformat`'s, the texts people type (full-width digits, ``0x…``) are
-read by :mod:`pulab.schema.textnum`.  :func:`pulab.api.qcalc_json` is its JSON shell.
+read by :mod:`pulab.schema.textnum`.  The kind ``qcalc`` of :func:`pulab.api.call_json` is its JSON shell.
 
 Examples
 --------

@@ -21,10 +21,10 @@ WORST = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz
 
 CHILD = """
 import json, resource, sys, time
-from pulab.api import run_json
+from pulab.api import call_json
 text = sys.stdin.read()
 t0 = time.perf_counter()
-out = json.loads(run_json(text))
+out = json.loads(call_json("report", text))
 assert out["ok"], out
 print(json.dumps({"s": time.perf_counter() - t0,
                   "mb": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024}))

@@ -1,12 +1,12 @@
-"""pulab.api: one entry point and one dispatch key (``kind``) for every request, the older
-one-function-per-kind entry points as aliases (docs/contract.md, "API")."""
+"""pulab.api: one entry point and one dispatch key (``kind``) for every request
+(docs/contract.md, "API")."""
 
 import json
 
 import pytest
 
-from pulab.api import (KINDS, batch_json, call_json, call_json_steps, export_json, qcalc_json,
-                       run_json, sweep_json, trace_json, trace_examples_json, vendors_json)
+import pulab.api
+from pulab.api import KINDS, call_json, call_json_steps
 
 from conftest import SEED_INPUT
 
@@ -89,32 +89,9 @@ def test_every_kind_has_the_parser_limits(kind):
     assert (none["ok"], none["field"], none["code"]) == (False, field, "json_not_text")
 
 
-def test_the_old_keys_are_aliases_of_the_kinds():
-    req = {"input": SEED_INPUT, "x": AXIS}
-    assert sweep_json(json.dumps({**req, "op": "plan"})) == call_json("sweep.plan", json.dumps(req))
-    assert sweep_json(json.dumps(req)) == call_json("sweep", json.dumps(req))
-    assert export_json(json.dumps({"input": SEED_INPUT, "kind": "header"})) == \
-        call_json("export.header", json.dumps({"input": SEED_INPUT}))
-    assert vendors_json(json.dumps({"input": SEED_INPUT, "action": "header", "profile": "st"})) == \
-        call_json("vendors.header", json.dumps({"input": SEED_INPUT, "profile": "st"}))
-    assert run_json(json.dumps(SEED_INPUT)) == call_json("report", json.dumps(SEED_INPUT))
-    assert qcalc_json('{"raw": 939, "format": "Q3.12"}') == call_json("qcalc", '{"raw": 939, "format": "Q3.12"}')
-    assert batch_json('{"csv": "x\\n"}') == call_json("batch", '{"csv": "x\\n"}')
-    assert trace_json('{"code": "int a = 1;"}') == call_json("trace", '{"code": "int a = 1;"}')
-    assert trace_examples_json() == call_json("trace.examples", "{}")
-
-
-@pytest.mark.parametrize("fn, text, field", [
-    (sweep_json, {"input": SEED_INPUT, "x": AXIS, "op": "nope"}, "sweep.op"),
-    (export_json, {"input": SEED_INPUT, "kind": "pdf"}, "kind"),
-    (vendors_json, {"input": SEED_INPUT, "action": ["header"]}, "action"),
-    # the request's own errors come before the old key's, as they always did
-    (export_json, {"input": {"motor": {}}, "kind": "pdf"}, "motor.rated_voltage_v"),
-    (vendors_json, {"input": 3, "action": "nope"}, "input"),
-])
-def test_a_bad_old_key_names_its_field(fn, text, field):
-    out = json.loads(fn(json.dumps(text)))
-    assert out["ok"] is False and out["field"] == field, out
+def test_the_one_kind_entry_points_are_gone():
+    assert pulab.api.__all__ == ["KINDS", "call_json", "call_json_steps"]
+    assert not [name for name in vars(pulab.api) if name.endswith("_json") and name != "call_json"]
 
 
 def test_the_tracer_error_says_where_and_which_inputs():

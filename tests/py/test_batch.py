@@ -13,7 +13,7 @@ import pytest
 
 from conftest import ROOT, chinese
 from pulab import InputError
-from pulab.api import batch_json
+from pulab.api import call_json
 from pulab.analyses.batch import batch_csv, findings_counts, read_table
 
 sys.path.insert(0, str(ROOT / "tests/oracle"))
@@ -95,7 +95,7 @@ def test_a_bad_header_stops_the_batch_naming_the_column(text, field):
     with pytest.raises(InputError) as e:
         read_table(text)
     assert e.value.field == field and chinese(e.value.message_zh), e.value.message
-    out = json.loads(batch_json(json.dumps({"csv": text})))
+    out = json.loads(call_json("batch", json.dumps({"csv": text})))
     assert out["ok"] is False and out["field"] == field
 
 
@@ -123,7 +123,7 @@ def test_catalogue_chunks_through_the_api_equal_the_cli(tmp_path):
     assert cli.returncode in (0, 1), cli.stderr
     parts = []
     for start in range(0, 1000, 300):
-        out = json.loads(batch_json(json.dumps({"csv": text, "start": start, "count": 300})))
+        out = json.loads(call_json("batch", json.dumps({"csv": text, "start": start, "count": 300})))
         assert out["ok"] and out["total"] == 1000
         parts.append(out["csv"])
     assert "".join(parts) == cli.stdout

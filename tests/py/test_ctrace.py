@@ -13,9 +13,10 @@ import sys
 import pytest
 
 from conftest import ROOT, chinese
-from pulab.api import trace_json
+from pulab.api import call_json
 from pulab.ctrace import TraceError, trace
 from pulab.ctrace.examples import EXAMPLES
+from pulab.ctrace.parser import Node, NodeVisitor, Stmt, parse
 from pulab.schema.errors import InputError
 
 
@@ -201,12 +202,49 @@ def test_pathological_code_never_crashes(code):
         assert chinese(e.message_zh)
 
 
-def test_api_trace_json_error_reply_has_position_and_inputs():
-    r = json.loads(trace_json(json.dumps({"code": "Uint16 v;\nlong x = v / 0;",
+def test_a_qualifier_after_a_typedef_star_is_read():
+    # `typedef int * const P;` looped for ever: the qualifier after the '*' was never taken
+    assert trace("typedef int * const P; int x = 1;", "arm")["vars"]["x"]["value"] == 1
+    with pytest.raises(TraceError, match="pq is a pointer type"):
+        trace("typedef int16_t * static pq; pq p;", "arm")
+
+
+def _slot_nodes(node) -> list:
+    """The sub-nodes of ``node`` found by reading every slot (lists and tuples included)."""
+    out = []
+    for name in node.__slots__:
+        value = getattr(node, name, None)
+        for item in value if isinstance(value, list) else [value]:
+            out += [x for x in (item if isinstance(item, tuple) else (item,))
+                    if isinstance(x, (Node, Stmt))]
+    return out
+
+
+@pytest.mark.parametrize("example", sorted(EXAMPLES))
+def test_children_are_every_sub_node_and_the_visitor_walks_them(example):
+    program = parse(EXAMPLES[example]["code"])
+
+    class Count(NodeVisitor):
+        def __init__(self):
+            self.seen = []
+
+        def generic_visit(self, node):
+            self.seen.append(node)
+            assert sorted(map(id, node.children())) == sorted(map(id, _slot_nodes(node)))
+            super().generic_visit(node)
+
+    walk = Count()
+    for s in program.statements + [f for f in program.functions.values()]:
+        walk.visit(s)
+    assert len(walk.seen) > 20 and len(set(map(id, walk.seen))) == len(walk.seen)
+
+
+def test_api_trace_error_reply_has_position_and_inputs():
+    r = json.loads(call_json("trace", json.dumps({"code": "Uint16 v;\nlong x = v / 0;",
                                           "set": {"v": 1}})))
     assert r["ok"] is False and (r["line"], r["column"]) == (2, 14)
     assert r["field"] == "code" and r["inputs"] == ["v"] and "除以零" in r["message_zh"]
-    ok = json.loads(trace_json(json.dumps({"code": "Uint16 v; long x = v * 10;",
+    ok = json.loads(call_json("trace", json.dumps({"code": "Uint16 v; long x = v * 10;",
                                            "target": "arm", "set": {"v": 6554}})))
     assert ok["ok"] and ok["vars"]["x"] == {"type": "long", "c_type": "long", "bits": 32,
                                             "signed": True, "value": 65540,
@@ -270,7 +308,7 @@ def test_fuzzed_api_requests_give_only_error_replies():
         if rng.random() < 0.3:
             req["set"] = {rng.choice(["v", "a", "x"]): rng.choice(values)}
         text = json.dumps(req) if rng.random() < 0.9 else rng.choice(["", "[", "nul", "1"])
-        r = json.loads(trace_json(text))
+        r = json.loads(call_json("trace", text))
         assert r["ok"] is True or (r["field"] and chinese(r["message_zh"])), (req, r)
 
 

@@ -21,7 +21,7 @@ import pytest
 from conftest import ROOT, chinese
 from ctrace_compilers import Unit, require, run_unit
 from ctrace_gen import random_vector
-from pulab.api import trace_json
+from pulab.api import call_json
 from pulab.ctrace import TraceError, compile_code, run_checked, trace
 from pulab.schema.errors import InputError
 
@@ -327,16 +327,20 @@ def test_errors_name_the_construct(code, entry, sets, field, text):
     with pytest.raises(InputError) as e:
         trace(code, "arm", sets, entry=entry, zero_unset=True)
     assert e.value.field == field and text in e.value.message, e.value.message
-    assert chinese(e.value.message_zh)
-    if isinstance(e.value, TraceError):
+    assert chinese(e.value.message_zh) and isinstance(e.value, TraceError)
+    if field == "code":  # the code at fault: the error says where
         assert e.value.line >= 1 and e.value.column >= 1
+    elif field == "entry":  # the code's functions come with it, to choose one
+        assert e.value.line is None and e.value.functions == ["clamp32", "pi_step"]
+    else:  # a bad input value: the code compiled, its inputs come with it
+        assert e.value.line is None and e.value.inputs == ["x"]
 
 
 def test_api_offers_the_functions_and_takes_entry():
-    r = json.loads(trace_json(json.dumps({"code": PI})))
+    r = json.loads(call_json("trace", json.dumps({"code": PI})))
     assert r["ok"] is False and r["field"] == "entry" and r["functions"] == ["clamp32",
                                                                              "pi_step"]
-    r = json.loads(trace_json(json.dumps({"code": PARK, "entry": "park", "target": "arm",
+    r = json.loads(call_json("trace", json.dumps({"code": PARK, "entry": "park", "target": "arm",
                                           "set": {"ia": 1, "ib": 2}, "zero_unset": True})))
     assert r["ok"] and r["entry"] == "park" and r["vars"]["dq.d"]["value"] == 0
 
@@ -688,7 +692,7 @@ def test_an_entry_returning_a_pointer_names_its_object(target, capsys):
     for vec in vectors:
         given = {"x": vec["x"], "handle.level": vec["t.level"],
                  "handle.pLimit": "&limits[1]"}
-        r = trace_json(json.dumps({"code": TRIM, "target": target, "entry": "TRIM_pick",
+        r = call_json("trace", json.dumps({"code": TRIM, "target": target, "entry": "TRIM_pick",
                                    "set": given}))
         ret = json.loads(r)["vars"]["return"]
         assert ret["c_type"] == "pointer" and ret["type"] == "int32_t *"
@@ -763,10 +767,10 @@ def test_an_error_reply_offers_the_inputs_read_through_the_pointers_given():
     through a pointer input still names that field (a bad pointer value adds nothing)."""
     req = {"code": TRIM, "target": "arm", "entry": "TRIM_run",
            "set": {"x": 1, "handle->avgHandle": "&handle.avg"}}
-    r = json.loads(trace_json(json.dumps(req)))
+    r = json.loads(call_json("trace", json.dumps(req)))
     assert r["ok"] is False and r["field"] == "set.handle.bias"
     assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "handle.avg.y1",
                            "handle.avg.k", "*handle.pLimit"]
     req["set"]["handle->avgHandle"] = "handle.avg"
-    r = json.loads(trace_json(json.dumps(req)))
+    r = json.loads(call_json("trace", json.dumps(req)))
     assert r["inputs"] == ["x", "handle.avgHandle", "handle.bias", "*handle.pLimit"]

@@ -19,7 +19,7 @@ import pytest
 from conftest import ROOT, chinese
 from ctrace_compilers import Unit, require, run_unit
 from ctrace_gen import random_vector
-from pulab.api import trace_json
+from pulab.api import call_json
 from pulab.ctrace import compile_code, run_checked, trace
 from pulab.schema.errors import InputError
 
@@ -97,10 +97,10 @@ def test_macro_entry_errors_name_the_macro_and_how_to_fix(code, entry, text):
 
 
 def test_a_file_of_macros_asks_for_an_entry_and_the_api_offers_them():
-    reply = json.loads(trace_json(json.dumps({"code": PIM, "target": "arm"})))
+    reply = json.loads(call_json("trace", json.dumps({"code": PIM, "target": "arm"})))
     assert reply["ok"] is False and reply["field"] == "entry"
     assert "PIM_RUN(…)" in reply["message"] and reply["macros"] == ["PIM_RUN"]
-    reply = json.loads(trace_json(json.dumps({"code": ALBE, "target": "arm", "entry": "ALBE_RUN",
+    reply = json.loads(call_json("trace", json.dumps({"code": ALBE, "target": "arm", "entry": "ALBE_RUN",
                                               "set": {"w.ia": 5, "w->ib": 7}})))
     assert reply["ok"] is True and reply["vars"]["w.be"]["input"] is False
 

@@ -253,13 +253,13 @@ def test_api_and_cli_take_defines(tmp_path):
     import json
     import subprocess
     import sys
-    from pulab.api import trace_json
+    from pulab.api import call_json
     code = "long a;\n#if MODE == 2\na = 20;\n#else\na = 10;\n#endif"
-    r = json.loads(trace_json(json.dumps({"code": code, "define": ["MODE=2"]})))
+    r = json.loads(call_json("trace", json.dumps({"code": code, "define": ["MODE=2"]})))
     assert r["vars"]["a"]["value"] == 20
-    bad = json.loads(trace_json(json.dumps({"code": code, "define": "MODE=2"})))
+    bad = json.loads(call_json("trace", json.dumps({"code": code, "define": "MODE=2"})))
     assert bad["field"] == "define" and not bad["ok"]
-    bad = json.loads(trace_json(json.dumps({"code": code, "define": ["2MODE"]})))
+    bad = json.loads(call_json("trace", json.dumps({"code": code, "define": ["2MODE"]})))
     assert bad["field"] == "define[0]"
     src = tmp_path / "m.c"
     src.write_text(code)

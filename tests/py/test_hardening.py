@@ -4,7 +4,7 @@ Contract (docs/contract.md): exit 0 with strict JSON on stdout, or exit 2 with
 exactly one stderr line ``error: FIELD: MESSAGE``; the api returns
 ``{"ok": false, "field", "message", "message_zh"}``, each one printable line.
 The fuzz run sends 10,000 seeded adversarial inputs (tests/py/adversarial.py)
-through both ``run_json`` and the CLI entry ``main`` in-process, checks that
+through both ``call_json("report", …)`` and the CLI entry ``main`` in-process, checks that
 both name the same field, and prints the count; a handful go through real
 subprocesses too.
 """
@@ -20,7 +20,7 @@ import pytest
 from adversarial import BASE, cases, robust_cases
 from conftest import ROOT
 from pulab.__main__ import main
-from pulab.api import export_json, qcalc_json, run_json
+from pulab.api import call_json
 from pulab.analyses.loop import validate as check_analysis
 from pulab.schema.errors import InputError
 from pulab.schema.jsontext import MAX_DEPTH, parse
@@ -39,7 +39,7 @@ def _one_line(s) -> bool:
 
 
 def _api(text: str) -> tuple:
-    out = _strict(run_json(text))
+    out = _strict(call_json("report", text))
     if out["ok"]:
         assert set(out) == {"ok", "report"} and isinstance(out["report"], dict)
         return "ok", None
@@ -87,7 +87,7 @@ def test_fuzzed_inputs_keep_the_contract_in_the_api_and_the_cli():
         api = _api(text)
         assert api == cli, (data[:300], api, cli)
         seen[api[0]] += 1
-    print(f"\nfuzzed inputs: {sum(seen.values())} through run_json and the CLI entry "
+    print(f"\nfuzzed inputs: {sum(seen.values())} through call_json and the CLI entry "
           f"({dict(seen)})")
     assert sum(seen.values()) == FUZZ_CASES
     # The generator must reach valid reports and many distinct errors, or it tests little.
@@ -111,7 +111,7 @@ def _robust_valid(text: str):
 
 def test_fuzzed_robust_sections_keep_the_contract():
     """``analysis.robust`` under hostile input: every field of the schema's section mutated.
-    A case with an invalid section goes through run_json and the CLI (the same field named);
+    A case with an invalid section goes through call_json and the CLI (the same field named);
     valid ones are checked by the validator, and a few cheap ones computed in full."""
     seen = Counter()
     for data in robust_cases(ROBUST_CASES):
@@ -181,20 +181,20 @@ def test_depth_cap(depth, ok):
             parse(text)
 
 
-@pytest.mark.parametrize("fn, text, field", [
-    (qcalc_json, '{"format": [[["Q15"]]]}', "qcalc.format"),
-    (qcalc_json, '{"format": "Q0.15", "value": 1' + "0" * 400 + "}", "qcalc.value"),
-    (qcalc_json, "[" * 5000, "qcalc"),
-    (export_json, "{" * 5000, "input"),
-    (export_json, '{"input": null, "kind": {"x": 1}}', "input"),
+@pytest.mark.parametrize("kind, text, field", [
+    ("qcalc", '{"format": [[["Q15"]]]}', "qcalc.format"),
+    ("qcalc", '{"format": "Q0.15", "value": 1' + "0" * 400 + "}", "qcalc.value"),
+    ("qcalc", "[" * 5000, "qcalc"),
+    ("export.header", "{" * 5000, "input"),
+    ("export.csv_pll", '{"input": null}', "input"),
 ])
-def test_other_api_functions_name_the_field(fn, text, field):
-    out = _strict(fn(text))
+def test_other_api_kinds_name_the_field(kind, text, field):
+    out = _strict(call_json(kind, text))
     assert out["ok"] is False and out["field"] == field and _one_line(out["message"]), out
 
 
 def test_fuzzed_qcalc_and_export_requests_keep_the_contract():
-    """The other api functions: 1,000 seeded requests each, built from the same hostile values."""
+    """The other api kinds: 1,000 seeded requests each, built from the same hostile values."""
     import random
     from adversarial import NASTY_TEXT, NUMBER_LITERALS, _value
     rng = random.Random(15)
@@ -205,8 +205,9 @@ def test_fuzzed_qcalc_and_export_requests_keep_the_contract():
                rng.choice(["value", "raw", "word_bits", "rounding", "overflow", "format"]): "@@x@@"}
         text = json.dumps(req).replace('"@@x@@"', rng.choice(NUMBER_LITERALS) if rng.random() < 0.5
                                        else json.dumps(_value(rng)))
-        for fn, body in ((qcalc_json, text), (export_json, json.dumps({"input": plain, "kind": _value(rng)}))):
-            out = _strict(fn(body))
+        export = rng.choice(["export.header", "export.csv_current", "export.csv_pll", *NASTY_TEXT[:8]])
+        for kind, body in (("qcalc", text), (export, json.dumps({"input": plain}))):
+            out = _strict(call_json(kind, body))
             assert out["ok"] is True or all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
             count += 1
     print(f"\nfuzzed qcalc/export requests: {count}")

@@ -1,7 +1,7 @@
 """Every other entry point under hostile input: the CLI subcommands sweep, batch, trace, header
 and translate, and every request kind of the worker's ``pulab.api.call_json``.
 
-``report`` and ``run_json`` get the 10,000 cases of test_hardening.py; qcalc, export and vendors
+``report`` and its kind get the 10,000 cases of test_hardening.py; qcalc, export and vendors
 requests their own fuzz there and in test_profiles_hardening.py. The contract is the same
 everywhere: exit 0 with strict JSON (or the asked-for text), ``batch`` exit 1 with one stderr
 line per bad row, or exit 2 with one line ``error: FIELD: MESSAGE``; an API reply is strict JSON,
@@ -17,7 +17,7 @@ from collections import Counter
 
 from adversarial import BASE, FIELDS, NASTY_TEXT, NUMBER_LITERALS, _value, cases
 from pulab.__main__ import main
-from pulab.api import KINDS, batch_json, call_json, sweep_json, trace_json
+from pulab.api import KINDS, call_json
 from pulab.profiles import NAMES
 from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
 from test_hardening import _one_line, _strict
@@ -148,13 +148,13 @@ def test_fuzzed_worker_requests_keep_the_api_contract():
         path = ".".join(rng.choice(FIELDS))
         sweep = {"input": rng.choice([PLAIN, _value(rng)]),
                  "x": rng.choice([{"path": path, "start": 1, "stop": 2, "n": 3}, _value(rng)]),
-                 "op": rng.choice(["sweep", "plan", "chunk", "merge", _text(rng)]),
                  rng.choice(["start", "count", "summaries", "profile", "y"]): _value(rng)}
-        seen["sweep", _api_reply(sweep_json(json.dumps(sweep)))] += 1
+        kind = rng.choice(["sweep", "sweep.plan", "sweep.chunk", "sweep.merge", _text(rng)])
+        seen["sweep", _api_reply(call_json(kind, json.dumps(sweep)))] += 1
         csv = f"name,{path}\n{_text(rng)},{_number(rng)}\n"
         batch = {"csv": rng.choice([csv, _value(rng)]), "start": rng.choice([0, 1, -1, _value(rng)]),
                  "count": rng.choice([1, 5, _value(rng)])}
-        seen["batch", _api_reply(batch_json(json.dumps(batch)))] += 1
+        seen["batch", _api_reply(call_json("batch", json.dumps(batch)))] += 1
         trace = {"code": rng.choice(CODE + [_value(rng)]), "target": rng.choice(["c28x", _value(rng)]),
                  "set": rng.choice([{"v": _value(rng)}, _value(rng)]),
                  "global_q": rng.choice([None, 15, _value(rng)]),
@@ -163,7 +163,7 @@ def test_fuzzed_worker_requests_keep_the_api_contract():
         text = json.dumps(trace)
         if rng.random() < 0.1:
             text = '{"set": ' + "[" * 5000 + "]" * 5000 + "}"
-        seen["trace", _api_reply(trace_json(text))] += 1
+        seen["trace", _api_reply(call_json("trace", text))] += 1
     print(f"\nworker request fuzz: {dict(seen)}")
     assert all(seen[k, "error"] > 0 for k in ("sweep", "batch", "trace")), seen
 

@@ -19,7 +19,7 @@ import pytest
 
 from conftest import ROOT, SEED_INPUT, chinese
 from pulab import report
-from pulab.api import run_json
+from pulab.api import call_json
 from pulab.profiles import NAMES, header
 from pulab.profiles.common import mantissa_shift
 from pulab.profiles.translate import translate
@@ -73,7 +73,7 @@ def test_profiles_only_when_asked(seed_input):
 ])
 def test_bad_profile_inputs_name_the_field(seed_input, field, value, message):
     _, name, key = field.split(".")
-    out = json.loads(run_json(json.dumps(_with_profiles(seed_input, {name: {key: value}}))))
+    out = json.loads(call_json("report", json.dumps(_with_profiles(seed_input, {name: {key: value}}))))
     assert out["ok"] is False and out["field"] == field
     if message:
         assert out["message"] == message
@@ -81,7 +81,7 @@ def test_bad_profile_inputs_name_the_field(seed_input, field, value, message):
 
 
 def test_unknown_profile_name_is_refused(seed_input):
-    out = json.loads(run_json(json.dumps(_with_profiles(seed_input, {"infineon": {}}))))
+    out = json.loads(call_json("report", json.dumps(_with_profiles(seed_input, {"infineon": {}}))))
     assert out["field"] == "profiles.infineon"
 
 
@@ -449,7 +449,7 @@ _KEYS = {"ti": ["full_scale_voltage_v", "full_scale_current_a", "global_q", "max
                        st.dictionaries(st.sampled_from(sum(_KEYS.values(), [])), _VALUES,
                                        max_size=3), max_size=3))
 def test_fuzzed_profile_inputs_give_a_report_or_a_chinese_error(section):
-    out = json.loads(run_json(json.dumps({**SEED_INPUT, "profiles": section})))
+    out = json.loads(call_json("report", json.dumps({**SEED_INPUT, "profiles": section})))
     if out["ok"]:
         for w in out["report"]["warnings_zh"]:
             assert chinese(w), w

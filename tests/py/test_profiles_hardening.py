@@ -1,9 +1,10 @@
 """The vendor-profile entry points keep the hardening contract (docs/contract.md).
 
 ``python -m pulab header`` and ``translate`` on the seeded adversarial inputs of
-tests/py/adversarial.py, and ``api.vendors_json`` with hostile ``profiles`` sections and
-translator values: strict JSON / a header, or one printable error line naming a field, with
-Chinese text for every message.
+tests/py/adversarial.py, and the kinds ``vendors.header`` and ``vendors.translate`` of
+``pulab.api.call_json`` with hostile ``profiles`` sections and translator values: strict
+JSON / a header, or one printable error line naming a field, with Chinese text for every
+message.
 """
 import contextlib
 import io
@@ -14,7 +15,7 @@ from collections import Counter
 
 from adversarial import BASE, _value, cases
 from pulab.__main__ import main
-from pulab.api import vendors_json
+from pulab.api import call_json
 from conftest import chinese
 from test_hardening import _check_cli, _one_line, _strict
 
@@ -50,7 +51,7 @@ def test_header_and_translate_cli_on_adversarial_inputs():
     assert seen["header"] > 50 and seen["translate ok"] > 50
 
 
-def test_vendors_json_with_hostile_profiles_and_values():
+def test_vendors_kinds_with_hostile_profiles_and_values():
     rng = random.Random(12)
     seen = Counter()
     plain = {k: v for k, v in BASE.items() if k != "sim"}
@@ -60,15 +61,17 @@ def test_vendors_json_with_hostile_profiles_and_values():
     for _ in range(FUZZ):
         section = rng.choice([_value(rng), {rng.choice(names): _value(rng)},
                               {rng.choice(names): {rng.choice(keys): _value(rng)}}])
-        req = rng.choice([
-            {"input": {**plain, "profiles": section}, "action": "header",
-             "profile": rng.choice(names + [_value(rng)])},
-            {"input": {**plain, "profiles": section}, "action": "translate",
-             "from": rng.choice(names), "axis": rng.choice(["d", "q", _value(rng)]),
-             "values": rng.choice([_value(rng), {"pm_kp": _value(rng), "pm_ki": 4720},
-                                   {"Kp_Iq": rng.choice([1, -1, 2 ** 31, 0.5]), "Ki_Iq": 3}])},
+        kind, req = rng.choice([
+            ("vendors.header", {"input": {**plain, "profiles": section},
+                                "profile": rng.choice(names + [_value(rng)])}),
+            ("vendors.translate", {"input": {**plain, "profiles": section},
+                                   "from": rng.choice(names),
+                                   "axis": rng.choice(["d", "q", _value(rng)]),
+                                   "values": rng.choice([
+                                       _value(rng), {"pm_kp": _value(rng), "pm_ki": 4720},
+                                       {"Kp_Iq": rng.choice([1, -1, 2 ** 31, 0.5]), "Ki_Iq": 3}])}),
         ])
-        out = _strict(vendors_json(json.dumps(req)))
+        out = _strict(call_json(kind, json.dumps(req)))
         if out["ok"]:
             seen["ok"] += 1
             continue
@@ -77,5 +80,5 @@ def test_vendors_json_with_hostile_profiles_and_values():
         assert all(_one_line(out[k]) for k in ("field", "message", "message_zh")), out
         assert chinese(out["message_zh"]), out
         seen["error"] += 1
-    print(f"\nvendors_json fuzz: {dict(seen)}")
+    print(f"\nvendors fuzz: {dict(seen)}")
     assert seen["error"] > 500

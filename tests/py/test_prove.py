@@ -9,7 +9,7 @@ import sys
 import pytest
 
 from pulab import report
-from pulab.api import prove_json
+from pulab.api import call_json
 from pulab.analyses.prove import prove
 from pulab.schema.errors import InputError
 
@@ -157,13 +157,13 @@ def test_cli_bad_request_is_one_line_and_exit_2(tmp_path, args, line):
 
 def test_api_by_integer_then_summary_equals_the_whole_proof():
     req = {"input": SEED, "ranges": {"motor.rated_current_a": [1, 100]}}
-    whole = json.loads(prove_json(json.dumps(req)))["proof"]
-    plan = json.loads(prove_json(json.dumps({**req, "op": "plan"})))["plan"]
-    entries = {n: json.loads(prove_json(json.dumps({**req, "op": "integer", "name": n})))["integer"]
+    whole = json.loads(call_json("prove", json.dumps(req)))["proof"]
+    plan = json.loads(call_json("prove.plan", json.dumps(req)))["plan"]
+    entries = {n: json.loads(call_json("prove.integer", json.dumps({**req, "name": n})))["integer"]
                for n in plan["names"]}
-    merged = json.loads(prove_json(json.dumps({**req, "op": "summary", "integers": entries})))
+    merged = json.loads(call_json("prove.summary", json.dumps({**req, "integers": entries})))
     assert merged["proof"] == whole
-    err = json.loads(prove_json(json.dumps({**req, "op": "integer", "name": "vendor.X"})))
+    err = json.loads(call_json("prove.integer", json.dumps({**req, "name": "vendor.X"})))
     assert err["ok"] is False and err["field"] == "prove.name"
 
 

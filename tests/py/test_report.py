@@ -10,7 +10,7 @@ from hypothesis import given, settings, strategies as st
 
 from conftest import ROOT, SEED_INPUT, chinese
 from pulab import InputError, report
-from pulab.api import qcalc_json
+from pulab.api import call_json
 
 
 def test_seed_bases_and_per_unit(seed_input):
@@ -204,7 +204,7 @@ def test_integers_method_needs_both(seed_input):
     ({"format": "UQ0.16", "value": -0.1}, 0, "UQ0.16"),
 ])
 def test_qcalc(req, raw, name):
-    out = json.loads(qcalc_json(json.dumps(req)))
+    out = json.loads(call_json("qcalc", json.dumps(req)))
     assert (out["result"]["raw"], out["format"]["name"]) == (raw, name)
 
 
@@ -214,5 +214,5 @@ def test_qcalc(req, raw, name):
     ({"format": "Q15", "word_bits": 1.5, "value": 1.0}, "qcalc.word_bits", "must be an integer"),
 ])
 def test_qcalc_errors(req, field, text):
-    out = json.loads(qcalc_json(json.dumps(req)))
+    out = json.loads(call_json("qcalc", json.dumps(req)))
     assert out["ok"] is False and out["field"] == field and out["message"].startswith(text)

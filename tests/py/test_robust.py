@@ -15,7 +15,7 @@ import sys
 import pytest
 
 import pulab
-from pulab.api import run_json
+from pulab.api import call_json
 from pulab.schema.errors import InputError
 from pulab.analyses.loop import robust
 from conftest import chinese
@@ -309,7 +309,7 @@ def test_cli_study_progress_on_stderr(tmp_path):
 def test_errors_have_chinese(value):
     inp = copy.deepcopy(SEED)
     inp["analysis"]["robust"] = value
-    r = json.loads(run_json(json.dumps(inp)))
+    r = json.loads(call_json("report", json.dumps(inp)))
     assert r["ok"] is False and r["field"].startswith("analysis.robust"), r
     assert any("\u4e00" <= ch <= "\u9fff" for ch in r["message_zh"]), r
 

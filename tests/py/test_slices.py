@@ -1,4 +1,4 @@
-"""pulab.analyses.slices: the stepped report (run_json_steps) is the report, cut into slices
+"""pulab.analyses.slices: the stepped report (``call_json_steps("report", …)``) is the report, cut into slices
 that can be cancelled."""
 
 import json
@@ -12,7 +12,7 @@ SEED = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz"
 
 
 def _slices(text: str) -> tuple:
-    gen = api.run_json_steps(text)
+    gen = api.call_json_steps("report", text)
     count = 0
     while True:
         try:
@@ -22,30 +22,30 @@ def _slices(text: str) -> tuple:
         count += 1
 
 
-def test_seed_with_sim_sliced_same_text_as_run_json():
+def test_seed_with_sim_sliced_same_text_as_call_json():
     text = json.dumps({**SEED, "sim": {"current": {"duration_s": 0.05}, "pll": {"duration_s": 0.5}}})
     count, out = _slices(text)
     # 500 + 5000 periods: at least one yield per SLICE_STEPS periods of the PLL's four variants.
     assert count >= 4 * (5000 // SLICE_STEPS)
-    assert out == api.run_json(text)
+    assert out == api.call_json("report", text)
     assert json.loads(out)["ok"] is True
 
 
 def test_report_without_sim_no_slices():
     count, out = _slices(json.dumps(SEED))
     assert count == 0
-    assert out == api.run_json(json.dumps(SEED))
+    assert out == api.call_json("report", json.dumps(SEED))
 
 
-def test_bad_sim_field_error_named_like_run_json():
+def test_bad_sim_field_error_named_like_call_json():
     text = json.dumps({**SEED, "sim": {"current": {"duration_s": -1}}})
     count, out = _slices(text)
-    assert out == api.run_json(text)
+    assert out == api.call_json("report", text)
     assert json.loads(out)["field"] == "sim.current.duration_s"
 
 
 def test_closed_mid_simulation_stops_without_result():
-    gen = api.run_json_steps(json.dumps({**SEED, "sim": {"pll": {"duration_s": 5.0}}}))
+    gen = api.call_json_steps("report", json.dumps({**SEED, "sim": {"pll": {"duration_s": 5.0}}}))
     next(gen)
     next(gen)
     gen.close()  # GeneratorExit is not swallowed: the computation ends here

@@ -14,7 +14,7 @@ import pytest
 
 from conftest import ROOT, SEED_INPUT, chinese
 from pulab import InputError
-from pulab.api import sweep_json
+from pulab.api import call_json
 from pulab.analyses.sweep import chunk, make_plan, merge, sweep
 
 sys.path.insert(0, str(ROOT / "tests/oracle"))
@@ -199,15 +199,16 @@ def test_2d_boundaries_along_x_match_the_oracle_on_every_row():
       "y": {"path": "motor.ld_h", "start": 1, "stop": 2, "n": 1000}}, "sweep"),
     ({"input": SEED_INPUT, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2},
       "profile": "infineon"}, "sweep.profile"),  # nxp is a profile
-    ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "op": "chunk",
-      "start": 500}, "sweep.chunk.start"),
-    ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "op": "merge",
-      "summaries": [{"boundaries": [1]}]}, "sweep.summaries"),
-    ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "op": "fly"},
-     "sweep.op"),
+    ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "start": 500,
+      "kind": "sweep.chunk"}, "sweep.chunk.start"),
+    ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2},
+      "summaries": [{"boundaries": [1]}], "kind": "sweep.merge"}, "sweep.summaries"),
+    ({"input": {}, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2}, "kind": "sweep.fly"},
+     "kind"),
 ])
 def test_bad_requests_name_the_field_in_both_languages(req, field):
-    out = json.loads(sweep_json(json.dumps(req)))
+    req = dict(req)
+    out = json.loads(call_json(req.pop("kind", "sweep"), json.dumps(req)))
     assert out["ok"] is False and out["field"] == field, out
     assert chinese(out["message_zh"]), out["message"]
 
@@ -215,13 +216,13 @@ def test_bad_requests_name_the_field_in_both_languages(req, field):
 def test_api_chunks_report_progress_and_merge():
     req = {"input": SEED_INPUT, "x": {"path": "motor.rated_current_a", "start": 1,
                                       "stop": 200, "n": 100}}
-    plan = json.loads(sweep_json(json.dumps({**req, "op": "plan"})))["plan"]
+    plan = json.loads(call_json("sweep.plan", json.dumps(req)))["plan"]
     assert plan["total"] == 100 and plan["names"][1] == "vendor.LD"
-    parts = [json.loads(sweep_json(json.dumps({**req, "op": "chunk", "start": a, "count": 25})))
+    parts = [json.loads(call_json("sweep.chunk", json.dumps({**req, "start": a, "count": 25})))
              ["chunk"] for a in range(0, 100, 25)]
-    merged = json.loads(sweep_json(json.dumps(
-        {**req, "op": "merge", "summaries": [p["summary"] for p in parts]})))["summary"]
-    whole = json.loads(sweep_json(json.dumps(req)))["sweep"]["summary"]
+    merged = json.loads(call_json("sweep.merge", json.dumps(
+        {**req, "summaries": [p["summary"] for p in parts]})))["summary"]
+    whole = json.loads(call_json("sweep", json.dumps(req)))["sweep"]["summary"]
     assert merged == whole
     # The worst case of LD opens as a motor: its input gives the report's state.
     w = next(w for w in whole["worst"] if w["name"] == "vendor.LD")
@@ -304,8 +305,8 @@ def test_another_profile_is_swept_through_the_report(monkeypatch):
 @pytest.mark.parametrize("inp", [{"motor": 5}, {"motor": None}, {"raw": []}, {"drive": "x"},
                                  {"motor": {"rated_current_a": "abc"}}, {"sim": 3}, {"x": {}}])
 def test_hostile_inputs_become_invalid_points_never_exceptions(inp):
-    for op in ("sweep", "chunk"):
-        out = json.loads(sweep_json(json.dumps({"input": inp, "op": op, "x": {
+    for kind in ("sweep", "sweep.chunk"):
+        out = json.loads(call_json(kind, json.dumps({"input": inp, "x": {
             "path": "motor.rated_current_a", "start": 1, "stop": 2, "n": 3}})))
         assert out["ok"] is True
         pts = (out.get("sweep") or out["chunk"])["points"]

@@ -2,7 +2,7 @@
 import pytest
 
 from pulab import InputError
-from pulab.api import qcalc
+from pulab.qcalc import qcalc
 from pulab.schema.textnum import parse_int, parse_real, si_text
 
 

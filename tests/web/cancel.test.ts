@@ -22,9 +22,9 @@ beforeAll(async () => {
 }, 120_000);
 
 describe('cancelling a running simulation (worker logic on Pyodide)', () => {
-  it('stepped run_json_steps → the same JSON text as run_json (seed with sim)', () => {
+  it('stepped call_json_steps → the same JSON text as call_json (seed with sim)', () => {
     const text = JSON.stringify(SMALL);
-    const gen = (p.py.pyimport('pulab.api') as Record<string, (t: string) => { next(): { done?: boolean; value?: unknown }; destroy(): void }>).run_json_steps(text);
+    const gen = (p.py.pyimport('pulab.api') as Record<string, (kind: string, t: string) => { next(): { done?: boolean; value?: unknown }; destroy(): void }>).call_json_steps('report', text);
     let r = gen.next();
     let slices = 1;
     while (!r.done) {
@@ -64,7 +64,7 @@ describe('cancelling a running simulation (worker logic on Pyodide)', () => {
   }, 300_000);
 
   it('the longest slice of the worst simulation in Pyodide, printed (the cancel latency bound)', () => {
-    const gen = (p.py.pyimport('pulab.api') as Record<string, (t: string) => { next(): { done?: boolean; value?: unknown }; destroy(): void }>).run_json_steps(JSON.stringify(WORST));
+    const gen = (p.py.pyimport('pulab.api') as Record<string, (kind: string, t: string) => { next(): { done?: boolean; value?: unknown }; destroy(): void }>).call_json_steps('report', JSON.stringify(WORST));
     const slices: number[] = [];
     let t = performance.now();
     const t0 = t;

@@ -1,5 +1,5 @@
 // Every golden loop analysis (tests/golden/loop/*.json, made by the python-control oracle
-// tests/oracle/loop_oracle.py) through pulab.api.run_json in Pyodide/Node, with the rules of
+// tests/oracle/loop_oracle.py) through pulab.api.call_json("report", …) in Pyodide/Node, with the rules of
 // tests/py/test_loop.py: numbers to 1e-6 relative (+1e-9), poles matched as complex numbers,
 // Bode samples compared as complex L(e^{jωTs}) (so a 360° unwrap difference does not count).
 import { describe, it, expect, beforeAll } from 'vitest';

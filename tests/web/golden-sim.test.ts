@@ -1,5 +1,5 @@
 // Every golden simulation trajectory (tests/golden/sim/*.json, made by the independent numpy
-// oracle tests/oracle/sim_oracle.py) through pulab.api.run_json in Pyodide/Node. The tolerance
+// oracle tests/oracle/sim_oracle.py) through pulab.api.call_json("report", …) in Pyodide/Node. The tolerance
 // rules travel with each file ("compare"), the same rules tests/py/test_sim.py applies.
 import { describe, it, expect, beforeAll } from 'vitest';
 import { readdirSync, readFileSync, existsSync } from 'node:fs';

@@ -1,5 +1,5 @@
 // Every golden vector (tests/golden/*.json, made by the independent oracle) through
-// pulab.api.run_json in Pyodide/Node, booted the way the web worker boots it.
+// pulab.api.call_json("report", …) in Pyodide/Node, booted the way the web worker boots it.
 import { describe, it, expect, beforeAll } from 'vitest';
 import { readdirSync, readFileSync, existsSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -19,7 +19,7 @@ beforeAll(async () => {
   pulab = await bootPulab();
 });
 
-describe('golden vectors through pulab.api.run_json in Pyodide', () => {
+describe('golden vectors through pulab.api.call_json("report", …) in Pyodide', () => {
   it('finds golden files in tests/golden', () => {
     expect(files.length, 'no tests/golden/*.json found').toBeGreaterThan(0);
   });

@@ -10,7 +10,7 @@ import { fileURLToPath } from 'node:url';
 import { loadPyodide } from 'pyodide';
 import { bootPulab, INDEX_URL, type NodePulab } from './pulab-node';
 import { compareGolden, parseJsonExact } from './json-exact';
-import { REPO, runJsonCPython, seedKey } from '../../web/build/prerender';
+import { REPO, reportCPython, seedKey } from '../../web/build/prerender';
 import { SNAPSHOT_MAX_BYTES, makeSnapshot, pulabFiles } from '../../web/build/snapshot';
 import { createRuntimeHost, fastOrFull, idleTimeout, type PyodideLike, type PyodideLoader } from '../../web/src/worker-logic';
 import { PULAB_FILES } from '../../web/src/pysources';
@@ -26,10 +26,10 @@ beforeAll(async () => {
   p = await bootPulab();
 });
 
-describe('prerendered report = Pyodide report (text of pulab.api.run_json)', () => {
+describe('prerendered report = Pyodide report (text of pulab.api.call_json("report", …))', () => {
   it('seed input (the report the build paints): identical text', () => {
     const key = seedKey();
-    const cpython = runJsonCPython(key);
+    const cpython = reportCPython(key);
     expect(JSON.parse(cpython).report.vendor.Rpm.value).toBe(15022);
     expect(p.raw('report', key)).toBe(cpython);
   });
@@ -38,7 +38,7 @@ describe('prerendered report = Pyodide report (text of pulab.api.run_json)', () 
   // Pyodide's musl (07_mv690: 4.160194652289562 vs …533).
   it.each(goldenKeys)('%s: same report (floats to 1e-12)', (_f, key) => {
     const live = parseJsonExact(p.raw('report', key));
-    const built = parseJsonExact(runJsonCPython(key));
+    const built = parseJsonExact(reportCPython(key));
     expect(compareGolden(built, live)).toEqual([]);
     expect(compareGolden(live, built)).toEqual([]);
   });
@@ -47,7 +47,7 @@ describe('prerendered report = Pyodide report (text of pulab.api.run_json)', () 
 describe('memory snapshot (build time) and its fallback', () => {
   it('is made, fits the size cap, loads back and answers as CPython; a worker boots from it', async () => {
     const key = seedKey();
-    const expected = runJsonCPython(key);
+    const expected = reportCPython(key);
     const r = await makeSnapshot(INDEX_URL, pulabFiles(REPO), key, expected);
     if (!r.ok) throw new Error(r.reason);
     expect(r.bytes.length).toBeLessThanOrEqual(SNAPSHOT_MAX_BYTES);
@@ -60,7 +60,7 @@ describe('memory snapshot (build time) and its fallback', () => {
     const got = await bootHost(async () => (await loadPyodide({ indexURL: INDEX_URL, _loadSnapshot: junk })) as unknown as PyodideLike);
     expect(got.ready).toMatchObject({ type: 'ready', from: 'full' });
     expect((got.ready as { note?: string }).note).toMatch(/snapshot refused/);
-    expect(got.result).toBe(asPosted(runJsonCPython(seedKey())));
+    expect(got.result).toBe(asPosted(reportCPython(seedKey())));
   }, 120_000);
   it('no snapshot in the build → a full boot', async () => {
     const r = await fastOrFull(null, async () => fakePy());

@@ -9,7 +9,7 @@ import type { PanelContext } from '../../web/src/panels/panel';
 import { execFileSync } from 'node:child_process';
 
 /** CPython's report of `input` (happy-dom cannot load the build's own helper). */
-const report = (input: Input) => JSON.parse(execFileSync('python3', ['-c', 'import sys, pulab.api as a; print(a.run_json(sys.stdin.read()))'],
+const report = (input: Input) => JSON.parse(execFileSync('python3', ['-c', 'import sys, pulab.api as a; print(a.call_json("report", sys.stdin.read()))'],
   { input: reportKey(input), env: { ...process.env, PYTHONPATH: 'py' } }).toString()).report;
 const ctxFor = (input: Input): PanelContext => ({
   report: report(input), simReport: null, simError: null, input, client: null, embed: false,

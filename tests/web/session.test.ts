@@ -8,11 +8,11 @@ import { SEED_INPUT, clone, encodeHash, reportKey, type Input } from '../../web/
 import { effectiveInput } from '../../web/src/fields';
 import type { ApiResult, MainToWorker } from '../../web/src/protocol';
 import type { Report } from '../../web/src/report-types';
-import { runJsonCPython } from '../../web/build/prerender';
+import { reportCPython } from '../../web/build/prerender';
 
-/** The seed's real reply (CPython's pulab.api.run_json, as the prerender makes it). */
-const REPLY: ApiResult = JSON.parse(runJsonCPython(reportKey(SEED_INPUT)));
-const REPORT: Report = JSON.parse(runJsonCPython(reportKey(SEED_INPUT))).report;
+/** The seed's real reply (CPython's pulab.api.call_json("report", …), as the prerender makes it). */
+const REPLY: ApiResult = JSON.parse(reportCPython(reportKey(SEED_INPUT)));
+const REPORT: Report = JSON.parse(reportCPython(reportKey(SEED_INPUT))).report;
 
 function fakeEnv(hash = '', known: Record<string, Report> = {}) {
   const log = { hashes: [] as string[], stored: [] as string[], sources: [] as string[], kept: [] as string[] };

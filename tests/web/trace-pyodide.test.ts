@@ -9,7 +9,7 @@ m_Ulong = ((Long)BemfVolt <<12) / (Voltage *10); //Q12
 long out = _IQmpy(-3, 5);
 `;
 
-describe('trace_json in Pyodide', () => {
+describe('the trace kind in Pyodide', () => {
   const cases: [string, number, number][] = [
     // 6554*10 = 65540 wraps to 4 in 16-bit unsigned int: 120<<12 / 4 = 122880; on arm / 65540 = 7
     ['c28x', 122880, -1],

@@ -39,7 +39,7 @@ beforeAll(async () => {
   pulab = await bootPulab();
 });
 
-describe('profiles golden vectors through pulab.api.run_json in Pyodide', () => {
+describe('profiles golden vectors through pulab.api.call_json("report", …) in Pyodide', () => {
   it('finds the oracle files', () => expect(files.length).toBeGreaterThanOrEqual(5));
   for (const f of files) {
     it(f, () => {

@@ -1,6 +1,6 @@
 // Build time: the default (seed) report computed by the same pulab code in CPython, so the page
 // paints numbers before Python has started in the browser (issue 8). The page recognises the
-// input by its key: the exact JSON text its worker would hand to pulab.api.run_json.
+// input by its key: the exact JSON text its worker would hand to pulab.api.call_json("report", …).
 import { execFileSync } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -20,9 +20,9 @@ export function python(): string {
   return process.env.PULAB_PYTHON ?? (existsSync(venv) ? venv : 'python3');
 }
 
-/** pulab.api.run_json(key) in CPython: the exact text the worker's Pyodide returns for `key`. */
-export function runJsonCPython(key: string): string {
-  return execFileSync(python(), ['-c', 'import sys; from pulab.api import run_json; sys.stdout.write(run_json(sys.stdin.read()))'], {
+/** pulab.api.call_json("report", key) in CPython: the exact text the worker's Pyodide returns for `key`. */
+export function reportCPython(key: string): string {
+  return execFileSync(python(), ['-c', 'import sys; from pulab.api import call_json; sys.stdout.write(call_json("report", sys.stdin.read()))'], {
     cwd: REPO, env: { ...process.env, PYTHONPATH: resolve(REPO, 'py') }, input: key,
   }).toString();
 }

@@ -41,16 +41,16 @@ export function pulabFiles(repo: string): Record<string, string> {
 function warm(key: string): string {
   return `import json, pulab, pulab.api, pulab.analyses.sim, pulab.export, pulab.analyses.loop, pulab.profiles, pulab.ctrace, pulab.analyses.sweep, pulab.analyses.batch
 seed = json.loads(${JSON.stringify(key)})
-pulab.api.run_json(json.dumps(seed))
-pulab.api.run_json(json.dumps({**seed, "profiles": {}, "analysis": {}}))
-pulab.api.trace_examples_json()`;
+pulab.api.call_json("report", json.dumps(seed))
+pulab.api.call_json("report", json.dumps({**seed, "profiles": {}, "analysis": {}}))
+pulab.api.call_json("trace.examples", "{}")`;
 }
 
 export type SnapshotResult = { ok: true; bytes: Uint8Array; ms: number } | { ok: false; reason: string };
 
 /**
  * Make the snapshot in Node and verify it: loaded back, it must give `expected` (the CPython
- * text of pulab.api.run_json(key)) for `key`.
+ * text of pulab.api.call_json("report", key)) for `key`.
  */
 export async function makeSnapshot(indexURL: string, files: Record<string, string>, key: string, expected: string): Promise<SnapshotResult> {
   if (version !== SNAPSHOT_PYODIDE_VERSION) return { ok: false, reason: `pyodide ${version} is not ${SNAPSHOT_PYODIDE_VERSION}, the version the snapshot code was checked with` };
@@ -64,8 +64,8 @@ export async function makeSnapshot(indexURL: string, files: Record<string, strin
   try {
     const back = (await loadPyodide({ indexURL, _loadSnapshot: bytes })) as unknown as PyodideLike;
     writePulab(back, files);
-    const api = back.pyimport('pulab.api') as { run_json(text: string): string };
-    const got = api.run_json(key);
+    const api = back.pyimport('pulab.api') as { call_json(kind: string, text: string): string };
+    const got = api.call_json('report', key);
     if (got !== expected) return { ok: false, reason: 'the snapshot gives another report than CPython' };
   } catch (e) {
     return { ok: false, reason: `the snapshot does not load back: ${e instanceof Error ? e.message : String(e)}` };

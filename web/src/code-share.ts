@@ -77,7 +77,7 @@ export function prefill(inputs: string[], report: unknown): Record<string, { val
   return out;
 }
 
-/** The request for pulab.api.trace_json: typed values win over the report's. */
+/** The request of the trace kind of pulab.api.call_json: typed values win over the report's. */
 export function traceRequest(s: CodeState, target: string, inputs: string[], report: unknown): { code: string; target: string; set: Record<string, string | number>; entry?: string } {
   const set: Record<string, string | number> = {};
   const fromReport = prefill(inputs, report);

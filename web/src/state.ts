@@ -122,7 +122,7 @@ export function reportInput(inp: Input): Input {
   return out;
 }
 
-/** The JSON text the worker hands to pulab.api.run_json for `input`: the identity of a report. */
+/** The JSON text the worker hands to pulab.api.call_json("report", …) for `input`: the identity of a report. */
 export function reportKey(inp: Input): string {
   return JSON.stringify(reportInput(effectiveInput(inp)));
 }

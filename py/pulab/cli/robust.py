@@ -97,7 +97,7 @@ def run_study(tasks: list, jobs: int = 1, scheduler: str | None = None,
         try:
             from dask.distributed import Client, as_completed
         except ImportError:
-            raise InputError("--scheduler", "needs Dask: pip install 'pulab[dask]'") from None
+            raise InputError("--scheduler", code="cli_needs_dask") from None
         with Client(scheduler) as client:
             futures = client.map(run_task, tasks, pure=False)
             index = {f.key: k for k, f in enumerate(futures)}
@@ -123,17 +123,17 @@ def _run(args) -> int:
     from .family import read_json, read_text
     try:
         if args.jobs < 1:
-            raise InputError("--jobs", f"must be ≥ 1, got {args.jobs}")
+            raise InputError("--jobs", code="at_least", lo=1, got=args.jobs)
         if args.catalogue is None:
             if args.input is None:
-                raise InputError("input", "an input JSON file is required (or --catalogue)")
+                raise InputError("input", code="cli_input_or_catalogue")
             from .. import report
             inp = read_json(args.input)
             if not isinstance(inp, dict):
-                raise InputError("input", "must be a JSON object")
+                raise InputError("input", code="not_json_object")
             analysis = inp.get("analysis") or {}
             if not isinstance(analysis, dict):
-                raise InputError("analysis", "must be an object")
+                raise InputError("analysis", code="object_required")
             if analysis.get("robust") is None:
                 inp = {**inp, "analysis": {**analysis, "robust": {}}}
             out = report(inp)["loop"]["robust"]
@@ -141,7 +141,7 @@ def _run(args) -> int:
             sys.stdout.write("\n")
             return 0
         if args.samples < 0:
-            raise InputError("--samples", f"must be ≥ 0, got {args.samples}")
+            raise InputError("--samples", code="at_least", lo=0, got=args.samples)
         analysis = {"robust": {}}
         if args.input is not None:
             inp = read_json(args.input)

@@ -38,7 +38,7 @@ from ..fixedpoint.cint import CType, convert, trunc_div
 from ..fixedpoint.interval import ICInt
 from .check import VOID
 from .errors import TraceError
-from .evaluate import MAX_STEPS, Evaluator, _Jump, _Return
+from .evaluate import Evaluator, _Jump, _Return
 from .parser import Binary, Cast, Cond, If, Label, Logical, Member, Num, Unary, Var
 
 __all__ = ["BoxEvaluator", "Split", "FAILURES", "decide"]
@@ -242,14 +242,11 @@ class BoxEvaluator(Evaluator):
     def statement(self, s) -> None:
         outer, self.current = self.current, s
         try:
-            if type(s) is If:
-                self.branch(s)
-            else:
-                super().statement(s)
+            super().statement(s)
         except TraceError as e:
             if e.field.startswith("set."):
                 raise  # an input without a value or range: bad input, not a failure
-            code = (e.params or {}).get("reason", {}).get("code")
+            code = e.reason_error()["code"]
             if code == "trace_steps":
                 raise Split() from None  # a loop the box does not bound: smaller boxes may
             self.current = s
@@ -279,10 +276,7 @@ class BoxEvaluator(Evaluator):
         self.mem = _join([m for _, m in outs])
         return [v for v, _ in outs]
 
-    def branch(self, s: If) -> None:
-        self.count += 1
-        if self.count > MAX_STEPS:
-            self.too_long(s)
+    def visit_If(self, s: If) -> None:
         v = self.eval(s.test)
         d = decide(v)
         taken = ICInt(0, 1, self.int) if d is None else _point(int(d), self.int)
@@ -295,7 +289,7 @@ class BoxEvaluator(Evaluator):
         elif s.other is not None:
             self.statement(s.other)
 
-    def switch(self, s) -> None:
+    def visit_Switch(self, s) -> None:
         """Every label the test's interval can reach runs on its own copy of memory (a plain
         variable tested is narrowed to the label's value), and so does ``default`` (or
         nothing, without one) when some value has no label; the memories are joined."""

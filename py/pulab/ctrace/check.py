@@ -36,9 +36,9 @@ from ..fixedpoint.cint import CType
 from .errors import TraceError
 from .macro_entry import entry_macros
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
-                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Node, Num,
-                     Program, Ptr, Return, Stmt, StructDef, Switch, Unary, Unsupported, Var,
-                     constant_value, IQ_FUNCTIONS)
+                     If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
+                     NodeVisitor, Program, Ptr, Return, StructDef, Switch, Unary, Unsupported,
+                     Var, constant_value, IQ_FUNCTIONS)
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
@@ -250,7 +250,7 @@ def _flat_name(e) -> str | None:
     return None
 
 
-class _Checker:
+class _Checker(NodeVisitor):
     def __init__(self, program: Program, target: Target) -> None:
         self.program = program
         self.target = target
@@ -369,77 +369,81 @@ class _Checker:
         return self.scopes[0].get(name)
 
     # -- statements
-    def statement(self, s) -> None:
-        if isinstance(s, Decl):
-            for var, init, desc in s.items:
-                if isinstance(desc, Arr) and desc.size is None and isinstance(init, InitList):
-                    desc = Arr(desc.of, Num(len(init.items), str(len(init.items))))
-                ctype = self.resolve(desc, s if isinstance(desc, str) else var)
-                if init is not None:
-                    self.initializer(init, ctype)
-                sym = self.declare(var.name, s.type_name, ctype, init is not None, var)
-                var.ctype = ctype
-                var.sym = sym
-        elif isinstance(s, ExprStmt):
-            self.expr(s.expr, void_ok=True)
-        elif isinstance(s, If):
+    def visit_Decl(self, s: Decl) -> None:
+        for var, init, desc in s.items:
+            if isinstance(desc, Arr) and desc.size is None and isinstance(init, InitList):
+                desc = Arr(desc.of, Num(len(init.items), str(len(init.items))))
+            ctype = self.resolve(desc, s if isinstance(desc, str) else var)
+            if init is not None:
+                self.initializer(init, ctype)
+            sym = self.declare(var.name, s.type_name, ctype, init is not None, var)
+            var.ctype = ctype
+            var.sym = sym
+
+    def visit_ExprStmt(self, s: ExprStmt) -> None:
+        self.expr(s.expr, void_ok=True)
+
+    def visit_If(self, s: If) -> None:
+        self.scalar(s.test)
+        self.visit(s.then)
+        if s.other is not None:
+            self.visit(s.other)
+
+    def visit_Loop(self, s: Loop) -> None:
+        self.scopes.append({})
+        if s.init is not None:
+            self.visit(s.init)
+        if s.test is not None:
             self.scalar(s.test)
-            self.statement(s.then)
-            if s.other is not None:
-                self.statement(s.other)
-        elif isinstance(s, Loop):
-            self.scopes.append({})
-            if s.init is not None:
-                self.statement(s.init)
-            if s.test is not None:
-                self.scalar(s.test)
-            if s.step is not None:
-                self.expr(s.step, void_ok=True)
-            self.statement(s.body)
-            self.scopes.pop()
-        elif isinstance(s, Return):
-            f = self.function
-            if f.ret is VOID:
-                if s.value is not None:
-                    raise TraceError(s.line, s.column, code="trace_return_void_value", name=f.name)
-            elif s.value is None:
-                raise TraceError(s.line, s.column, code="trace_return_no_value", name=f.name)
-            elif isinstance(f.ret, PtrT):
-                vt = self.expr(s.value)
-                if not _accepts(f.ret, vt):
-                    raise TraceError(s.value.line, s.value.column, code="trace_return_type",
-                                     name=f.name, ret=describe(f.ret), got=describe(vt))
-            elif isinstance(f.ret, StructT):
-                vt = self.expr(s.value)
-                if vt is not f.ret:
-                    raise TraceError(s.value.line, s.value.column, code="trace_return_type",
-                                     name=f.name, ret=describe(f.ret), got=describe(vt))
-            else:
-                self.scalar(s.value)
-        elif isinstance(s, Switch):
-            self.scalar(s.test)
-            seen: dict = {}
-            for inner in s.body.statements:
-                if isinstance(inner, Label):
-                    k = None if inner.value is None else constant_value(inner.value,
-                                                                        "trace_const_case")
-                    if k in seen:
-                        prev = seen[k]
-                        raise TraceError(inner.line, inner.column, code="trace_case_twice",
-                                         at=f"{prev.line}:{prev.column}")
-                    seen[k] = inner
-                    inner.value_int = k
-            self.statement(s.body)
-        elif isinstance(s, Label):
-            if not hasattr(s, "value_int"):
-                raise TraceError(s.line, s.column, code="trace_case_nested")
-        elif isinstance(s, Jump):
-            pass
+        if s.step is not None:
+            self.expr(s.step, void_ok=True)
+        self.visit(s.body)
+        self.scopes.pop()
+
+    def visit_Return(self, s: Return) -> None:
+        f = self.function
+        if f.ret is VOID:
+            if s.value is not None:
+                raise TraceError(s.line, s.column, code="trace_return_void_value", name=f.name)
+        elif s.value is None:
+            raise TraceError(s.line, s.column, code="trace_return_no_value", name=f.name)
+        elif isinstance(f.ret, PtrT):
+            vt = self.expr(s.value)
+            if not _accepts(f.ret, vt):
+                raise TraceError(s.value.line, s.value.column, code="trace_return_type",
+                                 name=f.name, ret=describe(f.ret), got=describe(vt))
+        elif isinstance(f.ret, StructT):
+            vt = self.expr(s.value)
+            if vt is not f.ret:
+                raise TraceError(s.value.line, s.value.column, code="trace_return_type",
+                                 name=f.name, ret=describe(f.ret), got=describe(vt))
         else:
-            self.scopes.append({})
-            for inner in s.statements:
-                self.statement(inner)
-            self.scopes.pop()
+            self.scalar(s.value)
+
+    def visit_Switch(self, s: Switch) -> None:
+        self.scalar(s.test)
+        seen: dict = {}
+        for inner in s.body.statements:
+            if isinstance(inner, Label):
+                k = None if inner.value is None else constant_value(inner.value,
+                                                                    "trace_const_case")
+                if k in seen:
+                    prev = seen[k]
+                    raise TraceError(inner.line, inner.column, code="trace_case_twice",
+                                     at=f"{prev.line}:{prev.column}")
+                seen[k] = inner
+                inner.value_int = k
+        self.visit(s.body)
+
+    def visit_Label(self, s: Label) -> None:
+        if not hasattr(s, "value_int"):
+            raise TraceError(s.line, s.column, code="trace_case_nested")
+
+    def visit_Block(self, s: Block) -> None:
+        self.scopes.append({})
+        for inner in s.statements:
+            self.visit(inner)
+        self.scopes.pop()
 
     def initializer(self, init, t) -> None:
         if isinstance(init, InitList):
@@ -650,7 +654,7 @@ class _Checker:
         self.function = f
         self.scopes += [f.scope, {}]
         for s in f.node.body.statements:
-            self.statement(s)
+            self.visit(s)
         del self.scopes[-2:]
         self.function = None
 
@@ -930,7 +934,7 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
                                if not isinstance(s, Block)):
             raise InputError("entry", code="trace_choose_entry", known=", ".join(entries))
     for s in program.statements:
-        c.statement(s)
+        c.visit(s)
     for name, node in program.functions.items():
         c.functions[name] = Function(node, "" if name == entry else f"{name}:")
     for f in c.functions.values():
@@ -1049,29 +1053,28 @@ def pointee(p: Symbol) -> tuple:
     return path, t.to, path
 
 
+class _Casts(NodeVisitor):
+    """The types a parameter ``param`` is cast to, ``(T *)param``, collected in ``seen``."""
+
+    def __init__(self, param) -> None:
+        self.param, self.seen = param, set()
+
+    def visit_Cast(self, node: Cast) -> None:
+        if isinstance(node.operand, Var) and getattr(node.operand, "sym", None) is self.param \
+                and isinstance(node.ctype, PtrT):
+            self.seen.add(node.ctype.to)
+        self.generic_visit(node)
+
+
 def _handles(f: Function, roots: dict) -> None:
     """An entry parameter that is an opaque handle (``void *`` or a pointer to a struct never
     defined) points to an object of the type the entry casts it to: ``(PI_Obj *)handle``."""
     for p in f.params:
         if not (isinstance(p.ctype, PtrT) and p.ctype.to is VOID):
             continue
-        seen: set = set()
-
-        def walk(node):
-            if isinstance(node, Cast) and isinstance(node.operand, Var) and \
-                    getattr(node.operand, "sym", None) is p and isinstance(node.ctype, PtrT):
-                seen.add(node.ctype.to)
-            for name in getattr(node, "__slots__", ()):
-                child = getattr(node, name, None)
-                for item in (child if isinstance(child, list) else [child]):
-                    if isinstance(item, tuple):
-                        for x in item:
-                            if isinstance(x, (Node, Stmt)):
-                                walk(x)
-                    elif isinstance(item, (Node, Stmt)):
-                        walk(item)
-
-        walk(f.node.body)
+        casts = _Casts(p)
+        casts.visit(f.node.body)
+        seen = casts.seen
         if len(seen) != 1:
             raise TraceError(p.line, p.column, code="trace_opaque_entry", name=p.name,
                              types=", ".join(describe(t) for t in seen) or "none")
@@ -1095,25 +1098,17 @@ def linked(path: str, t, chain: tuple = ()) -> list:
     return out
 
 
+class _Locals(NodeVisitor):
+    """The symbols the declarations of a function body declare, in source order."""
+
+    def __init__(self) -> None:
+        self.symbols: list = []
+
+    def visit_Decl(self, s: Decl) -> None:
+        self.symbols.extend(var.sym for var, _, _ in s.items)
+
+
 def _entry_locals(body) -> list:
-    out = []
-
-    def walk(s):
-        if isinstance(s, Decl):
-            out.extend(var.sym for var, _, _ in s.items)
-        elif isinstance(s, If):
-            walk(s.then)
-            if s.other is not None:
-                walk(s.other)
-        elif isinstance(s, Loop):
-            if s.init is not None:
-                walk(s.init)
-            walk(s.body)
-        elif isinstance(s, Switch):
-            walk(s.body)
-        elif isinstance(s, Block):
-            for inner in s.statements:
-                walk(inner)
-
-    walk(body)
-    return out
+    locals_ = _Locals()
+    locals_.visit(body)
+    return locals_.symbols

@@ -43,8 +43,8 @@ from .check import (ArrT, Checked, PtrT, StructT, VOID, describe, leaves, linked
                     same_layout)
 from .errors import TraceError
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
-                     Index, InitList, Jump, Label, Logical, Loop, Member, Num, Return, Switch,
-                     Unary, Var)
+                     Index, InitList, Jump, Label, Logical, Loop, Member, NodeVisitor, Num,
+                     Return, Switch, Unary, Var)
 
 __all__ = ["Evaluator", "hex_of", "FLAGS", "MAX_STEPS", "MAX_CALL_DEPTH"]
 
@@ -109,7 +109,7 @@ class _Jump(Exception):
         self.kind = kind
 
 
-class Evaluator:
+class Evaluator(NodeVisitor):
     """Runs a :class:`~pulab.ctrace.check.Checked` program once.
 
     Parameters
@@ -255,85 +255,89 @@ class Evaluator:
             self.statement(s)
 
     def statement(self, s) -> None:
+        """Run statement ``s`` (its ``visit_`` method), counted against :data:`MAX_STEPS`."""
         self.count += 1
         if self.count > MAX_STEPS:
             self.too_long(s)
-        src = self.source
-        kind = type(s)
-        if kind is Decl:
-            code = src[s.start:s.end]
-            for var, init, _ in s.items:
-                sym = var.sym
-                t, key = sym.ctype, sym.key
-                if init is None:
-                    for path, lt, spelling in leaves(key, t, sym.spelling):
-                        if path in self.inputs:
-                            self.given(s, code, path, lt, spelling)
-                        elif self.active:
-                            self.mem.pop(path, None)  # a local declared again has no value
-                    continue
-                if isinstance(t, (StructT, ArrT)):
-                    self.aggregate(key, t, init)
-                    if self.terms:  # a call or computed elements: keep what they did
-                        self.step(s, code, key, None, VOID)
-                    self.terms = []
-                    continue
-                if isinstance(t, PtrT):
-                    self.mem[key] = self.eval(init)
-                    self.terms = []
-                    continue
-                stored, flags = self.store(self.eval(init), t)
-                self.put(key, stored)
-                self.step(s, code, key, stored, t, spelling=sym.spelling, flags=flags)
-        elif kind is ExprStmt:
-            e = s.expr
-            self.last_path = None
-            v = self.eval(e)
-            var = self.last_path if isinstance(e, (Assign, IncDec)) else None
-            if not isinstance(e.ctype, CType):  # a call of a void function, a struct copy
-                self.step(s, src[s.start:s.end], None, None, VOID)
-                return
-            extra = {"spelling": _spelling(e.target)} if var else {}
-            if var and isinstance(e, IncDec) and not e.prefix:
-                v = self.mem[var]  # the statement's result is the variable, not x++'s value
-            self.step(s, src[s.start:s.end], var, v, e.ctype, **extra)
-        elif kind is If:
-            v = self.eval(s.test)
-            taken = self.truth(v)
-            self.step(s, f"if ({src[s.test.start:s.test.end]})", None, int(taken), self.int,
-                      branch="then" if taken else ("else" if s.other is not None else "none"))
-            if taken:
-                self.statement(s.then)
-            elif s.other is not None:
-                self.statement(s.other)
-        elif kind is Block:
-            for inner in s.statements:
-                self.statement(inner)
-        elif kind is Loop:
-            self.loop(s)
-        elif kind is Switch:
-            self.switch(s)
-        elif kind is Label:
-            pass
-        elif kind is Return:
-            f = self.checked.functions[self.active[-1]]
-            if s.value is None:
-                self.step(s, src[s.start:s.end], None, None, VOID)
-                raise _Return(None)
-            if isinstance(f.ret, PtrT):  # an object's path (a handle getter)
-                self.step(s, src[s.start:s.end], None, None, VOID)
-                raise _Return(self.eval(s.value))
-            if isinstance(f.ret, StructT):  # copied out: the callee's frame goes on the next call
-                self.copy(f"{f.prefix}return", self.eval(s.value), f.ret)
-                self.step(s, src[s.start:s.end], "return", None, VOID)
-                raise _Return(f"{f.prefix}return")
-            stored, flags = self.store(self.eval(s.value), f.ret)
-            self.step(s, src[s.start:s.end], "return", stored, f.ret, flags=flags)
-            raise _Return(stored)
-        else:
-            raise _Jump(s.kind)
+        self.visit(s)
 
-    def switch(self, s: Switch) -> None:
+    def visit_Decl(self, s: Decl) -> None:
+        code = self.source[s.start:s.end]
+        for var, init, _ in s.items:
+            sym = var.sym
+            t, key = sym.ctype, sym.key
+            if init is None:
+                for path, lt, spelling in leaves(key, t, sym.spelling):
+                    if path in self.inputs:
+                        self.given(s, code, path, lt, spelling)
+                    elif self.active:
+                        self.mem.pop(path, None)  # a local declared again has no value
+                continue
+            if isinstance(t, (StructT, ArrT)):
+                self.aggregate(key, t, init)
+                if self.terms:  # a call or computed elements: keep what they did
+                    self.step(s, code, key, None, VOID)
+                self.terms = []
+                continue
+            if isinstance(t, PtrT):
+                self.mem[key] = self.eval(init)
+                self.terms = []
+                continue
+            stored, flags = self.store(self.eval(init), t)
+            self.put(key, stored)
+            self.step(s, code, key, stored, t, spelling=sym.spelling, flags=flags)
+
+    def visit_ExprStmt(self, s: ExprStmt) -> None:
+        e = s.expr
+        self.last_path = None
+        v = self.eval(e)
+        var = self.last_path if isinstance(e, (Assign, IncDec)) else None
+        if not isinstance(e.ctype, CType):  # a call of a void function, a struct copy
+            self.step(s, self.source[s.start:s.end], None, None, VOID)
+            return
+        extra = {"spelling": _spelling(e.target)} if var else {}
+        if var and isinstance(e, IncDec) and not e.prefix:
+            v = self.mem[var]  # the statement's result is the variable, not x++'s value
+        self.step(s, self.source[s.start:s.end], var, v, e.ctype, **extra)
+
+    def visit_If(self, s: If) -> None:
+        v = self.eval(s.test)
+        taken = self.truth(v)
+        self.step(s, f"if ({self.source[s.test.start:s.test.end]})", None, int(taken), self.int,
+                  branch="then" if taken else ("else" if s.other is not None else "none"))
+        if taken:
+            self.statement(s.then)
+        elif s.other is not None:
+            self.statement(s.other)
+
+    def visit_Block(self, s: Block) -> None:
+        for inner in s.statements:
+            self.statement(inner)
+
+    def visit_Label(self, s: Label) -> None:
+        pass
+
+    def visit_Return(self, s: Return) -> None:
+        f = self.checked.functions[self.active[-1]]
+        if s.value is None:
+            self.step(s, self.source[s.start:s.end], None, None, VOID)
+            raise _Return(None)
+        if isinstance(f.ret, PtrT):  # an object's path (a handle getter)
+            self.step(s, self.source[s.start:s.end], None, None, VOID)
+            raise _Return(self.eval(s.value))
+        if isinstance(f.ret, StructT):  # copied out: the callee's frame goes on the next call
+            self.copy(f"{f.prefix}return", self.eval(s.value), f.ret)
+            self.step(s, self.source[s.start:s.end], "return", None, VOID)
+            raise _Return(f"{f.prefix}return")
+        stored, flags = self.store(self.eval(s.value), f.ret)
+        self.step(s, self.source[s.start:s.end], "return", stored, f.ret, flags=flags)
+        raise _Return(stored)
+
+    def visit_Jump(self, s: Jump) -> None:
+        raise _Jump(s.kind)
+
+
+    def visit_Switch(self, s: Switch) -> None:
         """Jump to the matching label (the case constants convert to the promoted type of the
         test, C99 6.8.4.2p5), run on until ``break`` or the end."""
         t = s.test.ctype
@@ -369,7 +373,7 @@ class Evaluator:
         at = self.loops[-1] if self.loops else s  # the loop that runs on, when there is one
         raise TraceError(at.line, at.column, code="trace_steps", limit=MAX_STEPS)
 
-    def loop(self, s: Loop) -> None:
+    def visit_Loop(self, s: Loop) -> None:
         self.loops.append(s)
         try:
             self.iterate(s)

@@ -1,24 +1,40 @@
-"""Parser of the C subset: statements, expressions, ``#define`` constants, ``// @q`` notes.
+"""Parser of the C subset: the integer C that firmware scaling code is made of.
 
-The subset is what firmware scaling code is made of:
+What it accepts:
 
-- declarations ``[const|static|volatile] TYPE name [= expr] {, name [= expr]};`` with
-  the C spellings and firmware names of :mod:`pulab.ctrace.types`, and the names that
-  ``typedef INTEGER-TYPE NAME;`` makes (a typedef name stands for its integer type);
-- expression statements: assignments, compound assignments, ``++``/``--``;
-- ``if (…) … else …`` and ``{ … }`` (one flat scope: a name is declared once);
-- every C integer operator, casts, ``?:``, integer constants (decimal, hex, octal,
-  binary, suffixes ``U``, ``L``, ``LL``), names with dots (``gMotorInfo.Voltage``
-  is one variable) and the IQmath calls ``_IQmpy``, ``_IQNmpy``, ``__IQmpy(a,b,q)``,
-  ``_IQsat``, ``__IQsat``;
+- a script of file-scope declarations and statements, run top to bottom; or function
+  definitions with file-scope declarations as their globals, one function (or a
+  function-like macro, :mod:`~pulab.ctrace.macro_entry`) chosen as the entry.  Functions
+  return an integer, a struct, a pointer or nothing; calls may nest but not recurse;
+- declarations ``[qualifiers] TYPE a [= init], *p, t[N];`` with the C spellings and firmware
+  names of :mod:`pulab.ctrace.types`, the names ``typedef`` gives integer and struct types,
+  ``struct`` types (tagged, typedef'd, nested), ``enum`` constants, one level of pointers,
+  arrays with braced initializers; each block has its own scope;
+- statements: expressions, ``if``/``else``, blocks, ``for``, ``while``, ``do … while``,
+  ``switch`` with its ``case``/``default`` labels at the top of its block, ``break``,
+  ``continue``, ``return``;
+- every C integer operator (compound assignments, ``++``/``--`` and ``?:`` included), casts
+  (to integer types, and pointer casts between the same memory layout), ``.``, ``->``,
+  ``[]``, unary ``&`` and ``*``, integer constants (decimal, hex, octal, binary, suffixes
+  ``U``, ``L``, ``LL``), calls of the code's functions and the IQmath calls ``_IQmpy``,
+  ``_IQNmpy``, ``__IQmpy(a,b,q)``, ``_IQsat``, ``__IQsat``, ``_IQabs``;
 - the preprocessor of :mod:`pulab.ctrace.preprocess` (macros, ``#if`` family,
   standard headers; ``#define GLOBAL_Q n`` also sets IQmath's Q);
 - annotations ``// @q NAME Qn [base=NUMBER [UNIT]]``: the variable holds a Qn number
   (real = value/2**n) whose per-unit base is NUMBER UNIT, so its SI value is real·base;
   ``// @q NAME auto``: its Q is to be proposed by the code proof (``q`` None).
 
-Everything else (loops, functions, pointers, floating point) is refused with a
-:class:`TraceError` naming line and column.
+Refused, with a :class:`TraceError` naming line and column (a catalog code each): floating
+point (constants and objects; a floating or pointer ``typedef`` only where it is used, as
+is a definition outside the subset), character and string literals, ``union``, ``goto``,
+``sizeof``, bit-fields, pointers to pointers, function pointers, variadic functions,
+function and array typedefs, nested function definitions, designated initializers, the
+comma operator.  The checker (:mod:`pulab.ctrace.check`) then refuses what is well-formed
+but not computable: types a target lacks, names never declared, mismatched types.
+
+The tree: expressions are :class:`Node` subclasses, statements :class:`Stmt` subclasses;
+each has ``children()`` (its sub-nodes, in source order), and :class:`NodeVisitor` walks
+them (pycparser's ``c_ast.NodeVisitor`` is the model).
 
 Examples
 --------
@@ -39,8 +55,8 @@ from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
            "Cast", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
-           "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr", "Arr",
-           "Unsupported",
+           "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr",
+           "Arr", "Unsupported", "NodeVisitor",
            "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
@@ -80,7 +96,53 @@ _NOTE = re.compile(r"//\s*@q\s+(?P<name>[A-Za-z_][\w.]*)\s+(?P<q>Q(?:\d+\.)?\d+|
                    r"(?:\s+(?P<unit>\S+))?\s*$")
 
 
-class Node:
+class _Syntax:
+    """What expressions, statements and function definitions share: their sub-nodes."""
+
+    __slots__ = ()
+    #: The slots that hold sub-nodes (a node, a list of nodes, or None), in source order.
+    CHILDREN: tuple = ()
+
+    def children(self) -> list:
+        """The sub-nodes (expressions and statements), in source order."""
+        out = []
+        for name in self.CHILDREN:
+            v = getattr(self, name)
+            if type(v) is list:
+                out.extend(v)
+            elif v is not None:
+                out.append(v)
+        return out
+
+
+class NodeVisitor:
+    """A walk over the syntax tree (pycparser's ``c_ast.NodeVisitor`` is the model).
+
+    :meth:`visit` calls the subclass's ``visit_<Class>(node)`` (``visit_Cast``, ``visit_Decl``
+    …) when it has one, else :meth:`generic_visit`, which visits the node's children; a
+    ``visit_`` method that is to go on below its node calls :meth:`generic_visit` itself.
+    """
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        cls._methods = {}  # node class -> the method that visits it (the evaluator's hot path)
+
+    _methods: dict = {}
+
+    def visit(self, node):
+        kind = type(node)
+        method = self._methods.get(kind)
+        if method is None:
+            method = self._methods[kind] = getattr(type(self), "visit_" + kind.__name__,
+                                                   type(self).generic_visit)
+        return method(self, node)
+
+    def generic_visit(self, node) -> None:
+        for child in node.children():
+            self.visit(child)
+
+
+class Node(_Syntax):
     """An expression: ``start``/``end`` are source offsets, ``ctype`` is set by the checker."""
 
     __slots__ = ("line", "column", "start", "end", "ctype")
@@ -107,6 +169,7 @@ class Var(Node):
 
 class Unary(Node):
     __slots__ = ("op", "operand")
+    CHILDREN = ("operand",)
 
     def __init__(self, op: str, operand: Node) -> None:
         self.op, self.operand = op, operand
@@ -114,6 +177,7 @@ class Unary(Node):
 
 class Binary(Node):
     __slots__ = ("op", "left", "right", "operand_type")
+    CHILDREN = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -121,6 +185,7 @@ class Binary(Node):
 
 class Logical(Node):
     __slots__ = ("op", "left", "right")
+    CHILDREN = ("left", "right")
 
     def __init__(self, op: str, left: Node, right: Node) -> None:
         self.op, self.left, self.right = op, left, right
@@ -128,6 +193,7 @@ class Logical(Node):
 
 class Cond(Node):
     __slots__ = ("test", "then", "other")
+    CHILDREN = ("test", "then", "other")
 
     def __init__(self, test: Node, then: Node, other: Node) -> None:
         self.test, self.then, self.other = test, then, other
@@ -138,6 +204,7 @@ class Cast(Node):
     ``from_void`` (set by the checker) when a ``void *`` becomes an object pointer."""
 
     __slots__ = ("type_name", "operand", "from_void")
+    CHILDREN = ("operand",)
 
     def __init__(self, type_name, operand: Node) -> None:
         self.type_name, self.operand, self.from_void = type_name, operand, False
@@ -145,6 +212,7 @@ class Cast(Node):
 
 class Assign(Node):
     __slots__ = ("op", "target", "value", "operand_type")
+    CHILDREN = ("target", "value")
 
     def __init__(self, op: str, target: Var, value: Node) -> None:
         self.op, self.target, self.value = op, target, value
@@ -152,6 +220,7 @@ class Assign(Node):
 
 class IncDec(Node):
     __slots__ = ("op", "prefix", "target", "operand_type")
+    CHILDREN = ("target",)
 
     def __init__(self, op: str, prefix: bool, target: Var) -> None:
         self.op, self.prefix, self.target = op, prefix, target
@@ -159,6 +228,7 @@ class IncDec(Node):
 
 class Call(Node):
     __slots__ = ("name", "args", "q", "func")
+    CHILDREN = ("args",)
 
     def __init__(self, name: str, args: list, q: int | None) -> None:
         self.name, self.args, self.q, self.func = name, args, q, None
@@ -168,6 +238,7 @@ class Member(Node):
     """``base.field`` or ``base->field`` (``arrow``)."""
 
     __slots__ = ("base", "field", "arrow", "flat")
+    CHILDREN = ("base",)
 
     def __init__(self, base: Node, field: str, arrow: bool) -> None:
         self.base, self.field, self.arrow, self.flat = base, field, arrow, None
@@ -175,6 +246,7 @@ class Member(Node):
 
 class Index(Node):
     __slots__ = ("base", "index")
+    CHILDREN = ("base", "index")
 
     def __init__(self, base: Node, index: Node) -> None:
         self.base, self.index = base, index
@@ -184,6 +256,7 @@ class InitList(Node):
     """A braced initializer ``{a, b, {c}}``."""
 
     __slots__ = ("items",)
+    CHILDREN = ("items",)
 
     def __init__(self, items: list) -> None:
         self.items = items
@@ -227,7 +300,7 @@ class Arr:
         self.of, self.size = of, size
 
 
-class Stmt:
+class Stmt(_Syntax):
     """A statement; ``start``/``end`` span its source text."""
 
     __slots__ = ("line", "column", "start", "end")
@@ -247,9 +320,15 @@ class Decl(Stmt):
     def __init__(self, type_name, items: list, static: bool = False) -> None:
         self.type_name, self.items, self.static = type_name, items, static
 
+    def children(self) -> list:
+        """Each declared variable, then its initializer (the type descriptors are not
+        sub-nodes: an array size is a constant the checker reads)."""
+        return [x for var, init, _ in self.items for x in (var, init) if x is not None]
+
 
 class ExprStmt(Stmt):
     __slots__ = ("expr",)
+    CHILDREN = ("expr",)
 
     def __init__(self, expr: Node) -> None:
         self.expr = expr
@@ -257,6 +336,7 @@ class ExprStmt(Stmt):
 
 class If(Stmt):
     __slots__ = ("test", "then", "other")
+    CHILDREN = ("test", "then", "other")
 
     def __init__(self, test: Node, then: Stmt, other: Stmt | None) -> None:
         self.test, self.then, self.other = test, then, other
@@ -264,6 +344,7 @@ class If(Stmt):
 
 class Block(Stmt):
     __slots__ = ("statements",)
+    CHILDREN = ("statements",)
 
     def __init__(self, statements: list) -> None:
         self.statements = statements
@@ -271,6 +352,7 @@ class Block(Stmt):
 
 class Return(Stmt):
     __slots__ = ("value",)
+    CHILDREN = ("value",)
 
     def __init__(self, value: Node | None) -> None:
         self.value = value
@@ -281,6 +363,7 @@ class Loop(Stmt):
     ``step`` (an expression or None), ``body``; ``kind`` is the keyword."""
 
     __slots__ = ("kind", "init", "test", "step", "body")
+    CHILDREN = ("init", "test", "step", "body")
 
     def __init__(self, kind: str, init, test, step, body) -> None:
         self.kind, self.init, self.test, self.step, self.body = kind, init, test, step, body
@@ -291,6 +374,7 @@ class Switch(Stmt):
     statements include the :class:`Label` markers."""
 
     __slots__ = ("test", "body")
+    CHILDREN = ("test", "body")
 
     def __init__(self, test, body) -> None:
         self.test, self.body = test, body
@@ -301,6 +385,7 @@ class Label(Stmt):
     ``value_int`` is set by the checker (the constant, None for default)."""
 
     __slots__ = ("value", "value_int")
+    CHILDREN = ("value",)
 
     def __init__(self, value) -> None:
         self.value = value
@@ -315,12 +400,13 @@ class Jump(Stmt):
         self.kind = kind
 
 
-class FuncDef:
+class FuncDef(_Syntax):
     """A function definition: ``ret`` (type descriptor or ``"void"``), ``params`` (list of
     (name, type descriptor, spelling, token)), ``body`` (Block)."""
 
     __slots__ = ("name", "ret", "ret_spelling", "params", "body", "line", "column", "start",
                  "end", "close_line", "close_column")
+    CHILDREN = ("body",)
 
     def __init__(self, name, ret, ret_spelling, params, body, tok) -> None:
         self.name, self.ret, self.ret_spelling, self.params, self.body = name, ret, \
@@ -364,12 +450,6 @@ def _unknown_type(tok: Token) -> TraceError:
     return TraceError(tok.line, tok.column, code="trace_unknown_type", name=tok.text)
 
 
-def _fail(tok: Token, message: str | None = None, code: str | None = None,
-          **params) -> TraceError:
-    """The error at ``tok``: a catalog ``code`` with ``params`` (or, still, free text)."""
-    return TraceError(tok.line, tok.column, message, code=code, **params)
-
-
 def _got(tok: Token):
     """What was found instead, as a message parameter (the end of the code in words)."""
     return {"code": "trace_end_of_code", "params": {}} if tok.kind == "end" else repr(tok.text)
@@ -378,16 +458,16 @@ def _got(tok: Token):
 def _note(tok: Token) -> QNote:
     m = _NOTE.match(tok.text)
     if m is None:
-        raise _fail(tok, code="trace_annotation_syntax")
+        raise TraceError.at(tok, code="trace_annotation_syntax")
     if m["q"] == "auto":  # the code proof proposes the Q (pulab.ctrace.prove)
         return QNote(m["name"], None, None, "", tok.line, tok.column)
     q = m["q"][1:]
     n = int(q.split(".")[1]) if "." in q else int(q)
     if n > 63:
-        raise _fail(tok, code="trace_q_bits", n=n)
+        raise TraceError.at(tok, code="trace_q_bits", n=n)
     base = float(m["base"]) if m["base"] is not None else None
     if base is not None and not (base == base and abs(base) != float("inf")):
-        raise _fail(tok, code="trace_base_finite")
+        raise TraceError.at(tok, code="trace_base_finite")
     return QNote(m["name"], n, base, m["unit"] or "", tok.line, tok.column)
 
 
@@ -409,16 +489,16 @@ def _int_constant(tok: Token) -> tuple:
     text = tok.text
     m = re.fullmatch(r"(0[xX][0-9a-fA-F]+|0[bB][01]+|[0-9]+)([A-Za-z_0-9]*)", text)
     if m is None or "." in text:
-        raise _fail(tok, code="trace_float_constant", text=quoted(text))
+        raise TraceError.at(tok, code="trace_float_constant", text=quoted(text))
     digits, suffix = m[1], m[2]
     if not _SUFFIX.fullmatch(suffix) or "lL" in suffix or "Ll" in suffix:
-        raise _fail(tok, code="trace_int_suffix", text=quoted(text), suffix=quoted(repr(suffix)))
+        raise TraceError.at(tok, code="trace_int_suffix", text=quoted(text), suffix=quoted(repr(suffix)))
     cands = _candidates(suffix.lower(), digits[:1] == "0" and len(digits) > 1)
     body, base = integer_digits(digits)
     if base == 8 and not re.fullmatch(r"[0-7]+", digits):
-        raise _fail(tok, code="trace_octal", text=quoted(text))
+        raise TraceError.at(tok, code="trace_octal", text=quoted(text))
     if beyond_64_bits(body, base):
-        raise _fail(tok, code="trace_constant_large", text=quoted(text), types=", ".join(cands))
+        raise TraceError.at(tok, code="trace_constant_large", text=quoted(text), types=", ".join(cands))
     return int(body, base), cands
 
 
@@ -474,16 +554,16 @@ class _Parser:
         if tok.kind == "op" and tok.text == text:
             return self.take()
         if where is None:
-            raise _fail(tok, code="trace_expected_bare", token=text, got=_got(tok))
-        raise _fail(tok, code="trace_expected", token=text, got=_got(tok),
-                    where={"code": f"trace_where_{where}", "params": params})
+            raise TraceError.at(tok, code="trace_expected_bare", token=text, got=_got(tok))
+        raise TraceError.at(tok, code="trace_expected", token=text, got=_got(tok),
+                            where={"code": f"trace_where_{where}", "params": params})
 
     def deeper(self) -> None:
         """One more level of recursion: bounds the parser's and the evaluator's stacks."""
         self.depth += 1
         self.height += 1
         if self.depth > MAX_DEPTH:
-            raise _fail(self.peek(), code="trace_nested", limit=MAX_DEPTH)
+            raise TraceError.at(self.peek(), code="trace_nested", limit=MAX_DEPTH)
 
     def shallower(self) -> None:
         self.depth -= 1
@@ -518,7 +598,7 @@ class _Parser:
         while level:
             tok = self.take()
             if tok.kind == "end":
-                raise _fail(open_tok, code="trace_paren_open")
+                raise TraceError.at(open_tok, code="trace_paren_open")
             level += (tok.text == "(") - (tok.text == ")")
 
     def specifiers(self) -> tuple:
@@ -539,7 +619,7 @@ class _Parser:
         if tok.kind == "name" and tok.text in self.type_names and \
                 tok.text not in BASE_TYPE_WORDS:
             if tok.text in self.floating:
-                raise _fail(tok, **self.floating_error(tok.text))
+                raise TraceError.at(tok, **self.floating_error(tok.text))
             self.take()
             static = self.qualifiers() or static
             return self.aliases.get(tok.text, tok.text), tok.text, static
@@ -553,16 +633,16 @@ class _Parser:
                 words.append(w)
         if not words:
             if tok.kind == "name" and tok.text in _FLOATING:
-                raise _fail(tok, code="trace_not_integer", word=tok.text)
+                raise TraceError.at(tok, code="trace_not_integer", word=tok.text)
             if tok.kind == "name":
                 raise _unknown_type(tok)
-            raise _fail(first, code="trace_expected_type")
+            raise TraceError.at(first, code="trace_expected_type")
         sign = [w for w in words if w in ("signed", "unsigned")]
         longs = words.count("long")
         kinds = [w for w in words if w in ("char", "short", "int")]
         if len(sign) > 1 or longs > 2 or len(kinds) > 1 or \
                 (kinds and kinds[0] != "int" and longs) or (words.count("int") > 1):
-            raise _fail(first, code="trace_not_c_type", words=" ".join(words))
+            raise TraceError.at(first, code="trace_not_c_type", words=" ".join(words))
         base = "long long" if longs == 2 else "long" if longs == 1 else \
             (kinds[0] if kinds else "int")
         if sign == ["unsigned"]:
@@ -582,43 +662,43 @@ class _Parser:
             desc = Ptr(desc)
             self.qualifiers()
         if isinstance(desc, StructDef) or desc == "void":
-            raise _fail(first, code="trace_cast_struct_void")
+            raise TraceError.at(first, code="trace_cast_struct_void")
         return desc
 
     def tagged(self):
         """``struct [tag] [{ fields }]`` or ``enum [tag] [{ constants }]``."""
         kw = self.take()
         if kw.text == "union":
-            raise _fail(kw, code="trace_not_supported", word="union")
+            raise TraceError.at(kw, code="trace_not_supported", word="union")
         tag = self.take() if self.peek().kind == "name" else None
         if kw.text == "enum":
             if self.is_op("{"):
                 self.enumerators()
             return "int"
         if tag is None and not self.is_op("{"):
-            raise _fail(kw, code="trace_struct_tag")
+            raise TraceError.at(kw, code="trace_struct_tag")
         key = tag.text if tag is not None else f"<anonymous at {kw.line}:{kw.column}>"
         sdef = self.structs.get(key)
         if sdef is None:
             sdef = self.structs[key] = StructDef(key, kw.line, kw.column)
         if self.is_op("{"):
             if sdef.fields is not None:
-                raise _fail(kw, code="trace_struct_redefined", name=key,
-                            at=f"{sdef.line}:{sdef.column}")
+                raise TraceError.at(kw, code="trace_struct_redefined", name=key,
+                                    at=f"{sdef.line}:{sdef.column}")
             open_tok = self.take()
             fields: list = []
             names: set = set()
             while not self.is_op("}"):
                 if self.peek().kind == "end":
-                    raise _fail(open_tok, code="trace_brace_open",
-                                at=f"{open_tok.line}:{open_tok.column}")
+                    raise TraceError.at(open_tok, code="trace_brace_open",
+                                        at=f"{open_tok.line}:{open_tok.column}")
                 desc, spelling = self.field_specifiers()
                 while True:
                     name, d, at = self.declarator(desc)
                     if self.is_op(":"):
-                        raise _fail(self.peek(), code="trace_bitfield")
+                        raise TraceError.at(self.peek(), code="trace_bitfield")
                     if name in names:
-                        raise _fail(at, code="trace_field_twice", name=name, struct=key)
+                        raise TraceError.at(at, code="trace_field_twice", name=name, struct=key)
                     names.add(name)
                     fields.append((name, d, spelling))
                     if not self.is_op(","):
@@ -656,7 +736,7 @@ class _Parser:
         while not self.is_op("}"):
             name = self.take()
             if name.kind != "name":
-                raise _fail(name, code="trace_enumerator_name")
+                raise TraceError.at(name, code="trace_enumerator_name")
             if self.is_op("="):
                 self.take()
                 value = self.constant(self.conditional(), "trace_const_enum")
@@ -679,7 +759,7 @@ class _Parser:
             self.qualifiers()
         tok = self.peek()
         if self.is_op("("):
-            raise _fail(tok, code="trace_function_pointer")
+            raise TraceError.at(tok, code="trace_function_pointer")
         var = self.var_name()
         sizes = []
         while self.is_op("["):
@@ -710,8 +790,8 @@ class _Parser:
             if isinstance(item, FuncDef):
                 prev = self.functions.get(item.name)
                 if prev is not None:
-                    raise _fail(self.tokens[self.pos - 1], code="trace_function_redefined",
-                                name=item.name, at=f"{prev.line}:{prev.column}")
+                    raise TraceError.at(self.tokens[self.pos - 1], code="trace_function_redefined",
+                                        name=item.name, at=f"{prev.line}:{prev.column}")
                 self.functions[item.name] = item
             elif item is not None:
                 out.append(item)
@@ -761,7 +841,8 @@ class _Parser:
         body = []
         while not self.is_op("}"):
             if self.peek().kind == "end":
-                raise _fail(self.peek(), code="trace_brace_open", at=f"{tok.line}:{tok.column}")
+                raise TraceError.at(self.peek(), code="trace_brace_open",
+                                    at=f"{tok.line}:{tok.column}")
             body.append(self.statement())
         self.take()
         self.shallower()
@@ -800,7 +881,7 @@ class _Parser:
             test = self.expression()
             self.expect(")", "close_condition")
             if not self.is_op("{"):
-                raise _fail(self.peek(), code="trace_switch_brace")
+                raise TraceError.at(self.peek(), code="trace_switch_brace")
             self.switches += 1
             body = self.block()
             self.switches -= 1
@@ -808,27 +889,27 @@ class _Parser:
         if word in ("case", "default"):
             self.take()
             if not self.switches:
-                raise _fail(tok, code="trace_outside_switch", word=word)
+                raise TraceError.at(tok, code="trace_outside_switch", word=word)
             value = self.conditional() if word == "case" else None
             self.expect(":", "after", word=word)
             return Label(value).at(tok, self.last())
         if word in ("break", "continue"):
             self.take()
             if not self.loops and (word == "continue" or not self.switches):
-                raise _fail(tok, code="trace_outside_loop", word=word)
+                raise TraceError.at(tok, code="trace_outside_loop", word=word)
             self.expect(";", "after", word=word)
             return Jump(word).at(tok, self.last())
         if word == "return":
             self.take()
             if not self.in_function:
-                raise _fail(tok, code="trace_return_outside")
+                raise TraceError.at(tok, code="trace_return_outside")
             value = None if self.is_op(";") else self.expression()
             self.expect(";", "statement_end")
             return Return(value).at(tok, self.last())
         if word == "else":
-            raise _fail(tok, code="trace_else_without_if")
+            raise TraceError.at(tok, code="trace_else_without_if")
         if word in _UNSUPPORTED:
-            raise _fail(tok, code="trace_not_supported", word=word)
+            raise TraceError.at(tok, code="trace_not_supported", word=word)
         if word == "typedef":
             return self.typedef()
         if self.starts_type():
@@ -849,7 +930,7 @@ class _Parser:
             body = self.body()
             w = self.peek()
             if w.text != "while":
-                raise _fail(w, code="trace_do_while")
+                raise TraceError.at(w, code="trace_do_while")
             self.take()
             self.expect("(", "after", word="while")
             test = self.expression()
@@ -887,10 +968,10 @@ class _Parser:
             name, d, at = self.declarator(desc)
             if self.is_op("("):
                 if not top or items:
-                    raise _fail(at, code="trace_nested_function", name=name)
+                    raise TraceError.at(at, code="trace_nested_function", name=name)
                 return self.function(tok, at, d, spelling)
             if d == "void":
-                raise _fail(at, code="trace_void_object", name=name)
+                raise TraceError.at(at, code="trace_void_object", name=name)
             init = None
             if self.is_op("="):
                 self.take()
@@ -911,7 +992,7 @@ class _Parser:
         items = []
         while not self.is_op("}"):
             if self.is_op("."):
-                raise _fail(self.peek(), code="trace_designated")
+                raise TraceError.at(self.peek(), code="trace_designated")
             items.append(self.initializer())
             if not self.is_op(","):
                 break
@@ -928,7 +1009,7 @@ class _Parser:
             self.take()
         while not self.is_op(")"):
             if self.is_op("..."):
-                raise _fail(self.peek(), code="trace_variadic")
+                raise TraceError.at(self.peek(), code="trace_variadic")
             ptok = self.peek()
             desc, spelling, _ = self.specifiers()
             if self.is_op(",") or self.is_op(")"):
@@ -938,7 +1019,7 @@ class _Parser:
             if isinstance(d, Arr):
                 d = Ptr(d.of, d.size)  # an array parameter is a pointer (C99 6.7.5.3p7)
             if d == "void":
-                raise _fail(at, code="trace_void_param")
+                raise TraceError.at(at, code="trace_void_param")
             params.append((pname, d, spelling, at))
             if not self.is_op(","):
                 break
@@ -950,9 +1031,9 @@ class _Parser:
             return None
         if not self.is_op("{"):
             got = self.peek()
-            raise _fail(got, code="trace_after_params", name=name_tok.text, got=_got(got))
+            raise TraceError.at(got, code="trace_after_params", name=name_tok.text, got=_got(got))
         if any(not p[0] for p in params):
-            raise _fail(name_tok, code="trace_param_name", name=name_tok.text)
+            raise TraceError.at(name_tok, code="trace_param_name", name=name_tok.text)
         self.in_function = True
         body = self.block()
         self.in_function = False
@@ -976,12 +1057,13 @@ class _Parser:
             pointer = False
             while self.is_op("*") or (self.peek().kind == "name" and
                                       self.peek().text in _QUALIFIERS):
-                pointer = pointer or self.take().text == "*"
+                pointer = self.take().text == "*" or pointer  # a qualifier after the * too
             name = self.take()
             if name.kind != "name" or name.text in BASE_TYPE_WORDS or name.text in _QUALIFIERS:
-                raise _fail(name, code="trace_typedef_name", spelling=spelling, got=_got(name))
+                raise TraceError.at(name, code="trace_typedef_name", spelling=spelling,
+                                    got=_got(name))
             if self.is_op("(") or self.is_op("["):
-                raise _fail(self.peek(), code="trace_typedef_function", name=name.text)
+                raise TraceError.at(self.peek(), code="trace_typedef_function", name=name.text)
             if isinstance(base, StructDef) and base.name.startswith("<"):
                 base.name = name.text  # typedef struct { … } NAME: messages call it NAME
             if pointer and isinstance(base, StructDef):
@@ -1001,7 +1083,7 @@ class _Parser:
     def var_name(self) -> Var:
         tok = self.peek()
         if tok.kind != "name" or tok.text in BASE_TYPE_WORDS or tok.text in _QUALIFIERS:
-            raise _fail(tok, code="trace_expected_name", got=_got(tok))
+            raise TraceError.at(tok, code="trace_expected_name", got=_got(tok))
         tokens = self.tokens
         pos = self.pos + 1
         name = tok.text
@@ -1015,7 +1097,7 @@ class _Parser:
     def expression(self) -> Node:
         e = self.assignment()
         if self.is_op(","):
-            raise _fail(self.peek(), code="trace_comma")
+            raise TraceError.at(self.peek(), code="trace_comma")
         return e
 
     def assignment(self) -> Node:
@@ -1025,7 +1107,7 @@ class _Parser:
         tok = self.peek()
         if tok.kind == "op" and tok.text in _ASSIGN_OPS:
             if not _is_place(left):
-                raise _fail(tok, code="trace_lvalue_left", op=tok.text)
+                raise TraceError.at(tok, code="trace_lvalue_left", op=tok.text)
             self.take()
             value = self.assignment()
             left = Assign(tok.text, left, value).at(first, self.last())
@@ -1061,7 +1143,7 @@ class _Parser:
             chain += 1
             self.height += 1
             if self.height > MAX_HEIGHT:
-                raise _fail(tok, code="trace_height", limit=MAX_HEIGHT)
+                raise TraceError.at(tok, code="trace_height", limit=MAX_HEIGHT)
             self.deeper()
             right = self.binary(prec + 1)
             self.shallower()
@@ -1077,7 +1159,7 @@ class _Parser:
             operand = self.unary()
             self.shallower()
             if tok.text == "&" and not _is_place(operand):
-                raise _fail(tok, code="trace_needs_variable", op="&")
+                raise TraceError.at(tok, code="trace_needs_variable", op="&")
             return Unary(tok.text, operand).at(tok, self.last())
         if tok.text in ("++", "--"):
             self.take()
@@ -1085,7 +1167,7 @@ class _Parser:
             target = self.unary()
             self.shallower()
             if not _is_place(target):
-                raise _fail(tok, code="trace_needs_variable", op=tok.text)
+                raise TraceError.at(tok, code="trace_needs_variable", op=tok.text)
             return IncDec(tok.text, True, target).at(tok, self.last())
         if tok.text == "(" and self.starts_type(1):
             self.take()
@@ -1107,13 +1189,13 @@ class _Parser:
             if text in ("++", "--"):
                 op = self.take()
                 if not _is_place(node):
-                    raise _fail(op, code="trace_needs_variable", op=op.text)
+                    raise TraceError.at(op, code="trace_needs_variable", op=op.text)
                 node = IncDec(op.text, False, node).at(first, self.last())
             elif text in (".", "->"):
                 op = self.take()
                 name = self.take()
                 if name.kind != "name":
-                    raise _fail(name, code="trace_field_name", op=op.text)
+                    raise TraceError.at(name, code="trace_field_name", op=op.text)
                 self.deeper()
                 chain += 1
                 node = Member(node, name.text, op.text == "->").at(first, name)
@@ -1154,7 +1236,7 @@ class _Parser:
             return e
         if tok.kind == "name":
             if tok.text in _UNSUPPORTED or tok.text in BASE_TYPE_WORDS or tok.text in _TAGS:
-                raise _fail(tok, code="trace_not_here", word=tok.text)
+                raise TraceError.at(tok, code="trace_not_here", word=tok.text)
             if self.is_op("(", 1):
                 return self.call()
             self.take()
@@ -1163,7 +1245,7 @@ class _Parser:
                 n.ctype = ["int"]
                 return n
             return Var(tok.text).at(tok, tok)
-        raise _fail(tok, code="trace_expected_value", got=_got(tok))
+        raise TraceError.at(tok, code="trace_expected_value", got=_got(tok))
 
     def call(self) -> Node:
         tok = self.take()
@@ -1187,11 +1269,11 @@ class _Parser:
         if nargs is None:  # a function of the pasted code: resolved by the checker
             return Call(name, args, None).at(tok, self.last())
         if len(args) != nargs:
-            raise _fail(tok, code="trace_builtin_arity", name=name, n=nargs, got=len(args))
+            raise TraceError.at(tok, code="trace_builtin_arity", name=name, n=nargs, got=len(args))
         if name == "__IQmpy":
             qa = args[2]
             if not isinstance(qa, Num) or not 0 <= qa.value <= 62:
-                raise _fail(tok, code="trace_iqmpy_q")
+                raise TraceError.at(tok, code="trace_iqmpy_q")
             q = qa.value
             args = args[:2]
         return Call(name, args, q).at(tok, self.last())

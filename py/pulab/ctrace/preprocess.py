@@ -119,10 +119,6 @@ def _tokens(text: str) -> list:
     return toks
 
 
-def _fail(tok: Token, code: str, **params) -> TraceError:
-    return TraceError(tok.line, tok.column, code=code, **params)
-
-
 def _body_tokens(text: str, at: Token, what: str) -> list:
     """Tokens of directive text, positioned on the directive's line."""
     toks: list = []
@@ -134,22 +130,23 @@ def _body_tokens(text: str, at: Token, what: str) -> list:
         try:
             toks.extend(_tokens(piece))  # cached: a header's definitions recur on every run
         except TraceError as e:
-            raise _fail(at, "trace_in_directive", what=what, reason=e.reason_error()) from None
+            raise TraceError.at(at, "trace_in_directive", what=what,
+                                reason=e.reason_error()) from None
     if any(t.kind in ("directive", "annotation") for t in toks):
-        raise _fail(at, "trace_directive_text", what=what)
+        raise TraceError.at(at, "trace_directive_text", what=what)
     return [t._replace(line=at.line, column=at.column, start=at.start, end=at.end) for t in toks]
 
 
 def _define(rest: str, at: Token) -> _Macro:
     m = re.match(r"\s*([A-Za-z_]\w*)(\()?", rest)
     if m is None:
-        raise _fail(at, "trace_define_name")
+        raise TraceError.at(at, "trace_define_name")
     name = m[1]
     if not m[2]:
         return _Macro(name, None, False, _body_tokens(rest[m.end():], at, f"#define {name}"))
     close = rest.find(")", m.end())
     if close < 0:
-        raise _fail(at, "trace_define_paren", name=name)
+        raise TraceError.at(at, "trace_define_paren", name=name)
     params = [p.strip() for p in rest[m.end():close].split(",")]
     if params == [""]:
         params = []
@@ -158,12 +155,12 @@ def _define(rest: str, at: Token) -> _Macro:
         params[-1] = "__VA_ARGS__"
     for p in params[:len(params) - variadic]:
         if not _NAME.match(p):
-            raise _fail(at, "trace_define_param", name=name, param=repr(p))
+            raise TraceError.at(at, "trace_define_param", name=name, param=repr(p))
     if len(set(params)) != len(params):
-        raise _fail(at, "trace_define_param_twice", name=name)
+        raise TraceError.at(at, "trace_define_param_twice", name=name)
     body = _body_tokens(rest[close + 1:], at, f"#define {name}")
     if body and (body[0].text == "##" or body[-1].text == "##"):
-        raise _fail(at, "trace_define_paste_edge", name=name)
+        raise TraceError.at(at, "trace_define_paste_edge", name=name)
     return _Macro(name, params, variadic, body)
 
 
@@ -204,7 +201,7 @@ class _Pre:
             b = mac.body
             if mac.params is not None or len(b) != 1 or not b[0].text.isdigit() or \
                     len(b[0].text) > 2 or not 1 <= int(b[0].text) <= 30:
-                raise _fail(at, "trace_global_q")
+                raise TraceError.at(at, "trace_global_q")
             self.global_q = int(b[0].text)
 
     def active(self) -> bool:
@@ -216,18 +213,18 @@ class _Pre:
         live = self.active()
         if word in ("if", "ifdef", "ifndef"):
             if len(self.conds) >= MAX_IF_DEPTH:
-                raise _fail(tok, "trace_if_depth", limit=MAX_IF_DEPTH)
+                raise TraceError.at(tok, "trace_if_depth", limit=MAX_IF_DEPTH)
             take = live and self.condition(word, rest, tok)
             self.conds.append([take, take, False, tok, live])
             return
         if word in ("elif", "else", "endif"):
             if not self.conds:
-                raise _fail(tok, "trace_without_if", word=word)
+                raise TraceError.at(tok, "trace_without_if", word=word)
             c = self.conds[-1]
             if word == "endif":
                 self.conds.pop()
             elif c[2]:
-                raise _fail(tok, "trace_after_else", word=word)
+                raise TraceError.at(tok, "trace_after_else", word=word)
             elif word == "else":
                 c[0], c[2] = c[4] and not c[1], True
                 c[1] = c[1] or c[0]
@@ -244,14 +241,14 @@ class _Pre:
         elif word == "include":
             self.include(rest, tok)
         elif word == "error":
-            raise _fail(tok, "trace_error_directive", rest=rest.rstrip())
+            raise TraceError.at(tok, "trace_error_directive", rest=rest.rstrip())
         elif word not in ("pragma", "line", "warning", "") or (word == "" and rest.strip()):
-            raise _fail(tok, "trace_unknown_directive", word=word or rest.strip()[:20])
+            raise TraceError.at(tok, "trace_unknown_directive", word=word or rest.strip()[:20])
 
     def include(self, rest: str, tok: Token) -> None:
         m = re.match(r'\s*(?:<([^>\n]+)>|"([^"\n]+)")', rest)
         if m is None:
-            raise _fail(tok, "trace_include_syntax")
+            raise TraceError.at(tok, "trace_include_syntax")
         header = (m[1] or m[2]).strip()
         if header == "IQmathLib.h":  # its conversions are built in; it defines GLOBAL_Q
             if "GLOBAL_Q" not in self.macros:
@@ -270,7 +267,7 @@ class _Pre:
         toks = _body_tokens(rest, tok, f"#{word}")
         if word != "if":
             if len(toks) != 1 or toks[0].kind != "name":
-                raise _fail(tok, "trace_directive_name", word=word)
+                raise TraceError.at(tok, "trace_directive_name", word=word)
             return (toks[0].text in self.macros) == (word == "ifdef")
         # defined X / defined(X) are replaced before expansion (C99 6.10.1p1).
         resolved, i = [], 0
@@ -282,7 +279,7 @@ class _Pre:
                 j += paren
                 if j >= len(toks) or toks[j].kind != "name" or \
                         (paren and (j + 1 >= len(toks) or toks[j + 1].text != ")")):
-                    raise _fail(tok, "trace_defined_name")
+                    raise TraceError.at(tok, "trace_defined_name")
                 resolved.append(t._replace(kind="number",
                                            text="1" if toks[j].text in self.macros else "0"))
                 i = j + 1 + paren
@@ -291,7 +288,7 @@ class _Pre:
             i += 1
         expanded = self.expand_list(resolved)
         if not expanded:
-            raise _fail(tok, "trace_if_expression", word=word)
+            raise TraceError.at(tok, "trace_if_expression", word=word)
         return _IfExpr(expanded, tok).value() != 0
 
     # -- expansion ----------------------------------------------------------------------
@@ -302,7 +299,7 @@ class _Pre:
                 self.directive(tok)
             elif tok.kind == "end":
                 if self.conds:
-                    raise _fail(self.conds[-1][3], "trace_if_open")
+                    raise TraceError.at(self.conds[-1][3], "trace_if_open")
                 self.end = tok
                 return
             elif self.active():
@@ -353,7 +350,7 @@ class _Pre:
                 append(tok)
                 continue
             if len(hide) >= MAX_MACRO_DEPTH:
-                raise _fail(tok, "trace_macro_depth", name=tok.text, limit=MAX_MACRO_DEPTH)
+                raise TraceError.at(tok, "trace_macro_depth", name=tok.text, limit=MAX_MACRO_DEPTH)
             hs = hide | {mac.name}
             if mac.params is None:
                 where = (tok.line, tok.column, tok.start, tok.end)
@@ -372,7 +369,8 @@ class _Pre:
                         for t in self.substitute(mac, args, tok)]
             self.produced += len(body)
             if self.produced > MAX_EXPANDED_TOKENS:
-                raise _fail(tok, "trace_macro_tokens", name=tok.text, limit=MAX_EXPANDED_TOKENS)
+                raise TraceError.at(tok, "trace_macro_tokens", name=tok.text,
+                                    limit=MAX_EXPANDED_TOKENS)
             pending.extendleft(reversed(body))
 
     def iq(self, use: Token, arg: list) -> list:
@@ -412,10 +410,10 @@ class _Pre:
             value = _ConstFloat(arg[i:], use, self.single).value()
         product = sign * value * 2.0 ** n  # * 2**n is exact in binary floating point
         if product != product or product in (float("inf"), float("-inf")):  # no int() of them
-            raise _fail(use, "trace_iq_range", name=use.text, value=repr(product))
+            raise TraceError.at(use, "trace_iq_range", name=use.text, value=repr(product))
         scaled = int(product)
         if not -(1 << 31) <= scaled < (1 << 31):
-            raise _fail(use, "trace_iq_range", name=use.text, value=scaled)
+            raise TraceError.at(use, "trace_iq_range", name=use.text, value=scaled)
         return scaled
 
     def text_around(self, head: str, arg: list, tail: str) -> list:
@@ -427,7 +425,7 @@ class _Pre:
         while True:
             item = pull()
             if item is None:
-                raise _fail(use, "trace_macro_paren", name=mac.name)
+                raise TraceError.at(use, "trace_macro_paren", name=mac.name)
             t = item[0]
             if t.kind == "op" and t.text == ")" and depth == 0:
                 break
@@ -443,8 +441,8 @@ class _Pre:
         if mac.variadic and len(args) == len(mac.params) - 1:
             args.append([])
         if len(args) != len(mac.params):
-            raise _fail(use, "trace_macro_args", name=mac.name, n=len(mac.params),
-                        got=len(args))
+            raise TraceError.at(use, "trace_macro_args", name=mac.name, n=len(mac.params),
+                                got=len(args))
         return args, t
 
     def substitute(self, mac: _Macro, args: list, use: Token) -> list:
@@ -491,8 +489,8 @@ class _Pre:
                     except TraceError:
                         new = []
                     if len(new) != 1:
-                        raise _fail(use, "trace_paste", left=repr(left.text),
-                                    right=repr(right.text))
+                        raise TraceError.at(use, "trace_paste", left=repr(left.text),
+                                            right=repr(right.text))
                     out.append(new[0]._replace(line=left.line, column=left.column,
                                                start=left.start, end=left.end))
                 i += 2
@@ -518,7 +516,7 @@ class _ConstFloat:
         self.round = _f32 if single else float
 
     def fail(self):
-        raise _fail(self.use, "trace_iq_constant", name=self.use.text)
+        raise TraceError.at(self.use, "trace_iq_constant", name=self.use.text)
 
     def value(self) -> float:
         if not self.toks:
@@ -602,7 +600,7 @@ class _IfExpr:
         self.toks, self.i, self.at = toks, 0, at
 
     def fail(self, code: str, **params):
-        return _fail(self.at, "trace_if", reason={"code": code, "params": params})
+        return TraceError.at(self.at, "trace_if", reason={"code": code, "params": params})
 
     def peek(self):
         return self.toks[self.i] if self.i < len(self.toks) else None

@@ -43,7 +43,7 @@ from ..schema.errors import InputError
 from ..schema.validate import key_path, shown
 from .abstract import FAILURES, BoxEvaluator, Split
 from .errors import TraceError
-from .parser import Block, If, Loop, Switch
+from .parser import If, Loop, NodeVisitor, Stmt, Switch
 from .tracing import DEFAULT_GLOBAL_Q, _input_values, compile_code, inputs_for, run_checked
 
 __all__ = ["prove_code", "prove_code_steps", "DEFAULT_BUDGET", "MAX_BUDGET"]
@@ -92,33 +92,34 @@ def _ranges(checked, ranges, names: list) -> dict:
     return box
 
 
+class _Statements(NodeVisitor):
+    """Every statement node below the nodes visited, with loop steps, in source order."""
+
+    def __init__(self) -> None:
+        self.found: list = []
+
+    def generic_visit(self, node) -> None:
+        if isinstance(node, Stmt):  # an expression holds no statement
+            self.found.append(node)
+            super().generic_visit(node)
+
+    def visit_Loop(self, s: Loop) -> None:
+        self.found.append(s)
+        if s.init is not None:
+            self.visit(s.init)
+        if s.step is not None:
+            self.found.append(s.step)  # the step expression counts as a statement
+        self.visit(s.body)
+
+
 def _statements(program) -> list:
     """Every statement node of the code (functions included), with loop steps."""
-    out = []
-
-    def walk(s) -> None:
-        if s is None:
-            return
-        out.append(s)
-        if type(s) is Block:
-            for inner in s.statements:
-                walk(inner)
-        elif type(s) is If:
-            walk(s.then)
-            walk(s.other)
-        elif type(s) is Loop:
-            walk(s.init)
-            if s.step is not None:
-                out.append(s.step)
-            walk(s.body)
-        elif type(s) is Switch:
-            walk(s.body)
-
+    walk = _Statements()
     for s in program.statements:
-        walk(s)
+        walk.visit(s)
     for f in program.functions.values():
-        walk(f.body)
-    return out
+        walk.visit(f.body)
+    return walk.found
 
 
 class _Problem:
@@ -180,12 +181,12 @@ class _Problem:
 
 
 def _error_kind(e: TraceError):
-    code = ((e.params or {}).get("reason") or {}).get("code") or ""
+    code = e.reason_error()["code"]
     if code == "trace_steps":
         return None  # the tracer's statement cap, not a failure of the code
     if code == "trace_index":
         return "index"
-    if "zero" in code or (e.reason or "").endswith("by zero"):
+    if code in ("trace_division_zero", "trace_remainder_zero"):
         return "division_by_zero"
     return "error"
 

@@ -244,12 +244,30 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
     Raises
     ------
     TraceError
-        Code outside the subset, or a division by zero, naming line and column.
-    InputError
-        A bad target, input value or global_q.
+        Code outside the subset, or a division by zero, naming line and column; a bad
+        target, entry, input value or global_q (no position).  It says what the code offers
+        instead: ``functions`` and ``macros`` when the entry is at fault and the code parses,
+        and ``inputs``, ``functions`` and ``macros`` once the code compiled.
     """
-    return trace_checked(compile_code(code, target, defines, global_q, entry), inputs, global_q,
-                         zero_unset)
+    try:
+        checked = compile_code(code, target, defines, global_q, entry)
+    except InputError as e:
+        err = TraceError.of(e)
+        if e.field == "entry" and isinstance(code, str):
+            try:  # the code parses: offer its functions (and macros) so the user can pick one
+                program = parse(code)
+                err.functions, err.macros = list(program.functions), entry_macros(program)
+            except InputError:
+                pass
+        raise err
+    try:
+        return trace_checked(checked, inputs, global_q, zero_unset)
+    except InputError as e:
+        err = TraceError.of(e)
+        err.inputs = inputs_for(checked, inputs if isinstance(inputs, dict) else {})
+        err.functions = [f for f in checked.functions if f not in checked.program.macros]
+        err.macros = entry_macros(checked.program)
+        raise err
 
 
 def trace_checked(checked: Checked, inputs: dict | None = None,

@@ -376,6 +376,12 @@ MESSAGES = {
     "raw_range_for": ("must be {lo}..{hi} for {fmt}", "对 {fmt} 必须在 {lo}..{hi} 之间"),
     "no_simulation": ("the input asks for no {kind} simulation", "输入中没有 {kind} 仿真"),
     "summaries_list": ("must be a list of chunk summaries", "必须是分块摘要的列表"),
+    "object_required": ("must be an object", "必须是对象"),
+    "at_least": ("must be ≥ {lo}, got {got}", "必须大于等于 {lo}，当前为 {got}"),
+    # the command line's own options (pulab robust)
+    "cli_input_or_catalogue": ("an input JSON file is required (or --catalogue)",
+                               "需要输入 JSON 文件（或 --catalogue）"),
+    "cli_needs_dask": ("needs Dask: pip install 'pulab[dask]'", "需要 Dask：pip install 'pulab[dask]'"),
     "both_given": ("{this_label} ({this}) and {other_label} ({other}) both set the motor's "
                    "{target}: give only one of them.",
                    "{this_label}（{this}）和{other_label}（{other}）都会设定电机的{target}：请只填其中一个。"),
@@ -759,16 +765,7 @@ def _label(path: str, lang: str) -> str:
 
 
 def render(code: str, params: dict, lang: str) -> str:
-    """The text of error ``code`` with ``params`` in ``lang`` (``'en'`` or ``'zh'``).
-
-    Code ``text`` is free English text (``params["text"]``), translated by
-    :func:`pulab.schema.messages.to_zh` for ``zh``.
-    """
-    if code == "text":
-        if lang == "en":
-            return params["text"]
-        from .messages import to_zh
-        return to_zh(params["text"])
+    """The text of error ``code`` with ``params`` in ``lang`` (``'en'`` or ``'zh'``)."""
     en, zh = MESSAGES[code]
     # A field's form label or a profile's name in this language.
     params = {k: _word(v, lang) for k, v in params.items()}

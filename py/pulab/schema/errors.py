@@ -24,18 +24,12 @@ class InputError(ValueError):
     ----------
     field : str
         JSON path of the offending input field, e.g. ``motor.rs_ohm``.
-    message : str, optional
-        Free text, for errors that have no catalog code yet (code ``text``; its
-        Chinese comes from :func:`pulab.schema.messages.to_zh`).
-    code : str, optional
+    code : str
         Catalog code (:data:`pulab.schema.catalog.MESSAGES`); ``params`` fill its text.
     """
 
-    def __init__(self, field: str, message: str | None = None, *, code: str | None = None,
-                 **params) -> None:
+    def __init__(self, field: str, *, code: str, **params) -> None:
         from .catalog import render  # the catalog imports nothing of this module's users
-        if code is None:
-            code, params = "text", {"text": message}
         self.field = field
         self.code = code
         self.params = params
