@@ -59,7 +59,8 @@ from array import array
 
 from ...schema.errors import InputError
 from ..slices import SLICE_STEPS, finish
-from ...profiles.inovance_code import current_pi_step, round_half_away
+from ...fixedpoint.qformat import round_half_away
+from ...profiles.inovance_code import current_pi_step
 from .inputs import periods
 from .plant import zoh
 from . import vendor_loop
