@@ -14,6 +14,8 @@ Examples
 'motor.rs_ohm: must be > 0, got -1'
 """
 
+from .catalog import render
+
 __all__ = ["InputError"]
 
 
@@ -33,7 +35,6 @@ class InputError(ValueError):
 
     def __init__(self, field: str, message: str | None = None, *, code: str | None = None,
                  **params) -> None:
-        from .catalog import render  # the catalog imports nothing of this module's users
         if code is None:
             code, params = "text", {"text": message}
         self.field = field
@@ -45,7 +46,6 @@ class InputError(ValueError):
     @property
     def message_zh(self) -> str:
         """The Chinese text of :attr:`message`."""
-        from .catalog import render
         return render(self.code, self.params, "zh")
 
     def as_dict(self) -> dict:

@@ -1,4 +1,4 @@
-"""Inovance-style C2000 profile (the seed's code) — a view of :mod:`pulab.profiles.inovance_code`.
+"""Inovance-style C2000 scaling (the seed's code) — a view of :mod:`pulab.profiles.inovance_code`.
 
 The motor constants are :func:`pulab.profiles.inovance_code.vendor_results` (bit-exact C2000
 statements); the current-loop integers are :func:`pulab.model.gains.current_pi` with
@@ -8,7 +8,7 @@ report's ``conventions.base`` says:
     pm_kp = round(kp·I_b/U_b·2^12)   (Q12, seed 2.2-9)
     pm_ki = round(ki·Ts·I_b/U_b·2^16) (Q16, Ts folded in)
 
-Its header is the report's own (:func:`pulab.export.c_header`).
+Its header is the report's own (:func:`pulab.profiles.inovance.header.c_header`).
 
 Examples
 --------
@@ -19,9 +19,9 @@ Examples
 
 from __future__ import annotations
 
-from ..model.gains import current_pi, gains_from_integers
-from .inovance_code import to_si
-from .common import SOURCES, SQRT3, TWO_PI, fixed
+from ...model.gains import current_pi, gains_from_integers
+from ..common import SOURCES, SQRT3, TWO_PI, fixed
+from ..inovance_code import to_si
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
            "gain_range", "gains_to_ints", "ints_to_gains", "profile"]

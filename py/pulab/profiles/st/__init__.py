@@ -1,0 +1,19 @@
+"""ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors.
+
+One vendor of :mod:`pulab.profiles.registry`, with the members of
+:class:`pulab.profiles.vendor.Vendor`. The scaling is :mod:`.scaling`, the header :mod:`.header`.
+"""
+
+from __future__ import annotations
+
+from .header import header
+from .scaling import (CONVENTIONS, CONVENTIONS_ZH, FILES, OPTIONS, bases, constants, gain_fields,
+                      gain_range, gains_to_ints, ints_to_gains, profile)
+
+__all__ = ["NAME", "NAMES", "HEADER_FILE", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "OPTIONS",
+           "bases", "constants", "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains",
+           "profile", "header"]
+
+NAME = "st"
+NAMES = ("ST", "ST")
+HEADER_FILE = "drive_parameters_pulab.h"

@@ -1,0 +1,19 @@
+"""TI MotorWare / InstaSPIN: per unit of the hardware full scale, IQ24.
+
+One vendor of :mod:`pulab.profiles.registry`, with the members of
+:class:`pulab.profiles.vendor.Vendor`. The scaling is :mod:`.scaling`, the header :mod:`.header`.
+"""
+
+from __future__ import annotations
+
+from .header import header
+from .scaling import (CONVENTIONS, CONVENTIONS_ZH, FILES, OPTIONS, bases, constants, gain_fields,
+                      gain_range, gains_to_ints, ints_to_gains, profile)
+
+__all__ = ["NAME", "NAMES", "HEADER_FILE", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "OPTIONS",
+           "bases", "constants", "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains",
+           "profile", "header"]
+
+NAME = "ti"
+NAMES = ("TI", "TI")
+HEADER_FILE = "user_mtr1_pulab.h"
