@@ -371,7 +371,7 @@ def _profile_runs(report: dict, z, umax_v: float, ref_d: float, ref_q: float, n:
     peak = math.sqrt(2.0) if report["input"]["conventions"]["base"] == "rms" else 1.0
     ctls = None
     out = {}
-    for name in vendor_loop.NAMES:
+    for name in vendor_loop.names():
         st = status[name]
         if not st["representable"]:
             out[name] = {"problems": [{"field": x["field"], "code": x["code"]}

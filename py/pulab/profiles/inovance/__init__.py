@@ -1,9 +1,10 @@
 """Inovance C2000 (the seed's code): per unit of the motor's rated values, Q12/Q16 integers.
 
 One vendor of :mod:`pulab.profiles.registry`, with the members of
-:class:`pulab.profiles.vendor.Vendor`. The scaling is :mod:`.scaling` (a view of :mod:`pulab.profiles.inovance_code`, the report's own
-integers), the header :mod:`.header` (the report's); its simulation is the report's fixed-point
-variant (:mod:`pulab.analyses.sim.current`), so it provides no ``controller`` here.
+:class:`pulab.profiles.vendor.Vendor`.  The scaling is :mod:`.scaling` (a view of
+:mod:`pulab.profiles.inovance_code`, the report's own integers), the header :mod:`.header`
+(the report's); its simulation is the report's fixed-point variant
+(:mod:`pulab.analyses.sim.current`), so it provides no ``controller`` here.
 """
 
 from __future__ import annotations
