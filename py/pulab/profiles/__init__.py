@@ -1,8 +1,9 @@
 """Vendor profiles: the same motor and drive in five vendors' scaling (docs/contract.md).
 
-One package per vendor — :mod:`.inovance` (the seed's code, via :mod:`pulab.profiles.inovance_code`),
-:mod:`.ti`, :mod:`.nxp`, :mod:`.st`, :mod:`.microchip` — each with the members of
-:class:`pulab.profiles.vendor.Vendor`, listed once in :mod:`pulab.profiles.registry`.
+One package per vendor — :mod:`.inovance` (the seed's code, via
+:mod:`pulab.profiles.inovance_code`), :mod:`.ti`, :mod:`.nxp`, :mod:`.st`,
+:mod:`.microchip` — each with the members of :class:`pulab.profiles.vendor.Vendor`, listed
+once in :mod:`pulab.profiles.registry`.
 This module composes them: the ``profiles`` input section checked (:func:`options`), every
 profile's constants, bases and status (:func:`profiles`), and one profile's header
 (:func:`header`).

@@ -8,8 +8,8 @@ Given the firmware integers of one profile (e.g. Inovance ``pm_kp``/``pm_ki``, T
    error and what the stored integer means back in SI — what rounding loses);
 3. runs the chain source → … → source through every profile in the registry's order
    (:mod:`pulab.profiles.registry`: inovance → ti → nxp → st → microchip), rotated to
-   start at the source, each step encoding the previous step's stored integers' SI meaning (``chain``), so the
-   losses accumulate as they would when a port is ported again.
+   start at the source, each step encoding the previous step's stored integers' SI
+   meaning (``chain``), so the losses accumulate as they would when a port is ported again.
 
 Each chain step moves kp by at most one LSB of that step's format (half an LSB
 when it rounds to nearest) and ki by one LSB plus ki·|Δkp|/kp (TI's series Ki
