@@ -140,6 +140,8 @@ OPTIONAL = {
     "controller": "controller(p, umax_peak, udc) -> dict: its integer current PI, bound to its "
                   "profile ``p``, for the fixed-point simulation "
                   "(:func:`pulab.analyses.sim.vendor_loop.controllers` says the keys)",
+    "warnings": "warnings(p) -> list: its own warnings about its profile ``p`` in the report, "
+                "as (catalog code, params) pairs",
     "decode_header": "decode_header(text) -> dict: its header read back into integers",
     "board": "board(opt) -> dict: its board's sensing and PWM conventions",
     "observer": "observer(ctx, opt) -> dict: its observer's constants",

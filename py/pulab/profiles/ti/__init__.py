@@ -10,11 +10,11 @@ from __future__ import annotations
 from .header import header
 from .pi import controller
 from .scaling import (CONVENTIONS, CONVENTIONS_ZH, FILES, OPTIONS, bases, constants, gain_fields,
-                      gain_range, gains_to_ints, ints_to_gains, profile)
+                      gain_range, gains_to_ints, ints_to_gains, profile, warnings)
 
 __all__ = ["NAME", "NAMES", "HEADER_FILE", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "OPTIONS",
            "bases", "constants", "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains",
-           "profile", "header", "controller"]
+           "profile", "header", "controller", "warnings"]
 
 NAME = "ti"
 NAMES = ("TI", "TI")

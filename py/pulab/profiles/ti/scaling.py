@@ -30,9 +30,10 @@ from ..common import SOURCES, SQRT2, derived, fixed
 from ..vendor import Option
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
-           "gain_range", "gains_to_ints", "ints_to_gains", "check_for_errors", "profile", "constants"]
+           "gain_range", "gains_to_ints", "ints_to_gains", "check_for_errors", "warnings", "profile",
+           "constants"]
 
-#: (input name, default from the motor and drive, meaning, form label (en, zh))
+#: Its hardware inputs (:class:`pulab.profiles.vendor.Option`).
 OPTIONS = (
     Option("full_scale_voltage_v", lambda c: c["udc"], "USER_IQ_FULL_SCALE_VOLTAGE_V; default U_dc",
            ("full-scale voltage", "满量程电压")),
@@ -134,6 +135,12 @@ def check_for_errors(ctx: dict, opt: dict) -> list:
         ("USER_ErrorCode_iqFullScaleFreq_Hz_Low", f < 50.0, "F_FS < 50 Hz"),
     )
     return [[code, why] for code, hit, why in rules if hit]
+
+
+def warnings(p: dict) -> list:
+    """One ``warning.ti_check`` per condition of :func:`check_for_errors` this profile ``p``
+    hits, as ``(catalog code, params)``."""
+    return [("warning.ti_check", {"code": code, "why": why}) for code, why in p["checks"]]
 
 
 def profile(ctx: dict, opt: dict) -> dict:
