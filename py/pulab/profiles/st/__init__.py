@@ -1,20 +1,8 @@
-"""ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors.
-
-One vendor of :mod:`pulab.profiles.registry`, with the members of
-:class:`pulab.profiles.vendor.Vendor`: the scaling is :mod:`.scaling`, the header
-:mod:`.header`, the integer current PI of its simulation :mod:`.pi`.
-"""
-
-from __future__ import annotations
+"""ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors."""
 
 from .header import header
 from .pi import controller
-from .scaling import (CONVENTIONS, CONVENTIONS_ZH, FILES, OPTIONS, bases, constants, gain_fields,
-                      gain_range, gains_to_ints, ints_to_gains, profile)
-
-__all__ = ["NAME", "NAMES", "HEADER_FILE", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "OPTIONS",
-           "bases", "constants", "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains",
-           "profile", "header", "controller"]
+from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
 
 NAME = "st"
 NAMES = ("ST", "ST")
