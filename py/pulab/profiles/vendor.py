@@ -8,7 +8,7 @@ the input's choices and option fields (:mod:`pulab.schema.vendors`), the report'
 simulations (docs/design.md, "Adding a vendor").
 
 The members in :data:`OPTIONAL` may be left out; :func:`provided` gives None for them then,
-and the caller skips the vendor (its simulation, its proof, …) rather than pretend.
+and the caller skips the vendor (its simulation, its warnings, …) rather than pretend.
 
 Examples
 --------
@@ -105,8 +105,10 @@ class Vendor(Protocol):
         Its two integers, as constant records, for SI kp [V/A], ki [V/(A·s)].
     ints_to_gains(kp_int, ki_int, ctx, opt, axis) -> (float, float)
         The inverse: the SI kp, ki two stored integers stand for.
-    header(r) -> str
-        Its C header for a report ``r`` computed with a ``profiles`` section.
+    header(p, ctx, r) -> str
+        Its C header: ``p`` its profile in the report ``r`` (computed with a ``profiles``
+        section), ``ctx`` the SI context; a vendor whose header is the report's own (Inovance)
+        reads ``r``.
     """
 
     NAME: str
@@ -130,7 +132,7 @@ class Vendor(Protocol):
     def ints_to_gains(self, kp_int: int, ki_int: int, ctx: dict, opt: dict,
                       axis: str) -> tuple: ...
 
-    def header(self, r: dict) -> str: ...
+    def header(self, p: dict, ctx: dict, r: dict) -> str: ...
 
 
 #: Members a vendor may leave out, and what each gives when provided.
