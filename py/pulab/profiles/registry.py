@@ -27,9 +27,10 @@ __all__ = ["VENDORS", "register", "unregister", "names", "get", "vendors"]
 
 #: Every vendor by name, in order (read it; :func:`register` and :func:`unregister` change it).
 VENDORS: dict = {}
-#: The members :func:`register` checks (the optional ones: :data:`.vendor.OPTIONAL`).
-_REQUIRED = tuple(n for n in Vendor.__annotations__) + (
-    "bases", "profile", "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains", "header")
+#: The members :func:`register` checks: those :class:`.vendor.Vendor` declares (the optional
+#: ones are :data:`.vendor.OPTIONAL`).
+_REQUIRED = tuple(Vendor.__annotations__) + tuple(
+    n for n, member in vars(Vendor).items() if callable(member) and not n.startswith("_"))
 
 
 def register(vendor: Vendor) -> Vendor:
@@ -45,7 +46,8 @@ def register(vendor: Vendor) -> Vendor:
     if missing:
         raise TypeError(f"vendor {getattr(vendor, 'NAME', vendor)!r} lacks {', '.join(missing)}")
     VENDORS[vendor.NAME] = vendor
-    _schema.register(vendor.NAME, vendor.NAMES, tuple(o.field(vendor.NAME) for o in vendor.OPTIONS))
+    _schema.register(vendor.NAME, vendor.NAMES, tuple(o.field(vendor.NAME) for o in vendor.OPTIONS),
+                     {a: vendor.gain_fields(a) for a in ("d", "q")}, vendor.HEADER_FILE)
     return vendor
 
 

@@ -371,11 +371,12 @@ def _plain(f: Field) -> dict:
 def schema_json() -> str:
     """The schema as JSON text (``web/src/generated/schema.json``, what the page is built from)."""
     sections = [{"path": s.path, "title": list(s.title)} for s in SECTIONS.values()]
-    # the vendors panel's options (registered by the vendors): their labels and units
-    options = [{"path": f.path, "label": list(f.label), "unit": f.unit}
+    # the vendors panel's options (registered by the vendors): their labels, units and kinds
+    options = [{"path": f.path, "label": list(f.label), "unit": f.unit, "kind": f.kind}
                for f in vendors.option_fields()]
     return json.dumps({"sections": sections, "fields": [_plain(f) for f in FIELDS],
-                       "options": options}, ensure_ascii=False, indent=1) + "\n"
+                       "options": options, "vendors": vendors.page()},
+                      ensure_ascii=False, indent=1) + "\n"
 
 
 def _g(x) -> str:

@@ -2,16 +2,17 @@
 
 The schema lies below the vendor profiles, so it does not import them: each vendor is
 registered here by the one registry of vendors (:mod:`pulab.profiles.registry`) when that
-loads, with its name, its display name (en, zh) and the fields of its options
-(``profiles.NAME.KEY``, labelled with the vendor's name first).  ``conventions.firmware``
-offers :data:`NAMES`, error texts name a vendor and its options from here
-(:mod:`.catalog`), and ``schema.json`` lists the options for the page's vendors panel.
+loads, with its name, its display name (en, zh), the fields of its options
+(``profiles.NAME.KEY``, labelled with the vendor's name first), the names of its current-loop
+integers (``translate.values``) and its header's file name.  ``conventions.firmware`` offers
+:data:`NAMES`, error texts name a vendor and its options from here (:mod:`.catalog`), and
+``schema.json`` lists the vendors and their options for the page (:func:`page`).
 
 Examples
 --------
 >>> from pulab.schema.fields import Field
 >>> register("acme", ("Acme", "艾克米"), (Field("profiles.acme.gain", "number",
-...     label=("gain", "增益")),))
+...     label=("gain", "增益")),), {"d": ("KP", "KI"), "q": ("KP", "KI")}, "acme.h")
 >>> "acme" in NAMES, display("acme", "zh"), option_field("profiles.acme.gain").label
 (True, '艾克米', ('Acme · gain', '艾克米 · 增益'))
 >>> unregister("acme"); "acme" in NAMES
@@ -22,9 +23,9 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
-__all__ = ["NAMES", "register", "unregister", "display", "option_field", "option_fields"]
+__all__ = ["NAMES", "register", "unregister", "display", "option_field", "option_fields", "page"]
 
-#: name → (display name (en, zh), option fields), in registration order.
+#: name → (display name (en, zh), option fields, gain fields, header file), in order.
 _VENDORS: dict = {}
 
 
@@ -46,7 +47,8 @@ class _Names(Sequence):
 NAMES = _Names()
 
 
-def register(name: str, names: tuple, options: tuple) -> None:
+def register(name: str, names: tuple, options: tuple, gain_fields: dict,
+             header_file: str) -> None:
     """Make vendor ``name`` known to the input.
 
     Parameters
@@ -58,10 +60,14 @@ def register(name: str, names: tuple, options: tuple) -> None:
     options : tuple of :class:`pulab.schema.fields.Field`
         Its options, paths ``profiles.NAME.KEY``, labels without the vendor's name (it is
         prefixed here: the vendors panel and the messages show ``TI · GLOBAL_Q``).
+    gain_fields : dict
+        Axis ``'d'``/``'q'`` → the names of its current-loop kp and ki integers.
+    header_file : str
+        The name its header is saved under.
     """
     labelled = tuple(f._replace(label=tuple(f"{v} · {w}" for v, w in zip(names, f.label)))
                      for f in options)
-    _VENDORS[name] = (tuple(names), labelled)
+    _VENDORS[name] = (tuple(names), labelled, gain_fields, header_file)
 
 
 def unregister(name: str) -> None:
@@ -77,7 +83,7 @@ def display(name: str, lang: str) -> str | None:
 
 def option_fields() -> list:
     """Every registered vendor's option fields, vendor by vendor."""
-    return [f for _, fields in _VENDORS.values() for f in fields]
+    return [f for entry in _VENDORS.values() for f in entry[1]]
 
 
 def option_field(path: str):
@@ -86,3 +92,11 @@ def option_field(path: str):
     if len(parts) != 3 or parts[0] != "profiles" or parts[1] not in _VENDORS:
         return None
     return next((f for f in _VENDORS[parts[1]][1] if f.path == path), None)
+
+
+def page() -> list:
+    """The vendors as ``schema.json`` gives them to the page: ``name``, ``label`` (en, zh),
+    ``gain_fields`` ({axis: [kp, ki]}) and ``header_file``, in order."""
+    return [{"name": name, "label": list(names),
+             "gain_fields": {a: list(g) for a, g in gains.items()}, "header_file": header}
+            for name, (names, _, gains, header) in _VENDORS.items()]
