@@ -84,8 +84,7 @@ def profiles(ctx: dict, opts: dict, names: tuple | None = None) -> dict:
         p = v.profile(ctx, opts[name])
         p["bases"] = bases_table(name, ctx, p)
         p["files"] = v.FILES
-        # the report's own firmware: what its C code cannot compute for this motor
-        problems = ctx["firmware_problems"] if name == "inovance" else []
+        problems = p.pop("problems", [])
         scales = tuple(o.key for o in v.OPTIONS if o.kind != "flag")
         problems = problems + [limits.constant_problem(name, c, scales)
                                for c in p["constants"].values()

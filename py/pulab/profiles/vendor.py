@@ -96,7 +96,9 @@ class Vendor(Protocol):
         Its voltage, current and inductance bases in SI.
     profile(ctx, opt) -> dict
         ``inputs`` (the options used) and ``constants`` (:func:`pulab.profiles.common.fixed`
-        records), and whatever else it reports.
+        records), and whatever else it reports; ``problems``, when given, are the limit
+        entries (:mod:`pulab.profiles.limits`) of what its code cannot compute for this motor,
+        moved to ``firmware.NAME``.
     gain_fields(axis) -> (str, str)
         The names of its current-loop kp and ki integers on axis ``'d'`` or ``'q'``.
     gain_range(axis) -> (int, int)

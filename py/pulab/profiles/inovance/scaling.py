@@ -90,7 +90,7 @@ def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> 
 
 
 def profile(ctx: dict, opt: dict) -> dict:
-    """The seed's integers for this motor, as profile constants."""
+    """The seed's integers for this motor, as profile constants, and the problems of its code."""
     out = {}
     for name, (si_key, expr) in _VENDOR.items():
         if name not in ctx["vendor"]:
@@ -107,5 +107,6 @@ def profile(ctx: dict, opt: dict) -> dict:
         for k, rec in gains_to_ints(kp, ki, ctx, opt, axis).items():
             rec["name"] = f"{k}_{axis}"
             out[rec["name"]] = rec
-    return {"inputs": {}, "constants": out}
+    # what its C code cannot compute for this motor (the report's firmware.inovance)
+    return {"inputs": {}, "constants": out, "problems": ctx["firmware_problems"]}
 
