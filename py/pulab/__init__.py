@@ -12,9 +12,10 @@ layers listed above it, never from a layer below; the import graph has no cycle.
 above their folder: the families that call :func:`report`) and checks every import,
 deferred ones too::
 
-    fixedpoint/   Q formats and C integer arithmetic           qformat, cint
+    fixedpoint/   Q formats and C integer arithmetic           qformat, cint, counted
     schema/       what an input is and how it is read and      errors, jsontext, textnum,
-                  checked; the error texts                     inputs, messages
+                  checked; the error texts                     inputs, messages, vendors (the
+                                                               vendors the input knows)
     model/        the per-unit model of one motor and drive    bases, gains, datasheet
     profiles/     firmware scaling, one package per vendor     registry (the list), vendor
                                                                (the interface), inovance
