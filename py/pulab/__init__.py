@@ -7,17 +7,20 @@ wraps it for JSON callers and ``python -m pulab report FILE`` for the shell.
 Layout
 ------
 The package is grouped by layer.  A module imports from its own layer and the
-layers listed above it, never from a layer below (the known exceptions are
-named at the end)::
+layers listed above it, never from a layer below; the import graph has no cycle.
+``tests/py/test_imports.py`` declares the order (``LAYERS``, with the modules that sit
+above their folder: the families that call :func:`report`) and checks every import,
+deferred ones too::
 
-    fixedpoint/   Q formats and C integer arithmetic           qformat, cint
+    fixedpoint/   Q formats and C integer arithmetic           qformat, cint, counted
     schema/       what an input is and how it is read and      errors, jsontext, textnum,
-                  checked; the error texts                     inputs, catalog
+                  checked; the error texts                     inputs, catalog, vendors (the
+                                                               vendors the input knows)
     model/        the per-unit model of one motor and drive    bases, gains, datasheet
-    profiles/     firmware scaling, one module per vendor      inovance (+ inovance_code:
-                                                               the seed's C code bit-exact,
-                                                               inovance_magic: its magic
-                                                               numbers), ti, st, nxp,
+    profiles/     firmware scaling, one package per vendor     registry (the list), vendor
+                                                               (the interface), inovance
+                                                               (+ inovance_code: the seed's
+                                                               C code bit-exact), ti, st, nxp,
                                                                microchip, headers, translate
     ctrace/       the C tracer: a user's own fixed-point code  lexer, parser, check, evaluate…
     analyses/     what is computed from a model                loop/, sim/, review, sweep,
@@ -38,7 +41,8 @@ named at the end)::
 
 Where a new module goes: a new number format or integer rule → ``fixedpoint``; a
 new input check, parser limit or error text → ``schema``; a new per-unit quantity
-→ ``model``; a vendor → ``profiles/NAME.py`` (listed in ``profiles.MODULES``); a
+→ ``model``; a vendor → ``profiles/NAME/`` (one line in ``profiles/registry.py``;
+docs/design.md, "Adding a vendor"); a
 new computation over a model (margins, responses, families) → ``analyses``; a new
 output format → ``export``; a new subcommand → ``cli/`` (registered in ``__main__``).
 Tests mirror modules: ``tests/py/test_NAME.py``.
@@ -49,10 +53,6 @@ form (``web/src/generated/schema.json``, rewritten by ``npm run build``), the co
 input tables (``tests/py/test_schema.py`` prints the text to paste) and the fuzzer follow
 from it.  A new error or warning is one entry in :mod:`pulab.schema.catalog` (code → en,
 zh text), raised as ``InputError(field, code=..., **params)``.
-
-Known upward imports: ``model.gains`` and ``schema.inputs`` use the Inovance
-rounding and raw fields of ``profiles.inovance_code``; ``analyses.integers`` and
-``profiles.translate`` call :func:`report`.
 """
 
 from .schema.errors import InputError

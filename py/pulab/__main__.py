@@ -87,25 +87,21 @@ def _header(inp, name: str | None) -> str:
     from . import profiles
     if name is None:
         raise InputError("profile", code="required")
-    if name not in profiles.NAMES:  # before the report: a typo should not cost a report
-        raise InputError("profile", code="not_choice", choices=", ".join(profiles.NAMES),
-                         got=shown(name))
+    profiles.registry.get(name)  # before the report: a typo should not cost a report
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
     return profiles.header(report({**inp, "profiles": inp.get("profiles") or {}}), name)
 
 
 def _translate(inp, args) -> dict:
-    from .profiles import MODULES, NAMES
+    from .profiles import registry
     from .profiles.translate import translate
     if args.source is None:
         raise InputError("translate.from", code="required")
-    if args.source not in NAMES:
-        raise InputError("translate.from", code="not_choice", choices=", ".join(NAMES),
-                         got=shown(args.source))
+    vendor = registry.get(args.source, "translate.from")
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
-    names = MODULES[args.source].gain_fields(args.axis) if args.axis in ("d", "q") else ("", "")
+    names = vendor.gain_fields(args.axis) if args.axis in ("d", "q") else ("", "")
     values = {}
     for name, text in zip(names, (args.kp, args.ki)):
         if text is not None:  # absent: translate() names the missing field

@@ -13,25 +13,30 @@ from __future__ import annotations
 
 from .model.board import board
 from .model.bases import bases, flux_linkage, per_unit
-from .profiles.inovance_magic import magic_constants
+from .profiles.inovance.magic import magic_constants
 from .model.datasheet import mechanical
 from .model.gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .schema.inputs import normalize
 from .schema.catalog import render
 from .analyses.review import review
 from .analyses.slices import finish
-from .profiles import limits
+from . import profiles as _profiles
+from .profiles import limits, registry
 from .profiles.inovance_code import current_pi_step, raw_from_si, raw_split, vendor_split
+from .profiles.vendor import provided
 
 __all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "input_raw_split",
            "current_pi_section"]
 
 
 def _profile_warnings(prof: dict) -> list:
-    """One warning per profile constant the firmware could not store as intended, as
-    ``(catalog code, params)`` pairs."""
-    w = [("warning.ti_check", {"code": code, "why": why})
-         for code, why in prof["ti"]["checks"]] if "ti" in prof else []
+    """The vendors' own warnings (their optional ``warnings``), then one per profile constant
+    the firmware could not store as intended, as ``(catalog code, params)`` pairs."""
+    w = []
+    for name, p in prof.items():
+        own = provided(registry.get(name), "warnings")
+        if own:
+            w += own(p)
     for name, p in prof.items():
         for k, c in p["constants"].items():
             params = {"path": f"profiles.{name}.{k}", "profile_name": {"vendor": name}, "name": k,
@@ -147,7 +152,6 @@ def report_steps(inp: dict):
     # The five profiles only when asked (they cost more than the rest); the one shipped always,
     # so that one report holds its integers and the review grades what it cannot hold.
     if "profiles" in n or shipped != "inovance":
-        from . import profiles as _profiles
         ctx = _profiles.context(n, raw, vendor, pi, firmware["inovance"]["problems"])
         opts = _profiles.options(n.get("profiles"), ctx)
         if "profiles" in n:

@@ -18,9 +18,11 @@ from collections import Counter
 from adversarial import BASE, FIELDS, NASTY_TEXT, NUMBER_LITERALS, _value, cases
 from pulab.__main__ import main
 from pulab.api import KINDS, call_json
-from pulab.profiles import NAMES
+from pulab.profiles import registry
 from pulab.schema.fields import FIELDS as SCHEMA_FIELDS
 from test_hardening import _one_line, _strict
+
+NAMES = registry.names()
 
 PER_COMMAND = 600
 PLAIN = {k: v for k, v in BASE.items() if k != "sim"}

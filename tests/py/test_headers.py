@@ -9,7 +9,9 @@ import pytest
 
 from conftest import SEED_INPUT
 from pulab import report
-from pulab.profiles import NAMES, header
+from pulab.profiles import header, registry
+
+NAMES = registry.names()
 
 GCC = shutil.which("gcc")
 pytestmark = pytest.mark.skipif(GCC is None, reason="needs gcc")

@@ -20,9 +20,11 @@ import pytest
 from conftest import ROOT, SEED_INPUT, chinese
 from pulab import report
 from pulab.api import call_json
-from pulab.profiles import NAMES, header
+from pulab.profiles import header, registry
 from pulab.profiles.common import mantissa_shift
 from pulab.profiles.translate import translate
+
+NAMES = registry.names()
 
 GOLDEN = json.loads((ROOT / "tests/golden/04_ind380_7k5.json").read_text())["input"]
 SERVO = json.loads((ROOT / "tests/golden/05_servo220_400w.json").read_text())["input"]

@@ -296,10 +296,12 @@ def test_a_constant_too_big_names_the_profiles_options_by_their_labels_and_links
 
 
 def test_every_profile_option_has_a_label_in_both_languages():
-    from pulab.profiles import MODULES, OPTION_LABELS
+    from pulab.profiles import MODULES
+    from pulab.schema import vendors
     keys = {f"profiles.{n}.{o[0]}" for n, m in MODULES.items() for o in m.OPTIONS}
-    assert set(OPTION_LABELS) == keys and len(keys) == 21
-    for en, zh in OPTION_LABELS.values():
+    labels = {f.path: f.label for f in vendors.option_fields()}
+    assert set(labels) == keys and len(keys) == 21
+    for en, zh in labels.values():
         assert en and zh and " · " in en and " · " in zh
 
 

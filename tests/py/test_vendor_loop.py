@@ -68,7 +68,7 @@ def _replay(exe, ctl: dict, axis: str, run: dict, ref: int, state: tuple) -> tup
     return [int(line.split()[0]) for line in rows], [int(x) for x in last.split()[1:]]
 
 
-@pytest.mark.parametrize("name", vendor_loop.NAMES)
+@pytest.mark.parametrize("name", vendor_loop.names())
 @pytest.mark.parametrize("stress", [False, True])
 def test_closed_loop_outputs_equal_the_c_oracle(oracle, capsys, seed_input, name, stress):
     require("arm", capsys)
@@ -120,7 +120,7 @@ def _microchip_float(z, kp: float, ki_ts: float, kc: float, umax: float, ref_q: 
     return iq
 
 
-@pytest.mark.parametrize("name", vendor_loop.NAMES)
+@pytest.mark.parametrize("name", vendor_loop.names())
 def test_fixed_point_stays_near_a_float_pi_of_its_structure(seed_input, name):
     # Tolerance: 2 counts of the vendor's current word (feedback rounding) plus 1e-4 of the
     # step (the stored gains' relative rounding is ≤ 6e-5 on this motor: TI's truncated Kp,
@@ -152,7 +152,7 @@ def test_report_metrics_of_every_profile(seed_input):
     r = report({**seed_input, "sim": {}})
     c = r["sim"]["current"]
     ts = r["input"]["drive"]["ts_s"]
-    assert sorted(c["by_profile"]) == sorted(vendor_loop.NAMES)
+    assert sorted(c["by_profile"]) == sorted(vendor_loop.names())
     for name, b in c["by_profile"].items():
         assert b["ran"] is True
         m = b["metrics"]
@@ -166,7 +166,7 @@ def test_every_profile_runs_whichever_firmware_is_shipped(seed_input):
     # The report then holds the shipped profile alone; the simulation still runs all of them.
     r = report({**seed_input, "sim": {}, "conventions": {"firmware": "ti"}})
     assert list(r["profiles"]) == ["ti"]
-    assert sorted(r["sim"]["current"]["by_profile"]) == sorted(vendor_loop.NAMES)
+    assert sorted(r["sim"]["current"]["by_profile"]) == sorted(vendor_loop.names())
 
 
 def test_a_profile_that_cannot_hold_the_gains_does_not_run(seed_input):

@@ -1,4 +1,5 @@
-"""pulab.analyses.sim.vendor_pi against a C oracle (tests/oracle/vendor_pi.c, gcc -m32 -fwrapv).
+"""The vendors' integer PI steps (pulab.profiles.NAME.pi) against a C oracle
+(tests/oracle/vendor_pi.c, gcc -m32 -fwrapv).
 
 The oracle is our own C of each vendor's PI step, written in the constructs of the vendor's
 public code and compiled by a real compiler; it never imports pulab.  Both are fed the same
@@ -18,7 +19,10 @@ import subprocess
 import pytest
 
 from ctrace_compilers import require
-from pulab.analyses.sim.vendor_pi import microchip_step, nxp_step, st_step, ti_step
+from pulab.profiles.microchip.pi import step as microchip_step
+from pulab.profiles.nxp.pi import step as nxp_step
+from pulab.profiles.st.pi import step as st_step
+from pulab.profiles.ti.pi import step as ti_step
 
 ORACLE = pathlib.Path(__file__).resolve().parents[1] / "oracle" / "vendor_pi.c"
 SEED = 20261126

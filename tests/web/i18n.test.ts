@@ -1,6 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { DICTS, defaultLang, errText, setLang, t } from '../../web/src/i18n';
 import { ALL_FIELDS, SECTIONS } from '../../web/src/fields';
+import { vendorName } from '../../web/src/vendors';
 
 describe('defaultLang: stored choice, then navigator.languages', () => {
   const cases: [string[], string | null, string][] = [
@@ -24,6 +25,13 @@ describe('every label exists in both languages', () => {
       expect(f.label[0]).toBeTruthy();
       expect(f.label[1]).toBeTruthy();
       for (const o of f.options ?? []) {
+        if (f.path === 'conventions.firmware') { // a vendor: pulab names it (generated/schema.json)
+          for (const lang of ['zh', 'en'] as const) {
+            setLang(lang);
+            expect(vendorName(o), `${lang} ${o}`).toBeTruthy();
+          }
+          continue;
+        }
         expect(DICTS.en).toHaveProperty([`o.${o}`]);
         expect(DICTS.zh).toHaveProperty([`o.${o}`]);
       }

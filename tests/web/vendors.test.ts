@@ -5,7 +5,8 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { join } from 'node:path';
 import { bootPulab, type NodePulab } from './pulab-node';
-import { gainFields, profilesSection, VENDORS, type Vendor } from '../../web/src/panels/vendors';
+import { profilesSection } from '../../web/src/panels/vendors';
+import { gainFields, VENDORS, type Vendor } from '../../web/src/vendors';
 
 describe('gainFields: vendor and axis → the names of its two current-loop integers', () => {
   const cases: [Vendor, 'd' | 'q', [string, string]][] = [

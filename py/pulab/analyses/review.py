@@ -33,8 +33,8 @@ import math
 
 from ..schema.catalog import render
 from ..schema.errors import InputError
+from ..schema import vendors
 from ..schema.fields import FIELDS
-from ..profiles import OPTION_LABELS
 from ..profiles.inovance_code import RAW_FIELDS, raw_source
 
 __all__ = ["THRESHOLDS", "SEVERITIES", "grade", "review", "headroom"]
@@ -43,8 +43,9 @@ SQRT3 = math.sqrt(3.0)
 SQRT2 = math.sqrt(2.0)
 
 SEVERITIES = ("error", "warning", "note")
-#: The form label (en, zh) of each input a finding may point at (the vendors panel's options too).
-_LABELS = {**{fd.path: fd.label for fd in FIELDS if fd.label[0]}, **OPTION_LABELS}
+#: The form label (en, zh) of each input a finding may point at (the vendors' options:
+#: :func:`_label`).
+_LABELS = {fd.path: fd.label for fd in FIELDS if fd.label[0]}
 #: The SI unit of each input (what a finding's text prints a value in).
 _UNITS = {fd.path: fd.unit for fd in FIELDS}
 #: The design choice behind what only the vendor's code decides: which firmware to ship.
@@ -88,13 +89,21 @@ def grade(value: float, bounds: dict) -> str | None:
     return None
 
 
+def _label(field: str) -> tuple:
+    """The form label (en, zh) of ``field``, a vendor's option too; empty when it has none."""
+    if field in _LABELS:
+        return _LABELS[field]
+    option = vendors.option_field(field)
+    return option.label if option is not None else ("", "")
+
+
 def _finding(out: list, severity: str | None, code: str, key: str, field: str,
              value, text: str | None = None, /, **params) -> None:
     """Add a finding; its words are catalog entry ``finding.<text or code>`` with ``params``."""
     if severity is None:
         return
     entry = f"finding.{text or code}"
-    label = _LABELS.get(field, ("", ""))
+    label = _label(field)
     params = {**params, "label": label[0] or field}
     params_zh = {**params, "label": label[1] or field}
     out.append({"severity": severity, "code": code, "key": key, "field": field,
@@ -341,10 +350,6 @@ def _pll(f: list, sim: dict | None) -> None:
         return  # the firmware's variant when present, else the next one
 
 
-#: The vendors' names as their documents print them.
-_VENDOR_NAMES = {"ti": "TI", "nxp": "NXP", "st": "ST", "microchip": "Microchip"}
-
-
 def _pi_arithmetic(f: list, sim: dict | None, shipped: str, vendor: dict) -> None:
     """The shipped firmware's integer current PI in the simulated step: a wrap gives a wrong
     voltage (error), a saturating operation that clipped loses the value (warning); the
@@ -368,7 +373,7 @@ def _pi_arithmetic(f: list, sim: dict | None, shipped: str, vendor: dict) -> Non
         count = run["events"][event]
         if count:
             _finding(f, severity, f"pi_{event}", f"{key}.{event}", "current_loop.bandwidth_hz",
-                     count, profile=_VENDOR_NAMES[shipped], count=count, key=key)
+                     count, profile={"vendor": shipped}, count=count, key=key)
 
 
 def _robust(f: list, loop: dict | None) -> None:

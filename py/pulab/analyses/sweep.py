@@ -48,7 +48,8 @@ from .loop.inputs import validate as check_analysis
 from ..schema.inputs import SECTIONS
 from ..schema.validate import object_fields, real, shown
 from .integers import RAW_ONLY_NAMES, STATUSES, evaluate, integer_names, profile_name
-from ..profiles.inovance_code import raw_value, round_half_away
+from ..fixedpoint.qformat import round_half_away
+from ..profiles.inovance_code import raw_value
 
 __all__ = ["Axis", "Plan", "make_plan", "chunk", "merge", "sweep", "describe", "MAX_AXIS_POINTS",
            "MAX_POINTS", "ERROR_THRESHOLDS_PCT", "WORST_PER_INTEGER"]

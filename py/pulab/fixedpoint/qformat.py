@@ -32,7 +32,7 @@ import math
 from dataclasses import dataclass
 from fractions import Fraction
 
-__all__ = ["QFormat", "QEncoded", "encode", "decode", "iqsat", "round_rational",
+__all__ = ["QFormat", "QEncoded", "encode", "decode", "iqsat", "round_half_away", "round_rational",
            "parse_format", "ROUNDINGS", "OVERFLOWS"]
 
 ROUNDINGS = ("nearest", "convergent", "floor", "zero")
@@ -111,6 +111,18 @@ def parse_format(name: str, word_bits: int | None = None) -> QFormat:
     if word_bits is None:
         raise ValueError("short name Qn needs word_bits")
     return QFormat(word_bits, int(body), signed)
+
+
+def round_half_away(x) -> int:
+    """Round to nearest, ties away from zero (not Python's banker's ``round``): the rounding of
+    the firmwares' own float-to-integer code.
+
+    >>> round_half_away(2.5), round_half_away(-2.5), round_half_away(-2.4)
+    (3, -3, -2)
+    """
+    if not isinstance(x, (int, float)):
+        return x.round_half_away()  # an interval of reals (pulab.fixedpoint.interval)
+    return int(math.copysign(math.floor(abs(x) + 0.5), x))
 
 
 def round_rational(x: Fraction, rounding: str) -> int:

@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 
 from ..schema.errors import InputError
-from ..profiles.inovance_code import round_half_away
+from ..fixedpoint.qformat import round_half_away
 
 __all__ = ["current_pi_si", "gains_from_integers", "current_pi", "pi_integer_ideals", "pll_gains",
            "INT32_MIN",

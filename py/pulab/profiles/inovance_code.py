@@ -37,7 +37,7 @@ from typing import NamedTuple
 from ..fixedpoint.cint import INT32, UINT16, UINT32, CDivisionByZero, CInt, CType
 from ..schema.errors import InputError
 from ..schema.fields import RAW_FIELDS
-from ..fixedpoint.qformat import iqsat
+from ..fixedpoint.qformat import iqsat, round_half_away
 
 __all__ = [
     "RAW_FIELDS", "RAW_SCALE", "raw_source", "raw_value", "raw_split", "raw_from_si",
@@ -79,13 +79,6 @@ def raw_value(name: str, si_value: float, inductance_unit: str) -> int:
     (6947, 6948)
     """
     return round_half_away(float(si_value) * raw_source(name, inductance_unit)[1])
-
-
-def round_half_away(x: float) -> int:
-    """Round to nearest, ties away from zero (not Python's banker's ``round``)."""
-    if not isinstance(x, (int, float)):
-        return x.round_half_away()  # an interval of reals (pulab.fixedpoint.interval)
-    return int(math.copysign(math.floor(abs(x) + 0.5), x))
 
 
 def raw_split(si: dict, inductance_unit: str, given: dict) -> tuple[dict, dict]:

@@ -6,10 +6,10 @@ Given the firmware integers of one profile (e.g. Inovance ``pm_kp``/``pm_ki``, T
 1. decodes them to SI (kp [V/A], ki [V/(A·s)]) with that profile's scaling;
 2. encodes the SI gains into every other profile (``profiles``: value, ideal,
    error and what the stored integer means back in SI — what rounding loses);
-3. runs the chain source → … → source through every profile in the order
-   inovance → ti → nxp → st → microchip (rotated to start at the source), each step
-   encoding the previous step's stored integers' SI meaning (``chain``), so the
-   losses accumulate as they would when a port is ported again.
+3. runs the chain source → … → source through every profile in the registry's order
+   (:mod:`pulab.profiles.registry`: inovance → ti → nxp → st → microchip), rotated to
+   start at the source, each step encoding the previous step's stored integers' SI
+   meaning (``chain``), so the losses accumulate as they would when a port is ported again.
 
 Each chain step moves kp by at most one LSB of that step's format (half an LSB
 when it rounds to nearest) and ki by one LSB plus ki·|Δkp|/kp (TI's series Ki
@@ -33,13 +33,14 @@ from __future__ import annotations
 from ..schema.errors import InputError
 from ..schema.validate import integer, object_fields, shown
 from ..report import report
-from . import MODULES, NAMES, context_of, options
+from . import options, registry
+from .context import context_of
 
 __all__ = ["translate"]
 
 
 def _encode(name: str, kp: float, ki: float, ctx: dict, opts: dict, axis: str) -> dict:
-    recs = MODULES[name].gains_to_ints(kp, ki, ctx, opts[name], axis)
+    recs = registry.VENDORS[name].gains_to_ints(kp, ki, ctx, opts[name], axis)
     kp_rec, ki_rec = recs.values()
     return {"values": {k: r["value"] for k, r in recs.items()}, "constants": recs,
             "si": {"kp": kp_rec["si"], "ki": ki_rec["si"]},
@@ -56,7 +57,8 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     ----------
     inp : dict
         The report input (motor, drive, and optionally ``profiles`` hardware inputs).
-    source : {'inovance', 'ti', 'nxp', 'st', 'microchip'}
+    source : str
+        A vendor (:func:`pulab.profiles.registry.names`).
     axis : {'d', 'q'}
     values : dict
         The source profile's two integers by their vendor names
@@ -67,12 +69,9 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     InputError
         Naming ``translate.from``, ``translate.axis`` or ``translate.values.NAME``.
     """
-    if source not in NAMES:
-        raise InputError("translate.from", code="not_choice", choices=", ".join(NAMES),
-                         got=shown(source))
+    mod = registry.get(source, "translate.from")
     if axis not in ("d", "q"):
         raise InputError("translate.axis", code="not_choice", choices="d, q", got=shown(axis))
-    mod = MODULES[source]
     kp_name, ki_name = mod.gain_fields(axis)
     given = object_fields(values, "translate.values", (kp_name, ki_name))
     lo, hi = mod.gain_range(axis)
@@ -89,10 +88,11 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     ctx = context_of(r)
     opts = options(inp.get("profiles"), ctx)
     kp, ki = mod.ints_to_gains(ints[kp_name], ints[ki_name], ctx, opts[source], axis)
+    names = registry.names()
     out = {"from": source, "axis": axis, "given": ints, "si": {"kp": kp, "ki": ki},
-           "profiles": {name: _encode(name, kp, ki, ctx, opts, axis) for name in NAMES}}
-    start = NAMES.index(source)
-    order = [NAMES[(start + i) % len(NAMES)] for i in range(1, len(NAMES) + 1)]
+           "profiles": {name: _encode(name, kp, ki, ctx, opts, axis) for name in names}}
+    start = names.index(source)
+    order = [names[(start + i) % len(names)] for i in range(1, len(names) + 1)]
     chain, k_p, k_i = [], kp, ki
     for prev, name in zip([source] + order, order):
         try:

@@ -6,12 +6,13 @@ this table gives its words.  A parameter that is itself an error
 value's error reads as one sentence in either language.
 
 A number parameter formatted ``{x:~H}`` is written with an SI prefix and unit
-(:func:`pulab.schema.textnum.si_text`: ``10.6 µH``); the unit may be another parameter
+(:func:`pulab.schema.sitext.si_text`: ``10.6 µH``); the unit may be another parameter
 (``{si:~{si_unit}}``).
 
 A parameter ``{"label": path}`` is that input's form label in the language of the text (a
-vendor profile's option too: :data:`pulab.profiles.OPTION_LABELS`), ``{"vendor": name}`` a
-firmware profile's name (``inovance`` is Inovance, 汇川), and a list of those its words joined.
+vendor profile's option too: :func:`pulab.schema.vendors.option_field`), ``{"vendor": name}`` a
+firmware profile's name (``inovance`` is Inovance, 汇川; :func:`pulab.schema.vendors.display`),
+and a list of those its words joined.
 
 Adding an error: one entry here; ``tests/py/test_schema.py`` renders every code
 in both languages.
@@ -26,6 +27,10 @@ Examples
 """
 
 from __future__ import annotations
+
+from . import vendors
+from .fields import FIELD
+from .sitext import si_text
 
 __all__ = ["MESSAGES", "render"]
 
@@ -720,11 +725,6 @@ MESSAGES = {
 }
 
 
-#: A firmware profile's name in each language (``{"vendor": name}``).
-VENDOR_NAMES = {"inovance": ("Inovance", "汇川"), "ti": ("TI", "TI"), "nxp": ("NXP", "NXP"),
-                "st": ("ST", "ST"), "microchip": ("Microchip", "Microchip")}
-
-
 class _Number:
     """A number parameter whose format spec ``~UNIT`` asks for :func:`si_text`."""
 
@@ -734,7 +734,6 @@ class _Number:
     def __format__(self, spec: str) -> str:
         if not spec.startswith("~"):
             return format(self.v, spec)
-        from .textnum import si_text  # imports the validators, which render this catalog
         return si_text(self.v, spec[1:])
 
 
@@ -749,19 +748,18 @@ def _word(v, lang: str):
         return (", " if lang == "en" else "、").join(str(_word(x, lang)) for x in v)
     if isinstance(v, dict) and set(v) == {"label"}:
         return _label(v["label"], lang)
-    if isinstance(v, dict) and set(v) == {"vendor"} and v["vendor"] in VENDOR_NAMES:
-        return VENDOR_NAMES[v["vendor"]][0 if lang == "en" else 1]
+    if isinstance(v, dict) and set(v) == {"vendor"} and v["vendor"] in vendors.NAMES:
+        return vendors.display(v["vendor"], lang)
     if isinstance(v, (int, float)) and not isinstance(v, bool):
         return _Number(v)
     return v
 
 
 def _label(path: str, lang: str) -> str:
-    from .fields import FIELD  # data only; imported late to keep this module first to load
-    from ..profiles import OPTION_LABELS
     f = FIELD.get(path)
-    label = f.label if f is not None and f.label[0] else OPTION_LABELS.get(path)
-    return label[0 if lang == "en" else 1] if label else path
+    if f is None or not f.label[0]:
+        f = vendors.option_field(path)
+    return f.label[0 if lang == "en" else 1] if f is not None else path
 
 
 def render(code: str, params: dict, lang: str) -> str:

@@ -14,6 +14,8 @@ Examples
 'motor.rs_ohm: must be > 0, got -1'
 """
 
+from .catalog import render
+
 __all__ = ["InputError"]
 
 
@@ -29,7 +31,6 @@ class InputError(ValueError):
     """
 
     def __init__(self, field: str, *, code: str, **params) -> None:
-        from .catalog import render  # the catalog imports nothing of this module's users
         self.field = field
         self.code = code
         self.params = params
@@ -39,7 +40,6 @@ class InputError(ValueError):
     @property
     def message_zh(self) -> str:
         """The Chinese text of :attr:`message`."""
-        from .catalog import render
         return render(self.code, self.params, "zh")
 
     def as_dict(self) -> dict:

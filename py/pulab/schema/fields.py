@@ -41,6 +41,8 @@ import json
 import math
 from typing import NamedTuple
 
+from . import vendors
+
 __all__ = ["Field", "Section", "REQUIRED", "FIELDS", "FIELD", "SECTIONS", "RAW_FIELDS",
            "section_fields", "schema_json", "markdown"]
 
@@ -158,8 +160,7 @@ TABLE = (
       label=('Angle base θ_b', '角度基值 θ_b')),
     F('conventions.inductance_unit', 'choice', '', choices=('10uH', 'uH'), default='10uH',
       label=('Unit of raw LD/LQ', '原始 LD/LQ 单位')),
-    F('conventions.firmware', 'choice', '', choices=('inovance', 'ti', 'nxp', 'st', 'microchip'),
-      default='inovance',
+    F('conventions.firmware', 'choice', '', choices=vendors.NAMES, default='inovance',
       label=('Firmware you ship', '所用固件')),
     Section('current_loop', ('the current-loop PI', '电流环 PI')),
     F('current_loop.method', 'choice', '', choices=('bandwidth', 'damping', 'manual', 'integers'),
@@ -429,17 +430,13 @@ def _plain(f: Field) -> dict:
 
 def schema_json() -> str:
     """The schema as JSON text (``web/src/generated/schema.json``, what the page is built from)."""
-    from ..profiles import OPTION_LABELS  # the profiles import this module
     sections = [{"path": s.path, "title": list(s.title)} for s in SECTIONS.values()]
-    # the vendors panel's options: their labels, and the unit their name ends in
-    options = [{"path": p, "label": list(label),
-                "unit": next((u for end, u in _OPTION_UNITS if p.endswith(end)), "")}
-               for p, label in OPTION_LABELS.items()]
+    # the vendors panel's options (registered by the vendors): their labels, units and kinds
+    options = [{"path": f.path, "label": list(f.label), "unit": f.unit, "kind": f.kind}
+               for f in vendors.option_fields()]
     return json.dumps({"sections": sections, "fields": [_plain(f) for f in FIELDS],
-                       "options": options}, ensure_ascii=False, indent=1) + "\n"
-
-
-_OPTION_UNITS = (("_v", "V"), ("_a", "A"), ("_hz", "Hz"), ("_ohm", "Ω"))
+                       "options": options, "vendors": vendors.page()},
+                      ensure_ascii=False, indent=1) + "\n"
 
 
 def _g(x) -> str:

@@ -2,6 +2,7 @@
 // with that fixed − SI error below.
 import { t, type Key } from '../i18n';
 import type { SimCurrent, SimProfileRun } from '../report-types';
+import { vendorName } from '../vendors';
 import { COLORS, plot, type Trace } from './figure';
 
 /** The fixed-point run of `firmware`: Inovance's `variants.fixed`, another's `by_profile` run;
@@ -16,7 +17,7 @@ export function renderCurrentStep(el: HTMLElement, sim: SimCurrent, axis: 'd' | 
   const key = axis === 'q' ? 'iq' : 'id';
   const traces: Trace[] = [];
   const ms = sim.t.map((x) => x * 1e3);
-  const name = t(`vd_${firmware}` as Key);
+  const name = vendorName(firmware);
   const fx = fixedRun(sim, firmware)?.[key];
   for (const v of ['si', 'pu']) {
     const s = sim.variants[v];

@@ -12,11 +12,6 @@ export default dict(
     'o.kv_rpm_per_v': 'Kv (rpm/V)',
     'o.kt_nm_per_a': 'kT (N·m/A)',
     'o.psi_wb': 'ψ (Wb)',
-    'o.inovance': 'Inovance',
-    'o.ti': 'TI',
-    'o.nxp': 'NXP',
-    'o.st': 'ST',
-    'o.microchip': 'Microchip',
   },
   {
     'o.line': '线间',
@@ -28,10 +23,5 @@ export default dict(
     'o.kv_rpm_per_v': 'Kv（rpm/V）',
     'o.kt_nm_per_a': 'kT（N·m/A）',
     'o.psi_wb': 'ψ（Wb）',
-    'o.inovance': '汇川',
-    'o.ti': 'TI',
-    'o.nxp': 'NXP',
-    'o.st': 'ST',
-    'o.microchip': 'Microchip',
   },
 );

@@ -5,11 +5,6 @@ export default dict(
   {
     p_vendors: 'Vendor profiles: TI, NXP, ST, Microchip and the translator',
     nav_vendors: 'Vendors',
-    vd_inovance: 'Inovance',
-    vd_ti: 'TI',
-    vd_nxp: 'NXP',
-    vd_st: 'ST',
-    vd_microchip: 'Microchip',
     vd_hw: 'Hardware inputs',
     vd_hw_hint: 'Empty fields take the default shown (derived from the drive: full-scale current 2·√2·I rated, voltages from U_dc).',
     vd_bases: 'Conventions side by side',
@@ -49,11 +44,6 @@ export default dict(
   {
     p_vendors: '厂商配置：TI、NXP、ST、Microchip 与翻译器',
     nav_vendors: '厂商',
-    vd_inovance: '汇川',
-    vd_ti: 'TI',
-    vd_nxp: 'NXP',
-    vd_st: 'ST',
-    vd_microchip: 'Microchip',
     vd_hw: '硬件输入',
     vd_hw_hint: '留空即取所示默认值（由驱动器推出：满量程电流 2·√2·额定电流，电压取 U_dc）。',
     vd_bases: '各家约定对照',

@@ -2,11 +2,12 @@
 // here) and the review's summary. Its numbers carry data-key like the panels' (the page's only
 // repeated data-keys, equal values); a firmware that cannot hold the motor says why here too, with the same box as its panel.
 import { h, num, patch } from '../dom';
-import { t, type Key } from '../i18n';
+import { t } from '../i18n';
 import { VENDOR_NAMES, type ProfileReport } from '../report-types';
 import type { PanelContext } from '../panels/panel';
 import { limitsBox } from '../panels/limits';
-import { VENDORS, shippedProfileReport, type Vendor } from '../panels/vendors';
+import { shippedProfileReport } from '../panels/vendors';
+import { VENDORS, vendorName, type Vendor } from '../vendors';
 import { allFindings, reviewCounts } from '../panels/review';
 
 /** The firmware the reader ships: the input's `conventions.firmware` (the review grades by it). */
@@ -61,7 +62,7 @@ export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => vo
   const picker = h('select', {
     name: 'answer.profile', 'aria-label': t('answerProfile'),
     onchange: (ev: Event) => pick((ev.target as HTMLSelectElement).value as Vendor),
-  }, VENDORS.map((x) => h('option', { value: x, selected: x === v }, t(`vd_${x}` as Key))));
+  }, VENDORS.map((x) => h('option', { value: x, selected: x === v }, vendorName(x))));
   // The picker and the review's line, the integers, then why the firmware cannot hold the motor.
   patch(el,
     h('div', { class: 'answer-head' },

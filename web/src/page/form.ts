@@ -3,7 +3,7 @@
 import { h } from '../dom';
 import { fmtInput, fmtNum, parseNumber } from '../format';
 import { ALL_FIELDS, SECTIONS, effectiveInput, fieldLabel, unitSiblings, type FieldSpec } from '../fields';
-import { errText, getLang, has, t, type Key } from '../i18n';
+import { errText, getLang, t } from '../i18n';
 import type { ApiErr } from '../protocol';
 import { PRESETS, clone, decodeUnits, getPath, setPath, type Input } from '../state';
 import { fromSI, toSI, type UnitId } from '../units';
@@ -11,6 +11,7 @@ import type { ComputeSession } from './session';
 import { UNITS_KEY, load, store } from './storage';
 import { checkUnits } from '../state-check';
 import { closeInputs } from './drawer';
+import { choiceText } from '../vendors';
 
 /** The SI field a raw firmware value was converted from (the error's `source` parameter). */
 export function sourceField(e: ApiErr): string | null {
@@ -59,7 +60,7 @@ export class InputForm {
     let control: HTMLElement;
     if (f.kind === 'select') {
       control = h('select', { name: f.path, disabled: !enabled, onchange: (ev: Event) => this.onSelect(f, (ev.target as HTMLSelectElement).value) },
-        (f.options ?? []).map((o) => h('option', { value: o, selected: String(v ?? f.options?.[0]) === o }, t((has(`o.${f.path}.${o}`) ? `o.${f.path}.${o}` : `o.${o}`) as Key))));
+        (f.options ?? []).map((o) => h('option', { value: o, selected: String(v ?? f.options?.[0]) === o }, choiceText(f.path, o))));
     } else if (f.kind === 'bool') {
       control = h('input', { type: 'checkbox', name: f.path, checked: v === true, onchange: (ev: Event) => this.onBool(f, (ev.target as HTMLInputElement).checked) });
     } else {

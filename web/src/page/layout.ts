@@ -8,7 +8,7 @@ import { docTarget, docsAvailable } from '../panels/docs';
 import { allFindings, markFindings } from '../panels/review';
 import { viewsFor, type View } from '../panels/views';
 import { renderAnswer } from './answer';
-import type { Vendor } from '../panels/vendors';
+import type { Vendor } from '../vendors';
 import { closeInputs, openInputs, wireDrawer } from './drawer';
 import type { ComputeSession } from './session';
 

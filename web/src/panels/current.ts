@@ -1,6 +1,7 @@
 import { h, num, patch, tex } from '../dom';
 import { t, type Key } from '../i18n';
 import type { PiAxis, Report, SimCurrent, SimEvent } from '../report-types';
+import { vendorName } from '../vendors';
 import { fixedRun, renderCurrentStep } from '../figures/current-step';
 import { keptFigure, simPlaceholder } from '../figures/figure';
 import { shippedProfile } from '../page/answer';
@@ -49,14 +50,14 @@ function noTrace(sim: SimCurrent, fw: string, report: Report | null | undefined)
   const fields = fw === 'inovance' ? (report?.firmware?.inovance?.problems ?? []).map((p) => p.field)
     : run && !run.ran ? run.problems.map((p) => p.field) : [];
   return h('p', { class: 'note bad-text sim-no-trace', role: 'status', 'data-firmware': fw },
-    t('sf_cannot', { name: t(`vd_${fw}` as Key), fields: [...new Set(fields)].join(', ') || '—' }));
+    t('sf_cannot', { name: vendorName(fw), fields: [...new Set(fields)].join(', ') || '—' }));
 }
 
 /** The shipped firmware's run below the table: its distance from SI and its wraps and saturations. */
 function profileNotes(sim: SimCurrent, fw: string): (HTMLElement | null)[] {
   const run = sim.by_profile?.[fw];
   if (!run?.ran) return [];
-  const name = t(`vd_${fw}` as Key);
+  const name = vendorName(fw);
   const p = `sim.current.by_profile.${fw}`;
   return [
     hardwareTyped(fw) ? h('p', { class: 'note sim-hw-defaults' }, t('sf_hw_defaults', { name })) : null,
@@ -83,7 +84,7 @@ export const currentPanel: Panel = {
     const run = sim?.by_profile?.[fw];
     // The shipped firmware's column: Inovance's `metrics.fixed`, another's `by_profile` run.
     const fxMetrics = fw === 'inovance' ? (sim?.metrics.fixed as Record<string, unknown> | undefined) : run?.ran ? run.metrics : undefined;
-    const extra: MetricColumn[] = fxMetrics ? [{ label: t('sf_fixed', { name: t(`vd_${fw}` as Key) }),
+    const extra: MetricColumn[] = fxMetrics ? [{ label: t('sf_fixed', { name: vendorName(fw) }),
       path: fw === 'inovance' ? 'sim.current.metrics.fixed' : `sim.current.by_profile.${fw}.metrics`, metrics: fxMetrics }] : [];
     patch(el, ...[
       h('div', { class: 'formulas' },

@@ -7,6 +7,7 @@ import { fromSI } from '../units';
 import { getLang, t } from '../i18n';
 import { renderMarkdown } from '../docs/render';
 import { getPath } from '../state';
+import { choiceText } from '../vendors';
 import { renderCurrentStep } from '../figures/current-step';
 import { renderPllTrack } from '../figures/pll-track';
 import { keptFigure, simPlaceholder } from '../figures/figure';
@@ -95,7 +96,7 @@ function inputsSummary(ctx: PanelContext): HTMLElement {
       if (v === null || v === undefined) return [];
       // data-value stays SI; the text uses the form's default display unit (600 µH, 100 µs).
       const u = f.units?.[0];
-      const shown = typeof v !== 'number' ? t(`o.${String(v)}` as never)
+      const shown = typeof v !== 'number' ? choiceText(f.path, String(v))
         : num(`input.${f.path}`, v, u ? { unit: u, text: fmtNum(fromSI(v, u), 6) } : { unit: f.unit });
       return [[fieldLabel(f, getLang()), shown]];
     }));

@@ -12,9 +12,8 @@ import type { ApiErr } from '../protocol';
 import { limitsBox } from './limits';
 import type { Panel, PanelContext } from './panel';
 import schema from '../generated/schema.json';
+import { VENDORS, gainFields, headerFile, vendorName, type Vendor } from '../vendors';
 
-export const VENDORS = ['inovance', 'ti', 'nxp', 'st', 'microchip'] as const;
-export type Vendor = (typeof VENDORS)[number];
 
 /** Hardware inputs offered as fields; `name` = `profiles.VENDOR.KEY` (empty = pulab's default). */
 export const HW_FIELDS: [Vendor, string][] = [
@@ -23,27 +22,14 @@ export const HW_FIELDS: [Vendor, string][] = [
   ['st', 'rshunt_ohm'], ['st', 'amplification_gain'], ['st', 'adc_reference_v'], ['st', 'tf_kpdiv'], ['st', 'tf_kidiv'],
   ['microchip', 'voltage_base_v'], ['microchip', 'current_base_a'], ['microchip', 'velocity_base_hz'],
 ];
-const INTEGER_KEYS = new Set(['global_q', 'tf_kpdiv', 'tf_kidiv']);
-/** Each option's label (vendor first) and unit, as pulab names it in its messages
- * (pulab.profiles.OPTION_LABELS, written to generated/schema.json by the build). */
+/** Each option's label (vendor first), unit and kind, as pulab names it in its messages (the
+ * fields each vendor registers, pulab.schema.vendors, written to generated/schema.json by the build). */
 const OPTION_LABEL = new Map(schema.options.map((o) => [o.path, o]));
 function optionLabel(name: string): string {
   const o = OPTION_LABEL.get(name);
   if (!o) throw new Error(`web/src/panels/vendors.ts: ${name} is not a profile option`);
   const label = o.label[getLang() === 'zh' ? 1 : 0];
   return o.unit ? `${label}${getLang() === 'zh' ? '，' : ', '}${o.unit}` : label;
-}
-
-/** The vendor's names of the current-loop integers (pulab.profiles.*.gain_fields). */
-export function gainFields(v: Vendor, axis: 'd' | 'q'): [string, string] {
-  const A = axis.toUpperCase();
-  switch (v) {
-    case 'inovance': return ['pm_kp', 'pm_ki'];
-    case 'ti': return [`Kp_I${axis}`, `Ki_I${axis}`];
-    case 'nxp': return [`M1_${A}_KP_GAIN`, `M1_${A}_KI_GAIN`];
-    case 'st': return axis === 'd' ? ['PID_FLUX_KP_DEFAULT', 'PID_FLUX_KI_DEFAULT'] : ['PID_TORQUE_KP_DEFAULT', 'PID_TORQUE_KI_DEFAULT'];
-    default: return ['KIP', 'KII'];
-  }
 }
 
 /** Where a profile's own current-loop integers sit in report.profiles.V.constants. */
@@ -78,7 +64,7 @@ export function profilesSection(hw: Record<string, string>): { ok: true; section
   const section: Record<string, Record<string, number>> = {};
   for (const [v, k] of HW_FIELDS) {
     const name = `profiles.${v}.${k}`;
-    const p = parseNumber(hw[name] ?? '', INTEGER_KEYS.has(k));
+    const p = parseNumber(hw[name] ?? '', OPTION_LABEL.get(name)?.kind === 'integer');
     if (!p.ok) return { ok: false, field: name, error: p.error };
     if (p.value !== null) (section[v] ??= {})[k] = p.value;
   }
@@ -209,9 +195,8 @@ async function downloadHeader(ctx: PanelContext, v: Vendor, el: HTMLElement): Pr
     if (msg) msg.textContent = `${result.field}: ${errText(result)}`;
     return;
   }
-  const names: Record<Vendor, string> = { inovance: 'pulab_params.h', ti: 'user_mtr1_pulab.h', nxp: 'm1_pmsm_appconfig_pulab.h', st: 'drive_parameters_pulab.h', microchip: 'mcaf_params_pulab.h' };
   const url = URL.createObjectURL(new Blob([result.text], { type: 'text/x-c' }));
-  const a = h('a', { href: url, download: names[v] }) as HTMLAnchorElement;
+  const a = h('a', { href: url, download: headerFile(v) }) as HTMLAnchorElement;
   document.body.append(a);
   a.click();
   a.remove();
@@ -254,7 +239,7 @@ function basesTable(): HTMLElement {
       return h('td', { class: 'r' }, x === null ? '—' : num(`profiles.${v}.bases.${k}`, x, { sig: 6, unit }));
     })));
   }
-  return table([t('quantity'), ...VENDORS.map((v) => t(`vd_${v}` as Key))], rows, 'vendors-bases');
+  return table([t('quantity'), ...VENDORS.map((v) => vendorName(v))], rows, 'vendors-bases');
 }
 
 function constantsBlock(ctx: PanelContext, v: Vendor, el: HTMLElement): HTMLElement {
@@ -273,7 +258,7 @@ function constantsBlock(ctx: PanelContext, v: Vendor, el: HTMLElement): HTMLElem
       h('td', { class: 'src' }, h('span', { title: c.expression }, c.source)));
   });
   return h('details', { class: 'vendor-profile', open: v !== 'inovance', 'data-profile': v },
-    h('summary', {}, t(`vd_${v}` as Key), ' ',
+    h('summary', {}, vendorName(v), ' ',
       h('button', { type: 'button', 'data-header': v, onclick: (ev: Event) => { ev.preventDefault(); void downloadHeader(ctx, v, el); } }, t('vd_header')),
       h('span', { class: 'err', 'data-err-for': `header.${v}` })),
     limitsBox(v, firmware[v]),
@@ -318,7 +303,7 @@ function translator(ctx: PanelContext): HTMLElement {
   const profRows = VENDORS.map((v) => {
     const s = tr?.profiles?.[v];
     const p = `translation.profiles.${v}`;
-    return h('tr', {}, h('td', {}, t(`vd_${v}` as Key)),
+    return h('tr', {}, h('td', {}, vendorName(v)),
       h('td', {}, s ? Object.entries(s.values).map(([k, x]) => h('div', {}, h('code', {}, k), ' = ', num(`${p}.values.${k}`, x, { kind: 'int' }))) : '…'),
       h('td', { class: 'r' }, num(`${p}.si.kp`, s?.si.kp, { sig: 7, unit: 'V/A' })),
       h('td', { class: 'r' }, num(`${p}.si.ki`, s?.si.ki, { sig: 7, unit: 'V/(A·s)' })),
@@ -326,13 +311,13 @@ function translator(ctx: PanelContext): HTMLElement {
   });
   const chainRows = (tr?.chain ?? []).map((s, i) => {
     const p = `translation.chain.${i}`;
-    return h('tr', {}, h('td', {}, `${i + 1}. `, t(`vd_${s.profile ?? 'inovance'}` as Key)),
+    return h('tr', {}, h('td', {}, `${i + 1}. `, vendorName(s.profile ?? 'inovance')),
       h('td', {}, Object.entries(s.values).map(([k, x]) => h('div', {}, h('code', {}, k), ' = ', num(`${p}.values.${k}`, x, { kind: 'int' })))),
       h('td', { class: 'r' }, num(`${p}.drift_pct.kp`, s.drift_pct?.kp, { kind: 'pct' }), ' / ', num(`${p}.drift_pct.ki`, s.drift_pct?.ki, { kind: 'pct' })));
   });
   return h('div', { class: 'vendors-translate' },
     h('div', { class: 'qform' },
-      field(t('vd_from'), h('select', { name: 'translate.from', onchange: onSel('from') }, VENDORS.map((v) => h('option', { value: v, selected: v === vstate.from }, t(`vd_${v}` as Key)))), 'translate.from', errFor(transErr, 'translate.from')),
+      field(t('vd_from'), h('select', { name: 'translate.from', onchange: onSel('from') }, VENDORS.map((v) => h('option', { value: v, selected: v === vstate.from }, vendorName(v)))), 'translate.from', errFor(transErr, 'translate.from')),
       field(t('vd_axis'), h('select', { name: 'translate.axis', onchange: onSel('axis') }, (['d', 'q'] as const).map((a) => h('option', { value: a, selected: a === vstate.axis }, a))), 'translate.axis'),
       field(kpName, h('input', { name: `translate.values.${kpName}`, value: vstate.kp, inputmode: 'numeric', spellcheck: 'false', oninput: onInt('kp') }), `translate.values.${kpName}`, errFor(transErr, `translate.values.${kpName}`)),
       field(kiName, h('input', { name: `translate.values.${kiName}`, value: vstate.ki, inputmode: 'numeric', spellcheck: 'false', oninput: onInt('ki') }), `translate.values.${kiName}`, errFor(transErr, `translate.values.${kiName}`)),

@@ -60,7 +60,7 @@ from __future__ import annotations
 import math
 import random
 
-from ...profiles.inovance_code import round_half_away
+from ...fixedpoint.qformat import round_half_away
 from ...schema.validate import read
 from ..sim import decimate_indices
 from ..sim.current import default_duration, run_fixed, run_float, voltage_limits

@@ -57,7 +57,7 @@ import math
 from ...schema.errors import InputError
 from ...model.gains import INT32_MAX, INT32_MIN
 from ..sim.plant import zoh
-from ...profiles.inovance_code import round_half_away
+from ...fixedpoint.qformat import round_half_away
 from .discrete import margins
 from .pi import pi
 from .polynomial import multiply

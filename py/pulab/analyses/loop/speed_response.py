@@ -38,7 +38,8 @@ from ..sim import decimate_indices
 from ..sim.current import voltage_limits
 from ..sim.linalg import expm
 from ..sim.metrics import overshoot_pct, rise_time, settling_time
-from ...profiles.inovance_code import current_pi_step, round_half_away
+from ...fixedpoint.qformat import round_half_away
+from ...profiles.inovance_code import current_pi_step
 
 __all__ = ["run", "MAX_STEPS"]
 

@@ -8,7 +8,7 @@ Modules, one concept each:
 
 - :mod:`.plant` — PMSM dq model (seed 1.2-3), exact zero-order-hold discretization;
 - :mod:`.current` — current loop: SI float, per-unit float, vendor fixed point;
-- :mod:`.vendor_pi`, :mod:`.vendor_loop` — TI's, NXP's, ST's and Microchip's integer PI;
+- :mod:`.vendor_loop` — TI's, NXP's, ST's and Microchip's integer PI (each vendor's ``pi``);
 - :mod:`.pll` — PLL: SI, per unit, int16 angle (Q15 of π), naive gains;
 - :mod:`.metrics` — rise/settling/overshoot, lock detection;
 - :mod:`.inputs` — validation and defaults;

@@ -80,7 +80,7 @@ def bench(steps: int = 20000, repeat: int = 3) -> dict:
     ctls = vendor_loop.controllers(vendor_loop.profile_data(rep)[0], umax * 2 ** 0.5,
                                    inp["drive"]["udc_v"])
     t0 = time.perf_counter()
-    for name in vendor_loop.NAMES:
+    for name in vendor_loop.names():
         finish(vendor_loop.run_profile_steps(z, ctls[name], 2 ** 0.5, 0.75, 0.0, z.bemf,
                                              steps - 1, False))
     per["vendors_s"] = time.perf_counter() - t0

@@ -60,8 +60,8 @@ from array import array
 from ...schema.errors import InputError
 from ..slices import SLICE_STEPS, finish
 from ...fixedpoint.cint import INT32, wrap_to
-from ...fixedpoint.qformat import iqsat
-from ...profiles.inovance_code import current_pi_step, round_half_away
+from ...fixedpoint.qformat import iqsat, round_half_away
+from ...profiles.inovance_code import current_pi_step
 from .inputs import periods
 from .plant import zoh
 from . import vendor_loop
@@ -377,7 +377,7 @@ def _profile_runs(report: dict, z, umax_v: float, ref_d: float, ref_q: float, n:
     peak = math.sqrt(2.0) if report["input"]["conventions"]["base"] == "rms" else 1.0
     ctls = None
     out = {}
-    for name in vendor_loop.NAMES:
+    for name in vendor_loop.names():
         st = status[name]
         if not st["representable"]:
             out[name] = {"problems": [{"field": x["field"], "code": x["code"]}

@@ -56,7 +56,7 @@ from array import array
 
 from ...schema.errors import InputError
 from ..slices import SLICE_STEPS, finish
-from ...profiles.inovance_code import round_half_away
+from ...fixedpoint.qformat import round_half_away
 from .inputs import periods
 
 __all__ = ["input_angle", "run_float", "run_q15", "run", "run_float_steps", "run_q15_steps",

@@ -1,6 +1,7 @@
-"""The current loop closed through TI's, NXP's, ST's and Microchip's own integer PI.
+"""The current loop closed through each vendor's own integer PI (TI, NXP, ST, Microchip).
 
-Each profile's controller (:mod:`.vendor_pi`) runs on that profile's integers from the
+Each vendor that provides a ``controller`` (:class:`pulab.profiles.vendor.Vendor`; its
+``pi`` module, e.g. :mod:`pulab.profiles.ti.pi`) runs on that profile's integers from the
 report (``profiles.NAME.constants`` and ``inputs``; the defaults when the input has no
 ``profiles``) and drives the same plant as the float variants (:mod:`.plant`, exact ZOH).
 
@@ -31,24 +32,26 @@ NXP's stop-integration flag (both act only when the voltage vector is limited).
 
 from __future__ import annotations
 
-import math
 from array import array
-from functools import partial
 
+from ... import profiles as _profiles
+from ...fixedpoint.counted import EVENTS
+from ...fixedpoint.qformat import round_half_away
+from ...profiles import registry
+from ...profiles.vendor import provided
 from ..slices import SLICE_STEPS
-from .vendor_pi import EVENTS, microchip_step, nxp_step, st_step, ti_step
 
-__all__ = ["NAMES", "EVENT_NAMES", "profile_data", "controllers", "run_profile_steps"]
+__all__ = ["names", "EVENT_NAMES", "profile_data", "controllers", "run_profile_steps"]
 
-#: The profiles with a fixed-point simulation here (Inovance's is :mod:`.current`).
-NAMES = ("ti", "nxp", "st", "microchip")
+
+def names() -> tuple:
+    """The vendors with a fixed-point simulation here: those that provide a ``controller``
+    (Inovance's run is the report's own, :mod:`.current`)."""
+    return tuple(v.NAME for v in registry.vendors() if provided(v, "controller"))
+
 
 #: Event counts reported per run.
 EVENT_NAMES = ("feedback_saturate",) + EVENTS
-
-
-def _nearest(x: float) -> int:
-    return int(math.copysign(math.floor(abs(x) + 0.5), x))
 
 
 def profile_data(report: dict) -> tuple[dict, dict]:
@@ -59,70 +62,12 @@ def profile_data(report: dict) -> tuple[dict, dict]:
     -------
     (profiles, status) — NAME → profile section, NAME → {representable, problems}
     """
-    from ... import profiles as _profiles
     # all five only when the input asked (a report without them holds the shipped one alone)
     if "profiles" in report["input"]:
         return report["profiles"], report["firmware"]
     ctx = _profiles.context_of(report)
     prof = _profiles.profiles(ctx, _profiles.options({}, ctx))
     return prof, {name: p["status"] for name, p in prof.items()}
-
-
-def _ti(p: dict, umax: float) -> dict:
-    o, c = p["inputs"], p["constants"]
-    q = o["global_q"]
-    one = float(1 << q)
-    v_lsb = o["full_scale_voltage_v"] / one
-    # _IQ() of a limit beyond the word is undefined in C; the word's end is what can be held.
-    hi = min((1 << 31) - 1, math.trunc(umax / v_lsb))
-    steps = {a: partial(ti_step, kp=c[f"Kp_I{a}"]["value"], ki=c[f"Ki_I{a}"]["value"],
-                        out_max=hi, out_min=-hi, q=q) for a in ("d", "q")}
-    return {"i_lsb": o["full_scale_current_a"] / one, "fb_bits": 32, "u_lsb": v_lsb,
-            "out_limit": hi, "steps": steps,
-            "start": lambda v: (max(-hi, min(hi, math.trunc(v / v_lsb))),),
-            "held": lambda s: s[0]}
-
-
-def _nxp(p: dict, umax: float) -> dict:
-    o, c = p["inputs"], p["constants"]
-    v_lsb = o["u_max_v"] / 32768.0
-    hi = min(32767, math.trunc(umax / v_lsb))
-    steps = {a: partial(nxp_step, kp=c[f"M1_{a.upper()}_KP_GAIN"]["value"],
-                        ki=c[f"M1_{a.upper()}_KI_GAIN"]["value"], upper=hi, lower=-hi,
-                        trapezoidal=o["trapezoidal"]) for a in ("d", "q")}
-    return {"i_lsb": o["i_max_a"] / 32768.0, "fb_bits": 16, "u_lsb": v_lsb, "out_limit": hi,
-            "steps": steps,
-            "start": lambda v: (max(-hi, min(hi, math.trunc(v / v_lsb))) << 16, 0),
-            "held": lambda s: s[0] >> 16}
-
-
-def _st(p: dict, umax: float, udc: float) -> dict:
-    o, c = p["inputs"], p["constants"]
-    kidiv = o["tf_kidiv"]
-    ilim = 32767 * kidiv
-    names = {"d": "FLUX", "q": "TORQUE"}
-    steps = {a: partial(st_step, kp=c[f"PID_{names[a]}_KP_DEFAULT"]["value"],
-                        ki=c[f"PID_{names[a]}_KI_DEFAULT"]["value"],
-                        kp_log=o["tf_kpdiv"].bit_length() - 1, ki_log=kidiv.bit_length() - 1,
-                        integral_limit=ilim) for a in ("d", "q")}
-    v_lsb = udc / math.sqrt(3.0) / 32768.0
-    return {"i_lsb": o["max_current_a"] / 32768.0, "fb_bits": 16, "u_lsb": v_lsb,
-            "out_limit": 32767, "steps": steps,
-            "start": lambda v: (max(-ilim, min(ilim, math.trunc(v / v_lsb) * kidiv)),),
-            "held": lambda s: s[0] >> (kidiv.bit_length() - 1)}
-
-
-def _microchip(p: dict, umax: float) -> dict:
-    o, c = p["inputs"], p["constants"]
-    v_lsb = o["voltage_base_v"] / 32768.0
-    hi = min(32767, _nearest(umax / v_lsb))
-    step = partial(microchip_step, kp=c["KIP"]["value"], ki=c["KII"]["value"], kc=32767,
-                   out_max=hi, out_min=-hi, kp_shift=15 - c["KIP"]["q"],
-                   ki_shift=15 - c["KII"]["q"])
-    return {"i_lsb": o["current_base_a"] / 32768.0, "fb_bits": 16, "u_lsb": v_lsb,
-            "out_limit": hi, "steps": {"d": step, "q": step},
-            "start": lambda v: (max(-hi, min(hi, _nearest(v / v_lsb))) << 15,),
-            "held": lambda s: s[0] >> 15}
 
 
 def controllers(profiles: dict, umax_peak: float, udc: float) -> dict:
@@ -141,13 +86,12 @@ def controllers(profiles: dict, umax_peak: float, udc: float) -> dict:
     ``start`` (V peak → initial state), ``held`` (state → the output its integral alone
     gives: what a one-sample delay holds at t = 0)
     """
-    return {"ti": _ti(profiles["ti"], umax_peak), "nxp": _nxp(profiles["nxp"], umax_peak),
-            "st": _st(profiles["st"], umax_peak, udc),
-            "microchip": _microchip(profiles["microchip"], umax_peak)}
+    return {name: registry.get(name).controller(profiles[name], umax_peak, udc)
+            for name in names()}
 
 
 def _quantize(x: float, bits: int, ev: dict) -> int:
-    v = _nearest(x)
+    v = round_half_away(x)
     hi = (1 << (bits - 1)) - 1
     if v > hi or v < -hi - 1:
         ev["feedback_saturate"] += 1

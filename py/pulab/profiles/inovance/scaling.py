@@ -1,4 +1,4 @@
-"""Inovance-style C2000 profile (the seed's code) — a view of :mod:`pulab.profiles.inovance_code`.
+"""Inovance-style C2000 scaling (the seed's code) — a view of :mod:`pulab.profiles.inovance_code`.
 
 The motor constants are :func:`pulab.profiles.inovance_code.vendor_results` (bit-exact C2000
 statements); the current-loop integers are :func:`pulab.model.gains.current_pi` with
@@ -8,7 +8,7 @@ report's ``conventions.base`` says:
     pm_kp = round(kp·I_b/U_b·2^12)   (Q12, seed 2.2-9)
     pm_ki = round(ki·Ts·I_b/U_b·2^16) (Q16, Ts folded in)
 
-Its header is the report's own (:func:`pulab.export.c_header`).
+Its header is the report's own (:func:`pulab.profiles.inovance.header.c_header`).
 
 Examples
 --------
@@ -19,9 +19,9 @@ Examples
 
 from __future__ import annotations
 
-from ..model.gains import current_pi, gains_from_integers
-from .inovance_code import to_si
-from .common import SOURCES, SQRT3, TWO_PI, fixed
+from ...model.gains import current_pi, gains_from_integers
+from ..common import SOURCES, SQRT3, TWO_PI, fixed
+from ..inovance_code import to_si
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
            "gain_range", "gains_to_ints", "ints_to_gains", "profile"]
@@ -90,7 +90,7 @@ def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> 
 
 
 def profile(ctx: dict, opt: dict) -> dict:
-    """The seed's integers for this motor, as profile constants."""
+    """The seed's integers for this motor, as profile constants, and the problems of its code."""
     out = {}
     for name, (si_key, expr) in _VENDOR.items():
         if name not in ctx["vendor"]:
@@ -107,5 +107,6 @@ def profile(ctx: dict, opt: dict) -> dict:
         for k, rec in gains_to_ints(kp, ki, ctx, opt, axis).items():
             rec["name"] = f"{k}_{axis}"
             out[rec["name"]] = rec
-    return {"inputs": {}, "constants": out}
+    # what its C code cannot compute for this motor (the report's firmware.inovance)
+    return {"inputs": {}, "constants": out, "problems": ctx["firmware_problems"]}
 

@@ -32,34 +32,34 @@ from __future__ import annotations
 
 import math
 
-from ..fixedpoint.cint import trunc_div
-from ..fixedpoint.interval import RInterval
-from .common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent
-from .headers import define, define_float, guard
+from ...fixedpoint.cint import trunc_div
+from ...fixedpoint.interval import RInterval
+from ..common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent
+from ..vendor import Option
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "max_current",
            "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains", "pi_first_output",
-           "profile", "constants", "header"]
+           "profile", "constants"]
 
 _GAIN = 8.0
 OPTIONS = (
-    ("adc_reference_v", lambda c: 3.3, "ADC_REFERENCE_VOLTAGE; default 3.3 V",
-     ("ADC reference", "ADC 参考电压")),
-    ("amplification_gain", lambda c: _GAIN, "AMPLIFICATION_GAIN; default 8",
-     ("amplifier gain", "放大倍数")),
-    ("rshunt_ohm", lambda c: 3.3 / (2.0 * _GAIN * c["i_fs"]),
-     "RSHUNT; default so that MAX_CURRENT = 2·√2·I_rated with the defaults above",
-     ("shunt", "采样电阻")),
-    ("vbus_partitioning_factor", lambda c: 3.3 / (2.0 * c["udc"]),
-     "VBUS_PARTITIONING_FACTOR; default puts U_dc at half the ADC range",
-     ("bus voltage divider", "母线分压系数")),
-    ("tf_kpdiv", lambda c: None,
-     "TF_KPDIV (power of two); default the largest ≤ 16384 fitting int16",
-     ("TF_KPDIV", "TF_KPDIV")),
-    ("tf_kidiv", lambda c: None, "TF_KIDIV (power of two); default as TF_KPDIV",
-     ("TF_KIDIV", "TF_KIDIV")),
-    ("f1", lambda c: 16384, "observer scaling F1; default 16384",
-     ("observer F1", "观测器 F1")),
+    Option("adc_reference_v", lambda c: 3.3, "ADC_REFERENCE_VOLTAGE; default 3.3 V",
+           ("ADC reference", "ADC 参考电压")),
+    Option("amplification_gain", lambda c: _GAIN, "AMPLIFICATION_GAIN; default 8",
+           ("amplifier gain", "放大倍数")),
+    Option("rshunt_ohm", lambda c: 3.3 / (2.0 * _GAIN * c["i_fs"]),
+           "RSHUNT; default so that MAX_CURRENT = 2·√2·I_rated with the defaults above",
+           ("shunt", "采样电阻")),
+    Option("vbus_partitioning_factor", lambda c: 3.3 / (2.0 * c["udc"]),
+           "VBUS_PARTITIONING_FACTOR; default puts U_dc at half the ADC range",
+           ("bus voltage divider", "母线分压系数")),
+    Option("tf_kpdiv", lambda c: None,
+           "TF_KPDIV (power of two); default the largest ≤ 16384 fitting int16",
+           ("TF_KPDIV", "TF_KPDIV"), kind="integer", lo=1, hi=32768, power_of_two=True),
+    Option("tf_kidiv", lambda c: None, "TF_KIDIV (power of two); default as TF_KPDIV",
+           ("TF_KIDIV", "TF_KIDIV"), kind="integer", lo=1, hi=32768, power_of_two=True),
+    Option("f1", lambda c: 16384, "observer scaling F1; default 16384",
+           ("observer F1", "观测器 F1"), kind="integer", lo=1, hi=32767),
 )
 CONVENTIONS = {
     "voltage_base": "U_dc/√3 at 32768 digits (assumed, full modulation)",
@@ -258,45 +258,3 @@ def constants(ctx: dict, opt: dict) -> dict:
                       fmt="int32_t", value=_c_trunc(f1 * out["MAX_VOLTAGE"]["value"] / den),
                       error_lsb=_carried(f1 / den, f1 * mv_exact / den))
     return out
-
-
-def header(p: dict, ctx: dict) -> str:
-    """``pmsm_motor_parameters.h`` + ``drive_parameters.h`` + power stage, as the Workbench lays
-    them out; what ``parameters_conversion.h`` will compute from them is in the last comment."""
-    o, c = p["inputs"], p["constants"]
-    body = ["/* pmsm_motor_parameters.h */",
-            f"#define {'POLE_PAIR_NUM':<30} {ctx['pp']:>7}",
-            define_float("RS", ctx["rs"], "Ω"),
-            define_float("LS", ctx["lq"], "H (Lq)"),
-            define("NOMINAL_CURRENT", c["NOMINAL_CURRENT"]),
-            define_float("MOTOR_VOLTAGE_CONSTANT", o["motor_voltage_constant"],
-                         "V rms line-to-line per krpm"),
-            "", "/* drive_parameters.h */",
-            define_float("MAX_APPLICATION_SPEED_RPM", o["max_application_speed_rpm"],
-                         "rpm mechanical (f_b)"),
-            f"#define {'PWM_FREQUENCY':<30} {o['pwm_frequency_hz']:>7}",
-            f"#define {'REGULATION_EXECUTION_RATE':<30} {1:>7}",
-            f"#define {'F1':<30} {o['f1']:>7}"]
-    for k in ("PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "PID_FLUX_KP_DEFAULT",
-              "PID_FLUX_KI_DEFAULT"):
-        body.append(define(k, c[k]))
-    body += [f"#define {'TF_KPDIV':<30} {o['tf_kpdiv']:>7}",
-             f"#define {'TF_KIDIV':<30} {o['tf_kidiv']:>7}",
-             f"#define {'TF_KPDIV_LOG':<30} {o['tf_kpdiv'].bit_length() - 1:>7}",
-             f"#define {'TF_KIDIV_LOG':<30} {o['tf_kidiv'].bit_length() - 1:>7}",
-             "", "/* power_stage_parameters.h */",
-             define_float("RSHUNT", o["rshunt_ohm"], "Ω"),
-             define_float("AMPLIFICATION_GAIN", o["amplification_gain"], ""),
-             define_float("VBUS_PARTITIONING_FACTOR", o["vbus_partitioning_factor"], ""),
-             define_float("NOMINAL_BUS_VOLTAGE_V", ctx["udc"], "V"),
-             "#ifndef ADC_REFERENCE_VOLTAGE  /* parameters_conversion.h defines it */",
-             define_float("ADC_REFERENCE_VOLTAGE", o["adc_reference_v"], "V"),
-             "#endif",
-             "", "/* parameters_conversion.h computes from the lines above: */"]
-    for k in ("CURRENT_CONV_FACTOR", "MAX_VOLTAGE", "MAX_BEMF_VOLTAGE", "C1", "C3", "C5"):
-        flags = "; " + ", ".join(c[k]["flags"]) if c[k]["flags"] else ""
-        body.append(f"/*   {k} = {c[k]['value']}  ({c[k]['expression']} = "
-                    f"{c[k]['ideal']:.6g}{flags}) */")
-    return guard("PULAB_ST_MCSDK_PARAMETERS_H",
-                 ["ST MCSDK-style motor, drive and power-stage parameters generated by pu-lab."],
-                 body)

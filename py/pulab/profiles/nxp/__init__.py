@@ -1,0 +1,9 @@
+"""NXP MCAT / RTCESL: fractions of U_max and I_max, ACC32 and FRAC16 + shift."""
+
+from .header import header
+from .pi import controller
+from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
+
+NAME = "nxp"
+NAMES = ("NXP", "NXP")
+HEADER_FILE = "m1_pmsm_appconfig_pulab.h"

@@ -1,0 +1,9 @@
+"""ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors."""
+
+from .header import header
+from .pi import controller
+from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
+
+NAME = "st"
+NAMES = ("ST", "ST")
+HEADER_FILE = "drive_parameters_pulab.h"
