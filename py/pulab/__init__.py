@@ -16,7 +16,8 @@ deferred ones too::
     schema/       what an input is and how it is read and      errors, jsontext, textnum,
                   checked; the error texts                     inputs, catalog, vendors (the
                                                                vendors the input knows)
-    model/        the per-unit model of one motor and drive    bases, gains, datasheet
+    model/        the per-unit model of one motor and drive    bases, gains, datasheet, board
+                                                               (sensing and PWM scales)
     profiles/     firmware scaling, one package per vendor     registry (the list), vendor
                                                                (the interface), inovance
                                                                (+ inovance_code: the seed's
@@ -24,7 +25,8 @@ deferred ones too::
                                                                microchip, headers, translate
     ctrace/       the C tracer: a user's own fixed-point code  lexer, parser, check, evaluate…
     analyses/     what is computed from a model                loop/, sim/, review, sweep,
-                                                               integers, batch, slices
+                                                               integers, batch, slices,
+                                                               envelope (above base speed)
     (top level)   the ways in and out                          report (dict → dict), qcalc
                                                                (the Q calculator, dict →
                                                                dict), api (JSON text → JSON
