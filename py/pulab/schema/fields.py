@@ -95,6 +95,14 @@ F = Field
 DAMPING = math.sqrt(0.5)
 INT32_MAX = (1 << 31) - 1
 
+def _adc(section: str, what: tuple) -> tuple:
+    """The two fields of an ADC of the board: its resolution and its reference."""
+    return (F(f'{section}.adc_bits', 'integer', 'bit', lo=1, hi=32, default=12,
+              label=(f'{what[0]} ADC resolution', f'{what[1]} ADC 位数')),
+            F(f'{section}.adc_ref_v', 'number', 'V', sign='>0', lo=1e-6, hi=1e3, default=3.3,
+              label=(f'{what[0]} ADC reference', f'{what[1]} ADC 参考电压')))
+
+
 #: The Inovance firmware's raw Uint16 parameters (seed 1.4), in the order of its code.
 RAW_FIELDS = ("Voltage", "Current", "FullFreq01", "FreqRated01", "RsPm", "LD", "LQ",
               "BemfVolt", "uDCFilter")
@@ -249,10 +257,7 @@ TABLE = (
       label=('Amplifier gain', '放大器增益')),
     F('board.current.sensitivity_v_per_a', 'number', 'V/A', sign='>0', lo=1e-9, hi=1e6,
       label=('Sensor sensitivity (instead of shunt × gain)', '传感器灵敏度（代替电阻 × 增益）')),
-    F('board.current.adc_bits', 'integer', 'bit', lo=1, hi=32, default=12,
-      label=('Current ADC resolution', '电流 ADC 位数')),
-    F('board.current.adc_ref_v', 'number', 'V', sign='>0', lo=1e-6, hi=1e3, default=3.3,
-      label=('Current ADC reference', '电流 ADC 参考电压')),
+    *_adc('board.current', ('Current', '电流')),
     F('board.current.bipolar', 'flag', '', default=True,
       label=('Bipolar (offset at mid-rail)', '双极性（偏置在中点）')),
     F('board.current.max_a', 'number', 'A', sign='>0', lo=1e-9, hi=1e9,
@@ -265,10 +270,7 @@ TABLE = (
       label=('Divider, bottom resistor', '分压下电阻')),
     F('board.bus.ratio', 'number', '', sign='>0', lo=1e-9, hi=1.0,
       label=('Divider ratio (V at the ADC / V on the bus)', '分压比（ADC 端电压 / 母线电压）')),
-    F('board.bus.adc_bits', 'integer', 'bit', lo=1, hi=32, default=12,
-      label=('Bus ADC resolution', '母线 ADC 位数')),
-    F('board.bus.adc_ref_v', 'number', 'V', sign='>0', lo=1e-6, hi=1e3, default=3.3,
-      label=('Bus ADC reference', '母线 ADC 参考电压')),
+    *_adc('board.bus', ('Bus', '母线')),
     F('board.bus.max_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9,
       derived='ADC reference / divider ratio',
       label=('Bus full scale (instead of the divider)', '母线满量程（代替分压）')),
