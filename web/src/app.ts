@@ -126,6 +126,8 @@ export class App {
     handleLinks(this.root, this.embed, () => this.renderPanels(['docs']), (id) => this.layout.showView(id));
     this.attach(client, restart, 0);
     this.renderAll();
+    // The numbers are asked for now, not when Python says it is ready (the worker keeps the call).
+    if (!client.ready) this.session.schedule(0);
     // No numbers to show before Python (a share link): the seed's panels warm the fonts meanwhile.
     const seed = this.session.report === null ? seedReport() : null;
     if (seed) setTimeout(() => !this.session.ready && this.layout.warmUp({ ...this.ctx(), report: seed }), 0);
@@ -136,7 +138,9 @@ export class App {
     this.session.client = client;
     const onReady = (ms: number): void => {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
-      registerOffline();
+      // The offline cache (a download of the whole site) once the first numbers are live or
+      // Python has answered otherwise, not beside the first report's rendering.
+      this.session.afterFirstAnswer(registerOffline);
       document.documentElement.dataset.pythonBoot = client.bootFrom;
       // The numbers first: the report is posted before the panels that call Python post theirs.
       this.session.schedule(0);
