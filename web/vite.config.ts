@@ -11,6 +11,7 @@ import { runJsonCPython, seedKey } from './build/prerender';
 import { writeSchema } from './build/schema';
 import { SNAPSHOT_PYODIDE_VERSION, makeSnapshot, pulabFiles } from './build/snapshot';
 import { precompress } from './build/compress';
+import { SnapshotUnpacker, packSnapshot } from './src/snapshot-pack';
 
 const here = dirname(fileURLToPath(import.meta.url));
 // Before anything is bundled: the form is built from pulab's input schema.
@@ -47,7 +48,10 @@ const sha = (b: string | Uint8Array): string => createHash('sha256').update(b).d
 
 interface SnapshotInfo {
   file: string;
+  /** The heap's size (the unpacked snapshot's). */
   size: number;
+  /** The packed file's size (web/src/snapshot-pack.ts). */
+  bytes: number;
   pyodideVersion: string;
 }
 /** Made once per build and shared by the page's and the worker's plugin instances. */
@@ -62,7 +66,15 @@ function buildSnapshot(warn: (m: string) => void): Promise<{ info: SnapshotInfo;
       warn(`no Python memory snapshot (${r.reason}); pages boot Python normally`);
       return null;
     }
-    return { bytes: r.bytes, info: { file: `snapshot-${sha(r.bytes).slice(0, 12)}.bin`, size: r.bytes.length, pyodideVersion: SNAPSHOT_PYODIDE_VERSION } };
+    // Shipped without its zero pages; unpacked here as the worker will, and checked byte for byte.
+    const packed = packSnapshot(r.bytes);
+    const back = new SnapshotUnpacker(new Uint8Array(r.bytes.length));
+    for (let at = 0; at < packed.length; at += 65536) back.push(packed.subarray(at, at + 65536));
+    if (Buffer.compare(back.finish(), r.bytes) !== 0) {
+      warn('no Python memory snapshot (the packed snapshot does not unpack to the heap); pages boot Python normally');
+      return null;
+    }
+    return { bytes: packed, info: { file: `snapshot-${sha(packed).slice(0, 12)}.bin`, size: r.bytes.length, bytes: packed.length, pyodideVersion: SNAPSHOT_PYODIDE_VERSION } };
   })();
   return snapshotJob;
 }

@@ -20,7 +20,7 @@ import { StatusLine } from './page/status';
 import { langSwitch, renderHeader } from './page/header';
 import { handleLinks } from './page/links';
 import { LANG_KEY, load, store } from './page/storage';
-import { registerOffline } from './offline';
+import { registerOfflineLater } from './offline';
 import { mark } from './page/marks';
 import { seedReport } from './page/numbers';
 import { applyTheme, linkToHost, themeParam } from './page/frame-link';
@@ -138,9 +138,9 @@ export class App {
     this.session.client = client;
     const onReady = (ms: number): void => {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
-      // The offline cache (a download of the whole site) once the first numbers are live or
-      // Python has answered otherwise, not beside the first report's rendering.
-      this.session.afterFirstAnswer(registerOffline);
+      // The offline cache (a download of the whole site, 45 MB) a while after Python's first
+      // answer, not beside the first report's rendering or the other panels' boots.
+      this.session.afterFirstAnswer(() => registerOfflineLater());
       document.documentElement.dataset.pythonBoot = client.bootFrom;
       // The numbers first: the report is posted before the panels that call Python post theirs.
       this.session.schedule(0);

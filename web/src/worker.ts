@@ -3,6 +3,7 @@
 // Thin glue between ports, Pyodide and worker-logic.ts.
 import { loadPyodide, version } from 'pyodide';
 import { SNAPSHOT } from 'virtual:pulab-build';
+import { SnapshotUnpacker } from './snapshot-pack';
 import { createRuntimeHost, describeError, fastOrFull, type BootProgress, type FsInit, type PyodideLike } from './worker-logic';
 import type { MainToWorker, WorkerToMain } from './protocol';
 
@@ -18,12 +19,13 @@ function release(buf: ArrayBufferLike): void {
 }
 
 /**
- * The snapshot's download into a buffer of the size the build wrote: `bytes` at once (Pyodide
- * sizes the heap from it and compiles its wasm meanwhile), `started` once the server has answered
- * (a refused snapshot rejects here, before Pyodide starts), `done` when every byte is in.
+ * The snapshot's download, unpacked into a heap-sized buffer as it arrives (web/src/snapshot-pack.ts):
+ * `heap` at once (Pyodide sizes its memory from it and compiles its wasm meanwhile), `started`
+ * once the server has answered (a refused snapshot rejects here, before Pyodide starts), `done`
+ * when the last byte is in place.
  */
-function fetchSnapshot(url: string, size: number, progress: BootProgress): { bytes: Uint8Array; started: Promise<void>; done: Promise<void> } {
-  const bytes = new Uint8Array(size);
+function fetchSnapshot(url: string, snap: { size: number; bytes: number }, progress: BootProgress): { heap: Uint8Array; started: Promise<void>; done: Promise<void> } {
+  const unpacker = new SnapshotUnpacker(new Uint8Array(snap.size));
   const response = fetch(url).then((res) => {
     if (!res.ok || !res.body) throw new Error(`${url}: HTTP ${res.status}`);
     return res.body;
@@ -34,17 +36,16 @@ function fetchSnapshot(url: string, size: number, progress: BootProgress): { byt
     for (;;) {
       const { done: end, value } = await reader.read();
       if (end) break;
-      if (at + value.length > size) throw new Error(`${url}: larger than the ${size} bytes built`);
-      bytes.set(value, at);
+      unpacker.push(value);
       at += value.length;
       release(value.buffer);
-      progress('runtime', 0.05 + 0.6 * (at / size));
+      progress('runtime', 0.05 + 0.6 * Math.min(1, at / snap.bytes));
     }
-    if (at !== size) throw new Error(`${url}: ${at} bytes, not the ${size} built`);
+    unpacker.finish();
     progress('snapshot', 0.7);
   });
   done.catch(() => undefined);
-  return { bytes, started: response.then(() => undefined), done };
+  return { heap: unpacker.heap, started: response.then(() => undefined), done };
 }
 
 async function load(indexURL: string, progress: BootProgress, fsInit?: FsInit) {
@@ -57,12 +58,12 @@ async function load(indexURL: string, progress: BootProgress, fsInit?: FsInit) {
         // downloads, while the snapshot does. Its `fsInit` hook runs after the wasm is
         // instantiated and before the heap is restored; it waits for the last byte (and forever
         // if the download fails: then `done` rejects below and the normal boot takes over).
-        const { bytes, started, done } = fetchSnapshot(`${indexURL}${snap.file}`, snap.size, progress);
+        const { heap, started, done } = fetchSnapshot(`${indexURL}${snap.file}`, snap, progress);
         const [py] = await Promise.all([
           loadPyodide({
             indexURL,
             packages: [],
-            _loadSnapshot: started.then(() => bytes),
+            _loadSnapshot: started.then(() => heap),
             fsInit: async (fs) => {
               // Unwritten sources are written (or their failure named) by the host after the boot;
               // the heap is never restored from a partial snapshot.
@@ -77,7 +78,7 @@ async function load(indexURL: string, progress: BootProgress, fsInit?: FsInit) {
         const internals: unknown = '_api' in py ? py._api : undefined;
         const config: unknown = typeof internals === 'object' && internals !== null && 'config' in internals ? internals.config : undefined;
         if (typeof config === 'object' && config !== null) Reflect.deleteProperty(config, '_loadSnapshot');
-        release(bytes.buffer);
+        release(heap.buffer);
         return py;
       }
     : null;
