@@ -113,6 +113,29 @@ function pulabBuild(emit: boolean): Plugin {
   };
 }
 
+/**
+ * index.html asks for the report runtime's worker script from its head, beside the page's own
+ * first script (which starts the worker): the worker's request then finds it in the HTTP cache
+ * (a hashed name, cached for good) or joins the download, one round trip earlier. Only the small
+ * script: Pyodide's files and the snapshot are fetched by the worker (preloaded in the page, every
+ * embed frame would hold its own copy).
+ */
+function preloadWorker(): Plugin {
+  return {
+    name: 'pulab-preload-worker',
+    apply: 'build',
+    transformIndexHtml: {
+      order: 'post',
+      handler(html, ctx) {
+        if (!ctx.bundle || !/(^|\/)index\.html$/.test(ctx.filename)) return html;
+        const worker = Object.keys(ctx.bundle).find((f) => /^assets\/worker-[\w-]+\.js$/.test(f));
+        if (!worker) return html;
+        return { html, tags: [{ tag: 'link', attrs: { rel: 'modulepreload', crossorigin: true, href: `./${worker}` }, injectTo: 'head' }] };
+      },
+    },
+  };
+}
+
 // pyodide.mjs imports node:* modules on its Node code path only; in the browser bundle they are
 // externalized on purpose. Silence exactly that notice, keep every other warning.
 const logger = createLogger();
@@ -129,7 +152,7 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets(), pulabBuild(true), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
+  plugins: [pyodideAssets(), pulabBuild(true), preloadWorker(), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
   optimizeDeps: { exclude: ['pyodide'] },
   worker: { format: 'es', plugins: () => [pulabBuild(false)] },
   server: { fs: { allow: [repo] } },
