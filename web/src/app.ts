@@ -22,7 +22,6 @@ import { handleLinks } from './page/links';
 import { LANG_KEY, load, store } from './page/storage';
 import { registerOfflineLater } from './offline';
 import { mark } from './page/marks';
-import { seedReport } from './page/numbers';
 import { applyTheme, linkToHost, themeParam } from './page/frame-link';
 import { codeStateFromSearch } from './code-share';
 
@@ -128,9 +127,9 @@ export class App {
     this.renderAll();
     // The numbers are asked for now, not when Python says it is ready (the worker keeps the call).
     if (!client.ready) this.session.schedule(0);
-    // No numbers to show before Python (a share link): the seed's panels warm the fonts meanwhile.
-    const seed = this.session.report === null ? seedReport() : null;
-    if (seed) setTimeout(() => !this.session.ready && this.layout.warmUp({ ...this.ctx(), report: seed }), 0);
+    // No warm-up render of the seed's panels while Python boots (a share link has no numbers to
+    // show before it): on 2 cores it delayed the boot more than it saved on the first live render
+    // (docs/performance.md, "Cold start sequencing").
   }
 
   /** Follow `client`; when a ready runtime is lost (PulabClient.lost), start the next generation. */
