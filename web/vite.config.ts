@@ -12,6 +12,7 @@ import { writeSchema } from './build/schema';
 import { SNAPSHOT_PYODIDE_VERSION, makeSnapshot, pulabFiles } from './build/snapshot';
 import { precompress } from './build/compress';
 import { embedScript } from './build/embed';
+import { SnapshotUnpacker, packSnapshot } from './src/snapshot-pack';
 
 const here = dirname(fileURLToPath(import.meta.url));
 // Before anything is bundled: the form is built from pulab's input schema.
@@ -48,7 +49,10 @@ const sha = (b: string | Uint8Array): string => createHash('sha256').update(b).d
 
 interface SnapshotInfo {
   file: string;
+  /** The heap's size (the unpacked snapshot's). */
   size: number;
+  /** The packed file's size (web/src/snapshot-pack.ts). */
+  bytes: number;
   pyodideVersion: string;
 }
 /** Made once per build and shared by the page's and the worker's plugin instances. */
@@ -63,7 +67,15 @@ function buildSnapshot(warn: (m: string) => void): Promise<{ info: SnapshotInfo;
       warn(`no Python memory snapshot (${r.reason}); pages boot Python normally`);
       return null;
     }
-    return { bytes: r.bytes, info: { file: `snapshot-${sha(r.bytes).slice(0, 12)}.bin`, size: r.bytes.length, pyodideVersion: SNAPSHOT_PYODIDE_VERSION } };
+    // Shipped without its zero pages; unpacked here as the worker will, and checked byte for byte.
+    const packed = packSnapshot(r.bytes);
+    const back = new SnapshotUnpacker(new Uint8Array(r.bytes.length));
+    for (let at = 0; at < packed.length; at += 65536) back.push(packed.subarray(at, at + 65536));
+    if (Buffer.compare(back.finish(), r.bytes) !== 0) {
+      warn('no Python memory snapshot (the packed snapshot does not unpack to the heap); pages boot Python normally');
+      return null;
+    }
+    return { bytes: packed, info: { file: `snapshot-${sha(packed).slice(0, 12)}.bin`, size: r.bytes.length, bytes: packed.length, pyodideVersion: SNAPSHOT_PYODIDE_VERSION } };
   })();
   return snapshotJob;
 }
@@ -102,6 +114,29 @@ function pulabBuild(emit: boolean): Plugin {
   };
 }
 
+/**
+ * index.html asks for the report runtime's worker script from its head, beside the page's own
+ * first script (which starts the worker): the worker's request then finds it in the HTTP cache
+ * (a hashed name, cached for good) or joins the download, one round trip earlier. Only the small
+ * script: Pyodide's files and the snapshot are fetched by the worker (preloaded in the page, every
+ * embed frame would hold its own copy).
+ */
+function preloadWorker(): Plugin {
+  return {
+    name: 'pulab-preload-worker',
+    apply: 'build',
+    transformIndexHtml: {
+      order: 'post',
+      handler(html, ctx) {
+        if (!ctx.bundle || !/(^|\/)index\.html$/.test(ctx.filename)) return html;
+        const worker = Object.keys(ctx.bundle).find((f) => /^assets\/worker-[\w-]+\.js$/.test(f));
+        if (!worker) return html;
+        return { html, tags: [{ tag: 'link', attrs: { rel: 'modulepreload', crossorigin: true, href: `./${worker}` }, injectTo: 'head' }] };
+      },
+    },
+  };
+}
+
 // pyodide.mjs imports node:* modules on its Node code path only; in the browser bundle they are
 // externalized on purpose. Silence exactly that notice, keep every other warning.
 const logger = createLogger();
@@ -118,7 +153,7 @@ export default defineConfig({
   root: here,
   base: './',
   publicDir: false,
-  plugins: [pyodideAssets(), pulabBuild(true), embedScript(resolve(here, 'src/embed/element.ts'), 'es2022'), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
+  plugins: [pyodideAssets(), pulabBuild(true), preloadWorker(), embedScript(resolve(here, 'src/embed/element.ts'), 'es2022'), precompress(resolve(repo, 'node_modules/.cache/pulab-compress')), offlineCache()],
   optimizeDeps: { exclude: ['pyodide'] },
   worker: { format: 'es', plugins: () => [pulabBuild(false)] },
   server: { fs: { allow: [repo] } },

@@ -7,7 +7,9 @@
 //   input → all numbers updated (in page, dataset.updateMs), typed by Playwright fill and by keyboard events,
 //   typing: keystroke → numbers and answer strip current, Inovance and Microchip side by side (fresh profiles).
 // Each boot is printed in phases (ms since navigation) from <html data-t-…> marks.
-// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=cold,warm,share,nosnap,embeds,elements,input,typing
+//   floor: a blank page that only starts the report runtime from its snapshot (the build's own
+//   worker script, no page code) and asks it for the share link's report before it is ready.
+// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=floor,cold,warm,share,nosnap,embeds,elements,input,typing
 // picks scenarios (nosnap: cold with the snapshot refused, the fallback boot).
 import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
@@ -24,11 +26,12 @@ if (!existsSync(CHROMIUM)) {
   process.exit(0);
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
-const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'cold,warm,share,nosnap,embeds,elements,input,typing').split(','));
+const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'floor,cold,warm,share,nosnap,embeds,elements,input,typing').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
 if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--configLoader', 'runner', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
-const { server, url } = await serve(DIST, '/bench/');
+const SHARE_INPUT = JSON.parse(readFileSync(join(ROOT, 'tests/golden/04_ind380_7k5.json'), 'utf8')).input;
+const { server, url } = await serve(DIST, '/bench/', 0, { extra: floorPage() });
 // The fallback boot: the same build with its snapshot refused (404).
 const nosnap = await serve(DIST, '/bench/', 0, { refuse: /snapshot-.*\.bin$/ });
 const load0 = loadavg();
@@ -65,6 +68,52 @@ function report(name, runs) {
 }
 const newCtx = () => browser.newContext({ viewport: { width: 1366, height: 768 } });
 
+/**
+ * The floor: floor.html starts the build's worker script as the page does (a SharedWorker named
+ * as the page's report runtime), posts init and the share link's report at once, and marks each
+ * boot stage, ready and the report's answer (<html data-t-…>, ms since navigation).
+ */
+function floorPage() {
+  const worker = readdirSync(join(DIST, 'assets')).find((f) => /^worker-.*\.js$/.test(f));
+  const js = `const d = document.documentElement.dataset;
+const mark = (k) => { d[k] ??= performance.now().toFixed(0); };
+const w = new SharedWorker(new URL('./assets/${worker}', document.baseURI), { type: 'module', name: 'pulab-report' });
+w.port.onmessage = ({ data: m }) => {
+  if (m.type === 'progress') { mark('tBoot' + m.stage[0].toUpperCase() + m.stage.slice(1)); d['w' + m.stage] ??= m.ms.toFixed(0); }
+  else if (m.type === 'ready') { mark('tBootReady'); d.pythonBoot = m.from ?? 'full'; d.wready = m.bootMs.toFixed(0); }
+  else if (m.type === 'result') { mark('tLive'); d.numbers = m.result.ok ? 'live' : 'error'; }
+  else if (m.type === 'fatal') d.numbers = 'fatal: ' + m.message;
+};
+w.port.postMessage({ type: 'init', indexURL: new URL('pyodide/', document.baseURI).href, timeoutMs: 60000 });
+w.port.postMessage({ type: 'call', id: 1, kind: 'report', payload: ${JSON.stringify(JSON.stringify(SHARE_INPUT))}, channel: 'report' });
+`;
+  return {
+    'floor.html': ['text/html; charset=utf-8', '<!doctype html><meta charset="utf-8"><title>floor</title><script type="module" src="./floor.js"></script>'],
+    'floor.js': ['text/javascript', js],
+  };
+}
+if (SCEN.has('floor')) {
+  const runs = [];
+  for (let i = 0; i < RUNS; i++) {
+    const ctx = await newCtx();
+    const p = await ctx.newPage();
+    const t0 = Date.now();
+    await p.goto(`${url}floor.html`, { waitUntil: 'commit' });
+    await p.waitForFunction(() => document.documentElement.dataset.numbers, null, { timeout: 90_000, polling: 10 });
+    const wall = Date.now() - t0;
+    const d = await p.evaluate(() => ({ ...document.documentElement.dataset }));
+    if (d.numbers !== 'live') throw new Error(`floor page: ${d.numbers}`);
+    const phases = Object.fromEntries(PHASES.filter((k) => d[`t${k[0].toUpperCase()}${k.slice(1)}`] !== undefined).map((k) => [k, Number(d[`t${k[0].toUpperCase()}${k.slice(1)}`])]));
+    const worker = Object.fromEntries(['runtime', 'snapshot', 'files', 'import', 'ready'].map((k) => [k, Number(d[`w${k}`])]));
+    runs.push({ first: phases.bootReady, live: wall, phases, worker, from: d.pythonBoot, runtime: 'shared' });
+    await ctx.close();
+  }
+  console.log(`page: floor (blank page, runtime only)  ready ${stat(runs.map((r) => r.phases.bootReady))} in page   report answered ${stat(runs.map((r) => r.phases.live))} in page, ${stat(runs.map((r) => r.live))} wall   [${runs[0]?.from ?? '?'} boot]`);
+  const ph = PHASES.map((k) => [k, runs.map((r) => r.phases[k]).filter((v) => v !== undefined)]).filter(([, v]) => v.length);
+  console.log(`      phases (median ms since navigation): ${ph.map(([k, v]) => `${k} ${q(v, 0.5).toFixed(0)}`).join(' → ')}`);
+  const w = ['runtime', 'snapshot', 'files', 'import', 'ready'].map((k) => [k, runs.map((r) => r.worker[k]).filter((v) => !Number.isNaN(v))]).filter(([, v]) => v.length);
+  console.log(`      in the worker (median ms since its boot began): ${w.map(([k, v]) => `${k} ${q(v, 0.5).toFixed(0)}`).join(' → ')}`);
+}
 if (SCEN.has('cold')) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
@@ -85,8 +134,7 @@ if (SCEN.has('warm')) {
   report('default page, warm (reload)', runs);
 }
 if (SCEN.has('share')) {
-  const g = JSON.parse(readFileSync(join(ROOT, 'tests/golden/04_ind380_7k5.json'), 'utf8'));
-  const link = `${url}#in=${encodeURIComponent(JSON.stringify(g.input))}`;
+  const link = `${url}#in=${encodeURIComponent(JSON.stringify(SHARE_INPUT))}`;
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();

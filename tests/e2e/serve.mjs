@@ -41,6 +41,8 @@ async function variant(file, acceptEncoding) {
  * response waits for; `faults.refuse` (RegExp) answers 404 for matching paths,
  * `faults.corrupt` (RegExp) 4 KiB of junk. `faults.cors: false` sends no Access-Control-Allow-Origin
  * (a server whose headers the docs team cannot set: only the classic `<script src>` of embed.js works).
+ * `faults.extra` ({rel: [contentType, text]}): files served as if they were in `root` (the
+ * benchmark's floor page), with the same headers.
  */
 export function serve(root, prefix = '/', port = 0, faults = {}) {
   const server = createServer(async (req, res) => {
@@ -54,6 +56,8 @@ export function serve(root, prefix = '/', port = 0, faults = {}) {
     await faults.hold?.(rel);
     if (faults.refuse?.test(rel)) return res.writeHead(404, { 'Content-Type': 'text/plain' }).end('refused (test)');
     if (faults.corrupt?.test(rel)) return res.writeHead(200, { 'Content-Type': 'application/octet-stream' }).end(Buffer.alloc(4096, 7));
+    const extra = faults.extra?.[rel];
+    if (extra) return res.writeHead(200, { 'Content-Type': extra[0], 'Content-Security-Policy': CSP, 'Cache-Control': 'no-cache' }).end(extra[1]);
     const file = normalize(join(root, rel));
     if (!file.startsWith(normalize(root))) return res.writeHead(403).end();
     try {

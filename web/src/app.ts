@@ -20,9 +20,8 @@ import { StatusLine } from './page/status';
 import { langSwitch, renderHeader } from './page/header';
 import { handleLinks } from './page/links';
 import { LANG_KEY, load, store } from './page/storage';
-import { registerOffline } from './offline';
+import { registerOfflineLater } from './offline';
 import { mark } from './page/marks';
-import { seedReport } from './page/numbers';
 import { applyTheme, linkToHost, themeParam } from './page/frame-link';
 import { codeStateFromSearch } from './code-share';
 
@@ -126,9 +125,11 @@ export class App {
     handleLinks(this.root, this.embed, () => this.renderPanels(['docs']), (id) => this.layout.showView(id));
     this.attach(client, restart, 0);
     this.renderAll();
-    // No numbers to show before Python (a share link): the seed's panels warm the fonts meanwhile.
-    const seed = this.session.report === null ? seedReport() : null;
-    if (seed) setTimeout(() => !this.session.ready && this.layout.warmUp({ ...this.ctx(), report: seed }), 0);
+    // The numbers are asked for now, not when Python says it is ready (the worker keeps the call).
+    if (!client.ready) this.session.schedule(0);
+    // No warm-up render of the seed's panels while Python boots (a share link has no numbers to
+    // show before it): on 2 cores it delayed the boot more than it saved on the first live render
+    // (docs/performance.md, "Cold start sequencing").
   }
 
   /** Follow `client`; when a ready runtime is lost (PulabClient.lost), start the next generation. */
@@ -136,7 +137,9 @@ export class App {
     this.session.client = client;
     const onReady = (ms: number): void => {
       document.documentElement.dataset.bootMs = String(Math.round(ms));
-      registerOffline();
+      // The offline cache (a download of the whole site, 45 MB) a while after Python's first
+      // answer, not beside the first report's rendering or the other panels' boots.
+      this.session.afterFirstAnswer(() => registerOfflineLater());
       document.documentElement.dataset.pythonBoot = client.bootFrom;
       // The numbers first: the report is posted before the panels that call Python post theirs.
       this.session.schedule(0);

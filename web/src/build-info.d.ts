@@ -6,5 +6,5 @@ declare module 'virtual:pulab-build' {
   export const SEED_KEY: string;
   export const SEED_RESULT: string;
   /** The Python memory snapshot under pyodide/, or null (boot normally). */
-  export const SNAPSHOT: { file: string; size: number; pyodideVersion: string } | null;
+  export const SNAPSHOT: { file: string; size: number; bytes: number; pyodideVersion: string } | null;
 }

@@ -7,36 +7,68 @@ import { PRIORITY_CHANNEL, STEPPED_KINDS, type ApiKind, type ApiResult, type Boo
 /** The part of the Pyodide API the worker uses. */
 export interface PyodideLike {
   version: string;
-  FS: { mkdirTree(path: string): void; writeFile(path: string, data: string): void };
+  FS: PyFS;
   runPython(code: string): unknown;
   pyimport(name: string): unknown;
+}
+/** The part of Pyodide's (Emscripten's) file system the worker uses. */
+export interface PyFS {
+  mkdirTree(path: string): void;
+  writeFile(path: string, data: string | Uint8Array): void;
 }
 
 /** Progress of a boot (a download, a step); every call also tells the boot watchdog it is alive. */
 export type BootProgress = (stage: BootStage, fraction: number) => void;
+/**
+ * Writes the pulab sources into a file system before Python starts; a loader that can, passes it
+ * to Pyodide as its `fsInit` hook (then the files are written while the runtime's downloads are
+ * still under way, not after). A loader that does not call it leaves the writing to the host.
+ */
+export type FsInit = (fs: PyFS) => Promise<void>;
 /** A loader returns the runtime, or the runtime and where it came from (a snapshot or a full boot). */
-export type PyodideLoader = (indexURL: string, progress: BootProgress) => Promise<PyodideLike | { py: PyodideLike; from: BootFrom; note?: string }>;
+export type PyodideLoader = (indexURL: string, progress: BootProgress, fsInit?: FsInit) => Promise<PyodideLike | { py: PyodideLike; from: BootFrom; note?: string }>;
 
 export const PY_ROOT = '/home/pyodide/pulab_src';
 
 /**
- * Write the bundled py/pulab sources into Pyodide's file system under `root` and put `root` on
- * sys.path. Keys are glob paths such as '../../py/pulab/api.py'; everything from 'pulab/' on is kept.
- * Returns the number of files written.
+ * Write the bundled py/pulab sources into `fs` under `root`. Keys are glob paths such as
+ * '../../py/pulab/api.py'; everything from 'pulab/' on is kept. Returns the number of files
+ * written. The text is encoded here (Emscripten's own encoding of a string, char by char in
+ * JavaScript, took 2–3 times as long).
  */
-export function writePulab(py: PyodideLike, files: Record<string, string>, root = PY_ROOT): number {
+export function writePulabFiles(fs: PyFS, files: Record<string, string>, root = PY_ROOT): number {
+  const utf8 = new TextEncoder();
+  const made = new Set<string>();
   let n = 0;
   for (const [key, text] of Object.entries(files)) {
     const i = key.lastIndexOf('/pulab/');
     if (i < 0) continue;
     const rel = key.slice(i + 1);
     const path = `${root}/${rel}`;
-    py.FS.mkdirTree(path.slice(0, path.lastIndexOf('/')));
-    py.FS.writeFile(path, text);
+    const dir = path.slice(0, path.lastIndexOf('/'));
+    if (!made.has(dir)) {
+      fs.mkdirTree(dir);
+      made.add(dir);
+    }
+    fs.writeFile(path, utf8.encode(text));
     n++;
   }
   if (n === 0) throw new Error('no pulab sources were bundled (py/pulab/**/*.py)');
+  return n;
+}
+
+/** Put `root` on sys.path (once). */
+export function addPulabPath(py: PyodideLike, root = PY_ROOT): void {
   py.runPython(`import sys\nif ${JSON.stringify(root)} not in sys.path: sys.path.insert(0, ${JSON.stringify(root)})`);
+}
+
+/**
+ * Write the bundled py/pulab sources into Pyodide's file system under `root` and put `root` on
+ * sys.path. Returns the number of files written.
+ */
+export function writePulab(py: PyodideLike, files: Record<string, string>, root = PY_ROOT): number {
+  const n = writePulabFiles(py.FS, files, root);
+  addPulabPath(py, root);
   return n;
 }
 
@@ -169,7 +201,7 @@ const now = (): number => (typeof performance !== 'undefined' ? performance.now(
  * boot took 10–25 ms in Python instead of 2–5 ms (with the engine told to optimize everything at
  * once, `--no-wasm-dynamic-tiering`, they took 2 ms from the first).
  */
-export function createRuntimeHost(load: PyodideLoader, files: Record<string, string>, opts: { warmRuns?: number } = {}): RuntimeHost {
+export function createRuntimeHost(load: PyodideLoader, files: Record<string, string> | Promise<Record<string, string>>, opts: { warmRuns?: number } = {}): RuntimeHost {
   let api: PyApi | null = null;
   let resolveReady!: () => void;
   let rejectReady!: (e: unknown) => void;
@@ -213,16 +245,27 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
       progress('runtime', 0.05);
       const missing = typeof fetch === 'function' ? missingRuntimeFile(indexURL) : new Promise<never>(() => undefined);
       missing.catch(() => undefined);
-      const loaded = await Promise.race([load(indexURL, progress), watchdog.expired, missing]);
+      let written = false;
+      const fsInit: FsInit = async (fs) => {
+        writePulabFiles(fs, await files);
+        written = true;
+      };
+      const loaded = await Promise.race([load(indexURL, progress, fsInit), watchdog.expired, missing]);
       watchdog.stop();
       const { py, from, note } = 'py' in loaded ? loaded : { py: loaded, from: undefined, note: undefined };
       progress('files', 0.8);
-      writePulab(py, files);
+      if (!written) writePulabFiles(py.FS, await files);
+      // A snapshot was taken with the sources' directory on sys.path; compiling even this one line
+      // of Python cost 5–25 ms of a cold runtime.
+      if (from !== 'snapshot') addPulabPath(py);
       progress('import', 0.9);
       const mod = py.pyimport('pulab.api') as Record<string, unknown>;
       // Everything imported so far lives as long as the runtime: out of the cyclic collector's
       // sight, a full collection during a report no longer walks the whole stdlib and pulab.
-      py.runPython('import gc; gc.freeze()');
+      // (Called, not run as source: no compilation.)
+      const gc = py.pyimport('gc') as { freeze?: unknown } | undefined;
+      if (typeof gc?.freeze === 'function') gc.freeze();
+      else py.runPython('import gc; gc.freeze()');
       const { call_json, call_json_steps } = mod;
       if (typeof call_json !== 'function' || typeof call_json_steps !== 'function') throw new Error('pulab.api.call_json is missing');
       api = { call_json: call_json as PyApi['call_json'], call_json_steps: call_json_steps as PyApi['call_json_steps'] };

@@ -3,8 +3,8 @@
 // Thin glue between ports, Pyodide and worker-logic.ts.
 import { loadPyodide, version } from 'pyodide';
 import { SNAPSHOT } from 'virtual:pulab-build';
-import { createRuntimeHost, describeError, fastOrFull, type BootProgress, type PyodideLike } from './worker-logic';
-import { PULAB_FILES } from './pysources';
+import { SnapshotUnpacker } from './snapshot-pack';
+import { createRuntimeHost, describeError, fastOrFull, type BootProgress, type FsInit, type PyodideLike } from './worker-logic';
 import type { MainToWorker, WorkerToMain } from './protocol';
 
 /**
@@ -18,44 +18,67 @@ function release(buf: ArrayBufferLike): void {
   if (typeof b.transfer === 'function' && !b.detached) b.transfer(0);
 }
 
-/** The snapshot's bytes, with download progress (a slow download that progresses is not a failure). */
-async function fetchSnapshot(url: string, size: number, progress: BootProgress): Promise<Uint8Array> {
-  const res = await fetch(url);
-  if (!res.ok || !res.body) throw new Error(`${url}: HTTP ${res.status}`);
-  const out = new Uint8Array(size);
-  const reader = res.body.getReader();
-  let at = 0;
-  for (;;) {
-    const { done, value } = await reader.read();
-    if (done) break;
-    if (at + value.length > size) throw new Error(`${url}: larger than the ${size} bytes built`);
-    out.set(value, at);
-    at += value.length;
-    release(value.buffer);
-    progress('runtime', 0.05 + 0.6 * (at / size));
-  }
-  if (at !== size) throw new Error(`${url}: ${at} bytes, not the ${size} built`);
-  return out;
+/**
+ * The snapshot's download, unpacked into a heap-sized buffer as it arrives (web/src/snapshot-pack.ts):
+ * `heap` at once (Pyodide sizes its memory from it and compiles its wasm meanwhile), `started`
+ * once the server has answered (a refused snapshot rejects here, before Pyodide starts), `done`
+ * when the last byte is in place.
+ */
+function fetchSnapshot(url: string, snap: { size: number; bytes: number }, progress: BootProgress): { heap: Uint8Array; started: Promise<void>; done: Promise<void> } {
+  const unpacker = new SnapshotUnpacker(new Uint8Array(snap.size));
+  const response = fetch(url).then((res) => {
+    if (!res.ok || !res.body) throw new Error(`${url}: HTTP ${res.status}`);
+    return res.body;
+  });
+  const done = response.then(async (body) => {
+    const reader = body.getReader();
+    let at = 0;
+    for (;;) {
+      const { done: end, value } = await reader.read();
+      if (end) break;
+      unpacker.push(value);
+      at += value.length;
+      release(value.buffer);
+      progress('runtime', 0.05 + 0.6 * Math.min(1, at / snap.bytes));
+    }
+    unpacker.finish();
+    progress('snapshot', 0.7);
+  });
+  done.catch(() => undefined);
+  return { heap: unpacker.heap, started: response.then(() => undefined), done };
 }
 
-async function load(indexURL: string, progress: BootProgress) {
-  const full = async (): Promise<PyodideLike> => loadPyodide({ indexURL, packages: [] });
+async function load(indexURL: string, progress: BootProgress, fsInit?: FsInit) {
+  const full = async (): Promise<PyodideLike> => loadPyodide({ indexURL, packages: [], fsInit });
   const snap = SNAPSHOT;
   const fast = snap && snap.pyodideVersion === version
     ? async () => {
-        // The promise, not the bytes: Pyodide fetches and compiles its wasm while the snapshot downloads.
-        const bytes = fetchSnapshot(`${indexURL}${snap.file}`, snap.size, progress).then((b) => {
-          progress('snapshot', 0.7);
-          return b;
-        });
-        bytes.catch(() => undefined); // a refused download rejects loadPyodide below, which falls back
-        const py = await loadPyodide({ indexURL, packages: [], _loadSnapshot: bytes });
+        // Pyodide takes the snapshot's buffer once the server has answered, and only its size
+        // matters until it restores the heap: the wasm streams in and compiles, and the stdlib
+        // downloads, while the snapshot does. Its `fsInit` hook runs after the wasm is
+        // instantiated and before the heap is restored; it waits for the last byte (and forever
+        // if the download fails: then `done` rejects below and the normal boot takes over).
+        const { heap, started, done } = fetchSnapshot(`${indexURL}${snap.file}`, snap, progress);
+        const [py] = await Promise.all([
+          loadPyodide({
+            indexURL,
+            packages: [],
+            _loadSnapshot: started.then(() => heap),
+            fsInit: async (fs) => {
+              // Unwritten sources are written (or their failure named) by the host after the boot;
+              // the heap is never restored from a partial snapshot.
+              await fsInit?.(fs).catch(() => undefined);
+              await done.catch(() => new Promise<never>(() => undefined));
+            },
+          }),
+          done,
+        ]);
         // Pyodide keeps its config, and with it the 30 MB snapshot, for the runtime's lifetime; the
         // snapshot is in the runtime's memory now, so its bytes go.
         const internals: unknown = '_api' in py ? py._api : undefined;
         const config: unknown = typeof internals === 'object' && internals !== null && 'config' in internals ? internals.config : undefined;
         if (typeof config === 'object' && config !== null) Reflect.deleteProperty(config, '_loadSnapshot');
-        release((await bytes).buffer);
+        release(heap.buffer);
         return py;
       }
     : null;
@@ -65,7 +88,11 @@ async function load(indexURL: string, progress: BootProgress) {
 // 200 warm-up runs after the first report: measured against 0, 40 and 100 side by side (first 8
 // keystrokes, 5 fresh pages each), the Python time of the first keystrokes fell from p90 20 ms to
 // 7.8 ms (100: 17 ms; 40: no change); they cost 0.7–0.9 s of this worker's idle time, once (traced).
-const host = createRuntimeHost(load, PULAB_FILES, { warmRuns: 200 });
+// The pulab sources (0.9 MB of text) load beside the runtime, not as part of this script: this
+// script's compilation comes before every download of the boot.
+const sources = import('./pysources').then((m) => m.PULAB_FILES);
+sources.catch(() => undefined);
+const host = createRuntimeHost(load, sources, { warmRuns: 200 });
 
 type Port = { postMessage(m: WorkerToMain): void; onmessage: ((ev: MessageEvent<MainToWorker>) => void) | null };
 function serve(port: Port): void {

@@ -268,23 +268,6 @@ export class Layout {
   }
 
   /**
-   * Lay out the pure panels once with `ctx` (the build's seed report) in a hidden scratch box, and
-   * remove it in the same task (nothing can see its numbers). A page opened without any known
-   * numbers (a share link) has only placeholders to lay out while Python boots; its first live
-   * render then paid ≈ 0.2–0.3 s of font lookups and text shaping on the main thread. Done here,
-   * that work overlaps the boot.
-   */
-  warmUp(ctx: PanelContext): void {
-    const host = this.root.querySelector('main.panels');
-    if (!host) return;
-    const box = h('div', { class: 'warmup', 'aria-hidden': 'true' });
-    for (const [id, body] of this.renderPure(ctx)) box.append(h('section', { class: `panel panel-${id}` }, body));
-    host.append(box);
-    void box.offsetHeight;
-    box.remove();
-  }
-
-  /**
    * Mark the panels stale while the form holds an input they were not computed from, with the
    * reason in the banner; an error naming no field of the form (a section, the whole input) is
    * shown above the panels.

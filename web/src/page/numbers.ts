@@ -37,11 +37,6 @@ export function knownReport(key: string): { report: Report; source: 'build' | 'c
   return hit && hit[1] && typeof hit[1] === 'object' ? { report: hit[1], source: 'cached' } : null;
 }
 
-/** The build's seed report (for the font warm-up of a page that has no numbers yet). */
-export function seedReport(): Report | null {
-  return knownReport(SEED_KEY)?.report ?? null;
-}
-
 let pending: [string, Report] | null = null;
 let timer: ReturnType<typeof setTimeout> | undefined;
 /** Keep a live report for the next visit (written after a pause: typing makes many). */

@@ -86,6 +86,8 @@ export class ComputeSession {
   /** Time of the last input event (for the input → numbers latency in dataset.updateMs). */
   private inputAt = 0;
   private timer: ReturnType<typeof setTimeout> | undefined;
+  /** The report key of the call in flight on the report channel, if any. */
+  private asking: string | null = null;
   /** The last hash this page wrote into the address bar. */
   private wroteHash: string | null = null;
   private simTimer: ReturnType<typeof setTimeout> | undefined;
@@ -202,12 +204,17 @@ export class ComputeSession {
     const key = reportKey(this.input);
     if (!this.client?.ready) {
       this.persist(eff);
-      // Typing before Python is ready: kept (computed once it is), and painted at once if known.
+      // Typing before Python is ready: painted at once if known, and asked for now: the worker
+      // keeps the newest call and computes it the moment Python is ready (the page's own "ready"
+      // message and its answer are not waited for).
       if (key !== this.reportFor && this.paintKnown(key)) this.events.report();
       this.updateSource();
       this.events.busy();
-      return this.events.errors();
+      this.events.errors();
+      if (!this.client || this.client.fatalMessage) return;
     }
+    // The same input already asked (before Python was ready): its answer is on its way.
+    if (this.asking === key) return;
     const root = this.env.attrs;
     root.busy = '1';
     // The address bar and localStorage are written after the numbers are shown (history.replaceState
@@ -215,6 +222,7 @@ export class ComputeSession {
     let superseded = false;
     try {
       const t0 = performance.now();
+      this.asking = key;
       const { result, ms } = await this.client.call('report', JSON.parse(key), 'report', REPORT_LOST_MS);
       this.lastMs = ms;
       if (result.ok) {
@@ -247,10 +255,33 @@ export class ComputeSession {
       superseded = e instanceof Superseded;
       if (!superseded) console.warn('report call failed:', e);
     } finally {
+      this.answered();
+      if (this.asking === key) this.asking = null;
       if (!superseded) this.persist(eff);
       delete root.busy;
       this.events.busy();
     }
+  }
+
+  private firstAnswer: (() => void)[] | null = [];
+  /** Run `f` once, when the first report call has been answered (soon if it has been), or
+   * after `latestMs` if none is (an input the page itself refuses asks nothing). */
+  afterFirstAnswer(f: () => void, latestMs = 3000): void {
+    let done = false;
+    const once = (): void => {
+      if (!done) f();
+      done = true;
+    };
+    setTimeout(once, latestMs);
+    if (this.firstAnswer) this.firstAnswer.push(once);
+    else setTimeout(once, 0);
+  }
+  private answered(): void {
+    const waiting = this.firstAnswer;
+    if (!waiting) return;
+    this.firstAnswer = null;
+    // After the answer's rendering (this task), in a task of its own.
+    setTimeout(() => waiting.forEach((f) => f()), 0);
   }
 
   /** Whether simulations are computed (a shown panel draws them). */

@@ -28,7 +28,7 @@ export interface Panel {
   /** Shows simulation results: the simulation runtime starts only if a shown panel has this. */
   usesSim?: boolean;
   /** Its render reads only the context and writes only into `el` (no state of its own), so the
-   * layout may also render it into a scratch element (Layout.warmUp). */
+   * layout may also render it into a scratch element (Layout.settle's warm renders). */
   pure?: boolean;
   /** Render into `el` (called on every new report and on a language switch). A panel shows a
    * new report by `patch` (dom.ts): only the numbers that changed are laid out again. */
