@@ -23,9 +23,22 @@ class FwView {
   fw: FwReport | null = null;
   error: string | null = null;
   pending = false;
+  /** Asked only while the panel is (nearly) on screen: the envelope costs about a second of the
+   * report runtime, which the other panels' reports must not wait behind on every keystroke. */
+  shown = typeof IntersectionObserver === 'undefined';
+  private ctx: PanelContext | null = null;
+
+  constructor(el: HTMLElement) {
+    if (this.shown) return;
+    new IntersectionObserver((entries) => {
+      this.shown = entries.some((e) => e.isIntersecting);
+      if (this.shown && this.ctx) this.ask(el, this.ctx);
+    }, { rootMargin: '300px' }).observe(el);
+  }
 
   ask(el: HTMLElement, ctx: PanelContext): void {
-    if (!ctx.client) return;
+    this.ctx = ctx;
+    if (!ctx.client || !this.shown) return;
     const req = fwInput(ctx.input);
     const key = JSON.stringify(req);
     if (key === this.key) return;
@@ -57,7 +70,7 @@ export const fwPanel: Panel = {
   needsPython: true,
   render(el, ctx) {
     let v = views.get(el);
-    if (!v) views.set(el, (v = new FwView()));
+    if (!v) views.set(el, (v = new FwView(el)));
     v.ask(el, ctx);
     const fw = v.fw;
     patch(el,
