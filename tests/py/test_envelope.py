@@ -119,3 +119,25 @@ def test_mathworks_second_milestone_is_on_the_envelope():
     lim = envelope.limits(m, 3.8 / (math.sqrt(3) * 2 * math.pi * 1000 * 4 / 60), 24 / math.sqrt(3), 1.8)
     _, i_d, i_q = envelope.best_torque(lim, 2935.5)
     assert (round(i_d, 1), round(i_q, 1)) == (-1.1, 1.4)
+
+
+@pytest.mark.parametrize("motor, psi, v, i", [
+    ({"rs_ohm": 0.75, "ld_h": 1.05e-3, "lq_h": 1.05e-3, "pole_pairs": 4},
+     3.8 / (math.sqrt(3) * 2 * math.pi * 1000 * 4 / 60), 24 / math.sqrt(3), 1.8),   # BLY171D
+    ({"rs_ohm": 3.6, "ld_h": 0.036, "lq_h": 0.051, "pole_pairs": 3}, 0.545, 540 / math.sqrt(3),
+     4.3 * math.sqrt(2)),                                                            # motulator IPM
+])
+def test_torque_stays_positive_up_to_the_maximum_speed(motor, psi, v, i):
+    # the feasible currents shrink to a sliver of the circle at (−I, 0): still found, still
+    # within both limits, the torque falling towards 0 linearly in the speed left
+    lim = envelope.limits(motor, psi, v, i)
+    w = envelope.max_speed(lim)
+    prev = None
+    for x in (1e-2, 1e-4, 1e-6):
+        t, i_d, i_q = envelope.best_torque(lim, w * (1 - x))
+        assert t > 0 and i_d * i_d + i_q * i_q <= i * i * (1 + 1e-12)
+        assert envelope.volts(lim, w * (1 - x), i_d, i_q) <= v * (1 + 1e-12)
+        if prev is not None:
+            assert 50 < prev / t < 200   # ~100× less torque for 100× less speed left
+        prev = t
+    assert envelope.best_torque(lim, w)[0] == 0.0

@@ -124,7 +124,26 @@ def best_torque(m: Limits, w: float) -> tuple:
         best = _on_the_voltage_limit(m, w, samples)
         if best[0] > 0.0:
             return best
-    return best
+    return _near_the_maximum_speed(m, w)
+
+
+def _near_the_maximum_speed(m: Limits, w: float) -> tuple:
+    """Just below the maximum speed the feasible currents are a sliver of the current circle
+    next to (−I, 0), too thin for the samples: the best is where the circle leaves the voltage
+    limit, found by bisection on the circle's angle from π (where |v| < V still holds)."""
+    def on_circle(a):
+        return m.i * math.cos(a), m.i * math.sin(a)
+    if volts(m, w, *on_circle(math.pi)) >= m.v:
+        return 0.0, -m.i, 0.0
+    lo, hi = math.pi, 0.5 * math.pi   # lo feasible; hi (i_d = 0, i_q = I) beyond MTPA's voltage
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        if volts(m, w, *on_circle(mid)) < m.v:
+            lo = mid
+        else:
+            hi = mid
+    i_d, i_q = on_circle(lo)
+    return torque(m, i_d, i_q), i_d, i_q
 
 
 def _on_the_voltage_limit(m: Limits, w: float, samples: int) -> tuple:
