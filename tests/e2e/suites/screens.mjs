@@ -36,7 +36,14 @@ export default async function screens(ctx) {
           assert(await p.$eval(`section.answer [data-key="${k}"]`, (e) => JSON.parse(e.dataset.value)) === seed.expected[k.split('.')[0]][k.split('.')[1]][k.split('.')[2]], `${k} value`);
         }
         assert(await inView('section.answer .counts'), 'review summary not on the first screen');
-        assert(await inView('select[name="answer.profile"]'), 'profile picker not on the first screen');
+        // The strip is patched again when the live report replaces the build's numbers, and a
+        // select is replaced, not patched: give the layout up to 3 s to settle, then say where it was.
+        let seen = await inView('select[name="answer.profile"]');
+        for (let k = 0; !seen && k < 30; k++) {
+          await p.waitForTimeout(100);
+          seen = await inView('select[name="answer.profile"]');
+        }
+        assert(seen, `profile picker not on the first screen: ${JSON.stringify(await rect(p, 'select[name="answer.profile"]'))}, scrollY ${await p.evaluate(() => window.scrollY)}`);
         const tabs = await p.$$eval('nav.tabs a[data-view]', (as) => as.map((a) => a.getBoundingClientRect().right));
         assert(tabs.every((r) => r <= w), `a tab off screen: ${tabs.map(Math.round)} at ${w}`);
         const doc = await p.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.scrollHeight]);
