@@ -158,7 +158,7 @@ export class App {
 
   private ctx(): PanelContext {
     const s = this.session;
-    return { report: s.report, simReport: s.simReport, simError: s.simError, retrySim: s.simWorkerFailed ? () => s.retrySim() : undefined, input: s.input, client: s.ready ? s.client : null, embed: this.embed !== null };
+    return { report: s.report, simReport: s.simReport, simError: s.simError, retrySim: s.simWorkerFailed ? () => s.retrySim() : undefined, input: s.input, client: s.ready ? s.client : null, embed: this.embed !== null, fieldError: (p, e) => s.setPanelFieldError(p, e) };
   }
 
   renderPanels(only?: PanelId[]): void {

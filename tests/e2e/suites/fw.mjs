@@ -28,11 +28,18 @@ export default async function fw({ check, assert, newPage, subSrv, ready, waitVa
     const box = 'input[name="analysis.fw.current_limit_a"]';
     await page.$eval(box, (e) => e.closest('details')?.setAttribute('open', ''));
     await page.fill(box, '6');
+    // typing scrolled the form's box into view; the view asks pulab only while it is on screen
+    await page.$eval('#panel-fw', (e) => e.scrollIntoView());
     const want = cpython({ ...bly, analysis: { fw: { current_limit_a: 6 } } });
     assert(want.fw.max_speed_rpm === null, 'ψ/L_d = 4.99 A inside a 6 A limit: unbounded');
     await waitValue(page, 'fw.base_speed_rpm', want.fw.base_speed_rpm, 1e-12, 60_000);
     await page.waitForFunction(() => document.querySelector('[data-key="fw.max_speed_rpm"]')?.getAttribute('data-value') === 'null');
+    await page.fill(box, '-3');
+    await page.$eval('#panel-fw', (e) => e.scrollIntoView());
+    await page.waitForFunction(() => (document.querySelector('[data-err-for="analysis.fw.current_limit_a"]')?.textContent ?? '').length > 0, null, { timeout: 30_000 });
     await page.fill(box, '');
+    await page.$eval('#panel-fw', (e) => e.scrollIntoView());
+    await page.waitForFunction(() => (document.querySelector('[data-err-for="analysis.fw.current_limit_a"]')?.textContent ?? '') === '', null, { timeout: 30_000 });
   });
 
   await check('fw: screenshots at 390/900/1366 px, zh and en', async () => {

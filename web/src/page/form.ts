@@ -118,7 +118,7 @@ export class InputForm {
    * an error opens.
    */
   showErrors(): void {
-    const { localErrors, remoteError, simFieldError, stateNotes } = this.session;
+    const { localErrors, remoteError, simFieldError, panelFieldErrors, stateNotes } = this.session;
     const at = (e: ApiErr | null, f: string): boolean => !!e && (e.field === f || sourceField(e) === f || otherField(e) === f);
     for (const el of this.root.querySelectorAll<HTMLElement>('.inputs [data-err-for]')) {
       const f = el.dataset.errFor ?? '';
@@ -126,6 +126,7 @@ export class InputForm {
       // A conflict's sentence names both fields itself; a raw value's names the field it came from.
       if (!msg && remoteError && at(remoteError, f)) msg = `${remoteError.field === f || otherField(remoteError) ? '' : `${remoteError.field}: `}${errText(remoteError)}`;
       if (!msg && simFieldError?.field === f) msg = errText(simFieldError);
+      for (const e of panelFieldErrors.values()) if (!msg && e.field === f) msg = errText(e);
       // A value from the link that could not be used: a note, not an error (the default is used).
       const note = msg ? '' : stateNotes.get(f) ?? '';
       // Written only when it changes: a text node replaced on every keystroke re-laid out each field.

@@ -63,6 +63,8 @@ export class ComputeSession {
   simWorkerFailed = false;
   /** The field a failed simulation named (shown at that field until the next simulation). */
   simFieldError: ApiErr | null = null;
+  /** An input error found by a panel's own request (field weakening's section), by panel. */
+  panelFieldErrors = new Map<string, ApiErr>();
   /** Errors found in the page before Python sees the input (not a number, …), by field path. */
   localErrors = new Map<string, string>();
   /** The error Python returned for the input in the form. */
@@ -165,6 +167,15 @@ export class ComputeSession {
     else this.localErrors.set(path, message);
     // A field that does not parse leaves the numbers of an earlier input on screen: stale.
     this.updateSource();
+    this.events.errors();
+  }
+
+  /** A panel's own request failed on an input (or passed again): shown at that field. */
+  setPanelFieldError(panel: string, err: ApiErr | null): void {
+    const was = this.panelFieldErrors.get(panel) ?? null;
+    if (was === err || (was && err && was.field === err.field && was.code === err.code && was.message === err.message)) return;
+    if (err) this.panelFieldErrors.set(panel, err);
+    else this.panelFieldErrors.delete(panel);
     this.events.errors();
   }
 

@@ -50,8 +50,12 @@ class FwView {
       if (result.ok) {
         this.fw = result.report.fw ?? null;
         this.error = null;
+        ctx.fieldError?.('fw', null);
       } else {
+        // the numbers of an earlier input are not left beside the message
+        this.fw = null;
         this.error = `${result.field}: ${errText(result)}`;
+        ctx.fieldError?.('fw', result);
       }
       fwPanel.render(el, ctx);
     }, () => undefined);

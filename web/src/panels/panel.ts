@@ -2,6 +2,7 @@
 import type { Report } from '../report-types';
 import type { Input } from '../state';
 import type { PulabClient } from '../rpc';
+import type { ApiErr } from '../protocol';
 
 /** A panel's id: its `?embed=` value, `#panel-<id>` anchor and `nav_<id>` i18n key (registry.ts lists them). */
 export type PanelId = string;
@@ -16,6 +17,8 @@ export interface PanelContext {
   retrySim?: () => void;
   input: Input;
   client: PulabClient | null;
+  /** A panel's own request failed on an input (`err`) or passed (null): the form shows it at the field. */
+  fieldError?: (panel: PanelId, err: ApiErr | null) => void;
   embed: boolean;
 }
 
