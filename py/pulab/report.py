@@ -147,12 +147,15 @@ def report_steps(inp: dict):
                                                           c["inductance_unit"]))}
     pi = current_pi_section(n, b)
     pi["step_example"] = _pi_example(pi["d"], vendor) if _LIMITS <= vendor.keys() else None
+    # the board before the profiles: each vendor takes its hardware scales from it
+    board_out = board(n["board"], b["I_b"], flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
+                      m["pole_pairs"], d["udc_v"]) if "board" in n else None
     prof = None
     shipped = c["firmware"]
     # The five profiles only when asked (they cost more than the rest); the one shipped always,
     # so that one report holds its integers and the review grades what it cannot hold.
     if "profiles" in n or shipped != "inovance":
-        ctx = _profiles.context(n, raw, vendor, pi, firmware["inovance"]["problems"])
+        ctx = _profiles.context(n, raw, vendor, pi, firmware["inovance"]["problems"], board_out)
         opts = _profiles.options(n.get("profiles"), ctx)
         if "profiles" in n:
             n["profiles"] = opts
@@ -172,10 +175,8 @@ def report_steps(inp: dict):
     }
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
-    if "board" in n:
-        out["board"] = board(n["board"], b["I_b"],
-                             flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
-                             m["pole_pairs"], d["udc_v"])
+    if board_out is not None:
+        out["board"] = board_out
     if prof is not None:
         out["profiles"] = prof
     if n["analysis"] is not None:
@@ -291,8 +292,8 @@ def format_text(r: dict) -> str:
                                                f"{x['message']}" for x in findings]
     for name, prof in r.get("profiles", {}).items():
         lines += _table(f"Profile {name}", [
-            (k, f"{c['value']:>11d}  {c['format']:<16} err {c['error_pct']:+.4f} %  = "
-                f"{c['si']:.6g} {c['unit']}  {' '.join(c['flags'])}")
+            (k, f"{c['value']:>11{'.10g' if c.get('real') else 'd'}}  {c['format']:<16} "
+                f"err {c['error_pct']:+.4f} %  = {c['si']:.6g} {c['unit']}  {' '.join(c['flags'])}")
             for k, c in prof["constants"].items()])
     if "loop" in r:
         lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))

@@ -141,4 +141,7 @@ def expected(inp: dict) -> dict:
         "board-counts": 4096 * 0.007 * 10 / 3.3,
         "board-pu": 3.3 / (0.007 * 10) / 4096 / B["I_b"],
         "board-gain": 0.8 * 3.3 / (2 * 0.007 * math.sqrt(2) * P["rated_current_a"]),
+        # TI's IQ24 Kp with I_FS the largest reading ±V_ref/(2·R·G) and V_FS = U_dc, truncated
+        "board-ti-kp": math.trunc(r["current_pi"]["q"]["kp"] * (3.3 / (2 * 0.007 * 10))
+                                  / P["udc_v"] * 2 ** 24),
     }

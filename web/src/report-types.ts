@@ -110,12 +110,14 @@ export interface Report {
 export interface ProfileReport {
   inputs: Record<string, unknown>;
   constants: Record<string, ProfileConstant>;
+  /** The constants its header holds for the board (names in `constants`). */
+  board?: string[];
   bases: Record<string, string | number | null | Record<string, string>>;
   pi_example?: { error: number; shift: number; misra: number }[];
   checks?: [string, string][];
   files?: { rounding: string; worked_numbers: string[] };
 }
-export interface ProfileConstant { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string }
+export interface ProfileConstant { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string; /** A C floating constant (no Q format): value is the number the compiler stores. */ real?: boolean }
 
 /** Margins of one discrete loop (docs/contract.md, "Loop analysis"); null = does not exist. */
 export interface Margins {

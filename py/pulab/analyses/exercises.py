@@ -162,6 +162,13 @@ def _board_gain(c: _Ctx) -> float:
     return EXAMPLE_BOARD["current"]["gain"] * 0.8 * _board(c)["max_a"] / peak
 
 
+def _board_ti_kp(c: _Ctx) -> int:
+    """TI's Kp_Iq when its per-unit current full scale is the example board's largest reading."""
+    from ..report import report
+    r = report({**c.input, "board": EXAMPLE_BOARD, "profiles": {}})
+    return r["profiles"]["ti"]["constants"]["Kp_Iq"]["value"]
+
+
 def _fw(c: _Ctx) -> dict:
     """The trainee motor's field-weakening section at the defaults (current limit √2·I_n, SVPWM),
     computed once per context (three exercises read it)."""
@@ -223,6 +230,7 @@ EXERCISES: tuple[Exercise, ...] = (
              "counts/A"),
     Exercise("board-pu", "09-vendors", "real", lambda c: _board(c)["pu_per_count"], 0.01),
     Exercise("board-gain", "09-vendors", "real", _board_gain, 0.01, "V/V"),
+    Exercise("board-ti-kp", "09-vendors", "int", _board_ti_kp),
 )
 _BY_ID = {e.id: e for e in EXERCISES}
 

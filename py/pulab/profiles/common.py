@@ -25,12 +25,13 @@ Examples
 from __future__ import annotations
 
 import math
+import struct
 from fractions import Fraction
 
 from ..fixedpoint.interval import RInterval, choose
 from ..fixedpoint.qformat import QEncoded, QFormat, encode
 
-__all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "pow2_exponent",
+__all__ = ["fixed", "real", "board_value", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "pow2_exponent",
            "within", "SOURCES", "derived"]
 
 SQRT2 = math.sqrt(2.0)
@@ -208,7 +209,47 @@ SOURCES = {
     "mchp_foc": "microchip-pic-avr-solutions/motorbench-release-collateral : "
                 "zsmt-reference-actblf02-lvmc.X/mcc_generated_files/motorBench/parameters/"
                 "foc_params.h",
+    "mchp_hal": "microchip-pic-avr-solutions/motorbench-release-collateral : "
+                "zsmt-reference-actblf02-lvmc.X/mcc_generated_files/motorBench/parameters/"
+                "hal_params.h",
+    "mchp_adc": "microchip-pic-avr-solutions/motorbench-release-collateral : "
+                "zsmt-reference-actblf02-lvmc.X/mcc_generated_files/motorBench/parameters/"
+                "adc_params.h",
+    "ti_umcl": "anyway-blows/ti-c2000-motor-control-sdk : solutions/universal_motorcontrol_lab/"
+               "common/include/user_mtr1.h",
+    "ti_user_h": "scottmcdaid/instaspin-labs : sw/solutions/instaspin_foc/boards/"
+                 "boostxldrv8301_revB/f28x/f2806xF/src/user_j1.h",
+    "st_power": "dronectl/g431-mcsdk : Inc/power_stage_parameters.h",
 }
+
+
+def real(name: str, ideal: float, unit: str, expression: str, source: str, *,
+         single: bool = False) -> dict:
+    """One real number a vendor's header keeps as a C floating constant (no Q format).
+
+    The record has the keys of :func:`fixed` (``q`` 0, ``shift`` 0, ``scale`` 1) and
+    ``real`` True; ``value`` is the number the compiler stores: ``ideal`` itself for a
+    ``double``, or rounded to the nearest float for a ``float`` literal (``single``),
+    ``error_pct`` being that rounding.
+
+    >>> c = real("USER_M1_ADC_FULL_SCALE_CURRENT_A", 3.3 / 0.07, "A", "V_ref/(R·G)", "TI",
+    ...          single=True)
+    >>> c["value"], c["format"], f"{c['error_pct']:.1e}"
+    (47.14285659790039, 'float32', '-1.2e-06')
+    """
+    value = struct.unpack("<f", struct.pack("<f", ideal))[0] if single else float(ideal)
+    return {"name": name, "value": value, "ideal": float(ideal),
+            "error_pct": 0.0 if ideal == 0 else 100.0 * (value - ideal) / ideal,
+            "format": "float32" if single else "double", "q": 0, "word_bits": 32 if single else 64,
+            "shift": 0, "si": value, "si_ideal": float(ideal), "unit": unit, "scale": 1.0,
+            "expression": expression, "source": source, "flags": [], "real": True}
+
+
+def board_value(ctx: dict, chain: str, key: str, default):
+    """``ctx["board"][chain][key]`` when the board gives that chain, else ``default``: a vendor
+    option that the board decides unless typed (:mod:`pulab.model.board`)."""
+    b = (ctx.get("board") or {}).get(chain)
+    return default if b is None or b.get(key) is None else b[key]
 
 
 def derived(why: str) -> str:

@@ -19,7 +19,8 @@ from .common import SQRT2
 __all__ = ["context", "context_of"]
 
 
-def context(n: dict, raw: dict, vendor: dict, pi: dict, problems: list = ()) -> dict:
+def context(n: dict, raw: dict, vendor: dict, pi: dict, problems: list = (),
+            board: dict | None = None) -> dict:
     """Everything a profile needs from the normalized input and the report, in SI.
 
     Parameters
@@ -33,6 +34,10 @@ def context(n: dict, raw: dict, vendor: dict, pi: dict, problems: list = ()) -> 
         gains every profile stores (a V/A ratio is the same in peak and RMS).
     problems : list
         What the Inovance firmware cannot hold (``firmware.inovance.problems``).
+    board : dict, optional
+        The report's ``board`` (:func:`pulab.model.board.board`): each vendor reads its
+        hardware scales from it by its own convention; ``board_input`` is the normalized
+        ``board`` input (ADC reference, bits) beside it.
     """
     m, d = n["motor"], n["drive"]
     return {"rs": m["rs_ohm"], "ld": m["ld_h"], "lq": m["lq_h"], "pp": m["pole_pairs"],
@@ -44,11 +49,11 @@ def context(n: dict, raw: dict, vendor: dict, pi: dict, problems: list = ()) -> 
             "u_limit": d["udc_v"] / SQRT2,
             "gains": {a: (pi[a]["kp"], pi[a]["ki"]) for a in ("d", "q")},
             "vendor": vendor, "raw": raw, "inductance_unit": n["conventions"]["inductance_unit"],
-            "firmware_problems": list(problems)}
+            "firmware_problems": list(problems), "board": board, "board_input": n.get("board")}
 
 
 def context_of(r: dict) -> dict:
     """:func:`context` rebuilt from a finished report (which carries every piece of it)."""
     return context(r["input"], r["vendor"]["raw"],
                    {k: v for k, v in r["vendor"].items() if k != "raw"}, r["current_pi"],
-                   r["firmware"]["inovance"]["problems"])
+                   r["firmware"]["inovance"]["problems"], r.get("board"))

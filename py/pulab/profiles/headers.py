@@ -13,11 +13,15 @@ Examples
 
 from __future__ import annotations
 
+import struct
+
 __all__ = ["define", "define_float", "guard", "comment"]
 
 
 def comment(c: dict) -> str:
     """``FORMAT = float (ideal x, error %) = SI unit; flags`` for one constant."""
+    if c.get("real"):
+        return f"{c['format']}: {c['expression']} = {c['ideal']:.10g} {c['unit']}"
     scale = 2.0 ** (c["shift"] - c["q"])
     flags = f"; {', '.join(c['flags'])}" if c["flags"] else ""
     return (f"{c['format']} = {c['value'] * scale:.6g} (ideal {c['ideal'] * scale:.6g}, "
@@ -26,8 +30,22 @@ def comment(c: dict) -> str:
 
 def define(name: str, c: dict, ctype: str = "") -> str:
     """``#define NAME value  /* comment */``; a cast ``ctype`` keeps the C type explicit."""
-    v = f"(({ctype}){c['value']})" if ctype else str(c["value"])
+    if c.get("real"):
+        v = f"({_shortest(c['value'], c['format'] == 'float32')})"
+    else:
+        v = f"(({ctype}){c['value']})" if ctype else str(c["value"])
     return f"#define {name:<30} {v:>7}  /* {comment(c)} */"
+
+
+def _shortest(x: float, single: bool) -> str:
+    """The shortest C literal the compiler reads back as ``x`` (with ``f`` for a float)."""
+    if not single:
+        return repr(x)
+    for digits in range(6, 10):
+        s = f"{x:.{digits}g}"
+        if struct.unpack("<f", struct.pack("<f", float(s)))[0] == x:
+            break
+    return (s if any(ch in s for ch in ".e") else s + ".0") + "f"
 
 
 def define_float(name: str, value: float, what: str) -> str:

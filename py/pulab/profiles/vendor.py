@@ -147,7 +147,10 @@ OPTIONAL = {
     "warnings": "warnings(p) -> list: its own warnings about its profile ``p`` in the report, "
                 "as (catalog code, params) pairs",
     "decode_header": "decode_header(text) -> dict: its header read back into integers",
-    "board": "board(opt) -> dict: its board's sensing and PWM conventions",
+    "board_constants": "board_constants(ctx, opt) -> dict: the macros its header holds for "
+                       "the board (``ctx['board']``, by its own names); its ``profile`` merges "
+                       "them into the constants and lists their names in ``profile['board']``. "
+                       "Its options read their defaults from the board (``common.board_value``)",
     "observer": "observer(ctx, opt) -> dict: its observer's constants",
 }
 

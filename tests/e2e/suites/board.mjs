@@ -22,6 +22,23 @@ export default async function board({ check, assert, newPage, subSrv, ready, wai
     assert((await valueOf(page, 'board.pwm.period_register')) === 5000, 'TBPRD');
   });
 
+  await check('board: the chosen firmware\'s header constants for the board equal CPython pulab', async () => {
+    const st = { ...inp, conventions: { firmware: 'st' }, board: { ...TI, pwm: { clock_hz: 170e6, freq_hz: 20000, deadtime_s: 2e-6 } } };
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(st))}`);
+    await ready(page);
+    await page.click('nav.tabs a[data-view="firmware"]');
+    const want = cpython(st).profiles.st;
+    assert(want.board.includes('DEAD_TIME_COUNTS') && want.constants.DEAD_TIME_COUNTS.value === 298, 'ST DTG code');
+    for (const k of want.board) {
+      const sel = `#panel-board [data-mirror-of="profiles.st.constants.${k}.value"]`;
+      await page.waitForSelector(sel, { timeout: 30_000 });
+      const got = Number(await page.$eval(sel, (e) => e.getAttribute('data-value')));
+      assert(got === want.constants[k].value, `${k}: page ${got}, CPython ${want.constants[k].value}`);
+    }
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(inp))}`);
+    await ready(page);
+  });
+
   await check('board: the form recomputes the chain; a shunt typed in mΩ is exact', async () => {
     await page.click('nav.tabs a[data-view="firmware"]');
     const box = 'input[name="board.current.shunt_ohm"]';

@@ -249,7 +249,7 @@ function constantsBlock(ctx: PanelContext, v: Vendor, el: HTMLElement): HTMLElem
     const bad = c.flags.some((f) => f === 'out_of_range' || f === 'saturate');
     return h('tr', { class: bad ? 'bad' : '' },
       h('td', {}, h('code', {}, k)),
-      h('td', { class: 'r' }, num(`${p}.value`, c.value, { kind: 'int' })),
+      h('td', { class: 'r' }, num(`${p}.value`, c.value, c.real ? { sig: 10 } : { kind: 'int' })),
       h('td', {}, c.format),
       h('td', { class: 'r' }, num(`${p}.ideal`, c.ideal, { sig: 8 })),
       h('td', { class: 'r' }, num(`${p}.error_pct`, c.error_pct, { kind: 'pct' })),

@@ -24,18 +24,19 @@ from __future__ import annotations
 
 import math
 
-from ..common import SOURCES, TWO_PI, fixed, pow2_exponent
+from ..common import SOURCES, TWO_PI, board_value, fixed, pow2_exponent
 from ..vendor import Option
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_q", "gain_fields",
-           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants"]
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants", "board_constants"]
 
 OPTIONS = (
-    Option("voltage_base_v", lambda c: c["udc"],
-           "V_b, the DC-link voltage full scale; default U_dc",
+    Option("voltage_base_v", lambda c: board_value(c, "bus", "max_v", c["udc"]),
+           "V_b, the DC-link voltage full scale; default the board's bus full scale, else U_dc",
            ("voltage base", "电压基值")),
-    Option("current_base_a", lambda c: c["i_fs"],
-           "I_b, the current full scale; default 2·√2·I_rated",
+    Option("current_base_a", lambda c: board_value(c, "current", "max_a", c["i_fs"]),
+           "I_b, the current full scale; default the board's ± measurable current, else "
+           "2·√2·I_rated",
            ("current base", "电流基值")),
     Option("velocity_base_hz", lambda c: c["f_base"],
            "ω_b/2π, electrical velocity base; default f_b",
@@ -120,7 +121,32 @@ def ints_to_gains(kp_int: int, ki_int: int, ctx: dict, opt: dict, axis: str) -> 
 
 def profile(ctx: dict, opt: dict) -> dict:
     """MCAF constants: motor parameters in both inductance bases, ψ, Ke, KIP/KII (q axis)."""
-    return {"inputs": opt, "constants": constants(ctx, opt)}
+    board = board_constants(ctx, opt)
+    return {"inputs": opt, "constants": {**constants(ctx, opt), **board}, "board": list(board)}
+
+
+def board_constants(ctx: dict, opt: dict | None = None) -> dict:
+    """hal_params.h's timer counts from the board's PWM: ``HAL_PARAM_PWM_PERIOD_COUNTS`` is
+    half the PWM period in timer clocks (center-aligned: the file notes it is one half-period;
+    5000 at 200 MHz and 20 kHz on the LVMC), ``HAL_PARAM_DEADTIME_COUNTS`` the dead time
+    (200 for 1 µs at 200 MHz), Q0 rounded to nearest.
+
+    The current and voltage bases need no constant of their own: MCAF reads the ADC with a
+    nominal gain of 1.0 (adc_params.h: ``CURRENT_KAA`` = 1.0 in Q14, ``MCAF_VDC_SCALING_FACTOR``
+    = 1.0), so the ADC's full scale is the base, which the options take from the board.
+    """
+    b, p = ctx.get("board") or {}, (ctx.get("board_input") or {}).get("pwm") or {}
+    if not b.get("pwm") or p.get("clock_hz") is None:
+        return {}
+    clk, src = p["clock_hz"], SOURCES["mchp_hal"]
+    out = {"HAL_PARAM_PWM_PERIOD_COUNTS": fixed(
+        "HAL_PARAM_PWM_PERIOD_COUNTS", clk / (2.0 * p["freq_hz"]), 16, 0, 1.0 / clk, "s",
+        "f_clk/(2·f_pwm): one half-period, center-aligned", src, signed=False, fmt="Q0")}
+    if p.get("deadtime_s") is not None:
+        out["HAL_PARAM_DEADTIME_COUNTS"] = fixed(
+            "HAL_PARAM_DEADTIME_COUNTS", p["deadtime_s"] * clk, 16, 0, 1.0 / clk, "s",
+            "t_dead·f_clk", src, signed=False, fmt="Q0")
+    return out
 
 
 def constants(ctx: dict, opt: dict) -> dict:

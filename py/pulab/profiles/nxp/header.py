@@ -18,6 +18,8 @@ def header(p: dict, ctx: dict, r: dict) -> str:
             define_float("M1_W_MAX", o["w_max_rad_s"], "rad/s electrical"),
             "", "/* Current loop (parallel PI) and back-EMF observer, ACC32 = Q16.15 */"]
     for k, r in c.items():
+        if r.get("real"):
+            continue    # M1_I_MAX, M1_U_DCB_MAX: the scales above
         if k == "M1_TO_THETA_GAIN":
             body.append(define(k, r, "int16_t"))
             body.append(f"#define {'M1_TO_THETA_SHIFT':<30} {r['shift']:>7}")

@@ -31,17 +31,19 @@ from __future__ import annotations
 
 import math
 
-from ..common import SOURCES, SQRT3, TWO_PI, fixed, mantissa_shift
+from ..common import SOURCES, SQRT3, TWO_PI, board_value, fixed, mantissa_shift, real
 from ..vendor import Option
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "u_max", "gain_fields",
-           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants"]
+           "gain_range", "gains_to_ints", "ints_to_gains", "profile", "constants", "board_constants"]
 
 OPTIONS = (
-    Option("udcb_max_v", lambda c: c["udc"], "U_DCB_MAX, DC-bus full scale; default U_dc",
+    Option("udcb_max_v", lambda c: board_value(c, "bus", "max_v", c["udc"]),
+           "U_DCB_MAX, DC-bus full scale; default the board's bus full scale, else U_dc",
            ("U_DCB max", "母线电压满量程 U_DCB")),
-    Option("i_max_a", lambda c: c["i_fs"],
-           "I_MAX, phase-current full scale; default 2·√2·I_rated",
+    Option("i_max_a", lambda c: board_value(c, "current", "max_a", c["i_fs"]),
+           "I_MAX, phase-current full scale; default the board's ± measurable current, else "
+           "2·√2·I_rated",
            ("I max", "电流满量程 I max")),
     Option("u_max_coeff", lambda c: SQRT3, "UmaxCoeff: U_max = U_DCB_MAX/UmaxCoeff; default √3",
            ("UmaxCoeff", "UmaxCoeff")),
@@ -127,9 +129,26 @@ def profile(ctx: dict, opt: dict) -> dict:
     """NXP constants: current-loop gains and the back-EMF observer scales."""
     um, im = _scales(opt)
     em = opt["e_max_v"] if opt["e_max_v"] is not None else um
+    board = board_constants(ctx, opt)
     return {"inputs": {**opt, "u_max_v": um, "e_max_v": em,
                        "w_max_rad_s": TWO_PI * ctx["f_base"]},
-            "constants": constants(ctx, opt)}
+            "constants": {**constants(ctx, opt), **board}, "board": list(board)}
+
+
+def board_constants(ctx: dict, opt: dict) -> dict:
+    """``M1_I_MAX`` and ``M1_U_DCB_MAX`` as the appconfig writes them (float literals, ``F``),
+    when the board's current or bus chain sets them: I_MAX is the ± measurable current (the
+    FRAC16 full scale of a phase current), U_DCB_MAX the bus ADC full scale."""
+    b, out = ctx.get("board") or {}, {}
+    if b.get("current"):
+        out["M1_I_MAX"] = real("M1_I_MAX", opt["i_max_a"], "A",
+                               "V_ref/(2·R_shunt·G): the ± measurable current", SOURCES["nxp_appconfig"],
+                               single=True)
+    if b.get("bus"):
+        out["M1_U_DCB_MAX"] = real("M1_U_DCB_MAX", opt["udcb_max_v"], "V",
+                                   "V_ref·(R_top + R_bottom)/R_bottom", SOURCES["nxp_appconfig"],
+                                   single=True)
+    return out
 
 
 def constants(ctx: dict, opt: dict) -> dict:

@@ -40,7 +40,8 @@ def header(p: dict, ctx: dict, r: dict) -> str:
              define_float("ADC_REFERENCE_VOLTAGE", o["adc_reference_v"], "V"),
              "#endif",
              "", "/* parameters_conversion.h computes from the lines above: */"]
-    for k in ("CURRENT_CONV_FACTOR", "MAX_VOLTAGE", "MAX_BEMF_VOLTAGE", "C1", "C3", "C5"):
+    board = tuple(k for k in ("MAX_CURRENT", "PWM_PERIOD_CYCLES", "DEAD_TIME_COUNTS") if k in c)
+    for k in ("CURRENT_CONV_FACTOR", "MAX_VOLTAGE", "MAX_BEMF_VOLTAGE", "C1", "C3", "C5") + board:
         flags = "; " + ", ".join(c[k]["flags"]) if c[k]["flags"] else ""
         body.append(f"/*   {k} = {c[k]['value']}  ({c[k]['expression']} = "
                     f"{c[k]['ideal']:.6g}{flags}) */")

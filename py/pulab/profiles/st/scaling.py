@@ -34,24 +34,53 @@ import math
 
 from ...fixedpoint.cint import trunc_div
 from ...fixedpoint.interval import RInterval
-from ..common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent
+from ..common import SOURCES, SQRT2, SQRT3, derived, fixed, pow2_divisor, pow2_exponent, real
 from ..vendor import Option
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "max_current",
            "gain_fields", "gain_range", "gains_to_ints", "ints_to_gains", "pi_first_output",
-           "profile", "constants"]
+           "profile", "constants", "board_constants"]
 
 _GAIN = 8.0
+
+
+def _sensing(c: dict) -> tuple | None:
+    """(V_ref, R_shunt, G) of the board's current chain, or None without one. A sensor in
+    V/A, or a largest current typed, is R_shunt·G with G = 1: ST's formulas hold only the
+    product."""
+    b, bi = c.get("board") or {}, (c.get("board_input") or {}).get("current")
+    if not b.get("current"):
+        return None
+    vref = bi["adc_ref_v"]
+    if bi["shunt_ohm"] is not None:
+        return vref, bi["shunt_ohm"], bi["gain"] if bi["gain"] is not None else 1.0
+    return vref, vref / b["current"]["full_range_a"], 1.0
+
+
+def _vbus_ratio(c: dict) -> float | None:
+    """V at the ADC pin per V on the bus: the board's divider, or its ADC reference over a
+    typed bus full scale; None without bus sensing."""
+    b, bi = (c.get("board") or {}).get("bus"), (c.get("board_input") or {}).get("bus")
+    if not b:
+        return None
+    return b["ratio"] if b["ratio"] is not None else bi["adc_ref_v"] / b["max_v"]
+
+
 OPTIONS = (
-    Option("adc_reference_v", lambda c: 3.3, "ADC_REFERENCE_VOLTAGE; default 3.3 V",
+    Option("adc_reference_v", lambda c: (_sensing(c) or (3.3,))[0],
+           "ADC_REFERENCE_VOLTAGE; default the board's, else 3.3 V",
            ("ADC reference", "ADC 参考电压")),
-    Option("amplification_gain", lambda c: _GAIN, "AMPLIFICATION_GAIN; default 8",
+    Option("amplification_gain", lambda c: (_sensing(c) or (0, 0, _GAIN))[2],
+           "AMPLIFICATION_GAIN; default the board's, else 8",
            ("amplifier gain", "放大倍数")),
-    Option("rshunt_ohm", lambda c: 3.3 / (2.0 * _GAIN * c["i_fs"]),
-           "RSHUNT; default so that MAX_CURRENT = 2·√2·I_rated with the defaults above",
+    Option("rshunt_ohm", lambda c: (_sensing(c) or (0, 3.3 / (2.0 * _GAIN * c["i_fs"])))[1],
+           "RSHUNT; default the board's, else so that MAX_CURRENT = 2·√2·I_rated with the "
+           "defaults above",
            ("shunt", "采样电阻")),
-    Option("vbus_partitioning_factor", lambda c: 3.3 / (2.0 * c["udc"]),
-           "VBUS_PARTITIONING_FACTOR; default puts U_dc at half the ADC range",
+    Option("vbus_partitioning_factor",
+           lambda c: _vbus_ratio(c) or 3.3 / (2.0 * c["udc"]),
+           "VBUS_PARTITIONING_FACTOR; default the board's divider, else puts U_dc at half "
+           "the ADC range",
            ("bus voltage divider", "母线分压系数")),
     Option("tf_kpdiv", lambda c: None,
            "TF_KPDIV (power of two); default the largest ≤ 16384 fitting int16",
@@ -208,7 +237,65 @@ def profile(ctx: dict, opt: dict) -> dict:
                 "shift": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, False),
                 "misra": pi_first_output(kp_i, kpdiv, ki_i, kidiv, err, True)}
                for err in (e, -e)]
-    return {"inputs": o, "constants": out, "pi_example": example}
+    board = board_constants(ctx, o)
+    out.update(board)
+    return {"inputs": o, "constants": out, "board": list(board), "pi_example": example}
+
+
+def dead_time_counts(clock_hz: float, deadtime_s: float) -> int:
+    """DEAD_TIME_COUNTS as parameters_conversion.h encodes it into the timer's DTG field.
+
+    ``DEAD_TIME_COUNTS_1`` = f_clk[MHz]·t_dead[ns]/1000 in integer arithmetic; up to 255 it
+    is the count itself, beyond that the coarser DTG ranges (÷2 + 128, ÷8 + 320, ÷16 + 384),
+    and 510 beyond 2015 counts.
+
+    >>> dead_time_counts(170e6, 800e-9), dead_time_counts(170e6, 2e-6), dead_time_counts(170e6, 20e-6)
+    (136, 298, 510)
+    """
+    prod = math.floor(round(clock_hz / 1e6, 9) * round(deadtime_s * 1e9, 6))   # MHz · ns
+    dt1 = prod // 1000
+    for limit, div, off in ((255, 1, 0), (508, 2, 128), (1008, 8, 320), (2015, 16, 384)):
+        if dt1 <= limit:
+            return prod // div // 1000 + off
+    return 510
+
+
+def board_constants(ctx: dict, opt: dict) -> dict:
+    """parameters_conversion.h's board macros, from the board's chains (and the options it set).
+
+    ``MAX_CURRENT`` (MCSDK 6: ``M1_MAX_READABLE_CURRENT``) = V_ref/(2·R_shunt·G), a double;
+    ``VBUS_PARTITIONING_FACTOR`` the divider; ``PWM_PERIOD_CYCLES`` = (uint16_t)(f_clk/f_pwm
+    & 0xFFFE) timer ticks (the timer counts up and down over half of them);
+    ``DEAD_TIME_COUNTS`` by :func:`dead_time_counts`.
+    """
+    b, bi, out = ctx.get("board") or {}, ctx.get("board_input") or {}, {}
+    if b.get("current"):
+        for name in ("MAX_CURRENT", "M1_MAX_READABLE_CURRENT"):
+            out[name] = real(name, max_current(opt), "A", "ADC_REFERENCE_VOLTAGE/(2·RSHUNT·"
+                             "AMPLIFICATION_GAIN)", SOURCES["st_conv"])
+    if b.get("bus"):
+        out["VBUS_PARTITIONING_FACTOR"] = real(
+            "VBUS_PARTITIONING_FACTOR", opt["vbus_partitioning_factor"], "V/V",
+            "R_bottom/(R_top + R_bottom)", SOURCES["st_power"])
+    p = bi.get("pwm") or {}
+    if b.get("pwm") and p.get("clock_hz") is not None:
+        clk, f = p["clock_hz"], p["freq_hz"]
+        ticks = clk / f
+        stored = (math.floor(ticks) & 0xFFFE) & 0xFFFF
+        out["PWM_PERIOD_CYCLES"] = fixed(
+            "PWM_PERIOD_CYCLES", ticks, 16, 0, 1.0 / clk, "s",
+            "(uint16_t)((ADV_TIM_CLK_MHz·10⁶/PWM_FREQUENCY) & 0xFFFE)", SOURCES["st_conv"],
+            rounding="zero", signed=False, fmt="uint16_t", value=stored)
+        if p.get("deadtime_s") is not None:
+            td = p["deadtime_s"]
+            code = dead_time_counts(clk, td)
+            plain = code <= 255
+            out["DEAD_TIME_COUNTS"] = fixed(
+                "DEAD_TIME_COUNTS", td * clk if plain else code, 16, 0,
+                1.0 / clk if plain else 1.0, "s" if plain else "DTG code",
+                "ADV_TIM_CLK_MHz·DEADTIME_NS/1000, DTG-encoded beyond 255", SOURCES["st_conv"],
+                rounding="zero", signed=False, fmt="uint16_t", value=code)
+    return out
 
 
 def _ke(ctx: dict):

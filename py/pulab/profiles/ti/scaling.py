@@ -26,19 +26,20 @@ Examples
 
 from __future__ import annotations
 
-from ..common import SOURCES, SQRT2, derived, fixed
+from ..common import SOURCES, SQRT2, board_value, derived, fixed, real
 from ..vendor import Option
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
            "gain_range", "gains_to_ints", "ints_to_gains", "check_for_errors", "warnings", "profile",
-           "constants"]
+           "constants", "board_constants"]
 
 #: Its hardware inputs (:class:`pulab.profiles.vendor.Option`).
 OPTIONS = (
     Option("full_scale_voltage_v", lambda c: c["udc"], "USER_IQ_FULL_SCALE_VOLTAGE_V; default U_dc",
            ("full-scale voltage", "满量程电压")),
-    Option("full_scale_current_a", lambda c: c["i_fs"],
-           "USER_IQ_FULL_SCALE_CURRENT_A; default 2·√2·I_rated",
+    Option("full_scale_current_a", lambda c: board_value(c, "current", "max_a", c["i_fs"]),
+           "USER_IQ_FULL_SCALE_CURRENT_A; default the board's largest reading (half of "
+           "USER_ADC_FULL_SCALE_CURRENT_A: TI requires it above every reading), else 2·√2·I_rated",
            ("full-scale current", "满量程电流")),
     Option("full_scale_freq_hz", lambda c: c["f_base"], "USER_IQ_FULL_SCALE_FREQ_Hz; default f_b",
            ("full-scale frequency", "满量程频率")),
@@ -145,7 +146,49 @@ def warnings(p: dict) -> list:
 
 def profile(ctx: dict, opt: dict) -> dict:
     """TI constants for this motor: the user's current PI, MotorWare's defaults, Rs_pu."""
-    return {"inputs": opt, "constants": constants(ctx, opt), "checks": check_for_errors(ctx, opt)}
+    board = board_constants(ctx, opt)
+    return {"inputs": opt, "constants": {**constants(ctx, opt), **board}, "board": list(board),
+            "checks": check_for_errors(ctx, opt)}
+
+
+def board_constants(ctx: dict, opt: dict | None = None) -> dict:
+    """The universal lab's board macros (user_mtr1.h), from the board's chains.
+
+    ``USER_M1_ADC_FULL_SCALE_CURRENT_A`` is V_ref/(R·G), the whole ADC range (TI prints
+    47.14285714 for 7 mΩ × 10), ``USER_M1_CURRENT_SF`` that over 2^bits (A per count);
+    the same for the bus; ``USER_M1_PWM_TBPRD_NUM`` = (uint16_t)(f_clk/f_pwm/2), an
+    up-down count.
+
+    >>> b = {"current": {"full_range_a": 3.3 / 0.07}, "bus": None, "pwm": None}
+    >>> c = board_constants({"board": b, "board_input": {"current": {"adc_bits": 12}}})
+    >>> c["USER_M1_ADC_FULL_SCALE_CURRENT_A"]["value"], c["USER_M1_CURRENT_SF"]["format"]
+    (47.14285659790039, 'float32')
+    """
+    b, bi, out = ctx.get("board") or {}, ctx.get("board_input") or {}, {}
+    if b.get("current"):
+        full, bits = b["current"]["full_range_a"], bi["current"]["adc_bits"]
+        out["USER_M1_ADC_FULL_SCALE_CURRENT_A"] = real(
+            "USER_M1_ADC_FULL_SCALE_CURRENT_A", full, "A", "V_ref/(R_shunt·G): the whole ADC range",
+            SOURCES["ti_umcl"], single=True)
+        out["USER_M1_CURRENT_SF"] = real("USER_M1_CURRENT_SF", full / 2.0 ** bits, "A/count",
+                                         f"USER_M1_ADC_FULL_SCALE_CURRENT_A/{2 ** bits}",
+                                         SOURCES["ti_umcl"], single=True)
+    if b.get("bus"):
+        full, bits = b["bus"]["max_v"], bi["bus"]["adc_bits"]
+        out["USER_M1_ADC_FULL_SCALE_VOLTAGE_V"] = real(
+            "USER_M1_ADC_FULL_SCALE_VOLTAGE_V", full, "V", "V_ref·(R_top + R_bottom)/R_bottom",
+            SOURCES["ti_umcl"], single=True)
+        out["USER_M1_VOLTAGE_SF"] = real("USER_M1_VOLTAGE_SF", full / 2.0 ** bits, "V/count",
+                                         f"USER_M1_ADC_FULL_SCALE_VOLTAGE_V/{2 ** bits}",
+                                         SOURCES["ti_umcl"], single=True)
+    p = bi.get("pwm") or {}
+    if b.get("pwm") and p.get("clock_hz") is not None:
+        clk = p["clock_hz"]
+        out["USER_M1_PWM_TBPRD_NUM"] = fixed(
+            "USER_M1_PWM_TBPRD_NUM", clk / p["freq_hz"] / 2.0, 16, 0, 1.0 / clk, "s (half period)",
+            "(uint16_t)(SYSTEM_FREQ_MHz·1000/PWM_FREQ_kHz/2): half the period, up-down",
+            SOURCES["ti_umcl"], rounding="zero", signed=False, fmt="uint16_t")
+    return out
 
 
 def constants(ctx: dict, opt: dict) -> dict:
