@@ -219,3 +219,21 @@ def test_board_vendor_golden(path):
     for vendor, want in case["expected"].items():
         assert sorted(prof[vendor].get("board", [])) == sorted(want), vendor
         assert {k: prof[vendor]["constants"][k]["value"] for k in want} == want, vendor
+
+
+@pytest.mark.parametrize("vendor", ["ti", "nxp", "st", "microchip"])
+def test_a_family_proof_uses_the_board_scales(vendor):
+    from pulab.api import call_json
+    inp = {**copy.deepcopy(SEED_INPUT), "board": {"current": {"shunt_ohm": 0.01, "gain": 10},
+                                                  "bus": {"max_v": 60.0},
+                                                  "pwm": {"clock_hz": 1e8, "freq_hz": 1e4}}}
+    out = json.loads(call_json("prove", json.dumps({
+        "input": inp, "ranges": {"motor.rated_current_a": [1.5, 1.5]}, "profile": vendor,
+        "budget": 3000})))
+    assert out["ok"], out
+    consts = pulab.report({**inp, "profiles": {}})["profiles"][vendor]["constants"]
+    ints = {k.rsplit(".", 1)[1]: e for k, e in out["proof"]["integers"].items()
+            if ".constants." in k}
+    assert ints and not [k for k in ints if consts[k].get("real")]
+    for k, e in ints.items():
+        assert e["range"] == [consts[k]["value"]] * 2, k

@@ -229,14 +229,20 @@ def make_problem(req) -> Problem:
         box["FullFreq01"] = box["FreqRated01"]
     problem = Problem(inp, checked, unit, box, sources, ties, budget)
     problem.profile, problem.options, problem.constants = profile, {}, {}
+    problem.board = None
     if profile == "inovance":
         problem.names = integer_names()
     else:
         from ..report import report  # checks the options and names the constants
-        r = report({**inp, "profiles": {profile: options}})["profiles"][profile]
+        full = report({**inp, "profiles": {profile: options}})
+        r = full["profiles"][profile]
         problem.options = {k: r["inputs"][k] for k in options}
-        problem.constants = r["constants"]
-        problem.names = tuple(f"profiles.{profile}.constants.{k}" for k in r["constants"]) + \
+        # The board cannot be ranged (its fields are nested), and the vendors read only its
+        # own scales from it (full ranges, the divider), which the motor does not change.
+        problem.board = full.get("board")
+        board = set(r.get("board", ()))
+        problem.constants = {k: c for k, c in r["constants"].items() if k not in board}
+        problem.names = tuple(f"profiles.{profile}.constants.{k}" for k in problem.constants) + \
             tuple(f"profiles.{profile}.{k}" for k in CHOICES.get(profile, {}))
     return problem
 
@@ -599,7 +605,7 @@ def _profile_constants(n: dict, problem: Problem) -> dict:
     options the input gives and the others at their defaults for this motor."""
     from ..profiles import MODULES, context
     from ..report import current_pi_section, input_bases
-    ctx = context(n, {}, {}, current_pi_section(n, input_bases(n)))
+    ctx = context(n, {}, {}, current_pi_section(n, input_bases(n)), (), problem.board)
     mod = MODULES[problem.profile]
     opt = {k: problem.options[k] if k in problem.options else default(ctx)
            for k, default, *_ in mod.OPTIONS}
