@@ -43,19 +43,16 @@ function currentChain(c: Row, given: Record<string, unknown>): HTMLElement {
 
 /** What the chosen firmware's header holds for this board, by the vendor's own names (the
  * Vendors view lists every vendor's). */
-function vendorTable(report: Report): HTMLElement | null {
-  const rows: (Node | string)[][] = [];
-  for (const [v, p] of Object.entries(report.profiles ?? {})) {
-    for (const k of p.board ?? []) {
-      const c = p.constants[k];
-      const at = `profiles.${v}.constants.${k}`;
-      rows.push([vendorName(v as Vendor), h('code', {}, k),
-        num(`${at}.value`, c.value, c.real ? { sig: 10, mirror: true } : { kind: 'int', mirror: true }),
-        c.format, num(`${at}.si`, c.si, { sig: 6, unit: c.unit, mirror: true })]);
-    }
-  }
-  return rows.length ? h('div', {}, h('h3', {}, t('boardHVendor')),
-    table([t('boardVendor'), t('vd_const'), t('value'), t('vd_format'), t('vd_si')], rows, 'board-vendor')) : null;
+function vendorTables(report: Report): HTMLElement[] {
+  return Object.entries(report.profiles ?? {}).filter(([, p]) => p.board?.length).map(([v, p]) =>
+    h('div', {}, h('h3', {}, `${t('boardHVendor')}: ${vendorName(v as Vendor)}`),
+      table([t('vd_const'), t('value'), t('vd_format'), t('vd_si')], (p.board ?? []).map((k) => {
+        const c = p.constants[k];
+        const at = `profiles.${v}.constants.${k}`;
+        return [h('code', {}, k),
+          num(`${at}.value`, c.value, c.real ? { sig: 10, mirror: true } : { kind: 'int', mirror: true }),
+          c.format, num(`${at}.si`, c.si, { sig: 6, unit: c.unit, mirror: true })];
+      }), 'board-vendor')));
 }
 
 export const boardPanel: Panel = {
@@ -91,7 +88,7 @@ export const boardPanel: Panel = {
         [t('boardDeadCounts'), num('board.pwm.deadtime_counts', pwm.deadtime_counts)],
         [t('boardDeadV'), num('board.pwm.deadtime_error_v', pwm.deadtime_error_v, { unit: 'V' })],
       ], 'board-pwm') : h('p', { class: 'note' }, t('boardNoPwm')),
-      report ? vendorTable(report) : null,
+      ...(report ? vendorTables(report) : []),
     );
   },
 };
