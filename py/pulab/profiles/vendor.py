@@ -148,7 +148,9 @@ OPTIONAL = {
                 "as (catalog code, params) pairs",
     "decode_header": "decode_header(text) -> dict: its header read back into integers",
     "board": "board(opt) -> dict: its board's sensing and PWM conventions",
-    "observer": "observer(ctx, opt) -> dict: its observer's constants",
+    "observer": "observer(ctx, opt) -> dict: its sensorless constants (constant records, added "
+                "to its profile's) for the settings ``ctx['observer']`` "
+                "(:func:`pulab.model.observer.settings`; None when the input has no ``observer``)",
 }
 
 
