@@ -171,3 +171,91 @@ def test_observer_golden(path):
             assert have is None, key
         else:
             assert have == pytest.approx(want, rel=tol["rel"], abs=tol["abs"]), key
+
+
+# ---------------------------------------------------------------------------------------
+# ST: the state observer's GAIN1/GAIN2 and PLL integers
+
+#: dronectl/g431-mcsdk (Inc/pmsm_motor_parameters.h, drive_parameters.h @ cfbb69f4): RS 0.35 Ω,
+#: LS 0.6 mH, 2 pole pairs, MOTOR_VOLTAGE_CONSTANT 4.0 V/krpm (bemf_v = 4.0·4000/1000 at
+#: 133.33 Hz), MAX_APPLICATION_SPEED_RPM 4000, 20 kHz, RSHUNT 3 mΩ, gain 9.14; the Workbench
+#: wrote F1 16384, F2 1024, GAIN1 −24217, GAIN2 26260, OBS_MINIMUM_SPEED_RPM 1440.
+G431 = {"motor": {"rated_voltage_v": 24, "rated_current_a": 5, "rated_freq_hz": 4000 * 2 / 60,
+                  "rs_ohm": 0.35, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 16.0, "pole_pairs": 2},
+        "drive": {"udc_v": 24, "ts_s": 5e-5},
+        "profiles": {"st": {"rshunt_ohm": 0.003, "amplification_gain": 9.14}},
+        "observer": {"min_speed_rpm": 1440}}
+
+
+def test_st_conversion_constants_of_the_g431_project():
+    """parameters_conversion.h on that project: C1 = trunc(16384·0.35/(0.0006·20000)) = 477,
+    MAX_BEMF_VOLTAGE = trunc(4000·1.2·4.0·√2/(1000·√3)) = 15, C3 = trunc(16384·15/(0.0006·
+    60.175·20000)) = 340 (MAX_CURRENT = 3.3/(2·0.003·9.14))."""
+    c = pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
+    assert (c["C1"]["value"], c["MAX_BEMF_VOLTAGE"]["value"], c["C3"]["value"]) == (477, 15, 340)
+
+
+def test_st_workbench_gains_of_the_g431_project_place_two_real_poles():
+    """What the Workbench did (its rule is not public): its GAIN1/GAIN2 with that project's C1,
+    C3 give the STO error poles z = 0.0573 and 0.4355 (discriminant 0.1429 > 0: real)."""
+    from pulab.profiles.st.observer import poles
+    z = poles(477 / 16384, -24217 / 16384, 340 / 16384, 26260 / 1024)
+    assert [p.imag for p in z] == [0.0, 0.0]
+    assert [p.real for p in z] == pytest.approx([0.057347, 0.435450], abs=1e-6)
+
+
+@pytest.mark.parametrize("f0,zeta", [(250.0, 1.0), (800.0, 0.7), (2000.0, 1.0)])
+def test_st_gains_place_the_sto_poles_where_the_design_asks(f0, zeta):
+    """pulab's GAIN1/GAIN2 put the firmware's own error loop (C1..C4 as stored) at e^{sT} of the
+    design poles, within what the integer rounding of GAIN1/GAIN2 moves them."""
+    from pulab.profiles.st.observer import poles
+    inp = copy.deepcopy(G431)
+    inp["observer"].update(bemf_f0_hz=f0, bemf_damping=zeta)
+    r = pulab.report(inp)
+    c = r["profiles"]["st"]["constants"]
+    f1, f2 = 16384, c["F2"]["value"]
+    assert f2 & (f2 - 1) == 0 and f2 <= 16384 and abs(c["GAIN2"]["value"]) <= 32767
+    assert 2 * f2 > 16384 or abs(c["GAIN2"]["ideal"] / f2 * 2 * f2) > 32767.5  # F2 the largest
+    got = poles(c["C1"]["value"] / f1, c["GAIN1"]["value"] / f1, c["C3"]["value"] / f1,
+                c["GAIN2"]["value"] / f2)
+    want = sorted((complex(*p) for p in r["observer"]["design"]["bemf"]["discrete_poles_of_continuous"]),
+                  key=lambda z: (z.real, z.imag))
+    assert max(abs(g - w) for g, w in zip(got, want)) < 0.02
+
+
+def test_st_pll_ki_too_small_for_its_word_shows_its_error():
+    """At 1440 rpm and 15 Hz the integral gain per 50 µs period is 2.3e-5: one LSB of 2^-15,
+    +35 % off — the report says so rather than hide it (ST's own project stores 8/65535)."""
+    c = pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
+    assert c["PLL_KI_GAIN"]["value"] == 1 and c["PLL_KIDIV"]["value"] == 32768
+    assert c["PLL_KI_GAIN"]["error_pct"] > 30
+
+
+GCC = __import__("shutil").which("gcc")
+
+
+@pytest.mark.skipif(GCC is None, reason="gcc not installed")
+@pytest.mark.parametrize("name", ["nxp", "st"])
+def test_headers_with_the_observer_compile_and_carry_the_report_integers(tmp_path, name):
+    from pulab.profiles import header
+    inp = copy.deepcopy(G431)
+    inp["profiles"]["nxp"] = {}
+    r = pulab.report(inp)
+    text = header(r, name)
+    names = [n for n in re.findall(r"^#define\s+(\w+)\s+\S", text, re.M) if not n.endswith("_H")]
+    obs = {"nxp": "M1_TO_KI_SHIFT", "st": "GAIN2"}[name]
+    assert obs in names
+    (tmp_path / "p.h").write_text(text)
+    (tmp_path / "u.c").write_text('#include <stdio.h>\n#include <stdint.h>\n#include "p.h"\n'
+                                  "int main(void) {\n" + "".join(
+                                      f'printf("%s %.17g\\n", "{n}", (double)({n}));\n'
+                                      for n in names) + "return 0;\n}\n")
+    subprocess.run([GCC, "-std=c99", "-Wall", "-Werror", "-o", str(tmp_path / "u"),
+                    str(tmp_path / "u.c")], check=True, capture_output=True)
+    out = subprocess.run([str(tmp_path / "u")], check=True, capture_output=True, text=True).stdout
+    consts = r["profiles"][name]["constants"]
+    printed = dict(line.split() for line in out.splitlines())
+    checked = [n for n in printed if n in consts]
+    assert len(checked) >= 10
+    for n in checked:
+        assert float(printed[n]) == consts[n]["value"], n
