@@ -259,3 +259,17 @@ def test_headers_with_the_observer_compile_and_carry_the_report_integers(tmp_pat
     assert len(checked) >= 10
     for n in checked:
         assert float(printed[n]) == consts[n]["value"], n
+
+
+def test_st_c5_beyond_the_handles_int16_is_a_problem_of_the_st_firmware():
+    """hC5 is int16_t in STO_PLL_Handle_t: on the G431 board C5 = trunc(16384·27/(LS·60.175·
+    20000)) leaves it below 11.2 µH (122522 at 3 µH); at 0.6 mH it fits and no hC5 is reported."""
+    small = copy.deepcopy(G431)
+    small["motor"].update(ld_h=3e-6, lq_h=3e-6)
+    r = pulab.report(small)
+    c = r["profiles"]["st"]["constants"]
+    assert c["C5"]["value"] == 122522 and c["hC5"]["flags"] == ["out_of_range"]
+    assert not r["firmware"]["st"]["representable"]
+    assert "profiles.st.hC5" in [p["field"] for p in r["firmware"]["st"]["problems"]]
+    assert not [k for k in pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
+                if k.startswith("hC")]

@@ -42,6 +42,8 @@ __all__ = ["observer", "poles"]
 
 _SRC = derived("pole placement of the STO error loop (the Workbench's GAIN1/GAIN2 rule is not "
                "public); the loop is sto_pll_speed_pos_fdbk.c STO_PLL_CalcElAngle")
+_NARROW = ("sto_pll_speed_pos_fdbk.h STO_PLL_Handle_t: int16_t hC1..hC5 (public MCSDK copies "
+           "found by exact-string search; path not pinned)")
 _PLL_SRC = derived("PLL PI sized at the lowest closed-loop speed (the Workbench's rule is not "
                    "public); the loop is sto_pll_speed_pos_fdbk.c STO_ExecutePLL")
 
@@ -69,10 +71,18 @@ def observer(ctx: dict, opt: dict) -> dict:
     c = _constants(ctx, opt)
     f1, f_reg = opt["f1"], round(1.0 / ctx["ts"])
     c1, c3 = c["C1"]["value"] / f1, c["C3"]["value"] / f1
+    out = {}
+    # STO_PLL_Handle_t keeps C1..C5 in int16_t hC1..hC5 (the macros are int32_t; the handle's
+    # initializer narrows them, and the firmware wraps): one beyond int16 is shown as hC<k>
+    for k in ("C1", "C3", "C5"):
+        if not -32768 <= c[k]["value"] <= 32767:
+            out[f"h{k}"] = fixed(f"h{k}", c[k]["value"], 16, 0, c[k]["si"] / c[k]["value"],
+                                 c[k]["unit"], f"{k} narrowed into the handle's int16_t h{k}",
+                                 _NARROW, fmt="int16_t")
     total, prod = _placed(s["bemf_f0_hz"], s["bemf_damping"], ctx["ts"])
     c2 = total - 2.0 + c1
-    out = {"GAIN1": fixed("GAIN1", c2 * f1, 16, 0, 1.0 / f1, "", "F1·(z1 + z2 − 2 + C1/F1)", _SRC,
-                          fmt="int16_t")}
+    out["GAIN1"] = fixed("GAIN1", c2 * f1, 16, 0, 1.0 / f1, "", "F1·(z1 + z2 − 2 + C1/F1)", _SRC,
+                         fmt="int16_t")
     if c3 <= 0.0:  # C3 truncated to 0: the back-EMF does not reach the current model
         return out
     c4 = (prod - total + 1.0) / c3
