@@ -14,7 +14,7 @@ import json
 import sys
 import time
 
-__all__ = ["run", "report_timing", "loop_timing", "trace_timing", "board_timing", "format_run", "MOTORS",
+__all__ = ["run", "report_timing", "loop_timing", "trace_timing", "board_timing", "observer_timing", "format_run", "MOTORS",
            "TRACE_SNIPPET", "TRACE_INPUTS"]
 
 #: Motors of different sizes; timing differs little, but one motor would hide outliers.
@@ -205,22 +205,32 @@ BOARD = {"current": {"shunt_ohm": 0.007, "gain": 10}, "bus": {"r_top_ohm": 82e3,
          "pwm": {"clock_hz": 100e6, "freq_hz": 1e4, "deadtime_s": 2e-7}}
 
 
-def board_timing(n: int = 200) -> dict:
-    """Median milliseconds of the seed motor's report with every profile, without and with
-    :data:`BOARD`, measured interleaved (one of each per round, so load hits both alike), and
-    their ratio (target ≤ 1.3)."""
+def _paired(plain: dict, extra: dict, n: int) -> dict:
+    """Median milliseconds of ``report(plain)`` and ``report(plain + extra)``, measured
+    interleaved (one of each per round, so load hits both alike), and their ratio."""
     from .report import report
-    plain = {**MOTORS["seed 17 V"], "profiles": {}}
-    board = {**plain, "board": BOARD}
-    report(plain), report(board)
+    other = {**plain, **extra}
+    report(plain), report(other)
     a, b = [], []
     for _ in range(n):
-        for inp, out in ((plain, a), (board, b)):
+        for inp, out in ((plain, a), (other, b)):
             t0 = time.perf_counter()
             report(inp)
             out.append((time.perf_counter() - t0) * 1e3)
     a.sort(), b.sort()
     return {"without_ms": a[n // 2], "with_ms": b[n // 2], "ratio": b[n // 2] / a[n // 2]}
+
+
+def board_timing(n: int = 200) -> dict:
+    """The seed motor's report with every profile, without and with :data:`BOARD`
+    (:func:`_paired`; target ratio ≤ 1.3)."""
+    return _paired({**MOTORS["seed 17 V"], "profiles": {}}, {"board": BOARD}, n)
+
+
+def observer_timing(n: int = 200) -> dict:
+    """The seed motor's report with every profile, without and with ``observer: {}`` (design,
+    budget and NXP's sensorless integers; :func:`_paired`, target ratio ≤ 1.3)."""
+    return _paired({**MOTORS["seed 17 V"], "profiles": {}}, {"observer": {}}, n)
 
 
 def run(sim_steps: int = 20000) -> dict:
@@ -229,7 +239,8 @@ def run(sim_steps: int = 20000) -> dict:
     from .analyses.sim.bench import bench
     return {"python": f"{sys.implementation.name} {sys.version.split()[0]}",
             "platform": sys.platform, "report_ms": report_timing(), "loop_ms": loop_timing(),
-            "sim": bench(sim_steps), "trace": trace_timing(), "board": board_timing()}
+            "sim": bench(sim_steps), "trace": trace_timing(), "board": board_timing(),
+            "observer": observer_timing()}
 
 
 def format_run(r: dict) -> str:
@@ -244,6 +255,10 @@ def format_run(r: dict) -> str:
         b = r["board"]
         lines.append(f"  report() with every profile, seed motor: {b['without_ms']:.3f} ms median, with a "
                      f"board {b['with_ms']:.3f} ms = {b['ratio']:.3f}× (target ≤ 1.3×)")
+    if "observer" in r:
+        o = r["observer"]
+        lines.append(f"  report() with every profile, seed motor, with observer {{}}: "
+                     f"{o['with_ms']:.3f} ms median = {o['ratio']:.3f}× (target ≤ 1.3×)")
     s = r["sim"]
     lines.append(f"  sim: {s['steps']} steps × 7 variants (si, pu, fixed; ti, nxp, st, microchip) "
                  f"in {s['total_s']:.3f} s = {s['steps_per_s']:.0f} steps/s (target < 0.5 s "

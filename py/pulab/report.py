@@ -12,6 +12,7 @@ Examples
 from __future__ import annotations
 
 from .model.board import board
+from .model.observer import settings as observer_settings
 from .model.bases import bases, flux_linkage, per_unit
 from .profiles.inovance.magic import magic_constants
 from .model.datasheet import mechanical
@@ -148,8 +149,14 @@ def report_steps(inp: dict):
     pi = current_pi_section(n, b)
     pi["step_example"] = _pi_example(pi["d"], vendor) if _LIMITS <= vendor.keys() else None
     # the board before the profiles: each vendor takes its hardware scales from it
-    board_out = board(n["board"], b["I_b"], flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
-                      m["pole_pairs"], d["udc_v"]) if "board" in n else None
+    board_out = None if "board" not in n else board(
+        n["board"], b["I_b"], flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
+        m["pole_pairs"], d["udc_v"])
+    obs = None
+    if "observer" in n:  # resolved before the profiles: their observer integers read it
+        obs = observer_settings(n["observer"], m, d, board_out,
+                                (n["analysis"] or {}).get("robust"))
+        n["observer"] = {k: obs[k] for k in n["observer"]}
     prof = None
     shipped = c["firmware"]
     # The five profiles only when asked (they cost more than the rest); the one shipped always,
@@ -177,6 +184,9 @@ def report_steps(inp: dict):
         out["datasheet"] = n["datasheet"]
     if board_out is not None:
         out["board"] = board_out
+    if obs is not None:
+        from .analyses import observer as _observer
+        out["observer"] = _observer.analyze(out, obs)
     if prof is not None:
         out["profiles"] = prof
     if n["analysis"] is not None:
@@ -190,7 +200,7 @@ def report_steps(inp: dict):
     if sim_in is not None:
         out["sim"] = yield from _sim.simulate_steps(out, sim_in)
     out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"), firmware,
-                           out.get("board"), out.get("fw"))
+                           out.get("board"), out.get("fw"), out.get("observer"))
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]

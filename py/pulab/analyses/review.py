@@ -495,9 +495,36 @@ def _fw(f: list, n: dict, fw: dict | None) -> None:
                      n=len(t["values"]))
 
 
+def _observer(f: list, obs: dict | None) -> None:
+    """Sensorless: an unstable observer loop, a merge below the minimum, speeds the budget says
+    the observer cannot see."""
+    if not obs:
+        return
+    s, bud = obs["settings"], obs["budget"]
+    for name, field in (("bemf", "observer.bemf_f0_hz"), ("tracking", "observer.tracking_f0_hz")):
+        if not obs["design"][name]["stable"]:
+            _finding(f, "error", "observer_unstable", f"observer.design.{name}.spectral_radius",
+                     field, obs["design"][name]["spectral_radius"],
+                     radius=obs["design"][name]["spectral_radius"])
+    if s["merging_speed_rpm"] < s["min_speed_rpm"]:
+        _finding(f, "warning", "observer_merge_below_min", "observer.settings.merging_speed_rpm",
+                 "observer.merging_speed_rpm", s["merging_speed_rpm"],
+                 merge=s["merging_speed_rpm"], low=s["min_speed_rpm"])
+    low = bud["min_speed_rpm"]
+    if low is None:
+        _finding(f, "warning", "observer_no_speed", "observer.budget.min_speed_rpm",
+                 "observer.snr_min", None, snr=s["snr_min"])
+        return
+    for key in ("min_speed_rpm", "merging_speed_rpm"):
+        if s[key] < low:
+            _finding(f, "warning", "observer_below_budget", "observer.budget.min_speed_rpm",
+                     f"observer.{key}", low, want=s[key], low=low, snr=s["snr_min"])
+
+
 def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
            loop: dict | None = None, firmware: dict | None = None,
-           board: dict | None = None, fw: dict | None = None) -> dict:
+           board: dict | None = None, fw: dict | None = None,
+           observer: dict | None = None) -> dict:
     """All findings for one report, most severe first.
 
     Parameters
@@ -510,6 +537,8 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
         hold this motor
     board : dict or None — the ``board`` output: the ADC range, dead time and PWM checks
     fw : dict or None — the ``fw`` output: base and maximum speed, the tables' error bounds
+    observer : dict or None — the ``observer`` output: its loops' stability, the merging and
+        lowest speeds against the budget's lowest sensorless speed
 
     Returns
     -------
@@ -534,6 +563,7 @@ def review(n: dict, raw: dict, vendor: dict, pi: dict, sim: dict | None = None,
     _firmware(f, firmware or {}, n["conventions"]["firmware"])
     _board(f, n, board)
     _fw(f, n, fw)
+    _observer(f, observer)
     if unit == "uH":
         _finding(f, "note", "unit_uH", "vendor.LD.value", "conventions.inductance_unit", unit)
     if n["conventions"]["base"] == "custom":

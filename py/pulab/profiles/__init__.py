@@ -30,6 +30,7 @@ from ..schema.errors import InputError
 from ..schema.validate import object_fields, value
 from . import limits, registry
 from .context import context, context_of
+from .vendor import provided
 
 __all__ = ["MODULES", "context", "context_of", "options", "profiles", "bases_table", "header"]
 
@@ -82,6 +83,9 @@ def profiles(ctx: dict, opts: dict, names: tuple | None = None) -> dict:
     for name in names or registry.names():
         v = registry.get(name)
         p = v.profile(ctx, opts[name])
+        obs = provided(v, "observer")
+        if obs is not None and ctx.get("observer") is not None:
+            p["constants"].update(obs(ctx, opts[name]))
         p["bases"] = bases_table(name, ctx, p)
         p["files"] = v.FILES
         problems = p.pop("problems", [])

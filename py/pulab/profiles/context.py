@@ -49,7 +49,9 @@ def context(n: dict, raw: dict, vendor: dict, pi: dict, problems: list = (),
             "u_limit": d["udc_v"] / SQRT2,
             "gains": {a: (pi[a]["kp"], pi[a]["ki"]) for a in ("d", "q")},
             "vendor": vendor, "raw": raw, "inductance_unit": n["conventions"]["inductance_unit"],
-            "firmware_problems": list(problems), "board": board, "board_input": n.get("board")}
+            "firmware_problems": list(problems), "board": board, "board_input": n.get("board"),
+            # the sensorless settings (pulab.model.observer), None when not asked
+            "observer": n.get("observer")}
 
 
 def context_of(r: dict) -> dict:

@@ -151,7 +151,9 @@ OPTIONAL = {
                        "the board (``ctx['board']``, by its own names); its ``profile`` merges "
                        "them into the constants and lists their names in ``profile['board']``. "
                        "Its options read their defaults from the board (``common.board_value``)",
-    "observer": "observer(ctx, opt) -> dict: its observer's constants",
+    "observer": "observer(ctx, opt) -> dict: its sensorless constants (constant records, added "
+                "to its profile's) for the settings ``ctx['observer']`` "
+                "(:func:`pulab.model.observer.settings`; None when the input has no ``observer``)",
 }
 
 

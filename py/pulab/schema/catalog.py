@@ -615,6 +615,22 @@ MESSAGES = {
                                 "({pct:.2g} % of the current limit); more {label}",
                                 "表 {table}（{n} 点）与精确曲线相差最多 {err:.3g} A（电流极限的 {pct:.2g} %）；"
                                 "请增加{label}"),
+    "finding.observer_below_budget": ("{label} {want:.5g} rpm is below {low:.5g} rpm, the lowest speed "
+                                      "where the back-EMF is {snr:g}× what corrupts it (R error, dead "
+                                      "time, current LSB, noise): the observer is blind there; raise it",
+                                      "{label} {want:.5g} rpm 低于 {low:.5g} rpm——反电势达到其误差（电阻误差、"
+                                      "死区、电流 LSB、噪声）{snr:g} 倍的最低转速：观测器在此处看不清；请提高它"),
+    "finding.observer_no_speed": ("the back-EMF never reaches {snr:g}× its errors up to 10× the maximum "
+                                  "speed: no sensorless speed; lower {label} or the errors",
+                                  "直到最高转速的 10 倍，反电势都达不到其误差的 {snr:g} 倍：无可用的无感转速；"
+                                  "请降低{label}或误差"),
+    "finding.observer_unstable": ("the observer loop set by {label} is unstable at this control period "
+                                  "(pole radius {radius:.4g}): lower it",
+                                  "由{label}决定的观测器环路在此控制周期下不稳定（极点半径 {radius:.4g}）：请降低它"),
+    "finding.observer_merge_below_min": ("the merging speed {merge:.5g} rpm is below the lowest closed-loop "
+                                         "speed {low:.5g} rpm (MCAT raises it); change {label}",
+                                         "切换转速 {merge:.5g} rpm 低于最低闭环转速 {low:.5g} rpm（MCAT 会将其提高）；"
+                                         "请修改{label}"),
     "finding.board_adc_clip": ("the rated peak current {peak:.4g} A is {pct:.0f} % of the ±{max_a:.4g} A "
                                "the current ADC measures: it clips; change {label}",
                                "额定峰值电流 {peak:.4g} A 达到电流 ADC 可测范围 ±{max_a:.4g} A 的 "

@@ -98,6 +98,8 @@ def normalize(inp: dict) -> dict:
     if inp.get("board") is not None:
         given = object_fields(inp["board"], "board", children("board"))
         out["board"] = {k: read(f"board.{k}", given[k]) for k in children("board") if k in given}
+    if inp.get("observer") is not None:
+        out["observer"] = read("observer", inp["observer"])
     if inp.get("sim") is not None:
         out["sim"] = inp["sim"]
     if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor

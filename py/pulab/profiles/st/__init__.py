@@ -1,6 +1,7 @@
 """ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors."""
 
 from .header import header
+from .observer import observer
 from .pi import controller
 from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
 

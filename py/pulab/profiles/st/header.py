@@ -27,6 +27,9 @@ def header(p: dict, ctx: dict, r: dict) -> str:
     for k in ("PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "PID_FLUX_KP_DEFAULT",
               "PID_FLUX_KI_DEFAULT"):
         body.append(define(k, c[k]))
+    # the state observer and its PLL, with an observer section (pulab.profiles.st.observer)
+    body += [define(k, c[k]) for k in ("F2", "GAIN1", "GAIN2", "PLL_KP_GAIN", "PLL_KPDIV",
+                                       "PLL_KI_GAIN", "PLL_KIDIV") if k in c]
     body += [f"#define {'TF_KPDIV':<30} {o['tf_kpdiv']:>7}",
              f"#define {'TF_KIDIV':<30} {o['tf_kidiv']:>7}",
              f"#define {'TF_KPDIV_LOG':<30} {o['tf_kpdiv'].bit_length() - 1:>7}",

@@ -89,6 +89,9 @@ OPTIONS = (
            ("TF_KIDIV", "TF_KIDIV"), kind="integer", lo=1, hi=32768, power_of_two=True),
     Option("f1", lambda c: 16384, "observer scaling F1; default 16384",
            ("observer F1", "观测器 F1"), kind="integer", lo=1, hi=32767),
+    Option("f2", lambda c: None, "observer scaling F2 (power of two); default the largest ≤ 16384 "
+           "keeping GAIN2 in int16 (with an observer section)",
+           ("observer F2", "观测器 F2"), kind="integer", lo=1, hi=16384, power_of_two=True),
 )
 CONVENTIONS = {
     "voltage_base": "U_dc/√3 at 32768 digits (assumed, full modulation)",

@@ -1,0 +1,275 @@
+"""The sensorless design: NXP MCAT's printed macros reproduced, the oracle's poles and budget,
+bad input, and the review's findings."""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import pathlib
+import re
+import subprocess
+import sys
+
+import pytest
+
+import pulab
+from conftest import SEED_INPUT
+from pulab import InputError
+
+HERE = pathlib.Path(__file__).resolve().parents[1]
+HEADERS = sorted((HERE / "data" / "headers" / "nxp").glob("observer_*.json"))
+
+
+def _from_mcat(m: dict) -> dict:
+    """pulab's input for the MCAT inputs of one header (the rated values do not enter the
+    sensorless macros: plausible ones)."""
+    pp = m["parametersPP"]
+    obs = {"bemf_f0_hz": m["sensorlessBemfObsrvF0"], "bemf_damping": m["sensorlessBemfObsrvKsi"],
+           "speed_filter_hz": m["sensorlessTrackObsrvIIRSpeedCutOff"]}
+    for key, ours in (("sensorlessTrackObsrvF0", "tracking_f0_hz"),
+                      ("sensorlessTrackObsrvKsi", "tracking_damping"),
+                      ("sensorlessStartupRamp", "startup_ramp_rpm_per_s"),
+                      ("sensorlessStartupCurrent", "startup_current_a"),
+                      ("sensorlessMergingSpeed", "merging_speed_rpm"),
+                      ("sensorlessMergingCoeff", "merging_coeff_pct"),
+                      ("parametersNmin", "min_speed_rpm"), ("parametersEblock", "e_block_v")):
+        if key in m:
+            obs[ours] = m[key]
+    return {"motor": {"rated_voltage_v": 15.0, "rated_current_a": 2.0, "rated_freq_hz": 100.0,
+                      "rs_ohm": m["parametersRs"], "ld_h": m["parametersLd"],
+                      "lq_h": m["parametersLq"], "bemf_v": 5.0, "pole_pairs": pp},
+            "drive": {"udc_v": m["parametersUdcbMax"], "ts_s": m["currentLoopSampleTime"],
+                      "base_freq_hz": pp * m["parametersNmax"] / 60.0},
+            "profiles": {"nxp": {"udcb_max_v": m["parametersUdcbMax"],
+                                 "i_max_a": m["parametersImax"],
+                                 "e_max_v": m["parametersEmax"],
+                                 "round_u_max": m.get("roundUmax", False)}},
+            "observer": obs}
+
+
+def _printed(text: str) -> tuple:
+    """('FRAC16', '0.5') from 'FRAC16(0.5)'; ('', '-1') from '(-1)'."""
+    wrap, arg = re.fullmatch(r"(\w*)\((.*)\)", text).groups()
+    return wrap, arg
+
+
+@pytest.mark.parametrize("path", HEADERS, ids=[p.stem for p in HEADERS])
+def test_nxp_sensorless_macros_reproduce_mcat_headers(path):
+    case = json.loads(path.read_text(encoding="utf-8"))
+    c = pulab.report(_from_mcat(case["mcat"]))["profiles"]["nxp"]["constants"]
+    for name, text in case["printed"].items():
+        wrap, arg = _printed(text)
+        got = c[name]
+        if not wrap:                                          # a shift: a plain integer
+            assert got["value"] == int(arg), name
+            continue
+        x = float(arg)
+        digits = len(re.sub(r"^0\.0*|\.|^-", "", arg).lstrip("0"))
+        # MCAT printed `digits` significant digits, rounded (or, for its observer scales,
+        # Math.ceil at 12 decimals): the exact value lies within one unit of the last one
+        half = 10.0 ** (math.floor(math.log10(abs(x))) - digits + 1)
+        assert abs(got["ideal"] / 2.0 ** got["q"] - x) <= half * (1 + 1e-9) + 1e-15 * abs(x), name
+        # the stored integer is the C cast of the printed argument (FRAC/ACC truncate), up to
+        # the one LSB the printed rounding can move it
+        assert abs(got["value"] - math.trunc(x * 2.0 ** got["q"])) <= \
+            max(1, math.ceil(half * 2.0 ** got["q"])), name
+
+
+def test_nxp_sensorless_wrappers_are_mcats():
+    linix = HERE / "data" / "headers" / "nxp" / "observer_linix.json"
+    c = pulab.report(_from_mcat(json.loads(linix.read_text())["mcat"]))
+    c = c["profiles"]["nxp"]["constants"]
+    assert c["M1_TO_SPEED_IIR_A1"]["format"] == "FRAC32" and c["M1_OL_START_I"]["format"] == "FRAC16"
+    assert c["M1_TO_KP_GAIN"]["format"] == "FRAC16 · 2^-1" and c["M1_TO_KP_SHIFT"]["value"] == -1
+    assert c["M1_MERG_COEFF"]["source"].startswith("derived")
+
+
+def test_no_observer_adds_nothing():
+    r = pulab.report(copy.deepcopy(SEED_INPUT))
+    assert "observer" not in r and "observer" not in r["input"]
+    inp = {**copy.deepcopy(SEED_INPUT), "profiles": {"nxp": {}}}
+    assert "M1_BEMF_DQ_KP_GAIN" not in pulab.report(inp)["profiles"]["nxp"]["constants"]
+
+
+@pytest.mark.parametrize("field,value", [("bemf_f0_hz", -1), ("snr_min", 0), ("noise_a", "x"),
+                                         ("r_error_pct", -5), ("bogus", 1)])
+def test_bad_observer_input_names_the_field(field, value):
+    inp = {**copy.deepcopy(SEED_INPUT), "observer": {field: value}}
+    with pytest.raises(InputError) as e:
+        pulab.report(inp)
+    assert e.value.field == f"observer.{field}"
+
+
+def test_the_cli_exits_2_on_a_bad_observer(tmp_path):
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps({**SEED_INPUT, "observer": {"tracking_f0_hz": 0}}))
+    r = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)], capture_output=True,
+                       text=True, env={"PYTHONPATH": str(HERE.parent / "py")})
+    assert r.returncode == 2 and "observer.tracking_f0_hz" in r.stderr
+
+
+def test_lowest_speed_worked_by_hand():
+    """Seed motor, defaults: ψ = √(2/3)·12/(2π·220) = 7.0882 mV·s; ΔR·I = 1.5·0.53055·√2·1.5
+    = 1.68843 V; LSB 2·√2·1.5/4096 = 1.0358 mA over |Z| ≈ 1.5068 Ω at 569 rpm: 1.56 mV.  E = ψ·ω
+    = 1.68999 V at ω = 238.42 rad/s = 569.12 rpm (p = 4)."""
+    r = pulab.report({**copy.deepcopy(SEED_INPUT), "observer": {}})
+    b = r["observer"]["budget"]
+    assert b["min_speed_rpm"] == pytest.approx(569.12, abs=0.01)
+    codes = [(x["code"], x["field"]) for x in r["review"]["findings"]]
+    assert ("observer_below_budget", "observer.min_speed_rpm") in codes
+    assert ("observer_below_budget", "observer.merging_speed_rpm") in codes
+
+
+def test_merge_above_budget_has_no_finding_and_unstable_observer_is_an_error():
+    inp = {**copy.deepcopy(SEED_INPUT),
+           "observer": {"merging_speed_rpm": 800, "min_speed_rpm": 700, "bemf_f0_hz": 8000}}
+    r = pulab.report(inp)
+    codes = {x["code"]: x for x in r["review"]["findings"]}
+    assert "observer_below_budget" not in codes
+    assert codes["observer_unstable"]["severity"] == "error"
+    assert codes["observer_unstable"]["field"] == "observer.bemf_f0_hz"
+
+
+def test_merge_below_minimum_warns():
+    inp = {**copy.deepcopy(SEED_INPUT), "observer": {"merging_speed_rpm": 600, "min_speed_rpm": 700}}
+    codes = [x["code"] for x in pulab.report(inp)["review"]["findings"]]
+    assert "observer_merge_below_min" in codes
+
+
+# Golden vectors of the independent oracle (tests/oracle/observer_oracle.py: python-control and
+# numpy, never imports pulab); the same files go through Pyodide in
+# tests/web/golden-observer.test.ts.
+GOLDEN = sorted((HERE / "golden" / "observer").glob("*.json"))
+
+
+def test_observer_golden_files_are_fresh():
+    assert len(GOLDEN) >= 3
+    r = subprocess.run([sys.executable, "observer_oracle.py", "--check"], capture_output=True,
+                       text=True, cwd=HERE / "oracle")
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+def _at(d, path: str):
+    for k in path.split("."):
+        d = d[k]
+    return d
+
+
+@pytest.mark.parametrize("path", GOLDEN, ids=[p.stem for p in GOLDEN])
+def test_observer_golden(path):
+    case = json.loads(path.read_text(encoding="utf-8"))
+    got = pulab.report(case["input"])["observer"]
+    for key, want in case["expected"].items():
+        have = _at(got, key)
+        tol = case["tolerance"]
+        if isinstance(want, list):
+            assert len(have) == len(want), key
+            for w, h in zip(want, have):
+                assert h == pytest.approx(w, rel=tol["rel"], abs=tol["abs"]), key
+        elif want is None:
+            assert have is None, key
+        else:
+            assert have == pytest.approx(want, rel=tol["rel"], abs=tol["abs"]), key
+
+
+# ---------------------------------------------------------------------------------------
+# ST: the state observer's GAIN1/GAIN2 and PLL integers
+
+#: dronectl/g431-mcsdk (Inc/pmsm_motor_parameters.h, drive_parameters.h @ cfbb69f4): RS 0.35 Ω,
+#: LS 0.6 mH, 2 pole pairs, MOTOR_VOLTAGE_CONSTANT 4.0 V/krpm (bemf_v = 4.0·4000/1000 at
+#: 133.33 Hz), MAX_APPLICATION_SPEED_RPM 4000, 20 kHz, RSHUNT 3 mΩ, gain 9.14; the Workbench
+#: wrote F1 16384, F2 1024, GAIN1 −24217, GAIN2 26260, OBS_MINIMUM_SPEED_RPM 1440.
+G431 = {"motor": {"rated_voltage_v": 24, "rated_current_a": 5, "rated_freq_hz": 4000 * 2 / 60,
+                  "rs_ohm": 0.35, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 16.0, "pole_pairs": 2},
+        "drive": {"udc_v": 24, "ts_s": 5e-5},
+        "profiles": {"st": {"rshunt_ohm": 0.003, "amplification_gain": 9.14}},
+        "observer": {"min_speed_rpm": 1440}}
+
+
+def test_st_conversion_constants_of_the_g431_project():
+    """parameters_conversion.h on that project: C1 = trunc(16384·0.35/(0.0006·20000)) = 477,
+    MAX_BEMF_VOLTAGE = trunc(4000·1.2·4.0·√2/(1000·√3)) = 15, C3 = trunc(16384·15/(0.0006·
+    60.175·20000)) = 340 (MAX_CURRENT = 3.3/(2·0.003·9.14))."""
+    c = pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
+    assert (c["C1"]["value"], c["MAX_BEMF_VOLTAGE"]["value"], c["C3"]["value"]) == (477, 15, 340)
+
+
+def test_st_workbench_gains_of_the_g431_project_place_two_real_poles():
+    """What the Workbench did (its rule is not public): its GAIN1/GAIN2 with that project's C1,
+    C3 give the STO error poles z = 0.0573 and 0.4355 (discriminant 0.1429 > 0: real)."""
+    from pulab.profiles.st.observer import poles
+    z = poles(477 / 16384, -24217 / 16384, 340 / 16384, 26260 / 1024)
+    assert [p.imag for p in z] == [0.0, 0.0]
+    assert [p.real for p in z] == pytest.approx([0.057347, 0.435450], abs=1e-6)
+
+
+@pytest.mark.parametrize("f0,zeta", [(250.0, 1.0), (800.0, 0.7), (2000.0, 1.0)])
+def test_st_gains_place_the_sto_poles_where_the_design_asks(f0, zeta):
+    """pulab's GAIN1/GAIN2 put the firmware's own error loop (C1..C4 as stored) at e^{sT} of the
+    design poles, within what the integer rounding of GAIN1/GAIN2 moves them."""
+    from pulab.profiles.st.observer import poles
+    inp = copy.deepcopy(G431)
+    inp["observer"].update(bemf_f0_hz=f0, bemf_damping=zeta)
+    r = pulab.report(inp)
+    c = r["profiles"]["st"]["constants"]
+    f1, f2 = 16384, c["F2"]["value"]
+    assert f2 & (f2 - 1) == 0 and f2 <= 16384 and abs(c["GAIN2"]["value"]) <= 32767
+    assert 2 * f2 > 16384 or abs(c["GAIN2"]["ideal"] / f2 * 2 * f2) > 32767.5  # F2 the largest
+    got = poles(c["C1"]["value"] / f1, c["GAIN1"]["value"] / f1, c["C3"]["value"] / f1,
+                c["GAIN2"]["value"] / f2)
+    want = sorted((complex(*p) for p in r["observer"]["design"]["bemf"]["discrete_poles_of_continuous"]),
+                  key=lambda z: (z.real, z.imag))
+    assert max(abs(g - w) for g, w in zip(got, want)) < 0.02
+
+
+def test_st_pll_ki_too_small_for_its_word_shows_its_error():
+    """At 1440 rpm and 15 Hz the integral gain per 50 µs period is 2.3e-5: one LSB of 2^-15,
+    +35 % off — the report says so rather than hide it (ST's own project stores 8/65535)."""
+    c = pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
+    assert c["PLL_KI_GAIN"]["value"] == 1 and c["PLL_KIDIV"]["value"] == 32768
+    assert c["PLL_KI_GAIN"]["error_pct"] > 30
+
+
+GCC = __import__("shutil").which("gcc")
+
+
+@pytest.mark.skipif(GCC is None, reason="gcc not installed")
+@pytest.mark.parametrize("name", ["nxp", "st"])
+def test_headers_with_the_observer_compile_and_carry_the_report_integers(tmp_path, name):
+    from pulab.profiles import header
+    inp = copy.deepcopy(G431)
+    inp["profiles"]["nxp"] = {}
+    r = pulab.report(inp)
+    text = header(r, name)
+    names = [n for n in re.findall(r"^#define\s+(\w+)\s+\S", text, re.M) if not n.endswith("_H")]
+    obs = {"nxp": "M1_TO_KI_SHIFT", "st": "GAIN2"}[name]
+    assert obs in names
+    (tmp_path / "p.h").write_text(text)
+    (tmp_path / "u.c").write_text('#include <stdio.h>\n#include <stdint.h>\n#include "p.h"\n'
+                                  "int main(void) {\n" + "".join(
+                                      f'printf("%s %.17g\\n", "{n}", (double)({n}));\n'
+                                      for n in names) + "return 0;\n}\n")
+    subprocess.run([GCC, "-std=c99", "-Wall", "-Werror", "-o", str(tmp_path / "u"),
+                    str(tmp_path / "u.c")], check=True, capture_output=True)
+    out = subprocess.run([str(tmp_path / "u")], check=True, capture_output=True, text=True).stdout
+    consts = r["profiles"][name]["constants"]
+    printed = dict(line.split() for line in out.splitlines())
+    checked = [n for n in printed if n in consts]
+    assert len(checked) >= 10
+    for n in checked:
+        assert float(printed[n]) == consts[n]["value"], n
+
+
+def test_st_c5_beyond_the_handles_int16_is_a_problem_of_the_st_firmware():
+    """hC5 is int16_t in STO_PLL_Handle_t: on the G431 board C5 = trunc(16384·27/(LS·60.175·
+    20000)) leaves it below 11.2 µH (122522 at 3 µH); at 0.6 mH it fits and no hC5 is reported."""
+    small = copy.deepcopy(G431)
+    small["motor"].update(ld_h=3e-6, lq_h=3e-6)
+    r = pulab.report(small)
+    c = r["profiles"]["st"]["constants"]
+    assert c["C5"]["value"] == 122522 and c["hC5"]["flags"] == ["out_of_range"]
+    assert not r["firmware"]["st"]["representable"]
+    assert "profiles.st.hC5" in [p["field"] for p in r["firmware"]["st"]["problems"]]
+    assert not [k for k in pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
+                if k.startswith("hC")]
