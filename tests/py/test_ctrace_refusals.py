@@ -216,3 +216,72 @@ def test_a_missing_macro_suggests_minus_d_and_only_missing_headers_are_listed():
     with pytest.raises(TraceError) as e:
         trace("long x = gain * 2;", "c28x")
     assert e.value.reason.startswith("gain is not declared (declare it with its type")
+
+
+# What CMSIS's cmsis_compiler.h and vendor headers test before anything else.
+WHICH_COMPILER = r"""
+#if defined(__TI_COMPILER_VERSION__) && defined(__TMS320C2000__) && defined(__TMS320C28XX__)
+  #define COMPILER 28
+#elif defined(__GNUC__) && defined(__AVR__)
+  #define COMPILER 8
+#elif defined(__GNUC__) && defined(__arm__)
+  #define COMPILER 32
+#elif defined(__GNUC__) && defined(__MSP430__)
+  #define COMPILER 430
+#else
+  #error Unknown compiler
+#endif
+#ifdef __GNUC__
+  #define GCC __GNUC__
+#else
+  #define GCC 0
+#endif
+long which(void) { return COMPILER * 100L + GCC; }
+"""
+
+
+@pytest.mark.parametrize("target,value", [("c28x", 2800), ("avr", 805), ("arm", 3213),
+                                          ("msp430", 43009)])
+def test_each_target_predefines_its_compilers_macros(target, value):
+    r = trace(WHICH_COMPILER, target, entry="which")
+    assert r["vars"]["return"]["value"] == value
+
+
+def test_minus_u_removes_a_predefined_macro_and_minus_d_adds_one():
+    with pytest.raises(TraceError) as e:
+        trace(WHICH_COMPILER, "arm", entry="which", undefines=["__arm__"])
+    assert e.value.reason == "#error Unknown compiler"
+    r = trace(WHICH_COMPILER, "arm", entry="which", undefines=["__arm__", "__GNUC__"],
+              defines=["__TI_COMPILER_VERSION__=1", "__TMS320C2000__", "__TMS320C28XX__"])
+    assert r["vars"]["return"]["value"] == 2800
+    r = trace(WHICH_COMPILER, "c28x", entry="which", defines=["__GNUC__=4"])
+    assert r["vars"]["return"]["value"] == 2804
+    with pytest.raises(TraceError) as e:
+        trace(WHICH_COMPILER, "arm", entry="which", undefines=["1x"])
+    assert e.value.field == "undefine[0]"
+
+
+def test_avr_gcc_predefines_what_the_avr_target_does(capsys):
+    require("avr", capsys)
+    checked = compile_code(WHICH_COMPILER, "avr", entry="which")
+    expected = run_checked(checked, {}, None, record=False).values["return"]
+    unit = Unit(WHICH_COMPILER, "which", [], [], [("int32_t", "return")])
+    assert [{"return": expected}] == run_unit(unit, [{}], "avr")
+
+
+def test_the_cli_takes_minus_u(tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    from conftest import ROOT
+    src = tmp_path / "which.c"
+    src.write_text(WHICH_COMPILER)
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "py"))
+    run = [sys.executable, "-m", "pulab", "trace", str(src), "--entry", "which", "--format", "text"]
+    p = subprocess.run(run + ["--target", "avr", "-U", "__GNUC__", "-D", "__GNUC__=7"],
+                       capture_output=True, text=True, env=env)
+    assert p.returncode == 0 and p.stdout.splitlines()[-1] == "return 807 (0x00000327)"
+    p = subprocess.run(run + ["--target", "avr", "-U", "__AVR__", "-U", "__GNUC__"],
+                       capture_output=True, text=True, env=env)
+    assert p.returncode == 2 and p.stderr == "error: code: 11:3: #error Unknown compiler\n"
