@@ -22,7 +22,7 @@ import pytest
 from conftest import ROOT
 from ctrace_compilers import Unit, require, run_calls
 from pulab.api import call_json
-from pulab.ctrace import TraceError, compile_code
+from pulab.ctrace import TraceError, compile_code, trace
 from pulab.ctrace.sequence import read_table, run_sequence, trace_sequence
 
 PI = r"""
@@ -278,3 +278,48 @@ def test_the_api_runs_a_sequence():
         "set": {"a": 0}, "table": [{"e": 30000}, {"e": 30000}]})))
     assert r["ok"] and [c["return"]["value"] for c in r["calls"]] == [30000, -5536]
     assert r["first_event"] == {"call": 1, "line": 1, "kind": "signed_overflow", "name": "a"}
+
+
+def _recorded(steps: list, flags: set, found: list) -> None:
+    """The flags and first event read off a recorded trace: steps in order, a call's inner
+    steps before the call term's own flags."""
+    kinds = ("signed_overflow", "unsigned_wrap", "conversion", "saturate")
+    for s in steps:
+        for t in s["terms"]:
+            if "steps" in t:
+                _recorded(t["steps"], flags, found)
+            hit = [f for f in t["flags"] if f in kinds]
+            if hit and not found:
+                found.append((t["line"], hit[0], s["var"] or t["expr"]))
+        flags.update(s["flags"])
+        hit = [f for f in s["flags"] if f in kinds]
+        if hit and not found:
+            found.append((s["line"], hit[0], s["var"] or s["code"]))
+
+
+@pytest.mark.parametrize("target", ["c28x", "arm"])
+def test_a_sequence_sees_the_flags_and_event_a_recorded_trace_shows(target):
+    from pulab.benchmark import TRACE_UNIT
+    rng = random.Random(f"watch-{target}")
+    code = TRACE_UNIT + PI.replace("#include <stdint.h>", "")
+    events = 0
+    for _ in range(150):
+        inputs = {"ia": rng.randrange(-32768, 32768), "ib": rng.randrange(-32768, 32768),
+                  "angle": rng.randrange(0, 65536), "id_ref": rng.randrange(-32768, 32768),
+                  "iq_ref": rng.randrange(-32768, 32768),
+                  **{f"{p}.{k}": v for p in ("pid", "piq") for k, v in (
+                      ("kp", rng.randrange(-32768, 32768)), ("ki", rng.randrange(-32768, 32768)),
+                      ("integral", rng.randrange(-1 << 31, 1 << 31)),
+                      ("upper", rng.randrange(0, 1 << 31)), ("lower", -rng.randrange(0, 1 << 31)),
+                      ("kp_shift", rng.randrange(0, 16)), ("ki_shift", rng.randrange(0, 16)))}}
+        r = trace(code, target, inputs, entry="current_loop")
+        flags, found = set(), []
+        _recorded(r["steps"], flags, found)
+        s = trace_sequence(code, target, 1, None, inputs, entry="current_loop")
+        assert set(s["calls"][0]["flags"]) == flags
+        e = s["first_event"]
+        assert (None if e is None else (e["line"], e["kind"], e["name"])) == \
+            (found[0] if found else None)
+        assert s["calls"][0]["vars"] == r["vars"]
+        events += bool(found)
+    assert events > 50

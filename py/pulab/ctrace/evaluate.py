@@ -147,6 +147,13 @@ class Evaluator(NodeVisitor):
         self.undefined: set = set()
         #: the paths of the ``static`` locals initialized so far (kept across calls)
         self.statics: set = set()
+        #: with ``record`` False and ``watch`` a tuple of flags: the flags met (``seen``) and
+        #: the first of ``watch`` met (``event``: line, flag, the variable its statement
+        #: stores or else the expression's text), in the order the recorded steps list them
+        self.watch: tuple = ()
+        self.seen: set = set()
+        self.event: tuple | None = None
+        self._pending: tuple | None = None  # a term's event, named by its statement's step
         self.int = checked.target.types["int"]
         self.long = checked.target.types["long"]
 
@@ -161,8 +168,29 @@ class Evaluator(NodeVisitor):
                  "hex": hex_of(value, t.bits) if value is not None else None, "flags": flags}
             d.update(extra)
             self.terms.append(d)
+        elif self.watch and flags:
+            self.met(node, flags)
+
+    def met(self, node, flags) -> None:
+        """Watch mode: flags of a term (a sub-expression, or a call's argument conversions)."""
+        self.seen.update(flags)
+        if self.event is None and self._pending is None:
+            kind = next((f for f in flags if f in self.watch), None)
+            if kind is not None:
+                self._pending = (len(self.active), node.line, kind,
+                                 self.source[node.start:node.end])
 
     def step(self, stmt, code: str, var: str | None, value: int, ctype, **extra) -> None:
+        if not self.record and self.watch:
+            flags = extra.get("flags", ())
+            self.seen.update(flags)
+            pending = self._pending
+            if pending is not None and pending[0] == len(self.active):
+                self.event, self._pending = (pending[1], pending[2], var or pending[3]), None
+            elif self.event is None and pending is None:
+                kind = next((f for f in flags if f in self.watch), None)
+                if kind is not None:
+                    self.event = (stmt.line, kind, var or code)
         if self.record:
             flags = sorted({f for t in self.terms for f in t["flags"]} |
                            set(extra.pop("flags", ())), key=FLAGS.index)
@@ -223,6 +251,7 @@ class Evaluator(NodeVisitor):
         self.inputs = inputs
         self.unset = [n for n in self.names if n not in inputs and self.mem.get(n) is None]
         self.steps, self.terms, self.count, self.undefined = [], [], 0, set()
+        self.seen, self.event, self._pending = set(), None, None
         self.mem.update(inputs)  # globals; the entry's own inputs get their steps in enter
         self.enter()
         return self.steps
@@ -757,6 +786,8 @@ class Evaluator(NodeVisitor):
                                "value": value if scalar else None,
                                "hex": hex_of(value, t.bits) if scalar else None,
                                "flags": flags, "call": f.name, "steps": inner})
+        elif self.watch and flags:
+            self.met(e, flags)
         return value
 
     def call(self, e: Call) -> int:

@@ -81,24 +81,6 @@ def read_table(text: str, kind: str) -> list:
     return rows
 
 
-def _walk_events(steps: list, flags: set, found: list) -> None:
-    """Collect the flags of ``steps`` (nested calls' steps too) and, in ``found``, the
-    first event: (line, kind, name) in execution order."""
-    for s in steps:
-        for t in s.get("terms", ()):
-            if "steps" in t:
-                _walk_events(t["steps"], flags, found)
-            if not found:
-                kind = next((f for f in t["flags"] if f in EVENT_KINDS), None)
-                if kind is not None:
-                    found.append((t["line"], kind, s.get("var") or t["expr"]))
-        flags.update(s.get("flags", ()))
-        if not found:
-            kind = next((f for f in s.get("flags", ()) if f in EVENT_KINDS), None)
-            if kind is not None:
-                found.append((s["line"], kind, s.get("var") or s["code"]))
-
-
 def _row_values(checked, row, k: int) -> dict:
     if not isinstance(row, dict):
         raise InputError(f"inputs[{k}]", code="not_object", got=shown(row))
@@ -134,7 +116,8 @@ def run_sequence(checked, calls: int, table: list | None = None, inputs: dict | 
         given.update(caller)
         try:
             if ev is None:
-                ev = Evaluator(checked, given, gq)
+                ev = Evaluator(checked, given, gq, record=False)
+                ev.watch = EVENT_KINDS
                 ev.run()
             else:
                 ev.again(given)
@@ -143,16 +126,13 @@ def run_sequence(checked, calls: int, table: list | None = None, inputs: dict | 
                 raise
             raise TraceError(e.line, e.column, e.field, code="trace_in_call", call=k,
                              reason=e.reason_error()) from None
-        flags: set = set()
-        found: list = []
-        _walk_events(ev.steps, flags, found)
-        if found and event is None:
-            event = {"call": k, "line": found[0][0], "kind": found[0][1], "name": found[0][2]}
+        if ev.event is not None and event is None:
+            event = {"call": k, "line": ev.event[0], "kind": ev.event[1], "name": ev.event[2]}
         names = set(given) | (set(ev.names) if zero_unset and k == 0 else set())
         state |= names | ev.written
         vars_ = result_vars(checked, ev, names, state)
         out.append({"return": vars_.get("return"), "vars": vars_,
-                    "flags": sorted(flags, key=FLAGS.index)})
+                    "flags": sorted(ev.seen, key=FLAGS.index)})
     return {"ok": True, "target": checked.target.name, "global_q": gq,
             "entry": checked.entry.name,
             "functions": [f for f in checked.functions if f not in checked.program.macros],

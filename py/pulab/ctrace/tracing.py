@@ -58,6 +58,12 @@ def _undefines(undefines) -> set:
     return out
 
 
+#: The programs compiled last (see :func:`compile_code`), most recent last.
+_COMPILED: dict = {}
+#: How many compiled programs are kept.
+COMPILED_KEPT = 8
+
+
 def compile_code(code: str, target: str = "c28x", defines=None,
                  global_q: int | None = None, entry: str | None = None,
                  undefines=None) -> Checked:
@@ -67,7 +73,28 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     ``undefines`` (``-U NAME``); ``global_q`` is the Q the
     IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q;
     ``entry`` the function to run (None: the statements outside functions), or a
-    function-like macro as ``NAME`` or ``NAME(TYPE, …)`` (see :mod:`~pulab.ctrace.macro_entry`)."""
+    function-like macro as ``NAME`` or ``NAME(TYPE, …)`` (see :mod:`~pulab.ctrace.macro_entry`).
+
+    The last :data:`COMPILED_KEPT` programs are kept: the same request again (a page
+    re-tracing as the user edits inputs, a sequence's calls) is not parsed or checked again
+    (the checked program is never changed by a run).
+    """
+    try:
+        key = (code, target, tuple(defines or ()), tuple(undefines or ()), global_q, entry)
+        hash(key)
+    except TypeError:  # an unhashable request is refused by _compile
+        key = None
+    checked = _COMPILED.pop(key, None) if key is not None else None
+    if checked is None:
+        checked = _compile(code, target, defines, global_q, entry, undefines)
+    if key is not None:
+        _COMPILED[key] = checked
+        while len(_COMPILED) > COMPILED_KEPT:
+            del _COMPILED[next(iter(_COMPILED))]
+    return checked
+
+
+def _compile(code, target, defines, global_q, entry, undefines) -> Checked:
     if entry is not None and (not isinstance(entry, str) or split_entry(entry) is None):
         raise InputError("entry", code="trace_entry_name", got=shown(entry))
     if not isinstance(target, str) or target not in TARGETS:
