@@ -137,8 +137,9 @@ def _batch(req) -> dict:
             "csv": bt.to_csv(names, out, start == 0)}
 
 
-_TRACE_KEYS = ("code", "target", "set", "global_q", "define", "entry", "zero_unset")
+_TRACE_KEYS = ("code", "target", "set", "global_q", "define", "undefine", "entry", "zero_unset")
 _PROVE_KEYS = _TRACE_KEYS + ("range", "budget")
+_SEQUENCE_KEYS = _TRACE_KEYS + ("calls", "table")
 
 
 def _trace_request(req, keys: tuple) -> tuple:
@@ -161,11 +162,28 @@ def _trace_request(req, keys: tuple) -> tuple:
     return req.get("code", ""), defines, sets, zero_unset
 
 
+def _undefines(req) -> list:
+    undefines = req.get("undefine") or []
+    if not isinstance(undefines, list):
+        raise InputError("undefine", code="trace_define_list")
+    return undefines
+
+
 def _trace(req) -> dict:
+    """One call, or with ``calls``/``table`` a sequence of calls
+    (:func:`pulab.ctrace.sequence.trace_sequence`)."""
     from .ctrace import trace
+    if isinstance(req, dict) and ("calls" in req or "table" in req):
+        from .ctrace.sequence import trace_sequence
+        code, defines, sets, zero_unset = _trace_request(req, _SEQUENCE_KEYS)
+        reply = trace_sequence(code, req.get("target", "c28x"), req.get("calls"),
+                               req.get("table"), sets, req.get("global_q"), defines,
+                               req.get("entry") or None, zero_unset, _undefines(req))
+        reply.pop("ok", None)
+        return reply
     code, defines, sets, zero_unset = _trace_request(req, _TRACE_KEYS)
     reply = trace(code, req.get("target", "c28x"), sets, req.get("global_q"), defines,
-                  req.get("entry") or None, zero_unset)
+                  req.get("entry") or None, zero_unset, _undefines(req))
     reply.pop("ok", None)
     return reply
 
@@ -177,7 +195,8 @@ def _trace_prove(req):
     code, defines, sets, zero_unset = _trace_request(req, _PROVE_KEYS)
     proof = yield from prove_code_steps(code, req.get("target", "c28x"), req.get("entry") or None,
                                         req.get("range"), sets, defines, req.get("global_q"),
-                                        req.get("budget", DEFAULT_BUDGET), zero_unset)
+                                        req.get("budget", DEFAULT_BUDGET), zero_unset,
+                                        _undefines(req))
     return {"proof": proof}
 
 

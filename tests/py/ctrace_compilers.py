@@ -26,7 +26,7 @@ import pytest
 
 from ctrace_gen import TYPE_BITS
 
-__all__ = ["available", "run_cases", "run_unit", "Unit", "PRELUDE", "UNIT_PRELUDE"]
+__all__ = ["available", "run_cases", "run_unit", "run_calls", "Unit", "PRELUDE", "UNIT_PRELUDE"]
 
 #: Firmware type names and IQmath as TI defines them (DSP28x_Project.h, IQmathLib.h);
 #: _IQmpy = (long)(((long long)a * b) >> GLOBAL_Q), __IQsat(x, hi, lo) clamps.
@@ -391,3 +391,57 @@ def run_unit(unit: Unit, vectors: list, target: str, flags: tuple = ()) -> list:
 class _UnitOutputs:
     def __init__(self, outputs: list) -> None:
         self.outputs = outputs
+
+
+def run_calls(unit: Unit, rows: list, target: str) -> list:
+    """The firmware's own loop: ``unit.entry`` called once per row, in one program, its
+    pointer parameters' objects and the by-value arguments kept from call to call (the
+    caller's variables); row k assigns only the inputs it names (a bit mask per row) before
+    call k.  Returns ``unit.outputs`` after each call: a list of {name: value}."""
+    assert len(unit.inputs) <= 32 and len(rows) < 65536
+    io = _AVR_IO if target == "avr" else _HOST_IO
+    init = "UCSR0A = 1 << U2X0; UBRR0 = 0; UCSR0B = 1 << TXEN0;" if target == "avr" else ""
+    end = "cli(); sleep_cpu();" if target == "avr" else ""
+    fields = " ".join(f"{t} f{i};" for i, (t, _) in enumerate(unit.inputs))
+    table = []
+    for row in rows:
+        mask, vals = 0, []
+        for i, (spelling, name) in enumerate(unit.inputs):
+            bits, _ = TYPE_BITS(spelling, target)
+            if name in row:
+                mask |= 1 << i
+            vals.append(f"({spelling})0x{row.get(name, 0) & ((1 << bits) - 1):X}ULL")
+        table.append("{" + ", ".join([f"0x{mask:X}UL", *vals]) + "}")
+    decls, args = [], []
+    for spelling, name in unit.params:
+        if spelling.rstrip().endswith("*"):
+            decls.append(f"static {spelling.rstrip()[:-1]} o_{name};")
+            args.append(f"&o_{name}")
+        else:
+            decls.append(f"static {spelling} v_{name};")
+            args.append(f"v_{name}")
+    load = " ".join(f"if (in.mask & (1UL << {i})) {_unit_c_name(unit, n)} = in.f{i};"
+                    for i, (_, n) in enumerate(unit.inputs))
+    ret = [s for s, n in unit.outputs if n == "return"]
+    call = f"{ret[0]} ret = {unit.entry}({', '.join(args)});" if ret else \
+        f"{unit.entry}({', '.join(args)});"
+    prints = " ".join(f"put(' '); put_hex((uint64_t)({_unit_c_name(unit, n)}), "
+                      f"sizeof({_unit_c_name(unit, n)}));" for _, n in unit.outputs)
+    text = f"""{UNIT_PRELUDE}{io}{_PUT_HEX}
+{unit.prelude}
+{unit.code}
+struct in_0 {{ uint32_t mask; {fields} }};
+static const struct in_0 tbl_0[] TABLE = {{ {", ".join(table)} }};
+{" ".join(decls)}
+static void case_0(void) {{
+  uint16_t i;
+  for (i = 0; i < {len(rows)}; i++) {{
+    struct in_0 in; LOAD(in, tbl_0[i]);
+    {{ {load} {call}
+    put('@'); put_hex(0, 2); put(' '); put_hex(i, 2); {prints} put('\\n'); }}
+  }}
+}}
+int main(void) {{ {init} case_0(); {end} return 0; }}
+"""
+    with tempfile.TemporaryDirectory(prefix=f"ctrace-calls-{target}-") as d:
+        return _run_program(text, [(_UnitOutputs(unit.outputs), rows)], target, d, 0)

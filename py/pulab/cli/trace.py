@@ -1,8 +1,9 @@
 """``python -m pulab trace FILE.c --target c28x [--entry F] --set NAME=VALUE …
-[-D NAME[=VALUE]]… [--zero-unset] [--global-q N] [--format json|text]
-[--prove --range NAME=LO:HI … [--budget N]]``.
+[-D NAME[=VALUE]]… [-U NAME]… [--zero-unset] [--global-q N] [--format json|text]
+[--calls N] [--inputs TABLE.csv|TABLE.jsonl] [--prove --range NAME=LO:HI … [--budget N]]``.
 
-Prints the :func:`~pulab.ctrace.trace` JSON on stdout (with ``--prove``, the
+Prints the :func:`~pulab.ctrace.trace` JSON on stdout (with ``--calls`` or ``--inputs``, the
+:func:`~pulab.ctrace.sequence.trace_sequence` JSON; with ``--prove``, the
 :func:`~pulab.ctrace.prove.prove_code` JSON: exit 0 proven, 1 violated or unknown); bad
 code or input exits with status 2 and one line on stderr, ``error: code: LINE:COLUMN:
 MESSAGE`` or ``error: set.NAME: MESSAGE``.
@@ -20,7 +21,7 @@ from ..ctrace.tracing import trace
 from ..ctrace.types import TARGETS
 
 __all__ = ["add_trace_parser", "trace_main", "parse_sets", "parse_ranges", "format_text",
-           "format_prove_text"]
+           "format_prove_text", "format_sequence_text"]
 
 
 def add_trace_parser(sub) -> None:
@@ -41,6 +42,14 @@ def add_trace_parser(sub) -> None:
     tp.add_argument("-D", dest="define", action="append", default=[], metavar="NAME[=VALUE]",
                     help="define a macro before the code, as a compiler's -D (VALUE 1 when "
                          "absent); repeat for each")
+    tp.add_argument("-U", dest="undefine", action="append", default=[], metavar="NAME",
+                    help="remove a macro the target predefines (__GNUC__, __TMS320C2000__ …)")
+    tp.add_argument("--calls", type=str, default=None, metavar="N",
+                    help="call the entry N times, globals, statics and pointed-to objects kept "
+                         "between calls (--set applies once, before call 0)")
+    tp.add_argument("--inputs", default=None, metavar="TABLE.csv|TABLE.jsonl",
+                    help="per-call inputs: row k sets its columns before call k (an empty "
+                         "cell or missing key keeps the carried value)")
     tp.add_argument("--format", choices=("json", "text"), default="json",
                     help="json (default) or text: one line per executed statement")
     tp.add_argument("--global-q", type=str, default=None,
@@ -185,6 +194,64 @@ def format_prove_text(r: dict) -> str:
     return "\n".join(lines)
 
 
+def format_sequence_text(r: dict) -> str:
+    """One line per call: its result and flags, then the first event.
+
+    >>> from pulab.ctrace.sequence import trace_sequence
+    >>> r = trace_sequence("int a; int f(int e) { a += e; return a; }", "c28x", 2,
+    ...                    inputs={"a": 30000, "e": 2000}, entry="f")
+    >>> print(format_sequence_text(r))
+    target c28x, entry f, 2 calls; inputs: e, a
+    call 0  return 32000 (0x7D00)
+    call 1  return -31536 (0x84D0)  signed_overflow
+    first event: call 1, line 1, signed_overflow, a
+    """
+    lines = [f"target {r['target']}, entry {r['entry']}, {len(r['calls'])} calls; inputs: " +
+             (", ".join(r["inputs"]) or "none")]
+    for k, c in enumerate(r["calls"]):
+        ret = c["return"]
+        line = f"call {k}" + (f"  return {ret['value']} ({ret['hex']})"
+                              if ret is not None and ret.get("value") is not None else "")
+        if c["flags"]:
+            line += "  " + ", ".join(c["flags"])
+        lines.append(line)
+    e = r["first_event"]
+    lines.append("first event: none" if e is None else
+                 f"first event: call {e['call']}, line {e['line']}, {e['kind']}, {e['name']}")
+    return "\n".join(lines)
+
+
+def _sequence(code: str, args: argparse.Namespace, gq) -> int:
+    from ..ctrace.sequence import MAX_CALLS, read_table, trace_sequence
+    calls = None
+    if args.calls is not None:
+        try:
+            calls = int(args.calls)
+        except ValueError:
+            raise InputError("calls", code="integer_range", lo=1, hi=MAX_CALLS,
+                             got=shown(args.calls)) from None
+    table = None
+    if args.inputs is not None:
+        kind = args.inputs.rpartition(".")[2].lower()
+        if kind not in ("csv", "jsonl"):
+            raise InputError("inputs", code="trace_table_kind", name=shown(args.inputs))
+        try:
+            with open(args.inputs, encoding="utf-8-sig", newline="") as f:
+                text = f.read()
+        except (OSError, UnicodeDecodeError) as e:
+            raise InputError("inputs", code="trace_table_read", name=shown(args.inputs),
+                             reason=str(getattr(e, "strerror", None) or e)) from None
+        table = read_table(text, kind)
+    r = trace_sequence(code, args.target, calls, table, parse_sets(args.set), gq, args.define,
+                       args.entry, args.zero_unset, args.undefine)
+    if args.format == "text":
+        sys.stdout.write(format_sequence_text(r) + "\n")
+    else:
+        json.dump(r, sys.stdout, indent=1, ensure_ascii=False, allow_nan=False)
+        sys.stdout.write("\n")
+    return 0
+
+
 def _prove(code: str, args: argparse.Namespace, gq) -> int:
     from ..ctrace.prove import DEFAULT_BUDGET, MAX_BUDGET, prove_code
     budget = DEFAULT_BUDGET
@@ -195,7 +262,8 @@ def _prove(code: str, args: argparse.Namespace, gq) -> int:
             raise InputError("budget", code="integer_range", lo=1, hi=MAX_BUDGET,
                              got=shown(args.budget)) from None
     r = prove_code(code, args.target, args.entry, parse_ranges(args.ranges),
-                   parse_sets(args.set), args.define, gq, budget, args.zero_unset)
+                   parse_sets(args.set), args.define, gq, budget, args.zero_unset,
+                   args.undefine)
     if args.format == "text":
         sys.stdout.write(format_prove_text(r) + "\n")
     else:
@@ -229,10 +297,15 @@ def trace_main(args: argparse.Namespace) -> int:
             except ValueError:
                 raise InputError("global_q", code="integer_range", lo=1, hi=30,
                                  got=shown(args.global_q)) from None
+        sequence = args.calls is not None or args.inputs is not None
+        if args.prove and sequence:
+            raise InputError("calls", code="trace_calls_prove")
         if args.prove:
             return _prove(code, args, gq)
+        if sequence:
+            return _sequence(code, args, gq)
         result = trace(code, args.target, parse_sets(args.set), gq, args.define, args.entry,
-                       args.zero_unset)
+                       args.zero_unset, args.undefine)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2

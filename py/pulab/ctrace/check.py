@@ -34,8 +34,9 @@ import re
 
 from ..fixedpoint.cint import CType
 from .errors import TraceError
+from .lexer import quoted
 from .macro_entry import entry_macros
-from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FuncDef,
+from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FNum, FuncDef,
                      If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
                      NodeVisitor, Program, Ptr, Return, StructDef, Switch, Unary, Unsupported,
                      Var, constant_value, IQ_FUNCTIONS)
@@ -45,6 +46,8 @@ from .types import Target, common_type, promote
 __all__ = ["check", "Checked", "Symbol", "StructT", "PtrT", "ArrT", "VOID", "leaves", "pointee",
            "MAX_ELEMENTS", "MAX_ANALYSIS"]
 
+#: A name spelled as C macros are (upper case, digits, underscores).
+_MACRO_NAME = re.compile(r"_*[A-Z][A-Z0-9_]*")
 #: Larger arrays (and objects with more integers) are refused.
 MAX_ELEMENTS = 4096
 #: The inputs analysis follows calls into their bodies; beyond this many visited nodes the
@@ -220,6 +223,9 @@ class Checked:
         t = self.roots.get(head)
         if isinstance(t, PtrT):
             t = t.to if t.n is None else ArrT(t.to, t.n)
+        elif t is None and head.startswith("*"):  # the integer a pointer parameter points to
+            t = self.roots.get(head[1:])
+            t = t.to if isinstance(t, PtrT) and t.n is None else None
         for part in re.findall(r"\.(\w+)|\[(\d+)\]", path[len(head):]):
             if isinstance(t, PtrT):  # a pointer field's own object (see linked)
                 t = t.to
@@ -284,6 +290,12 @@ class _Checker(NodeVisitor):
         sym = self.lookup(var.name)
         if sym is None:
             self.refused(var.name, var)
+            if _MACRO_NAME.fullmatch(var.name):  # spelled as a macro: -D can give it
+                if self.program.unresolved:
+                    raise TraceError(var.line, var.column, code="trace_undeclared_macro",
+                                     name=var.name, headers=", ".join(self.program.unresolved))
+                raise TraceError(var.line, var.column, code="trace_undeclared_define",
+                                 name=var.name)
             raise TraceError(var.line, var.column, code="trace_undeclared", name=var.name)
         return sym
 
@@ -371,6 +383,9 @@ class _Checker(NodeVisitor):
     # -- statements
     def visit_Decl(self, s: Decl) -> None:
         for var, init, desc in s.items:
+            if isinstance(desc, Arr) and desc.size is None and init is None and \
+                    self.function is None and len(self.scopes) == 1:
+                desc = self.completed(var.name, desc)
             if isinstance(desc, Arr) and desc.size is None and isinstance(init, InitList):
                 desc = Arr(desc.of, Num(len(init.items), str(len(init.items))))
             ctype = self.resolve(desc, s if isinstance(desc, str) else var)
@@ -379,6 +394,19 @@ class _Checker(NodeVisitor):
             sym = self.declare(var.name, s.type_name, ctype, init is not None, var)
             var.ctype = ctype
             var.sym = sym
+
+    def completed(self, name: str, desc: Arr) -> Arr:
+        """``extern T t[];`` (a header) takes its size from the file-scope definition that
+        completes it later, ``T t[N]`` or ``T t[] = {…}`` (C99 6.9.2); ``desc`` when none."""
+        for s in self.program.statements:
+            if isinstance(s, Decl):
+                for var, init, d in s.items:
+                    if var.name == name and isinstance(d, Arr):
+                        if d.size is not None:
+                            return Arr(desc.of, d.size)
+                        if isinstance(init, InitList):
+                            return Arr(desc.of, Num(len(init.items), str(len(init.items))))
+        return desc
 
     def visit_ExprStmt(self, s: ExprStmt) -> None:
         self.expr(s.expr, void_ok=True)
@@ -567,7 +595,11 @@ class _Checker(NodeVisitor):
             if isinstance(e.type_name, Ptr):
                 return self.pointer_cast(e)
             self.scalar(e.operand)
-            return _type_of(target, e.type_name, e)
+            t = _type_of(target, e.type_name, e)
+            if e.folded is not None and not t.min <= int(e.folded) <= t.max:
+                raise TraceError(e.line, e.column, code="trace_float_cast_range",
+                                 text=repr(e.folded), value=int(e.folded), type=e.type_name)
+            return t
         if kind is Assign:
             tt = self.expr(e.target)
             if not isinstance(tt, CType):
@@ -593,6 +625,9 @@ class _Checker(NodeVisitor):
             return tt
         if kind is Call:
             return self.call(e)
+        if kind is FNum:  # left unfolded: not cast to an integer type
+            raise TraceError(e.line, e.column, code="trace_float_constant",
+                             text=quoted(e.text))
         raise AssertionError(kind.__name__)  # the parser makes no other node
 
     def pointer_cast(self, e: Cast) -> PtrT:

@@ -145,6 +145,15 @@ class Evaluator(NodeVisitor):
         self.last_path: str | None = None
         #: Undefined behaviour (ISO C) met: signed_overflow, division_overflow, shift_count.
         self.undefined: set = set()
+        #: the paths of the ``static`` locals initialized so far (kept across calls)
+        self.statics: set = set()
+        #: with ``record`` False and ``watch`` a tuple of flags: the flags met (``seen``) and
+        #: the first of ``watch`` met (``event``: line, flag, the variable its statement
+        #: stores or else the expression's text), in the order the recorded steps list them
+        self.watch: tuple = ()
+        self.seen: set = set()
+        self.event: tuple | None = None
+        self._pending: tuple | None = None  # a term's event, named by its statement's step
         self.int = checked.target.types["int"]
         self.long = checked.target.types["long"]
 
@@ -159,8 +168,29 @@ class Evaluator(NodeVisitor):
                  "hex": hex_of(value, t.bits) if value is not None else None, "flags": flags}
             d.update(extra)
             self.terms.append(d)
+        elif self.watch and flags:
+            self.met(node, flags)
+
+    def met(self, node, flags) -> None:
+        """Watch mode: flags of a term (a sub-expression, or a call's argument conversions)."""
+        self.seen.update(flags)
+        if self.event is None and self._pending is None:
+            kind = next((f for f in flags if f in self.watch), None)
+            if kind is not None:
+                self._pending = (len(self.active), node.line, kind,
+                                 self.source[node.start:node.end])
 
     def step(self, stmt, code: str, var: str | None, value: int, ctype, **extra) -> None:
+        if not self.record and self.watch:
+            flags = extra.get("flags", ())
+            self.seen.update(flags)
+            pending = self._pending
+            if pending is not None and pending[0] == len(self.active):
+                self.event, self._pending = (pending[1], pending[2], var or pending[3]), None
+            elif self.event is None and pending is None:
+                kind = next((f for f in flags if f in self.watch), None)
+                if kind is not None:
+                    self.event = (stmt.line, kind, var or code)
         if self.record:
             flags = sorted({f for t in self.terms for f in t["flags"]} |
                            set(extra.pop("flags", ())), key=FLAGS.index)
@@ -211,6 +241,23 @@ class Evaluator(NodeVisitor):
         (empty when not recording)."""
         for s in self.checked.program.statements:
             self.statement(s)
+        self.enter()
+        return self.steps
+
+    def again(self, inputs: dict) -> list:
+        """Run the entry once more on the memory the last run left (globals, ``static``
+        locals, what pointer parameters point to), ``inputs`` (validated, as the
+        constructor's) given first: the firmware's next control period.  Returns its steps."""
+        self.inputs = inputs
+        self.unset = [n for n in self.names if n not in inputs and self.mem.get(n) is None]
+        self.steps, self.terms, self.count, self.undefined = [], [], 0, set()
+        self.seen, self.event, self._pending = set(), None, None
+        self.mem.update(inputs)  # globals; the entry's own inputs get their steps in enter
+        self.enter()
+        return self.steps
+
+    def enter(self) -> None:
+        """Call the entry (when there is one), then read every variable's value."""
         f = self.checked.entry
         if f is not None:
             self.written = set()  # what the function writes, not the globals' initializers
@@ -235,7 +282,6 @@ class Evaluator(NodeVisitor):
                                  code="trace_return_local", name=f.name, got=value)
         for name in (*self.checked.symbols, *self.checked.pointers):
             self.values[name] = self.mem.get(name)
-        return self.steps
 
     def given(self, node, code: str, path: str, t, spelling: str) -> None:
         """Give the input ``path`` its value; a pointer's step names what it points to."""
@@ -266,6 +312,15 @@ class Evaluator(NodeVisitor):
         for var, init, _ in s.items:
             sym = var.sym
             t, key = sym.ctype, sym.key
+            if s.static and self.active:  # initialized once, before the first call reaches it
+                if key in self.statics:
+                    continue
+                paths = leaves(key, t, sym.spelling)
+                self.statics.update([key, *(path for path, _, _ in paths)])
+                if init is None:  # zero, as every object of static storage (C99 6.7.8p10)
+                    for path, lt, _ in paths:
+                        self.mem[path] = 0 if isinstance(lt, CType) else None
+                    continue
             if init is None:
                 for path, lt, spelling in leaves(key, t, sym.spelling):
                     if path in self.inputs:
@@ -709,7 +764,8 @@ class Evaluator(NodeVisitor):
                 v = [(leaf[len(v):], self.mem.get(leaf)) for leaf, _, _ in leaves(v, p.ctype)]
             args.append(v)
         mem = self.mem
-        for k in [k for k in mem if k.startswith(f.prefix)]:
+        statics = self.statics
+        for k in [k for k in mem if k.startswith(f.prefix) and k not in statics]:
             del mem[k]  # a fresh frame: the callee's locals have no value yet
         for p, v in zip(f.params, args):
             if isinstance(p.ctype, StructT):
@@ -730,6 +786,8 @@ class Evaluator(NodeVisitor):
                                "value": value if scalar else None,
                                "hex": hex_of(value, t.bits) if scalar else None,
                                "flags": flags, "call": f.name, "steps": inner})
+        elif self.watch and flags:
+            self.met(e, flags)
         return value
 
     def call(self, e: Call) -> int:

@@ -46,6 +46,7 @@ Examples
 from __future__ import annotations
 
 import re
+import struct
 
 from ..fixedpoint.cint import trunc_div
 from .errors import TraceError
@@ -54,7 +55,7 @@ from .preprocess import preprocess
 from .types import BASE_TYPE_WORDS, TARGETS
 
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
-           "Cast", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
+           "Cast", "FNum", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
            "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr",
            "Arr", "Unsupported", "NodeVisitor",
            "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
@@ -82,6 +83,9 @@ _CONST_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
               "/": trunc_div, "%": lambda a, b: a - b * trunc_div(a, b),
               "<<": int.__lshift__, ">>": int.__rshift__, "&": int.__and__, "|": int.__or__,
               "^": int.__xor__}
+#: A decimal floating constant (C99 6.4.4.2): its digits, its suffix.
+_FLOAT_LITERAL = re.compile(r"((?:[0-9]+\.[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?|[0-9]+[eE][-+]?[0-9]+)"
+                            r"([fFlL]?)")
 _IQ_N = re.compile(r"_IQ([1-9]|[12][0-9]|30)mpy")
 #: The IQmath calls understood, with their argument counts.
 IQ_FUNCTIONS = {"_IQmpy": 2, "__IQmpy": 3, "_IQsat": 3, "__IQsat": 3, "_IQabs": 1}
@@ -160,6 +164,18 @@ class Num(Node):
         self.value, self.text = value, text
 
 
+class FNum(Node):
+    """A floating constant, or a constant expression of them folded by the parser:
+    ``value`` is already rounded to its type, ``single`` (binary32: ``float``, or ``double``
+    where the target's double is 32 bits) or binary64.  Only a cast to an integer type
+    (or a comparison) turns it into an integer; anywhere else the checker refuses it."""
+
+    __slots__ = ("value", "single", "text")
+
+    def __init__(self, value: float, single: bool, text: str) -> None:
+        self.value, self.single, self.text = value, single, text
+
+
 class Var(Node):
     __slots__ = ("name", "sym")
 
@@ -201,13 +217,16 @@ class Cond(Node):
 
 class Cast(Node):
     """``(TYPE)operand``: ``type_name`` a scalar spelling or a :class:`Ptr` descriptor;
-    ``from_void`` (set by the checker) when a ``void *`` becomes an object pointer."""
+    ``from_void`` (set by the checker) when a ``void *`` becomes an object pointer;
+    ``folded`` the floating constant a cast to an integer type was folded from (the
+    operand is then its integer, truncated toward zero), else None."""
 
-    __slots__ = ("type_name", "operand", "from_void")
+    __slots__ = ("type_name", "operand", "from_void", "folded")
     CHILDREN = ("operand",)
 
-    def __init__(self, type_name, operand: Node) -> None:
-        self.type_name, self.operand, self.from_void = type_name, operand, False
+    def __init__(self, type_name, operand: Node, folded: float | None = None) -> None:
+        self.type_name, self.operand, self.from_void, self.folded = type_name, operand, \
+            False, folded
 
 
 class Assign(Node):
@@ -529,6 +548,7 @@ class _Parser:
         self.loops = 0  # loops around the statement being parsed
         self.switches = 0  # switch statements around it
         self.in_function = False
+        self.single_double = False  # the target's double is binary32 (avr-gcc)
 
     # -- token helpers
     def peek(self, k: int = 0) -> Token:
@@ -1125,6 +1145,18 @@ class _Parser:
         self.expect(":", "conditional")
         other = self.conditional()
         self.shallower()
+        if type(test) is FNum:  # a constant condition compares with 0 in its own type
+            test = Num(int(test.value != 0), test.text).at(first, first)
+            test.ctype = ["int"]
+        if type(then) is FNum or type(other) is FNum:
+            if not (type(test) is Num and _constant(then) and _constant(other)):
+                bad = then if type(then) is FNum else other
+                raise TraceError.at(bad, code="trace_float_constant", text=quoted(bad.text))
+            single = all(type(x) is not FNum or x.single for x in (then, other))
+            pick = then if test.value else other
+            value = pick.value if type(pick) is FNum else float(pick.value)
+            return FNum(_f32(value) if single else value, single,
+                        self.source[first.start:self.last().end]).at(first, self.last())
         return Cond(test, then, other).at(first, self.last())
 
     def binary(self, min_prec: int) -> Node:
@@ -1147,6 +1179,10 @@ class _Parser:
             self.deeper()
             right = self.binary(prec + 1)
             self.shallower()
+            if (type(left) is FNum or type(right) is FNum) and _constant(left) and \
+                    _constant(right):
+                left = _fold(tok, left, right).at(first, tokens[self.pos - 1])
+                continue
             node = Logical(tok.text, left, right) if tok.text in ("&&", "||") else \
                 Binary(tok.text, left, right)
             left = node.at(first, tokens[self.pos - 1])
@@ -1160,6 +1196,9 @@ class _Parser:
             self.shallower()
             if tok.text == "&" and not _is_place(operand):
                 raise TraceError.at(tok, code="trace_needs_variable", op="&")
+            if type(operand) is FNum and tok.text in "+-":
+                value = -operand.value if tok.text == "-" else operand.value
+                return FNum(value, operand.single, operand.text).at(tok, self.last())
             return Unary(tok.text, operand).at(tok, self.last())
         if tok.text in ("++", "--"):
             self.take()
@@ -1176,6 +1215,8 @@ class _Parser:
             self.deeper()
             operand = self.unary()
             self.shallower()
+            if type(operand) is FNum and isinstance(type_name, str):
+                return self.float_cast(type_name, operand, tok)
             return Cast(type_name, operand).at(tok, self.last())
         return self.postfix()
 
@@ -1217,6 +1258,11 @@ class _Parser:
         tok = self.peek()
         if tok.kind == "number":
             self.take()
+            m = _FLOAT_LITERAL.fullmatch(tok.text)
+            if m is not None:
+                single = m[2] in ("f", "F") or self.single_double
+                value = float(m[1])
+                return FNum(_f32(value) if single else value, single, tok.text).at(tok, tok)
             value, cands = _int_constant(tok)
             n = Num(value, tok.text).at(tok, tok)
             n.ctype = cands  # resolved to one type by the checker (it knows the target)
@@ -1246,6 +1292,20 @@ class _Parser:
                 return n
             return Var(tok.text).at(tok, tok)
         raise TraceError.at(tok, code="trace_expected_value", got=_got(tok))
+
+    def float_cast(self, type_name: str, operand: FNum, tok: Token) -> Node:
+        """``(T)constant`` with a floating constant and an integer ``T``: the integer the
+        compiler folds it to, truncated toward zero (C99 6.3.1.4); out of ``T``'s range is
+        refused by the checker (undefined in C).  Negative: ``-N`` (its type is ``N``'s)."""
+        v = operand.value
+        if v != v or v in (float("inf"), float("-inf")):
+            raise TraceError.at(tok, code="trace_float_cast_range", text=quoted(operand.text),
+                                value=repr(v), type=type_name)
+        n = int(v)  # Python's int() of a float truncates toward zero
+        num = Num(abs(n), str(abs(n))).at(tok, self.last())
+        num.ctype = ["int", "long", "long long", "unsigned long long"]
+        inner = Unary("-", num).at(tok, self.last()) if n < 0 else num
+        return Cast(type_name, inner, v).at(tok, self.last())
 
     def call(self) -> Node:
         tok = self.take()
@@ -1277,6 +1337,45 @@ class _Parser:
             q = qa.value
             args = args[:2]
         return Call(name, args, q).at(tok, self.last())
+
+
+def _f32(x: float) -> float:
+    """``x`` rounded to binary32 (infinite beyond its range, as the hardware rounds)."""
+    try:
+        return struct.unpack("<f", struct.pack("<f", x))[0]
+    except OverflowError:
+        return x * float("inf")
+
+
+def _constant(node: Node) -> bool:
+    """A literal the parser can fold: a floating constant or an integer constant."""
+    return type(node) is FNum or (type(node) is Num and isinstance(node.ctype, list))
+
+
+def _fold(tok: Token, left: Node, right: Node) -> Node:
+    """``left OP right`` with a floating operand, folded as C evaluates it with
+    FLT_EVAL_METHOD 0 (arm-gcc, avr-gcc, TI's cl2000): the integer operand converted,
+    ``float`` arithmetic when both are ``float`` (rounded to binary32 after the operation,
+    which equals binary32 arithmetic for ``+ - * /``), else ``double``; a comparison or
+    ``&&``/``||`` is an ``int`` 0 or 1."""
+    op = tok.text
+    single = all(type(x) is not FNum or x.single for x in (left, right))
+    a, b = (float(x.value) for x in (left, right))
+    if single:
+        a, b = _f32(a), _f32(b)
+    if op in ("<", ">", "<=", ">=", "==", "!=", "&&", "||"):
+        value = {"<": a < b, ">": a > b, "<=": a <= b, ">=": a >= b, "==": a == b,
+                 "!=": a != b, "&&": a != 0 and b != 0, "||": a != 0 or b != 0}[op]
+        n = Num(int(value), op)
+        n.ctype = ["int"]
+        return n
+    if op not in ("+", "-", "*", "/"):
+        raise TraceError.at(tok, code="trace_float_operator", op=op)
+    if op == "/" and b == 0:
+        raise TraceError.at(tok, code="trace_division_zero")
+    value = a + b if op == "+" else a - b if op == "-" else a * b if op == "*" else a / b
+    text = left.text if type(left) is FNum else right.text
+    return FNum(_f32(value) if single else value, single, text)
 
 
 def constant_value(node: Node, what: str) -> int:
@@ -1326,6 +1425,7 @@ def parse(source: str, type_names: frozenset = ALL_TYPE_NAMES,
     tokens, notes = _notes(pre.tokens)
     p = _Parser(source, tokens + tokens[-1:])
     p.type_names = type_names
+    p.single_double = target is not None and target.double_bits == 32
     prog = Program(source, p.program(), notes, pre.global_q, p.functions, p.refused)
     prog.unresolved = pre.unresolved
     prog.macros, prog.aliases = pre.macros, p.aliases

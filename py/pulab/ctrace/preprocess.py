@@ -60,6 +60,9 @@ _IQ_BUILTIN = re.compile(r"_IQ(?P<n>[1-9]|[12][0-9]|30)?\Z|_I?Q(?P<from>[1-9]|[1
                          r"(?P<k>2|4|8|16|32|64)\Z")
 _FLOAT = re.compile(r"([0-9]+\.?[0-9]*(?:[eE][-+]?[0-9]+)?)([fFlL]?)\Z")
 _DIRECTIVE = re.compile(r"#\s*(\w*)(.*)", re.S)
+#: A comment (group 1), or a string or character literal a comment cannot start inside.
+_COMMENT_OR_QUOTE = re.compile(r'(/\*.*?\*/|//[^\n]*)|"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'',
+                               re.S)
 
 
 def _limits() -> dict:
@@ -122,6 +125,8 @@ def _tokens(text: str) -> list:
 def _body_tokens(text: str, at: Token, what: str) -> list:
     """Tokens of directive text, positioned on the directive's line."""
     toks: list = []
+    # A comment is one blank (C99 5.1.1.2 phase 3), whatever '#' it holds.
+    text = _COMMENT_OR_QUOTE.sub(lambda m: " " if m[1] else m[0], text)
     # '#' and '##' are operators inside a directive (the lexer reads '#' as a new directive).
     for piece in re.split(r"(##|#)", text):
         if piece in ("#", "##"):
@@ -187,6 +192,7 @@ class _Pre:
         self.macros: dict = {}
         self.global_q = None
         self.unresolved: list = []
+        self.defined: set = set()  # every macro name defined, without its edge underscores
         self.conds: list = []  # per open #if: [taking now, some branch taken, #else seen, token]
         self.produced = 0
         self.end = None
@@ -197,6 +203,7 @@ class _Pre:
     # -- directives ---------------------------------------------------------------------
     def define(self, mac: _Macro, at: Token) -> None:
         self.macros[mac.name] = mac
+        self.defined.add(mac.name.strip("_"))
         if mac.name == "GLOBAL_Q":
             b = mac.body
             if mac.params is not None or len(b) != 1 or not b[0].text.isdigit() or \
@@ -722,4 +729,8 @@ def preprocess(tokens: list, defines: dict | None = None, global_q: int = 24,
     pre.single = double_bits == 32
     out = pre.run(deque(), pre.source_tokens())
     out.append(pre.end)
-    return Preprocessed(out, pre.global_q, pre.unresolved, pre.macros)
+    # A header whose include guard (mc_math.h: MC_MATH_H, __MC_MATH_H__) the paste defines is
+    # pasted: not missing.
+    missing = [h for h in pre.unresolved
+               if re.sub(r"\W", "_", h.rpartition("/")[2]).upper() not in pre.defined]
+    return Preprocessed(out, pre.global_q, missing, pre.macros)

@@ -44,7 +44,7 @@ from ..schema.validate import key_path, shown
 from .abstract import FAILURES, BoxEvaluator, Split
 from .errors import TraceError
 from .parser import If, Loop, NodeVisitor, Stmt, Switch
-from .tracing import DEFAULT_GLOBAL_Q, _input_values, compile_code, inputs_for, run_checked
+from .tracing import DEFAULT_GLOBAL_Q, input_values, compile_code, inputs_for, run_checked
 
 __all__ = ["prove_code", "prove_code_steps", "DEFAULT_BUDGET", "MAX_BUDGET"]
 
@@ -257,12 +257,12 @@ def _raw(real: tuple, n: int) -> tuple:
 def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
                      ranges: dict | None = None, inputs: dict | None = None, defines=None,
                      global_q: int | None = None, budget: int = DEFAULT_BUDGET,
-                     zero_unset: bool = False):
+                     zero_unset: bool = False, undefines=None):
     """:func:`prove_code` in slices: a generator that yields None between slices of runs and
     returns the result; closing it cancels the proof."""
     if isinstance(budget, bool) or not isinstance(budget, int) or not 1 <= budget <= MAX_BUDGET:
         raise InputError("budget", code="integer_range", lo=1, hi=MAX_BUDGET, got=shown(budget))
-    checked = compile_code(code, target, defines, global_q, entry)
+    checked = compile_code(code, target, defines, global_q, entry, undefines)
     notes = checked.program.notes
     auto = [n for n in checked.inputs if n in notes and notes[n].q is None]
     if not isinstance(ranges, dict):
@@ -278,7 +278,7 @@ def prove_code_steps(code: str, target: str = "c28x", entry: str | None = None,
                   names)
     sets = {k: v for k, v in (inputs or {}).items()
             if (k.strip().replace("->", ".") if isinstance(k, str) else k) not in box}
-    fixed = _input_values(checked, sets, zero_unset)
+    fixed = input_values(checked, sets, zero_unset)
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     pb = _Problem(checked, box, fixed, gq)
     pb.inputs = names
@@ -487,7 +487,7 @@ def _local_proposals(checked, statements: list) -> dict:
 def prove_code(code: str, target: str = "c28x", entry: str | None = None,
                ranges: dict | None = None, inputs: dict | None = None, defines=None,
                global_q: int | None = None, budget: int = DEFAULT_BUDGET,
-               zero_unset: bool = False) -> dict:
+               zero_unset: bool = False, undefines=None) -> dict:
     """Prove every statement of ``code`` free of overflow, wrap and conversion loss over a box.
 
     Parameters
@@ -501,7 +501,7 @@ def prove_code(code: str, target: str = "c28x", entry: str | None = None,
         Input name → ``[lo, hi]``, integers of the input's type (at least one).
     inputs : dict, optional
         Input name → integer for the inputs without a range (as :func:`~pulab.ctrace.trace`'s).
-    defines, global_q, zero_unset
+    defines, global_q, zero_unset, undefines
         As for :func:`~pulab.ctrace.trace`.
     budget : int in 1..1000000
         Runs allowed (interval runs of a box + concrete runs of a point).
@@ -524,4 +524,4 @@ def prove_code(code: str, target: str = "c28x", entry: str | None = None,
         Bad code, target, range, input value or budget.
     """
     return finish(prove_code_steps(code, target, entry, ranges, inputs, defines, global_q,
-                                   budget, zero_unset))
+                                   budget, zero_unset, undefines))

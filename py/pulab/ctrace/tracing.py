@@ -26,7 +26,7 @@ from ..schema.errors import InputError
 from ..schema.validate import key_path, shown
 
 __all__ = ["trace", "trace_checked", "compile_code", "run_checked", "rounding_summary",
-           "inputs_for", "DEFAULT_GLOBAL_Q"]
+           "inputs_for", "result_vars", "input_values", "DEFAULT_GLOBAL_Q"]
 
 #: The object a pointer input is given as ``&OBJECT``: a name, its fields and elements.
 _OBJECT = re.compile(r"[A-Za-z_]\w*(?:\.[A-Za-z_]\w*|\[\d+\])*")
@@ -49,20 +49,61 @@ def _defines(defines) -> dict:
     return out
 
 
+def _undefines(undefines) -> set:
+    out = set()
+    for i, name in enumerate(undefines or ()):
+        if not isinstance(name, str) or not re.fullmatch(r"[A-Za-z_]\w*", name.strip()):
+            raise InputError(f"undefine[{i}]", code="trace_undefine_name", got=shown(name))
+        out.add(name.strip())
+    return out
+
+
+#: The programs compiled last (see :func:`compile_code`), most recent last.
+_COMPILED: dict = {}
+#: How many compiled programs are kept.
+COMPILED_KEPT = 8
+
+
 def compile_code(code: str, target: str = "c28x", defines=None,
-                 global_q: int | None = None, entry: str | None = None) -> Checked:
+                 global_q: int | None = None, entry: str | None = None,
+                 undefines=None) -> Checked:
     """Parse and type ``code`` for ``target`` (reusable for many input vectors);
-    ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``; ``global_q`` is the Q the
+    ``defines`` is a list of ``-D`` texts ``NAME[=VALUE]``, made after the target's
+    predefined macros (:attr:`~pulab.ctrace.types.Target.predefined`) less the names in
+    ``undefines`` (``-U NAME``); ``global_q`` is the Q the
     IQmath conversion macros (``_IQ(0.5)``…) use when the code does not define GLOBAL_Q;
     ``entry`` the function to run (None: the statements outside functions), or a
-    function-like macro as ``NAME`` or ``NAME(TYPE, …)`` (see :mod:`~pulab.ctrace.macro_entry`)."""
+    function-like macro as ``NAME`` or ``NAME(TYPE, …)`` (see :mod:`~pulab.ctrace.macro_entry`).
+
+    The last :data:`COMPILED_KEPT` programs are kept: the same request again (a page
+    re-tracing as the user edits inputs, a sequence's calls) is not parsed or checked again
+    (the checked program is never changed by a run).
+    """
+    try:
+        key = (code, target, tuple(defines or ()), tuple(undefines or ()), global_q, entry)
+        hash(key)
+    except TypeError:  # an unhashable request is refused by _compile
+        key = None
+    checked = _COMPILED.pop(key, None) if key is not None else None
+    if checked is None:
+        checked = _compile(code, target, defines, global_q, entry, undefines)
+    if key is not None:
+        _COMPILED[key] = checked
+        while len(_COMPILED) > COMPILED_KEPT:
+            del _COMPILED[next(iter(_COMPILED))]
+    return checked
+
+
+def _compile(code, target, defines, global_q, entry, undefines) -> Checked:
     if entry is not None and (not isinstance(entry, str) or split_entry(entry) is None):
         raise InputError("entry", code="trace_entry_name", got=shown(entry))
     if not isinstance(target, str) or target not in TARGETS:
         raise InputError("target", code="not_choice", choices=", ".join(TARGETS), got=shown(target))
     t = TARGETS[target]
     gq = global_q if isinstance(global_q, int) and 1 <= global_q <= 30 else DEFAULT_GLOBAL_Q
-    defs = _defines(defines)
+    gone = _undefines(undefines)
+    defs = {k: v for k, v in t.predefined if k not in gone}
+    defs.update(_defines(defines))
     program = parse(code, defines=defs, global_q=gq, target=t)
     if entry is None:
         return check(program, t)
@@ -77,7 +118,9 @@ def compile_code(code: str, target: str = "c28x", defines=None,
     return check(program, t, name)
 
 
-def _input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> dict:
+def input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> dict:
+    """``inputs`` checked against the code (names, types, ranges; ``&OBJECT`` for a pointer)
+    as path → integer (or object path); ``zero_unset`` adds 0 for every input not given."""
     out = {}
     for name, value in inputs.items():
         if isinstance(name, str):
@@ -167,7 +210,7 @@ def run_checked(checked: Checked, inputs: dict, global_q: int | None = None,
     not set the value 0); returns the finished :class:`~pulab.ctrace.evaluate.Evaluator`
     (``values``, ``steps``, ``undefined``)."""
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
-    ev = Evaluator(checked, _input_values(checked, inputs or {}, zero_unset), gq, record)
+    ev = Evaluator(checked, input_values(checked, inputs or {}, zero_unset), gq, record)
     ev.run()
     return ev
 
@@ -209,7 +252,7 @@ def rounding_summary(steps: list) -> dict:
 
 def trace(code: str, target: str = "c28x", inputs: dict | None = None,
           global_q: int | None = None, defines=None, entry: str | None = None,
-          zero_unset: bool = False) -> dict:
+          zero_unset: bool = False, undefines=None) -> dict:
     """Trace C code as ``target``'s compiler computes it.
 
     Parameters
@@ -223,7 +266,10 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
     global_q : int in 1..30, optional
         IQmath's GLOBAL_Q (default 24); ``#define GLOBAL_Q`` in the code wins.
     defines : list of str, optional
-        ``NAME[=VALUE]`` definitions made before the code, as a compiler's ``-D``.
+        ``NAME[=VALUE]`` definitions made before the code, as a compiler's ``-D`` (after the
+        target's predefined macros, :attr:`~pulab.ctrace.types.Target.predefined`).
+    undefines : list of str, optional
+        Predefined macros to remove, as a compiler's ``-U NAME``.
     entry : str, optional
         The function of the code to run; its integer parameters, the fields of the structs
         its pointer parameters point to (``p.FIELD``), the integers they point to (``*out``)
@@ -250,7 +296,7 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
         and ``inputs``, ``functions`` and ``macros`` once the code compiled.
     """
     try:
-        checked = compile_code(code, target, defines, global_q, entry)
+        checked = compile_code(code, target, defines, global_q, entry, undefines)
     except InputError as e:
         err = TraceError.of(e)
         if e.field == "entry" and isinstance(code, str):
@@ -278,7 +324,7 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
         raise InputError("global_q", code="integer_range", lo=1, hi=30, got=shown(global_q))
     inputs = inputs or {}
     ev = run_checked(checked, inputs, global_q, zero_unset=zero_unset)
-    values, steps = ev.values, ev.steps
+    steps = ev.steps
     given = {k.strip().replace("->", ".") if isinstance(k, str) else k for k in inputs}
     if zero_unset:
         given |= set(ev.names)
@@ -287,11 +333,26 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
     for s in steps:
         if s["var"] in notes:
             s.update(_meaning(notes[s["var"]], s["value"]))
+    return {"ok": True, "target": checked.target.name, "global_q": gq,
+            "entry": checked.entry.name if checked.entry is not None else None,
+            "rounding": rounding_summary(steps),
+            "functions": [f for f in checked.functions if f not in checked.program.macros],
+            "macros": entry_macros(checked.program),
+            "unresolved_includes": list(checked.program.unresolved),
+            "inputs": ev.names, "vars": result_vars(checked, ev, given), "steps": steps}
+
+
+def result_vars(checked: Checked, ev: Evaluator, given: set, keep=frozenset()) -> dict:
+    """``vars`` of a finished run: every variable the run read, wrote or was given (the
+    names in ``given``) or named in ``keep`` (a sequence's state), pointers given and the
+    entry's result."""
+    values = ev.values
+    notes = {k: n for k, n in checked.program.notes.items() if n.q is not None}
     out_vars = {}
     entry = checked.entry
     for name, sym in checked.symbols.items():
         if entry is not None and name not in given and name not in ev.written and \
-                name not in checked.inputs:
+                name not in checked.inputs and name not in keep:
             continue  # a field the function neither reads nor writes
         v = values[name]
         d = {"type": sym.spelling, "c_type": sym.ctype.name, "bits": sym.ctype.bits,
@@ -317,10 +378,4 @@ def trace_checked(checked: Checked, inputs: dict | None = None,
         out_vars["return"] = {"type": entry.ret_spelling, "c_type": entry.ret.name,
                               "bits": entry.ret.bits, "signed": entry.ret.signed, "value": v,
                               "hex": hex_of(v, entry.ret.bits), "input": False}
-    return {"ok": True, "target": checked.target.name, "global_q": gq,
-            "entry": entry.name if entry is not None else None,
-            "rounding": rounding_summary(steps),
-            "functions": [f for f in checked.functions if f not in checked.program.macros],
-            "macros": entry_macros(checked.program),
-            "unresolved_includes": list(checked.program.unresolved),
-            "inputs": ev.names, "vars": out_vars, "steps": steps}
+    return out_vars

@@ -60,6 +60,8 @@ class Target:
         Whether plain ``char`` is signed.
     double_bits : {64, 32}
         The width of ``double`` (avr-gcc's is 32 bits): the precision ``_IQ(…)`` folds in.
+    predefined : tuple of (name, body)
+        The macros the target's compiler defines before any code (``-U`` removes one).
     """
 
     name: str
@@ -67,6 +69,7 @@ class Target:
     int_bits: int
     char_signed: bool
     double_bits: int = 64
+    predefined: tuple = ()
     types: dict = field(init=False, compare=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -142,10 +145,17 @@ class Target:
 
 
 TARGETS = {
-    "c28x": Target("c28x", 16, 16, True),
-    "avr": Target("avr", 8, 16, True, double_bits=32),
-    "msp430": Target("msp430", 8, 16, True),
-    "arm": Target("arm", 8, 32, False),
+    # TI cl2000 22.6.0.LTS (its version as MMMmmmppp), no __GNUC__
+    "c28x": Target("c28x", 16, 16, True, predefined=(
+        ("__TMS320C2000__", "1"), ("__TMS320C28XX__", "1"),
+        ("__TI_COMPILER_VERSION__", "22006000"))),
+    # avr-gcc 5.4.0 (Debian/Ubuntu's gcc-avr, the cross-check's compiler)
+    "avr": Target("avr", 8, 16, True, double_bits=32, predefined=(
+        ("__AVR__", "1"), ("__GNUC__", "5"))),
+    # TI's MSP430-GCC 9.3.1
+    "msp430": Target("msp430", 8, 16, True, predefined=(("__MSP430__", "1"), ("__GNUC__", "9"))),
+    # Arm GNU Toolchain 13 (arm-none-eabi-gcc)
+    "arm": Target("arm", 8, 32, False, predefined=(("__arm__", "1"), ("__GNUC__", "13"))),
 }
 
 
