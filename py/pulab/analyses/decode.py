@@ -171,29 +171,29 @@ def _defines(options) -> dict:
 
 
 def _comments(text: str) -> dict:
-    """The comment on each #define's line (a ``/* … */`` may go on over later lines)."""
+    """Line of each ``#define`` → the comment that starts on its (spliced) line; a
+    ``/* … */`` may go on over later lines."""
     out = {}
     for m in _DEFINE.finditer(text):
-        end = text.find("\n", m.end())
-        line = text[m.end():end if end >= 0 else len(text)]
-        # continuation lines belong to the define
-        pos = end
-        while line.rstrip().endswith("\\") and pos >= 0:
-            nxt = text.find("\n", pos + 1)
-            line = line.rstrip()[:-1] + " " + text[pos + 1:nxt if nxt >= 0 else len(text)]
-            pos = nxt
-        c = re.search(r"//(.*)|/\*(.*)", line)
-        if c is None:
-            continue
-        if c[1] is not None:
-            note = c[1]
-        else:
-            start = m.end() + c.start() + 2
-            close = text.find("*/", start)
-            note = text[start:close if close >= 0 else len(text)]
-            note = note[len(c[2]) - len(c[2].lstrip()):] if c[2] else note
-            note = note[:len(note)] if "*/" not in c[2] else c[2][:c[2].index("*/")]
-        out[m[1]] = " ".join(note.replace("!<", "").replace("*", " ").split())
+        i, note = m.end(), None
+        while True:
+            end = text.find("\n", i)
+            end = len(text) if end < 0 else end
+            c = re.search(r"//|/\*", text[i:end])
+            if c is not None:
+                start = i + c.start() + 2
+                if c[0] == "//":
+                    note = text[start:end]
+                else:
+                    close = text.find("*/", start)
+                    note = text[start:close if close >= 0 else len(text)]
+                break
+            if not text[i:end].rstrip().endswith("\\") or end == len(text):
+                break
+            i = end + 1
+        if note is not None:
+            line = text.count("\n", 0, m.start()) + 1
+            out[line] = " ".join(note.replace("!<", " ").replace("*", " ").split())
     return out
 
 
@@ -286,9 +286,10 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
         body = pre.macros[n].body
         if body and body[0].line < src.lines:
             lines[n] = src.where(body[0].line)
-    comments = {}
-    for text in src.raw:
-        comments.update(_comments(text))
+    by_line = {name: _comments(text) for name, text in zip(src.names, src.raw)}
+    comments: dict = {n: by_line[f].get(line) for n, (f, line) in lines.items()
+                      if by_line[f].get(line)}
+    comments[""] = [m[1] for text in src.raw for m in re.finditer(r"/\*(.*?)\*/", text, re.S)]
     folded = _fold_all(src, names, defs, "arm")
     defined = {n for n in names if pre.macros[n].body}
     if vendor is None:
