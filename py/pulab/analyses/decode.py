@@ -41,6 +41,7 @@ from ..profiles import registry
 from ..profiles.vendor import provided
 from ..schema.catalog import render
 from ..schema.errors import InputError
+from ..schema.validate import shown
 from .cconst import NotConstant, evaluate
 
 __all__ = ["decode", "LIBRARY", "MAX_FILES", "MAX_CHARS"]
@@ -67,6 +68,9 @@ _DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+([A-Za-z_]\w*)", re.M)
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*[<"]([^>"\n]+)[>"]', re.M)
 _IF = re.compile(r"^[ \t]*#[ \t]*(?:el)?if\b(.*)$", re.M)
 _SENTINEL = "__pulab_decode_"
+#: The inputs a report needs that a header may not fix (``design.missing`` names them).
+_REQUIRED = (("motor", ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm", "ld_h",
+                        "lq_h", "bemf_v", "pole_pairs")), ("drive", ("udc_v", "ts_s")))
 _COMMENT = re.compile(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|//(?:\\\r?\n|[^\n])*|/\*.*?(?:\*/|\Z)',
                       re.S)
 
@@ -86,8 +90,10 @@ def _check_files(files) -> list:
         raise InputError("files", code="integer_range", lo=1, hi=MAX_FILES, got=len(files))
     out, total = [], 0
     for k, item in enumerate(files):
-        name, text = item
         field = f"files[{k}]"
+        if not isinstance(item, (list, tuple)) or len(item) != 2:
+            raise InputError(field, code="decode_not_text", name=field, why="not (name, text)")
+        name, text = item
         if not isinstance(name, str) or not name.strip():
             name = f"file{k + 1}"
         if not isinstance(text, str):
@@ -156,13 +162,15 @@ def _preprocess(src: _Source, text: str, defines: dict):
         line = getattr(e, "line", None) or 1
         f, n = src.where(min(line, src.lines - 1)) if line < src.lines else (src.names[-1], line)
         raise InputError("files", code="decode_preprocess", file=f, line=n,
-                         why=render(e.code, e.params, "en")) from None
+                         why=re.sub(r"^\d+:\d+: ", "", render(e.code, e.params, "en"))) from None
 
 
 def _defines(options) -> dict:
     out = {}
     for d in options or ():
-        name, eq, value = str(d).partition("=")
+        if not isinstance(d, str):
+            raise InputError("defines", code="set_syntax", got=shown(d))
+        name, eq, value = d.partition("=")
         name = name.strip()
         if not re.fullmatch(r"[A-Za-z_]\w*", name):
             raise InputError("defines", code="set_syntax", got=repr(d))
@@ -274,8 +282,9 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
     files = _check_files(files)
     defs = _defines(defines)
     decoders = _decoders()
-    if vendor is not None and vendor not in decoders:
-        raise InputError("vendor", code="not_choice", choices=", ".join(decoders), got=repr(vendor))
+    if vendor is not None and (not isinstance(vendor, str) or vendor not in decoders):
+        raise InputError("vendor", code="not_choice", choices=", ".join(decoders),
+                         got=shown(vendor))
     ordered = _order(files)
     src = _Source(ordered)
     pre = _preprocess(src, src.text, defs)
@@ -324,6 +333,10 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
             findings.append(_finding("error", "overflow", [n], {
                 "macro": n, "value": folded[n]["value"], "ideal": folded[n]["expansion"],
                 "ctype": folded[n]["type"]}))
+    design = result["design"]
+    design.setdefault("assumed", [])
+    design["missing"] = [f"{sec}.{k}" for sec, keys in _REQUIRED for k in keys
+                         if k not in design.get("input", {}).get(sec, {})]
     undefined = _undefined_if(src, pre.macros)
     if undefined:
         findings.insert(0, _finding("warning", "if_undefined", [], {"names": ", ".join(undefined)},
@@ -334,4 +347,4 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
     unknown = {n: f["unknown"] for n, f in folded.items() if f["unknown"]}
     return {"vendor": vendor, "target": target, "files": [n for n, _ in ordered],
             "unresolved": list(pre.unresolved), "macros": macros, "other": other,
-            "unknown": unknown, "design": result["design"], "findings": findings}
+            "unknown": unknown, "design": design, "findings": findings}
