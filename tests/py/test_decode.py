@@ -221,6 +221,44 @@ def test_ti_without_a_board_the_files_own_error_names_its_line():
     assert "user_mtr1.h:571" in e.value.message and "#error" in e.value.message
 
 
+# -- Microchip motorBench (microchip-pic-avr-solutions/motorbench-release-collateral) --------
+
+@pytest.fixture(scope="module")
+def mchp():
+    return decode(_files("microchip", ["motor_params.h", "foc_params.h"]))
+
+
+def test_microchip_constants_are_their_printed_si_values(mchp):
+    m = mchp["macros"]
+    assert mchp["vendor"] == "microchip"
+    # no _SCALE macros in this version: the scale is the comment's SI value over its Q value,
+    # both printed with 5–6 digits (relative error ≤ 0.5e-5/0.14737 = 3.4e-5)
+    assert m["MCAF_MOTOR_RS"]["si"] == pytest.approx(0.24099626, rel=4e-5)  # +240.99626 mohm
+    assert m["KIP"]["si"] == pytest.approx(0.59922182, rel=2e-5)  # +599.22182 mV/A
+    assert m["KII"]["si"] == pytest.approx(1766.67, rel=1e-4)  # +1.76667 kV/A/s
+    assert m["MCAF_MOTOR_LQ_BASE_DT"]["si"] == pytest.approx(132.50053e-6, rel=1e-5)
+    assert mchp["design"]["input"]["motor"]["pole_pairs"] == 4
+
+
+def test_microchip_pwm_period_from_the_two_pi_scales(mchp):
+    # KII's base is KIP's over Δt: (0.59922182/0.36642)/(1766.67/0.05402) = 1.63534/32704 = 50 µs
+    assert mchp["design"]["ts_s"] == pytest.approx(50e-6, rel=2e-4)
+
+
+def test_microchip_speed_integral_gain_is_the_rounding_it_prints(mchp):
+    # KWI 8 // … = +16.94130 mA/rad = +17.14283 mA/rad - 1.1756%
+    f = [f for f in mchp["findings"] if f["code"] == "rounding"]
+    assert [x["macros"] for x in f] == [["KWI"]] and "-1.1756" in f[0]["message"]
+
+
+def test_microchip_integer_edited_after_generation():
+    files = [(n, t.replace("#define KIP                                 12007",
+                           "#define KIP                                 13007"))
+             for n, t in _files("microchip", ["motor_params.h", "foc_params.h"])]
+    f = [f for f in decode(files)["findings"] if f["code"] == "comment_stale"]
+    assert [x["macros"] for x in f] == [["KIP"]] and "Q15(0.36642)" in f[0]["message"]
+
+
 # -- pu-lab's own headers, decoded back -----------------------------------------------------
 
 def _own(vendor: str, extra: dict | None = None) -> tuple:
@@ -235,6 +273,7 @@ def _own(vendor: str, extra: dict | None = None) -> tuple:
     ("st", None, "PID_TORQUE_KP_DEFAULT"),
     ("ti", None, "USER_MTR1_KP_IQ_IQ"),
     ("nxp", {"nxp": {"trapezoidal": True}}, "M1_Q_KP_GAIN"),
+    ("microchip", None, "KIP"),
 ])
 def test_own_header_round_trip(vendor, extra, kp_name):
     r, d = _own(vendor, extra)
@@ -245,10 +284,12 @@ def test_own_header_round_trip(vendor, extra, kp_name):
     assert c["kp_v_per_a"] == pytest.approx(pi["kp"], rel=1e-3)
     assert c["ki_v_per_a_s"] == pytest.approx(pi["ki"], rel=1e-3)
     mot = d["design"]["input"]["motor"]
-    if vendor != "nxp":  # pu-lab's NXP block has no M1_MOTOR_PP
+    if vendor in ("st", "ti"):  # pu-lab's NXP and Microchip blocks have no pole pairs
         assert mot["pole_pairs"] == 4
-    assert mot["rs_ohm"] == pytest.approx(1.5, rel=2e-3 if vendor == "nxp" else 1e-12)
-    assert mot["lq_h"] == pytest.approx(6e-4, rel=2e-3 if vendor == "nxp" else 1e-12)
+    # NXP's R and L come back through its Q15 observer scales, Microchip's through Q15/Q13
+    rel = {"nxp": 2e-3, "microchip": 1e-4}.get(vendor, 1e-12)
+    assert mot["rs_ohm"] == pytest.approx(1.5, rel=rel)
+    assert mot["lq_h"] == pytest.approx(6e-4, rel=rel)
     assert d["design"]["input"]["drive"]["ts_s"] == pytest.approx(1e-4, rel=2e-3)
 
 

@@ -201,7 +201,8 @@ def _comments(text: str) -> dict:
             i = end + 1
         if note is not None:
             line = text.count("\n", 0, m.start()) + 1
-            out[line] = " ".join(note.replace("!<", " ").replace("*", " ").split())
+            note = re.sub(r"^[ \t]*\*+(?!/)", " ", note.replace("!<", " "), flags=re.M)
+            out[line] = " ".join(note.split())
     return out
 
 

@@ -11,7 +11,7 @@ Examples
 --------
 >>> c = current_loop(1.8, 3150.0, 0.35, 0.0006)
 >>> round(c["bandwidth_hz"], 1), round(c["zero_rad_s"], 1), c["cancels_plant"]
-(477.5, 1750.0, False)
+(531.1, 1750.0, False)
 """
 
 from __future__ import annotations
@@ -36,12 +36,14 @@ def result(reads, target: str, macros: dict, design: dict, checks: list) -> dict
 def current_loop(kp: float, ki: float, r: float, l: float) -> dict:
     """The current loop of a parallel PI ``kp + ki/s`` [V/A, V/(A·s)] on the plant ``1/(Ls+R)``.
 
-    ``zero_rad_s`` = ki/kp; ``cancels_plant`` when it is R/L within 1 %; ``bandwidth_hz`` =
-    kp/(2π·L), the crossover of the open loop kp/(L·s) that the cancellation leaves (above the
-    zero and the plant pole it is the crossover of the uncancelled loop too)."""
+    ``zero_rad_s`` = ki/kp; ``cancels_plant`` when it is R/L within 1 %; ``bandwidth_hz`` the
+    crossover of the continuous open loop, |kp + ki/(jω)| = |jωL + R|, i.e. the positive root
+    x = ω² of L²x² + (R² − kp²)x − ki² = 0 (kp/L when the zero cancels the plant pole)."""
     zero = ki / kp if kp else None
     pole = r / l
-    return {"kp_v_per_a": kp, "ki_v_per_a_s": ki, "bandwidth_hz": kp / (2.0 * math.pi * l),
+    b = r * r - kp * kp
+    x = (-b + math.sqrt(b * b + 4.0 * l * l * ki * ki)) / (2.0 * l * l)
+    return {"kp_v_per_a": kp, "ki_v_per_a_s": ki, "bandwidth_hz": math.sqrt(x) / (2.0 * math.pi),
             "zero_rad_s": zero, "plant_pole_rad_s": pole,
             "cancels_plant": zero is not None and abs(zero / pole - 1.0) <= 0.01}
 

@@ -736,6 +736,10 @@ MESSAGES = {
                              "it ({readings}) gives that; nearest {nearest}",
                              "{macro} = {value}，但其注释写的是 {comment}：任何读法（{readings}）"
                              "都得不到它；最接近的是 {nearest}"),
+    "decode.comment_stale": ("{macro} = {value} stands for {got}, but its comment says {said}: "
+                             "the integer or its scale changed after the file was generated",
+                             "{macro} = {value} 代表 {got}，但其注释写的是 {said}：整数或其比例在"
+                             "文件生成后被改过"),
     "decode.inconsistent": ("{what}: {a} from {a_from} but {b} from {b_from} ({diff} % apart)",
                             "{what}：由 {a_from} 得 {a}，由 {b_from} 得 {b}（相差 {diff} %）"),
     "decode.json": ("{macro} = {value}, but the tool's own inputs (the JSON in the header's "

@@ -23,8 +23,8 @@ Examples
 --------
 >>> v = {"M1_I_MAX": 8.0, "M1_U_MAX": 20.9578, "M1_I_SCALE": 28226, "M1_U_SCALE": 22033}
 >>> d = decode_header(v, {})
->>> round(d["design"]["a_s_per_h"], 1)  # T_s/(L_d + T_s·R_s) = U_SCALE·I_max/U_max
-256.7
+>>> round(d["design"]["a_per_ohm"], 4)  # T_s/(L_d + T_s·R_s) = U_SCALE·I_max/U_max
+0.2567
 """
 
 from __future__ import annotations
@@ -206,10 +206,10 @@ def decode_header(values: dict, notes: dict) -> dict:
     if has("M1_I_SCALE") and has("M1_U_SCALE") and i_max and u_max and ts:
         a = v["M1_U_SCALE"] / _Q15 * i_max / u_max
         i_scale = v["M1_I_SCALE"] / _Q15
-        design["a_s_per_h"] = a
+        design["a_per_ohm"] = a
         motor["ld_h"] = i_scale * ts / a
         motor["rs_ohm"] = (1.0 - i_scale) / a
-        out["M1_U_SCALE"] = macro(a, "1/H·s", "observer: T_s/(L_d + T_s·R_s)",
+        out["M1_U_SCALE"] = macro(a, "1/Ω", "observer: T_s/(L_d + T_s·R_s)",
                                   "M1_U_SCALE/2^15·I_max/U_max")
         if has("M1_WI_SCALE") and w_max:
             motor["lq_h"] = v["M1_WI_SCALE"] / _Q15 / (a * w_max)
@@ -223,7 +223,7 @@ def decode_header(values: dict, notes: dict) -> dict:
                                     b=e, b_from="M1_E_SCALE",
                                     diff=round(100.0 * (e / a - 1.0), 2)))
     elif has("M1_U_SCALE") and has("M1_I_MAX"):
-        design["a_s_per_h"] = v["M1_U_SCALE"] / _Q15 * i_max / u_max if u_max else None
+        design["a_per_ohm"] = v["M1_U_SCALE"] / _Q15 * i_max / u_max if u_max else None
     if pp:
         motor["pole_pairs"] = int(pp)
     # the current PI; MCAT's trapezoidal k = 2 unless its JSON says otherwise

@@ -20,7 +20,7 @@ Examples
 >>> d = decode_header({"USER_MOTOR1_NUM_POLE_PAIRS": 2, "USER_MOTOR1_RATED_FLUX_VpHz": 0.560590863},
 ...                   {"USER_MOTOR1_RATED_FLUX_VpHz": "4.11V/krpm"})
 >>> d["checks"][0][1], round(d["design"]["psi_wb"], 6)
-('comment_value', 0.08922)
+('comment_value', 0.089221)
 """
 
 from __future__ import annotations
