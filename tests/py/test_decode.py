@@ -293,6 +293,27 @@ def test_own_header_round_trip(vendor, extra, kp_name):
     assert d["design"]["input"]["drive"]["ts_s"] == pytest.approx(1e-4, rel=2e-3)
 
 
+def test_own_inovance_block_round_trip():
+    r, d = _own("inovance")
+    m = d["macros"]
+    # the raw table back in SI: the seed motor (17 V, 1.5 A, 220 Hz, 1.5 Ω, 0.6 mH)
+    assert d["design"]["input"]["motor"] == {k: pytest.approx(SEED_INPUT["motor"][k], rel=1e-12)
+                                             for k in d["design"]["input"]["motor"]}
+    assert m["PULAB_RPM"]["value"] == 15022  # seed 1.4-1
+    assert m["PULAB_PM_KP_Q"]["si"] == pytest.approx(r["current_pi"]["q"]["from_integers"]["kp"],
+                                                     rel=1e-12)
+    assert not d["findings"]
+    assert d["design"]["missing"] == ["motor.pole_pairs", "drive.ts_s"]
+
+
+def test_inovance_integer_edited_after_the_raw_table():
+    r = report({**copy.deepcopy(SEED_INPUT), "profiles": {}})
+    text = profiles.header(r, "inovance").replace("PULAB_RPM                    15022",
+                                                   "PULAB_RPM                    15100")
+    f = decode([("p.h", text)])["findings"]
+    assert [x["code"] for x in f] == ["inconsistent"] and "15022" in f[0]["message"]
+
+
 # -- bad input ------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("files, field, words", [
