@@ -323,6 +323,10 @@ def test_inovance_integer_edited_after_the_raw_table():
     ([("a.h", "#define RS (0.35\n#define LS 1e-3\n")], "files", "a.h:1: #define RS"),
     ([("a.h", "#define RS 0.35\n#if 1\n")], "files", "a.h:2"),
     ([("a.h", "#define RS 1\x00\n")], "files[0]", "NUL"),
+    # a macro bomb: M0 expands to 3^20 tokens; the error names M0's #define (line 2)
+    ([("a.h", "#define RS 0.35\n" + "".join(f"#define M{i} (M{i+1} M{i+1} M{i+1})\n"
+                                             for i in range(20)) + "#define M20 1\n")],
+     "files", "a.h:2: macro"),
 ])
 def test_bad_input_names_the_file(files, field, words):
     with pytest.raises(InputError) as e:

@@ -155,14 +155,23 @@ class _Source:
         return self.names[k], line - self.starts[k] + 1
 
 
-def _preprocess(src: _Source, text: str, defines: dict):
+def _preprocess(src: _Source, text: str, defines: dict, tail: tuple = ((), {})):
+    """The tracer's preprocessor on ``text``; an error names the file and line. ``tail``:
+    (macro names, their (file, line)) of the expansion line appended to the files, so an error
+    there (a macro bomb) names the ``#define`` whose expansion failed."""
     try:
         return preprocess(tokenize(text), {**LIBRARY, **defines})
     except TraceError as e:
         line = getattr(e, "line", None) or 1
-        f, n = src.where(min(line, src.lines - 1)) if line < src.lines else (src.names[-1], line)
+        if line < src.lines:
+            f, n = src.where(line)
+        else:
+            names, lines = tail
+            k = len(text[len(src.text):len(src.text) + 1 + (e.column or 1)].split(_SENTINEL)) - 2
+            f, n = lines.get(names[k], (src.names[-1], 0)) if 0 <= k < len(names) else \
+                (src.names[-1], 0)
         raise InputError("files", code="decode_preprocess", file=f, line=n,
-                         why=re.sub(r"^\d+:\d+: ", "", render(e.code, e.params, "en"))) from None
+                         why=e.reason_error()) from None
 
 
 def _defines(options) -> dict:
@@ -219,10 +228,10 @@ def _undefined_if(src: _Source, macros: dict) -> list:
     return names
 
 
-def _fold_all(src: _Source, names: list, defines: dict, target: str) -> dict:
+def _fold_all(src: _Source, names: list, defines: dict, target: str, lines: dict) -> dict:
     """Every macro of ``names`` expanded and folded on ``target``."""
     tail = "\n" + " ".join(f"{_SENTINEL}{k} {n}" for k, n in enumerate(names)) + "\n"
-    pre = _preprocess(src, src.text + tail, defines)
+    pre = _preprocess(src, src.text + tail, defines, (names, lines))
     toks = pre.tokens[:-1]
     out, cur, k = {}, None, None
     starts = [i for i, t in enumerate(toks) if t.kind == "name" and t.text.startswith(_SENTINEL)
@@ -300,7 +309,7 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
     comments: dict = {n: by_line[f].get(line) for n, (f, line) in lines.items()
                       if by_line[f].get(line)}
     comments[""] = [m[1] for text in src.raw for m in re.finditer(r"/\*(.*?)\*/", text, re.S)]
-    folded = _fold_all(src, names, defs, "arm")
+    folded = _fold_all(src, names, defs, "arm", lines)
     defined = {n for n in names if pre.macros[n].body}
     if vendor is None:
         counts = {v: len(set(f({}, {})["reads"]) & defined) for v, f in decoders.items()}
@@ -312,7 +321,7 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
     dec = decoders[vendor]
     target = dec({}, {})["target"]
     if target != "arm":
-        folded = _fold_all(src, names, defs, target)
+        folded = _fold_all(src, names, defs, target, lines)
     reads = dec({}, {})["reads"]
     for n in reads:
         f = folded.get(n)

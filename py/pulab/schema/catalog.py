@@ -731,7 +731,7 @@ MESSAGES = {
                          "Microchip、汇川）"),
     "decode_define": ("{file}:{line}: #define {name} does not evaluate: {why}",
                       "{file}:{line}：#define {name} 无法求值：{why}"),
-    "decode_preprocess": ("{file}:{line}: {why}", "{file}:{line}：{why}"),
+    "decode_preprocess": ("{file}:{line}: {why}", "{file}:{line}：预处理：{why}"),
     "decode.comment_value": ("{macro} = {value} but its comment says {comment}: no reading of "
                              "it ({readings}) gives that; nearest {nearest}",
                              "{macro} = {value}，但其注释写的是 {comment}：任何读法（{readings}）"
