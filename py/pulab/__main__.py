@@ -25,6 +25,7 @@ from .cli.trace import add_trace_parser, trace_main
 from .cli.robust import add_robust_parser
 from .cli.prove import add_prove_parser
 from .cli.oembed import add_oembed_parser
+from .cli.decode import add_decode_parser
 
 
 def main(argv: list | None = None) -> int:
@@ -39,6 +40,7 @@ def main(argv: list | None = None) -> int:
     add_robust_parser(sub)
     add_prove_parser(sub)
     add_oembed_parser(sub)
+    add_decode_parser(sub)
     _add_vendor_commands(sub)
     args = p.parse_args(argv)
     if args.command == "trace":

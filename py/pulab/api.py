@@ -206,6 +206,34 @@ def _trace_examples(req) -> dict:
     return {"targets": list(TARGETS), "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]}
 
 
+_DECODE_KEYS = ("files", "vendor", "define")
+
+
+def _decode(req) -> dict:
+    """A vendor's generated headers read back (:func:`pulab.analyses.decode.decode`):
+    ``files`` [{"name", "text"}], ``vendor`` (optional), ``define`` [NAME[=VALUE]]."""
+    from .analyses.decode import decode
+    if not isinstance(req, dict):
+        raise InputError("input", code="not_object", got=shown(req))
+    unknown = set(req) - set(_DECODE_KEYS)
+    if unknown:
+        raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
+                         expected=", ".join(_DECODE_KEYS))
+    files = req.get("files")
+    if not isinstance(files, list) or not files:
+        raise InputError("files", code="decode_no_files")
+    pairs = []
+    for k, f in enumerate(files):
+        if not isinstance(f, dict):
+            raise InputError(f"files[{k}]", code="not_object", got=shown(f))
+        pairs.append((f.get("name") if isinstance(f.get("name"), str) else "", f.get("text")))
+    defines = req.get("define") or []
+    if not isinstance(defines, list) or not all(isinstance(d, str) for d in defines):
+        raise InputError("define", code="trace_define_list")
+    vendor = req.get("vendor")
+    return {"decode": decode(pairs, vendor if vendor not in ("", None) else None, defines)}
+
+
 def _vendor_input(req) -> dict:
     if not isinstance(req, dict):
         raise InputError("request", code="not_json_object")
@@ -304,6 +332,7 @@ KINDS = {
     "trace.prove": ("input", _trace_prove),
     "vendors.header": ("input", _vendors("header")),
     "vendors.translate": ("input", _vendors("translate")),
+    "decode": ("input", _decode),
     **{f"prove.{op}" if op != "prove" else "prove": ("prove", _prove(op))
        for op in ("prove", "plan", "integer", "summary", "propose")},
     "course.spec": ("input", _course("spec")),

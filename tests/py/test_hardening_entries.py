@@ -185,7 +185,7 @@ KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "r
              "prove.summary": ["input", "ranges", "integers"],
              "prove.propose": ["input", "ranges", "profile"],
              "course.check": ["input", "id", "answer"], "course.answers": ["input"], "course.spec": ["x"],
-             "course.trainees": ["start", "count"]}
+             "course.trainees": ["start", "count"], "decode": ["files", "vendor", "define"]}
 
 
 def test_fuzzed_kinds_keep_the_api_contract():
@@ -199,7 +199,8 @@ def test_fuzzed_kinds_keep_the_api_contract():
              "profile": "ti", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
              "summaries": [], "start": 0, "count": 1, "ranges": {"motor.rs_ohm": [1, 2]},
              "budget": 20, "name": "vendor.Rpm", "integers": {}, "range": {"v": [0, 7000]},
-             "id": "vendor-rpm", "answer": "1"}
+             "id": "vendor-rpm", "answer": "1",
+             "files": [{"name": "a.h", "text": "#define RS 0.35\n#define LS 0.0006\n"}]}
     seen = Counter()
     for _ in range(60):
         for kind in list(KINDS) + [_text(rng)]:

@@ -14,7 +14,7 @@ Examples
 --------
 >>> from pulab.profiles import registry
 >>> ti = registry.get("ti")
->>> ti.NAMES, ti.gain_fields("q"), provided(ti, "decode_header")
+>>> ti.NAMES, ti.gain_fields("q"), provided(ti, "observer")
 (('TI', 'TI'), ('Kp_Iq', 'Ki_Iq'), None)
 >>> f = ti.OPTIONS[4].field("ti")
 >>> f.path, f.kind, f.lo, f.hi
@@ -146,7 +146,12 @@ OPTIONAL = {
                   "(:func:`pulab.analyses.sim.vendor_loop.controllers` says the keys)",
     "warnings": "warnings(p) -> list: its own warnings about its profile ``p`` in the report, "
                 "as (catalog code, params) pairs",
-    "decode_header": "decode_header(text) -> dict: its header read back into integers",
+    "decode_header": "decode_header(values, notes) -> dict: its generated header read back "
+                     "(:mod:`pulab.profiles.decoding`): ``values`` the folded macros (name → "
+                     "int or float as its compiler computes them), ``notes`` the comment on each "
+                     "``#define`` line (name → text; key ``''``: every block comment); returns "
+                     "``reads`` (the names it knows), ``target`` (its compiler's widths), "
+                     "``macros`` (SI, unit, meaning, formula), ``design`` and ``checks``",
     "board_constants": "board_constants(ctx, opt) -> dict: the macros its header holds for "
                        "the board (``ctx['board']``, by its own names); its ``profile`` merges "
                        "them into the constants and lists their names in ``profile['board']``. "

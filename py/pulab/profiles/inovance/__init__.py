@@ -5,6 +5,7 @@ header the report's; its simulation is the report's fixed-point variant
 (:mod:`pulab.analyses.sim.current`), so it provides no ``controller``.
 """
 
+from .decode import decode_header
 from .header import header
 from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
 

@@ -1,5 +1,6 @@
 """NXP MCAT / RTCESL: fractions of U_max and I_max, ACC32 and FRAC16 + shift."""
 
+from .decode import decode_header
 from .header import header
 from .observer import observer
 from .pi import controller

@@ -1,5 +1,6 @@
 """ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors."""
 
+from .decode import decode_header
 from .header import header
 from .observer import observer
 from .pi import controller

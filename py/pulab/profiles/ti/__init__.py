@@ -1,5 +1,6 @@
 """TI MotorWare / InstaSPIN: per unit of the hardware full scale, IQ24."""
 
+from .decode import decode_header
 from .header import header
 from .pi import controller
 from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)

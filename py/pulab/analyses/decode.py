@@ -1,0 +1,360 @@
+"""Read a vendor's generated parameter header back: the design it encodes and what is wrong.
+
+:func:`decode` takes one or more header texts (a whole generated set: ST's four MCSDK files,
+TI's ``user_mtr1.h`` with ``user_common.h``, NXP's ``m1_pmsm_appconfig.h`` …):
+
+1. the files are ordered so that a file comes after the given files it ``#include``s (an
+   include of another file is listed in ``unresolved``), and run through the tracer's C
+   preprocessor (:func:`pulab.ctrace.preprocess.preprocess`: ``#if``, include guards, macros
+   built from macros), with the vendor library macros of :data:`LIBRARY` and ``-D``
+   definitions first, as on the compiler's command line;
+2. every object-like ``#define`` is expanded and folded as the target's compiler folds it
+   (:mod:`pulab.analyses.cconst`: casts, integer division, ``f`` singles); a name left after
+   expansion is listed in ``unknown``, never guessed;
+3. the vendor is the one whose decoder reads the most of the defined macros (or given); its
+   ``decode_header`` (:data:`pulab.profiles.vendor.OPTIONAL`) turns the values into SI with
+   unit, meaning and formula, recovers the design and checks the constants against each
+   other; when it folds on another target (TI's C28x, Microchip's dsPIC: 16-bit ``int``) the
+   macros are folded again there;
+4. findings (``severity``, ``code``, ``macros``, en/zh ``message``): the vendor's checks, a
+   known macro whose value the compiler wraps or truncates out of range (``overflow``), an
+   ``#if`` that compares undefined names (``if_undefined``: 0 == 0 picks the first branch).
+
+Examples
+--------
+>>> text = ("#define RS 0.35\\n#define LS 0.0006\\n#define POLE_PAIR_NUM 2\\n"
+...         "#define PWM_FREQUENCY 20000\\n#define REGULATION_EXECUTION_RATE 1\\n")
+>>> d = decode([("pmsm_motor_parameters.h", text)])
+>>> d["vendor"], d["macros"]["RS"]["si"], d["design"]["input"]["drive"]["ts_s"]
+('st', 0.35, 5e-05)
+"""
+
+from __future__ import annotations
+
+import re
+
+from ..ctrace.errors import TraceError
+from ..ctrace.lexer import tokenize
+from ..ctrace.preprocess import STANDARD_HEADERS, preprocess
+from ..ctrace.types import TARGETS
+from ..profiles import registry
+from ..profiles.vendor import provided
+from ..schema.catalog import render
+from ..schema.errors import InputError
+from ..schema.validate import shown
+from .cconst import NotConstant, evaluate
+
+__all__ = ["decode", "LIBRARY", "MAX_FILES", "MAX_CHARS"]
+
+#: More files, or more characters in all, are refused.
+MAX_FILES = 16
+MAX_CHARS = 1_000_000
+
+#: Vendor library macros a generated header uses without defining them, as their libraries
+#: define them (written here from their documented meaning). NXP RTCESL mlib_types.h
+#: (:data:`pulab.profiles.common.SOURCES` ``nxp_types``): FRAC16(x) = x·2^15 and FRAC32(x) =
+#: x·2^31 saturated to [−1, 1), ACC32(x) = x·2^15 in Q16.15, truncated by the cast.
+LIBRARY = {
+    "FRAC16(x)": "((frac16_t)(((x) < 0.999969482421875) ? (((x) >= -1.0) ? (x)*32768.0 "
+                 ": (-32767-1)) : 32767))",
+    "FRAC32(x)": "((frac32_t)(((x) < 1.0) ? (((x) >= -1.0) ? (x)*2147483648.0 "
+                 ": (-2147483647L-1)) : 2147483647L))",
+    "ACC32(x)": "((acc32_t)(((x) < 65535.999969482421875) ? (((x) >= -65536.0) ? (x)*32768.0 "
+                ": (-2147483647L-1)) : 2147483647L))",
+}
+_LIB_NAMES = {k.split("(")[0] for k in LIBRARY}
+_STD_NAMES = {n for h in STANDARD_HEADERS.values() for n in h}
+_DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+([A-Za-z_]\w*)", re.M)
+_INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*[<"]([^>"\n]+)[>"]', re.M)
+_IF = re.compile(r"^[ \t]*#[ \t]*(?:el)?if\b(.*)$", re.M)
+_SENTINEL = "__pulab_decode_"
+#: The inputs a report needs that a header may not fix (``design.missing`` names them).
+_REQUIRED = (("motor", ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm", "ld_h",
+                        "lq_h", "bemf_v", "pole_pairs")), ("drive", ("udc_v", "ts_s")))
+_COMMENT = re.compile(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|//(?:\\\r?\n|[^\n])*|/\*.*?(?:\*/|\Z)',
+                      re.S)
+
+
+def _blank_comments(text: str) -> str:
+    """Comments replaced by a blank (their line breaks kept). The tracer's preprocessor reads a
+    ``#`` inside a directive's comment as an operator (``/* … #SPEED_UNIT */`` in ST's
+    drive_parameters.h stops it), and the comments are read separately (:func:`_comments`)."""
+    return _COMMENT.sub(lambda m: m[0] if m[0][0] in "\"'" else " " + "\n" * m[0].count("\n"),
+                        text)
+
+
+def _check_files(files) -> list:
+    if not isinstance(files, (list, tuple)) or not files:
+        raise InputError("files", code="decode_no_files")
+    if len(files) > MAX_FILES:
+        raise InputError("files", code="integer_range", lo=1, hi=MAX_FILES, got=len(files))
+    out, total = [], 0
+    for k, item in enumerate(files):
+        field = f"files[{k}]"
+        if not isinstance(item, (list, tuple)) or len(item) != 2:
+            raise InputError(field, code="decode_not_text", name=field, why="not (name, text)")
+        name, text = item
+        if not isinstance(name, str) or not name.strip():
+            name = f"file{k + 1}"
+        if not isinstance(text, str):
+            raise InputError(field, code="decode_not_text", name=name, why="not a string")
+        if "\x00" in text:
+            raise InputError(field, code="decode_not_text", name=name, why="a NUL byte")
+        total += len(text)
+        if total > MAX_CHARS:
+            raise InputError(field, code="json_too_long", limit=MAX_CHARS)
+        if not text.strip():
+            raise InputError(field, code="decode_empty", name=name)
+        out.append((name.strip().replace("\\", "/"), text))
+    return out
+
+
+def _order(files: list) -> list:
+    """Files after the given files they include (by base name), otherwise as given."""
+    base = {n.rsplit("/", 1)[-1]: k for k, (n, _) in enumerate(files)}
+    done, out = set(), []
+
+    def visit(k: int, path: tuple) -> None:
+        if k in done or k in path:
+            return
+        for inc in _INCLUDE.findall(files[k][1]):
+            j = base.get(inc.strip().rsplit("/", 1)[-1])
+            if j is not None:
+                visit(j, path + (k,))
+        done.add(k)
+        out.append(files[k])
+
+    for k in range(len(files)):
+        visit(k, ())
+    return out
+
+
+class _Source:
+    """The files joined into one text, with the map back to (file, line)."""
+
+    def __init__(self, files: list) -> None:
+        self.names, self.starts, self.raw, parts, line = [], [], [], [], 1
+        given = {n.rsplit("/", 1)[-1] for n, _ in files}
+        for name, text in files:
+            # An include of a given file is satisfied by joining it before; drop the line so
+            # the preprocessor does not list it as unresolved (the line count is kept).
+            text = _INCLUDE.sub(lambda m: "" if m[1].strip().rsplit("/", 1)[-1] in given
+                                else m[0], text)
+            if not text.endswith("\n"):
+                text += "\n"
+            self.names.append(name)
+            self.starts.append(line)
+            parts.append(_blank_comments(text))
+            self.raw.append(text)
+            line += text.count("\n")
+        self.text = "".join(parts)
+        self.lines = line
+
+    def where(self, line: int) -> tuple:
+        k = max(i for i, s in enumerate(self.starts) if s <= line)
+        return self.names[k], line - self.starts[k] + 1
+
+
+def _preprocess(src: _Source, text: str, defines: dict, tail: tuple = ((), {})):
+    """The tracer's preprocessor on ``text``; an error names the file and line. ``tail``:
+    (macro names, their (file, line)) of the expansion line appended to the files, so an error
+    there (a macro bomb) names the ``#define`` whose expansion failed."""
+    try:
+        return preprocess(tokenize(text), {**LIBRARY, **defines})
+    except TraceError as e:
+        line = getattr(e, "line", None) or 1
+        if line < src.lines:
+            f, n = src.where(line)
+        else:
+            names, lines = tail
+            k = len(text[len(src.text):len(src.text) + 1 + (e.column or 1)].split(_SENTINEL)) - 2
+            f, n = lines.get(names[k], (src.names[-1], 0)) if 0 <= k < len(names) else \
+                (src.names[-1], 0)
+        raise InputError("files", code="decode_preprocess", file=f, line=n,
+                         why=e.reason_error()) from None
+
+
+def _defines(options) -> dict:
+    out = {}
+    for d in options or ():
+        if not isinstance(d, str):
+            raise InputError("defines", code="set_syntax", got=shown(d))
+        name, eq, value = d.partition("=")
+        name = name.strip()
+        if not re.fullmatch(r"[A-Za-z_]\w*", name):
+            raise InputError("defines", code="set_syntax", got=repr(d))
+        out[name] = value if eq else "1"
+    return out
+
+
+def _comments(text: str) -> dict:
+    """Line of each ``#define`` → the comment that starts on its (spliced) line; a
+    ``/* … */`` may go on over later lines."""
+    out = {}
+    for m in _DEFINE.finditer(text):
+        i, note = m.end(), None
+        while True:
+            end = text.find("\n", i)
+            end = len(text) if end < 0 else end
+            c = re.search(r"//|/\*", text[i:end])
+            if c is not None:
+                start = i + c.start() + 2
+                if c[0] == "//":
+                    note = text[start:end]
+                else:
+                    close = text.find("*/", start)
+                    note = text[start:close if close >= 0 else len(text)]
+                break
+            if not text[i:end].rstrip().endswith("\\") or end == len(text):
+                break
+            i = end + 1
+        if note is not None:
+            line = text.count("\n", 0, m.start()) + 1
+            note = re.sub(r"^[ \t]*\*+(?!/)", " ", note.replace("!<", " "), flags=re.M)
+            out[line] = " ".join(note.split())
+    return out
+
+
+def _undefined_if(src: _Source, macros: dict) -> list:
+    """Names an ``#if``/``#elif`` compares with ``==``/``!=`` that no file defines."""
+    names = []
+    for m in _IF.finditer(src.text):
+        cond = re.sub(r"defined\s*\(?\s*\w+\s*\)?|//.*|/\*.*?\*/", " ", m[1])
+        if "==" not in cond and "!=" not in cond:
+            continue
+        for n in re.findall(r"[A-Za-z_]\w*", cond):
+            if n not in macros and n not in names:
+                names.append(n)
+    return names
+
+
+def _fold_all(src: _Source, names: list, defines: dict, target: str, lines: dict) -> dict:
+    """Every macro of ``names`` expanded and folded on ``target``."""
+    tail = "\n" + " ".join(f"{_SENTINEL}{k} {n}" for k, n in enumerate(names)) + "\n"
+    pre = _preprocess(src, src.text + tail, defines, (names, lines))
+    toks = pre.tokens[:-1]
+    out, cur, k = {}, None, None
+    starts = [i for i, t in enumerate(toks) if t.kind == "name" and t.text.startswith(_SENTINEL)
+              and t.line >= src.lines]
+    for j, i in enumerate(starts):
+        k = int(toks[i].text[len(_SENTINEL):])
+        cur = toks[i + 1:starts[j + 1] if j + 1 < len(starts) else len(toks)]
+        try:
+            v = evaluate(cur, target)
+            out[names[k]] = {"value": v.value, "type": v.type, "unknown": v.unknown,
+                             "flags": v.flags, "expansion": " ".join(t.text for t in cur)}
+        except NotConstant as e:
+            out[names[k]] = {"value": None, "type": None, "unknown": [], "flags": [],
+                             "expansion": " ".join(t.text for t in cur), "error": e.reason}
+    return out
+
+
+def _decoders() -> dict:
+    return {n: f for n in registry.names()
+            if (f := provided(registry.get(n), "decode_header")) is not None}
+
+
+def _finding(severity: str, code: str, macros: list, params: dict, advice: str = "") -> dict:
+    return {"severity": severity, "code": code, "macros": macros,
+            "message": render(f"decode.{code}", params, "en"),
+            "message_zh": render(f"decode.{code}", params, "zh"), "advice": advice}
+
+
+def decode(files, vendor: str | None = None, defines=None) -> dict:
+    """The design a set of generated headers encodes, and what is wrong with it.
+
+    Parameters
+    ----------
+    files : list of (name, text)
+        The header files (a name's last path part resolves an ``#include``).
+    vendor : str, optional
+        A vendor name (:func:`pulab.profiles.registry.names`); detected when not given.
+    defines : list of str, optional
+        ``NAME[=VALUE]`` definitions made before the files (a compiler's ``-D``: TI's board).
+
+    Returns
+    -------
+    dict
+        ``vendor``, ``target`` (the compiler whose widths folded the macros), ``files`` (in
+        the order read), ``unresolved`` (included files not given), ``macros`` (every macro
+        the vendor's decoder knows: ``value`` as the compiler computes it, ``type``, ``si``,
+        ``unit``, ``meaning``, ``formula``, ``source`` (file:line), ``expansion``),
+        ``other`` (every other object-like macro: ``value``, ``source``), ``unknown`` (macro
+        → the names it needs that no file defines), ``design`` and ``findings``.
+
+    Raises
+    ------
+    InputError
+        No file, an empty or non-text file, a preprocessor error (``#error``, an unclosed
+        ``#if``) or a known macro that is no constant expression (each naming file:line),
+        no macro of a known vendor, an unknown ``vendor``.
+    """
+    files = _check_files(files)
+    defs = _defines(defines)
+    decoders = _decoders()
+    if vendor is not None and (not isinstance(vendor, str) or vendor not in decoders):
+        raise InputError("vendor", code="not_choice", choices=", ".join(decoders),
+                         got=shown(vendor))
+    ordered = _order(files)
+    src = _Source(ordered)
+    pre = _preprocess(src, src.text, defs)
+    names = [n for n, m in pre.macros.items() if m.params is None and n not in _STD_NAMES
+             and n not in _LIB_NAMES and n not in defs]
+    lines = {}
+    for n in names:
+        body = pre.macros[n].body
+        if body and body[0].line < src.lines:
+            lines[n] = src.where(body[0].line)
+    by_line = {name: _comments(text) for name, text in zip(src.names, src.raw)}
+    comments: dict = {n: by_line[f].get(line) for n, (f, line) in lines.items()
+                      if by_line[f].get(line)}
+    comments[""] = [m[1] for text in src.raw for m in re.finditer(r"/\*(.*?)\*/", text, re.S)]
+    folded = _fold_all(src, names, defs, "arm", lines)
+    defined = {n for n in names if pre.macros[n].body}
+    if vendor is None:
+        counts = {v: len(set(f({}, {})["reads"]) & defined) for v, f in decoders.items()}
+        best = max(counts.values())
+        if best == 0:
+            raise InputError("files", code="decode_no_vendor",
+                             names=", ".join(n for n, _ in files))
+        vendor = next(v for v, c in counts.items() if c == best)
+    dec = decoders[vendor]
+    target = dec({}, {})["target"]
+    if target != "arm":
+        folded = _fold_all(src, names, defs, target, lines)
+    reads = dec({}, {})["reads"]
+    for n in reads:
+        f = folded.get(n)
+        if f is not None and "error" in f and pre.macros[n].body:
+            file, line = lines.get(n, (src.names[-1], 0))
+            raise InputError("files", code="decode_define", file=file, line=line, name=n,
+                             why=f["error"])
+    values = {n: f["value"] for n, f in folded.items() if f["value"] is not None}
+    result = dec(values, comments)
+    macros = {}
+    for n, d in result["macros"].items():
+        f = folded[n]
+        file, line = lines.get(n, ("", 0))
+        macros[n] = {"value": f["value"], "type": f["type"], **d,
+                     "source": f"{file}:{line}", "expansion": f["expansion"]}
+    findings = [_finding(*c) for c in result["checks"]]
+    for n in macros:
+        if "conversion" in folded[n]["flags"] or "overflow" in folded[n]["flags"]:
+            findings.append(_finding("error", "overflow", [n], {
+                "macro": n, "value": folded[n]["value"], "ideal": folded[n]["expansion"],
+                "ctype": folded[n]["type"]}))
+    design = result["design"]
+    design.setdefault("assumed", [])
+    design["missing"] = [f"{sec}.{k}" for sec, keys in _REQUIRED for k in keys
+                         if k not in design.get("input", {}).get(sec, {})]
+    undefined = _undefined_if(src, pre.macros)
+    if undefined:
+        findings.insert(0, _finding("warning", "if_undefined", [], {"names": ", ".join(undefined)},
+                                    "give the file that defines them, or -D NAME=VALUE"))
+    other = {n: {"value": f["value"], "source": "{}:{}".format(*lines[n])}
+             for n, f in folded.items() if n not in macros and n in lines
+             and f["value"] is not None}
+    unknown = {n: f["unknown"] for n, f in folded.items() if f["unknown"]}
+    return {"vendor": vendor, "target": target, "files": [n for n, _ in ordered],
+            "unresolved": list(pre.unresolved), "macros": macros, "other": other,
+            "unknown": unknown, "design": design, "findings": findings}

@@ -1,0 +1,72 @@
+"""What every vendor's ``decode_header`` shares: the record of a decoded macro, the current
+loop a pair of SI gains implies, and the checks' common shapes.
+
+A vendor's ``decode_header(values, notes)`` (:data:`pulab.profiles.vendor.OPTIONAL`) gets the
+folded macros (name → int or float, as the compiler computes them; a macro that does not fold
+is absent) and the comment on each ``#define`` line, and returns :func:`result`: the names it
+reads, its compiler (``target``), the decoded macros, the design and its checks. Called with
+two empty dicts it still gives ``reads`` and ``target`` (the detection and the fold need them).
+
+Examples
+--------
+>>> c = current_loop(1.8, 3150.0, 0.35, 0.0006)
+>>> round(c["bandwidth_hz"], 1), round(c["zero_rad_s"], 1), c["cancels_plant"]
+(531.1, 1750.0, False)
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+__all__ = ["macro", "result", "current_loop", "check", "near", "numbers_in"]
+
+
+def macro(si, unit: str | None, meaning: str, formula: str) -> dict:
+    """One decoded macro: its value in SI (None when it has none), unit, meaning, formula."""
+    return {"si": si, "unit": unit, "meaning": meaning, "formula": formula}
+
+
+def result(reads, target: str, macros: dict, design: dict, checks: list) -> dict:
+    """What ``decode_header`` returns."""
+    return {"reads": list(reads), "target": target, "macros": macros, "design": design,
+            "checks": checks}
+
+
+def current_loop(kp: float, ki: float, r: float, l: float) -> dict:
+    """The current loop of a parallel PI ``kp + ki/s`` [V/A, V/(A·s)] on the plant ``1/(Ls+R)``.
+
+    ``zero_rad_s`` = ki/kp; ``cancels_plant`` when it is R/L within 1 %; ``bandwidth_hz`` the
+    crossover of the continuous open loop, |kp + ki/(jω)| = |jωL + R|, i.e. the positive root
+    x = ω² of L²x² + (R² − kp²)x − ki² = 0 (kp/L when the zero cancels the plant pole)."""
+    zero = ki / kp if kp else None
+    pole = r / l
+    b = r * r - kp * kp
+    x = (-b + math.sqrt(b * b + 4.0 * l * l * ki * ki)) / (2.0 * l * l)
+    return {"kp_v_per_a": kp, "ki_v_per_a_s": ki, "bandwidth_hz": math.sqrt(x) / (2.0 * math.pi),
+            "zero_rad_s": zero, "plant_pole_rad_s": pole,
+            "cancels_plant": zero is not None and abs(zero / pole - 1.0) <= 0.01}
+
+
+def check(severity: str, code: str, macros: list, advice: str = "", **params) -> tuple:
+    """A finding of the vendor's: (severity, code, macros, params, advice); the words are the
+    catalog's ``decode.<code>``."""
+    return severity, code, macros, params, advice
+
+
+def near(a: float, b: float, rel: float) -> bool:
+    """|a − b| ≤ rel·|b|."""
+    return abs(a - b) <= rel * abs(b)
+
+
+_NUMBER = re.compile(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+
+
+def numbers_in(note: str, unit: str) -> list:
+    """The numbers written right before ``unit`` in a comment (``4.11V/krpm`` → [4.11]).
+
+    >>> numbers_in("// 4.11V/krpm, 2.9 V/krpm", "V/krpm")
+    [4.11, 2.9]
+    """
+    return [float(m[1]) for m in re.finditer(r"(" + _NUMBER.pattern + r")\s*" + re.escape(unit),
+                                            note or "")]

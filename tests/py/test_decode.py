@@ -1,0 +1,347 @@
+"""Vendor headers read back (pulab.analyses.decode): real generated headers, each decoded value
+checked against a number the header itself prints (a comment, the MCAT JSON) or the vendor's
+formula worked by hand here; pu-lab's own headers decoded back to the report's design.
+
+Fixtures: tests/data/headers/<vendor>/ (README there names each repository, path and commit).
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import subprocess
+import sys
+
+import pytest
+
+from conftest import ROOT, SEED_INPUT, chinese
+from pulab import profiles
+from pulab.analyses.decode import decode
+from pulab.report import report
+from pulab.schema.errors import InputError
+
+HEADERS = ROOT / "tests" / "data" / "headers"
+ST_SET = ("pmsm_motor_parameters.h", "drive_parameters.h", "power_stage_parameters.h",
+          "parameters_conversion.h", "parameters_conversion_g4xx.h")
+
+
+def _files(vendor: str, names) -> list:
+    return [(n, (HEADERS / vendor / n).read_text(encoding="utf-8", errors="replace"))
+            for n in names]
+
+
+@pytest.fixture(scope="module")
+def st():
+    return decode(_files("st", ST_SET))
+
+
+@pytest.fixture(scope="module")
+def nxp():
+    return decode(_files("nxp", ["m1_pmsm_appconfig.h"]))
+
+
+@pytest.fixture(scope="module")
+def ti():
+    return decode(_files("ti", ["user_mtr1.h", "user_common.h"]), defines=["BSXL8323RS_REVA"])
+
+
+# -- ST MCSDK (dronectl/g431-mcsdk : Inc/) -------------------------------------------------
+
+def test_st_set_is_detected_and_ordered_by_its_includes(st):
+    assert st["vendor"] == "st" and st["target"] == "arm"
+    # parameters_conversion.h includes the other four: it is read last
+    assert st["files"][-1] == "parameters_conversion.h"
+    assert st["unresolved"] == ["mc_math.h"]
+
+
+def test_st_parameters_conversion_values_as_the_compiler_folds_them(st):
+    m = st["macros"]
+    # (uint16_t)((65536.0·RSHUNT·AMPLIFICATION_GAIN)/ADC_REFERENCE_VOLTAGE):
+    # 65536·0.003 = 196.608; ·9.14 = 1797.01; /3.3 = 544.55 → 544
+    assert m["CURRENT_CONV_FACTOR"]["value"] == 544
+    # V_ref/(2·R·G) = 3.3/(2·0.003·9.14) = 3.3/0.05484
+    assert m["MAX_CURRENT"]["value"] == pytest.approx(3.3 / 0.05484, rel=1e-12)
+    # (int32_t)((((int16_t)F1)·RS)/(LS·TF_REGULATION_RATE)) = 5734.4/12 = 477.87 → 477
+    assert m["C1"]["value"] == 477
+    # (170·1000000/20000) & 0xFFFE = 8500
+    assert m["PWM_PERIOD_CYCLES"]["value"] == 8500
+    # DEAD_TIME_COUNTS_1 = 170·1·750/1000 = 127 ≤ 255: the first #if branch
+    assert st["other"]["DEAD_TIME_COUNTS"]["value"] == 127
+    assert m["C1"]["source"] == "parameters_conversion.h:71"
+
+
+def test_st_nominal_current_by_the_formula_its_comment_prints(st):
+    # pmsm_motor_parameters.h: int16 = I·32767·Rshunt·G/(V_ref/2) → I = 870·1.65/(32767·0.02742)
+    i = 870 * 1.65 / (32767 * 0.003 * 9.14)
+    assert st["macros"]["NOMINAL_CURRENT"]["si"] == pytest.approx(i, rel=1e-12)
+    assert st["macros"]["NOMINAL_CURRENT"]["unit"] == "A"
+
+
+def test_st_pi_zero_sits_on_the_plant_pole(st):
+    # Ki/Kp per sample = (2158/4096)/(2312/128) = 0.029168…; RS·T/LS = 0.35·(1/20000)/0.0006
+    # = 0.029166…: the Workbench's pole-zero cancellation, 0.01 % apart
+    d = st["design"]
+    assert d["ki_over_kp_per_sample"] == pytest.approx((2158 / 4096) / (2312 / 128), rel=1e-12)
+    assert d["current_loop"]["q"]["cancels_plant"] is True
+    assert d["current_loop"]["q"]["zero_rad_s"] == pytest.approx(0.35 / 0.0006, rel=1e-3)
+    assert not [f for f in st["findings"] if f["code"] == "inconsistent"]
+
+
+def test_st_unknown_macros_are_listed_not_guessed(st):
+    # SQRT_3 and LOG2 come from mc_math.h, which is not given
+    assert st["unknown"]["MAX_VOLTAGE"] == ["SQRT_3"]
+    assert st["unknown"]["TF_KPDIV_LOG"] == ["LOG2"]
+    assert "MAX_VOLTAGE" not in st["macros"]
+
+
+def test_st_a_definition_supplies_what_a_missing_include_defines():
+    d = decode(_files("st", ST_SET), defines=["SQRT_3=1.732051"])
+    # (int16_t)((3.3/1.732051)/0.09625565501973242) = 1.905256/0.0962557 = 19.79 → 19
+    assert d["macros"]["MAX_VOLTAGE"]["value"] == 19
+
+
+def test_st_design_input_is_a_report_input(st):
+    inp = copy.deepcopy(st["design"]["input"])
+    assert st["design"]["missing"] == []
+    r = report(inp)
+    assert r["input"]["motor"]["rs_ohm"] == 0.35
+
+
+def test_st_edited_resistance_breaks_the_cancellation():
+    files = [(n, t.replace("#define RS                     0.35", "#define RS 0.5"))
+             for n, t in _files("st", ST_SET)]
+    d = decode(files)
+    f = [f for f in d["findings"] if f["code"] == "inconsistent"]
+    assert len(f) == 1 and "RS" in f[0]["macros"] and chinese(f[0]["message_zh"])
+
+
+# -- NXP MCAT (nxp-mcuxpresso/mcuxsdk-examples : …/twrmc56f8200/…/m1_pmsm_appconfig.h) --------
+
+def test_nxp_fractions_are_the_printed_decimals(nxp):
+    m = nxp["macros"]
+    assert nxp["vendor"] == "nxp"
+    # ACC32(0.257498) = (acc32_t)(0.257498·32768) = (acc32_t)8437.69 → 8437
+    assert m["M1_D_KP_GAIN"]["value"] == 8437
+    # FRAC16(0.909091) = 29789.09 → 29789; ·N_MAX 4400 rpm
+    assert m["M1_N_NOM"]["value"] == 29789
+    assert m["M1_N_NOM"]["si"] == pytest.approx(29789 / 32768 * 4400, rel=1e-6)
+    # FRAC16(-0.375) = -12288 → −3 A of I_MAX 8 A
+    assert m["M1_SPEED_LOOP_LOW_LIMIT"]["si"] == pytest.approx(-3.0, rel=1e-12)
+
+
+def test_nxp_motor_recovered_from_the_observer_scales_matches_its_json(nxp):
+    # JSON: Rs 0.54 Ω, Ld 0.3356 mH, Lq 0.218 mH, PP 4; the header's integers carry them
+    mot = nxp["design"]["input"]["motor"]
+    assert mot["rs_ohm"] == pytest.approx(0.54, rel=1e-3)
+    assert mot["ld_h"] == pytest.approx(0.0003356, rel=1e-3)
+    assert mot["lq_h"] == pytest.approx(0.000218, rel=1e-3)
+    assert mot["pole_pairs"] == 4
+
+
+def test_nxp_current_loop_design_inputs_come_back(nxp):
+    # JSON currentLoopF0 288 Hz, ξ 1: Kp = (2ξω0·L − R)·I/U, Ki = ω0²·L·Ts/2·I/U
+    for axis in ("d", "q"):
+        c = nxp["design"]["current_loop"][axis]
+        assert c["mcat_f0_hz"] == pytest.approx(288.0, rel=2e-3)
+        assert c["mcat_ksi"] == pytest.approx(1.0, rel=2e-3)
+        assert c["cancels_plant"] is False
+
+
+def test_nxp_every_constant_agrees_with_its_json(nxp):
+    assert len(nxp["design"]["json_checked"]) >= 25
+    assert not [f for f in nxp["findings"] if f["code"] == "json"]
+    # by hand for one: (2·1·2π·288·0.0003356 − 0.54)·8/(36.3/√3) = 0.674575·0.381719 = 0.257497
+    kp = (2 * 2 * math.pi * 288 * 0.0003356 - 0.54) * 8 / (36.3 / math.sqrt(3))
+    assert int(kp * 32768) == nxp["macros"]["M1_D_KP_GAIN"]["value"]
+
+
+def test_nxp_a_constant_edited_by_hand_disagrees_with_the_json():
+    (n, t), = _files("nxp", ["m1_pmsm_appconfig.h"])
+    d = decode([(n, t.replace("ACC32(0.257498)", "ACC32(0.27)"))])
+    f = [f for f in d["findings"] if f["code"] == "json"]
+    # 0.27·32768 = 8847 against 8437: 410 LSB
+    assert [x["macros"] for x in f] == [["M1_D_KP_GAIN"]] and "410" in f[0]["message"]
+
+
+def test_nxp_sample_time_without_the_json(nxp):
+    (n, t), = _files("nxp", ["m1_pmsm_appconfig.h"])
+    start = t.index("/*\n{")
+    d = decode([(n, t[:start] + t[t.index("*/", start) + 2:])])
+    # M1_SCALAR_INTEG_GAIN = ACC32(0.0586667) = 1922; /2^15/(2·293.333 Hz) = 9.998e-5 s
+    assert d["design"]["ts_s"] == pytest.approx(1922 / 32768 / (2 * 293.333), rel=1e-6)
+    assert d["design"]["mcat_inputs"] is None
+
+
+def test_nxp_speed_integral_gain_loses_one_lsb_in_67(nxp):
+    # ACC32(0.00207345) = 67.94 → 67: 1/67 = 1.49 %
+    f = [f for f in nxp["findings"] if f["code"] == "rounding"]
+    assert [x["macros"] for x in f] == [["M1_SPEED_PI_INTEG_GAIN"]]
+
+
+# -- TI universal lab (anyway-blows/ti-c2000-motor-control-sdk) ------------------------------
+
+def test_ti_selected_motor_and_board(ti):
+    m = ti["macros"]
+    assert ti["vendor"] == "ti" and ti["target"] == "c28x"
+    # USER_MOTOR1 == Teknic_M2310PLN04K (122 in user_common.h): 4 pole pairs, 0.38157931f
+    assert m["USER_MOTOR1_NUM_POLE_PAIRS"]["value"] == 4
+    assert m["USER_MOTOR1_Rs_Ohm"]["value"] == pytest.approx(0.38157931, rel=1e-7)
+    # BSXL8323RS_REVA: 47.14285714f A over the whole ADC range
+    assert ti["design"]["input"]["board"]["current"]["max_a"] == pytest.approx(47.14285714 / 2,
+                                                                               rel=1e-7)
+    # (float32_t)USER_M1_CTRL_PERIOD_usec/(float32_t)1000000.0 with 1000/15 µs
+    assert m["USER_M1_CTRL_PERIOD_sec"]["value"] == pytest.approx(1 / 15000, rel=1e-7)
+    assert not ti["findings"]
+
+
+def test_ti_without_user_common_every_motor_id_is_zero():
+    d = decode(_files("ti", ["user_mtr1.h"]), defines=["BSXL8323RS_REVA"])
+    f = d["findings"][0]
+    assert f["code"] == "if_undefined" and "Teknic_M2310PLN04K" in f["message"]
+    # 0 == 0: the first motor (Estun_EMJ_04APB22_A) is read, not the one selected
+    assert d["macros"]["USER_MOTOR1_Rs_Ohm"]["value"] != pytest.approx(0.38157931)
+
+
+def test_ti_flux_comment_matches_no_reading():
+    files = [(n, t.replace("#define USER_MOTOR1 Teknic_M2310PLN04K",
+                           "#define USER_MOTOR1 Anaheim_BLWS235D"))
+             for n, t in _files("ti", ["user_mtr1.h", "user_common.h"])]
+    d = decode(files, defines=["BSXL8323RS_REVA"])
+    f = [f for f in d["findings"] if f["code"] == "comment_value"]
+    assert len(f) == 1 and "4.11 V/krpm" in f[0]["message"]
+    # 0.560590863 V/Hz at 2 pole pairs: 0.560590863·2·1000/60 = 18.69 V phase peak per krpm,
+    # 32.4 line peak, 22.9 line rms, 13.2 phase rms — none is 4.11
+    assert "phase peak 18.7" in f[0]["message"] and "line rms 22.9" in f[0]["message"]
+
+
+def test_ti_without_a_board_the_files_own_error_names_its_line():
+    with pytest.raises(InputError) as e:
+        decode(_files("ti", ["user_mtr1.h", "user_common.h"]))
+    assert "user_mtr1.h:571" in e.value.message and "#error" in e.value.message
+
+
+# -- Microchip motorBench (microchip-pic-avr-solutions/motorbench-release-collateral) --------
+
+@pytest.fixture(scope="module")
+def mchp():
+    return decode(_files("microchip", ["motor_params.h", "foc_params.h"]))
+
+
+def test_microchip_constants_are_their_printed_si_values(mchp):
+    m = mchp["macros"]
+    assert mchp["vendor"] == "microchip"
+    # no _SCALE macros in this version: the scale is the comment's SI value over its Q value,
+    # both printed with 5–6 digits (relative error ≤ 0.5e-5/0.14737 = 3.4e-5)
+    assert m["MCAF_MOTOR_RS"]["si"] == pytest.approx(0.24099626, rel=4e-5)  # +240.99626 mohm
+    assert m["KIP"]["si"] == pytest.approx(0.59922182, rel=2e-5)  # +599.22182 mV/A
+    assert m["KII"]["si"] == pytest.approx(1766.67, rel=1e-4)  # +1.76667 kV/A/s
+    assert m["MCAF_MOTOR_LQ_BASE_DT"]["si"] == pytest.approx(132.50053e-6, rel=1e-5)
+    assert mchp["design"]["input"]["motor"]["pole_pairs"] == 4
+
+
+def test_microchip_pwm_period_from_the_two_pi_scales(mchp):
+    # KII's base is KIP's over Δt: (0.59922182/0.36642)/(1766.67/0.05402) = 1.63534/32704 = 50 µs
+    assert mchp["design"]["ts_s"] == pytest.approx(50e-6, rel=2e-4)
+
+
+def test_microchip_speed_integral_gain_is_the_rounding_it_prints(mchp):
+    # KWI 8 // … = +16.94130 mA/rad = +17.14283 mA/rad - 1.1756%
+    f = [f for f in mchp["findings"] if f["code"] == "rounding"]
+    assert [x["macros"] for x in f] == [["KWI"]] and "-1.1756" in f[0]["message"]
+
+
+def test_microchip_integer_edited_after_generation():
+    files = [(n, t.replace("#define KIP                                 12007",
+                           "#define KIP                                 13007"))
+             for n, t in _files("microchip", ["motor_params.h", "foc_params.h"])]
+    f = [f for f in decode(files)["findings"] if f["code"] == "comment_stale"]
+    assert [x["macros"] for x in f] == [["KIP"]] and "Q15(0.36642)" in f[0]["message"]
+
+
+# -- pu-lab's own headers, decoded back -----------------------------------------------------
+
+def _own(vendor: str, extra: dict | None = None) -> tuple:
+    inp = copy.deepcopy(SEED_INPUT)
+    inp["profiles"] = extra or {}
+    r = report(inp)
+    text = profiles.header(r, vendor)
+    return r, decode([(f"{vendor}.h", text)])
+
+
+@pytest.mark.parametrize("vendor, extra, kp_name", [
+    ("st", None, "PID_TORQUE_KP_DEFAULT"),
+    ("ti", None, "USER_MTR1_KP_IQ_IQ"),
+    ("nxp", {"nxp": {"trapezoidal": True}}, "M1_Q_KP_GAIN"),
+    ("microchip", None, "KIP"),
+])
+def test_own_header_round_trip(vendor, extra, kp_name):
+    r, d = _own(vendor, extra)
+    assert d["vendor"] == vendor
+    pi = r["current_pi"]["q"]
+    c = d["design"]["current_loop"]["q"]
+    # the integers' quantization: below 0.1 % for these gains at this motor
+    assert c["kp_v_per_a"] == pytest.approx(pi["kp"], rel=1e-3)
+    assert c["ki_v_per_a_s"] == pytest.approx(pi["ki"], rel=1e-3)
+    mot = d["design"]["input"]["motor"]
+    if vendor in ("st", "ti"):  # pu-lab's NXP and Microchip blocks have no pole pairs
+        assert mot["pole_pairs"] == 4
+    # NXP's R and L come back through its Q15 observer scales, Microchip's through Q15/Q13
+    rel = {"nxp": 2e-3, "microchip": 1e-4}.get(vendor, 1e-12)
+    assert mot["rs_ohm"] == pytest.approx(1.5, rel=rel)
+    assert mot["lq_h"] == pytest.approx(6e-4, rel=rel)
+    assert d["design"]["input"]["drive"]["ts_s"] == pytest.approx(1e-4, rel=2e-3)
+
+
+def test_own_inovance_block_round_trip():
+    r, d = _own("inovance")
+    m = d["macros"]
+    # the raw table back in SI: the seed motor (17 V, 1.5 A, 220 Hz, 1.5 Ω, 0.6 mH)
+    assert d["design"]["input"]["motor"] == {k: pytest.approx(SEED_INPUT["motor"][k], rel=1e-12)
+                                             for k in d["design"]["input"]["motor"]}
+    assert m["PULAB_RPM"]["value"] == 15022  # seed 1.4-1
+    assert m["PULAB_PM_KP_Q"]["si"] == pytest.approx(r["current_pi"]["q"]["from_integers"]["kp"],
+                                                     rel=1e-12)
+    assert not d["findings"]
+    assert d["design"]["missing"] == ["motor.pole_pairs", "drive.ts_s"]
+
+
+def test_inovance_integer_edited_after_the_raw_table():
+    r = report({**copy.deepcopy(SEED_INPUT), "profiles": {}})
+    text = profiles.header(r, "inovance").replace("PULAB_RPM                    15022",
+                                                   "PULAB_RPM                    15100")
+    f = decode([("p.h", text)])["findings"]
+    assert [x["code"] for x in f] == ["inconsistent"] and "15022" in f[0]["message"]
+
+
+# -- bad input ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("files, field, words", [
+    ([], "files", "at least one"),
+    ([("a.h", "  \n")], "files[0]", "empty"),
+    ([("a.h", "#define FOO 1\n")], "files", "no #define of a known vendor"),
+    ([("a.h", "#define RS (0.35\n#define LS 1e-3\n")], "files", "a.h:1: #define RS"),
+    ([("a.h", "#define RS 0.35\n#if 1\n")], "files", "a.h:2"),
+    ([("a.h", "#define RS 1\x00\n")], "files[0]", "NUL"),
+    # a macro bomb: M0 expands to 3^20 tokens; the error names M0's #define (line 2)
+    ([("a.h", "#define RS 0.35\n" + "".join(f"#define M{i} (M{i+1} M{i+1} M{i+1})\n"
+                                             for i in range(20)) + "#define M20 1\n")],
+     "files", "a.h:2: macro"),
+])
+def test_bad_input_names_the_file(files, field, words):
+    with pytest.raises(InputError) as e:
+        decode(files)
+    assert e.value.field == field and words in e.value.message
+
+
+def test_cli_exit_codes(tmp_path):
+    ok = subprocess.run([sys.executable, "-m", "pulab", "decode",
+                         *(str(HEADERS / "st" / n) for n in ST_SET)],
+                        capture_output=True, text=True, cwd=ROOT, env={"PYTHONPATH": "py"})
+    assert ok.returncode == 0 and json.loads(ok.stdout)["vendor"] == "st"
+    empty = tmp_path / "empty.h"
+    empty.write_text("")
+    bad = subprocess.run([sys.executable, "-m", "pulab", "decode", str(empty)],
+                         capture_output=True, text=True, cwd=ROOT, env={"PYTHONPATH": "py"})
+    assert bad.returncode == 2 and bad.stdout == ""
+    assert bad.stderr.count("\n") == 1 and bad.stderr.startswith("error: files[0]: ")
