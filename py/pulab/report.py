@@ -17,6 +17,11 @@ from .profiles.inovance.magic import magic_constants
 from .model.datasheet import mechanical
 from .model.gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .schema.inputs import normalize
+from .schema.errors import InputError
+from .schema.fields import FIELD
+from .schema.validate import value
+from .model.acim import model as acim_model
+from .analyses import acim as _acim
 from .schema.catalog import render
 from .analyses.review import review
 from .analyses.slices import finish
@@ -84,16 +89,18 @@ def input_raw_split(n: dict) -> tuple[dict, dict]:
     return raw_split(_si(n), n["conventions"]["inductance_unit"], n["raw"])
 
 
-def current_pi_section(n: dict, b: dict) -> dict:
-    """The current PI gains of both axes (contract ``current_pi`` without ``step_example``)."""
+def current_pi_section(n: dict, b: dict, plant: tuple | None = None) -> dict:
+    """The current PI gains of both axes (contract ``current_pi`` without ``step_example``);
+    ``plant`` = (R [Ω], L_d [H], L_q [H]) of the loop, the motor's R_s, L_d, L_q when None."""
     m, d, cl = n["motor"], n["drive"], n["current_loop"]
+    r_ohm, ld_h, lq_h = plant or (m["rs_ohm"], m["ld_h"], m["lq_h"])
     pi = {"method": cl["method"],
           "bandwidth_hz": cl["bandwidth_hz"] if cl["method"] in ("bandwidth", "damping") else None}
-    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
+    for axis, l_h in (("d", ld_h), ("q", lq_h)):
         if cl["method"] == "integers":
             kp, ki = gains_from_integers(cl["pm_kp"], cl["pm_ki"], b["U_b"], b["I_b"], d["ts_s"])
         else:
-            kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
+            kp, ki = current_pi_si(cl["method"], r_ohm, l_h, cl["bandwidth_hz"],
                                    cl["damping"], cl["kp"], cl["ki"])
         pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
     return pi
@@ -131,6 +138,8 @@ def report_steps(inp: dict):
         Naming the field, for any bad input or firmware division by zero.
     """
     n = normalize(inp)
+    if n["motor"].get("kind") == "acim":
+        return _acim_report(n)
     m, d, c = n["motor"], n["drive"], n["conventions"]
     sim_in = None
     if "sim" in n:
@@ -199,6 +208,55 @@ def report_steps(inp: dict):
         extra += _loop.warnings(out["loop"])
     out["warnings"] += [render(code, params, "en") for code, params in extra]
     out["warnings_zh"] += [render(code, params, "zh") for code, params in extra]
+    return out
+
+
+def _acim_refuse(n: dict) -> None:
+    """An induction motor's input: the first section that does not apply, named."""
+    given = {"raw": n["raw"], "board": n.get("board"), "sim": n.get("sim"),
+             "profiles": n.get("profiles"),
+             "datasheet.speed_rpm": n.get("datasheet", {}).get("given", {}).get("speed_rpm")}
+    analysis = n["analysis"] if isinstance(n["analysis"], dict) else {}
+    given.update({f"analysis.{k}": analysis.get(k) for k in ("fw", "robust")})
+    speed = analysis.get("speed")
+    if isinstance(speed, dict) and speed.get("response"):   # its simulation runs a PMSM
+        raise InputError("analysis.speed.response", code="acim_not_applicable")
+    for path, v in given.items():
+        if path == "datasheet.speed_rpm" and v is not None:
+            raise InputError(path, code="only_with", key="kind", value="pmsm")
+        if v not in (None, {}) or (path.startswith("analysis.") and v is not None):
+            raise InputError(path, code="acim_not_applicable")
+
+
+def _acim_report(n: dict) -> dict:
+    """The report of an induction motor (docs/contract.md, "Induction motor")."""
+    _acim_refuse(n)
+    m, d, c = n["motor"], n["drive"], n["conventions"]
+    b = input_bases(n)
+    lms = n.get("datasheet", {}).get("given", {}).get("lms_h")
+    a = acim_model(m, None if lms is None else value(FIELD["datasheet.lms_h"], lms), b,
+                   c["base"], d["ts_s"])
+    a["inovance"] = _acim.INOVANCE
+    out = {"input": {k: v for k, v in n.items() if k not in ("sim", "analysis", "datasheet")},
+           "base": b, "acim": a,
+           "current_pi": current_pi_section(n, b, (a["r_sigma_ohm"], a["sigma_ls_h"],
+                                                   a["sigma_ls_h"])),
+           "pll": pll_gains(n["pll"]["bandwidth_hz"], n["pll"]["damping"], b["w_b"],
+                            b["theta_b"]),
+           "profiles": _acim.profiles(a, n)}
+    if "datasheet" in n:
+        out["datasheet"] = n["datasheet"]
+    extra = []
+    if n["analysis"] is not None:
+        from .analyses import loop as _loop
+        out["loop"] = _loop.analyze(_acim.loop_view(out, a), n["analysis"])
+        out["input"]["analysis"] = _loop.validate(n["analysis"])
+        extra = _loop.warnings(out["loop"])
+    out["review"] = _acim.review(n, a)
+    serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
+    out["warnings"] = [x["message"] for x in serious] + [render(k, p, "en") for k, p in extra]
+    out["warnings_zh"] = [x["message_zh"] for x in serious] + [render(k, p, "zh")
+                                                               for k, p in extra]
     return out
 
 

@@ -25,12 +25,13 @@ Examples
 from __future__ import annotations
 
 import math
+import struct
 from fractions import Fraction
 
 from ..fixedpoint.interval import RInterval, choose
 from ..fixedpoint.qformat import QEncoded, QFormat, encode
 
-__all__ = ["fixed", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "pow2_exponent",
+__all__ = ["fixed", "float32", "mantissa_shift", "SQRT2", "SQRT3", "TWO_PI", "pow2_divisor", "pow2_exponent",
            "within", "SOURCES", "derived"]
 
 SQRT2 = math.sqrt(2.0)
@@ -209,6 +210,25 @@ SOURCES = {
                 "zsmt-reference-actblf02-lvmc.X/mcc_generated_files/motorBench/parameters/"
                 "foc_params.h",
 }
+
+
+def float32(name: str, ideal: float, unit: str, expression: str, source: str) -> dict:
+    """One constant a vendor stores as a C ``float``: the record of :func:`fixed` with the
+    IEEE binary32 nearest to ``ideal`` as ``value`` (flag ``out_of_range`` beyond its range).
+
+    >>> c = float32("SIGMA", 0.2712671, "", "1 − L_m²/(L_s·L_r)", "ST")
+    >>> c["value"], c["format"], abs(c["error_pct"]) < 1e-5
+    (0.2712670862674713, 'float32', True)
+    """
+    try:
+        value = struct.unpack("<f", struct.pack("<f", ideal))[0]
+        flags = []
+    except OverflowError:
+        value, flags = math.copysign(math.inf, ideal), ["out_of_range"]
+    return {"name": name, "value": value, "ideal": ideal,
+            "error_pct": 0.0 if ideal == 0 or flags else 100.0 * (value - ideal) / ideal,
+            "format": "float32", "si": value, "si_ideal": ideal, "unit": unit, "scale": 1.0,
+            "expression": expression, "source": source, "flags": flags}
 
 
 def derived(why: str) -> str:

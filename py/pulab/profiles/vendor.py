@@ -149,6 +149,10 @@ OPTIONAL = {
     "decode_header": "decode_header(text) -> dict: its header read back into integers",
     "board": "board(opt) -> dict: its board's sensing and PWM conventions",
     "observer": "observer(ctx, opt) -> dict: its observer's constants",
+    "acim": "acim(a, n) -> dict: its induction-motor constants from the report's ``acim`` "
+            "section ``a`` and the normalized input ``n``: ``constants`` (records as "
+            "``profile``'s; :func:`pulab.profiles.common.float32` where it stores floats), "
+            "``not_covered`` (its ACIM constants not computed here, and why)",
 }
 
 

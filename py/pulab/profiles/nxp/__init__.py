@@ -1,5 +1,6 @@
 """NXP MCAT / RTCESL: fractions of U_max and I_max, ACC32 and FRAC16 + shift."""
 
+from .induction import acim
 from .header import header
 from .pi import controller
 from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)

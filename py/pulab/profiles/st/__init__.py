@@ -1,5 +1,6 @@
 """ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors."""
 
+from .induction import acim
 from .header import header
 from .pi import controller
 from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
