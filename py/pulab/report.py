@@ -213,7 +213,7 @@ def report_steps(inp: dict):
 
 def _acim_refuse(n: dict) -> None:
     """An induction motor's input: the first section that does not apply, named."""
-    given = {"raw": n["raw"], "board": n.get("board"), "sim": n.get("sim"),
+    given = {"raw": n["raw"] or None, "board": n.get("board"), "sim": n.get("sim"),
              "profiles": n.get("profiles"),
              "datasheet.speed_rpm": n.get("datasheet", {}).get("given", {}).get("speed_rpm")}
     analysis = n["analysis"] if isinstance(n["analysis"], dict) else {}
@@ -224,7 +224,7 @@ def _acim_refuse(n: dict) -> None:
     for path, v in given.items():
         if path == "datasheet.speed_rpm" and v is not None:
             raise InputError(path, code="only_with", key="kind", value="pmsm")
-        if v not in (None, {}) or (path.startswith("analysis.") and v is not None):
+        if v is not None:
             raise InputError(path, code="acim_not_applicable")
 
 

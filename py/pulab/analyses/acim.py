@@ -76,10 +76,11 @@ def review(n: dict, a: dict, robust_c: tuple = (20.0, 155.0), alpha: float = 0.0
     if a["torque_current_a"] is None:
         _finding(f, "error", "acim_im_ge_rated", "acim.magnetizing_current_a",
                  "motor.magnetizing_current_a", a["magnetizing_current_a"],
-                 rated=m["rated_current_a"])
+                 value=a["magnetizing_current_a"], rated=m["rated_current_a"])
     if a["magnetizing_from"] == "no_load_estimate":
         _finding(f, "note", "acim_im_estimated", "acim.magnetizing_current_a",
-                 "motor.magnetizing_current_a", a["magnetizing_current_a"])
+                 "motor.magnetizing_current_a", a["magnetizing_current_a"],
+                 value=a["magnetizing_current_a"])
     _finding(f, "note", "acim_flux_build", "acim.flux_95_s", "motor.rr_ohm", a["flux_95_s"],
              t95=a["flux_95_s"], tau=a["tau_r_s"])
     pct = 100.0 * alpha * (robust_c[1] - robust_c[0])

@@ -212,16 +212,20 @@ SOURCES = {
 }
 
 
-def float32(name: str, ideal: float, unit: str, expression: str, source: str) -> dict:
+def float32(name: str, ideal: float, unit: str, expression: str, source: str,
+            decimals: int | None = None) -> dict:
     """One constant a vendor stores as a C ``float``: the record of :func:`fixed` with the
-    IEEE binary32 nearest to ``ideal`` as ``value`` (flag ``out_of_range`` beyond its range).
+    IEEE binary32 nearest to ``ideal`` as ``value`` (flag ``out_of_range`` beyond its range);
+    ``decimals``: the generator prints ``ideal`` with that many decimals first, and the
+    compiler rounds the printed text.
 
-    >>> c = float32("SIGMA", 0.2712671, "", "1 − L_m²/(L_s·L_r)", "ST")
-    >>> c["value"], c["format"], abs(c["error_pct"]) < 1e-5
-    (0.2712670862674713, 'float32', True)
+    >>> c = float32("SIGMA", 0.27126710291, "", "1 − L_m²/(L_s·L_r)", "ST", decimals=7)
+    >>> c["value"], c["format"], round(c["error_pct"], 6)
+    (0.2712670862674713, 'float32', -6e-06)
     """
+    printed = ideal if decimals is None else float(f"{ideal:.{decimals}f}")
     try:
-        value = struct.unpack("<f", struct.pack("<f", ideal))[0]
+        value = struct.unpack("<f", struct.pack("<f", printed))[0]
         flags = []
     except OverflowError:
         value, flags = math.copysign(math.inf, ideal), ["out_of_range"]

@@ -29,7 +29,10 @@ import math
 
 from ..common import float32
 
-__all__ = ["acim", "SOURCE"]
+__all__ = ["acim", "SOURCE", "DECIMALS"]
+
+#: Decimals the generator prints (the C compiler rounds that text to a float).
+DECIMALS = 12
 
 SOURCE = ("Masmiseim36/nxpSDK : boards/hvpkv58f/demo_apps/mc_acim/m1_acim_appconfig.h "
           "(formula fitted to its printed values)")
@@ -52,6 +55,6 @@ def acim(a: dict, n: dict) -> dict:
             ("M1_D_KI_GAIN", ki, "V/A", "ω_0²·σL_s·T_s"),
             ("M1_Q_KP_GAIN", kp, "V/A", "2ζω_0·σL_s − R_s"),
             ("M1_Q_KI_GAIN", ki, "V/A", "ω_0²·σL_s·T_s"))
-    return {"constants": {k: float32(k, v, u, e, SOURCE) for k, v, u, e in rows},
+    return {"constants": {k: float32(k, v, u, e, SOURCE, DECIMALS) for k, v, u, e in rows},
             "not_covered": "M1_RFO_PSI_SA1/SA2 (the stator-flux integrator's cut-off, an MCAT "
                            "setting), the speed PI and the field-weakening gains"}

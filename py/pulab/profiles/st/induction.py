@@ -20,7 +20,10 @@ import math
 
 from ..common import float32
 
-__all__ = ["acim", "SOURCE"]
+__all__ = ["acim", "SOURCE", "DECIMALS"]
+
+#: Decimals the generator prints (the C compiler rounds that text to a float).
+DECIMALS = 7
 
 SOURCE = "novaksta/MEZ-ACIM-FOC : Inc/acim_motor_parameters.h"
 
@@ -38,6 +41,6 @@ def acim(a: dict, n: dict) -> dict:
             ("NOMINAL_PHASE_VOLTAGE", m["rated_voltage_v"] / math.sqrt(3.0), "V",
              "U_LL/√3 (RMS)"),
             ("NOMINAL_FREQ", m["rated_freq_hz"], "Hz", "f_n"))
-    return {"constants": {k: float32(k, v, u, e, SOURCE) for k, v, u, e in rows},
+    return {"constants": {k: float32(k, v, u, e, SOURCE, DECIMALS) for k, v, u, e in rows},
             "not_covered": "FLUX_K and NOMINAL_CURRENT (board-scaled by CURRENT_CONV_FACTOR), "
                            "the LSO observer's gains (acim_lso_parameters.h: GUI settings)"}
