@@ -280,7 +280,7 @@ TABLE = (
     F('datasheet.dc_bus_v', 'number', 'V', sign='>0', lo=1e-9, hi=1e9,
       label=('DC bus voltage (DC-bus motor)', '直流母线电压（直流供电电机）')),
     F('datasheet.lms_h', 'number', 'H', sign='>0', lo=1e-9, hi=1e9,
-      only_with=('motor.kind', 'acim'),
+      derived='absent; refused unless motor.kind = acim',
       label=('Induction motor: L_ms = 2/3·L_m (per-phase magnetizing, steady-state model)',
              '异步电机：L_ms = 2/3·L_m（每相励磁电感，稳态模型）')),
     Section('board', ("the board's sensing and PWM (absent: none; every field optional)",
