@@ -31,7 +31,7 @@ from .profiles.inovance_code import current_pi_step, raw_from_si, raw_split, ven
 from .profiles.vendor import provided
 
 __all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "input_raw_split",
-           "current_pi_section"]
+           "current_pi_section", "require_pmsm"]
 
 
 def _profile_warnings(prof: dict) -> list:
@@ -73,7 +73,17 @@ def input_bases(n: dict) -> dict:
                  c["base_voltage_v"], c["base_current_a"], c["angle_base"])
 
 
+def require_pmsm(n: dict) -> None:
+    """Refuse an induction motor (input ``n``, given or normalized) where only a PMSM's
+    firmware integers are computed (the Inovance raw block, sweeps, batches, proofs,
+    translation)."""
+    motor = n.get("motor")
+    if isinstance(motor, dict) and motor.get("kind") == "acim":
+        raise InputError("motor.kind", code="acim_not_applicable")
+
+
 def _si(n: dict) -> dict:
+    require_pmsm(n)
     return {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
 
 
@@ -280,8 +290,29 @@ def _loop_rows(loop: dict) -> list:
                    f"{'stable' if m['stable'] else 'UNSTABLE'}") for name, m in cases]
 
 
+def _acim_text(r: dict) -> list:
+    """The induction motor's tables of :func:`format_text`."""
+    a = r["acim"]
+    skip = ("pu", "observer", "inovance", "magnetizing_from")
+    lines = _table(f"Induction motor (I_m {a['magnetizing_from'].replace('_', ' ')})", [
+        (k, "—" if v is None else f"{v:.6g}   pu {a['pu'][k]:.6g}" if a["pu"].get(k) is not None
+         else f"{v:.6g}") for k, v in a.items() if k not in skip])
+    lines += _table("Current-model observer (ψ_k = a·ψ_k−1 + b·i_d)",
+                    [(k, f"{v:.9g}") for k, v in a["observer"].items()])
+    for name, p in r["profiles"].items():
+        if not p["available"]:
+            lines += [f"Profile {name}: {p['reason']}", ""]
+            continue
+        lines += _table(f"Profile {name} (induction motor)", [
+            (k, f"{c['value']!r:>22}  {c['format']}  err {c['error_pct']:+.2e} %  = {c['expression']}")
+            for k, c in p["constants"].items()])
+    return lines
+
+
 def format_text(r: dict) -> str:
     """Readable tables of a report, for the terminal (``--format text``)."""
+    if "acim" in r:
+        return _format_acim_text(r)
     b, pu = r["base"], r["pu"]
     units = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",
              "psi_b": "Wb", "T_b": "s", "P_b": "W", "theta_b": "rad"}
@@ -358,4 +389,22 @@ def format_text(r: dict) -> str:
     other = [w for w in r["warnings"] if w not in reviewed]
     if other:
         lines += ["Warnings", "--------"] + [f"  ! {w}" for w in other]
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def _format_acim_text(r: dict) -> str:
+    units = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",
+             "psi_b": "Wb", "T_b": "s", "P_b": "W", "theta_b": "rad"}
+    lines = _table("Bases", [(k, f"{v:.6g} {units[k]}") for k, v in r["base"].items()])
+    lines += _acim_text(r)
+    rows = [(f"{axis}-axis", f"kp {g['kp']:.6g} Ω  ki {g['ki']:.6g} Ω/s  pm_kp {g['pm_kp']} (Q12)  "
+                             f"pm_ki {g['pm_ki']} (Q16)")
+            for axis, g in ((x, r["current_pi"][x]) for x in ("d", "q"))]
+    lines += _table(f"Current PI on σ·L_s, R_σ ({r['current_pi']['method']})", rows)
+    if "loop" in r:
+        lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
+    c = r["review"]["counts"]
+    title = f"Design review: {c['error']} error(s), {c['warning']} warning(s), {c['note']} note(s)"
+    lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] {x['message']}"
+                                          for x in r["review"]["findings"]]
     return "\n".join(lines).rstrip() + "\n"

@@ -196,3 +196,15 @@ def test_pmsm_report_holds_no_kind():
     explicit = copy.deepcopy(SEED)
     explicit["motor"]["kind"] = "pmsm"
     assert json.dumps(pulab.report(explicit)) == json.dumps(r)
+
+
+def test_text_format_and_families_refuse():
+    inp = _case("01_st_mez_acim")["input"]
+    text = pulab.format_text(pulab.report(inp)) if hasattr(pulab, "format_text") else \
+        __import__("pulab.report", fromlist=["format_text"]).format_text(pulab.report(inp))
+    assert "Induction motor (I_m given)" in text and "tau_r_s                0.15375" in text
+    assert "Profile ti: no public induction-motor scaling" in text
+    from pulab.analyses.sweep import make_plan
+    with pytest.raises(InputError) as e:
+        make_plan({"input": inp, "x": {"path": "motor.rated_current_a", "start": 1, "stop": 2}})
+    assert e.value.field == "motor.kind"
