@@ -200,8 +200,8 @@ def test_pmsm_report_holds_no_kind():
 
 def test_text_format_and_families_refuse():
     inp = _case("01_st_mez_acim")["input"]
-    text = pulab.format_text(pulab.report(inp)) if hasattr(pulab, "format_text") else \
-        __import__("pulab.report", fromlist=["format_text"]).format_text(pulab.report(inp))
+    from pulab.report import format_text
+    text = format_text(pulab.report(inp))
     assert "Induction motor (I_m given)" in text and "tau_r_s                0.15375" in text
     assert "Profile ti: no public induction-motor scaling" in text
     from pulab.analyses.sweep import make_plan
