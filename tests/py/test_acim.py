@@ -208,3 +208,14 @@ def test_text_format_and_families_refuse():
     with pytest.raises(InputError) as e:
         make_plan({"input": inp, "x": {"path": "motor.rated_current_a", "start": 1, "stop": 2}})
     assert e.value.field == "motor.kind"
+
+
+def test_benchmark_line():
+    from pulab.benchmark import ACIM, acim_timing, format_run
+    assert pulab.report(ACIM)["loop"]["speed"]["bases"]["kt_nm_per_a"] > 0
+    t = acim_timing(1)
+    assert set(t) == {"plain", "loop"} and all(x > 0 for x in t.values())
+    r = {"python": "cpython", "platform": "test", "report_ms": {}, "acim_ms": t,
+         "sim": {"steps": 1, "total_s": 1.0, "steps_per_s": 1.0, "fixed_no_memo_s": 1.0,
+                 "vendors_s": 1.0}}
+    assert "report(), induction motor:" in format_run(r)
