@@ -14,7 +14,7 @@ import json
 import sys
 import time
 
-__all__ = ["run", "report_timing", "loop_timing", "trace_timing", "board_timing", "observer_timing", "format_run", "MOTORS",
+__all__ = ["run", "report_timing", "loop_timing", "acim_timing", "ACIM", "trace_timing", "board_timing", "observer_timing", "format_run", "MOTORS",
            "TRACE_SNIPPET", "TRACE_INPUTS"]
 
 #: Motors of different sizes; timing differs little, but one motor would hide outliers.
@@ -259,6 +259,32 @@ def observer_timing(n: int = 200) -> dict:
     return _paired({**MOTORS["seed 17 V"], "profiles": {}}, {"observer": {}}, n)
 
 
+#: An induction motor (ST's public ACIM GUI example), with the loop analysis and a speed loop.
+ACIM = {"motor": {"kind": "acim", "rated_voltage_v": 72.74613391789285, "rated_current_a": 1.5,
+                  "rated_freq_hz": 50, "rated_speed_rpm": 1370, "pole_pairs": 2, "rs_ohm": 0.6,
+                  "rr_ohm": 0.4, "lls_h": 0.009, "llr_h": 0.009, "lm_h": 0.0525,
+                  "magnetizing_current_a": 0.55},
+        "drive": {"udc_v": 150, "ts_s": 1e-4},
+        "analysis": {"speed": {"inertia_kg_m2": 1e-3}}}
+
+
+def acim_timing(n: int = 30) -> dict:
+    """Median milliseconds of an induction motor's report, plain and with the loop analysis
+    (the plain report's target is the PMSM's: under 5 ms in Pyodide)."""
+    from .report import report
+    out = {}
+    for name, inp in (("plain", {k: v for k, v in ACIM.items() if k != "analysis"}),
+                      ("loop", ACIM)):
+        report(inp)
+        times = []
+        for _ in range(n):
+            t0 = time.perf_counter()
+            report(inp)
+            times.append((time.perf_counter() - t0) * 1e3)
+        out[name] = sorted(times)[n // 2]
+    return out
+
+
 def run(sim_steps: int = 20000) -> dict:
     """All core benchmarks: ``report_ms`` per motor, ``loop_ms``, ``sim`` (see pulab.analyses.sim.bench),
     ``trace``."""
@@ -266,7 +292,7 @@ def run(sim_steps: int = 20000) -> dict:
     return {"python": f"{sys.implementation.name} {sys.version.split()[0]}",
             "platform": sys.platform, "report_ms": report_timing(), "loop_ms": loop_timing(),
             "sim": bench(sim_steps), "trace": trace_timing(), "board": board_timing(),
-            "observer": observer_timing()}
+            "observer": observer_timing(), "acim_ms": acim_timing()}
 
 
 def format_run(r: dict) -> str:
@@ -285,6 +311,10 @@ def format_run(r: dict) -> str:
         o = r["observer"]
         lines.append(f"  report() with every profile, seed motor, with observer {{}}: "
                      f"{o['with_ms']:.3f} ms median = {o['ratio']:.3f}× (target ≤ 1.3×)")
+    if "acim_ms" in r:
+        a = r["acim_ms"]
+        lines.append(f"  report(), induction motor: {a['plain']:.3f} ms median; with the loop "
+                     f"analysis and a speed loop {a['loop']:.3f} ms (target < 5 ms plain in Pyodide)")
     s = r["sim"]
     lines.append(f"  sim: {s['steps']} steps × 7 variants (si, pu, fixed; ti, nxp, st, microchip) "
                  f"in {s['total_s']:.3f} s = {s['steps_per_s']:.0f} steps/s (target < 0.5 s "

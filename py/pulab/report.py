@@ -18,6 +18,11 @@ from .profiles.inovance.magic import magic_constants
 from .model.datasheet import mechanical
 from .model.gains import current_pi, current_pi_si, gains_from_integers, pll_gains
 from .schema.inputs import normalize
+from .schema.errors import InputError
+from .schema.fields import FIELD
+from .schema.validate import value
+from .model.acim import model as acim_model
+from .analyses import acim as _acim
 from .schema.catalog import render
 from .analyses.review import review
 from .analyses.slices import finish
@@ -27,7 +32,7 @@ from .profiles.inovance_code import current_pi_step, raw_from_si, raw_split, ven
 from .profiles.vendor import provided
 
 __all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "input_raw_split",
-           "current_pi_section"]
+           "current_pi_section", "require_pmsm"]
 
 
 def _profile_warnings(prof: dict) -> list:
@@ -69,7 +74,17 @@ def input_bases(n: dict) -> dict:
                  c["base_voltage_v"], c["base_current_a"], c["angle_base"])
 
 
+def require_pmsm(n: dict) -> None:
+    """Refuse an induction motor (input ``n``, given or normalized) where only a PMSM's
+    firmware integers are computed (the Inovance raw block, sweeps, batches, proofs,
+    translation)."""
+    motor = n.get("motor")
+    if isinstance(motor, dict) and motor.get("kind") == "acim":
+        raise InputError("motor.kind", code="acim_not_applicable")
+
+
 def _si(n: dict) -> dict:
+    require_pmsm(n)
     return {f"{s}.{k}": v for s in ("motor", "drive") for k, v in n[s].items()}
 
 
@@ -85,16 +100,18 @@ def input_raw_split(n: dict) -> tuple[dict, dict]:
     return raw_split(_si(n), n["conventions"]["inductance_unit"], n["raw"])
 
 
-def current_pi_section(n: dict, b: dict) -> dict:
-    """The current PI gains of both axes (contract ``current_pi`` without ``step_example``)."""
+def current_pi_section(n: dict, b: dict, plant: tuple | None = None) -> dict:
+    """The current PI gains of both axes (contract ``current_pi`` without ``step_example``);
+    ``plant`` = (R [Ω], L_d [H], L_q [H]) of the loop, the motor's R_s, L_d, L_q when None."""
     m, d, cl = n["motor"], n["drive"], n["current_loop"]
+    r_ohm, ld_h, lq_h = plant or (m["rs_ohm"], m["ld_h"], m["lq_h"])
     pi = {"method": cl["method"],
           "bandwidth_hz": cl["bandwidth_hz"] if cl["method"] in ("bandwidth", "damping") else None}
-    for axis, l_h in (("d", m["ld_h"]), ("q", m["lq_h"])):
+    for axis, l_h in (("d", ld_h), ("q", lq_h)):
         if cl["method"] == "integers":
             kp, ki = gains_from_integers(cl["pm_kp"], cl["pm_ki"], b["U_b"], b["I_b"], d["ts_s"])
         else:
-            kp, ki = current_pi_si(cl["method"], m["rs_ohm"], l_h, cl["bandwidth_hz"],
+            kp, ki = current_pi_si(cl["method"], r_ohm, l_h, cl["bandwidth_hz"],
                                    cl["damping"], cl["kp"], cl["ki"])
         pi[axis] = current_pi(kp, ki, l_h, b["U_b"], b["I_b"], d["ts_s"])
     return pi
@@ -132,6 +149,8 @@ def report_steps(inp: dict):
         Naming the field, for any bad input or firmware division by zero.
     """
     n = normalize(inp)
+    if n["motor"].get("kind") == "acim":
+        return _acim_report(n)
     m, d, c = n["motor"], n["drive"], n["conventions"]
     sim_in = None
     if "sim" in n:
@@ -213,6 +232,55 @@ def report_steps(inp: dict):
     return out
 
 
+def _acim_refuse(n: dict) -> None:
+    """An induction motor's input: the first section that does not apply, named."""
+    given = {"raw": n["raw"] or None, "board": n.get("board"), "sim": n.get("sim"),
+             "profiles": n.get("profiles"),
+             "datasheet.speed_rpm": n.get("datasheet", {}).get("given", {}).get("speed_rpm")}
+    analysis = n["analysis"] if isinstance(n["analysis"], dict) else {}
+    given.update({f"analysis.{k}": analysis.get(k) for k in ("fw", "robust")})
+    speed = analysis.get("speed")
+    if isinstance(speed, dict) and speed.get("response"):   # its simulation runs a PMSM
+        raise InputError("analysis.speed.response", code="acim_not_applicable")
+    for path, v in given.items():
+        if path == "datasheet.speed_rpm" and v is not None:
+            raise InputError(path, code="only_with", key="kind", value="pmsm")
+        if v is not None:
+            raise InputError(path, code="acim_not_applicable")
+
+
+def _acim_report(n: dict) -> dict:
+    """The report of an induction motor (docs/contract.md, "Induction motor")."""
+    _acim_refuse(n)
+    m, d, c = n["motor"], n["drive"], n["conventions"]
+    b = input_bases(n)
+    lms = n.get("datasheet", {}).get("given", {}).get("lms_h")
+    a = acim_model(m, None if lms is None else value(FIELD["datasheet.lms_h"], lms), b,
+                   c["base"], d["ts_s"])
+    a["inovance"] = _acim.INOVANCE
+    out = {"input": {k: v for k, v in n.items() if k not in ("sim", "analysis", "datasheet")},
+           "base": b, "acim": a,
+           "current_pi": current_pi_section(n, b, (a["r_sigma_ohm"], a["sigma_ls_h"],
+                                                   a["sigma_ls_h"])),
+           "pll": pll_gains(n["pll"]["bandwidth_hz"], n["pll"]["damping"], b["w_b"],
+                            b["theta_b"]),
+           "profiles": _acim.profiles(a, n)}
+    if "datasheet" in n:
+        out["datasheet"] = n["datasheet"]
+    extra = []
+    if n["analysis"] is not None:
+        from .analyses import loop as _loop
+        out["loop"] = _loop.analyze(_acim.loop_view(out, a), n["analysis"])
+        out["input"]["analysis"] = _loop.validate(n["analysis"])
+        extra = _loop.warnings(out["loop"])
+    out["review"] = _acim.review(n, a)
+    serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
+    out["warnings"] = [x["message"] for x in serious] + [render(k, p, "en") for k, p in extra]
+    out["warnings_zh"] = [x["message_zh"] for x in serious] + [render(k, p, "zh")
+                                                               for k, p in extra]
+    return out
+
+
 def _table(title: str, rows: list) -> list:
     width = max(len(r[0]) for r in rows)
     return [title, "-" * len(title)] + [f"  {k.ljust(width)}  {v}" for k, v in rows] + [""]
@@ -233,8 +301,29 @@ def _loop_rows(loop: dict) -> list:
                    f"{'stable' if m['stable'] else 'UNSTABLE'}") for name, m in cases]
 
 
+def _acim_text(r: dict) -> list:
+    """The induction motor's tables of :func:`format_text`."""
+    a = r["acim"]
+    skip = ("pu", "observer", "inovance", "magnetizing_from")
+    lines = _table(f"Induction motor (I_m {a['magnetizing_from'].replace('_', ' ')})", [
+        (k, "—" if v is None else f"{v:.6g}   pu {a['pu'][k]:.6g}" if a["pu"].get(k) is not None
+         else f"{v:.6g}") for k, v in a.items() if k not in skip])
+    lines += _table("Current-model observer (ψ_k = a·ψ_k−1 + b·i_d)",
+                    [(k, f"{v:.9g}") for k, v in a["observer"].items()])
+    for name, p in r["profiles"].items():
+        if not p["available"]:
+            lines += [f"Profile {name}: {p['reason']}", ""]
+            continue
+        lines += _table(f"Profile {name} (induction motor)", [
+            (k, f"{c['value']!r:>22}  {c['format']}  err {c['error_pct']:+.2e} %  = {c['expression']}")
+            for k, c in p["constants"].items()])
+    return lines
+
+
 def format_text(r: dict) -> str:
     """Readable tables of a report, for the terminal (``--format text``)."""
+    if "acim" in r:
+        return _format_acim_text(r)
     b, pu = r["base"], r["pu"]
     units = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",
              "psi_b": "Wb", "T_b": "s", "P_b": "W", "theta_b": "rad"}
@@ -311,4 +400,22 @@ def format_text(r: dict) -> str:
     other = [w for w in r["warnings"] if w not in reviewed]
     if other:
         lines += ["Warnings", "--------"] + [f"  ! {w}" for w in other]
+    return "\n".join(lines).rstrip() + "\n"
+
+
+def _format_acim_text(r: dict) -> str:
+    units = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",
+             "psi_b": "Wb", "T_b": "s", "P_b": "W", "theta_b": "rad"}
+    lines = _table("Bases", [(k, f"{v:.6g} {units[k]}") for k, v in r["base"].items()])
+    lines += _acim_text(r)
+    rows = [(f"{axis}-axis", f"kp {g['kp']:.6g} Ω  ki {g['ki']:.6g} Ω/s  pm_kp {g['pm_kp']} (Q12)  "
+                             f"pm_ki {g['pm_ki']} (Q16)")
+            for axis, g in ((x, r["current_pi"][x]) for x in ("d", "q"))]
+    lines += _table(f"Current PI on σ·L_s, R_σ ({r['current_pi']['method']})", rows)
+    if "loop" in r:
+        lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
+    c = r["review"]["counts"]
+    title = f"Design review: {c['error']} error(s), {c['warning']} warning(s), {c['note']} note(s)"
+    lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] {x['message']}"
+                                          for x in r["review"]["findings"]]
     return "\n".join(lines).rstrip() + "\n"

@@ -109,6 +109,8 @@ def test_normalize_fills_every_default_from_the_schema():
             given = SEED_INPUT.get(sec, {}).get(k)
             if sec == "raw":
                 assert k not in out["raw"]  # raw holds only the values given
+            elif sec == "motor" and (k == "kind" or f.only_with == ("motor.kind", "acim")):
+                assert k not in out["motor"]  # a PMSM's motor: as before motor.kind existed
             elif given is not None:
                 assert out[sec][k] == given
             elif f.only_with and out[sec][f.only_with[0].rsplit(".", 1)[1]] != f.only_with[1]:

@@ -41,7 +41,7 @@ from decimal import Decimal, InvalidOperation
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.validate import shown
-from ..report import report
+from ..report import report, require_pmsm
 from ..profiles.inovance_code import RAW_FIELDS, VENDOR_RESULTS
 
 __all__ = ["read_table", "batch_rows", "batch_csv", "to_csv", "output_columns", "findings_counts",
@@ -252,7 +252,9 @@ def batch_rows(text: str, start: int = 0, count: int | None = None) -> list:
             if "." not in name:
                 rec[name] = cell
         try:
-            rec.update(_report_cells(report(_row_input(columns, cells))), error="", error_zh="")
+            r = report(_row_input(columns, cells))
+            require_pmsm(r["input"])
+            rec.update(_report_cells(r), error="", error_zh="")
         except InputError as e:
             rec.update(error=f"{e.field}: {e.message}", error_zh=f"{e.field}: {e.message_zh}")
         out.append(rec)

@@ -166,6 +166,8 @@ def make_problem(req) -> Problem:
     inp = req.get("input")
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
+    from ..report import require_pmsm
+    require_pmsm(inp)
     inp = {k: v for k, v in inp.items() if k not in ("sim", "analysis", "profiles")}
     profile = req.get("profile")
     if profile is not None and (not isinstance(profile, str)

@@ -47,6 +47,7 @@ from ..schema.fields import FIELD
 from .loop.inputs import validate as check_analysis
 from ..schema.inputs import SECTIONS
 from ..schema.validate import object_fields, real, shown
+from ..report import require_pmsm
 from .integers import RAW_ONLY_NAMES, STATUSES, evaluate, integer_names, profile_name
 from ..fixedpoint.qformat import round_half_away
 from ..profiles.inovance_code import raw_value
@@ -149,6 +150,7 @@ def make_plan(req: dict) -> Plan:
     inp = req.get("input")
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
+    require_pmsm(inp)
     # Simulations do not change a firmware integer: dropped, not echoed with each worst case.
     inp = {k: v for k, v in inp.items() if k != "sim"}
     # The loop analysis is echoed too but checked by no point of an Inovance sweep.

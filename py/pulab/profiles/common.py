@@ -224,25 +224,37 @@ SOURCES = {
 
 
 def real(name: str, ideal: float, unit: str, expression: str, source: str, *,
-         single: bool = False) -> dict:
+         single: bool = False, decimals: int | None = None) -> dict:
     """One real number a vendor's header keeps as a C floating constant (no Q format).
 
     The record has the keys of :func:`fixed` (``q`` 0, ``shift`` 0, ``scale`` 1) and
     ``real`` True; ``value`` is the number the compiler stores: ``ideal`` itself for a
-    ``double``, or rounded to the nearest float for a ``float`` literal (``single``),
-    ``error_pct`` being that rounding.
+    ``double``, or the nearest IEEE binary32 for a ``float`` literal (``single``; flag
+    ``out_of_range`` beyond its range), ``error_pct`` being that rounding. ``decimals``: the
+    generator prints ``ideal`` with that many decimals first, and the compiler rounds the text.
 
     >>> c = real("USER_M1_ADC_FULL_SCALE_CURRENT_A", 3.3 / 0.07, "A", "V_ref/(R·G)", "TI",
     ...          single=True)
     >>> c["value"], c["format"], f"{c['error_pct']:.1e}"
     (47.14285659790039, 'float32', '-1.2e-06')
+    >>> c = real("SIGMA", 0.27126710291, "", "1 − L_m²/(L_s·L_r)", "ST", single=True, decimals=7)
+    >>> c["value"], round(c["error_pct"], 6)
+    (0.2712670862674713, -6e-06)
     """
-    value = struct.unpack("<f", struct.pack("<f", ideal))[0] if single else float(ideal)
+    printed = float(ideal) if decimals is None else float(f"{ideal:.{decimals}f}")
+    flags = []
+    if not single:
+        value = printed
+    else:
+        try:
+            value = struct.unpack("<f", struct.pack("<f", printed))[0]
+        except OverflowError:
+            value, flags = math.copysign(math.inf, ideal), ["out_of_range"]
     return {"name": name, "value": value, "ideal": float(ideal),
-            "error_pct": 0.0 if ideal == 0 else 100.0 * (value - ideal) / ideal,
+            "error_pct": 0.0 if ideal == 0 or flags else 100.0 * (value - ideal) / ideal,
             "format": "float32" if single else "double", "q": 0, "word_bits": 32 if single else 64,
             "shift": 0, "si": value, "si_ideal": float(ideal), "unit": unit, "scale": 1.0,
-            "expression": expression, "source": source, "flags": [], "real": True}
+            "expression": expression, "source": source, "flags": flags, "real": True}
 
 
 def board_value(ctx: dict, chain: str, key: str, default):

@@ -32,7 +32,7 @@ from __future__ import annotations
 
 from ..schema.errors import InputError
 from ..schema.validate import integer, object_fields, shown
-from ..report import report
+from ..report import report, require_pmsm
 from . import options, registry
 from .context import context_of
 
@@ -85,6 +85,7 @@ def translate(inp: dict, source: str, axis: str, values) -> dict:
     # The report without profiles gives the SI context; only the options are needed here,
     # not the five profiles' constants (which cost ten times the rest in Pyodide).
     r = report({k: v for k, v in inp.items() if k != "profiles"})
+    require_pmsm(r["input"])
     ctx = context_of(r)
     opts = options(inp.get("profiles"), ctx)
     kp, ki = mod.ints_to_gains(ints[kp_name], ints[ki_name], ctx, opts[source], axis)

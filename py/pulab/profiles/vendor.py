@@ -159,6 +159,10 @@ OPTIONAL = {
     "observer": "observer(ctx, opt) -> dict: its sensorless constants (constant records, added "
                 "to its profile's) for the settings ``ctx['observer']`` "
                 "(:func:`pulab.model.observer.settings`; None when the input has no ``observer``)",
+    "acim": "acim(a, n) -> dict: its induction-motor constants from the report's ``acim`` "
+            "section ``a`` and the normalized input ``n``: ``constants`` (records as "
+            "``profile``'s; :func:`pulab.profiles.common.real` where it stores floats), "
+            "``not_covered`` (its ACIM constants not computed here, and why)",
 }
 
 

@@ -765,6 +765,45 @@ MESSAGES = {
                                  "{profile_name} {name}：{ideal:.6g} 超出 {format} 的范围；实际存储 {value}"),
     "warning.profile_zero": ("{profile_name} {name}: rounds to 0 in {format} (ideal {ideal:.6g})",
                              "{profile_name} {name}：在 {format} 中取整为 0（理想值 {ideal:.6g}）"),
+    # the induction motor (motor.kind = acim)
+    "acim_self_le_lm": ("must be larger than L_m = {lm:g} H (L = L_leak + L_m), got {value:g}",
+                        "必须大于 L_m = {lm:g} H（L = 漏感 + L_m），当前为 {value:g}"),
+    "acim_speed_not_below_sync": ("must be below the synchronous speed 60·f_n/p = {sync:g} rpm "
+                                  "(the rated slip would be ≤ 0), got {value:g}",
+                                  "必须低于同步转速 60·f_n/p = {sync:g} rpm（否则额定转差 ≤ 0），"
+                                  "当前为 {value:g}"),
+    "acim_not_applicable": ("does not apply to an induction motor (motor.kind = acim) yet",
+                            "暂不适用于异步电机（motor.kind = acim）"),
+    "finding.acim_im_ge_rated": ("the magnetizing current I_m = {value:.4g} A is not below the rated "
+                                 "current {rated:.4g} A: no current is left for torque. Check I_m "
+                                 "(RMS, no-load) and L_m",
+                                 "励磁电流 I_m = {value:.4g} A 不低于额定电流 {rated:.4g} A：没有电流"
+                                 "留给转矩。请核对 I_m（有效值，空载）与 L_m"),
+    "finding.acim_im_estimated": ("I_m = {value:.4g} A is the no-load estimate U_ph/(ω·L_s) with R_s "
+                                  "neglected: give the measured no-load current "
+                                  "(motor.magnetizing_current_a)",
+                                  "I_m = {value:.4g} A 为忽略 R_s 的空载估算 U_ph/(ω·L_s)：请填写实测"
+                                  "空载电流（motor.magnetizing_current_a）"),
+    "finding.acim_flux_build": ("the rotor flux needs {t95:.3g} s (3·τ_r, τ_r = {tau:.3g} s) to reach "
+                                "95 % after i_d steps to I_m: magnetize for at least that long before "
+                                "asking for torque, or the torque per ampere is low and the slip "
+                                "estimate wrong while it builds",
+                                "i_d 阶跃到 I_m 后转子磁链需 {t95:.3g} s（3·τ_r，τ_r = {tau:.3g} s）才"
+                                "达到 95 %：给转矩前至少预励磁这么久，否则建立期间每安培转矩偏低、"
+                                "转差估计错误"),
+    "finding.acim_rr_drift": ("the slip estimate ω_sl = i_q/(τ_r·i_d) scales with R_r: from "
+                              "{t_lo:g} °C to {t_hi:g} °C R_r rises {pct:.3g} % (α = {alpha:g}/K), "
+                              "so the field orientation drifts and torque per ampere falls. Adapt "
+                              "R_r (temperature model, MRAS) or tune τ_r hot",
+                              "转差估计 ω_sl = i_q/(τ_r·i_d) 与 R_r 成正比：从 {t_lo:g} °C 到 "
+                              "{t_hi:g} °C R_r 升高 {pct:.3g} %（α = {alpha:g}/K），磁场定向漂移、"
+                              "每安培转矩下降。请自适应 R_r（温度模型、MRAS）或按热态整定 τ_r"),
+    "finding.acim_slip_mismatch": ("the circuit gives a rated slip frequency {model:.4g} Hz = "
+                                   "I_q/(2π·τ_r·I_m) but the nameplate speed gives {plate:.4g} Hz "
+                                   "({pct:+.3g} %): R_r, L_r or I_m do not match the nameplate",
+                                   "等效电路给出的额定转差频率 {model:.4g} Hz = I_q/(2π·τ_r·I_m)，"
+                                   "铭牌转速给出 {plate:.4g} Hz（{pct:+.3g} %）：R_r、L_r 或 I_m "
+                                   "与铭牌不符"),
     "set_syntax": ("--set needs NAME=VALUE, got {got}", "--set 需要 NAME=VALUE，当前为 {got}"),
     "json_invalid": ("not valid JSON: {detail}", "不是合法的 JSON：{detail}"),
     "json_not_text": ("not valid JSON: the input is not text", "不是合法的 JSON：输入不是文本"),

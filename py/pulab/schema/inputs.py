@@ -64,8 +64,21 @@ def normalize(inp: dict) -> dict:
     drive_in = object_fields(inp.get("drive"), "drive", SECTIONS["drive"])
     m, conversions, d, bemf_check = _datasheet.apply(ds, motor_in, drive_in)
     derived = {c["field"]: c["from"][0] for c in conversions}
-    motor = {}
+    kind = value(FIELD["motor.kind"], m["kind"]) if "kind" in m else "pmsm"
+    # A PMSM's normalized motor holds no kind and no induction-motor key (its reports stay
+    # byte for byte those from before the kind existed); an induction motor's holds both.
+    motor = {} if kind == "pmsm" else {"kind": kind}
     for f in section_fields("motor"):
+        if f.key == "kind":
+            continue
+        if f.only_with and f.only_with[1] != kind:
+            if f.key in m:
+                raise InputError(derived.get(f.path, f.path), code="only_with", key="kind",
+                                 value=f.only_with[1])
+            continue
+        if f.key not in m and f.default is None:
+            motor[f.key] = None
+            continue
         if f.key not in m:
             alt = [f"datasheet.{k}" for k, sets in _datasheet.SETS.items() if f.key in sets]
             if alt:  # a datasheet start: say what else fills this field
@@ -90,6 +103,8 @@ def normalize(inp: dict) -> dict:
 
     out = {"motor": motor, "drive": drive, "conventions": conv, "current_loop": loop,
            "pll": pll, "raw": raw}
+    if ds.get("lms_h") is not None and kind != "acim":
+        raise InputError("datasheet.lms_h", code="only_with", key="kind", value="acim")
     if ds:
         # Not part of the echoed input (report.input.motor already holds the derived values).
         out["datasheet"] = {"given": ds, "conversions": conversions}

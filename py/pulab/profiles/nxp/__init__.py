@@ -1,6 +1,7 @@
 """NXP MCAT / RTCESL: fractions of U_max and I_max, ACC32 and FRAC16 + shift."""
 
 from .decode import decode_header
+from .induction import acim
 from .header import header
 from .observer import observer
 from .pi import controller

@@ -1,6 +1,7 @@
 """ST MCSDK: ADC/PWM "digit" units, int16 gains over power-of-two divisors."""
 
 from .decode import decode_header
+from .induction import acim
 from .header import header
 from .observer import observer
 from .pi import controller
