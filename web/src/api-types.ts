@@ -1,6 +1,6 @@
 // The bodies of pulab.api's requests and replies that are not a report (docs/contract.md, "API"):
 // the Q calculator, the C tracer and the vendor translator. protocol.ts pairs them by kind.
-import type { Input } from './state';
+import type { Input } from './json';
 
 /** `qcalc`: a value to encode or a raw reading to decode (pulab.qcalc.qcalc). */
 export interface QcalcRequest {

@@ -4,7 +4,7 @@
 // what the page alone knows (display units, placeholders, section layout).
 import schema from './generated/schema.json';
 import type { UnitId } from './units';
-import type { Input } from './state';
+import type { Input } from './json';
 import type { Key } from './i18n';
 
 export interface FieldSpec {

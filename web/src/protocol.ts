@@ -5,10 +5,9 @@
 import type { BatchChunk, BatchRequest, CodeProof, Decoded, DecodeRequest, CodeProveRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
 import type { Chunk, Plan, Points, Summary } from './family/types';
 import type { Report } from './report-types';
-import type { Input } from './state';
+import type { Input, Json } from './json';
 
-/** JSON value. */
-export type Json = null | boolean | number | string | Json[] | { [k: string]: Json };
+export type { Json } from './json';
 
 /** A sweep request (docs/contract.md, "Sweep"): the motor, one or two axes, the profile. */
 export interface SweepRequest {

@@ -4,8 +4,7 @@
 // non-JSON text must never reach the form. What cannot be used is dropped and named; the rest is
 // kept. Range checks stay with pulab (it names the field); here only the JSON shape is checked.
 import { ALL_FIELDS, type FieldSpec } from './fields';
-import type { Json } from './protocol';
-import type { Input } from './state';
+import type { Input, Json } from './json';
 import type { UnitId } from './units';
 
 /** One thing in a state that could not be used. `path` is its JSON path ("#in" for the text). */

@@ -1,10 +1,10 @@
 // The page state is the CLI input JSON (docs/contract.md) plus the "sim" section.
 // It lives in the URL (#in=…), in localStorage, and in the form.
-import type { Json } from './protocol';
+import type { Input } from './json';
 import { effectiveInput } from './fields';
 import { checkInputText, type StateProblem } from './state-check';
 
-export type Input = { [section: string]: { [k: string]: Json } };
+export type { Input } from './json';
 
 export const SEED_INPUT: Input = {
   motor: { rated_voltage_v: 17, rated_current_a: 1.5, rated_freq_hz: 220, rs_ohm: 1.5, ld_h: 0.0006, lq_h: 0.0006, bemf_v: 12, pole_pairs: 4 },
