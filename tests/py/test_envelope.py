@@ -141,3 +141,84 @@ def test_torque_stays_positive_up_to_the_maximum_speed(motor, psi, v, i):
             assert 50 < prev / t < 200   # ~100× less torque for 100× less speed left
         prev = t
     assert envelope.best_torque(lim, w)[0] == 0.0
+
+
+_ST_MTPA_C = r"""#include <stdio.h>
+#include <stdint.h>
+#include <math.h>
+static const int16_t ANGC[8] = {%(angc)s};
+static const int16_t OFST[8] = {%(ofst)s};
+#define SEGDIV %(segdiv)d
+/* MTPA_CalcCurrRefFromIq as ST writes it, both builds */
+static int16_t mtpa_id(int16_t q, int misra) {
+    int32_t id; int16_t aux, iq; uint8_t segment;
+    iq = (q < 0) ? -q : q;
+    aux = iq / SEGDIV;
+    segment = (uint8_t)aux;
+    if (segment > 7) segment = 7;
+    if (misra) id = ((ANGC[segment] * iq) / 32768) + OFST[segment];
+    else id = ((ANGC[segment] * iq) >> 15) + OFST[segment];
+    return (int16_t)id;
+}
+int main(void) {
+    const double psi = %(psi).17g, dl = %(dl).17g, dpa = %(dpa).17g;
+    double worst[2] = {0, 0};
+    for (int q = 0; q <= %(iqmax)d; q++) {
+        double iq = q / dpa;
+        double exact = (psi - sqrt(psi * psi + 4 * dl * dl * iq * iq)) / (2 * dl);
+        for (int misra = 0; misra < 2; misra++) {
+            double e = fabs(mtpa_id((int16_t)q, misra) / dpa - exact);
+            if (e > worst[misra]) worst[misra] = e;
+            printf("%%d ", mtpa_id((int16_t)q, misra));
+        }
+    }
+    printf("\n%%.17g %%.17g\n", worst[1], worst[0]);
+    return 0;
+}
+"""
+
+
+def test_st_mtpa_table_as_gcc_runs_st_routine(tmp_path):
+    """ST's 8-segment look-up: every q-current digit through ST's routine compiled by gcc (both
+    builds) equals pulab's, and the error bounds equal gcc's against the textbook MTPA root."""
+    import subprocess
+    from ctrace_compilers import available
+    if available("gcc"):
+        pytest.skip(f"missing {available('gcc')}")
+    inp = {"motor": {"rated_voltage_v": 220, "rated_current_a": 2.8, "rated_freq_hz": 200,
+                     "rs_ohm": 2.3, "ld_h": 0.0046, "lq_h": 0.0092, "bemf_v": 104.0, "pole_pairs": 4},
+           "drive": {"udc_v": 310, "ts_s": 6.25e-5},
+           "board": {"current": {"shunt_ohm": 0.02, "gain": 5}}, "analysis": {"fw": {}}}
+    r = pulab.report(inp)
+    st = r["fw"]["tables"]["st_mtpa"]
+    m = inp["motor"]
+    psi = math.sqrt(2 / 3) * m["bemf_v"] / (2 * math.pi * m["rated_freq_hz"])
+    dpa = 65536 * 0.02 * 5 / 3.3       # the board sets ST's digits
+    assert st["scale"] == pytest.approx(1 / dpa, rel=1e-14)
+    src = tmp_path / "mtpa.c"
+    src.write_text(_ST_MTPA_C % {"angc": ", ".join(map(str, st["angc"])),
+                                 "ofst": ", ".join(map(str, st["ofst"])), "segdiv": st["segdiv"],
+                                 "psi": psi, "dl": m["lq_h"] - m["ld_h"], "dpa": dpa,
+                                 "iqmax": st["iqmax"]})
+    exe = tmp_path / "mtpa"
+    subprocess.run(["gcc", "-O1", str(src), "-o", str(exe), "-lm"], check=True)
+    ids, bounds = subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout.split("\n")[:2]
+    ids = list(map(int, ids.split()))
+    ours = [envelope.st_mtpa_id(st["segdiv"], st["angc"], st["ofst"], q, shift)
+            for q in range(st["iqmax"] + 1) for shift in (True, False)]
+    assert ids == ours
+    misra, shifted = map(float, bounds.split())
+    assert st["error_bound"] == pytest.approx(misra, rel=1e-9)
+    assert st["error_bound_shift"] == pytest.approx(shifted, rel=1e-9)
+    # eight segments cover IQMAX: no q current up to it is clamped into the last one
+    assert st["segdiv"] * 8 >= st["iqmax"] and st["iqmax"] == math.floor(
+        envelope.mtpa(envelope.limits(m, psi, 1.0, math.sqrt(2) * 2.8), math.sqrt(2) * 2.8)[1] * dpa)
+    # a few digits of error at worst: the chord between breakpoints, not the integers
+    assert st["error_bound"] < 8 / dpa
+
+
+def test_st_mtpa_only_for_an_interior_motor():
+    inp = {"motor": {"rated_voltage_v": 24, "rated_current_a": 1.27, "rated_freq_hz": 266.67,
+                     "rs_ohm": 0.75, "ld_h": 1.05e-3, "lq_h": 1.05e-3, "bemf_v": 10.7, "pole_pairs": 4},
+           "drive": {"udc_v": 24, "ts_s": 5e-5}, "analysis": {"fw": {}}}
+    assert "st_mtpa" not in pulab.report(inp)["fw"]["tables"]

@@ -40,7 +40,11 @@ export interface Constant {
 export type BoardRow = Record<string, number | string | null>;
 
 /** One stored table of the field-weakening output. */
-export interface FwTable { quantity: string; x: number[]; y: number[]; values: number[]; format: string; scale: number; unit: string; error_bound: number; interpolation: string }
+export interface FwTable {
+  quantity: string; x: number[]; y: number[]; values: number[]; format: string; scale: number; unit: string; error_bound: number; interpolation: string;
+  /** ST's 8-segment look-up: its macros, the other build's (>> 15) bound, what did not fit int16. */
+  segdiv?: number; iqmax?: number; angc?: number[]; ofst?: number[]; error_bound_shift?: number; flags?: string[];
+}
 
 /** The report's "fw" section (pulab.analyses.envelope). */
 export interface FwReport {

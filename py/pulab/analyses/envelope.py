@@ -33,8 +33,8 @@ from typing import NamedTuple
 
 from ..schema.errors import InputError
 
-__all__ = ["Limits", "limits", "mtpa", "base_speed", "max_speed", "best_torque", "analyze",
-           "voltage_limit"]
+__all__ = ["Limits", "limits", "mtpa", "mtpa_id", "base_speed", "max_speed", "best_torque",
+           "analyze", "voltage_limit", "st_mtpa", "st_mtpa_id"]
 
 RPM = 60.0 / (2.0 * math.pi)
 #: Voltage-angle samples of the boundary search (each then refined to rounding); four times
@@ -83,6 +83,71 @@ def mtpa(m: Limits, i: float) -> tuple:
         return 0.0, i
     i_d = (m.psi - math.sqrt(m.psi * m.psi + 8.0 * dl * dl * i * i)) / (4.0 * dl)
     return i_d, math.sqrt(max(i * i - i_d * i_d, 0.0))
+
+
+def mtpa_id(m: Limits, i_q: float) -> float:
+    """The MTPA i_d for a given i_q (any i_q, also beyond the current limit).
+
+    dT/dβ = 0 at fixed magnitude gives ψ·i_d = ΔL·(i_d² − i_q²)... as a quadratic in i_d:
+    ``i_d = −2·ΔL·i_q²/(ψ + √(ψ² + 4·ΔL²·i_q²))`` (the root that is 0 at i_q = 0, written
+    without cancellation; 0 when ΔL = 0).
+    """
+    dl = m.lq - m.ld
+    return -2.0 * dl * i_q * i_q / (m.psi + math.sqrt(m.psi * m.psi + 4.0 * dl * dl * i_q * i_q))
+
+
+def st_mtpa_id(segdiv: int, angc: list, ofst: list, iq: int, shift: bool = False) -> int:
+    """ST's ``MTPA_CalcCurrRefFromIq`` for a q current ``iq`` in digits (|iq| used): segment
+    ``|iq|/SEGDIV`` (at most 7), ``id = ANGC[s]·|iq|/32768 + OFST[s]`` as int16 — the MISRA
+    build divides (toward zero), the other shifts ``>> 15`` (toward −∞) (ST MCSDK max_torque_per_ampere.c).
+
+    >>> st_mtpa_id(100, [-3277] * 8, [0] * 8, 150), st_mtpa_id(100, [-3277] * 8, [0] * 8, 150, True)
+    (-15, -16)
+    """
+    iq = abs(iq)
+    s = min(iq // segdiv, 7)
+    prod = angc[s] * iq
+    q = prod >> 15 if shift else (-((-prod) // 32768) if prod < 0 else prod // 32768)
+    v = (q + ofst[s]) & 0xFFFF
+    return v - 0x10000 if v & 0x8000 else v
+
+
+def st_mtpa(m: Limits, digits_per_a: float, iq_top: float) -> dict:
+    """ST's 8-segment MTPA look-up (``SEGDIV``, ``ANGC[8]``, ``OFST[8]``) for this motor.
+
+    ST publishes the routine, not how MC Workbench fits it; reconstructed as the chords of the
+    exact MTPA curve (:func:`mtpa_id`) over eight equal segments ``SEGDIV = ⌈IQMAX/8⌉`` digits,
+    ``IQMAX`` the MTPA i_q at the current limit in current digits (``digits_per_a`` =
+    65536·R_shunt·G/V_ref). A public MCSDK header's table has the same form (continuous at the
+    segment ends within a few digits). The error bound is exact: the routine evaluated for every
+    q-current digit 0..IQMAX against the exact curve, for both builds.
+    """
+    iqmax = min(32767, math.floor(iq_top * digits_per_a))
+    segdiv = max(1, -(-iqmax // 8))
+    exact = [mtpa_id(m, k * segdiv / digits_per_a) * digits_per_a for k in range(9)]
+    angc, ofst, flags = [], [], []
+    for k in range(8):
+        a = k * segdiv
+        slope = (exact[k + 1] - exact[k]) / segdiv
+        c = round(slope * 32768.0)
+        o = round(exact[k] - c * a / 32768.0)
+        if not (-32768 <= c <= 32767 and -32768 <= o <= 32767):
+            flags.append("out_of_range")
+        angc.append(max(-32768, min(32767, c)))
+        ofst.append(max(-32768, min(32767, o)))
+    worst = {False: 0.0, True: 0.0}
+    for iq in range(iqmax + 1):
+        ideal = mtpa_id(m, iq / digits_per_a)
+        for shift in worst:
+            e = abs(st_mtpa_id(segdiv, angc, ofst, iq, shift) / digits_per_a - ideal)
+            worst[shift] = max(worst[shift], e)
+    return {"quantity": "id_a(iq_a), ST 8-segment look-up (max_torque_per_ampere.c)",
+            "x": [k * segdiv / digits_per_a for k in range(9)],
+            "y": [e / digits_per_a for e in exact], "values": angc + ofst,
+            "segdiv": segdiv, "iqmax": iqmax, "angc": angc, "ofst": ofst,
+            "format": "int16 digits (ANGC·iq/32768 + OFST)", "scale": 1.0 / digits_per_a,
+            "unit": "A", "error_bound": worst[False], "error_bound_shift": worst[True],
+            "interpolation": "ST segments", "flags": sorted(set(flags))}
 
 
 def base_speed(m: Limits) -> float:
@@ -208,6 +273,15 @@ def _table(quantity: str, xs: list, exact, scale: float, unit: str, dense: list)
             "scale": scale, "unit": unit, "error_bound": err, "interpolation": "linear"}
 
 
+def _st_digits_per_a(report: dict) -> float | None:
+    """ST's current digits per ampere, 65536·R_shunt·G/V_ref, from its profile's options (the
+    report's, else its defaults for this report: the board's when given)."""
+    from ..profiles import context_of, options
+    prof = (report.get("profiles") or {}).get("st")
+    o = prof["inputs"] if prof is not None else options({}, context_of(report))["st"]
+    return 65536.0 * o["rshunt_ohm"] * o["amplification_gain"] / o["adc_reference_v"]
+
+
 def analyze(report: dict, cfg: dict) -> dict:
     """The report's ``fw`` section (docs/contract.md, "Output: fw").
 
@@ -251,6 +325,7 @@ def analyze(report: dict, cfg: dict) -> dict:
         env.append({"speed_rpm": rpm, "torque_nm": t, "power_w": t * w / p, "id_a": i_d,
                     "iq_a": i_q, "v_pk": volts(m, w, i_d, i_q)})
     npts = cfg["table_points"]
+    digits_per_a = _st_digits_per_a(report) if m.lq != m.ld else None
     scale = m.i / 32768.0
     iq_top = mtpa(m, m.i)[1]
     iq_x = [iq_top * k / (npts - 1) for k in range(npts)]
@@ -268,6 +343,8 @@ def analyze(report: dict, cfg: dict) -> dict:
 
     tables = {"mtpa_id_of_iq": _table("id_a(iq_a)", iq_x, id_of_iq, scale, "A",
                                       [iq_top * k / 400 for k in range(401)])}
+    if m.lq != m.ld and digits_per_a is not None:
+        tables["st_mtpa"] = st_mtpa(m, digits_per_a, iq_top)
     fw_end = end_rpm
     if fw_end > wb * to_rpm:
         sx = [wb * to_rpm + (fw_end - wb * to_rpm) * k / (npts - 1) for k in range(npts)]

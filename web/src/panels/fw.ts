@@ -2,13 +2,13 @@
 // the tables firmware stores — the report's "fw" section for the page's motor and the form's
 // analysis.fw options, asked of pulab by this panel (it costs more than a report, so it has its
 // own request and never delays the numbers of the others).
-import { h, num, patch, table } from '../dom';
+import { flagChips, h, num, patch, table } from '../dom';
 import { errText, t } from '../i18n';
 import { effectiveInput } from '../fields';
 import { reportInput, type Input } from '../state';
 import { keptFigure } from '../figures/figure';
 import { renderFwPlane, renderFwSpeed } from '../figures/fw';
-import type { FwReport } from '../report-types';
+import type { FwReport, FwTable } from '../report-types';
 import type { Panel, PanelContext } from './panel';
 
 /** The input pulab computes the "fw" section from: the plain report input and analysis.fw. */
@@ -64,8 +64,13 @@ class FwView {
 
 const views = new WeakMap<HTMLElement, FwView>();
 
-function cArray(name: string, values: number[]): string {
-  return `static const int16_t ${name}[${values.length}] = { ${values.join(', ')} };`;
+function cArray(name: string, tb: FwTable): string {
+  // ST's look-up is three macros of drive_parameters.h, the others one array each
+  if (tb.segdiv !== undefined && tb.angc && tb.ofst) {
+    return [`#define IQMAX   ${tb.iqmax}`, `#define SEGDIV  ${tb.segdiv}`,
+      `#define ANGC    {${tb.angc.join(',')}}`, `#define OFST    {${tb.ofst.join(',')}}`].join('\n');
+  }
+  return `static const int16_t ${name}[${tb.values.length}] = { ${tb.values.join(', ')} };`;
 }
 
 export const fwPanel: Panel = {
@@ -95,8 +100,10 @@ export const fwPanel: Panel = {
       h('h3', {}, t('fwTables')),
       ...(fw ? Object.entries(fw.tables).map(([name, tb]) => h('div', { class: 'fw-table' },
         h('p', {}, h('code', {}, name), ` — ${tb.quantity}, ${tb.format} (`, num(`fw.tables.${name}.scale`, tb.scale, { unit: `${tb.unit}/LSB` }),
-          `), ${t('fwErrorBound')} `, num(`fw.tables.${name}.error_bound`, tb.error_bound, { unit: tb.unit })),
-        h('pre', { class: 'c-array' }, cArray(name, tb.values)))) : []),
+          `), ${t('fwErrorBound')} `, num(`fw.tables.${name}.error_bound`, tb.error_bound, { unit: tb.unit }),
+          tb.error_bound_shift !== undefined ? [' (>> 15: ', num(`fw.tables.${name}.error_bound_shift`, tb.error_bound_shift, { unit: tb.unit }), ')'] : null),
+        tb.flags?.length ? flagChips(tb.flags) : null,
+        h('pre', { class: 'c-array' }, cArray(name, tb)))) : []),
     );
     keptFigure(el, 'fw-plane', fw, (fig) => renderFwPlane(fig, fw!));
     keptFigure(el, 'fw-speed', fw, (fig) => renderFwSpeed(fig, fw!));
