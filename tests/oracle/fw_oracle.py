@@ -14,7 +14,10 @@ The grid costs accuracy, stated in each file's tolerance: torque to 0.5 %, the m
 Motors (public parameter files): MathWorks Motor Control Blockset ``BLY171D`` (surface; its
 documented mcb.PMSMSpeeds base speed 5393 rpm on the DRV8312-C2-KIT at 24 V) and
 ``Teknic2310P_IPM`` (interior); motulator's 2.2-kW interior PMSM (Aalto-Electric-Drives/motulator
-examples: p 3, R 3.6 Ω, L_d 36 mH, L_q 51 mH, ψ_f 0.545 Wb, 4.3 A, 540 V bus).
+examples: p 3, R 3.6 Ω, L_d 36 mH, L_q 51 mH, ψ_f 0.545 Wb, 4.3 A, 540 V bus); a Formula
+Student hub motor (dweggg/Inverter : Control/FOC_DQ0_parameters.m: 10 poles, k_E 18.8 V rms
+phase per krpm, L_d 0.12 mH, L_q 0.24 mH, R 0.135 Ω, 105 A peak; its 140-cell battery at a
+nominal 3.6 V per cell, 504 V).
 """
 
 from __future__ import annotations
@@ -48,6 +51,10 @@ CASES = [
     ("01_mathworks_bly171d", _motor(4, 0.75, 1.05e-3, 1.05e-3, _ke_flux(3.8, 4), 1.8, 4000 * 4 / 60, 24)),
     ("02_mathworks_teknic2310p_ipm", _motor(4, 0.36, 0.2e-3, 0.4e-3, _ke_flux(4.64, 4), 7.1, 6000 * 4 / 60, 24)),
     ("03_motulator_2k2_ipm", _motor(3, 3.6, 0.036, 0.051, 0.545, 4.3 * math.sqrt(2), 75, 540)),
+    # k_E in V rms phase-to-neutral per krpm: ψ_pk = √2·k_E/(2π·1000·p/60)
+    ("04_fs_hub_ipm", _motor(5, 0.135, 0.12e-3, 0.24e-3,
+                             math.sqrt(2) * 18.8 / (2 * math.pi * 1000 * 5 / 60), 105, 20000 * 5 / 60,
+                             504)),
 ]
 
 
