@@ -214,6 +214,17 @@ def test_bad_sequences_are_refused(calls, table, code, text):
     assert e.value.code == "trace_calls_entry"
 
 
+def test_a_sequence_has_a_statement_budget(monkeypatch):
+    import pulab.ctrace.sequence as sequence
+    monkeypatch.setattr(sequence, "MAX_SEQUENCE_STEPS", 50)
+    code = "int f(int n) { int k, s = 0; for (k = 0; k < n; k++) s += k; return s; }"
+    assert len(trace_sequence(code, "c28x", 2, None, {"n": 10}, entry="f")["calls"]) == 2
+    with pytest.raises(TraceError) as e:
+        trace_sequence(code, "c28x", 3, None, {"n": 10}, entry="f")
+    assert e.value.field == "calls" and e.value.message.startswith(
+        "call 2 reaches 50 statements executed over the sequence")
+
+
 def test_a_run_time_error_names_its_call():
     with pytest.raises(TraceError) as e:
         trace_sequence("int f(int d) { return 100 / d; }", "c28x", 3,

@@ -275,6 +275,9 @@ MESSAGES = {
     "trace_table_read": ("cannot read {name}: {reason}", "无法读取 {name}：{reason}"),
     "trace_calls_prove": ("--calls cannot be combined with --prove", "--calls 不能与 --prove 同时使用"),
     "trace_table_kind": ("{name}: the table must be .csv or .jsonl", "{name}：输入表必须是 .csv 或 .jsonl"),
+    "trace_sequence_steps": ("call {call} reaches {limit} statements executed over the sequence "
+                             "(fewer calls?)", "第 {call} 次调用时整个序列执行的语句达到 {limit} 条"
+                             "（减少调用次数？）"),
     "trace_in_call": ("in call {call}: {reason}", "第 {call} 次调用：{reason}"),
     "trace_undefine_name": ("-U takes a macro name, got {got}", "-U 需要宏名，当前为 {got}"),
     "trace_float_operator": ("{op} of a floating constant cannot be folded (only + - * /, "
