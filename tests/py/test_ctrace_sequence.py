@@ -334,3 +334,16 @@ def test_a_sequence_sees_the_flags_and_event_a_recorded_trace_shows(target):
         assert s["calls"][0]["vars"] == r["vars"]
         events += bool(found)
     assert events > 50
+
+
+def test_a_static_local_of_a_helper_keeps_its_value_between_its_calls():
+    code = ("static int tick(void) { static int n = 10; int t = 1; n += t; return n; }\n"
+            "static int down(void) { static int z; z--; return z; }\n"
+            "int f(void) { return tick() + tick(); }\nint g(void) { return down() * 10; }")
+    # within one trace: 11 + 12 (its initializer runs once, C99 6.2.4p3)
+    assert trace(code, "c28x", entry="f")["vars"]["return"]["value"] == 23
+    r = trace_sequence(code, "c28x", 3, entry="f")
+    assert [c["return"]["value"] for c in r["calls"]] == [23, 27, 31]
+    # z without an initializer starts at 0 (static storage)
+    r = trace_sequence(code, "c28x", 3, entry="g")
+    assert [c["return"]["value"] for c in r["calls"]] == [-10, -20, -30]
