@@ -347,3 +347,21 @@ def test_a_static_local_of_a_helper_keeps_its_value_between_its_calls():
     # z without an initializer starts at 0 (static storage)
     r = trace_sequence(code, "c28x", 3, entry="g")
     assert [c["return"]["value"] for c in r["calls"]] == [-10, -20, -30]
+
+
+def test_fuzzed_sequence_requests_give_only_error_replies():
+    from conftest import chinese
+    rng = random.Random(12)
+    values = [None, True, 0, -1, 3, 2**70, 1.5, "", "f", "2", "0x10", [], {}, [1], [{}],
+              [{"e": 1}, {"e": "x"}], [{"e": 1}, None], [{"a": 1}, {"e": 40000}],
+              {"e": 1}, "int a; int f(int e) { a += e; return a; }"]
+    for _ in range(1500):
+        req = {k: rng.choice(values) for k in rng.sample(
+            ["code", "target", "set", "entry", "calls", "table", "undefine", "zero_unset"],
+            rng.randrange(0, 8))}
+        req.setdefault("code", "int a; int f(int e) { a += e; return a; }")
+        req.setdefault("calls" if rng.random() < 0.5 else "table", rng.choice(values))
+        if rng.random() < 0.5:
+            req["entry"] = "f"
+        r = json.loads(call_json("trace", json.dumps(req)))
+        assert r["ok"] is True or (r["field"] and chinese(r["message_zh"])), (req, r)
