@@ -135,7 +135,7 @@ def test_flux_lines_differ_between_c28x_and_arm():
     ("for (;;) {}", 1, 1, "more than 10000 statements executed"),
     ("goto out;", 1, 1, "'goto' is not supported"),
     ("int8_t a = 1;", 1, 1, "int8_t does not exist on c28x"),
-    ("long a = 1.5;", 1, 10, "only integer constants"),
+    ("long b; long a = b + 1.5;", 1, 22, "only integer constants"),
     ("long a = 99999999999999999999;", 1, 10, "too large"),
     ("long a = foo(1);", 1, 10, "unknown function foo()"),
     ("#if 1\nlong a;", 1, 1, "#if without #endif"),
@@ -338,7 +338,7 @@ def test_cli_text_format_is_one_line_per_statement(tmp_path):
      "a function g(…) can only be declared at file scope (a function definition is not "
      "supported inside a function)"),
     ("union u { int a; };", "1:1", "trace_not_supported", "'union' is not supported"),
-    ("long x = 1.5;", "1:10", "trace_float_constant", "1.5: only integer constants"),
+    ("long y; long x = y * 1.5;", "1:22", "trace_float_constant", "1.5: only integer constants"),
     ("int f(int x, ...) { return x; }", "1:14", "trace_variadic",
      "variadic functions are not supported"),
     ("struct s { int a : 3; };", "1:18", "trace_bitfield", "bit-fields are not supported"),

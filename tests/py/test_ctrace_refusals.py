@@ -66,8 +66,12 @@ FOLD = r"""
 typedef int32_t b16_t;
 #define ftob16(f) ((b16_t)((f) * 65536.0f))
 #define Q15(X) ((X < 0.0) ? (int16_t)(32768 * (X) - 0.5) : (int16_t)(32767 * (X) + 0.5))
-int32_t r0, r1, r2, r3, r4, r5, r6, r7, r8, r9, r10;
+#include <stdbool.h>
+int32_t r0, r1, r2, r3, r4, r5, r6, r7, r8, r9, r10, r11, r12, r13;
 int16_t tab[(int)(2.5f * 2)];
+/* initialized and assigned without a cast: converted as by assignment */
+const int16_t coef[3] = {0.25 * 32768, -0.5f * 32768, 1};
+bool flag = 0.25;
 void fold(void)
 {
   r0 = ftob16(0.866025f);
@@ -81,6 +85,9 @@ void fold(void)
   r8 = (int32_t)((0.1f == 0.1) ? 1.0 : 2.0);
   r9 = (uint16_t)(65535.9f);
   r10 = sizeof(tab) / sizeof(tab[0]) == 5;
+  r11 = 0.29 * 100;
+  r12 = coef[0] + coef[1];
+  r13 = flag;
 }
 """
 
@@ -147,7 +154,7 @@ def test_a_void_pointer_read_back_as_int16(target, capsys):
 @pytest.mark.parametrize("target", ["avr", "arm"])
 def test_constant_float_expressions_fold_as_the_compiler_does(target, capsys):
     require(target, capsys)
-    outs = [f"r{k}" for k in range(11)]
+    outs = [f"r{k}" for k in range(14)]
     checked = compile_code(_fold_code(), target, entry="fold")
     ev = run_checked(checked, {}, None, record=False)
     expected = {n: ev.values[n] for n in outs}
@@ -158,6 +165,18 @@ def test_constant_float_expressions_fold_as_the_compiler_does(target, capsys):
     # 0.1f == 0.1 only where double is binary32 (avr-gcc)
     assert (expected["r3"], expected["r6"], expected["r8"], expected["r9"]) == \
         (3000000, -2500, 1 if target == "avr" else 2, 65535)
+    # 0.29 * 100 = 28.999999999999996 in binary64, 29.0 in avr-gcc's binary32; bool of 0.25 is 1
+    assert (expected["r11"], expected["r12"], expected["r13"]) == \
+        (29 if target == "avr" else 28, 8192 - 16384, 1)
+
+
+def test_a_file_scope_float_the_entry_never_uses_is_refused_where_used():
+    code = ("#include <stdint.h>\nint32_t unused = (int32_t)(1.5 * (3 + 4));\n"
+            "int32_t f(int32_t x) { return x + 1; }\nint32_t g(void) { return unused; }\n")
+    assert trace(code, "arm", {"x": 1}, entry="f")["vars"]["return"]["value"] == 2
+    with pytest.raises(TraceError) as e:
+        trace(code, "arm", entry="g")
+    assert e.value.reason.startswith("unused (at 2:28) is outside the subset: 1.5: only")
 
 
 def test_float_folding_precision_follows_the_target():
@@ -171,7 +190,7 @@ def test_float_folding_precision_follows_the_target():
 
 
 @pytest.mark.parametrize("code,reason", [
-    ("long x = 1.5;", "1.5: only integer constants are supported"),
+    ("long x = 7 % 1.5;", "% of a floating constant cannot be folded"),
     ("Uint16 v; long x = (long)(v * 0.5);", "0.5: only integer constants are supported"),
     ("long x = (int)(40000.0);", "40000.0 truncated toward zero is 40000, outside int"),
     ("long x = (long)(1.0 % 2.0);", "% of a floating constant cannot be folded"),

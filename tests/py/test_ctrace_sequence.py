@@ -214,6 +214,17 @@ def test_bad_sequences_are_refused(calls, table, code, text):
     assert e.value.code == "trace_calls_entry"
 
 
+def test_a_sequence_has_a_statement_budget(monkeypatch):
+    import pulab.ctrace.sequence as sequence
+    monkeypatch.setattr(sequence, "MAX_SEQUENCE_STEPS", 50)
+    code = "int f(int n) { int k, s = 0; for (k = 0; k < n; k++) s += k; return s; }"
+    assert len(trace_sequence(code, "c28x", 2, None, {"n": 10}, entry="f")["calls"]) == 2
+    with pytest.raises(TraceError) as e:
+        trace_sequence(code, "c28x", 3, None, {"n": 10}, entry="f")
+    assert e.value.field == "calls" and e.value.message.startswith(
+        "call 2 reaches 50 statements executed over the sequence")
+
+
 def test_a_run_time_error_names_its_call():
     with pytest.raises(TraceError) as e:
         trace_sequence("int f(int d) { return 100 / d; }", "c28x", 3,
@@ -323,3 +334,34 @@ def test_a_sequence_sees_the_flags_and_event_a_recorded_trace_shows(target):
         assert s["calls"][0]["vars"] == r["vars"]
         events += bool(found)
     assert events > 50
+
+
+def test_a_static_local_of_a_helper_keeps_its_value_between_its_calls():
+    code = ("static int tick(void) { static int n = 10; int t = 1; n += t; return n; }\n"
+            "static int down(void) { static int z; z--; return z; }\n"
+            "int f(void) { return tick() + tick(); }\nint g(void) { return down() * 10; }")
+    # within one trace: 11 + 12 (its initializer runs once, C99 6.2.4p3)
+    assert trace(code, "c28x", entry="f")["vars"]["return"]["value"] == 23
+    r = trace_sequence(code, "c28x", 3, entry="f")
+    assert [c["return"]["value"] for c in r["calls"]] == [23, 27, 31]
+    # z without an initializer starts at 0 (static storage)
+    r = trace_sequence(code, "c28x", 3, entry="g")
+    assert [c["return"]["value"] for c in r["calls"]] == [-10, -20, -30]
+
+
+def test_fuzzed_sequence_requests_give_only_error_replies():
+    from conftest import chinese
+    rng = random.Random(12)
+    values = [None, True, 0, -1, 3, 2**70, 1.5, "", "f", "2", "0x10", [], {}, [1], [{}],
+              [{"e": 1}, {"e": "x"}], [{"e": 1}, None], [{"a": 1}, {"e": 40000}],
+              {"e": 1}, "int a; int f(int e) { a += e; return a; }"]
+    for _ in range(1500):
+        req = {k: rng.choice(values) for k in rng.sample(
+            ["code", "target", "set", "entry", "calls", "table", "undefine", "zero_unset"],
+            rng.randrange(0, 8))}
+        req.setdefault("code", "int a; int f(int e) { a += e; return a; }")
+        req.setdefault("calls" if rng.random() < 0.5 else "table", rng.choice(values))
+        if rng.random() < 0.5:
+            req["entry"] = "f"
+        r = json.loads(call_json("trace", json.dumps(req)))
+        assert r["ok"] is True or (r["field"] and chinese(r["message_zh"])), (req, r)

@@ -25,7 +25,7 @@ from test_ctrace import _garbage
 ERRORS = json.loads((ROOT / "tests/golden/errors.json").read_text())
 GOLDEN = sorted((ROOT / "tests/golden").glob("*.json"))
 #: Mutated C snippets the tracer runs (each its tests' snippets once, then random ones).
-HOSTILE_CODES = 6000
+HOSTILE_CODES = 8000
 #: The tokens a mutation inserts: C the tracer refuses or half-accepts, and directives.
 C_WORDS = ["int", "Uint16", "long", "*", "&", "(", ")", "{", "}", "[", "]", ";", ",", "=", "+",
            "/", "0", "x", "p", "s", "->", ".", "struct", "typedef", "void", "return", "case",

@@ -39,7 +39,7 @@ from .macro_entry import entry_macros
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FNum, FuncDef,
                      If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
                      NodeVisitor, Program, Ptr, Return, StructDef, Switch, Unary, Unsupported,
-                     Var, constant_value, IQ_FUNCTIONS)
+                     Var, constant_value, float_to_int, IQ_FUNCTIONS)
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
@@ -382,7 +382,7 @@ class _Checker(NodeVisitor):
 
     # -- statements
     def visit_Decl(self, s: Decl) -> None:
-        for var, init, desc in s.items:
+        for i, (var, init, desc) in enumerate(s.items):
             if isinstance(desc, Arr) and desc.size is None and init is None and \
                     self.function is None and len(self.scopes) == 1:
                 desc = self.completed(var.name, desc)
@@ -390,7 +390,8 @@ class _Checker(NodeVisitor):
                 desc = Arr(desc.of, Num(len(init.items), str(len(init.items))))
             ctype = self.resolve(desc, s if isinstance(desc, str) else var)
             if init is not None:
-                self.initializer(init, ctype)
+                init = self.initializer(init, ctype)
+                s.items[i] = (var, init, desc)
             sym = self.declare(var.name, s.type_name, ctype, init is not None, var)
             var.ctype = ctype
             var.sym = sym
@@ -473,32 +474,42 @@ class _Checker(NodeVisitor):
             self.visit(inner)
         self.scopes.pop()
 
-    def initializer(self, init, t) -> None:
+    def initializer(self, init, t):
+        """Type the initializer ``init`` of an object of type ``t``; returns it, a floating
+        constant converted to ``t`` (C99 6.7.8p11: as by assignment) where it was one."""
         if isinstance(init, InitList):
+            items = init.items
             if isinstance(t, ArrT):
-                items = init.items
                 if len(items) > t.n:
                     raise TraceError(init.line, init.column, code="trace_init_array",
                                      n=len(items), size=t.n)
-                for item in items:
-                    self.initializer(item, t.of)
+                items[:] = [self.initializer(item, t.of) for item in items]
             elif isinstance(t, StructT):
-                if len(init.items) > len(t.fields):
+                if len(items) > len(t.fields):
                     raise TraceError(init.line, init.column, code="trace_init_struct",
-                                     n=len(init.items), name=t.name, size=len(t.fields))
-                for item, (ft, _) in zip(init.items, t.fields.values()):
-                    self.initializer(item, ft)
-            elif len(init.items) == 1 and not isinstance(init.items[0], InitList):
-                self.initializer(init.items[0], t)
-                init.ctype = t
+                                     n=len(items), name=t.name, size=len(t.fields))
+                items[:] = [self.initializer(item, ft)
+                            for item, (ft, _) in zip(items, t.fields.values())]
+            elif len(items) == 1 and not isinstance(items[0], InitList):
+                items[0] = self.initializer(items[0], t)
             else:
                 raise TraceError(init.line, init.column, code="trace_init_braces")
             init.ctype = t
-            return
+            return init
+        init = self.converted(init, t)
         vt = self.expr(init)
         if not _accepts(t, vt):
             raise TraceError(init.line, init.column, code="trace_init_type", dst=describe(t),
                              src=describe(vt))
+        return init
+
+    @staticmethod
+    def converted(value, t):
+        """``value``, or the folded conversion of a floating constant stored in an integer
+        of type ``t`` (by initialization or assignment)."""
+        if type(value) is FNum and isinstance(t, CType):
+            return float_to_int(t.name, value, value, value)
+        return value
 
     # -- expressions
     def expr(self, e, void_ok: bool = False) -> object:
@@ -611,6 +622,8 @@ class _Checker(NodeVisitor):
                     raise TraceError(e.line, e.column, code="trace_assign_type", src=describe(vt),
                                      dst=describe(tt))
                 return tt
+            if e.op == "=":
+                e.value = self.converted(e.value, tt)
             vt = self.scalar(e.value)
             if e.op != "=":
                 e.operand_type = promote(target, tt) if e.op in ("<<=", ">>=") \
@@ -968,8 +981,22 @@ def check(program: Program, target: Target, entry: str | None = None) -> Checked
         if entries and not any(not isinstance(s, Decl) for s in program.statements
                                if not isinstance(s, Block)):
             raise InputError("entry", code="trace_choose_entry", known=", ".join(entries))
+    skipped = []
     for s in program.statements:
-        c.visit(s)
+        try:
+            c.visit(s)
+        except TraceError as err:
+            # as the parser does for what the subset lacks: a file-scope declaration of a
+            # floating value the entry never uses is refused only where it is used
+            if entry is None or not isinstance(s, Decl) or err.reason_error()["code"] not in (
+                    "trace_float_constant", "trace_float_operator"):
+                raise
+            skipped.append(s)
+            for var, _, _ in s.items:
+                if c.lookup_global(var.name) is None:
+                    program.refused[var.name] = (err, False)
+    if skipped:
+        program.statements[:] = [s for s in program.statements if s not in skipped]
     for name, node in program.functions.items():
         c.functions[name] = Function(node, "" if name == entry else f"{name}:")
     for f in c.functions.values():

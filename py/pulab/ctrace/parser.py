@@ -57,7 +57,7 @@ from .types import BASE_TYPE_WORDS, TARGETS
 __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logical", "Cond",
            "Cast", "FNum", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
            "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr",
-           "Arr", "Unsupported", "NodeVisitor",
+           "Arr", "Unsupported", "NodeVisitor", "float_to_int",
            "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
@@ -1216,7 +1216,7 @@ class _Parser:
             operand = self.unary()
             self.shallower()
             if type(operand) is FNum and isinstance(type_name, str):
-                return self.float_cast(type_name, operand, tok)
+                return float_to_int(type_name, operand, tok, self.last())
             return Cast(type_name, operand).at(tok, self.last())
         return self.postfix()
 
@@ -1293,20 +1293,6 @@ class _Parser:
             return Var(tok.text).at(tok, tok)
         raise TraceError.at(tok, code="trace_expected_value", got=_got(tok))
 
-    def float_cast(self, type_name: str, operand: FNum, tok: Token) -> Node:
-        """``(T)constant`` with a floating constant and an integer ``T``: the integer the
-        compiler folds it to, truncated toward zero (C99 6.3.1.4); out of ``T``'s range is
-        refused by the checker (undefined in C).  Negative: ``-N`` (its type is ``N``'s)."""
-        v = operand.value
-        if v != v or v in (float("inf"), float("-inf")):
-            raise TraceError.at(tok, code="trace_float_cast_range", text=quoted(operand.text),
-                                value=repr(v), type=type_name)
-        n = int(v)  # Python's int() of a float truncates toward zero
-        num = Num(abs(n), str(abs(n))).at(tok, self.last())
-        num.ctype = ["int", "long", "long long", "unsigned long long"]
-        inner = Unary("-", num).at(tok, self.last()) if n < 0 else num
-        return Cast(type_name, inner, v).at(tok, self.last())
-
     def call(self) -> Node:
         tok = self.take()
         name = tok.text
@@ -1376,6 +1362,23 @@ def _fold(tok: Token, left: Node, right: Node) -> Node:
     value = a + b if op == "+" else a - b if op == "-" else a * b if op == "*" else a / b
     text = left.text if type(left) is FNum else right.text
     return FNum(_f32(value) if single else value, single, text)
+
+
+def float_to_int(type_name: str, operand: FNum, first, last) -> Cast:
+    """``(T)constant`` — a cast, or the conversion of an initializer or an assignment — of a
+    floating constant to the integer type spelled ``type_name``: the integer the compiler
+    folds it to, truncated toward zero (C99 6.3.1.4), as a :class:`Cast` spanning ``first`` to
+    ``last`` (tokens or nodes) whose ``folded`` is the constant; out of ``T``'s range is
+    refused by the checker (undefined in C).  Negative: ``-N`` (its type is ``N``'s)."""
+    v = operand.value
+    if v != v or v in (float("inf"), float("-inf")):
+        raise TraceError(first.line, first.column, code="trace_float_cast_range",
+                         text=quoted(operand.text), value=repr(v), type=type_name)
+    n = int(v != 0) if type_name == "_Bool" else int(v)  # int() truncates toward zero
+    num = Num(abs(n), str(abs(n))).at(first, last)
+    num.ctype = ["int", "long", "long long", "unsigned long long"]
+    inner = Unary("-", num).at(first, last) if n < 0 else num
+    return Cast(type_name, inner, v).at(first, last)
 
 
 def constant_value(node: Node, what: str) -> int:

@@ -31,10 +31,14 @@ from .evaluate import FLAGS, Evaluator
 from .macro_entry import entry_macros
 from .tracing import DEFAULT_GLOBAL_Q, compile_code, input_values, inputs_for, result_vars
 
-__all__ = ["trace_sequence", "run_sequence", "read_table", "MAX_CALLS", "EVENT_KINDS"]
+__all__ = ["trace_sequence", "run_sequence", "read_table", "MAX_CALLS", "MAX_SEQUENCE_STEPS",
+           "EVENT_KINDS"]
 
-#: More calls in one sequence are refused.
-MAX_CALLS = 100_000
+#: More calls in one sequence are refused (each call's ``vars`` is in the output).
+MAX_CALLS = 10_000
+#: Statements executed over all the calls of a sequence (each call has the single trace's
+#: own limit too); more is an error naming the call that reached it.
+MAX_SEQUENCE_STEPS = 1_000_000
 #: The flags that make a call's ``first_event``: a wrap (an unsigned result reduced, or a
 #: conversion that changed the value), a signed overflow, a clamp by ``_IQsat``/``__IQsat``.
 EVENT_KINDS = ("signed_overflow", "unsigned_wrap", "conversion", "saturate")
@@ -108,6 +112,7 @@ def run_sequence(checked, calls: int, table: list | None = None, inputs: dict | 
     ev = None
     out, event = [], None
     state: set = set()  # every name given or written so far: listed after every call
+    executed = 0
     for k in range(calls):
         given = dict(first) if k == 0 else {}
         if rows:
@@ -126,6 +131,10 @@ def run_sequence(checked, calls: int, table: list | None = None, inputs: dict | 
                 raise
             raise TraceError(e.line, e.column, e.field, code="trace_in_call", call=k,
                              reason=e.reason_error()) from None
+        executed += ev.count
+        if executed > MAX_SEQUENCE_STEPS:
+            raise InputError("calls", code="trace_sequence_steps", call=k,
+                             limit=MAX_SEQUENCE_STEPS)
         if ev.event is not None and event is None:
             event = {"call": k, "line": ev.event[0], "kind": ev.event[1], "name": ev.event[2]}
         names = set(given) | (set(ev.names) if zero_unset and k == 0 else set())

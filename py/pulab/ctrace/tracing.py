@@ -120,7 +120,12 @@ def _compile(code, target, defines, global_q, entry, undefines) -> Checked:
 
 def input_values(checked: Checked, inputs: dict, zero_unset: bool = False) -> dict:
     """``inputs`` checked against the code (names, types, ranges; ``&OBJECT`` for a pointer)
-    as path → integer (or object path); ``zero_unset`` adds 0 for every input not given."""
+    as path → integer (or object path); ``zero_unset`` adds 0 for every input not given.
+
+    >>> checked = compile_code("Uint16 v; Uint16 w; long x = v * w;", "c28x")
+    >>> input_values(checked, {"v": "0x10"}, zero_unset=True)
+    {'v': 16, 'w': 0}
+    """
     out = {}
     for name, value in inputs.items():
         if isinstance(name, str):

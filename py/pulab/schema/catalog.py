@@ -140,14 +140,6 @@ MESSAGES = {
     "trace_no_type_on_target": ("{name} does not exist on {target}", "{target} 上没有 {name} 类型"),
     "trace_undeclared": ("{name} is not declared (declare it with its type, e.g. 'Uint16 "
                          "{name};')", "{name} 未声明（请带类型声明，例如 'Uint16 {name};'）"),
-    "trace_undeclared_macro": ("{name} is not declared: if it is a macro of a header not pasted "
-                               "({headers}), paste the header or give it with -D {name}=VALUE",
-                               "{name} 未声明：若它是未粘贴头文件（{headers}）中的宏，请粘贴该头文件，"
-                               "或用 -D {name}=VALUE 给出"),
-    "trace_undeclared_define": ("{name} is not declared: if it is a macro, give it with "
-                                "-D {name}=VALUE (or declare it with its type, e.g. 'Uint16 "
-                                "{name};')", "{name} 未声明：若它是宏，请用 -D {name}=VALUE 给出"
-                                "（或带类型声明，例如 'Uint16 {name};'）"),
     "trace_pointer_pointer": ("pointers to pointers are not supported", "不支持指向指针的指针"),
     "trace_array_no_size": ("an array needs a size or an initializer", "数组需要大小或初始值"),
     "trace_struct_incomplete": ("struct {name} is declared but its fields are not pasted",
@@ -260,6 +252,14 @@ MESSAGES = {
                                 "注解格式应为 '// @q NAME Qn|auto [base=NUMBER [UNIT]]'"),
     "trace_q_bits": ("Q{n}: at most 63 fraction bits", "Q{n}：小数位最多 63 位"),
     "trace_base_finite": ("base must be a finite number", "base 必须是有限数"),
+    "trace_undeclared_macro": ("{name} is not declared: if it is a macro of a header not pasted "
+                               "({headers}), paste the header or give it with -D {name}=VALUE",
+                               "{name} 未声明：若它是未粘贴头文件（{headers}）中的宏，请粘贴该头文件，"
+                               "或用 -D {name}=VALUE 给出"),
+    "trace_undeclared_define": ("{name} is not declared: if it is a macro, give it with "
+                                "-D {name}=VALUE (or declare it with its type, e.g. 'Uint16 "
+                                "{name};')", "{name} 未声明：若它是宏，请用 -D {name}=VALUE 给出"
+                                "（或带类型声明，例如 'Uint16 {name};'）"),
     "trace_calls_entry": ("a sequence of calls needs an entry function (--entry)",
                           "多次调用需要入口函数（--entry）"),
     "trace_table_rows": ("the input table has {rows} rows for {calls} calls",
@@ -275,6 +275,9 @@ MESSAGES = {
     "trace_table_read": ("cannot read {name}: {reason}", "无法读取 {name}：{reason}"),
     "trace_calls_prove": ("--calls cannot be combined with --prove", "--calls 不能与 --prove 同时使用"),
     "trace_table_kind": ("{name}: the table must be .csv or .jsonl", "{name}：输入表必须是 .csv 或 .jsonl"),
+    "trace_sequence_steps": ("call {call} reaches {limit} statements executed over the sequence "
+                             "(fewer calls?)", "第 {call} 次调用时整个序列执行的语句达到 {limit} 条"
+                             "（减少调用次数？）"),
     "trace_in_call": ("in call {call}: {reason}", "第 {call} 次调用：{reason}"),
     "trace_undefine_name": ("-U takes a macro name, got {got}", "-U 需要宏名，当前为 {got}"),
     "trace_float_operator": ("{op} of a floating constant cannot be folded (only + - * /, "
@@ -284,8 +287,10 @@ MESSAGES = {
                                "undefined in C", "{text} 向零截断为 {value}，超出 {type} 的范围："
                                "C 中未定义"),
     "trace_float_constant": ("{text}: only integer constants are supported (no floating point; "
-                             "a constant floating expression cast to an integer type is folded)",
-                             "{text}：只支持整数常量（不支持浮点；转换为整数类型的浮点常量表达式会被折叠）"),
+                             "a constant floating expression cast, initializing or assigned to an "
+                             "integer is folded)",
+                             "{text}：只支持整数常量（不支持浮点；转换、初始化或赋值给整数的浮点常量"
+                             "表达式会被折叠）"),
     "trace_int_suffix": ("{text}: bad integer suffix {suffix}", "{text}：错误的整数后缀 {suffix}"),
     "trace_octal": ("{text}: bad octal constant", "{text}：错误的八进制常量"),
     "trace_nested": ("nested more than {limit} deep", "嵌套超过 {limit} 层"),
