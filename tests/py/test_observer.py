@@ -273,3 +273,21 @@ def test_st_c5_beyond_the_handles_int16_is_a_problem_of_the_st_firmware():
     assert "profiles.st.hC5" in [p["field"] for p in r["firmware"]["st"]["problems"]]
     assert not [k for k in pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
                 if k.startswith("hC")]
+
+
+_EXTREMES = {"bemf_f0_hz": (1e-9, 1e9), "bemf_damping": (1e-3, 100), "tracking_f0_hz": (1e-9, 1e9),
+             "tracking_damping": (1e-3, 100), "speed_filter_hz": (1e-9, 1e9),
+             "startup_ramp_rpm_per_s": (1e-9, 1e9), "startup_current_a": (1e-9, 1e9),
+             "merging_speed_rpm": (1e-9, 1e9), "merging_coeff_pct": (1e-9, 1e6),
+             "min_speed_rpm": (1e-9, 1e9), "e_block_v": (1e-9, 1e9), "snr_min": (1e-6, 1e6),
+             "r_error_pct": (0, 1000), "current_lsb_a": (0, 1e9), "noise_a": (0, 1e9)}
+
+
+@pytest.mark.parametrize("field,value", [(k, v) for k, vs in _EXTREMES.items() for v in vs])
+def test_every_observer_field_at_its_range_ends_gives_a_finite_report(field, value):
+    """Each end of each field's range, with the NXP and ST integers: a report whose JSON has no
+    NaN or infinity (what cannot be is null or a flag), never an exception."""
+    inp = {**copy.deepcopy(SEED_INPUT), "profiles": {"nxp": {}, "st": {}}, "observer": {field: value}}
+    r = pulab.report(inp)
+    json.dumps(r, allow_nan=False)
+    assert r["input"]["observer"][field] == value
