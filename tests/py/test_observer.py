@@ -291,3 +291,12 @@ def test_every_observer_field_at_its_range_ends_gives_a_finite_report(field, val
     r = pulab.report(inp)
     json.dumps(r, allow_nan=False)
     assert r["input"]["observer"][field] == value
+
+
+def test_text_format_shows_the_observer(tmp_path):
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps({**SEED_INPUT, "observer": {}}))
+    r = subprocess.run([sys.executable, "-m", "pulab", "report", str(p), "--format", "text"],
+                       capture_output=True, text=True, env={"PYTHONPATH": str(HERE.parent / "py")})
+    assert r.returncode == 0
+    assert "lowest sensorless speed  569.12 rpm" in r.stdout
