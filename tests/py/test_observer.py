@@ -300,3 +300,19 @@ def test_text_format_shows_the_observer(tmp_path):
                        capture_output=True, text=True, env={"PYTHONPATH": str(HERE.parent / "py")})
     assert r.returncode == 0
     assert "lowest sensorless speed  569.12 rpm" in r.stdout
+
+
+def test_lowest_speed_against_a_hand_worked_mcsdk_note():
+    """A public MCSDK drive_parameters.h (2025, found by exact-string search of GAIN1, index id
+    67256354815; the tool did not name its repository) works the start-up out by hand: Rs 0.1 Ω,
+    Ls 10 µH, 2 pole pairs, MOTOR_VOLTAGE_CONSTANT 0.25 V rms line-to-line per krpm, 4 A at
+    1600 rpm: "SNR = (0.25×1.6)/(0.1×4) = 1.0 (breakeven)".  It sets the line RMS back-EMF
+    against R·I; the observer sees the phase peak, √(2/3) of it: pulab's ratio at 1600 rpm is
+    0.816 and the breakeven (the whole R as the error, no LSB) is 1600/0.816 = 1959.6 rpm."""
+    inp = {"motor": {"rated_voltage_v": 8, "rated_current_a": 4, "rated_freq_hz": 1000 * 2 / 60,
+                     "rs_ohm": 0.1, "ld_h": 1e-5, "lq_h": 1e-5, "bemf_v": 0.25, "pole_pairs": 2},
+           "drive": {"udc_v": 12, "ts_s": 4e-5, "base_freq_hz": 15000 * 2 / 60},
+           "observer": {"startup_current_a": 4, "r_error_pct": 100, "current_lsb_a": 0}}
+    b = pulab.report(inp)["observer"]["budget"]
+    assert b["min_speed_rpm"] == pytest.approx(1600 / math.sqrt(2 / 3), rel=1e-9)
+    assert b["min_speed_rpm"] == pytest.approx(1959.6, abs=0.05)
