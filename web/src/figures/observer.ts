@@ -27,18 +27,16 @@ export function renderObserverPoles(el: HTMLElement, o: ObserverReport): void {
 
 export function renderObserverBudget(el: HTMLElement, o: ObserverReport): void {
   const b = o.budget;
-  const shapes: object[] = [{ type: 'line', xref: 'paper', x0: 0, x1: 1, y0: b.snr_min, y1: b.snr_min, line: { color: COLORS.naive, dash: 'dash', width: 1 } }];
-  if (b.min_speed_rpm !== null) shapes.push({ type: 'line', yref: 'paper', y0: 0, y1: 1, x0: b.min_speed_rpm, x1: b.min_speed_rpm, line: { color: COLORS.naive, dash: 'dot', width: 1 } });
+  // where the back-EMF crosses the required multiple of its errors is the lowest speed
+  const shapes: object[] = b.min_speed_rpm === null ? [] : [{ type: 'line', yref: 'paper', y0: 0, y1: 1, x0: b.min_speed_rpm, x1: b.min_speed_rpm, line: { color: COLORS.naive, dash: 'dot', width: 1 } }];
   plotRaw(el, [
-    { type: 'scatter', mode: 'lines', x: b.speeds_rpm, y: b.snr, name: t('obsSnr'), line: { color: COLORS.si, width: 2.2 } },
-    { type: 'scatter', mode: 'lines', x: b.speeds_rpm, y: b.bemf_v, name: `${t('obsBemf')} [V]`, yaxis: 'y2', line: { color: COLORS.pu, width: 1.6 } },
-    { type: 'scatter', mode: 'lines', x: b.speeds_rpm, y: b.error_v, name: `${t('obsError')} [V]`, yaxis: 'y2', line: { color: COLORS.fixed, width: 1.6, dash: 'dash' } },
+    { type: 'scatter', mode: 'lines', x: b.speeds_rpm, y: b.bemf_v, name: t('obsBemf'), line: { color: COLORS.si, width: 2.2 } },
+    { type: 'scatter', mode: 'lines', x: b.speeds_rpm, y: b.error_v.map((e) => e * b.snr_min), name: t('obsRequired', { snr: b.snr_min }), line: { color: COLORS.fixed, width: 2, dash: 'dash' } },
   ], {
     legend: { orientation: 'h', y: 1.12, x: 0 },
     xaxis: { title: { text: `${t('fwSpeed')} [rpm]` }, gridcolor: '#eaeef2' },
-    yaxis: { title: { text: t('obsSnr') }, gridcolor: '#eaeef2', rangemode: 'tozero' },
-    yaxis2: { title: { text: 'V' }, overlaying: 'y', side: 'right', rangemode: 'tozero', showgrid: false },
-    margin: { l: 64, r: 60, t: 10, b: 44 },
+    yaxis: { title: { text: `${t('obsVolts')} [V]` }, gridcolor: '#eaeef2', rangemode: 'tozero' },
+    margin: { l: 64, r: 20, t: 10, b: 44 },
     shapes,
   }, 340);
 }
