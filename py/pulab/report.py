@@ -394,6 +394,19 @@ def format_text(r: dict) -> str:
             (k, f"{c['value']:>11{'.10g' if c.get('real') else 'd'}}  {c['format']:<16} "
                 f"err {c['error_pct']:+.4f} %  = {c['si']:.6g} {c['unit']}  {' '.join(c['flags'])}")
             for k, c in prof["constants"].items()])
+    if "observer" in r:
+        o, low = r["observer"], r["observer"]["budget"]["min_speed_rpm"]
+        def pm(x):
+            return "none" if x is None else f"{x:.4g}°"
+        lines += _table("Sensorless observer", [
+            (f"{name} observer", f"kp {o['design'][name][kp]:.6g}, ki {o['design'][name][ki]:.6g}, "
+                                 f"PM {pm(o['design'][name]['phase_margin_deg'])}, |pole| max "
+                                 f"{o['design'][name]['spectral_radius']:.6g}")
+            for name, kp, ki in (("bemf", "kp_v_per_a", "ki_v_per_as"),
+                                 ("tracking", "kp_per_s", "ki_per_s2"))] + [
+            ("lowest sensorless speed", "none" if low is None else f"{low:.6g} rpm"),
+            ("merging / lowest asked", f"{o['settings']['merging_speed_rpm']:.6g} / "
+                                       f"{o['settings']['min_speed_rpm']:.6g} rpm")])
     if "loop" in r:
         lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
     reviewed = {x["message"] for x in r["review"]["findings"]}

@@ -83,6 +83,26 @@ def fw_answers(inp: dict) -> dict:
             "fw-base": lo * 60 / (2 * math.pi * p)}
 
 
+def observer_answers(inp: dict) -> dict:
+    """The sensorless exercises at every default (docs/contract.md, "Output: observer"): the
+    back-EMF observer's kp = 2ζω0·L_d − R (250 Hz, ζ = 1); NXP's M1_TO_KP_SHIFT of
+    2ζω_t/ω_max (15 Hz, ζ = 1, ω_max = 2π·f_b), MCAT's rule ceil(log2 k) for k ≥ 1,
+    −ceil(log2(1/k) − 1) below; the lowest speed where ψ·ω = ΔR·I + LSB·|R + jωL_q| with
+    ΔR = 0.00393·135·R, I = √2·I_n, LSB = 2√2·I_n/4096, solved as a quadratic in ω."""
+    m, d = inp["motor"], inp["drive"]
+    r, ld, lq, p = m["rs_ohm"], m["ld_h"], m["lq_h"], m["pole_pairs"]
+    f_b = d.get("base_freq_hz", m["rated_freq_hz"])
+    k = 2 * 2 * math.pi * 15 / (2 * math.pi * f_b)
+    shift = math.ceil(math.log2(k)) if k >= 1 else -math.ceil(math.log2(1 / k) - 1)
+    psi = math.sqrt(2 / 3) * m["bemf_v"] / (2 * math.pi * m["rated_freq_hz"])
+    i = math.sqrt(2) * m["rated_current_a"]
+    c0, c1 = r * 0.00393 * 135 * i, 2 * math.sqrt(2) * m["rated_current_a"] / 4096
+    qa, qb, qc = psi ** 2 - (c1 * lq) ** 2, -2 * psi * c0, c0 ** 2 - (c1 * r) ** 2
+    w = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
+    return {"obs-bemf-kp": 2 * 2 * math.pi * 250 * ld - r, "obs-to-kp-shift": shift,
+            "obs-lowest": w * 30 / (math.pi * p)}
+
+
 def expected(inp: dict) -> dict:
     """Exercise id → expected answer for one motor."""
     P = parse(inp)
@@ -137,6 +157,7 @@ def expected(inp: dict) -> dict:
         "pll-naive-kts": g_naive * L["kp"] * ts,
         "pll-naive-locks": "yes" if naive["stable"] else "no",
         **fw_answers(inp),
+        **observer_answers(inp),
         # TI's BOOSTXL-DRV8323RS: 7 mΩ × 10 on a bipolar 12-bit ADC at 3.3 V
         "board-counts": 4096 * 0.007 * 10 / 3.3,
         "board-pu": 3.3 / (0.007 * 10) / 4096 / B["I_b"],

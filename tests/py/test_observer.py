@@ -273,3 +273,46 @@ def test_st_c5_beyond_the_handles_int16_is_a_problem_of_the_st_firmware():
     assert "profiles.st.hC5" in [p["field"] for p in r["firmware"]["st"]["problems"]]
     assert not [k for k in pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
                 if k.startswith("hC")]
+
+
+_EXTREMES = {"bemf_f0_hz": (1e-9, 1e9), "bemf_damping": (1e-3, 100), "tracking_f0_hz": (1e-9, 1e9),
+             "tracking_damping": (1e-3, 100), "speed_filter_hz": (1e-9, 1e9),
+             "startup_ramp_rpm_per_s": (1e-9, 1e9), "startup_current_a": (1e-9, 1e9),
+             "merging_speed_rpm": (1e-9, 1e9), "merging_coeff_pct": (1e-9, 1e6),
+             "min_speed_rpm": (1e-9, 1e9), "e_block_v": (1e-9, 1e9), "snr_min": (1e-6, 1e6),
+             "r_error_pct": (0, 1000), "current_lsb_a": (0, 1e9), "noise_a": (0, 1e9)}
+
+
+@pytest.mark.parametrize("field,value", [(k, v) for k, vs in _EXTREMES.items() for v in vs])
+def test_every_observer_field_at_its_range_ends_gives_a_finite_report(field, value):
+    """Each end of each field's range, with the NXP and ST integers: a report whose JSON has no
+    NaN or infinity (what cannot be is null or a flag), never an exception."""
+    inp = {**copy.deepcopy(SEED_INPUT), "profiles": {"nxp": {}, "st": {}}, "observer": {field: value}}
+    r = pulab.report(inp)
+    json.dumps(r, allow_nan=False)
+    assert r["input"]["observer"][field] == value
+
+
+def test_text_format_shows_the_observer(tmp_path):
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps({**SEED_INPUT, "observer": {}}))
+    r = subprocess.run([sys.executable, "-m", "pulab", "report", str(p), "--format", "text"],
+                       capture_output=True, text=True, env={"PYTHONPATH": str(HERE.parent / "py")})
+    assert r.returncode == 0
+    assert "lowest sensorless speed  569.12 rpm" in r.stdout
+
+
+def test_lowest_speed_against_a_hand_worked_mcsdk_note():
+    """A public MCSDK drive_parameters.h (2025, found by exact-string search of GAIN1, index id
+    67256354815; the tool did not name its repository) works the start-up out by hand: Rs 0.1 Ω,
+    Ls 10 µH, 2 pole pairs, MOTOR_VOLTAGE_CONSTANT 0.25 V rms line-to-line per krpm, 4 A at
+    1600 rpm: "SNR = (0.25×1.6)/(0.1×4) = 1.0 (breakeven)".  It sets the line RMS back-EMF
+    against R·I; the observer sees the phase peak, √(2/3) of it: pulab's ratio at 1600 rpm is
+    0.816 and the breakeven (the whole R as the error, no LSB) is 1600/0.816 = 1959.6 rpm."""
+    inp = {"motor": {"rated_voltage_v": 8, "rated_current_a": 4, "rated_freq_hz": 1000 * 2 / 60,
+                     "rs_ohm": 0.1, "ld_h": 1e-5, "lq_h": 1e-5, "bemf_v": 0.25, "pole_pairs": 2},
+           "drive": {"udc_v": 12, "ts_s": 4e-5, "base_freq_hz": 15000 * 2 / 60},
+           "observer": {"startup_current_a": 4, "r_error_pct": 100, "current_lsb_a": 0}}
+    b = pulab.report(inp)["observer"]["budget"]
+    assert b["min_speed_rpm"] == pytest.approx(1600 / math.sqrt(2 / 3), rel=1e-9)
+    assert b["min_speed_rpm"] == pytest.approx(1959.6, abs=0.05)

@@ -13,7 +13,7 @@ import schema from '../../web/src/generated/schema.json';
 const ROOT = resolve(__dirname, '../..');
 const DOCS = join(ROOT, 'docs');
 const LANGS = ['zh', 'en'] as const;
-const PANELS = ['inputs', 'bases', 'pu', 'vendor', 'constants', 'current', 'pll', 'qcalc', 'conventions', 'vendors', 'sweep', 'batch', 'prove', 'code', 'loop', 'board', 'fw'];
+const PANELS = ['inputs', 'bases', 'pu', 'vendor', 'constants', 'current', 'pll', 'qcalc', 'conventions', 'vendors', 'sweep', 'batch', 'prove', 'code', 'loop', 'board', 'fw', 'observer'];
 const PLOTS = ['current', 'pll'];
 
 interface Index {

@@ -27,7 +27,7 @@ describe('views', () => {
     const shown = () => [...root.querySelectorAll<HTMLElement>('section.panel')].filter((s) => !s.hidden).map((s) => s.dataset.panel);
     expect(shown().sort()).toEqual([...VIEWS[0].panels].sort());
     root.querySelector<HTMLElement>('#panel-pll')?.scrollIntoView();
-    expect(shown()).toEqual(['current', 'pll', 'loop', 'fw']);
+    expect(shown()).toEqual(['current', 'pll', 'loop', 'fw', 'observer']);
     expect(root.querySelector('nav.tabs a.on')?.getAttribute('data-view')).toBe('loops');
     root.remove();
   });

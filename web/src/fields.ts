@@ -147,6 +147,7 @@ const LAYOUT: Omit<SectionSpec, 'fields'>[] = [
   { id: 'analysis', title: 'sec_analysis', collapsed: true },
   { id: 'analysis.speed', title: 'sec_speed', collapsed: true },
   { id: 'analysis.fw', title: 'sec_fw', collapsed: true },
+  { id: 'observer', title: 'sec_observer', collapsed: true },
 ];
 
 export const SECTIONS: SectionSpec[] = LAYOUT.map((s) => ({

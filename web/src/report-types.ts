@@ -61,6 +61,30 @@ export interface FwReport {
   curves: { circle: { id_a: number[]; iq_a: number[] }; ellipses: { speed_rpm: number; id_a: number[]; iq_a: number[] }[] };
 }
 
+/** One observer loop of the report's "observer" section (pulab.analyses.observer). */
+export interface ObserverLoop {
+  phase_margin_deg: number | null;
+  gain_margin_db: number | null;
+  crossover_hz: number | null;
+  bandwidth_hz: number | null;
+  poles: [number, number][];
+  spectral_radius: number;
+  stable: boolean;
+  continuous_poles: [number, number][];
+  discrete_poles_of_continuous: [number, number][];
+  [k: string]: unknown;
+}
+/** The report's "observer" section (docs/contract.md, "Output: observer"). */
+export interface ObserverReport {
+  settings: Record<string, number>;
+  design: {
+    bemf: ObserverLoop & { kp_v_per_a: number; ki_v_per_as: number };
+    tracking: ObserverLoop & { kp_per_s: number; ki_per_s2: number };
+    speed_filter: { b0: number; b1: number; a1: number; pole: number };
+  };
+  budget: { speeds_rpm: number[]; snr: (number | null)[]; bemf_v: number[]; error_v: number[]; snr_min: number; min_speed_rpm: number | null; terms_v: Record<string, number> };
+}
+
 export interface SimCurrent {
   t: number[];
   variants: Record<string, { id: number[]; iq: number[]; ud: number[]; uq: number[]; [k: string]: number[] }>;
@@ -103,6 +127,8 @@ export interface Report {
   datasheet?: { given: Record<string, unknown>; conversions: Conversion[] };
   /** Present when the input has `analysis.fw` (docs/contract.md, "Output: fw"). */
   fw?: FwReport;
+  /** Present when the input has an `observer` section (docs/contract.md, "Output: observer"). */
+  observer?: ObserverReport;
   /** Present when the input has a `board` section (docs/contract.md, "Output: board"). */
   board?: { current: BoardRow | null; bus: BoardRow | null; pwm: BoardRow | null };
   loop?: LoopReport;
@@ -120,6 +146,8 @@ export interface ProfileReport {
   pi_example?: { error: number; shift: number; misra: number }[];
   checks?: [string, string][];
   files?: { rounding: string; worked_numbers: string[] };
+  /** With an `observer` section: the names of the vendor's sensorless constants. */
+  observer_constants?: string[];
 }
 export interface ProfileConstant { value: number; ideal: number; error_pct: number; format: string; si: number; unit: string; flags: string[]; source: string; expression: string; /** A C floating constant (no Q format): value is the number the compiler stores. */ real?: boolean }
 

@@ -48,6 +48,7 @@ class _Ctx:
         self._loop = None
         self._trace = None
         self.fw = None
+        self.obs = None
 
     def loop(self) -> dict:
         if self._loop is None:
@@ -178,6 +179,15 @@ def _fw(c: _Ctx) -> dict:
     return c.fw
 
 
+def _obs(c: _Ctx) -> dict:
+    """The trainee motor's report with ``observer: {}`` and the NXP profile (every default),
+    computed once per context (three exercises read it)."""
+    if c.obs is None:
+        from ..report import report
+        c.obs = report({**c.input, "observer": {}, "profiles": {"nxp": {}}})
+    return c.obs
+
+
 EXERCISES: tuple[Exercise, ...] = (
     # day one, step 1: per-unit intuition
     Exercise("warmup-current", "00-warm-up", "real", lambda c: 2.0 / c.r["base"]["I_b"], 0.01),
@@ -225,6 +235,13 @@ EXERCISES: tuple[Exercise, ...] = (
     Exercise("fw-unbounded", "08-loop-design", "choice",
              lambda c: "yes" if _fw(c)["max_speed_rpm"] is None else "no", choices=("yes", "no")),
     Exercise("fw-base", "08-loop-design", "real", lambda c: _fw(c)["base_speed_rpm"], 0.01, "rpm"),
+    # reference: sensorless, the observer and the lowest speed
+    Exercise("obs-bemf-kp", "08-loop-design", "real",
+             lambda c: _obs(c)["observer"]["design"]["bemf"]["kp_v_per_a"], 0.01, "V/A"),
+    Exercise("obs-to-kp-shift", "08-loop-design", "int",
+             lambda c: _obs(c)["profiles"]["nxp"]["constants"]["M1_TO_KP_SHIFT"]["value"]),
+    Exercise("obs-lowest", "08-loop-design", "real",
+             lambda c: _obs(c)["observer"]["budget"]["min_speed_rpm"], 0.01, "rpm"),
     # reference: the board sets the scales
     Exercise("board-counts", "09-vendors", "real", lambda c: _board(c)["counts_per_a"], 0.01,
              "counts/A"),

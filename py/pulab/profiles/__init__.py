@@ -85,7 +85,9 @@ def profiles(ctx: dict, opts: dict, names: tuple | None = None) -> dict:
         p = v.profile(ctx, opts[name])
         obs = provided(v, "observer")
         if obs is not None and ctx.get("observer") is not None:
-            p["constants"].update(obs(ctx, opts[name]))
+            added = obs(ctx, opts[name])
+            p["constants"].update(added)
+            p["observer_constants"] = list(added)
         p["bases"] = bases_table(name, ctx, p)
         p["files"] = v.FILES
         problems = p.pop("problems", [])

@@ -3,13 +3,14 @@
 // analysis.fw options, asked of pulab by this panel (it costs more than a report, so it has its
 // own request and never delays the numbers of the others).
 import { flagChips, h, num, patch, table } from '../dom';
-import { errText, t } from '../i18n';
+import { t } from '../i18n';
 import { effectiveInput } from '../fields';
 import { reportInput, type Input } from '../state';
 import { keptFigure } from '../figures/figure';
 import { renderFwPlane, renderFwSpeed } from '../figures/fw';
 import type { FwReport, FwTable } from '../report-types';
-import type { Panel, PanelContext } from './panel';
+import type { Panel } from './panel';
+import { OwnRequest } from './own-request';
 
 /** The input pulab computes the "fw" section from: the plain report input and analysis.fw. */
 export function fwInput(inp: Input): Input {
@@ -18,51 +19,7 @@ export function fwInput(inp: Input): Input {
   return { ...reportInput(eff), analysis: { fw: fw && typeof fw === 'object' && !Array.isArray(fw) ? fw : {} } };
 }
 
-class FwView {
-  key = '';
-  fw: FwReport | null = null;
-  error: string | null = null;
-  pending = false;
-  /** Asked only while the panel is (nearly) on screen: the envelope costs about a second of the
-   * report runtime, which the other panels' reports must not wait behind on every keystroke. */
-  shown = typeof IntersectionObserver === 'undefined';
-  private ctx: PanelContext | null = null;
-
-  constructor(el: HTMLElement) {
-    if (this.shown) return;
-    new IntersectionObserver((entries) => {
-      this.shown = entries.some((e) => e.isIntersecting);
-      if (this.shown && this.ctx) this.ask(el, this.ctx);
-    }, { rootMargin: '300px' }).observe(el);
-  }
-
-  ask(el: HTMLElement, ctx: PanelContext): void {
-    this.ctx = ctx;
-    if (!ctx.client || !this.shown) return;
-    const req = fwInput(ctx.input);
-    const key = JSON.stringify(req);
-    if (key === this.key) return;
-    this.key = key;
-    this.pending = true;
-    void ctx.client.call('report', req, 'fw').then(({ result }) => {
-      if (key !== this.key) return;
-      this.pending = false;
-      if (result.ok) {
-        this.fw = result.report.fw ?? null;
-        this.error = null;
-        ctx.fieldError?.('fw', null);
-      } else {
-        // the numbers of an earlier input are not left beside the message
-        this.fw = null;
-        this.error = `${result.field}: ${errText(result)}`;
-        ctx.fieldError?.('fw', result);
-      }
-      fwPanel.render(el, ctx);
-    }, () => undefined);
-  }
-}
-
-const views = new WeakMap<HTMLElement, FwView>();
+const views = new WeakMap<HTMLElement, OwnRequest<FwReport>>();
 
 function cArray(name: string, tb: FwTable): string {
   // ST's look-up is three macros of drive_parameters.h, the others one array each
@@ -79,9 +36,9 @@ export const fwPanel: Panel = {
   needsPython: true,
   render(el, ctx) {
     let v = views.get(el);
-    if (!v) views.set(el, (v = new FwView(el)));
-    v.ask(el, ctx);
-    const fw = v.fw;
+    if (!v) views.set(el, (v = new OwnRequest(el, 'fw', fwInput, (r) => r.fw ?? null, fwPanel.render)));
+    v.ask(ctx);
+    const fw = v.data;
     patch(el,
       h('p', { class: 'note' }, t('fwIntro')),
       v.error ? h('p', { class: 'sim-error', role: 'alert' }, v.error) : null,

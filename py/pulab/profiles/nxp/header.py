@@ -22,7 +22,8 @@ def header(p: dict, ctx: dict, r: dict) -> str:
             continue    # M1_I_MAX, M1_U_DCB_MAX: the scales above
         if k == "M1_TO_THETA_GAIN":
             body.append(define(k, r, "int16_t"))
-            body.append(f"#define {'M1_TO_THETA_SHIFT':<30} {r['shift']:>7}")
+            if "M1_TO_THETA_SHIFT" not in c:  # a constant of its own with an observer section
+                body.append(f"#define {'M1_TO_THETA_SHIFT':<30} {r['shift']:>7}")
         else:  # FRAC16 (and the sensorless shifts) are 16-bit words, ACC32/FRAC32 32-bit
             body.append(define(k, r, "int16_t" if r["word_bits"] == 16 else "int32_t"))
     return guard("M1_PMSM_APPCONFIG_PULAB_H",

@@ -79,6 +79,9 @@ def observer(ctx: dict, opt: dict) -> dict:
                       "2ζω_t/ω_max", js),
         **_gain_shift("M1_TO_KI", wt * wt * ts / w_max, w_max / ts, "1/s²", "ω_t²·T_s/ω_max", js),
     }
+    theta = mantissa_shift(ts * w_max / math.pi, "nxp.M1_TO_THETA_SHIFT")[1]
+    out["M1_TO_THETA_SHIFT"] = fixed("M1_TO_THETA_SHIFT", theta, 16, 0, 1.0, "",
+                                     "shift of T_s·ω_max/π (M1_TO_THETA_GAIN's)", js, fmt="int16")
     x = TWO_PI * s["speed_filter_hz"] * ts
     b0, a1 = x / (2.0 + x), (x - 2.0) / (2.0 + x)
     for name, v, expr in (("B0", b0 / 2.0, "b0/2"), ("B1", b0 / 2.0, "b1/2"),
