@@ -330,7 +330,13 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
             raise InputError("files", code="decode_define", file=file, line=line, name=n,
                              why=f["error"])
     values = {n: f["value"] for n, f in folded.items() if f["value"] is not None}
-    result = dec(values, comments)
+    try:
+        result = dec(values, comments)
+    except (ArithmeticError, ValueError) as e:
+        # a decoder's formula on numbers that make no motor (a zero scale, a negative root):
+        # the header is at fault, and the reply says so rather than a number
+        raise InputError("files", code="decode_values", vendor={"vendor": vendor},
+                         why=type(e).__name__) from None
     macros = {}
     for n, d in result["macros"].items():
         f = folded[n]

@@ -731,6 +731,9 @@ MESSAGES = {
                          "Microchip、汇川）"),
     "decode_define": ("{file}:{line}: #define {name} does not evaluate: {why}",
                       "{file}:{line}：#define {name} 无法求值：{why}"),
+    "decode_values": ("the {vendor} header's numbers make no design ({why} in its formulas): "
+                      "a scale or a divisor is zero or negative",
+                      "{vendor} 头文件的数值构不成设计（其公式中出现 {why}）：某个比例或除数为零或负"),
     "decode_preprocess": ("{file}:{line}: {why}", "{file}:{line}：预处理：{why}"),
     "decode.comment_value": ("{macro} = {value} but its comment says {comment}: no reading of "
                              "it ({readings}) gives that; nearest {nearest}",

@@ -203,10 +203,10 @@ def decode_header(values: dict, notes: dict) -> dict:
                                             "M1_SCALAR_INTEG_GAIN/2^15/(2·f_max)")
     # the motor from the observer scales
     motor: dict = {}
-    if has("M1_I_SCALE") and has("M1_U_SCALE") and i_max and u_max and ts:
-        a = v["M1_U_SCALE"] / _Q15 * i_max / u_max
+    a = v["M1_U_SCALE"] / _Q15 * i_max / u_max if has("M1_U_SCALE") and i_max and u_max else None
+    design["a_per_ohm"] = a
+    if has("M1_I_SCALE") and a and a > 0 and ts:
         i_scale = v["M1_I_SCALE"] / _Q15
-        design["a_per_ohm"] = a
         motor["ld_h"] = i_scale * ts / a
         motor["rs_ohm"] = (1.0 - i_scale) / a
         out["M1_U_SCALE"] = macro(a, "1/Ω", "observer: T_s/(L_d + T_s·R_s)",
@@ -215,15 +215,13 @@ def decode_header(values: dict, notes: dict) -> dict:
             motor["lq_h"] = v["M1_WI_SCALE"] / _Q15 / (a * w_max)
             out["M1_WI_SCALE"] = macro(motor["lq_h"], "H", "observer: L_q·T_s/(L_d + T_s·R_s)·ω_max"
                                        " → L_q", "M1_WI_SCALE/2^15/(a·ω_max)")
-        if has("M1_E_SCALE") and has("M1_E_MAX"):
+        if has("M1_E_SCALE") and v.get("M1_E_MAX"):
             e = v["M1_E_SCALE"] / _Q15 * i_max / v["M1_E_MAX"]
             if abs(e / a - 1.0) > 0.01:
                 checks.append(check("warning", "inconsistent", ["M1_E_SCALE", "M1_U_SCALE"],
                                     what="T_s/(L_d + T_s·R_s)", a=a, a_from="M1_U_SCALE",
                                     b=e, b_from="M1_E_SCALE",
                                     diff=round(100.0 * (e / a - 1.0), 2)))
-    elif has("M1_U_SCALE") and has("M1_I_MAX"):
-        design["a_per_ohm"] = v["M1_U_SCALE"] / _Q15 * i_max / u_max if u_max else None
     if pp:
         motor["pole_pairs"] = int(pp)
     # the current PI; MCAT's trapezoidal k = 2 unless its JSON says otherwise
@@ -248,13 +246,14 @@ def decode_header(values: dict, notes: dict) -> dict:
         out[ki_n] = macro(ki, "V/(A·s)", f"current PI ki, {axis} axis",
                           f"{ki_n}/2^15·U_max/I_max·{k:g}/T_s")
         l = motor.get(l_key)
-        if l and "rs_ohm" in motor:
-            c = current_loop(kp, ki, motor["rs_ohm"], l)
+        c = current_loop(kp, ki, motor["rs_ohm"], l) if l and "rs_ohm" in motor else None
+        if c is not None:
             w0 = math.sqrt(ki / l) if ki > 0 else None
             c["mcat_f0_hz"] = w0 / (2.0 * math.pi) if w0 else None
             c["mcat_ksi"] = (kp + motor["rs_ohm"]) / (2.0 * w0 * l) if w0 else None
             # MCAT's design is ω0, not a crossover: its closed loop has ω_n = ω0
-            c["bandwidth_hz"] = c["mcat_f0_hz"]
+            if c["mcat_f0_hz"]:
+                c["bandwidth_hz"] = c["mcat_f0_hz"]
             loops[axis] = c
     design["current_loop"] = loops or None
     for axis, c in loops.items():
