@@ -19,6 +19,7 @@ import { batchPanel } from './batch';
 import { vendorsPanel } from './vendors';
 import { boardPanel } from './board';
 import { fwPanel } from './fw';
+import { decodePanel } from './decode';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -40,6 +41,7 @@ export const PANELS: Panel[] = [
   vendorsPanel,
   boardPanel,
   fwPanel,
+  decodePanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);
