@@ -66,7 +66,7 @@ function macrosTable(d: Decoded): HTMLElement {
     h('code', { class: 'formula' }, m.formula),
     h('span', { class: 'src' }, m.source),
   ]);
-  return table([t('dc_macro'), t('dc_value'), t('dc_si'), t('dc_meaning'), t('dc_formula'), t('dc_source')], rows, 'dtable');
+  return h('div', { class: 'scroll' }, table([t('dc_macro'), t('dc_value'), t('dc_si'), t('dc_meaning'), t('dc_formula'), t('dc_source')], rows, 'dtable'));
 }
 
 function loopTable(d: Decoded): HTMLElement | null {
@@ -79,7 +79,7 @@ function loopTable(d: Decoded): HTMLElement | null {
       num(`${k}.bandwidth_hz`, c.bandwidth_hz, { unit: 'Hz' }), num(`${k}.zero_rad_s`, c.zero_rad_s, { unit: 'rad/s' }),
       num(`${k}.plant_pole_rad_s`, c.plant_pole_rad_s, { unit: 'rad/s' }), c.cancels_plant ? t('dc_yes') : t('dc_no')];
   });
-  return table([t('dc_axis'), 'kp', 'ki', t('dc_bw'), t('dc_zero'), t('dc_pole'), t('dc_cancels')], rows, 'dtable');
+  return h('div', { class: 'scroll' }, table([t('dc_axis'), 'kp', 'ki', t('dc_bw'), t('dc_zero'), t('dc_pole'), t('dc_cancels')], rows, 'dtable'));
 }
 
 function motorTable(d: Decoded): HTMLElement {
@@ -113,9 +113,9 @@ export const decodePanel: Panel = {
     keepFocus(el, () => el.replaceChildren(
       h('div', { class: 'decode' },
         h('p', { class: 'hint' }, t('dc_hint')),
-        h('label', { class: 'field' }, h('span', { class: 'lbl' }, t('dc_paste')),
-          h('textarea', { name: 'decode.text', rows: '8', spellcheck: 'false', value: dstate.pasted, ondragover: (ev: Event) => ev.preventDefault(), ondrop: drop,
-            oninput: (ev: Event) => { dstate.pasted = (ev.target as HTMLTextAreaElement).value; compute(el, ctx); } }),
+        h('label', { class: 'field paste' }, h('span', { class: 'lbl' }, t('dc_paste')),
+          h('textarea', { name: 'decode.text', rows: '8', spellcheck: 'false', ondragover: (ev: Event) => ev.preventDefault(), ondrop: drop,
+            oninput: (ev: Event) => { dstate.pasted = (ev.target as HTMLTextAreaElement).value; compute(el, ctx); } }, dstate.pasted),
           h('span', { class: 'err', 'data-err-for': 'decode.text' }, err)),
         h('div', { class: 'qform' },
           h('label', { class: 'field' }, h('span', { class: 'lbl' }, t('dc_files')),
