@@ -108,6 +108,21 @@ def test_st_design_input_is_a_report_input(st):
     assert r["input"]["motor"]["rs_ohm"] == 0.35
 
 
+def test_st_round_trip_regenerates_the_workbench_integers(st):
+    # pu-lab's ST header for the decoded design: every integer the Workbench wrote comes back
+    rt = st["roundtrip"]["macros"]
+    ints = {n: m for n, m in rt.items() if "delta_lsb" in m}
+    assert {"PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "NOMINAL_CURRENT", "TF_KPDIV",
+            "POLE_PAIR_NUM", "PWM_FREQUENCY"} <= set(ints)
+    assert all(m["delta_lsb"] == 0 for m in ints.values()), ints
+    assert rt["PID_TORQUE_KP_DEFAULT"]["file"] == 2312
+    assert "#define PID_TORQUE_KP_DEFAULT" in st["roundtrip"]["header"]
+
+
+def test_nxp_round_trip_needs_the_back_emf(nxp):
+    assert nxp["design"]["missing"] == ["motor.bemf_v"] and nxp["roundtrip"] is None
+
+
 def test_st_edited_resistance_breaks_the_cancellation():
     files = [(n, t.replace("#define RS                     0.35", "#define RS 0.5"))
              for n, t in _files("st", ST_SET)]

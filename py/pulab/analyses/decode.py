@@ -31,6 +31,7 @@ Examples
 
 from __future__ import annotations
 
+import copy
 import re
 
 from ..ctrace.errors import TraceError
@@ -260,6 +261,33 @@ def _finding(severity: str, code: str, macros: list, params: dict, advice: str =
             "message_zh": render(f"decode.{code}", params, "zh"), "advice": advice}
 
 
+def _roundtrip(vendor: str, design: dict, macros: dict) -> dict | None:
+    """pu-lab's header for ``design.input`` and every macro both headers define: file vs
+    pu-lab (``delta_lsb`` for two integers, else ``delta_rel``); None when the files do not fix
+    a whole report input (``design.missing``)."""
+    if design["missing"]:
+        return None
+    from .. import profiles
+    from ..report import report
+    inp = copy.deepcopy(design["input"])
+    inp.setdefault("profiles", {}).setdefault(vendor, {})
+    try:
+        text = profiles.header(report(inp), vendor)
+        mine = _decode([(f"pulab_{vendor}.h", text)], vendor, None)["macros"]
+    except InputError as e:
+        return {"header": None, "error": e.message, "error_zh": e.message_zh, "macros": {}}
+    out = {}
+    for n, m in macros.items():
+        a, b = m["value"], mine.get(n, {}).get("value")
+        if not isinstance(a, (int, float)) or not isinstance(b, (int, float)):
+            continue
+        if isinstance(a, int) and isinstance(b, int):
+            out[n] = {"file": a, "pulab": b, "delta_lsb": a - b}
+        else:
+            out[n] = {"file": a, "pulab": b, "delta_rel": (a - b) / b if b else None}
+    return {"header": text, "macros": out}
+
+
 def decode(files, vendor: str | None = None, defines=None) -> dict:
     """The design a set of generated headers encodes, and what is wrong with it.
 
@@ -280,7 +308,9 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
         the vendor's decoder knows: ``value`` as the compiler computes it, ``type``, ``si``,
         ``unit``, ``meaning``, ``formula``, ``source`` (file:line), ``expansion``),
         ``other`` (every other object-like macro: ``value``, ``source``), ``unknown`` (macro
-        → the names it needs that no file defines), ``design`` and ``findings``.
+        → the names it needs that no file defines), ``design``, ``findings`` and ``roundtrip``
+        (pu-lab's header for ``design.input``, and per macro both define: ``file``, ``pulab``,
+        ``delta_lsb`` or ``delta_rel``; null when ``design.missing`` is not empty).
 
     Raises
     ------
@@ -289,6 +319,12 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
         ``#if``) or a known macro that is no constant expression (each naming file:line),
         no macro of a known vendor, an unknown ``vendor``.
     """
+    out = _decode(files, vendor, defines)
+    out["roundtrip"] = _roundtrip(out["vendor"], out["design"], out["macros"])
+    return out
+
+
+def _decode(files, vendor: str | None, defines) -> dict:
     files = _check_files(files)
     defs = _defines(defines)
     decoders = _decoders()

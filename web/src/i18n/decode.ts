@@ -36,6 +36,9 @@ export default dict(
     dc_no: 'no',
     dc_unknown: 'Names no given file defines',
     dc_unresolved: 'Included files not given',
+    dc_roundtrip: 'Round trip: the header pu-lab writes for this design, macro by macro',
+    dc_file: 'File',
+    dc_delta: 'File − pu-lab',
   },
   {
     p_decode: '解读厂商头文件：每个 #define 的含义、设计及问题',
@@ -71,5 +74,8 @@ export default dict(
     dc_no: '否',
     dc_unknown: '所给文件均未定义的名字',
     dc_unresolved: '未给出的被包含文件',
+    dc_roundtrip: '往返：pu-lab 为此设计生成的头文件，逐宏对照',
+    dc_file: '文件',
+    dc_delta: '文件 − pu-lab',
   },
 );

@@ -93,6 +93,18 @@ function motorTable(d: Decoded): HTMLElement {
   return table([t('dc_input'), t('dc_value')], rows, 'dtable');
 }
 
+function roundtripTable(d: Decoded): HTMLElement | null {
+  const rt = d.roundtrip;
+  if (!rt) return null;
+  if (rt.error) return h('p', { class: 'err' }, getLang() === 'zh' && rt.error_zh ? rt.error_zh : rt.error);
+  const rows = Object.entries(rt.macros).map(([name, m]) => {
+    const k = `decode.roundtrip.macros.${name}`;
+    return [h('code', {}, name), num(`${k}.file`, m.file, { sig: 10 }), num(`${k}.pulab`, m.pulab, { sig: 10 }),
+      m.delta_lsb !== undefined ? num(`${k}.delta_lsb`, m.delta_lsb, { kind: 'int', unit: 'LSB' }) : num(`${k}.delta_rel`, m.delta_rel, { sig: 3 })];
+  });
+  return h('div', { class: 'scroll' }, table([t('dc_macro'), t('dc_file'), 'pu-lab', t('dc_delta')], rows, 'dtable'));
+}
+
 /** What the panel was last drawn with. */
 let drawn: unknown[] = [];
 
@@ -138,6 +150,7 @@ export const decodePanel: Panel = {
           h('h3', {}, t('dc_loop')), loopTable(ok) ?? h('p', {}, t('dc_noloop')),
           h('h3', {}, t('dc_design')), motorTable(ok),
           ok.design.missing.length ? h('p', { class: 'hint' }, `${t('dc_missing')}: ${ok.design.missing.join(', ')}`) : null,
+          ok.roundtrip ? h('h3', {}, t('dc_roundtrip')) : null, roundtripTable(ok),
           h('h3', {}, t('dc_macros')), macrosTable(ok),
           Object.keys(ok.unknown).length ? h('p', { class: 'hint' }, `${t('dc_unknown')}: ${[...new Set(Object.values(ok.unknown).flat())].join(', ')}`) : null,
           ok.unresolved.length ? h('p', { class: 'hint' }, `${t('dc_unresolved')}: ${ok.unresolved.join(', ')}`) : null)
