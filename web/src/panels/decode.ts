@@ -21,6 +21,7 @@ export const dstate: DecodeState = { files: [], pasted: '', vendor: '', define: 
 let last: Reply['decode'] | null = null;
 let seq = 0;
 let timer: ReturnType<typeof setTimeout> | undefined;
+let waiting = false;
 
 /** The decode request for the current state, or null when there is nothing to decode. */
 export function decodeRequest(s: DecodeState): DecodeRequest | null {
@@ -43,7 +44,11 @@ function compute(el: HTMLElement, ctx: PanelContext, delay = 250): void {
       decodePanel.render(el, ctx);
       return;
     }
-    if (!ctx.client) return;
+    if (!ctx.client) {
+      waiting = true; // asked before Python is ready: render() asks again once it is
+      return;
+    }
+    waiting = false;
     void ctx.client.call('decode', req, 'decode').then(({ result }) => {
       if (id !== seq) return;
       last = result;
@@ -113,6 +118,7 @@ export const decodePanel: Panel = {
   needsPython: true,
   title: 'p_decode',
   render(el, ctx) {
+    if (waiting && ctx.client) compute(el, ctx, 0);
     const shows = [getLang(), last, dstate.files.length, ctx.client];
     if (el.firstChild && sameItems(shows, drawn)) return;
     drawn = shows;
