@@ -194,6 +194,48 @@ def test_nxp_speed_integral_gain_loses_one_lsb_in_67(nxp):
     assert [x["macros"] for x in f] == [["M1_SPEED_PI_INTEG_GAIN"]]
 
 
+# -- NXP MCAT, floating-point variant (nxp-appcodehub/an-mc-pmsm-mcxe31b : source/…) --------
+
+@pytest.fixture(scope="module")
+def nxp_float():
+    return decode(_files("nxp", ["m1_pmsm_appconfig_float.h"]))
+
+
+def test_nxp_float_variant_is_si(nxp_float):
+    d = nxp_float
+    assert d["vendor"] == "nxp" and d["design"]["variant"] == "float"
+    # JSON: Rs 0.45 Ω, Ld 0.375 mH, Lq 0.429 mH, Ts 62.5 µs; the observer floats carry them
+    mot = d["design"]["input"]["motor"]
+    assert mot["rs_ohm"] == pytest.approx(0.45, rel=1e-4)
+    assert mot["ld_h"] == pytest.approx(0.000375, rel=1e-4)
+    assert mot["lq_h"] == pytest.approx(0.000429, rel=1e-4)
+    # M1_D_KP_GAIN (1.24646F) = 2·1·2π·360·0.000375 − 0.45 V/A
+    kp = 2 * 2 * math.pi * 360 * 0.000375 - 0.45
+    assert d["macros"]["M1_D_KP_GAIN"]["si"] == pytest.approx(kp, rel=1e-5)
+    # M1_N_NOM (837.758F) rad/s = 4000 rpm · 2 pole pairs · 2π/60
+    assert d["macros"]["M1_N_NOM"]["si"] == pytest.approx(4000 * 2 * 2 * math.pi / 60, rel=1e-6)
+    assert d["macros"]["M1_N_NOM"]["unit"] == "rad/s"
+
+
+def test_nxp_float_startup_current_disagrees_with_its_json(nxp_float):
+    # #define M1_OL_START_I (0.6F) while the JSON says sensorlessStartupCurrent 0.35 A: the one
+    # constant of this file that its own inputs do not give
+    f = [(x["code"], x["macros"]) for x in nxp_float["findings"]]
+    assert f == [("json_float", ["M1_OL_START_I"])]
+    assert len(nxp_float["design"]["json_checked"]) >= 20
+
+
+def test_nxp_float_sample_time_without_the_json():
+    (n, t), = _files("nxp", ["m1_pmsm_appconfig_float.h"])
+    start = t.index("/*\n{")
+    d = decode([(n, t[:start] + t[t.index("*/", start) + 2:])])
+    # ACC32(0.0183333) = 600 (600.75 truncated): 600/2^15/(2·146.667 Hz) = 62.42 µs, 0.12 % low
+    assert d["design"]["ts_s"] == pytest.approx(600 / 32768 / (2 * 146.667), rel=1e-6)
+    # TO_THETA_GAIN (0.0000198944F) = T_s/π
+    assert d["design"]["observer"]["ts_from_theta_s"] == pytest.approx(0.0000198944 * math.pi,
+                                                                       rel=1e-6)
+
+
 # -- TI universal lab (anyway-blows/ti-c2000-motor-control-sdk) ------------------------------
 
 def test_ti_selected_motor_and_board(ti):

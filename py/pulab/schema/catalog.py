@@ -749,6 +749,10 @@ MESSAGES = {
                     "comment) give {expected} ({diff} LSB apart)",
                     "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
                     "（相差 {diff} LSB）"),
+    "decode.json_float": ("{macro} = {value}, but the tool's own inputs (the JSON in the header's "
+                          "comment) give {expected} ({diff} % apart)",
+                          "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
+                          "（相差 {diff} %）"),
     "decode.overflow": ("{macro}: the compiler's value {value} is not the {ideal} its formula "
                         "means: it does not fit {ctype}",
                         "{macro}：编译器得到的 {value} 不是公式所指的 {ideal}：超出 {ctype} 范围"),
