@@ -188,6 +188,10 @@ def decode_header(values: dict, notes: dict) -> dict:
                                 a=round(got, 6), a_from="PID_TORQUE_KI/KP·KPDIV/KIDIV",
                                 b=round(want, 6), b_from="RS·T/LS",
                                 diff=round(100.0 * (got / want - 1.0), 2)))
+    if loops:
+        design["assumed"].append("a voltage digit is (U_dc/√3)/32768 (pu-lab's assumption, not "
+                                 "read in a public file): kp, ki and the bandwidth in SI follow "
+                                 "it; Ki/Kp per sample does not")
     design["current_loop"] = loops or None
     for axis, c in loops.items():
         wts = 2.0 * math.pi * c["bandwidth_hz"] * ts
