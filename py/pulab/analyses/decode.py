@@ -93,14 +93,17 @@ def _check_files(files) -> list:
     for k, item in enumerate(files):
         field = f"files[{k}]"
         if not isinstance(item, (list, tuple)) or len(item) != 2:
-            raise InputError(field, code="decode_not_text", name=field, why="not (name, text)")
+            raise InputError(field, code="decode_not_text", name=field,
+                             why={"code": "decode_why_pair", "params": {}})
         name, text = item
         if not isinstance(name, str) or not name.strip():
             name = f"file{k + 1}"
         if not isinstance(text, str):
-            raise InputError(field, code="decode_not_text", name=name, why="not a string")
+            raise InputError(field, code="decode_not_text", name=name,
+                             why={"code": "decode_why_type", "params": {}})
         if "\x00" in text:
-            raise InputError(field, code="decode_not_text", name=name, why="a NUL byte")
+            raise InputError(field, code="decode_not_text", name=name,
+                             why={"code": "decode_why_nul", "params": {}})
         total += len(text)
         if total > MAX_CHARS:
             raise InputError(field, code="json_too_long", limit=MAX_CHARS)

@@ -725,6 +725,9 @@ MESSAGES = {
     # reading a vendor header back (pulab.analyses.decode)
     "decode_empty": ("{name} is empty: paste a generated header", "{name} 为空：请粘贴生成的头文件"),
     "decode_not_text": ("{name} is not C text ({why})", "{name} 不是 C 文本（{why}）"),
+    "decode_why_nul": ("a NUL byte", "含 NUL 字节"),
+    "decode_why_type": ("not a string", "不是字符串"),
+    "decode_why_pair": ("not a (name, text) pair", "不是（名称，文本）对"),
     "decode_no_files": ("give at least one header file", "至少给出一个头文件"),
     "decode_no_vendor": ("no #define of a known vendor header (ST, TI, NXP, Microchip, "
                          "Inovance) in {names}", "{names} 中没有已知厂商头文件的 #define（ST、TI、NXP、"
