@@ -5,7 +5,7 @@ import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
-export default async function decode({ check, assert, newPage, subSrv, ready, compareShown, ROOT, SHOTS }) {
+export default async function decode({ check, assert, newPage, subSrv, ready, compareShown, waitValue, ROOT, SHOTS, cpython: report }) {
   const dir = join(ROOT, 'tests/data/headers');
   const nxp = readFileSync(join(dir, 'nxp/m1_pmsm_appconfig.h'), 'utf8');
   const st = ['pmsm_motor_parameters.h', 'drive_parameters.h', 'power_stage_parameters.h', 'parameters_conversion.h',
@@ -34,7 +34,7 @@ export default async function decode({ check, assert, newPage, subSrv, ready, co
   });
 
   await check('decode: the ST file set chosen as files equals CPython pulab', async () => {
-    await page.click('#panel-decode button:has-text("Clear")');
+    await page.click('#panel-decode button[data-decode-clear]');
     await page.setInputFiles('#panel-decode input[name="decode.files"]', st);
     await page.waitForSelector('#panel-decode [data-decode-vendor="st"]', { timeout: 60_000 });
     const want = cpython(st.map((p) => ({ name: p.split('/').pop(), text: readFileSync(p, 'utf8') })));
@@ -45,7 +45,7 @@ export default async function decode({ check, assert, newPage, subSrv, ready, co
   });
 
   await check('decode: a header of no known vendor is named at the text box', async () => {
-    await page.click('#panel-decode button:has-text("Clear")');
+    await page.click('#panel-decode button[data-decode-clear]');
     await page.fill('#panel-decode textarea[name="decode.text"]', '#define FOO 1\n');
     await page.waitForFunction(() => (document.querySelector('[data-err-for="decode.text"]')?.textContent ?? '').includes('no #define'), null, { timeout: 30_000 });
     await page.fill('#panel-decode textarea[name="decode.text"]', nxp);
@@ -65,5 +65,17 @@ export default async function decode({ check, assert, newPage, subSrv, ready, co
       }
     }
   });
+  await check('decode: the decoded ST design opens as the page\'s motor (its integers equal CPython pulab\'s report)', async () => {
+    await page.click('#panel-decode button[data-decode-clear]');
+    await page.setInputFiles('#panel-decode input[name="decode.files"]', st);
+    await page.waitForSelector('#panel-decode [data-decode-vendor="st"]', { timeout: 60_000 });
+    const href = await page.$eval('#panel-decode a[data-open-decoded]', (e) => e.getAttribute('href'));
+    const inp = JSON.parse(decodeURIComponent(href.slice(href.indexOf('#in=') + 4)));
+    const want = report(inp);
+    assert(inp.motor.rs_ohm === 0.35, `link input ${JSON.stringify(inp.motor)}`);
+    await page.click('#panel-decode a[data-open-decoded]');
+    await waitValue(page, 'vendor.Rpm.value', want.vendor.Rpm.value, 0, 60_000);
+  });
+
   await page.close();
 }

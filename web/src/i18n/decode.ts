@@ -39,6 +39,7 @@ export default dict(
     dc_roundtrip: 'Round trip: the header pu-lab writes for this design, macro by macro',
     dc_file: 'File',
     dc_delta: 'File − pu-lab',
+    dc_open: 'Open this design as the page\'s motor',
   },
   {
     p_decode: '解读厂商头文件：每个 #define 的含义、设计及问题',
@@ -77,5 +78,6 @@ export default dict(
     dc_roundtrip: '往返：pu-lab 为此设计生成的头文件，逐宏对照',
     dc_file: '文件',
     dc_delta: '文件 − pu-lab',
+    dc_open: '将此设计作为页面的电机打开',
   },
 );

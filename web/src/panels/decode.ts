@@ -5,6 +5,7 @@ import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
 import type { Decoded, DecodeRequest } from '../api-types';
 import type { Reply } from '../protocol';
+import { encodeHash } from '../state';
 
 const VENDORS = ['', 'st', 'ti', 'nxp', 'microchip', 'inovance'];
 
@@ -34,9 +35,13 @@ export function decodeRequest(s: DecodeState): DecodeRequest | null {
   return req;
 }
 
-function compute(el: HTMLElement, ctx: PanelContext, delay = 250): void {
+/** The context of the last render: a debounced request reads the client at the time it fires. */
+let current: PanelContext | null = null;
+
+function compute(el: HTMLElement, _ctx: PanelContext, delay = 250): void {
   clearTimeout(timer);
   timer = setTimeout(() => {
+    const ctx = current ?? _ctx;
     const req = decodeRequest(dstate);
     const id = ++seq;
     if (!req) {
@@ -118,6 +123,7 @@ export const decodePanel: Panel = {
   needsPython: true,
   title: 'p_decode',
   render(el, ctx) {
+    current = ctx;
     if (waiting && ctx.client) compute(el, ctx, 0);
     const shows = [getLang(), last, dstate.files.length, ctx.client];
     if (el.firstChild && sameItems(shows, drawn)) return;
@@ -144,7 +150,7 @@ export const decodePanel: Panel = {
           h('label', { class: 'field' }, h('span', { class: 'lbl' }, t('dc_define')),
             h('input', { name: 'decode.define', value: dstate.define, placeholder: 'BSXL8323RS_REVA', spellcheck: 'false',
               oninput: (ev: Event) => { dstate.define = (ev.target as HTMLInputElement).value; compute(el, ctx); } })),
-          h('button', { type: 'button', onclick: () => { dstate.files = []; dstate.pasted = ''; compute(el, ctx, 0); } }, t('dc_clear'))),
+          h('button', { type: 'button', 'data-decode-clear': '', onclick: () => { dstate.files = []; dstate.pasted = ''; compute(el, ctx, 0); } }, t('dc_clear'))),
         dstate.files.length ? h('p', { class: 'hint', 'data-decode-files': '' }, `${t('dc_files')}: ${dstate.files.map((f) => f.name).join(', ')}`) : null,
         ok ? h('div', { class: 'qout', 'data-decode-vendor': ok.vendor },
           h('p', {}, t('dc_found', { vendor: ok.vendor, target: ok.target, n: Object.keys(ok.macros).length })),
@@ -155,7 +161,9 @@ export const decodePanel: Panel = {
             : h('p', {}, t('dc_none')),
           h('h3', {}, t('dc_loop')), loopTable(ok) ?? h('p', {}, t('dc_noloop')),
           h('h3', {}, t('dc_design')), motorTable(ok),
-          ok.design.missing.length ? h('p', { class: 'hint' }, `${t('dc_missing')}: ${ok.design.missing.join(', ')}`) : null,
+          ok.design.missing.length
+            ? h('p', { class: 'hint' }, `${t('dc_missing')}: ${ok.design.missing.join(', ')}`)
+            : h('p', {}, h('a', { href: encodeHash(ok.design.input), class: 'open-motor', 'data-open-decoded': '' }, t('dc_open'))),
           ok.roundtrip ? h('h3', {}, t('dc_roundtrip')) : null, roundtripTable(ok),
           h('h3', {}, t('dc_macros')), macrosTable(ok),
           Object.keys(ok.unknown).length ? h('p', { class: 'hint' }, `${t('dc_unknown')}: ${[...new Set(Object.values(ok.unknown).flat())].join(', ')}`) : null,
