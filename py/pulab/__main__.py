@@ -3,8 +3,9 @@
 ``python -m pulab prove INPUT.json --range PATH=LO:HI …`` (a family proof),
 ``python -m pulab header --profile NAME INPUT.json`` (one vendor's C header) and
 ``python -m pulab translate --from NAME [--axis d|q] --kp INT --ki INT INPUT.json``
-(docs/contract.md, "Vendor profiles") and ``python -m pulab oembed SITE_URL DIST`` (the panels'
-oEmbed descriptions, :mod:`pulab.cli.oembed`).
+(docs/contract.md, "Vendor profiles"), ``python -m pulab oembed SITE_URL DIST`` (the panels'
+oEmbed descriptions, :mod:`pulab.cli.oembed`) and ``python -m pulab decode FILE…`` (a vendor's
+generated headers read back, :mod:`pulab.cli.decode`).
 
 Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
 (for code, ``error: code: LINE:COLUMN: MESSAGE``).

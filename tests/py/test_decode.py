@@ -108,6 +108,21 @@ def test_st_design_input_is_a_report_input(st):
     assert r["input"]["motor"]["rs_ohm"] == 0.35
 
 
+def test_st_round_trip_regenerates_the_workbench_integers(st):
+    # pu-lab's ST header for the decoded design: every integer the Workbench wrote comes back
+    rt = st["roundtrip"]["macros"]
+    ints = {n: m for n, m in rt.items() if "delta_lsb" in m}
+    assert {"PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "NOMINAL_CURRENT", "TF_KPDIV",
+            "POLE_PAIR_NUM", "PWM_FREQUENCY"} <= set(ints)
+    assert all(m["delta_lsb"] == 0 for m in ints.values()), ints
+    assert rt["PID_TORQUE_KP_DEFAULT"]["file"] == 2312
+    assert "#define PID_TORQUE_KP_DEFAULT" in st["roundtrip"]["header"]
+
+
+def test_nxp_round_trip_needs_the_back_emf(nxp):
+    assert nxp["design"]["missing"] == ["motor.bemf_v"] and nxp["roundtrip"] is None
+
+
 def test_st_edited_resistance_breaks_the_cancellation():
     files = [(n, t.replace("#define RS                     0.35", "#define RS 0.5"))
              for n, t in _files("st", ST_SET)]
@@ -177,6 +192,48 @@ def test_nxp_speed_integral_gain_loses_one_lsb_in_67(nxp):
     # ACC32(0.00207345) = 67.94 → 67: 1/67 = 1.49 %
     f = [f for f in nxp["findings"] if f["code"] == "rounding"]
     assert [x["macros"] for x in f] == [["M1_SPEED_PI_INTEG_GAIN"]]
+
+
+# -- NXP MCAT, floating-point variant (nxp-appcodehub/an-mc-pmsm-mcxe31b : source/…) --------
+
+@pytest.fixture(scope="module")
+def nxp_float():
+    return decode(_files("nxp", ["m1_pmsm_appconfig_float.h"]))
+
+
+def test_nxp_float_variant_is_si(nxp_float):
+    d = nxp_float
+    assert d["vendor"] == "nxp" and d["design"]["variant"] == "float"
+    # JSON: Rs 0.45 Ω, Ld 0.375 mH, Lq 0.429 mH, Ts 62.5 µs; the observer floats carry them
+    mot = d["design"]["input"]["motor"]
+    assert mot["rs_ohm"] == pytest.approx(0.45, rel=1e-4)
+    assert mot["ld_h"] == pytest.approx(0.000375, rel=1e-4)
+    assert mot["lq_h"] == pytest.approx(0.000429, rel=1e-4)
+    # M1_D_KP_GAIN (1.24646F) = 2·1·2π·360·0.000375 − 0.45 V/A
+    kp = 2 * 2 * math.pi * 360 * 0.000375 - 0.45
+    assert d["macros"]["M1_D_KP_GAIN"]["si"] == pytest.approx(kp, rel=1e-5)
+    # M1_N_NOM (837.758F) rad/s = 4000 rpm · 2 pole pairs · 2π/60
+    assert d["macros"]["M1_N_NOM"]["si"] == pytest.approx(4000 * 2 * 2 * math.pi / 60, rel=1e-6)
+    assert d["macros"]["M1_N_NOM"]["unit"] == "rad/s"
+
+
+def test_nxp_float_startup_current_disagrees_with_its_json(nxp_float):
+    # #define M1_OL_START_I (0.6F) while the JSON says sensorlessStartupCurrent 0.35 A: the one
+    # constant of this file that its own inputs do not give
+    f = [(x["code"], x["macros"]) for x in nxp_float["findings"]]
+    assert f == [("json_float", ["M1_OL_START_I"])]
+    assert len(nxp_float["design"]["json_checked"]) >= 20
+
+
+def test_nxp_float_sample_time_without_the_json():
+    (n, t), = _files("nxp", ["m1_pmsm_appconfig_float.h"])
+    start = t.index("/*\n{")
+    d = decode([(n, t[:start] + t[t.index("*/", start) + 2:])])
+    # ACC32(0.0183333) = 600 (600.75 truncated): 600/2^15/(2·146.667 Hz) = 62.42 µs, 0.12 % low
+    assert d["design"]["ts_s"] == pytest.approx(600 / 32768 / (2 * 146.667), rel=1e-6)
+    # TO_THETA_GAIN (0.0000198944F) = T_s/π
+    assert d["design"]["observer"]["ts_from_theta_s"] == pytest.approx(0.0000198944 * math.pi,
+                                                                       rel=1e-6)
 
 
 # -- TI universal lab (anyway-blows/ti-c2000-motor-control-sdk) ------------------------------
@@ -345,3 +402,31 @@ def test_cli_exit_codes(tmp_path):
                          capture_output=True, text=True, cwd=ROOT, env={"PYTHONPATH": "py"})
     assert bad.returncode == 2 and bad.stdout == ""
     assert bad.stderr.count("\n") == 1 and bad.stderr.startswith("error: files[0]: ")
+
+
+def test_mutated_headers_end_in_a_result_or_one_input_error():
+    """500 seeded mutations of the real headers (characters deleted, doubled, swapped for C
+    punctuation): each decodes or raises InputError, nothing else."""
+    import random
+    rng = random.Random(32)
+    texts = [t for v, names in (("st", ST_SET[:2]), ("nxp", ["m1_pmsm_appconfig.h"]),
+                                ("microchip", ["foc_params.h"]))
+             for _, t in _files(v, names)]
+    seen = {"ok": 0, "error": 0}
+    for _ in range(500):
+        t = list(rng.choice(texts))
+        for _ in range(rng.randint(1, 8)):
+            k = rng.randrange(len(t))
+            op = rng.random()
+            if op < 0.4:
+                del t[k]
+            elif op < 0.7:
+                t[k] = rng.choice("()#/*\\\n\"'?:-+~!0123456789.efUL,")
+            else:
+                t.insert(k, t[k] * rng.randint(1, 50))
+        try:
+            decode([("m.h", "".join(t))])
+            seen["ok"] += 1
+        except InputError:
+            seen["error"] += 1
+    assert seen["ok"] > 100 and seen["error"] > 10, seen

@@ -29,7 +29,8 @@ LAYERS = (
     ("report",),
     # families: each calls report() for every motor, point or box
     ("analyses.integers", "analyses.sweep", "analyses.exercises", "analyses.batch",
-     "analyses.prove", "analyses.propose", "analyses.sim.bench", "profiles.translate"),
+     "analyses.prove", "analyses.propose", "analyses.sim.bench", "profiles.translate",
+     "analyses.decode"),
     # the C family proof runs the box search of analyses.prove
     ("ctrace.prove",),
     ("export", "html", "qcalc", "benchmark"),

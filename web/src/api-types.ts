@@ -159,4 +159,6 @@ export interface Decoded {
     [key: string]: unknown;
   };
   findings: DecodeFinding[];
+  roundtrip: { header: string | null; error?: string; error_zh?: string;
+    macros: Record<string, { file: number; pulab: number; delta_lsb?: number; delta_rel?: number | null }> } | null;
 }

@@ -44,7 +44,10 @@ import struct
 from ..ctrace.types import TARGETS, common_type, promote
 from ..fixedpoint.cint import CType, convert, trunc_div
 
-__all__ = ["Value", "evaluate", "NotConstant", "FLOAT_TYPES"]
+__all__ = ["Value", "evaluate", "NotConstant", "FLOAT_TYPES", "MAX_NESTING"]
+
+#: Parentheses nested deeper are refused (bounds the recursion of any paste).
+MAX_NESTING = 48
 
 #: Floating type names and their width in bits (``double`` and ``long double`` follow the
 #: target's ``double_bits``; TI's and NXP's typedefs are singles).
@@ -96,6 +99,7 @@ class _Fold:
         self.dbl = target.double_bits
         self.unknown: list = []
         self.flags: list = []
+        self.depth = 0
 
     # -- helpers -----------------------------------------------------------------------
     def peek(self, k: int = 0) -> str:
@@ -213,7 +217,7 @@ class _Fold:
         if op in ("/", "%") and vb == 0:
             raise NotConstant("division by zero")
         if isinstance(t, int):
-            r = {"+": va + vb, "-": va - vb, "*": va * vb, "/": va / vb}[op] if op != "/" \
+            r = va + vb if op == "+" else va - vb if op == "-" else va * vb if op == "*" \
                 else va / vb
             return self.result(r, t)
         r = {"+": lambda: va + vb, "-": lambda: va - vb, "*": lambda: va * vb,
@@ -272,35 +276,47 @@ class _Fold:
             x = convert(x, t)
             return self.result(-x if text == "-" else (~x if text == "~" else x), t)
         if text == "(":
-            ct = self.cast_type()
-            if ct is not None:
-                v = self.unary()
-                if v is None:
-                    return None
-                if isinstance(ct, int):
-                    return self.to_float(v[0], v[1], ct), ct
-                return self.to_int(v[0], v[1], ct), ct
-            self.i += 1
-            v = self.comma()
-            self.take(")")
-            return v
+            self.depth += 1
+            if self.depth > MAX_NESTING:
+                raise NotConstant(f"nested deeper than {MAX_NESTING} parentheses")
+            try:
+                return self.paren()
+            finally:
+                self.depth -= 1
         self.i += 1
         if tok.kind == "number":
             return self.number(text)
         if tok.kind == "name":
-            if text == "sizeof":
-                raise NotConstant("sizeof is not folded")
-            if text not in self.unknown:
-                self.unknown.append(text)
-            if self.peek() == "(":  # an unknown function-like macro: skip its arguments
-                depth = 0
-                while self.i < len(self.toks):
-                    depth += {"(": 1, ")": -1}.get(self.peek(), 0)
-                    self.i += 1
-                    if depth == 0:
-                        break
-            return None
+            return self.name(text)
         raise NotConstant(f"{text!r} in a constant expression")
+
+    def paren(self):
+        ct = self.cast_type()
+        if ct is not None:
+            v = self.unary()
+            if v is None:
+                return None
+            if isinstance(ct, int):
+                return self.to_float(v[0], v[1], ct), ct
+            return self.to_int(v[0], v[1], ct), ct
+        self.i += 1
+        v = self.comma()
+        self.take(")")
+        return v
+
+    def name(self, text: str):
+        if text == "sizeof":
+            raise NotConstant("sizeof is not folded")
+        if text not in self.unknown:
+            self.unknown.append(text)
+        if self.peek() == "(":  # an unknown function-like macro: skip its arguments
+            depth = 0
+            while self.i < len(self.toks):
+                depth += {"(": 1, ")": -1}.get(self.peek(), 0)
+                self.i += 1
+                if depth == 0:
+                    break
+        return None
 
     def number(self, text: str):
         m = _INT.match(text)
@@ -308,7 +324,10 @@ class _Fold:
             digits, suffix = m[1], m[2].lower()
             base = 16 if digits[:2].lower() == "0x" else 2 if digits[:2].lower() == "0b" else \
                 8 if len(digits) > 1 and digits[0] == "0" else 10
-            n = int(digits[2:] if base in (16, 2) else digits, base)
+            body = digits[2:] if base in (16, 2) else digits
+            if base == 8 and set(body) & set("89"):
+                raise NotConstant(f"{text} is not an octal number")
+            n = int(body, base)
             unsigned = "u" in suffix
             longs = suffix.count("l")
             ladder = ["int", "long", "long long"][min(longs, 2):]
@@ -335,7 +354,10 @@ def evaluate(tokens: list, target: str = "arm") -> Value:
         The tokens are no constant expression (syntax, division by zero, ``sizeof``).
     """
     f = _Fold(tokens, TARGETS[target])
-    v = f.run()
+    try:
+        v = f.run()
+    except RecursionError:  # a long chain of unary operators or ?: (parentheses are counted)
+        raise NotConstant("nested too deep") from None
     if v is None:
         return Value(None, None, f.unknown, f.flags)
     x, t = v

@@ -31,6 +31,7 @@ Examples
 
 from __future__ import annotations
 
+import copy
 import re
 
 from ..ctrace.errors import TraceError
@@ -92,14 +93,17 @@ def _check_files(files) -> list:
     for k, item in enumerate(files):
         field = f"files[{k}]"
         if not isinstance(item, (list, tuple)) or len(item) != 2:
-            raise InputError(field, code="decode_not_text", name=field, why="not (name, text)")
+            raise InputError(field, code="decode_not_text", name=field,
+                             why={"code": "decode_why_pair", "params": {}})
         name, text = item
         if not isinstance(name, str) or not name.strip():
             name = f"file{k + 1}"
         if not isinstance(text, str):
-            raise InputError(field, code="decode_not_text", name=name, why="not a string")
+            raise InputError(field, code="decode_not_text", name=name,
+                             why={"code": "decode_why_type", "params": {}})
         if "\x00" in text:
-            raise InputError(field, code="decode_not_text", name=name, why="a NUL byte")
+            raise InputError(field, code="decode_not_text", name=name,
+                             why={"code": "decode_why_nul", "params": {}})
         total += len(text)
         if total > MAX_CHARS:
             raise InputError(field, code="json_too_long", limit=MAX_CHARS)
@@ -260,6 +264,33 @@ def _finding(severity: str, code: str, macros: list, params: dict, advice: str =
             "message_zh": render(f"decode.{code}", params, "zh"), "advice": advice}
 
 
+def _roundtrip(vendor: str, design: dict, macros: dict) -> dict | None:
+    """pu-lab's header for ``design.input`` and every macro both headers define: file vs
+    pu-lab (``delta_lsb`` for two integers, else ``delta_rel``); None when the files do not fix
+    a whole report input (``design.missing``)."""
+    if design["missing"]:
+        return None
+    from .. import profiles
+    from ..report import report
+    inp = copy.deepcopy(design["input"])
+    inp.setdefault("profiles", {}).setdefault(vendor, {})
+    try:
+        text = profiles.header(report(inp), vendor)
+        mine = _decode([(f"pulab_{vendor}.h", text)], vendor, None)["macros"]
+    except InputError as e:
+        return {"header": None, "error": e.message, "error_zh": e.message_zh, "macros": {}}
+    out = {}
+    for n, m in macros.items():
+        a, b = m["value"], mine.get(n, {}).get("value")
+        if not isinstance(a, (int, float)) or not isinstance(b, (int, float)):
+            continue
+        if isinstance(a, int) and isinstance(b, int):
+            out[n] = {"file": a, "pulab": b, "delta_lsb": a - b}
+        else:
+            out[n] = {"file": a, "pulab": b, "delta_rel": (a - b) / b if b else None}
+    return {"header": text, "macros": out}
+
+
 def decode(files, vendor: str | None = None, defines=None) -> dict:
     """The design a set of generated headers encodes, and what is wrong with it.
 
@@ -280,7 +311,9 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
         the vendor's decoder knows: ``value`` as the compiler computes it, ``type``, ``si``,
         ``unit``, ``meaning``, ``formula``, ``source`` (file:line), ``expansion``),
         ``other`` (every other object-like macro: ``value``, ``source``), ``unknown`` (macro
-        → the names it needs that no file defines), ``design`` and ``findings``.
+        → the names it needs that no file defines), ``design``, ``findings`` and ``roundtrip``
+        (pu-lab's header for ``design.input``, and per macro both define: ``file``, ``pulab``,
+        ``delta_lsb`` or ``delta_rel``; null when ``design.missing`` is not empty).
 
     Raises
     ------
@@ -289,6 +322,12 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
         ``#if``) or a known macro that is no constant expression (each naming file:line),
         no macro of a known vendor, an unknown ``vendor``.
     """
+    out = _decode(files, vendor, defines)
+    out["roundtrip"] = _roundtrip(out["vendor"], out["design"], out["macros"])
+    return out
+
+
+def _decode(files, vendor: str | None, defines) -> dict:
     files = _check_files(files)
     defs = _defines(defines)
     decoders = _decoders()
@@ -330,7 +369,13 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
             raise InputError("files", code="decode_define", file=file, line=line, name=n,
                              why=f["error"])
     values = {n: f["value"] for n, f in folded.items() if f["value"] is not None}
-    result = dec(values, comments)
+    try:
+        result = dec(values, comments)
+    except (ArithmeticError, ValueError) as e:
+        # a decoder's formula on numbers that make no motor (a zero scale, a negative root):
+        # the header is at fault, and the reply says so rather than a number
+        raise InputError("files", code="decode_values", vendor={"vendor": vendor},
+                         why=type(e).__name__) from None
     macros = {}
     for n, d in result["macros"].items():
         f = folded[n]

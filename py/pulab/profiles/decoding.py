@@ -33,12 +33,15 @@ def result(reads, target: str, macros: dict, design: dict, checks: list) -> dict
             "checks": checks}
 
 
-def current_loop(kp: float, ki: float, r: float, l: float) -> dict:
+def current_loop(kp: float, ki: float, r: float, l: float) -> dict | None:
     """The current loop of a parallel PI ``kp + ki/s`` [V/A, V/(A·s)] on the plant ``1/(Ls+R)``.
 
     ``zero_rad_s`` = ki/kp; ``cancels_plant`` when it is R/L within 1 %; ``bandwidth_hz`` the
     crossover of the continuous open loop, |kp + ki/(jω)| = |jωL + R|, i.e. the positive root
-    x = ω² of L²x² + (R² − kp²)x − ki² = 0 (kp/L when the zero cancels the plant pole)."""
+    x = ω² of L²x² + (R² − kp²)x − ki² = 0 (kp/L when the zero cancels the plant pole).
+    None when L ≤ 0 or R < 0 (a header whose numbers make no motor)."""
+    if not (l > 0 and r >= 0 and math.isfinite(kp) and math.isfinite(ki)):
+        return None  # no plant to speak of: the header's numbers make no motor
     zero = ki / kp if kp else None
     pole = r / l
     b = r * r - kp * kp

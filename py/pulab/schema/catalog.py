@@ -817,12 +817,18 @@ MESSAGES = {
     # reading a vendor header back (pulab.analyses.decode)
     "decode_empty": ("{name} is empty: paste a generated header", "{name} 为空：请粘贴生成的头文件"),
     "decode_not_text": ("{name} is not C text ({why})", "{name} 不是 C 文本（{why}）"),
+    "decode_why_nul": ("a NUL byte", "含 NUL 字节"),
+    "decode_why_type": ("not a string", "不是字符串"),
+    "decode_why_pair": ("not a (name, text) pair", "不是（名称，文本）对"),
     "decode_no_files": ("give at least one header file", "至少给出一个头文件"),
     "decode_no_vendor": ("no #define of a known vendor header (ST, TI, NXP, Microchip, "
                          "Inovance) in {names}", "{names} 中没有已知厂商头文件的 #define（ST、TI、NXP、"
                          "Microchip、汇川）"),
     "decode_define": ("{file}:{line}: #define {name} does not evaluate: {why}",
                       "{file}:{line}：#define {name} 无法求值：{why}"),
+    "decode_values": ("the {vendor} header's numbers make no design ({why} in its formulas): "
+                      "a scale or a divisor is zero or negative",
+                      "{vendor} 头文件的数值构不成设计（其公式中出现 {why}）：某个比例或除数为零或负"),
     "decode_preprocess": ("{file}:{line}: {why}", "{file}:{line}：预处理：{why}"),
     "decode.comment_value": ("{macro} = {value} but its comment says {comment}: no reading of "
                              "it ({readings}) gives that; nearest {nearest}",
@@ -838,6 +844,10 @@ MESSAGES = {
                     "comment) give {expected} ({diff} LSB apart)",
                     "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
                     "（相差 {diff} LSB）"),
+    "decode.json_float": ("{macro} = {value}, but the tool's own inputs (the JSON in the header's "
+                          "comment) give {expected} ({diff} % apart)",
+                          "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
+                          "（相差 {diff} %）"),
     "decode.overflow": ("{macro}: the compiler's value {value} is not the {ideal} its formula "
                         "means: it does not fit {ctype}",
                         "{macro}：编译器得到的 {value} 不是公式所指的 {ideal}：超出 {ctype} 范围"),

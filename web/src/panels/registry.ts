@@ -20,6 +20,7 @@ import { vendorsPanel } from './vendors';
 import { boardPanel } from './board';
 import { fwPanel } from './fw';
 import { observerPanel } from './observer';
+import { decodePanel } from './decode';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -42,6 +43,7 @@ export const PANELS: Panel[] = [
   boardPanel,
   fwPanel,
   observerPanel,
+  decodePanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);

@@ -33,8 +33,9 @@ from ..decoding import check, current_loop, macro, result
 
 __all__ = ["decode_header"]
 
-_COMMENT = re.compile(r"Q(\d+)\(\s*([-+]?[\d.]+)\)\s*=\s*([-+]?[\d.]+)\s*(\S+)\s*=\s*([-+]?[\d.]+)"
-                      r"\s*(\S+)\s*([-+])\s*([\d.]+)%")
+_NUM = r"[-+]?\d+(?:\.\d+)?"
+_COMMENT = re.compile(rf"Q(\d\d?)\(\s*({_NUM})\)\s*=\s*({_NUM})\s*(\S+)\s*=\s*({_NUM})\s*(\S+)\s*"
+                      rf"([-+])\s*(\d+(?:\.\d+)?)%")
 _PREFIX = {"m": 1e-3, "u": 1e-6, "µ": 1e-6, "n": 1e-9, "k": 1e3, "M": 1e6}
 #: name → (SI unit, meaning) of the constants this decoder reads.
 _KNOWN = {
@@ -81,7 +82,7 @@ def decode_header(values: dict, notes: dict) -> dict:
             continue
         c = _COMMENT.search(notes.get(n, ""))
         q = v.get(f"{n}_Q", int(c[1]) if c else None)
-        if q is None:
+        if not isinstance(q, int) or not 0 <= q <= 62:
             continue
         norm = v[n] / 2.0 ** q
         scale, source = v.get(f"{n}_SCALE"), f"{n}_SCALE"
@@ -117,15 +118,17 @@ def decode_header(values: dict, notes: dict) -> dict:
     psi = next((g[n] for n in ("MCAF_MOTOR_PSI_BASE_OMEGA_E", "MCAF_MOTOR_PSI_BASE_DT",
                                "MCAF_MOTOR_KE", "MOTOR_PARAM_KE") if n in g), None)
     design["psi_wb"] = psi
-    ts = scales["KIP"] / scales["KII"] if "KIP" in scales and "KII" in scales else None
+    ts = scales["KIP"] / scales["KII"] if scales.get("KIP") and scales.get("KII") else None
     design["ts_s"] = ts
     drive = {"ts_s": ts} if ts else {}
     design["input"] = {"motor": motor, "drive": drive}
     loops = {}
     if "KIP" in g and "KII" in g and "rs_ohm" in motor:
         for axis, key in (("d", "ld_h"), ("q", "lq_h")):
-            if key in motor:
-                loops[axis] = current_loop(g["KIP"], g["KII"], motor["rs_ohm"], motor[key])
+            c = current_loop(g["KIP"], g["KII"], motor["rs_ohm"], motor[key]) \
+                if key in motor else None
+            if c is not None:
+                loops[axis] = c
         design["input"]["current_loop"] = {"method": "manual", "kp": g["KIP"], "ki": g["KII"]}
     design["current_loop"] = loops or None
     design["speed_loop"] = {"kp_a_per_rad_s": g.get("KWP"), "ki_a_per_rad": g.get("KWI")} \

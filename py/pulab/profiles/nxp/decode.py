@@ -97,8 +97,10 @@ def _frac32(x: float) -> int:
     return int(max(-1.0, min(x, (_Q31 - 1) / _Q31)) * _Q31)
 
 
-def _expected(j: dict, k: float) -> dict:
-    """Each constant the MCAT inputs determine: name → (integer, scale in LSB per unit)."""
+def _expected(j: dict, k: float, flt: bool) -> dict:
+    """Each constant the MCAT inputs determine: name → (ideal value, the macro that stores it
+    (None: a float the header prints), LSB per unit); ``flt``: the floating-point variant,
+    whose constants are SI (speeds in electrical rad/s)."""
     p, c = j["parameters"], j.get("currentLoop", {})
     sl, sn = j.get("speedLoop", {}), j.get("sensorless", {})
     out: dict = {}
@@ -126,25 +128,36 @@ def _expected(j: dict, k: float) -> dict:
            ("M1_SPEED_LOOP_HIGH_LIMIT", sl.get("speedLoopUpperLimit"), i_max),
            ("M1_SPEED_LOOP_LOW_LIMIT", sl.get("speedLoopLowerLimit"), i_max),
            ("M1_CLOOP_LIMIT", c.get("currentLoopOutputLimit"), 100.0)]
+    speeds = {"M1_N_NOM", "M1_N_OVERSPEED", "M1_N_MIN", "M1_MERG_SPEED_TRH"}
     for name, x, scale in f16:
-        if isinstance(x, (int, float)) and isinstance(scale, (int, float)) and scale:
+        if not isinstance(x, (int, float)) or not isinstance(scale, (int, float)) or not scale:
+            continue
+        if not flt:
             out[name] = (x / scale, _frac16, _Q15)
+        elif name in speeds:
+            out[name] = (x * pp * 2.0 * math.pi / 60.0, None, 1.0)
+        else:
+            out[name] = (x / 100.0 / SQRT3 if name == "M1_CLOOP_LIMIT" else x, None, 1.0)
     f0, ksi = c.get("currentLoopF0"), c.get("currentLoopKsi")
     if isinstance(f0, (int, float)) and isinstance(ksi, (int, float)):
         w0 = 2.0 * math.pi * f0
+        g = 1.0 if flt else i_max / u_max
         for axis, l in (("D", ld), ("Q", lq)):
-            out[f"M1_{axis}_KP_GAIN"] = ((2.0 * ksi * w0 * l - rs) * i_max / u_max, _acc32, _Q15)
-            out[f"M1_{axis}_KI_GAIN"] = (w0 * w0 * l * ts / k * i_max / u_max, _acc32, _Q15)
+            out[f"M1_{axis}_KP_GAIN"] = ((2.0 * ksi * w0 * l - rs) * g, None if flt else _acc32, _Q15)
+            out[f"M1_{axis}_KI_GAIN"] = (w0 * w0 * l * ts / k * g, None if flt else _acc32, _Q15)
     a = ts / (ld + ts * rs)
-    out["M1_I_SCALE"] = (ld / (ld + ts * rs), _acc32, _Q15)
-    out["M1_U_SCALE"] = (a * u_max / i_max, _acc32, _Q15)
-    if isinstance(e_max, (int, float)):
-        out["M1_E_SCALE"] = (a * e_max / i_max, _acc32, _Q15)
-    out["M1_WI_SCALE"] = (lq * a * w_max, _acc32, _Q15)
+    f = None if flt else _acc32
+    out["M1_I_SCALE"] = (ld / (ld + ts * rs), f, _Q15)
+    out["M1_U_SCALE"] = (a if flt else a * u_max / i_max, f, _Q15)
+    if flt:
+        out["M1_E_SCALE"] = (a, f, _Q15)
+    elif isinstance(e_max, (int, float)):
+        out["M1_E_SCALE"] = (a * e_max / i_max, f, _Q15)
+    out["M1_WI_SCALE"] = (lq * a if flt else lq * a * w_max, f, _Q15)
     out["M1_SCALAR_INTEG_GAIN"] = (2.0 * n_max * pp / 60.0 * ts, _acc32, _Q15)
     if isinstance(p.get("parametersAlignDuration"), (int, float)):
         out["M1_ALIGN_DURATION"] = (p["parametersAlignDuration"] / ts, round, 1.0)
-    if sl.get("speedLoopManualConstantTunning") is True:
+    if sl.get("speedLoopManualConstantTunning") is True and not flt:
         tsp = sl.get("speedLoopSampleTime")
         if isinstance(sl.get("speedLoopSLKp"), (int, float)):
             out["M1_SPEED_PI_PROP_GAIN"] = (sl["speedLoopSLKp"] * w_max / i_max, _acc32, _Q15)
@@ -159,13 +172,22 @@ def decode_header(values: dict, notes: dict) -> dict:
     (:mod:`pulab.profiles.decoding`)."""
     v = values
     has = v.keys().__contains__
-    out = {n: macro(v[n], u, m, n) for n, (u, m) in _SCALES.items() if has(n)}
+    # MCAT's floating-point variant stores SI floats (speeds in electrical rad/s)
+    flt = isinstance(v.get("M1_I_SCALE", v.get("M1_D_KP_GAIN")), float)
+    out = {n: macro(v[n], "rad/s" if flt and u == "rpm" else u, m, n)
+           for n, (u, m) in _SCALES.items() if has(n)}
     checks: list = []
     design: dict = {"assumed": []}
     i_max, u_max = v.get("M1_I_MAX"), v.get("M1_U_MAX")
     pp = v.get("M1_MOTOR_PP")
+    design["variant"] = "float" if flt else "fractional"
+    q15 = 1.0 if flt else _Q15
     for n, (scale, unit, meaning, q) in _FRACTIONS.items():
         if not has(n):
+            continue
+        if flt:
+            out[n] = macro(v[n], "rad/s" if unit == "rpm" else unit,
+                           meaning + (" (electrical)" if unit == "rpm" else ""), n)
             continue
         frac = v[n] / q
         if scale is None:
@@ -176,7 +198,7 @@ def decode_header(values: dict, notes: dict) -> dict:
     if w_max is None and has("M1_FREQ_MAX"):
         w_max = 2.0 * math.pi * v["M1_FREQ_MAX"]
     elif w_max is None and has("M1_N_MAX") and pp:
-        w_max = 2.0 * math.pi * v["M1_N_MAX"] * pp / 60.0
+        w_max = v["M1_N_MAX"] if flt else 2.0 * math.pi * v["M1_N_MAX"] * pp / 60.0
     j = _mcat_json(notes.get("", ()))
     design["mcat_inputs"] = j
     # the sample time: the tool's own input, else two constants that carry it
@@ -187,8 +209,11 @@ def decode_header(values: dict, notes: dict) -> dict:
     f_max = w_max / (2.0 * math.pi) if w_max else None
     ts_integ = v["M1_SCALAR_INTEG_GAIN"] / _Q15 / (2.0 * f_max) \
         if has("M1_SCALAR_INTEG_GAIN") and f_max else None
-    ts_theta = v["M1_TO_THETA_GAIN"] / _Q15 * 2.0 ** v["M1_TO_THETA_SHIFT"] * math.pi / w_max \
-        if has("M1_TO_THETA_GAIN") and has("M1_TO_THETA_SHIFT") and w_max else None
+    if flt:  # TO_THETA_GAIN = T_s/π
+        ts_theta = v["M1_TO_THETA_GAIN"] * math.pi if has("M1_TO_THETA_GAIN") else None
+    else:
+        ts_theta = v["M1_TO_THETA_GAIN"] / _Q15 * 2.0 ** v["M1_TO_THETA_SHIFT"] * math.pi / w_max \
+            if has("M1_TO_THETA_GAIN") and has("M1_TO_THETA_SHIFT") and w_max else None
     if ts is None:
         ts, ts_from = (ts_integ, "M1_SCALAR_INTEG_GAIN/(2·f_max)") if ts_integ else \
             (ts_theta, "M1_TO_THETA_GAIN·2^shift·π/ω_max") if ts_theta else (None, None)
@@ -203,35 +228,39 @@ def decode_header(values: dict, notes: dict) -> dict:
                                             "M1_SCALAR_INTEG_GAIN/2^15/(2·f_max)")
     # the motor from the observer scales
     motor: dict = {}
-    if has("M1_I_SCALE") and has("M1_U_SCALE") and i_max and u_max and ts:
-        a = v["M1_U_SCALE"] / _Q15 * i_max / u_max
-        i_scale = v["M1_I_SCALE"] / _Q15
-        design["a_per_ohm"] = a
+    if flt:
+        a = v.get("M1_U_SCALE")
+    else:
+        a = v["M1_U_SCALE"] / _Q15 * i_max / u_max if has("M1_U_SCALE") and i_max and u_max \
+            else None
+    design["a_per_ohm"] = a
+    if has("M1_I_SCALE") and a and a > 0 and ts:
+        i_scale = v["M1_I_SCALE"] / q15
         motor["ld_h"] = i_scale * ts / a
         motor["rs_ohm"] = (1.0 - i_scale) / a
         out["M1_U_SCALE"] = macro(a, "1/Ω", "observer: T_s/(L_d + T_s·R_s)",
-                                  "M1_U_SCALE/2^15·I_max/U_max")
-        if has("M1_WI_SCALE") and w_max:
-            motor["lq_h"] = v["M1_WI_SCALE"] / _Q15 / (a * w_max)
-            out["M1_WI_SCALE"] = macro(motor["lq_h"], "H", "observer: L_q·T_s/(L_d + T_s·R_s)·ω_max"
-                                       " → L_q", "M1_WI_SCALE/2^15/(a·ω_max)")
-        if has("M1_E_SCALE") and has("M1_E_MAX"):
-            e = v["M1_E_SCALE"] / _Q15 * i_max / v["M1_E_MAX"]
+                                  "M1_U_SCALE" if flt else "M1_U_SCALE/2^15·I_max/U_max")
+        if has("M1_WI_SCALE") and (w_max or flt):
+            motor["lq_h"] = v["M1_WI_SCALE"] / a if flt else v["M1_WI_SCALE"] / _Q15 / (a * w_max)
+            out["M1_WI_SCALE"] = macro(motor["lq_h"], "H", "observer: L_q·T_s/(L_d + T_s·R_s)"
+                                       + ("" if flt else "·ω_max") + " → L_q",
+                                       "M1_WI_SCALE/a" if flt else "M1_WI_SCALE/2^15/(a·ω_max)")
+        if has("M1_E_SCALE") and (flt or v.get("M1_E_MAX")):
+            e = v["M1_E_SCALE"] if flt else v["M1_E_SCALE"] / _Q15 * i_max / v["M1_E_MAX"]
             if abs(e / a - 1.0) > 0.01:
                 checks.append(check("warning", "inconsistent", ["M1_E_SCALE", "M1_U_SCALE"],
                                     what="T_s/(L_d + T_s·R_s)", a=a, a_from="M1_U_SCALE",
                                     b=e, b_from="M1_E_SCALE",
                                     diff=round(100.0 * (e / a - 1.0), 2)))
-    elif has("M1_U_SCALE") and has("M1_I_MAX"):
-        design["a_per_ohm"] = v["M1_U_SCALE"] / _Q15 * i_max / u_max if u_max else None
     if pp:
         motor["pole_pairs"] = int(pp)
     # the current PI; MCAT's trapezoidal k = 2 unless its JSON says otherwise
     k = 2.0
     expected = {}
     if j is not None:
-        e1, e2 = _expected(j, 1.0), _expected(j, 2.0)
-        miss = [sum(abs(v[n] - f(x)) for n, (x, f, _) in e.items()
+        e1, e2 = _expected(j, 1.0, flt), _expected(j, 2.0, flt)
+        miss = [sum(abs(v[n] - x) / abs(x) if f is None else abs(v[n] - f(x))
+                    for n, (x, f, _) in e.items()
                     if n in ("M1_D_KI_GAIN", "M1_Q_KI_GAIN") and has(n)) for e in (e1, e2)]
         k = 1.0 if miss[0] < miss[1] else 2.0
         expected = e1 if k == 1.0 else e2
@@ -240,21 +269,23 @@ def decode_header(values: dict, notes: dict) -> dict:
     loops = {}
     for axis, l_key in (("d", "ld_h"), ("q", "lq_h")):
         kp_n, ki_n = f"M1_{axis.upper()}_KP_GAIN", f"M1_{axis.upper()}_KI_GAIN"
-        if not (has(kp_n) and has(ki_n) and i_max and u_max and ts):
+        if not (has(kp_n) and has(ki_n) and ts and (flt or (i_max and u_max))):
             continue
-        kp = v[kp_n] / _Q15 * u_max / i_max
-        ki = v[ki_n] / _Q15 * u_max / i_max * k / ts
-        out[kp_n] = macro(kp, "V/A", f"current PI kp, {axis} axis", f"{kp_n}/2^15·U_max/I_max")
+        g = 1.0 if flt else u_max / i_max / _Q15
+        kp, ki = v[kp_n] * g, v[ki_n] * g * k / ts
+        scaled = "" if flt else "/2^15·U_max/I_max"
+        out[kp_n] = macro(kp, "V/A", f"current PI kp, {axis} axis", f"{kp_n}{scaled}")
         out[ki_n] = macro(ki, "V/(A·s)", f"current PI ki, {axis} axis",
-                          f"{ki_n}/2^15·U_max/I_max·{k:g}/T_s")
+                          f"{ki_n}{scaled}·{k:g}/T_s")
         l = motor.get(l_key)
-        if l and "rs_ohm" in motor:
-            c = current_loop(kp, ki, motor["rs_ohm"], l)
+        c = current_loop(kp, ki, motor["rs_ohm"], l) if l and "rs_ohm" in motor else None
+        if c is not None:
             w0 = math.sqrt(ki / l) if ki > 0 else None
             c["mcat_f0_hz"] = w0 / (2.0 * math.pi) if w0 else None
             c["mcat_ksi"] = (kp + motor["rs_ohm"]) / (2.0 * w0 * l) if w0 else None
             # MCAT's design is ω0, not a crossover: its closed loop has ω_n = ω0
-            c["bandwidth_hz"] = c["mcat_f0_hz"]
+            if c["mcat_f0_hz"]:
+                c["bandwidth_hz"] = c["mcat_f0_hz"]
             loops[axis] = c
     design["current_loop"] = loops or None
     for axis, c in loops.items():
@@ -263,24 +294,34 @@ def decode_header(values: dict, notes: dict) -> dict:
             checks.append(check("warning", "loop_margin", list(_GAINS), axis=axis,
                                 wts=round(wts, 3), bw=round(c["bandwidth_hz"], 1), ts=ts))
     speed = None
-    if has("M1_SPEED_PI_PROP_GAIN") and i_max and w_max:
-        speed = {"kp_a_per_rad_s": v["M1_SPEED_PI_PROP_GAIN"] / _Q15 * i_max / w_max}
+    if has("M1_SPEED_PI_PROP_GAIN") and (flt or (i_max and w_max)):
+        g = 1.0 if flt else i_max / w_max / _Q15
+        speed = {"kp_a_per_rad_s": v["M1_SPEED_PI_PROP_GAIN"] * g}
         if has("M1_SPEED_PI_INTEG_GAIN"):
-            ki_per_sample = v["M1_SPEED_PI_INTEG_GAIN"] / _Q15 * i_max / w_max
+            ki_per_sample = v["M1_SPEED_PI_INTEG_GAIN"] * g
             tsp = (j or {}).get("speedLoop", {}).get("speedLoopSampleTime")
             speed["ki_a_per_rad_s_per_sample"] = ki_per_sample
             speed["ki_a_per_rad"] = ki_per_sample / tsp if isinstance(tsp, (int, float)) else None
         out["M1_SPEED_PI_PROP_GAIN"] = macro(speed["kp_a_per_rad_s"], "A/(rad/s)",
                                              "speed PI kp (electrical rad/s)",
-                                             "M1_SPEED_PI_PROP_GAIN/2^15·I_max/ω_max")
+                                             "M1_SPEED_PI_PROP_GAIN"
+                                             + ("" if flt else "/2^15·I_max/ω_max"))
     design["speed_loop"] = speed
     design["observer"] = None
-    if has("M1_TO_THETA_GAIN") and has("M1_TO_THETA_SHIFT"):
+    if flt and has("M1_TO_THETA_GAIN"):
+        design["observer"] = {"tracking_theta_gain": v["M1_TO_THETA_GAIN"], "ts_from_theta_s": ts_theta}
+    elif has("M1_TO_THETA_GAIN") and has("M1_TO_THETA_SHIFT"):
         design["observer"] = {"tracking_theta_gain": v["M1_TO_THETA_GAIN"] / _Q15
                               * 2.0 ** v["M1_TO_THETA_SHIFT"], "ts_from_theta_s": ts_theta}
-    # the JSON: every constant it determines, again, in LSB
+    # the JSON: every constant it determines, again, in LSB (a float: relative, 6 digits printed)
     for n, (x, f, per) in expected.items():
         if not has(n):
+            continue
+        if f is None:
+            rel = (v[n] - x) / x if x else (1.0 if v[n] else 0.0)
+            if abs(rel) > 1e-5:
+                checks.append(check("warning", "json_float", [n], macro=n, value=v[n],
+                                    expected=x, diff=round(100.0 * rel, 4)))
             continue
         want = f(x)
         delta = v[n] - want
@@ -290,7 +331,7 @@ def decode_header(values: dict, notes: dict) -> dict:
                                 diff=delta))
     design["json_checked"] = sorted(n for n in expected if has(n))
     for n in _GAINS + ("M1_SPEED_PI_PROP_GAIN", "M1_SPEED_PI_INTEG_GAIN"):
-        if has(n) and v[n] and 1.0 / abs(v[n]) > 0.01:  # ACC32 truncates: up to 1 LSB lost
+        if isinstance(v.get(n), int) and v[n] and 1.0 / abs(v[n]) > 0.01:  # ACC32 truncates: up to 1 LSB lost
             checks.append(check("warning", "rounding", [n], "", macro=n, value=v[n],
                                 ideal=f"{n} + [0, 1) LSB", err=round(100.0 / abs(v[n]), 2)))
     drive: dict = {}

@@ -151,7 +151,7 @@ def decode_header(values: dict, notes: dict) -> dict:
     loops = {}
     for axis, w in (("d", "FLUX"), ("q", "TORQUE")):
         kp_n, ki_n = f"PID_{w}_KP_DEFAULT", f"PID_{w}_KI_DEFAULT"
-        if not (has(kp_n) and has(ki_n) and has("TF_KPDIV") and has("TF_KIDIV")):
+        if not (has(kp_n) and has(ki_n) and v.get("TF_KPDIV") and v.get("TF_KIDIV")):
             continue
         for n in (kp_n, ki_n):
             if not -32768 <= v[n] <= 32767:
@@ -174,7 +174,9 @@ def decode_header(values: dict, notes: dict) -> dict:
             out[kp_n].update(si=kp, unit="V/A", formula=f"{kp_n}/TF_KPDIV·(U_dc/√3)/MAX_CURRENT")
             out[ki_n].update(si=ki, unit="V/(A·s)",
                              formula=f"{ki_n}/TF_KIDIV·(U_dc/√3)/MAX_CURRENT/T")
-            loops[axis] = current_loop(kp, ki, r, l)
+            c = current_loop(kp, ki, r, l)
+            if c is not None:
+                loops[axis] = c
     if r and l and ts and "ki_over_kp_per_sample" in design and design["ki_over_kp_per_sample"]:
         # the Workbench places the PI zero on the plant pole: Ki/Kp (per sample) = R·T/L
         want = r * ts / l
@@ -186,6 +188,10 @@ def decode_header(values: dict, notes: dict) -> dict:
                                 a=round(got, 6), a_from="PID_TORQUE_KI/KP·KPDIV/KIDIV",
                                 b=round(want, 6), b_from="RS·T/LS",
                                 diff=round(100.0 * (got / want - 1.0), 2)))
+    if loops:
+        design["assumed"].append("a voltage digit is (U_dc/√3)/32768 (pu-lab's assumption, not "
+                                 "read in a public file): kp, ki and the bandwidth in SI follow "
+                                 "it; Ki/Kp per sample does not")
     design["current_loop"] = loops or None
     for axis, c in loops.items():
         wts = 2.0 * math.pi * c["bandwidth_hz"] * ts
@@ -199,7 +205,8 @@ def decode_header(values: dict, notes: dict) -> dict:
     design["speed_loop"] = None
     design["observer"] = ({"pll_kp": v["PLL_KP_GAIN"] / v["PLL_KPDIV"],
                            "pll_ki": v["PLL_KI_GAIN"] / v["PLL_KIDIV"]}
-                          if all(map(has, ("PLL_KP_GAIN", "PLL_KPDIV", "PLL_KI_GAIN", "PLL_KIDIV")))
+                          if all(map(has, ("PLL_KP_GAIN", "PLL_KI_GAIN")))
+                          and v.get("PLL_KPDIV") and v.get("PLL_KIDIV")
                           else None)
     return result(READS, "arm", out, design, checks)
 
