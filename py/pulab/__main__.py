@@ -4,8 +4,8 @@
 ``python -m pulab header --profile NAME INPUT.json`` (one vendor's C header) and
 ``python -m pulab translate --from NAME [--axis d|q] --kp INT --ki INT INPUT.json``
 (docs/contract.md, "Vendor profiles"), ``python -m pulab oembed SITE_URL DIST`` (the panels'
-oEmbed descriptions, :mod:`pulab.cli.oembed`) and ``python -m pulab decode FILE…`` (a vendor's
-generated headers read back, :mod:`pulab.cli.decode`).
+oEmbed descriptions, :mod:`pulab.cli.oembed`) and ``python -m pulab audit FILE…`` (a vendor's
+generated headers read back, :mod:`pulab.cli.audit`).
 
 Bad input: exit status 2 and one line ``error: FIELD: MESSAGE`` on stderr
 (for code, ``error: code: LINE:COLUMN: MESSAGE``).
@@ -26,7 +26,7 @@ from .cli.trace import add_trace_parser, trace_main
 from .cli.robust import add_robust_parser
 from .cli.prove import add_prove_parser
 from .cli.oembed import add_oembed_parser
-from .cli.decode import add_decode_parser
+from .cli.audit import add_audit_parser
 
 
 def main(argv: list | None = None) -> int:
@@ -41,7 +41,7 @@ def main(argv: list | None = None) -> int:
     add_robust_parser(sub)
     add_prove_parser(sub)
     add_oembed_parser(sub)
-    add_decode_parser(sub)
+    add_audit_parser(sub)
     _add_vendor_commands(sub)
     args = p.parse_args(argv)
     if args.command == "trace":

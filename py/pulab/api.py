@@ -206,22 +206,22 @@ def _trace_examples(req) -> dict:
     return {"targets": list(TARGETS), "examples": [{"id": k, **v} for k, v in EXAMPLES.items()]}
 
 
-_DECODE_KEYS = ("files", "vendor", "define")
+_AUDIT_KEYS = ("files", "profile", "define")
 
 
-def _decode(req) -> dict:
-    """A vendor's generated headers read back (:func:`pulab.analyses.decode.decode`):
-    ``files`` [{"name", "text"}], ``vendor`` (optional), ``define`` [NAME[=VALUE]]."""
-    from .analyses.decode import decode
+def _audit(req) -> dict:
+    """A vendor's generated headers read back (:func:`pulab.analyses.audit.audit`):
+    ``files`` [{"name", "text"}], ``profile`` (optional), ``define`` [NAME[=VALUE]]."""
+    from .analyses.audit import audit
     if not isinstance(req, dict):
         raise InputError("input", code="not_object", got=shown(req))
-    unknown = set(req) - set(_DECODE_KEYS)
+    unknown = set(req) - set(_AUDIT_KEYS)
     if unknown:
         raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
-                         expected=", ".join(_DECODE_KEYS))
+                         expected=", ".join(_AUDIT_KEYS))
     files = req.get("files")
     if not isinstance(files, list) or not files:
-        raise InputError("files", code="decode_no_files")
+        raise InputError("files", code="audit_no_files")
     pairs = []
     for k, f in enumerate(files):
         if not isinstance(f, dict):
@@ -230,8 +230,8 @@ def _decode(req) -> dict:
     defines = req.get("define") or []
     if not isinstance(defines, list) or not all(isinstance(d, str) for d in defines):
         raise InputError("define", code="trace_define_list")
-    vendor = req.get("vendor")
-    return {"decode": decode(pairs, vendor if vendor not in ("", None) else None, defines)}
+    profile = req.get("profile")
+    return {"audit": audit(pairs, profile if profile not in ("", None) else None, defines)}
 
 
 def _vendor_input(req) -> dict:
@@ -332,7 +332,7 @@ KINDS = {
     "trace.prove": ("input", _trace_prove),
     "vendors.header": ("input", _vendors("header")),
     "vendors.translate": ("input", _vendors("translate")),
-    "decode": ("input", _decode),
+    "audit": ("input", _audit),
     **{f"prove.{op}" if op != "prove" else "prove": ("prove", _prove(op))
        for op in ("prove", "plan", "integer", "summary", "propose")},
     "course.spec": ("input", _course("spec")),

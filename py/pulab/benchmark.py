@@ -15,7 +15,7 @@ import sys
 import time
 
 __all__ = ["run", "report_timing", "loop_timing", "acim_timing", "ACIM", "trace_timing", "board_timing",
-           "observer_timing", "decode_timing", "format_run", "MOTORS", "TRACE_SNIPPET", "TRACE_INPUTS"]
+           "observer_timing", "audit_timing", "format_run", "MOTORS", "TRACE_SNIPPET", "TRACE_INPUTS"]
 
 #: Motors of different sizes; timing differs little, but one motor would hide outliers.
 MOTORS = {
@@ -285,19 +285,19 @@ def acim_timing(n: int = 30) -> dict:
     return out
 
 
-def decode_timing(n: int = 20) -> dict:
-    """Median and minimum milliseconds to decode a generated ST set (target ≤ 200 ms in CPython,
+def audit_timing(n: int = 20) -> dict:
+    """Median and minimum milliseconds to audit a generated ST set (target ≤ 200 ms in CPython,
     ≤ 1 s in Pyodide): pu-lab's own ST header, whose macros match the MCSDK files', repeated
     as four files of 150 macros each (the size of a Workbench set, ~600 macros)."""
     from . import profiles
-    from .analyses.decode import decode
+    from .analyses.audit import audit
     from .report import report
     text = profiles.header(report({**MOTORS["seed 17 V"], "profiles": {}}), "st")
     body = [ln for ln in text.splitlines() if ln.startswith("#define") and "ADC_REF" not in ln]
     files = [(f"st{k}.h", "\n".join(body) + "\n" + "\n".join(
         f"#define EXTRA_{k}_{j} ((int16_t)(RS*{j}/LS) + {j}u)" for j in range(150 - len(body))))
         for k in range(4)]
-    out = {"macros": sum(f[1].count("#define") for f in files), **_timing(n, lambda: decode(files))}
+    out = {"macros": sum(f[1].count("#define") for f in files), **_timing(n, lambda: audit(files))}
     return out
 
 
@@ -308,7 +308,7 @@ def run(sim_steps: int = 20000) -> dict:
     return {"python": f"{sys.implementation.name} {sys.version.split()[0]}",
             "platform": sys.platform, "report_ms": report_timing(), "loop_ms": loop_timing(),
             "sim": bench(sim_steps), "trace": trace_timing(), "board": board_timing(),
-            "observer": observer_timing(), "acim_ms": acim_timing(), "decode": decode_timing()}
+            "observer": observer_timing(), "acim_ms": acim_timing(), "audit": audit_timing()}
 
 
 def format_run(r: dict) -> str:
@@ -331,9 +331,9 @@ def format_run(r: dict) -> str:
         a = r["acim_ms"]
         lines.append(f"  report(), induction motor: {a['plain']:.3f} ms median; with the loop "
                      f"analysis and a speed loop {a['loop']:.3f} ms (target < 5 ms plain in Pyodide)")
-    if "decode" in r:
-        d = r["decode"]
-        lines.append(f"  decode(): an ST set of {d['macros']} macros in {d['median_ms']:.1f} ms "
+    if "audit" in r:
+        d = r["audit"]
+        lines.append(f"  audit(): an ST set of {d['macros']} macros in {d['median_ms']:.1f} ms "
                      f"median, {d['min_ms']:.1f} ms min (target ≤ 200 ms CPython, ≤ 1 s Pyodide)")
     s = r["sim"]
     lines.append(f"  sim: {s['steps']} steps × 7 variants (si, pu, fixed; ti, nxp, st, microchip) "

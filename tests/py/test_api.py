@@ -27,7 +27,7 @@ def test_kinds_are_the_documented_ones():
         "trace.prove", "vendors.header", "vendors.translate", "prove", "prove.plan", "prove.integer",
         "prove.summary", "prove.propose",
         "course.check", "course.answers", "course.spec",
-        "course.trainees", "decode"])
+        "course.trainees", "audit"])
 
 
 # Each kind on a request with a known answer (values checked elsewhere against oracles; here
@@ -58,10 +58,10 @@ def test_kinds_are_the_documented_ones():
                            "values": {"pm_kp": 1180, "pm_ki": 4720}},
      lambda r: r["translation"]["round_trip"]["values"] == {"pm_kp": 1180, "pm_ki": 4720}),
     # 16384·0.35/(0.0006·20000) = 477.87: the (int32_t) cast truncates to 477
-    ("decode", {"files": [{"name": "a.h", "text": "#define RS 0.35\n#define LS 0.0006\n"
+    ("audit", {"files": [{"name": "a.h", "text": "#define RS 0.35\n#define LS 0.0006\n"
                            "#define F1 16384\n#define PWM_FREQUENCY 20000\n"
                            "#define C1 (int32_t)((((int16_t)F1)*RS)/(LS*PWM_FREQUENCY))\n"}]},
-     lambda r: r["decode"]["vendor"] == "st" and r["decode"]["macros"]["C1"]["value"] == 477),
+     lambda r: r["audit"]["profile"] == "st" and r["audit"]["macros"]["C1"]["value"] == 477),
 ])
 def test_every_kind_answers(kind, req, check):
     out = reply(kind, req)

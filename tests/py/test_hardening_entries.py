@@ -185,7 +185,7 @@ KIND_KEYS = {"report": list(PLAIN), "qcalc": ["format", "word_bits", "value", "r
              "prove.summary": ["input", "ranges", "integers"],
              "prove.propose": ["input", "ranges", "profile"],
              "course.check": ["input", "id", "answer"], "course.answers": ["input"], "course.spec": ["x"],
-             "course.trainees": ["start", "count"], "decode": ["files", "vendor", "define"]}
+             "course.trainees": ["start", "count"], "audit": ["files", "profile", "define"]}
 
 
 def test_fuzzed_kinds_keep_the_api_contract():

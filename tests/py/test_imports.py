@@ -30,7 +30,7 @@ LAYERS = (
     # families: each calls report() for every motor, point or box
     ("analyses.integers", "analyses.sweep", "analyses.exercises", "analyses.batch",
      "analyses.prove", "analyses.propose", "analyses.sim.bench", "profiles.translate",
-     "analyses.decode"),
+     "analyses.audit"),
     # the C family proof runs the box search of analyses.prove
     ("ctrace.prove",),
     ("export", "html", "qcalc", "benchmark"),

@@ -133,32 +133,32 @@ export interface Proposal {
   integers?: Record<string, { headroom_bits: number | null; worst_error_pct: number | null; error_bound: boolean }>;
 }
 
-/** `decode`: generated vendor headers read back (docs/contract.md, "Decode"). */
-export interface DecodeRequest { files: { name: string; text: string }[]; vendor?: string; define?: string[] }
-export interface DecodedMacro {
+/** `audit`: generated vendor headers read back (docs/contract.md, "Audit"). */
+export interface AuditRequest { files: { name: string; text: string }[]; profile?: string; define?: string[] }
+export interface AuditMacro {
   value: number; type: string; si: number | null; unit: string | null; meaning: string;
   formula: string; source: string; expansion: string;
 }
-export interface DecodeFinding {
+export interface AuditFinding {
   severity: 'error' | 'warning' | 'note'; code: string; macros: string[];
   message: string; message_zh: string; advice: string;
 }
-export interface DecodeLoop {
+export interface AuditLoop {
   kp_v_per_a: number; ki_v_per_a_s: number; bandwidth_hz: number; zero_rad_s: number | null;
   plant_pole_rad_s: number; cancels_plant: boolean;
 }
-export interface Decoded {
-  vendor: string; target: string; files: string[]; unresolved: string[];
-  macros: Record<string, DecodedMacro>;
+export interface Audit {
+  profile: string; target: string; files: string[]; unresolved: string[];
+  macros: Record<string, AuditMacro>;
   other: Record<string, { value: number; source: string }>;
   unknown: Record<string, string[]>;
   design: {
     input: Input; assumed: string[]; missing: string[];
-    current_loop: Record<'d' | 'q', DecodeLoop> | null;
+    current_loop: Partial<Record<'d' | 'q', AuditLoop>>;
     speed_loop: Record<string, number | null> | null; observer: Record<string, number | null> | null;
     [key: string]: unknown;
   };
-  findings: DecodeFinding[];
-  roundtrip: { header: string | null; error?: string; error_zh?: string;
-    macros: Record<string, { file: number; pulab: number; delta_lsb?: number; delta_rel?: number | null }> } | null;
+  findings: AuditFinding[];
+  regenerated: { header: string | null; error?: string; error_zh?: string } | null;
+  roundtrip: Record<string, { file: number; pulab: number; delta_lsb?: number; delta_rel?: number | null }>;
 }

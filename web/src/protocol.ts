@@ -2,7 +2,7 @@
 // (in the spirit of stlite's types.ts), and every request kind has its request and reply types.
 // The worker only forwards JSON text to pulab.api.call_json.
 
-import type { BatchChunk, BatchRequest, CodeProof, Decoded, DecodeRequest, CodeProveRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
+import type { BatchChunk, BatchRequest, Audit, AuditRequest, CodeProof, CodeProveRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
 import type { Chunk, Plan, Points, Summary } from './family/types';
 import type { Report } from './report-types';
 import type { Input, Json } from './json';
@@ -47,7 +47,7 @@ export interface Request {
   'course.check': { input: Input; id: string; answer: string };
   'course.answers': { input: Input };
   'course.trainees': { start: number | string; count: number | string };
-  decode: DecodeRequest;
+  audit: AuditRequest;
 }
 export type ApiKind = keyof Request;
 
@@ -77,7 +77,7 @@ export interface ReplyBody {
   'course.check': { result: { id: string; state: 'correct' | 'wrong'; expected: Json; tolerance: Tolerance } };
   'course.answers': { answers: Record<string, { chapter: string; expected: Json; unit: string; tolerance: Tolerance }> };
   'course.trainees': { trainees: { n: number; input: Input }[] };
-  decode: { decode: Decoded };
+  audit: { audit: Audit };
 }
 
 /** An exercise's stated tolerance (pulab.analyses.exercises): data and its text in both languages. */

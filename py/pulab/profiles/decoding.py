@@ -23,8 +23,9 @@ __all__ = ["macro", "result", "current_loop", "check", "near", "numbers_in"]
 
 
 def macro(si, unit: str | None, meaning: str, formula: str) -> dict:
-    """One decoded macro: its value in SI (None when it has none), unit, meaning, formula."""
-    return {"si": si, "unit": unit, "meaning": meaning, "formula": formula}
+    """One decoded macro: its value in SI (None when it has none; a float even when whole, as
+    the output promises), unit, meaning, formula."""
+    return {"si": None if si is None else float(si), "unit": unit, "meaning": meaning, "formula": formula}
 
 
 def result(reads, target: str, macros: dict, design: dict, checks: list) -> dict:
@@ -53,7 +54,7 @@ def current_loop(kp: float, ki: float, r: float, l: float) -> dict | None:
 
 def check(severity: str, code: str, macros: list, advice: str = "", **params) -> tuple:
     """A finding of the vendor's: (severity, code, macros, params, advice); the words are the
-    catalog's ``decode.<code>``."""
+    catalog's ``audit.<code>``."""
     return severity, code, macros, params, advice
 
 

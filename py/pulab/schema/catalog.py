@@ -814,54 +814,54 @@ MESSAGES = {
     "json_not_text": ("not valid JSON: the input is not text", "不是合法的 JSON：输入不是文本"),
     "json_too_deep": ("nested deeper than {depth} levels", "嵌套超过 {depth} 层"),
     "json_too_long": ("longer than {limit} characters", "超过 {limit} 个字符"),
-    # reading a vendor header back (pulab.analyses.decode)
-    "decode_empty": ("{name} is empty: paste a generated header", "{name} 为空：请粘贴生成的头文件"),
-    "decode_not_text": ("{name} is not C text ({why})", "{name} 不是 C 文本（{why}）"),
-    "decode_why_nul": ("a NUL byte", "含 NUL 字节"),
-    "decode_why_type": ("not a string", "不是字符串"),
-    "decode_why_pair": ("not a (name, text) pair", "不是（名称，文本）对"),
-    "decode_no_files": ("give at least one header file", "至少给出一个头文件"),
-    "decode_no_vendor": ("no #define of a known vendor header (ST, TI, NXP, Microchip, "
-                         "Inovance) in {names}", "{names} 中没有已知厂商头文件的 #define（ST、TI、NXP、"
-                         "Microchip、汇川）"),
-    "decode_define": ("{file}:{line}: #define {name} does not evaluate: {why}",
-                      "{file}:{line}：#define {name} 无法求值：{why}"),
-    "decode_values": ("the {vendor} header's numbers make no design ({why} in its formulas): "
-                      "a scale or a divisor is zero or negative",
-                      "{vendor} 头文件的数值构不成设计（其公式中出现 {why}）：某个比例或除数为零或负"),
-    "decode_preprocess": ("{file}:{line}: {why}", "{file}:{line}：预处理：{why}"),
-    "decode.comment_value": ("{macro} = {value} but its comment says {comment}: no reading of "
-                             "it ({readings}) gives that; nearest {nearest}",
-                             "{macro} = {value}，但其注释写的是 {comment}：任何读法（{readings}）"
-                             "都得不到它；最接近的是 {nearest}"),
-    "decode.comment_stale": ("{macro} = {value} stands for {got}, but its comment says {said}: "
-                             "the integer or its scale changed after the file was generated",
-                             "{macro} = {value} 代表 {got}，但其注释写的是 {said}：整数或其比例在"
-                             "文件生成后被改过"),
-    "decode.inconsistent": ("{what}: {a} from {a_from} but {b} from {b_from} ({diff} % apart)",
-                            "{what}：由 {a_from} 得 {a}，由 {b_from} 得 {b}（相差 {diff} %）"),
-    "decode.json": ("{macro} = {value}, but the tool's own inputs (the JSON in the header's "
-                    "comment) give {expected} ({diff} LSB apart)",
-                    "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
-                    "（相差 {diff} LSB）"),
-    "decode.json_float": ("{macro} = {value}, but the tool's own inputs (the JSON in the header's "
-                          "comment) give {expected} ({diff} % apart)",
-                          "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
-                          "（相差 {diff} %）"),
-    "decode.overflow": ("{macro}: the compiler's value {value} is not the {ideal} its formula "
-                        "means: it does not fit {ctype}",
-                        "{macro}：编译器得到的 {value} 不是公式所指的 {ideal}：超出 {ctype} 范围"),
-    "decode.rounding": ("{macro} = {value} stands for {ideal}: rounding costs {err} %",
-                        "{macro} = {value} 代表 {ideal}：取整误差 {err} %"),
-    "decode.if_undefined": ("#if compares names no given file defines ({names}): each is 0, so "
-                            "the first such branch is taken whatever was meant",
-                            "#if 比较了所给文件中都未定义的名字（{names}）：它们都为 0，因此总是取"
-                            "第一个这样的分支"),
-    "decode.loop_margin": ("{axis} current loop: ω_c·Ts = {wts} (bandwidth {bw} Hz at Ts = {ts} "
-                           "s): above 0.2 the sampling and computation delay cost more than "
-                           "17° of phase margin",
-                           "{axis} 轴电流环：ω_c·Ts = {wts}（带宽 {bw} Hz，Ts = {ts} s）：超过 0.2 "
-                           "时采样与计算延迟使相位裕度损失超过 17°"),
+    # reading a vendor header back (pulab.analyses.audit)
+    "audit_empty": ("{name} is empty: paste a generated header", "{name} 为空：请粘贴生成的头文件"),
+    "audit_not_text": ("{name} is not C text ({why})", "{name} 不是 C 文本（{why}）"),
+    "audit_why_nul": ("a NUL byte", "含 NUL 字节"),
+    "audit_why_type": ("not a string", "不是字符串"),
+    "audit_why_pair": ("not a (name, text) pair", "不是（名称，文本）对"),
+    "audit_no_files": ("give at least one header file", "至少给出一个头文件"),
+    "audit_no_vendor": ("no #define of a known vendor header (ST, TI, NXP, Microchip, "
+                        "Inovance) in {names}", "{names} 中没有已知厂商头文件的 #define（ST、TI、NXP、"
+                        "Microchip、汇川）"),
+    "audit_define": ("{file}:{line}: #define {name} does not evaluate: {why}",
+                     "{file}:{line}：#define {name} 无法求值：{why}"),
+    "audit_values": ("the {vendor} header's numbers make no design ({why} in its formulas): "
+                     "a scale or a divisor is zero or negative",
+                     "{vendor} 头文件的数值构不成设计（其公式中出现 {why}）：某个比例或除数为零或负"),
+    "audit_preprocess": ("{file}:{line}: {why}", "{file}:{line}：预处理：{why}"),
+    "audit.comment_value": ("{macro} = {value} but its comment says {comment}: no reading of "
+                            "it ({readings}) gives that; nearest {nearest}",
+                            "{macro} = {value}，但其注释写的是 {comment}：任何读法（{readings}）"
+                            "都得不到它；最接近的是 {nearest}"),
+    "audit.comment_stale": ("{macro} = {value} stands for {got}, but its comment says {said}: "
+                            "the integer or its scale changed after the file was generated",
+                            "{macro} = {value} 代表 {got}，但其注释写的是 {said}：整数或其比例在"
+                            "文件生成后被改过"),
+    "audit.inconsistent": ("{what}: {a} from {a_from} but {b} from {b_from} ({diff} % apart)",
+                           "{what}：由 {a_from} 得 {a}，由 {b_from} 得 {b}（相差 {diff} %）"),
+    "audit.json": ("{macro} = {value}, but the tool's own inputs (the JSON in the header's "
+                   "comment) give {expected} ({diff} LSB apart)",
+                   "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
+                   "（相差 {diff} LSB）"),
+    "audit.json_float": ("{macro} = {value}, but the tool's own inputs (the JSON in the header's "
+                         "comment) give {expected} ({diff} % apart)",
+                         "{macro} = {value}，但工具自己的输入（头文件注释中的 JSON）给出 {expected}"
+                         "（相差 {diff} %）"),
+    "audit.overflow": ("{macro}: the compiler's value {value} is not the {ideal} its formula "
+                       "means: it does not fit {ctype}",
+                       "{macro}：编译器得到的 {value} 不是公式所指的 {ideal}：超出 {ctype} 范围"),
+    "audit.rounding": ("{macro} = {value} stands for {ideal}: rounding costs {err} %",
+                       "{macro} = {value} 代表 {ideal}：取整误差 {err} %"),
+    "audit.if_undefined": ("#if compares names no given file defines ({names}): each is 0, so "
+                           "the first such branch is taken whatever was meant",
+                           "#if 比较了所给文件中都未定义的名字（{names}）：它们都为 0，因此总是取"
+                           "第一个这样的分支"),
+    "audit.loop_margin": ("{axis} current loop: ω_c·Ts = {wts} (bandwidth {bw} Hz at Ts = {ts} "
+                          "s): above 0.2 the sampling and computation delay cost more than "
+                          "17° of phase margin",
+                          "{axis} 轴电流环：ω_c·Ts = {wts}（带宽 {bw} Hz，Ts = {ts} s）：超过 0.2 "
+                          "时采样与计算延迟使相位裕度损失超过 17°"),
 }
 
 

@@ -20,7 +20,7 @@ import { vendorsPanel } from './vendors';
 import { boardPanel } from './board';
 import { fwPanel } from './fw';
 import { observerPanel } from './observer';
-import { decodePanel } from './decode';
+import { auditPanel } from './audit';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
@@ -43,7 +43,7 @@ export const PANELS: Panel[] = [
   boardPanel,
   fwPanel,
   observerPanel,
-  decodePanel,
+  auditPanel,
   docsPanel, // last: the explainer chapters
 ];
 setPanelRegistry(PANELS);

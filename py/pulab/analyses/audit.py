@@ -1,6 +1,6 @@
-"""Read a vendor's generated parameter header back: the design it encodes and what is wrong.
+"""Audit a vendor's generated parameter header: the design it encodes and what is wrong.
 
-:func:`decode` takes one or more header texts (a whole generated set: ST's four MCSDK files,
+:func:`audit` takes one or more header texts (a whole generated set: ST's four MCSDK files,
 TI's ``user_mtr1.h`` with ``user_common.h``, NXP's ``m1_pmsm_appconfig.h`` …):
 
 1. the files are ordered so that a file comes after the given files it ``#include``s (an
@@ -24,8 +24,8 @@ Examples
 --------
 >>> text = ("#define RS 0.35\\n#define LS 0.0006\\n#define POLE_PAIR_NUM 2\\n"
 ...         "#define PWM_FREQUENCY 20000\\n#define REGULATION_EXECUTION_RATE 1\\n")
->>> d = decode([("pmsm_motor_parameters.h", text)])
->>> d["vendor"], d["macros"]["RS"]["si"], d["design"]["input"]["drive"]["ts_s"]
+>>> d = audit([("pmsm_motor_parameters.h", text)])
+>>> d["profile"], d["macros"]["RS"]["si"], d["design"]["input"]["drive"]["ts_s"]
 ('st', 0.35, 5e-05)
 """
 
@@ -45,7 +45,7 @@ from ..schema.errors import InputError
 from ..schema.validate import shown
 from .cconst import NotConstant, evaluate
 
-__all__ = ["decode", "LIBRARY", "MAX_FILES", "MAX_CHARS"]
+__all__ = ["audit", "LIBRARY", "MAX_FILES", "MAX_CHARS"]
 
 #: More files, or more characters in all, are refused.
 MAX_FILES = 16
@@ -68,7 +68,7 @@ _STD_NAMES = {n for h in STANDARD_HEADERS.values() for n in h}
 _DEFINE = re.compile(r"^[ \t]*#[ \t]*define[ \t]+([A-Za-z_]\w*)", re.M)
 _INCLUDE = re.compile(r'^[ \t]*#[ \t]*include[ \t]*[<"]([^>"\n]+)[>"]', re.M)
 _IF = re.compile(r"^[ \t]*#[ \t]*(?:el)?if\b(.*)$", re.M)
-_SENTINEL = "__pulab_decode_"
+_SENTINEL = "__pulab_audit_"
 #: The inputs a report needs that a header may not fix (``design.missing`` names them).
 _REQUIRED = (("motor", ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm", "ld_h",
                         "lq_h", "bemf_v", "pole_pairs")), ("drive", ("udc_v", "ts_s")))
@@ -86,29 +86,29 @@ def _blank_comments(text: str) -> str:
 
 def _check_files(files) -> list:
     if not isinstance(files, (list, tuple)) or not files:
-        raise InputError("files", code="decode_no_files")
+        raise InputError("files", code="audit_no_files")
     if len(files) > MAX_FILES:
         raise InputError("files", code="integer_range", lo=1, hi=MAX_FILES, got=len(files))
     out, total = [], 0
     for k, item in enumerate(files):
         field = f"files[{k}]"
         if not isinstance(item, (list, tuple)) or len(item) != 2:
-            raise InputError(field, code="decode_not_text", name=field,
-                             why={"code": "decode_why_pair", "params": {}})
+            raise InputError(field, code="audit_not_text", name=field,
+                             why={"code": "audit_why_pair", "params": {}})
         name, text = item
         if not isinstance(name, str) or not name.strip():
             name = f"file{k + 1}"
         if not isinstance(text, str):
-            raise InputError(field, code="decode_not_text", name=name,
-                             why={"code": "decode_why_type", "params": {}})
+            raise InputError(field, code="audit_not_text", name=name,
+                             why={"code": "audit_why_type", "params": {}})
         if "\x00" in text:
-            raise InputError(field, code="decode_not_text", name=name,
-                             why={"code": "decode_why_nul", "params": {}})
+            raise InputError(field, code="audit_not_text", name=name,
+                             why={"code": "audit_why_nul", "params": {}})
         total += len(text)
         if total > MAX_CHARS:
             raise InputError(field, code="json_too_long", limit=MAX_CHARS)
         if not text.strip():
-            raise InputError(field, code="decode_empty", name=name)
+            raise InputError(field, code="audit_empty", name=name)
         out.append((name.strip().replace("\\", "/"), text))
     return out
 
@@ -174,7 +174,7 @@ def _preprocess(src: _Source, text: str, defines: dict, tail: tuple = ((), {})):
             k = len(text[len(src.text):len(src.text) + 1 + (e.column or 1)].split(_SENTINEL)) - 2
             f, n = lines.get(names[k], (src.names[-1], 0)) if 0 <= k < len(names) else \
                 (src.names[-1], 0)
-        raise InputError("files", code="decode_preprocess", file=f, line=n,
+        raise InputError("files", code="audit_preprocess", file=f, line=n,
                          why=e.reason_error()) from None
 
 
@@ -260,25 +260,25 @@ def _decoders() -> dict:
 
 def _finding(severity: str, code: str, macros: list, params: dict, advice: str = "") -> dict:
     return {"severity": severity, "code": code, "macros": macros,
-            "message": render(f"decode.{code}", params, "en"),
-            "message_zh": render(f"decode.{code}", params, "zh"), "advice": advice}
+            "message": render(f"audit.{code}", params, "en"),
+            "message_zh": render(f"audit.{code}", params, "zh"), "advice": advice}
 
 
-def _roundtrip(vendor: str, design: dict, macros: dict) -> dict | None:
-    """pu-lab's header for ``design.input`` and every macro both headers define: file vs
-    pu-lab (``delta_lsb`` for two integers, else ``delta_rel``); None when the files do not fix
-    a whole report input (``design.missing``)."""
+def _roundtrip(vendor: str, design: dict, macros: dict) -> tuple:
+    """(``regenerated``, ``roundtrip``): pu-lab's header for ``design.input`` (None when the
+    files do not fix a whole report input, ``design.missing``) and, per macro both headers
+    define, file vs pu-lab (``delta_lsb`` for two integers, else ``delta_rel``)."""
     if design["missing"]:
-        return None
+        return None, {}
     from .. import profiles
     from ..report import report
     inp = copy.deepcopy(design["input"])
     inp.setdefault("profiles", {}).setdefault(vendor, {})
     try:
         text = profiles.header(report(inp), vendor)
-        mine = _decode([(f"pulab_{vendor}.h", text)], vendor, None)["macros"]
+        mine = _read([(f"pulab_{vendor}.h", text)], vendor, None)["macros"]
     except InputError as e:
-        return {"header": None, "error": e.message, "error_zh": e.message_zh, "macros": {}}
+        return {"header": None, "error": e.message, "error_zh": e.message_zh}, {}
     out = {}
     for n, m in macros.items():
         a, b = m["value"], mine.get(n, {}).get("value")
@@ -288,17 +288,17 @@ def _roundtrip(vendor: str, design: dict, macros: dict) -> dict | None:
             out[n] = {"file": a, "pulab": b, "delta_lsb": a - b}
         else:
             out[n] = {"file": a, "pulab": b, "delta_rel": (a - b) / b if b else None}
-    return {"header": text, "macros": out}
+    return {"header": text}, out
 
 
-def decode(files, vendor: str | None = None, defines=None) -> dict:
+def audit(files, profile: str | None = None, defines=None) -> dict:
     """The design a set of generated headers encodes, and what is wrong with it.
 
     Parameters
     ----------
     files : list of (name, text)
         The header files (a name's last path part resolves an ``#include``).
-    vendor : str, optional
+    profile : str, optional
         A vendor name (:func:`pulab.profiles.registry.names`); detected when not given.
     defines : list of str, optional
         ``NAME[=VALUE]`` definitions made before the files (a compiler's ``-D``: TI's board).
@@ -306,33 +306,35 @@ def decode(files, vendor: str | None = None, defines=None) -> dict:
     Returns
     -------
     dict
-        ``vendor``, ``target`` (the compiler whose widths folded the macros), ``files`` (in
+        ``profile`` (the vendor), ``target`` (the compiler whose widths folded the macros), ``files`` (in
         the order read), ``unresolved`` (included files not given), ``macros`` (every macro
         the vendor's decoder knows: ``value`` as the compiler computes it, ``type``, ``si``,
         ``unit``, ``meaning``, ``formula``, ``source`` (file:line), ``expansion``),
         ``other`` (every other object-like macro: ``value``, ``source``), ``unknown`` (macro
-        → the names it needs that no file defines), ``design``, ``findings`` and ``roundtrip``
-        (pu-lab's header for ``design.input``, and per macro both define: ``file``, ``pulab``,
-        ``delta_lsb`` or ``delta_rel``; null when ``design.missing`` is not empty).
+        → the names it needs that no file defines), ``design`` (``current_loop`` maps ``d``/``q``
+        to the gains the files hold: empty when they hold none), ``findings``, ``regenerated``
+        (pu-lab's header for ``design.input``: ``header``, or ``error``/``error_zh`` when the
+        report refuses it; None when ``design.missing`` is not empty) and ``roundtrip`` (per
+        macro both headers define: ``file``, ``pulab``, ``delta_lsb`` or ``delta_rel``).
 
     Raises
     ------
     InputError
         No file, an empty or non-text file, a preprocessor error (``#error``, an unclosed
         ``#if``) or a known macro that is no constant expression (each naming file:line),
-        no macro of a known vendor, an unknown ``vendor``.
+        no macro of a known vendor, an unknown ``profile``.
     """
-    out = _decode(files, vendor, defines)
-    out["roundtrip"] = _roundtrip(out["vendor"], out["design"], out["macros"])
+    out = _read(files, profile, defines)
+    out["regenerated"], out["roundtrip"] = _roundtrip(out["profile"], out["design"], out["macros"])
     return out
 
 
-def _decode(files, vendor: str | None, defines) -> dict:
+def _read(files, vendor: str | None, defines) -> dict:
     files = _check_files(files)
     defs = _defines(defines)
     decoders = _decoders()
     if vendor is not None and (not isinstance(vendor, str) or vendor not in decoders):
-        raise InputError("vendor", code="not_choice", choices=", ".join(decoders),
+        raise InputError("profile", code="not_choice", choices=", ".join(decoders),
                          got=shown(vendor))
     ordered = _order(files)
     src = _Source(ordered)
@@ -354,7 +356,7 @@ def _decode(files, vendor: str | None, defines) -> dict:
         counts = {v: len(set(f({}, {})["reads"]) & defined) for v, f in decoders.items()}
         best = max(counts.values())
         if best == 0:
-            raise InputError("files", code="decode_no_vendor",
+            raise InputError("files", code="audit_no_vendor",
                              names=", ".join(n for n, _ in files))
         vendor = next(v for v, c in counts.items() if c == best)
     dec = decoders[vendor]
@@ -366,7 +368,7 @@ def _decode(files, vendor: str | None, defines) -> dict:
         f = folded.get(n)
         if f is not None and "error" in f and pre.macros[n].body:
             file, line = lines.get(n, (src.names[-1], 0))
-            raise InputError("files", code="decode_define", file=file, line=line, name=n,
+            raise InputError("files", code="audit_define", file=file, line=line, name=n,
                              why=f["error"])
     values = {n: f["value"] for n, f in folded.items() if f["value"] is not None}
     try:
@@ -374,7 +376,7 @@ def _decode(files, vendor: str | None, defines) -> dict:
     except (ArithmeticError, ValueError) as e:
         # a decoder's formula on numbers that make no motor (a zero scale, a negative root):
         # the header is at fault, and the reply says so rather than a number
-        raise InputError("files", code="decode_values", vendor={"vendor": vendor},
+        raise InputError("files", code="audit_values", vendor={"vendor": vendor},
                          why=type(e).__name__) from None
     macros = {}
     for n, d in result["macros"].items():
@@ -389,6 +391,7 @@ def _decode(files, vendor: str | None, defines) -> dict:
                 "macro": n, "value": folded[n]["value"], "ideal": folded[n]["expansion"],
                 "ctype": folded[n]["type"]}))
     design = result["design"]
+    design["current_loop"] = design.get("current_loop") or {}
     design.setdefault("assumed", [])
     design["missing"] = [f"{sec}.{k}" for sec, keys in _REQUIRED for k in keys
                          if k not in design.get("input", {}).get(sec, {})]
@@ -400,6 +403,6 @@ def _decode(files, vendor: str | None, defines) -> dict:
              for n, f in folded.items() if n not in macros and n in lines
              and f["value"] is not None}
     unknown = {n: f["unknown"] for n, f in folded.items() if f["unknown"]}
-    return {"vendor": vendor, "target": target, "files": [n for n, _ in ordered],
+    return {"profile": vendor, "target": target, "files": [n for n, _ in ordered],
             "unresolved": list(pre.unresolved), "macros": macros, "other": other,
             "unknown": unknown, "design": design, "findings": findings}

@@ -1,4 +1,4 @@
-"""Vendor headers read back (pulab.analyses.decode): real generated headers, each decoded value
+"""Vendor headers read back (pulab.analyses.audit): real generated headers, each decoded value
 checked against a number the header itself prints (a comment, the MCAT JSON) or the vendor's
 formula worked by hand here; pu-lab's own headers decoded back to the report's design.
 
@@ -17,7 +17,7 @@ import pytest
 
 from conftest import ROOT, SEED_INPUT, chinese
 from pulab import profiles
-from pulab.analyses.decode import decode
+from pulab.analyses.audit import audit
 from pulab.report import report
 from pulab.schema.errors import InputError
 
@@ -33,23 +33,23 @@ def _files(vendor: str, names) -> list:
 
 @pytest.fixture(scope="module")
 def st():
-    return decode(_files("st", ST_SET))
+    return audit(_files("st", ST_SET))
 
 
 @pytest.fixture(scope="module")
 def nxp():
-    return decode(_files("nxp", ["m1_pmsm_appconfig.h"]))
+    return audit(_files("nxp", ["m1_pmsm_appconfig.h"]))
 
 
 @pytest.fixture(scope="module")
 def ti():
-    return decode(_files("ti", ["user_mtr1.h", "user_common.h"]), defines=["BSXL8323RS_REVA"])
+    return audit(_files("ti", ["user_mtr1.h", "user_common.h"]), defines=["BSXL8323RS_REVA"])
 
 
 # -- ST MCSDK (dronectl/g431-mcsdk : Inc/) -------------------------------------------------
 
 def test_st_set_is_detected_and_ordered_by_its_includes(st):
-    assert st["vendor"] == "st" and st["target"] == "arm"
+    assert st["profile"] == "st" and st["target"] == "arm"
     # parameters_conversion.h includes the other four: it is read last
     assert st["files"][-1] == "parameters_conversion.h"
     assert st["unresolved"] == ["mc_math.h"]
@@ -96,7 +96,7 @@ def test_st_unknown_macros_are_listed_not_guessed(st):
 
 
 def test_st_a_definition_supplies_what_a_missing_include_defines():
-    d = decode(_files("st", ST_SET), defines=["SQRT_3=1.732051"])
+    d = audit(_files("st", ST_SET), defines=["SQRT_3=1.732051"])
     # (int16_t)((3.3/1.732051)/0.09625565501973242) = 1.905256/0.0962557 = 19.79 → 19
     assert d["macros"]["MAX_VOLTAGE"]["value"] == 19
 
@@ -110,23 +110,24 @@ def test_st_design_input_is_a_report_input(st):
 
 def test_st_round_trip_regenerates_the_workbench_integers(st):
     # pu-lab's ST header for the decoded design: every integer the Workbench wrote comes back
-    rt = st["roundtrip"]["macros"]
+    rt = st["roundtrip"]
     ints = {n: m for n, m in rt.items() if "delta_lsb" in m}
     assert {"PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "NOMINAL_CURRENT", "TF_KPDIV",
             "POLE_PAIR_NUM", "PWM_FREQUENCY"} <= set(ints)
     assert all(m["delta_lsb"] == 0 for m in ints.values()), ints
     assert rt["PID_TORQUE_KP_DEFAULT"]["file"] == 2312
-    assert "#define PID_TORQUE_KP_DEFAULT" in st["roundtrip"]["header"]
+    assert "#define PID_TORQUE_KP_DEFAULT" in st["regenerated"]["header"]
 
 
 def test_nxp_round_trip_needs_the_back_emf(nxp):
-    assert nxp["design"]["missing"] == ["motor.bemf_v"] and nxp["roundtrip"] is None
+    assert nxp["design"]["missing"] == ["motor.bemf_v"] and nxp["regenerated"] is None \
+        and nxp["roundtrip"] == {}
 
 
 def test_st_edited_resistance_breaks_the_cancellation():
     files = [(n, t.replace("#define RS                     0.35", "#define RS 0.5"))
              for n, t in _files("st", ST_SET)]
-    d = decode(files)
+    d = audit(files)
     f = [f for f in d["findings"] if f["code"] == "inconsistent"]
     assert len(f) == 1 and "RS" in f[0]["macros"] and chinese(f[0]["message_zh"])
 
@@ -135,7 +136,7 @@ def test_st_edited_resistance_breaks_the_cancellation():
 
 def test_nxp_fractions_are_the_printed_decimals(nxp):
     m = nxp["macros"]
-    assert nxp["vendor"] == "nxp"
+    assert nxp["profile"] == "nxp"
     # ACC32(0.257498) = (acc32_t)(0.257498·32768) = (acc32_t)8437.69 → 8437
     assert m["M1_D_KP_GAIN"]["value"] == 8437
     # FRAC16(0.909091) = 29789.09 → 29789; ·N_MAX 4400 rpm
@@ -173,7 +174,7 @@ def test_nxp_every_constant_agrees_with_its_json(nxp):
 
 def test_nxp_a_constant_edited_by_hand_disagrees_with_the_json():
     (n, t), = _files("nxp", ["m1_pmsm_appconfig.h"])
-    d = decode([(n, t.replace("ACC32(0.257498)", "ACC32(0.27)"))])
+    d = audit([(n, t.replace("ACC32(0.257498)", "ACC32(0.27)"))])
     f = [f for f in d["findings"] if f["code"] == "json"]
     # 0.27·32768 = 8847 against 8437: 410 LSB
     assert [x["macros"] for x in f] == [["M1_D_KP_GAIN"]] and "410" in f[0]["message"]
@@ -182,7 +183,7 @@ def test_nxp_a_constant_edited_by_hand_disagrees_with_the_json():
 def test_nxp_sample_time_without_the_json(nxp):
     (n, t), = _files("nxp", ["m1_pmsm_appconfig.h"])
     start = t.index("/*\n{")
-    d = decode([(n, t[:start] + t[t.index("*/", start) + 2:])])
+    d = audit([(n, t[:start] + t[t.index("*/", start) + 2:])])
     # M1_SCALAR_INTEG_GAIN = ACC32(0.0586667) = 1922; /2^15/(2·293.333 Hz) = 9.998e-5 s
     assert d["design"]["ts_s"] == pytest.approx(1922 / 32768 / (2 * 293.333), rel=1e-6)
     assert d["design"]["mcat_inputs"] is None
@@ -198,12 +199,12 @@ def test_nxp_speed_integral_gain_loses_one_lsb_in_67(nxp):
 
 @pytest.fixture(scope="module")
 def nxp_float():
-    return decode(_files("nxp", ["m1_pmsm_appconfig_float.h"]))
+    return audit(_files("nxp", ["m1_pmsm_appconfig_float.h"]))
 
 
 def test_nxp_float_variant_is_si(nxp_float):
     d = nxp_float
-    assert d["vendor"] == "nxp" and d["design"]["variant"] == "float"
+    assert d["profile"] == "nxp" and d["design"]["variant"] == "float"
     # JSON: Rs 0.45 Ω, Ld 0.375 mH, Lq 0.429 mH, Ts 62.5 µs; the observer floats carry them
     mot = d["design"]["input"]["motor"]
     assert mot["rs_ohm"] == pytest.approx(0.45, rel=1e-4)
@@ -228,7 +229,7 @@ def test_nxp_float_startup_current_disagrees_with_its_json(nxp_float):
 def test_nxp_float_sample_time_without_the_json():
     (n, t), = _files("nxp", ["m1_pmsm_appconfig_float.h"])
     start = t.index("/*\n{")
-    d = decode([(n, t[:start] + t[t.index("*/", start) + 2:])])
+    d = audit([(n, t[:start] + t[t.index("*/", start) + 2:])])
     # ACC32(0.0183333) = 600 (600.75 truncated): 600/2^15/(2·146.667 Hz) = 62.42 µs, 0.12 % low
     assert d["design"]["ts_s"] == pytest.approx(600 / 32768 / (2 * 146.667), rel=1e-6)
     # TO_THETA_GAIN (0.0000198944F) = T_s/π
@@ -240,7 +241,7 @@ def test_nxp_float_sample_time_without_the_json():
 
 def test_ti_selected_motor_and_board(ti):
     m = ti["macros"]
-    assert ti["vendor"] == "ti" and ti["target"] == "c28x"
+    assert ti["profile"] == "ti" and ti["target"] == "c28x"
     # USER_MOTOR1 == Teknic_M2310PLN04K (122 in user_common.h): 4 pole pairs, 0.38157931f
     assert m["USER_MOTOR1_NUM_POLE_PAIRS"]["value"] == 4
     assert m["USER_MOTOR1_Rs_Ohm"]["value"] == pytest.approx(0.38157931, rel=1e-7)
@@ -253,7 +254,7 @@ def test_ti_selected_motor_and_board(ti):
 
 
 def test_ti_without_user_common_every_motor_id_is_zero():
-    d = decode(_files("ti", ["user_mtr1.h"]), defines=["BSXL8323RS_REVA"])
+    d = audit(_files("ti", ["user_mtr1.h"]), defines=["BSXL8323RS_REVA"])
     f = d["findings"][0]
     assert f["code"] == "if_undefined" and "Teknic_M2310PLN04K" in f["message"]
     # 0 == 0: the first motor (Estun_EMJ_04APB22_A) is read, not the one selected
@@ -264,7 +265,7 @@ def test_ti_flux_comment_matches_no_reading():
     files = [(n, t.replace("#define USER_MOTOR1 Teknic_M2310PLN04K",
                            "#define USER_MOTOR1 Anaheim_BLWS235D"))
              for n, t in _files("ti", ["user_mtr1.h", "user_common.h"])]
-    d = decode(files, defines=["BSXL8323RS_REVA"])
+    d = audit(files, defines=["BSXL8323RS_REVA"])
     f = [f for f in d["findings"] if f["code"] == "comment_value"]
     assert len(f) == 1 and "4.11 V/krpm" in f[0]["message"]
     # 0.560590863 V/Hz at 2 pole pairs: 0.560590863·2·1000/60 = 18.69 V phase peak per krpm,
@@ -274,7 +275,7 @@ def test_ti_flux_comment_matches_no_reading():
 
 def test_ti_without_a_board_the_files_own_error_names_its_line():
     with pytest.raises(InputError) as e:
-        decode(_files("ti", ["user_mtr1.h", "user_common.h"]))
+        audit(_files("ti", ["user_mtr1.h", "user_common.h"]))
     assert "user_mtr1.h:571" in e.value.message and "#error" in e.value.message
 
 
@@ -282,12 +283,12 @@ def test_ti_without_a_board_the_files_own_error_names_its_line():
 
 @pytest.fixture(scope="module")
 def mchp():
-    return decode(_files("microchip", ["motor_params.h", "foc_params.h"]))
+    return audit(_files("microchip", ["motor_params.h", "foc_params.h"]))
 
 
 def test_microchip_constants_are_their_printed_si_values(mchp):
     m = mchp["macros"]
-    assert mchp["vendor"] == "microchip"
+    assert mchp["profile"] == "microchip"
     # no _SCALE macros in this version: the scale is the comment's SI value over its Q value,
     # both printed with 5–6 digits (relative error ≤ 0.5e-5/0.14737 = 3.4e-5)
     assert m["MCAF_MOTOR_RS"]["si"] == pytest.approx(0.24099626, rel=4e-5)  # +240.99626 mohm
@@ -312,7 +313,7 @@ def test_microchip_integer_edited_after_generation():
     files = [(n, t.replace("#define KIP                                 12007",
                            "#define KIP                                 13007"))
              for n, t in _files("microchip", ["motor_params.h", "foc_params.h"])]
-    f = [f for f in decode(files)["findings"] if f["code"] == "comment_stale"]
+    f = [f for f in audit(files)["findings"] if f["code"] == "comment_stale"]
     assert [x["macros"] for x in f] == [["KIP"]] and "Q15(0.36642)" in f[0]["message"]
 
 
@@ -323,7 +324,7 @@ def _own(vendor: str, extra: dict | None = None) -> tuple:
     inp["profiles"] = extra or {}
     r = report(inp)
     text = profiles.header(r, vendor)
-    return r, decode([(f"{vendor}.h", text)])
+    return r, audit([(f"{vendor}.h", text)])
 
 
 @pytest.mark.parametrize("vendor, extra, kp_name", [
@@ -334,7 +335,7 @@ def _own(vendor: str, extra: dict | None = None) -> tuple:
 ])
 def test_own_header_round_trip(vendor, extra, kp_name):
     r, d = _own(vendor, extra)
-    assert d["vendor"] == vendor
+    assert d["profile"] == vendor
     pi = r["current_pi"]["q"]
     c = d["design"]["current_loop"]["q"]
     # the integers' quantization: below 0.1 % for these gains at this motor
@@ -367,7 +368,7 @@ def test_inovance_integer_edited_after_the_raw_table():
     r = report({**copy.deepcopy(SEED_INPUT), "profiles": {}})
     text = profiles.header(r, "inovance").replace("PULAB_RPM                    15022",
                                                    "PULAB_RPM                    15100")
-    f = decode([("p.h", text)])["findings"]
+    f = audit([("p.h", text)])["findings"]
     assert [x["code"] for x in f] == ["inconsistent"] and "15022" in f[0]["message"]
 
 
@@ -387,18 +388,18 @@ def test_inovance_integer_edited_after_the_raw_table():
 ])
 def test_bad_input_names_the_file(files, field, words):
     with pytest.raises(InputError) as e:
-        decode(files)
+        audit(files)
     assert e.value.field == field and words in e.value.message
 
 
 def test_cli_exit_codes(tmp_path):
-    ok = subprocess.run([sys.executable, "-m", "pulab", "decode",
+    ok = subprocess.run([sys.executable, "-m", "pulab", "audit",
                          *(str(HEADERS / "st" / n) for n in ST_SET)],
                         capture_output=True, text=True, cwd=ROOT, env={"PYTHONPATH": "py"})
-    assert ok.returncode == 0 and json.loads(ok.stdout)["vendor"] == "st"
+    assert ok.returncode == 0 and json.loads(ok.stdout)["profile"] == "st"
     empty = tmp_path / "empty.h"
     empty.write_text("")
-    bad = subprocess.run([sys.executable, "-m", "pulab", "decode", str(empty)],
+    bad = subprocess.run([sys.executable, "-m", "pulab", "audit", str(empty)],
                          capture_output=True, text=True, cwd=ROOT, env={"PYTHONPATH": "py"})
     assert bad.returncode == 2 and bad.stdout == ""
     assert bad.stderr.count("\n") == 1 and bad.stderr.startswith("error: files[0]: ")
@@ -406,7 +407,7 @@ def test_cli_exit_codes(tmp_path):
 
 def test_mutated_headers_end_in_a_result_or_one_input_error():
     """500 seeded mutations of the real headers (characters deleted, doubled, swapped for C
-    punctuation): each decodes or raises InputError, nothing else."""
+    punctuation): each is audited or raises InputError, nothing else."""
     import random
     rng = random.Random(32)
     texts = [t for v, names in (("st", ST_SET[:2]), ("nxp", ["m1_pmsm_appconfig.h"]),
@@ -425,8 +426,148 @@ def test_mutated_headers_end_in_a_result_or_one_input_error():
             else:
                 t.insert(k, t[k] * rng.randint(1, 50))
         try:
-            decode([("m.h", "".join(t))])
+            audit([("m.h", "".join(t))])
             seen["ok"] += 1
         except InputError:
             seen["error"] += 1
     assert seen["ok"] > 100 and seen["error"] > 10, seen
+
+
+# -- the contract outside tests rely on: keys, shapes, exit codes -----------------------------
+
+_MACRO_KEYS = {"value", "si", "unit", "meaning", "formula", "source"}
+_LOOP_KEYS = {"kp_v_per_a", "ki_v_per_a_s", "bandwidth_hz", "zero_rad_s", "cancels_plant"}
+_FINDING_KEYS = {"severity", "code", "macros", "message", "message_zh", "advice"}
+_DESIGN_INPUTS = (("motor", "rs_ohm"), ("motor", "ld_h"), ("motor", "lq_h"), ("motor", "pole_pairs"),
+                  ("drive", "ts_s"), ("drive", "udc_v"))
+
+
+def _cli(*args, stdin=None):
+    return subprocess.run([sys.executable, "-m", "pulab", *map(str, args)], input=stdin,
+                          capture_output=True, text=True, cwd=ROOT, env={"PYTHONPATH": "py"})
+
+
+def _check_contract_shape(out: dict, profile: str) -> None:
+    assert out["profile"] == profile
+    assert out["macros"]
+    for name, m in out["macros"].items():
+        assert _MACRO_KEYS <= set(m), name
+        assert isinstance(m["value"], (int, float)) and not isinstance(m["value"], bool), name
+        assert m["si"] is None or isinstance(m["si"], float), name
+        assert m["unit"] is None or isinstance(m["unit"], str), name
+        assert all(isinstance(m[k], str) for k in ("meaning", "formula", "source")), name
+    d = out["design"]
+    assert {"input", "current_loop", "speed_loop", "observer"} <= set(d)
+    # each of these is in design.input, or named in design.missing when the files do not fix it
+    for sec, key in _DESIGN_INPUTS:
+        v = d["input"].get(sec, {}).get(key)
+        assert isinstance(v, (int, float)) or f"{sec}.{key}" in d["missing"], (sec, key)
+    assert set(d["current_loop"]) <= {"d", "q"}
+    for axis, c in d["current_loop"].items():
+        assert _LOOP_KEYS <= set(c), axis
+        assert isinstance(c["cancels_plant"], bool)
+        assert all(isinstance(c[k], float) for k in ("kp_v_per_a", "ki_v_per_a_s", "bandwidth_hz"))
+    assert d["speed_loop"] is None or isinstance(d["speed_loop"], dict)
+    assert d["observer"] is None or isinstance(d["observer"], dict)
+    for f in out["findings"]:
+        assert set(f) == _FINDING_KEYS
+        assert isinstance(f["macros"], list) and all(isinstance(n, str) for n in f["macros"])
+        assert chinese(f["message_zh"])
+
+
+def test_cli_output_has_every_key_and_shape_of_the_contract():
+    p = _cli("audit", *(HEADERS / "st" / n for n in ST_SET), "--profile", "st",
+             "-D", "SQRT_3=1.732051")
+    assert p.returncode == 0 and p.stderr == "", p.stderr
+    out = json.loads(p.stdout)
+    _check_contract_shape(out, "st")
+    assert out["design"]["missing"] == []
+    assert all(isinstance(out["design"]["input"][s][k], (int, float)) for s, k in _DESIGN_INPUTS)
+    assert set(out["design"]["current_loop"]) == {"d", "q"}
+    # roundtrip.NAME for every macro with a value in both the file set and pu-lab's header
+    mine = audit([("pulab_st.h", out["regenerated"]["header"])], "st")["macros"]
+    both = {n for n, m in out["macros"].items() if n in mine}
+    assert both and set(out["roundtrip"]) == both
+    for n, r in out["roundtrip"].items():
+        a, b = out["macros"][n]["value"], mine[n]["value"]
+        assert (r["file"], r["pulab"]) == (a, b), n
+        if isinstance(a, int) and isinstance(b, int):
+            assert set(r) == {"file", "pulab", "delta_lsb"} and r["delta_lsb"] == a - b, n
+        else:
+            assert set(r) == {"file", "pulab", "delta_rel"}, n
+    # design.input is a valid `pulab report` input
+    rep = _cli("report", "-", stdin=json.dumps(out["design"]["input"]))
+    assert rep.returncode == 0 and json.loads(rep.stdout)["input"]["motor"]["rs_ohm"] == 0.35
+
+
+@pytest.mark.parametrize("vendor, names, defines", [
+    ("nxp", ["m1_pmsm_appconfig.h"], []),
+    ("ti", ["user_mtr1.h", "user_common.h"], ["BSXL8323RS_REVA"]),
+    ("microchip", ["motor_params.h", "foc_params.h"], []),
+])
+def test_api_reply_has_the_contract_shape_and_equals_the_cli(vendor, names, defines):
+    from pulab.api import call_json
+    # named as the CLI names them (its path), so that ``source`` and ``files`` agree too
+    files = [{"name": str(HEADERS / vendor / n), "text": t} for n, t in _files(vendor, names)]
+    out = json.loads(call_json("audit", json.dumps({"files": files, "define": defines})))
+    assert out["ok"] is True and set(out) == {"ok", "audit"}
+    r = out["audit"]
+    assert isinstance(r["roundtrip"], dict)
+    for m in r["roundtrip"].values():
+        assert {"file", "pulab"} < set(m) and ("delta_lsb" in m) != ("delta_rel" in m)
+    _check_contract_shape(r, vendor)
+    given = json.loads(call_json("audit", json.dumps({"files": files, "profile": vendor,
+                                                      "define": defines})))
+    assert given == out
+    p = _cli("audit", *(HEADERS / vendor / n for n in names), *(a for d in defines for a in ("-D", d)))
+    assert p.returncode == 0 and json.loads(p.stdout) == r
+
+
+def _one_error_line(p, field: str) -> None:
+    assert p.returncode == 2 and p.stdout == "", p
+    assert p.stderr.count("\n") == 1 and p.stderr.startswith(f"error: {field}: "), p.stderr
+
+
+def test_cli_bad_input_is_one_line_and_exit_2(tmp_path):
+    binary = tmp_path / "firmware.bin"
+    binary.write_bytes(b"\x7fELF\x02\x01\x01\x00" + bytes(range(256)) * 4)
+    _one_error_line(_cli("audit", binary), "files[0]")
+    bomb = tmp_path / "bomb.h"
+    bomb.write_text("#define RS 0.35\n" + "".join(f"#define M{i} (M{i+1} M{i+1} M{i+1})\n"
+                                                 for i in range(20)) + "#define M20 1\n")
+    p = _cli("audit", bomb)
+    _one_error_line(p, "files")
+    assert "bomb.h:2" in p.stderr  # the #define of M0, 3^20 tokens
+    big = tmp_path / "big.h"
+    with open(big, "w") as f:  # 10 MB of valid #defines
+        f.write("#define RS 0.35\n" + "#define X 1\n" * 900_000)
+    assert big.stat().st_size > 10_000_000
+    _one_error_line(_cli("audit", big), "files[0]")
+    _one_error_line(_cli("audit", "-", stdin="#define RS 0.35\n" + "#define X 1\n" * 900_000),
+                    "files[0]")
+    other = tmp_path / "config.h"
+    other.write_text("#define LED_PIN 13\n#define BAUD 115200\n")
+    p = _cli("audit", other)
+    _one_error_line(p, "files")
+    assert "no #define of a known vendor" in p.stderr
+    _one_error_line(_cli("audit", HEADERS / "nxp" / "m1_pmsm_appconfig.h", "--profile", "abb"),
+                    "profile")
+    _one_error_line(_cli("audit", tmp_path / "missing.h"), "files[0]")
+
+
+@pytest.mark.parametrize("req, field", [
+    ({"files": [{"name": "big.h", "text": "#define RS 0.35\n" + "#define X 1\n" * 900_000}]},
+     "files[0]"),
+    ({"files": [{"name": "b.h", "text": "#define RS 0.35\n" + "".join(
+        f"#define M{i} (M{i+1} M{i+1} M{i+1})\n" for i in range(20)) + "#define M20 1\n"}]}, "files"),
+    ({"files": [{"name": "a.bin", "text": "\x7fELF\x00\x01"}]}, "files[0]"),
+    ({"files": [{"name": "c.h", "text": "#define LED_PIN 13\n"}]}, "files"),
+    ({"files": [{"name": "a.h", "text": "#define RS 0.35\n"}], "profile": "abb"}, "profile"),
+    ({"files": [], "profile": "st"}, "files"),
+    ({"files": [{"name": "a.h", "text": "#define RS 0.35\n"}], "vendor": "st"}, "vendor"),
+])
+def test_api_bad_input_names_its_field(req, field):
+    from pulab.api import call_json
+    out = json.loads(call_json("audit", json.dumps(req)))
+    assert out["ok"] is False and out["field"] == field, out
+    assert out["message"] and chinese(out["message_zh"])

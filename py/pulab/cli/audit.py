@@ -1,16 +1,16 @@
-"""The ``decode`` subcommand: read generated vendor headers back into their design.
+"""The ``audit`` subcommand: read generated vendor headers back into their design.
 
 ::
 
-    pulab decode pmsm_motor_parameters.h drive_parameters.h power_stage_parameters.h \\
+    pulab audit pmsm_motor_parameters.h drive_parameters.h power_stage_parameters.h \\
         parameters_conversion.h                       # ST MCSDK set, vendor detected
-    pulab decode user_mtr1.h user_common.h --vendor ti -D BSXL8323RS_REVA
+    pulab audit user_mtr1.h user_common.h --profile ti -D BSXL8323RS_REVA
 
-prints :func:`pulab.analyses.decode.decode`'s result as JSON (docs/contract.md, "Decode").
+prints :func:`pulab.analyses.audit.audit`'s result as JSON (docs/contract.md, "Audit").
 Exit status 0 (findings are data); 2 with one line ``error: FIELD: MESSAGE`` on stderr: a
 file that cannot be read, is empty, is no text or is larger than the limit, a preprocessor
 error or a known ``#define`` that does not evaluate (``FILE:LINE``), no macro of a known
-vendor, an unknown ``--vendor``.
+vendor, an unknown ``--profile``.
 """
 
 from __future__ import annotations
@@ -19,16 +19,16 @@ import json
 import os
 import sys
 
-from ..analyses.decode import MAX_CHARS, decode
+from ..analyses.audit import MAX_CHARS, audit
 from ..schema.errors import InputError
 
-__all__ = ["add_decode_parser", "read_header"]
+__all__ = ["add_audit_parser", "read_header"]
 
 
-def add_decode_parser(sub) -> None:
-    p = sub.add_parser("decode", help="read generated vendor headers back into their design")
+def add_audit_parser(sub) -> None:
+    p = sub.add_parser("audit", help="read generated vendor headers back into their design")
     p.add_argument("files", nargs="+", help="header files ('-' = stdin)")
-    p.add_argument("--vendor", default=None, help="inovance, ti, nxp, st or microchip "
+    p.add_argument("--profile", default=None, help="inovance, ti, nxp, st or microchip "
                    "(default: detected from the macro names)")
     p.add_argument("-D", dest="defines", action="append", default=[], metavar="NAME[=VALUE]",
                    help="a definition made before the files, as a compiler's -D")
@@ -48,7 +48,7 @@ def read_header(path: str, k: int) -> tuple:
             with open(path, "rb") as f:
                 data = f.read(MAX_CHARS + 1)
     except OSError as e:
-        raise InputError(field, code="decode_not_text", name=path,
+        raise InputError(field, code="audit_not_text", name=path,
                          why=e.strerror or type(e).__name__) from None
     if len(data) > MAX_CHARS:
         raise InputError(field, code="json_too_long", limit=MAX_CHARS)
@@ -62,7 +62,7 @@ def read_header(path: str, k: int) -> tuple:
 def run(args) -> int:
     try:
         files = [read_header(p, k) for k, p in enumerate(args.files)]
-        out = decode(files, args.vendor, args.defines)
+        out = audit(files, args.profile, args.defines)
     except InputError as e:
         print(f"error: {e.field}: {e.message}", file=sys.stderr)
         return 2
