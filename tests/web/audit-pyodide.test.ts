@@ -36,8 +36,11 @@ describe('the audit kind in Pyodide', () => {
     const pulab = await bootPulab();
     const bench = pulab.py.pyimport('pulab.benchmark') as { audit_timing(n: number): unknown };
     const json = pulab.py.pyimport('json') as { dumps(x: unknown): string };
-    const t = JSON.parse(json.dumps(bench.audit_timing(3))) as { macros: number; median_ms: number; min_ms: number };
-    console.log(`audit of a ${t.macros}-macro ST set in Pyodide: ${t.median_ms.toFixed(1)} ms median, ${t.min_ms.toFixed(1)} ms min (target ≤ 1 s)`);
+    const t0 = performance.now();
+    const t = JSON.parse(json.dumps(bench.audit_timing(3))) as { macros: number; median_ms: number; min_ms: number; p95_ms: number };
+    const wall = performance.now() - t0; // a warm-up and 3 runs, as the JS clock sees them
+    console.log(`audit of a ${t.macros}-macro ST set in Pyodide: ${t.min_ms.toFixed(1)} / ${t.median_ms.toFixed(1)} / ${t.p95_ms.toFixed(1)} ms `
+      + `(min / median / max of 3; ${(wall / 4).toFixed(1)} ms per call by the JS clock; target ≤ 1 s)`);
     expect(t.macros).toBe(600);
   }, 120_000);
 });
