@@ -32,8 +32,9 @@ __all__ = ["PANELS", "Report", "report_html", "panel_html", "panel_tables", "oem
            "oembed_page", "OEMBED_HEIGHT"]
 
 #: The panel ids of ``?embed=`` and ``<pu-lab-panel panel>`` (web/src/panels/registry.ts).
-PANELS = ("review", "datasheet", "bases", "pu", "vendor", "constants", "current", "pll", "loop",
-          "qcalc", "code", "conventions", "sweep", "prove", "batch", "vendors", "board", "fw", "docs")
+PANELS = ("review", "datasheet", "acim", "bases", "pu", "vendor", "constants", "current", "pll",
+          "loop", "qcalc", "code", "conventions", "sweep", "prove", "batch", "vendors", "board", "fw",
+          "docs")
 
 _BASE_UNITS = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",
                "psi_b": "Wb", "T_b": "s", "P_b": "W", "theta_b": "rad"}

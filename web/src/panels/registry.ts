@@ -19,11 +19,13 @@ import { batchPanel } from './batch';
 import { vendorsPanel } from './vendors';
 import { boardPanel } from './board';
 import { fwPanel } from './fw';
+import { acimPanel } from './acim';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
   reviewPanel, // first: the design review is the page's summary
   datasheetPanel,
+  acimPanel,
   basesPanel,
   puPanel,
   vendorPanel,
