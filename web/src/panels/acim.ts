@@ -42,7 +42,7 @@ export const acimPanel: Panel = {
       table(['', 'kp [Ω]', 'ki [Ω/s]', 'pm_kp (Q12)', 'pm_ki (Q16)'], (['d', 'q'] as const).map((x) => [x,
         num(`current_pi.${x}.kp`, pi[x].kp, { sig: 7 }), num(`current_pi.${x}.ki`, pi[x].ki, { sig: 7 }),
         num(`current_pi.${x}.pm_kp`, pi[x].pm_kp, { kind: 'int' }), num(`current_pi.${x}.pm_ki`, pi[x].pm_ki, { kind: 'int' })])),
-      h('p', { class: 'note' }, `${t('acimInovance')}: ${a.inovance.applies.join('; ')}. ${a.inovance.not_covered}.`),
+      h('p', { class: 'note' }, t('acimInovance')),
       h('h3', {}, t('acimVendors')),
       ...Object.entries(profiles).map(([v, p]) => p.available && p.constants
         ? h('div', { class: 'acim-vendor', 'data-vendor': v },
