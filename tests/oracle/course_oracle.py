@@ -19,6 +19,7 @@ import control
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from oracle import oracle_report, parse  # noqa: E402
 from loop_oracle import measure, pi  # noqa: E402
+from acim_oracle import ST_MEZ, expected as acim_expected  # noqa: E402
 
 #: Trainee number → the input of the motor a trainee link carries.
 TRAINEES = {
@@ -141,4 +142,11 @@ def expected(inp: dict) -> dict:
         "board-counts": 4096 * 0.007 * 10 / 3.3,
         "board-pu": 3.3 / (0.007 * 10) / 4096 / B["I_b"],
         "board-gain": 0.8 * 3.3 / (2 * 0.007 * math.sqrt(2) * P["rated_current_a"]),
+        # the induction motor of every trainee: ST's ACIM GUI example (acim_oracle.ST_MEZ)
+        "acim-sigma": ACIM["acim"]["sigma"],
+        "acim-tau-r-pu": ACIM["acim"]["pu"]["tau_r_s"],
+        "acim-pm-kp": ACIM["current_pi"]["d"]["pm_kp"],
     }
+
+
+ACIM = acim_expected(ST_MEZ)
