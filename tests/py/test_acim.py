@@ -219,3 +219,23 @@ def test_benchmark_line():
          "sim": {"steps": 1, "total_s": 1.0, "steps_per_s": 1.0, "fixed_no_memo_s": 1.0,
                  "vendors_s": 1.0}}
     assert "report(), induction motor:" in format_run(r)
+
+
+def test_every_api_kind_answers_an_induction_motor():
+    """Each kind that takes an input: a report of it, or an error naming a field (never a crash)."""
+    from pulab.api import KINDS, call_json
+    inp = _case("01_st_mez_acim")["input"]
+    valid = {"input": inp, "x": {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3},
+             "profile": "nxp", "from": "inovance", "axis": "q", "values": {"pm_kp": 1180, "pm_ki": 4720},
+             "summaries": [], "start": 0, "count": 1, "ranges": {"motor.rs_ohm": [1, 2]},
+             "budget": 20, "name": "vendor.Rpm", "integers": {}, "id": "acim-sigma", "answer": "0.27"}
+    replies = {}
+    for kind in KINDS:
+        if kind.startswith(("trace", "qcalc", "batch", "course.spec", "course.trainees")):
+            continue
+        req = inp if kind == "report" else valid
+        replies[kind] = json.loads(call_json(kind, json.dumps(req)))
+    assert replies["report"]["ok"] is True
+    for kind, out in replies.items():
+        if kind != "report":
+            assert out["ok"] is False and out["field"] in ("motor.kind", "sim"), (kind, out)

@@ -42,9 +42,10 @@ class _Ctx:
     """The report of one input, with the loop analysis and the tracer computed only when asked."""
 
     def __init__(self, inp: dict):
-        from ..report import report
+        from ..report import report, require_pmsm
         self.input = inp
         self.r = report(inp)
+        require_pmsm(self.r["input"])  # a trainee's motor is a PMSM (the exercises read its firmware)
         self._loop = None
         self._trace = None
         self.fw = None
