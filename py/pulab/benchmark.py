@@ -14,6 +14,8 @@ import json
 import sys
 import time
 
+from .analyses.exercises import EXAMPLE_ACIM
+
 __all__ = ["run", "report_timing", "loop_timing", "acim_timing", "ACIM", "trace_timing", "board_timing", "format_run", "MOTORS",
            "TRACE_SNIPPET", "TRACE_INPUTS"]
 
@@ -224,12 +226,7 @@ def board_timing(n: int = 200) -> dict:
 
 
 #: An induction motor (ST's public ACIM GUI example), with the loop analysis and a speed loop.
-ACIM = {"motor": {"kind": "acim", "rated_voltage_v": 72.74613391789285, "rated_current_a": 1.5,
-                  "rated_freq_hz": 50, "rated_speed_rpm": 1370, "pole_pairs": 2, "rs_ohm": 0.6,
-                  "rr_ohm": 0.4, "lls_h": 0.009, "llr_h": 0.009, "lm_h": 0.0525,
-                  "magnetizing_current_a": 0.55},
-        "drive": {"udc_v": 150, "ts_s": 1e-4},
-        "analysis": {"speed": {"inertia_kg_m2": 1e-3}}}
+ACIM = {**EXAMPLE_ACIM, "analysis": {"speed": {"inertia_kg_m2": 1e-3}}}
 
 
 def acim_timing(n: int = 30) -> dict:

@@ -161,7 +161,9 @@ def expected(inp: dict) -> dict:
     pi = {"method": method, "bandwidth_hz": float(bw), "d": axis, "q": copy.deepcopy(axis)}
     # the vendors' floats
     # the generators print 12 (MCAT) and 7 (ST GUI) decimals; the compiler rounds that text
-    f32 = lambda x, d: float(np.float32(float(np.format_float_positional(x, precision=d, unique=False))))  # noqa: E731,E501
+    def f32(x: float, decimals: int) -> float:
+        printed = np.format_float_positional(x, precision=decimals, unique=False)
+        return float(np.float32(float(printed)))
     w0, z0 = 2 * math.pi * bw, zeta
     nxp_kp, nxp_ki = 2 * z0 * w0 * l_sig - rs, w0 * w0 * l_sig * ts
     vendors = {
