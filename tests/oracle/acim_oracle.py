@@ -177,6 +177,14 @@ def expected(inp: dict) -> dict:
                "LM": f32(lm, 7), "LR": f32(lr, 7), "LS": f32(ls, 7), "TAU_R": f32(tau_r, 7),
                "TAU_S": f32(ls / rs, 7), "SIGMA": f32(sigma, 7), "IMAGN_A": f32(math.sqrt(2) * i_m, 7),
                "NOMINAL_PHASE_VOLTAGE": f32(u_ll / math.sqrt(3), 7), "NOMINAL_FREQ": f32(f_n, 7)}}
+    # TI's CUR_CONST_MACRO in C float (Kt through double: PI is a double literal), then
+    # (long)(x·2^24) of each float
+    s32 = np.float32
+    tr32 = s32(lr) / s32(rr)
+    f_b = _get(inp, "drive", "base_freq_hz", f_n)
+    kt32 = s32(1.0 / (float(tr32 * s32(2)) * 3.14159265358979 * float(s32(f_b))))
+    vendors["ti"] = {"Kr": int(float(s32(ts) / tr32) * 2 ** 24), "Kt": int(float(kt32) * 2 ** 24),
+                     "K": int(float(s32(ts) * s32(f_b)) * 2 ** 24)}
     out = {"acim": a, "current_pi": pi, "vendor_values": vendors}
     if "analysis" in inp:
         j = inp["analysis"]["speed"]["inertia_kg_m2"]

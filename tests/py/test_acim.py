@@ -135,8 +135,9 @@ def test_vendor_header_reproduced(vendor, header, case):
 
 def test_vendors_without_acim_say_so():
     p = pulab.report(_case("01_st_mez_acim")["input"])["profiles"]
-    assert p["nxp"]["available"] and p["st"]["available"]
-    for name in ("inovance", "ti", "microchip"):
+    assert p["nxp"]["available"] and p["st"]["available"] and p["ti"]["available"]
+    assert p["ti"]["constants"]["Kr"]["format"] == "IQ24"
+    for name in ("inovance", "microchip"):
         assert p[name] == {"available": False, "reason": "no public induction-motor scaling is "
                                                          "modelled for this vendor in pu-lab"}
 
@@ -203,7 +204,7 @@ def test_text_format_and_families_refuse():
     from pulab.report import format_text
     text = format_text(pulab.report(inp))
     assert "Induction motor (I_m given)" in text and "tau_r_s                0.15375" in text
-    assert "Profile ti: no public induction-motor scaling" in text
+    assert "Profile microchip: no public induction-motor scaling" in text
     from pulab.analyses.sweep import make_plan
     with pytest.raises(InputError) as e:
         make_plan({"input": inp, "x": {"path": "motor.rated_current_a", "start": 1, "stop": 2}})

@@ -13,7 +13,7 @@ Examples
 ...     "rated_freq_hz": 50, "rated_speed_rpm": 1370, "pole_pairs": 2, "rs_ohm": 0.6,
 ...     "rr_ohm": 0.4, "lls_h": 0.009, "llr_h": 0.009, "lm_h": 0.0525},
 ...     "drive": {"udc_v": 150, "ts_s": 1e-4}})
->>> round(r["acim"]["sigma"], 7), r["profiles"]["ti"]["available"]
+>>> round(r["acim"]["sigma"], 7), r["profiles"]["microchip"]["available"]
 (0.2712671, False)
 """
 

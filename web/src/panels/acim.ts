@@ -47,8 +47,8 @@ export const acimPanel: Panel = {
       ...Object.entries(profiles).map(([v, p]) => p.available && p.constants
         ? h('div', { class: 'acim-vendor', 'data-vendor': v },
           h('h4', {}, v),
-          table([t('quantity'), 'float32', '= ', 'err %'], Object.entries(p.constants).map(([k, c]) => [h('code', {}, k),
-            num(`profiles.${v}.constants.${k}.value`, c.value, { sig: 9 }), c.expression,
+          table([t('quantity'), t('value'), '', '=', 'err %'], Object.entries(p.constants).map(([k, c]) => [h('code', {}, k),
+            num(`profiles.${v}.constants.${k}.value`, c.value, { sig: 9 }), c.format, c.expression,
             num(`profiles.${v}.constants.${k}.error_pct`, c.error_pct, { sig: 3 })])),
           h('p', { class: 'note' }, p.not_covered ?? ''))
         : h('p', { class: 'note', 'data-vendor': v }, h('strong', {}, v), `: ${t('acimNoProfile')}`)),

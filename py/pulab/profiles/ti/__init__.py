@@ -1,6 +1,7 @@
 """TI MotorWare / InstaSPIN: per unit of the hardware full scale, IQ24."""
 
 from .header import header
+from .induction import acim
 from .pi import controller
 from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
 
