@@ -262,7 +262,9 @@ def _acim_report(n: dict) -> dict:
         out["loop"] = _loop.analyze(_acim.loop_view(out, a), n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
         extra = _loop.warnings(out["loop"])
-    out["review"] = _acim.review(n, a)
+        # the flux build-up in TI's fixed point (asked with the analysis: thousands of periods)
+        out["acim_flux"] = _acim.flux_buildup(a, n, out["profiles"]["ti"]["constants"]["Kr"]["value"])
+    out["review"] = _acim.review(n, a, flux=out.get("acim_flux"))
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious] + [render(k, p, "en") for k, p in extra]
     out["warnings_zh"] = [x["message_zh"] for x in serious] + [render(k, p, "zh")

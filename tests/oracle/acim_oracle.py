@@ -43,7 +43,7 @@ NXP_KV58 = {"motor": {"kind": "acim", "rated_voltage_v": 230, "rated_current_a":
                       "rs_ohm": 25.223, "rr_ohm": 23.004, "ls_h": 0.534, "lr_h": 0.534,
                       "lm_h": 0.487},
             "drive": {"udc_v": 325, "ts_s": 1e-4},
-            "current_loop": {"bandwidth_hz": 150, "damping": 1}}
+            "current_loop": {"bandwidth_hz": 150, "damping": 1}, "analysis": {}}
 # Krause, Analysis of Electric Machinery (3-hp, 220 V, 4-pole, 60 Hz): r_s 0.435 Ω, X_ls = X'_lr
 # 0.754 Ω, X_M 26.13 Ω, r'_r 0.816 Ω at 60 Hz; rated 5.8 A, 1710 rpm.
 KRAUSE_3HP = {"motor": {"kind": "acim", "rated_voltage_v": 220, "rated_current_a": 5.8,
@@ -187,11 +187,32 @@ def expected(inp: dict) -> dict:
                      "K": int(float(s32(ts) * s32(f_b)) * 2 ** 24)}
     out = {"acim": a, "current_pi": pi, "vendor_values": vendors}
     if "analysis" in inp:
+        out["acim_flux"] = _flux(ts, tau_r, a["pu"]["magnetizing_current_a"], vendors["ti"]["Kr"])
+    if "speed" in inp.get("analysis", {}):
         j = inp["analysis"]["speed"]["inertia_kg_m2"]
         out["speed_bases"] = {"w_mb": w_b / p, "n_mb_rpm": 60 * f_n / p, "torque_nm": t_mb,
                               "kt_nm_per_a": torque / (dq * i_q),
                               "inertia_constant_s": j * (w_b / p) ** 2 / (2 * p_b)}
     return out
+
+
+def _flux(ts: float, tau_r: float, i_d: float, kr: int) -> dict:
+    """TI's CUR_MOD update IMDs += (Kr·(IDs − IMDs)) >> 24 in Python integers, beside the same
+    update in float with Kr = T_s/τ_r, over 10·τ_r: the first periods at 95 % and the end."""
+    steps = math.ceil(10.0 * tau_r / ts)
+    ids = math.trunc(i_d * (1 << 24))
+    x, m, t95f, t95i = 0.0, 0, None, None
+    for k in range(1, steps + 1):
+        x = x + ts / tau_r * (i_d - x)
+        m = m + (kr * (ids - m) >> 24)
+        if t95f is None and x >= 0.95 * i_d:
+            t95f = k * ts
+        if t95i is None and m * 20 >= ids * 19:
+            t95i = k * ts
+    return {"steps": steps, "complete": True, "kr": kr, "id_ref": ids, "t95_float_s": t95f,
+            "t95_fixed_s": t95i, "final_float_pu": x, "final_fixed": m,
+            "final_fixed_pu": m / (1 << 24), "stall_lsb": ids - m, "stall_pct": 100.0 * (ids - m) / ids,
+            "events": {}}
 
 
 def _error_case(inp: dict, where: tuple, value, field: str) -> dict:
