@@ -18,12 +18,13 @@ import course from './i18n/course';
 import simfirmware from './i18n/simfirmware';
 import codeprove from './i18n/codeprove';
 import decode from './i18n/decode';
+import acim from './i18n/acim';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...decode.en };
+  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...decode.en, ...acim.en };
 
 export type Key = keyof typeof en;
 
@@ -46,6 +47,7 @@ const zh: Record<Key, string> = {
   ...simfirmware.zh,
   ...codeprove.zh,
   ...decode.zh,
+  ...acim.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

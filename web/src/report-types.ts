@@ -134,6 +134,26 @@ export interface Report {
   loop?: LoopReport;
   /** Present when the input has a `profiles` section (docs/contract.md, "Output: profiles.NAME"). */
   profiles?: Record<string, ProfileReport>;
+  /** Present for an induction motor (motor.kind = acim; docs/contract.md, "Induction motor"): then
+   * `pu`, `vendor`, `constants`, `mechanical` and `firmware` are absent. */
+  acim?: AcimReport;
+}
+
+/** The report's `acim` section: SI values (null where undefined), `pu`, `observer`, `inovance`. */
+export interface AcimReport {
+  [k: string]: unknown;
+  magnetizing_from: 'given' | 'no_load_estimate';
+  pu: Record<string, number | null>;
+  observer: Record<string, number>;
+  inovance: { applies: string[]; not_covered: string };
+}
+
+/** A vendor's induction-motor profile: its C floats, or why it has none. */
+export interface AcimProfile {
+  available: boolean;
+  reason?: string;
+  not_covered?: string;
+  constants?: Record<string, { value: number; ideal: number; error_pct: number; format: string; expression: string; flags: string[] }>;
 }
 
 /** One vendor profile of the report: its inputs, constants and bases. */

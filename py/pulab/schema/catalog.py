@@ -809,6 +809,13 @@ MESSAGES = {
                                    "等效电路给出的额定转差频率 {model:.4g} Hz = I_q/(2π·τ_r·I_m)，"
                                    "铭牌转速给出 {plate:.4g} Hz（{pct:+.3g} %）：R_r、L_r 或 I_m "
                                    "与铭牌不符"),
+    "finding.acim_flux_stall": ("TI's IQ24 current model stops {pct:.3g} % ({lsb} LSB) below the "
+                                "flux reference: _IQmpy(Kr = {kr}, error) floors to 0 once the error "
+                                "is below 2^24/Kr. Round the product (add 2^23 before the shift), "
+                                "keep more fraction bits in IMDs, or run the model at a longer period",
+                                "TI 的 IQ24 电流模型停在磁链给定以下 {pct:.3g} %（{lsb} LSB）：误差小于 "
+                                "2^24/Kr 后 _IQmpy(Kr = {kr}, 误差) 向下取整为 0。请对乘积做舍入（移位前加 "
+                                "2^23）、为 IMDs 保留更多小数位，或以更长的周期运行该模型"),
     "set_syntax": ("--set needs NAME=VALUE, got {got}", "--set 需要 NAME=VALUE，当前为 {got}"),
     "json_invalid": ("not valid JSON: {detail}", "不是合法的 JSON：{detail}"),
     "json_not_text": ("not valid JSON: the input is not text", "不是合法的 JSON：输入不是文本"),
