@@ -236,8 +236,8 @@ def bind(cfg: dict, report: dict, preload: int = 0) -> Binding:
         except InputError as e:
             raise InputError(field, code=e.code, **e.params) from None
     if integral is not None:
-        try:
-            input_values(checked, {integral: 0})
+        try:  # the preload fits the integrator (the d axis starts at 0)
+            input_values(checked, {integral: preload})
         except InputError as e:
             raise InputError(_F + "integral", code=e.code, **e.params) from None
     output = _name(cfg["output"])
@@ -252,17 +252,17 @@ def bind(cfg: dict, report: dict, preload: int = 0) -> Binding:
     params = {p.key for p in f.params if not isinstance(p.ctype, PtrT)} if f is not None else set()
     instances, zeroed = {}, []
     for axis in ("d", "q"):
-        given = _checked_values(checked, sets[axis], False)
-        pointers = {k: v for k, v in given.items() if k in checked.pointers}
+        given = dict(sets[axis])
+        if integral is not None:
+            given[integral] = preload if axis == "q" else 0
+        first = _checked_values(checked, {**given, **probe}, True)
+        pointers = {k: v for k, v in first.items() if k in checked.pointers}
         reads = set(checked.inputs_with(pointers))
         for n, field in bound.items():
             if n not in reads:
                 raise InputError(field, code="sim_code_unread", name=n)
-        if integral is not None:
-            given[integral] = _checked_values(
-                checked, {integral: preload if axis == "q" else 0}, False)[integral]
-        first = _checked_values(checked, {**given, **probe}, True)
-        zeroed = sorted(k for k in first if k not in given and k not in probe)
+        named = {_name(k) for k in given if isinstance(k, str)}
+        zeroed = sorted(k for k in first if k not in named and k not in probe)
         ranges = {n: (checked.symbols[n].ctype.min, checked.symbols[n].ctype.max) for n in bound}
         instances[axis] = Routine(checked, {k: v for k, v in first.items() if k not in probe},
                                   {k: v for k, v in first.items() if k in params and k not in probe},
