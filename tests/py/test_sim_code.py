@@ -246,3 +246,11 @@ def test_long_runs_are_refused_before_they_start():
     with pytest.raises(InputError) as e:
         pulab.report(inp)
     assert e.value.field == "sim.current.duration_s"
+
+
+def test_api_reply_names_the_field():
+    from pulab.api import call_json
+    inp = _with(output="pm_uq")
+    out = json.loads(call_json("report", json.dumps(inp)))
+    assert out["ok"] is False and out["field"] == "sim.current.code.output"
+    assert out["message_zh"]

@@ -48,7 +48,7 @@ from ...ctrace.tracing import DEFAULT_GLOBAL_Q, compile_code, input_values
 from ...fixedpoint.cint import CType
 from ...fixedpoint.qformat import round_half_away
 from ...schema.errors import InputError
-from ...schema.validate import shown
+from ...schema.validate import key_path, shown
 from ..slices import finish
 from . import vendor_loop
 
@@ -177,7 +177,7 @@ def _axis_sets(report: dict, given: dict) -> dict:
     """``set`` resolved per axis: {'d': {name: value}, 'q': {…}}."""
     out: dict = {"d": {}, "q": {}}
     for name, v in given.items():
-        field = f"{_F}set.{name}" if isinstance(name, str) and name.isprintable() else _F + "set"
+        field = key_path(_F + "set", name)
         if isinstance(v, dict):
             if set(v) != {"d", "q"}:
                 raise InputError(field, code="sim_code_set_value", got=shown(v))
