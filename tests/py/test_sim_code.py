@@ -254,3 +254,60 @@ def test_api_reply_names_the_field():
     out = json.loads(call_json("report", json.dumps(inp)))
     assert out["ok"] is False and out["field"] == "sim.current.code.output"
     assert out["message_zh"]
+
+
+#: A series PI in TI IQmath's shape (error, Up = Kp·error, Ui += Ki·Up saturated, output
+#: saturated), written for this test; reference and feedback bound separately.
+TI_STYLE_PI = """\
+#define GLOBAL_Q 24
+typedef struct { _iq Kp; _iq Ki; _iq Ui; _iq OutMax; } SeriesPi;
+_iq series_pi(SeriesPi *c, _iq ref, _iq fbk)
+{
+  _iq err = ref - fbk;
+  _iq up = _IQmpy(c->Kp, err);
+  c->Ui = _IQsat(c->Ui + _IQmpy(c->Ki, up), c->OutMax, -c->OutMax);
+  return _IQsat(up + c->Ui, c->OutMax, -c->OutMax);
+}
+"""
+
+
+def test_ti_style_iq_pi_with_reference_and_feedback_is_ti_run():
+    inp = _golden_input("05_servo220_400w.json")
+    inp["profiles"] = {}
+    r = pulab.report(inp)
+    assert r["profiles"]["ti"]["inputs"]["global_q"] == 24
+    out_max = code_loop.scale(r, "ti", current.voltage_limits(r)[0], None)["out_limit"]
+    binding = {"text": TI_STYLE_PI, "entry": "series_pi", "scale": "ti", "reference": "ref",
+               "feedback": "fbk", "output": "return",
+               "set": {"c.Kp": {"d": "profiles.ti.constants.Kp_Id",
+                                "q": "profiles.ti.constants.Kp_Iq"},
+                       "c.Ki": {"d": "profiles.ti.constants.Ki_Id",
+                                "q": "profiles.ti.constants.Ki_Iq"},
+                       "c.OutMax": out_max}}
+    out = current.run(r, sim.validate({"current": {"axis": "d", "code": binding}})["current"])
+    code, ti = out["code"], out["by_profile"]["ti"]
+    assert list(code["id"]) == list(ti["id"]) and list(code["iq"]) == list(ti["iq"])
+    assert list(code["ud"]) == list(ti["ud"])
+    assert code["zeroed"] == ["c.Ui"] and code["events"]["beyond_limit"] == 0
+
+
+@pytest.mark.parametrize("path", sorted(p.name for p in (ROOT / "tests/golden").glob("[0-9]*.json")))
+def test_seed_pi_as_c_is_pulab_fixed_on_every_golden_motor(path):
+    inp = _golden_input(path)
+    r = pulab.report(inp)
+    if current.voltage_limits(r)[2] is None:
+        with pytest.raises(InputError) as e:
+            current.run(r, sim.validate({"current": {"code": SEED_PI}})["current"])
+        assert e.value.field == "sim.current.code.scale"
+        return
+    # A wrapped maxu (stored negative) makes pulab's clamp of the q integral's start invert
+    # (iqsat with max < min moves even a zero start to a limit), which a routine starting at
+    # its own 0 does not do: then only the d axis, independent of q at standstill, is compared.
+    maxout, maxu = current.voltage_limits(r)[2]
+    wrapped = maxu != maxout << 12
+    for axis in ("d", "q"):
+        out = current.run(r, sim.validate({"current": {"axis": axis, "speed_hz": 0.0 if wrapped
+                                                       else 20.0, "code": SEED_PI}})["current"])
+        code, own = out["code"], out["variants"]["fixed"]
+        for k in ("fb_d", "ud") if wrapped else ("fb_d", "fb_q", "ud", "uq"):
+            assert list(code[k]) == list(own[k]), (axis, k)

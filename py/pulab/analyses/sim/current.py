@@ -346,8 +346,10 @@ def run_steps(report: dict, cfg: dict):
     if code is not None:  # bound first: a binding error costs no simulation
         sc = code_loop.scale(report, code["scale"], umax_pu, maxout if fixed else None)
         shift = code["integral_shift"]
+        # the back-EMF within the voltage limit, as every run here clamps its preload
+        top = sc["out_limit"] << shift
         preload = 0 if code["integral"] is None else \
-            round_half_away(z_si.bemf / sc["to_volt"] * 2.0 ** shift)
+            max(-top, min(top, round_half_away(z_si.bemf / sc["to_volt"] * 2.0 ** shift)))
         binding = code_loop.bind(code, report, preload)
     si = yield from run_float_steps(z_si, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts,
                                     umax_pu * u_b, imax_pu * u_b, ref_d, ref_q, z_si.bemf, n,
