@@ -17,12 +17,13 @@ import prove from './i18n/prove';
 import course from './i18n/course';
 import simfirmware from './i18n/simfirmware';
 import codeprove from './i18n/codeprove';
+import codeloop from './i18n/codeloop';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en };
+  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...codeloop.en };
 
 export type Key = keyof typeof en;
 
@@ -44,6 +45,7 @@ const zh: Record<Key, string> = {
   ...course.zh,
   ...simfirmware.zh,
   ...codeprove.zh,
+  ...codeloop.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };
