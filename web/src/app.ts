@@ -54,7 +54,8 @@ export class App {
         else this.renderPanels();
         if (this.session.source === 'live') this.layout.settle(this.ctx());
       },
-      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review']),
+      // code: its "In the current loop" box shows pulab's verdict on the binding
+      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review', 'code']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     }, pageEnv());

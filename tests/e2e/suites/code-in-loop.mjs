@@ -59,5 +59,16 @@ export default async function codeInLoop(ctx) {
     await p.waitForSelector('#panel-current [data-key="sim.current.metrics.fixed.rise_time_s"][data-value]', { timeout: 60_000 });
     await p.waitForFunction(() => !document.querySelector('#panel-current [data-key^="sim.current.code."]'), null, { timeout: 30_000 });
   });
+  await check('code-in-loop: a binding without feedback or error is named by pulab at the Code view and the plot', async () => {
+    await p.click('nav.tabs a[data-view="firmware"]');
+    await p.waitForSelector('#panel-code select[name="loop.error"]', { timeout: 60_000 });
+    await p.selectOption('#panel-code select[name="loop.error"]', '');
+    await p.click('#panel-code .code-loop-use');
+    await p.waitForSelector('#panel-code .code-loop-err', { timeout: 60_000 });
+    const msg = await p.$eval('#panel-code .code-loop-err', (e) => e.textContent);
+    assert(msg.startsWith('sim.current.code.feedback: bind the measured current'), msg);
+    await p.click('nav.tabs a[data-view="loops"]');
+    assert((await p.$eval('#panel-current .sim-code-err', (e) => e.textContent)) === msg, 'the same message at the plot');
+  });
   await p.context().close();
 }

@@ -5,6 +5,7 @@ import { flagChips, focusedInput, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingSteps, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
+import { LOOP_FIELDS, LOOP_PATH as LOOP_FIELD } from '../fields';
 import type { Panel, PanelContext } from './panel';
 import { renderProve, type ProveHost } from './code-prove';
 import type { TraceExample, TraceLine, TraceTerm, TraceVar } from '../api-types';
@@ -237,7 +238,7 @@ const proveHost: ProveHost = {
 /** The binding the user picked in the loop box (role → C name; '' = not bound). */
 const loopPick: Record<string, string> = {};
 const LOOP_ROLES: [string, RegExp][] = [['error', /err/i], ['feedback', /(^|[._>])(fb|fbk|feedback|meas)/i], ['reference', /ref/i]];
-const LOOP_SCALES = ['inovance', 'ti', 'nxp', 'st', 'microchip'];
+const LOOP_SCALES = LOOP_FIELDS.find((f) => f.path === `${LOOP_FIELD}.scale`)?.options ?? ['inovance'];
 /** Report values that describe one worked example, not a constant of the firmware: not given to the loop. */
 const EXAMPLE_ONLY = /^current_pi\.step_example\./;
 
@@ -265,11 +266,13 @@ function renderLoop(box: HTMLElement, ctx: PanelContext): void {
   const a = main?.ok ? main : null;
   const s = st();
   const current = (ctx.input.sim?.current as Record<string, unknown> | undefined)?.code as Record<string, unknown> | undefined;
-  const key = JSON.stringify([a ? [inputs, Object.keys(a.vars)] : null, !!current, current?.output, getLang(), !!ctx.setLoop]);
+  // pulab's verdict on the binding (the simulation names the sim.current.code field at fault)
+  const err = current && ctx.simError?.startsWith(LOOP_FIELD) ? ctx.simError : '';
+  const key = JSON.stringify([a ? [inputs, Object.keys(a.vars)] : null, !!current, current?.output, getLang(), !!ctx.setLoop, err]);
   if (box.dataset.key === key) return;
   box.dataset.key = key;
   if (!a || !ctx.setLoop) {
-    box.replaceChildren(...(current && ctx.setLoop ? [h('h3', {}, t('cl_title')), loopActive(current, ctx)] : []));
+    box.replaceChildren(...(current && ctx.setLoop ? [h('h3', {}, t('cl_title')), loopActive(current, ctx, err)] : []));
     return;
   }
   const written = Object.keys(a.vars).filter((n) => n !== 'return' && !a.vars[n].input && a.vars[n].c_type !== 'pointer');
@@ -301,13 +304,15 @@ function renderLoop(box: HTMLElement, ctx: PanelContext): void {
       pick('output', 'cl_output', outputs, false),
       pick('scale', 'cl_scale', LOOP_SCALES, false),
       h('button', { type: 'button', class: 'code-loop-use', onclick: use }, t('cl_use'))),
-    current ? loopActive(current, ctx) : '');
+    current ? loopActive(current, ctx, err) : '');
 }
 
-function loopActive(current: Record<string, unknown>, ctx: PanelContext): HTMLElement {
-  return h('p', { class: 'note code-loop-active' },
-    t('cl_active', { output: String(current.output ?? ''), entry: String(current.entry ?? '—'), scale: String(current.scale ?? 'inovance') }), ' ',
-    h('button', { type: 'button', class: 'code-loop-remove', onclick: () => ctx.setLoop?.(null) }, t('cl_remove')));
+function loopActive(current: Record<string, unknown>, ctx: PanelContext, err: string): HTMLElement {
+  return h('div', {},
+    h('p', { class: 'note code-loop-active' },
+      t('cl_active', { output: String(current.output ?? ''), entry: String(current.entry ?? '—'), scale: String(current.scale ?? 'inovance') }), ' ',
+      h('button', { type: 'button', class: 'code-loop-remove', onclick: () => ctx.setLoop?.(null) }, t('cl_remove'))),
+    err ? h('p', { class: 'err code-loop-err', role: 'alert' }, err) : '');
 }
 
 function update(el: HTMLElement, ctx: PanelContext): void {

@@ -118,6 +118,8 @@ export const currentPanel: Panel = {
           h('tr', {}, h('th', {}, t('axis')), h('th', {}, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', { class: 'sep' }, 'kp_pu'), h('th', {}, 'ki_pu [1/s]'), h('th', { class: 'sep' }, 'pm_kp (Q12)'), h('th', {}, 'pm_ki (Q16·Ts)'), h('th', { class: 'sep' }, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', {}, `${t('impliedBw')} [Hz]`))),
         h('tbody', {}, axisRow('d', pi?.d), axisRow('q', pi?.q))),
       h('h3', {}, t('plotCurrent')),
+      // the routine put into the loop could not run: the plot below is the last input's
+      ctx.simError?.startsWith('sim.current.code') ? h('p', { class: 'err sim-code-err', role: 'alert' }, ctx.simError) : null,
       sim ? noTrace(sim, fw, report) : null,
       h('div', { class: 'figure', 'data-keep': 'current-step' }),
       sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu'], METRIC_ROWS, extra) : null,
