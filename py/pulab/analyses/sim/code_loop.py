@@ -46,7 +46,6 @@ from ...ctrace.evaluate import Evaluator
 from ...ctrace.sequence import EVENT_KINDS
 from ...ctrace.tracing import DEFAULT_GLOBAL_Q, compile_code, input_values
 from ...fixedpoint.cint import CType
-from ...fixedpoint.qformat import round_half_away
 from ...schema.errors import InputError
 from ...schema.validate import key_path, shown
 from ..slices import finish
@@ -88,6 +87,7 @@ class Routine:
         given again every call)
     ranges : dict — bound input name → (min, max) of its C type
     output : str — the output's path, or ``return``
+    fields : dict — bound input name → its ``sim.current.code`` field (named in errors)
     """
 
     def __init__(self, checked, first: dict, params: dict, ranges: dict, output: str,
@@ -177,6 +177,8 @@ def _axis_sets(report: dict, given: dict) -> dict:
     """``set`` resolved per axis: {'d': {name: value}, 'q': {…}}."""
     out: dict = {"d": {}, "q": {}}
     for name, v in given.items():
+        if v is None:  # null is absent, as everywhere in the input
+            continue
         field = key_path(_F + "set", name)
         if isinstance(v, dict):
             if set(v) != {"d", "q"}:
