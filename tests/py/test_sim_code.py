@@ -146,14 +146,15 @@ def test_st_style_pi_drives_a_real_servo_as_st_does_and_near_the_float_design():
     # the same arithmetic as pulab's model of ST's PI: the same currents, sample for sample
     assert list(code["iq"]) == list(st_own["iq"]) and list(code["id"]) == list(st_own["id"])
     assert code["zeroed"] == ["pi.Integral"]
-    # near the float design: within 2 % of the step at every sample, rise time within 5 %
+    # near the float design: within 0.5 % of the step at every sample (measured 0.027 %: two
+    # feedback counts), rise time within 1 % (measured 0.1 %)
     step = out["ref_a"]
     worst = max(abs(a - b) for a, b in zip(code["iq"], si["iq"]))
-    assert worst < 0.02 * step, worst
+    assert worst < 0.005 * step, worst
     rep = pulab.report({**inp, "sim": {"current": {"axis": "q", "code": ST_BINDING}}})
     m = rep["sim"]["current"]["code"]["metrics"]
     m_si = rep["sim"]["current"]["metrics"]["si"]
-    assert abs(m["rise_time_s"] - m_si["rise_time_s"]) < 0.05 * m_si["rise_time_s"]
+    assert abs(m["rise_time_s"] - m_si["rise_time_s"]) < 0.01 * m_si["rise_time_s"]
     assert abs(m["steady_state_error_a"]) < 0.01 * step
 
 
