@@ -271,6 +271,10 @@ function renderLoop(box: HTMLElement, ctx: PanelContext): void {
   const key = JSON.stringify([a ? [inputs, Object.keys(a.vars)] : null, !!current, current?.output, getLang(), !!ctx.setLoop, err]);
   if (box.dataset.key === key) return;
   box.dataset.key = key;
+  if (ctx.embed) { // an embedded Code view has no loop to put it in
+    box.replaceChildren();
+    return;
+  }
   if (!a || !ctx.setLoop) {
     box.replaceChildren(...(current && ctx.setLoop ? [h('h3', {}, t('cl_title')), loopActive(current, ctx, err)] : []));
     return;
