@@ -19,12 +19,13 @@ import simfirmware from './i18n/simfirmware';
 import codeprove from './i18n/codeprove';
 import decode from './i18n/decode';
 import acim from './i18n/acim';
+import codeloop from './i18n/codeloop';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...decode.en, ...acim.en };
+  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...decode.en, ...acim.en, ...codeloop.en };
 
 export type Key = keyof typeof en;
 
@@ -48,6 +49,7 @@ const zh: Record<Key, string> = {
   ...codeprove.zh,
   ...decode.zh,
   ...acim.zh,
+  ...codeloop.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

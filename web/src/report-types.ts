@@ -91,7 +91,21 @@ export interface SimCurrent {
   metrics: Record<string, unknown>;
   /** TI's, NXP's, ST's and Microchip's own integer PI (docs/contract.md, "Every other firmware"). */
   by_profile?: Record<string, SimProfileRun>;
+  /** The user's routine in the loop (input sim.current.code; docs/contract.md, "Your code in the loop"). */
+  code?: SimCodeRun;
   [k: string]: unknown;
+}
+export interface SimCodeRun {
+  ran: true;
+  scale: string;
+  lsb_a: number;
+  variant: { id: number[]; iq: number[]; ud: number[]; uq: number[] };
+  ints: { fb_d: number[]; fb_q: number[]; out_d: number[]; out_q: number[] };
+  metrics: Record<string, number | null>;
+  events: { feedback_saturate: number; beyond_limit: number };
+  flags: string[];
+  first_event: { axis: string; call: number; line: number; kind: string; name: string } | null;
+  zeroed: string[];
 }
 /** One firmware's fixed-point current-loop run, or the problems that keep it from running. */
 export type SimProfileRun =

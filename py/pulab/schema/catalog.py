@@ -279,6 +279,27 @@ MESSAGES = {
                              "(fewer calls?)", "第 {call} 次调用时整个序列执行的语句达到 {limit} 条"
                              "（减少调用次数？）"),
     "trace_in_call": ("in call {call}: {reason}", "第 {call} 次调用：{reason}"),
+    "sim_code_in_call": ("in period {call} of the simulation: {reason}",
+                         "仿真第 {call} 个周期：{reason}"),
+    "sim_code_feedback": ("bind the measured current (feedback) or the error (error)",
+                          "请绑定电流反馈（feedback）或误差（error）"),
+    "sim_code_unread": ("{name} is not read by the code before it is written: binding it "
+                        "would change nothing", "代码在写入 {name} 之前不读取它：绑定它不起作用"),
+    "sim_code_return": ("the entry returns no integer: bind a variable or a field",
+                        "入口函数不返回整数：请绑定变量或字段"),
+    "sim_code_no_output": ("{name} has no value after call {call}", "第 {call} 次调用后 {name} 没有值"),
+    "sim_code_fit": ("{value} (call {call}) does not fit {name} ({lo}..{hi})",
+                     "{value}（第 {call} 次调用）超出 {name} 的范围（{lo}..{hi}）"),
+    "sim_code_path": ("{got} names no integer of the report", "{got} 不是报告中的整数"),
+    "sim_code_set_value": ("must be an integer, a report path, &OBJECT or {{\"d\": …, \"q\": …}}, "
+                           "got {got}", "必须是整数、报告路径、&对象 或 {{\"d\": …, \"q\": …}}，"
+                           "当前为 {got}"),
+    "sim_code_scale": ("the {vendor} firmware cannot represent this drive ({problems}): no "
+                       "integer units to run the code in", "{vendor} 固件无法表示该驱动（{problems}）："
+                       "没有可运行代码的整数单位"),
+    "sim_code_steps": ("the routine executed more than {limit} statements by period {call} "
+                       "(a shorter duration?)", "例程在第 {call} 个周期时执行的语句超过 {limit} 条"
+                       "（缩短时长？）"),
     "trace_undefine_name": ("-U takes a macro name, got {got}", "-U 需要宏名，当前为 {got}"),
     "trace_float_operator": ("{op} of a floating constant cannot be folded (only + - * /, "
                              "comparisons, && || and ?:)", "浮点常量不能用 {op} 折叠（只支持 + - * /、"
