@@ -511,6 +511,10 @@ MESSAGES = {
                      "{x:.4g} > {limit:g}），对象极点 e^(−R·Ts/L) 低于舍入误差，PI 零点无法对消；"
                      "请缩短 Ts，或检查 R 与 L"),
     "fw_no_voltage": ("leaves a voltage limit of {value:g} V", "电压极限为 {value:g} V，无可用电压"),
+    "nxp_u_max_zero": ("gives U_max = U_DCB_MAX/UmaxCoeff = {value:g} V, which MCAT's rounding to "
+                       "0.1 V makes 0 V (every scale would divide by it)",
+                       "使 U_max = U_DCB_MAX/UmaxCoeff = {value:g} V，MCAT 取整到 0.1 V 后为 0 V"
+                       "（所有比例都要除以它）"),
     "board_either": ("give this or {other}, not both (one replaces the other)",
                      "此项与 {other} 只能填一个（二者互相替代）"),
     "board_needs": ("is needed with {other}", "填写 {other} 时必须同时填写此项"),
