@@ -88,6 +88,7 @@ def test_nxp_u_max_rounded_to_zero_is_an_input_error():
     """U_DCB_MAX/UmaxCoeff below 0.05 V rounds to 0 V with MCAT's rounding: a ZeroDivisionError
     traceback before, now the field that caused it."""
     import copy
+    import pytest
     import pulab
     from conftest import SEED_INPUT
     inp = copy.deepcopy(SEED_INPUT)
