@@ -21,7 +21,7 @@ import sys
 from .schema.errors import InputError
 from .cli.family import add_family_commands, read_json, write_result
 from .schema.validate import shown
-from .report import format_text, report
+from .report import format_text, report, require_pmsm
 from .cli.trace import add_trace_parser, trace_main
 from .cli.robust import add_robust_parser
 from .cli.prove import add_prove_parser
@@ -93,6 +93,7 @@ def _header(inp, name: str | None) -> str:
     profiles.registry.get(name)  # before the report: a typo should not cost a report
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
+    require_pmsm(inp)
     return profiles.header(report({**inp, "profiles": inp.get("profiles") or {}}), name)
 
 

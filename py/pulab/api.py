@@ -46,7 +46,7 @@ from .schema.jsontext import parse
 from .schema.textnum import parse_int
 from .export import c_header, sim_csv
 from .qcalc import qcalc
-from .report import report, report_steps
+from .report import report, report_steps, require_pmsm
 from .analyses.slices import finish
 
 __all__ = ["KINDS", "call_json", "call_json_steps"]
@@ -86,6 +86,7 @@ def _export(what: str):
     def handler(req) -> dict:
         r = _export_input(req)
         if what == "header":
+            require_pmsm(r["input"])
             return {"text": c_header(r)}
         if "sim" not in r or what[4:] not in r["sim"]:
             raise InputError("sim", code="no_simulation", kind=what[4:])
@@ -251,6 +252,7 @@ def _vendors(action: str):
         if action == "header":
             name = req.get("profile")
             profiles.registry.get(name)  # before the report: a typo should not cost a report
+            require_pmsm(inp)
             r = report({**inp, "profiles": inp.get("profiles") or {}})
             return {"text": profiles.header(r, name)}
         return {"translation": translate(inp, req.get("from"), req.get("axis", "q"),

@@ -32,8 +32,8 @@ __all__ = ["PANELS", "Report", "report_html", "panel_html", "panel_tables", "oem
            "oembed_page", "OEMBED_HEIGHT"]
 
 #: The panel ids of ``?embed=`` and ``<pu-lab-panel panel>`` (web/src/panels/registry.ts).
-PANELS = ("review", "datasheet", "bases", "pu", "vendor", "constants", "current", "pll", "loop",
-          "qcalc", "code", "conventions", "sweep", "prove", "batch", "vendors", "board", "fw",
+PANELS = ("review", "datasheet", "acim", "bases", "pu", "vendor", "constants", "current", "pll",
+          "loop", "qcalc", "code", "conventions", "sweep", "prove", "batch", "vendors", "board", "fw",
           "observer", "audit", "docs")
 
 _BASE_UNITS = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",

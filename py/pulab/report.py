@@ -273,12 +273,51 @@ def _acim_report(n: dict) -> dict:
         out["loop"] = _loop.analyze(_acim.loop_view(out, a), n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
         extra = _loop.warnings(out["loop"])
-    out["review"] = _acim.review(n, a)
+        # the flux build-up in TI's fixed point (asked with the analysis: thousands of periods)
+        out["acim_flux"] = _acim.flux_buildup(a, n, out["profiles"]["ti"]["constants"]["Kr"]["value"])
+    out["review"] = _acim.review(n, a, flux=out.get("acim_flux"))
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious] + [render(k, p, "en") for k, p in extra]
     out["warnings_zh"] = [x["message_zh"] for x in serious] + [render(k, p, "zh")
                                                                for k, p in extra]
     return out
+
+
+def _acim_text(r: dict) -> list:
+    """The induction motor's tables of :func:`format_text`."""
+    a = r["acim"]
+    skip = ("pu", "observer", "inovance", "magnetizing_from")
+    lines = _table(f"Induction motor (I_m {a['magnetizing_from'].replace('_', ' ')})", [
+        (k, "—" if v is None else f"{v:.6g}   pu {a['pu'][k]:.6g}" if a["pu"].get(k) is not None
+         else f"{v:.6g}") for k, v in a.items() if k not in skip])
+    lines += _table("Current-model observer (ψ_k = a·ψ_k−1 + b·i_d)",
+                    [(k, f"{v:.9g}") for k, v in a["observer"].items()])
+    for name, p in r["profiles"].items():
+        if not p["available"]:
+            lines += [f"Profile {name}: {p['reason']}", ""]
+            continue
+        lines += _table(f"Profile {name} (induction motor)", [
+            (k, f"{c['value']!r:>22}  {c['format']}  err {c['error_pct']:+.2e} %  = {c['expression']}")
+            for k, c in p["constants"].items()])
+    return lines
+
+
+def _format_acim_text(r: dict) -> str:
+    units = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",
+             "psi_b": "Wb", "T_b": "s", "P_b": "W", "theta_b": "rad"}
+    lines = _table("Bases", [(k, f"{v:.6g} {units[k]}") for k, v in r["base"].items()])
+    lines += _acim_text(r)
+    rows = [(f"{axis}-axis", f"kp {g['kp']:.6g} Ω  ki {g['ki']:.6g} Ω/s  pm_kp {g['pm_kp']} (Q12)  "
+                             f"pm_ki {g['pm_ki']} (Q16)")
+            for axis, g in ((x, r["current_pi"][x]) for x in ("d", "q"))]
+    lines += _table(f"Current PI on σ·L_s, R_σ ({r['current_pi']['method']})", rows)
+    if "loop" in r:
+        lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
+    c = r["review"]["counts"]
+    title = f"Design review: {c['error']} error(s), {c['warning']} warning(s), {c['note']} note(s)"
+    lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] {x['message']}"
+                                          for x in r["review"]["findings"]]
+    return "\n".join(lines).rstrip() + "\n"
 
 
 def _table(title: str, rows: list) -> list:
@@ -299,25 +338,6 @@ def _loop_rows(loop: dict) -> list:
     return [(name, f"PM {fmt(m['phase_margin_deg'], '°')}  GM {fmt(m['gain_margin_db'], 'dB')}  "
                    f"f_c {fmt(m['crossover_hz'], 'Hz')}  f_-3dB {fmt(m['bandwidth_hz'], 'Hz')}  "
                    f"{'stable' if m['stable'] else 'UNSTABLE'}") for name, m in cases]
-
-
-def _acim_text(r: dict) -> list:
-    """The induction motor's tables of :func:`format_text`."""
-    a = r["acim"]
-    skip = ("pu", "observer", "inovance", "magnetizing_from")
-    lines = _table(f"Induction motor (I_m {a['magnetizing_from'].replace('_', ' ')})", [
-        (k, "—" if v is None else f"{v:.6g}   pu {a['pu'][k]:.6g}" if a["pu"].get(k) is not None
-         else f"{v:.6g}") for k, v in a.items() if k not in skip])
-    lines += _table("Current-model observer (ψ_k = a·ψ_k−1 + b·i_d)",
-                    [(k, f"{v:.9g}") for k, v in a["observer"].items()])
-    for name, p in r["profiles"].items():
-        if not p["available"]:
-            lines += [f"Profile {name}: {p['reason']}", ""]
-            continue
-        lines += _table(f"Profile {name} (induction motor)", [
-            (k, f"{c['value']!r:>22}  {c['format']}  err {c['error_pct']:+.2e} %  = {c['expression']}")
-            for k, c in p["constants"].items()])
-    return lines
 
 
 def format_text(r: dict) -> str:
@@ -413,22 +433,4 @@ def format_text(r: dict) -> str:
     other = [w for w in r["warnings"] if w not in reviewed]
     if other:
         lines += ["Warnings", "--------"] + [f"  ! {w}" for w in other]
-    return "\n".join(lines).rstrip() + "\n"
-
-
-def _format_acim_text(r: dict) -> str:
-    units = {"U_b": "V", "I_b": "A", "f_b": "Hz", "w_b": "rad/s", "Z_b": "Ω", "L_b": "H",
-             "psi_b": "Wb", "T_b": "s", "P_b": "W", "theta_b": "rad"}
-    lines = _table("Bases", [(k, f"{v:.6g} {units[k]}") for k, v in r["base"].items()])
-    lines += _acim_text(r)
-    rows = [(f"{axis}-axis", f"kp {g['kp']:.6g} Ω  ki {g['ki']:.6g} Ω/s  pm_kp {g['pm_kp']} (Q12)  "
-                             f"pm_ki {g['pm_ki']} (Q16)")
-            for axis, g in ((x, r["current_pi"][x]) for x in ("d", "q"))]
-    lines += _table(f"Current PI on σ·L_s, R_σ ({r['current_pi']['method']})", rows)
-    if "loop" in r:
-        lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
-    c = r["review"]["counts"]
-    title = f"Design review: {c['error']} error(s), {c['warning']} warning(s), {c['note']} note(s)"
-    lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] {x['message']}"
-                                          for x in r["review"]["findings"]]
     return "\n".join(lines).rstrip() + "\n"

@@ -43,7 +43,7 @@ NXP_KV58 = {"motor": {"kind": "acim", "rated_voltage_v": 230, "rated_current_a":
                       "rs_ohm": 25.223, "rr_ohm": 23.004, "ls_h": 0.534, "lr_h": 0.534,
                       "lm_h": 0.487},
             "drive": {"udc_v": 325, "ts_s": 1e-4},
-            "current_loop": {"bandwidth_hz": 150, "damping": 1}}
+            "current_loop": {"bandwidth_hz": 150, "damping": 1}, "analysis": {}}
 # Krause, Analysis of Electric Machinery (3-hp, 220 V, 4-pole, 60 Hz): r_s 0.435 Ω, X_ls = X'_lr
 # 0.754 Ω, X_M 26.13 Ω, r'_r 0.816 Ω at 60 Hz; rated 5.8 A, 1710 rpm.
 KRAUSE_3HP = {"motor": {"kind": "acim", "rated_voltage_v": 220, "rated_current_a": 5.8,
@@ -161,7 +161,9 @@ def expected(inp: dict) -> dict:
     pi = {"method": method, "bandwidth_hz": float(bw), "d": axis, "q": copy.deepcopy(axis)}
     # the vendors' floats
     # the generators print 12 (MCAT) and 7 (ST GUI) decimals; the compiler rounds that text
-    f32 = lambda x, d: float(np.float32(float(np.format_float_positional(x, precision=d, unique=False))))  # noqa: E731,E501
+    def f32(x: float, decimals: int) -> float:
+        printed = np.format_float_positional(x, precision=decimals, unique=False)
+        return float(np.float32(float(printed)))
     w0, z0 = 2 * math.pi * bw, zeta
     nxp_kp, nxp_ki = 2 * z0 * w0 * l_sig - rs, w0 * w0 * l_sig * ts
     vendors = {
@@ -175,13 +177,42 @@ def expected(inp: dict) -> dict:
                "LM": f32(lm, 7), "LR": f32(lr, 7), "LS": f32(ls, 7), "TAU_R": f32(tau_r, 7),
                "TAU_S": f32(ls / rs, 7), "SIGMA": f32(sigma, 7), "IMAGN_A": f32(math.sqrt(2) * i_m, 7),
                "NOMINAL_PHASE_VOLTAGE": f32(u_ll / math.sqrt(3), 7), "NOMINAL_FREQ": f32(f_n, 7)}}
+    # TI's CUR_CONST_MACRO in C float (Kt through double: PI is a double literal), then
+    # (long)(x·2^24) of each float
+    s32 = np.float32
+    tr32 = s32(lr) / s32(rr)
+    f_b = _get(inp, "drive", "base_freq_hz", f_n)
+    kt32 = s32(1.0 / (float(tr32 * s32(2)) * 3.14159265358979 * float(s32(f_b))))
+    vendors["ti"] = {"Kr": int(float(s32(ts) / tr32) * 2 ** 24), "Kt": int(float(kt32) * 2 ** 24),
+                     "K": int(float(s32(ts) * s32(f_b)) * 2 ** 24)}
     out = {"acim": a, "current_pi": pi, "vendor_values": vendors}
     if "analysis" in inp:
+        out["acim_flux"] = _flux(ts, tau_r, a["pu"]["magnetizing_current_a"], vendors["ti"]["Kr"])
+    if "speed" in inp.get("analysis", {}):
         j = inp["analysis"]["speed"]["inertia_kg_m2"]
         out["speed_bases"] = {"w_mb": w_b / p, "n_mb_rpm": 60 * f_n / p, "torque_nm": t_mb,
                               "kt_nm_per_a": torque / (dq * i_q),
                               "inertia_constant_s": j * (w_b / p) ** 2 / (2 * p_b)}
     return out
+
+
+def _flux(ts: float, tau_r: float, i_d: float, kr: int) -> dict:
+    """TI's CUR_MOD update IMDs += (Kr·(IDs − IMDs)) >> 24 in Python integers, beside the same
+    update in float with Kr = T_s/τ_r, over 10·τ_r: the first periods at 95 % and the end."""
+    steps = math.ceil(10.0 * tau_r / ts)
+    ids = math.trunc(i_d * (1 << 24))
+    x, m, t95f, t95i = 0.0, 0, None, None
+    for k in range(1, steps + 1):
+        x = x + ts / tau_r * (i_d - x)
+        m = m + (kr * (ids - m) >> 24)
+        if t95f is None and x >= 0.95 * i_d:
+            t95f = k * ts
+        if t95i is None and m * 20 >= ids * 19:
+            t95i = k * ts
+    return {"steps": steps, "complete": True, "kr": kr, "id_ref": ids, "t95_float_s": t95f,
+            "t95_fixed_s": t95i, "final_float_pu": x, "final_fixed": m,
+            "final_fixed_pu": m / (1 << 24), "stall_lsb": ids - m, "stall_pct": 100.0 * (ids - m) / ids,
+            "events": {}}
 
 
 def _error_case(inp: dict, where: tuple, value, field: str) -> dict:

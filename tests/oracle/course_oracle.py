@@ -19,6 +19,7 @@ import control
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from oracle import oracle_report, parse  # noqa: E402
 from loop_oracle import measure, pi  # noqa: E402
+from acim_oracle import ST_MEZ, expected as acim_expected  # noqa: E402
 
 #: Trainee number → the input of the motor a trainee link carries.
 TRAINEES = {
@@ -165,4 +166,11 @@ def expected(inp: dict) -> dict:
         # TI's IQ24 Kp with I_FS the largest reading ±V_ref/(2·R·G) and V_FS = U_dc, truncated
         "board-ti-kp": math.trunc(r["current_pi"]["q"]["kp"] * (3.3 / (2 * 0.007 * 10))
                                   / P["udc_v"] * 2 ** 24),
+        # the induction motor of every trainee: ST's ACIM GUI example (acim_oracle.ST_MEZ)
+        "acim-sigma": ACIM["acim"]["sigma"],
+        "acim-tau-r-pu": ACIM["acim"]["pu"]["tau_r_s"],
+        "acim-pm-kp": ACIM["current_pi"]["d"]["pm_kp"],
     }
+
+
+ACIM = acim_expected(ST_MEZ)

@@ -82,3 +82,19 @@ def test_vendors_kinds_with_hostile_profiles_and_values():
         seen["error"] += 1
     print(f"\nvendors fuzz: {dict(seen)}")
     assert seen["error"] > 500
+
+
+def test_nxp_u_max_rounded_to_zero_is_an_input_error():
+    """U_DCB_MAX/UmaxCoeff below 0.05 V rounds to 0 V with MCAT's rounding: a ZeroDivisionError
+    traceback before, now the field that caused it."""
+    import copy
+    import pytest
+    import pulab
+    from conftest import SEED_INPUT
+    inp = copy.deepcopy(SEED_INPUT)
+    inp["profiles"] = {"nxp": {"u_max_coeff": 481, "round_u_max": True}}
+    with pytest.raises(pulab.InputError) as e:
+        pulab.report(inp)
+    assert e.value.field == "profiles.nxp.u_max_coeff" and "0.1 V" in e.value.message
+    inp["profiles"]["nxp"]["round_u_max"] = False       # unrounded it is tiny but not zero
+    assert pulab.report(inp)["profiles"]["nxp"]["inputs"]["u_max_v"] > 0

@@ -20,7 +20,9 @@ def test_generated_page_schema_is_fresh():
 def test_every_field_is_well_formed():
     for f in FIELDS:
         assert f.section in SECTIONS, f.path
-        assert f.kind in ("number", "integer", "choice", "flag", "name_or_number", "pair", "table"), f.path
+        assert f.kind in ("number", "integer", "choice", "flag", "name_or_number", "pair", "table",
+                          "text", "object"), f.path
+        assert f.kind != "text" or f.hi is not None, f.path
         assert (f.kind in ("choice", "name_or_number")) == bool(f.choices), f.path
         assert (f.kind == "table") == bool(f.columns), f.path
         assert f.default is REQUIRED or f.default is None or f.kind != "choice" or f.default in f.choices

@@ -6,7 +6,7 @@ import { h } from './dom';
 import { effectiveInput } from './fields';
 import { defaultLang, getLang, setLang, t, type Lang } from './i18n';
 import type { PulabClient } from './rpc';
-import { STORAGE_KEY, initialInput, type Initial } from './state';
+import { STORAGE_KEY, initialInput, setPath, type Initial, type Input } from './state';
 import { fieldNotes, stateBanner } from './state-notice';
 import type { PanelContext, PanelId } from './panels/panel';
 import { PANELS, panelById } from './panels/registry';
@@ -54,7 +54,8 @@ export class App {
         else this.renderPanels();
         if (this.session.source === 'live') this.layout.settle(this.ctx());
       },
-      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review']),
+      // code: its "In the current loop" box shows pulab's verdict on the binding
+      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review', 'code']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     }, pageEnv());
@@ -158,7 +159,12 @@ export class App {
 
   private ctx(): PanelContext {
     const s = this.session;
-    return { report: s.report, simReport: s.simReport, simError: s.simError, retrySim: s.simWorkerFailed ? () => s.retrySim() : undefined, input: s.input, client: s.ready ? s.client : null, embed: this.embed !== null, fieldError: (p, e) => s.setPanelFieldError(p, e) };
+    return { report: s.report, simReport: s.simReport, simError: s.simError, retrySim: s.simWorkerFailed ? () => s.retrySim() : undefined, input: s.input, client: s.ready ? s.client : null, embed: this.embed !== null, fieldError: (p, e) => s.setPanelFieldError(p, e),
+      setLoop: (code) => {
+        const next = JSON.parse(JSON.stringify(s.input)) as Record<string, unknown>;
+        setPath(next, 'sim.current.code', code);
+        s.replaceInput(next as Input);
+      } };
   }
 
   renderPanels(only?: PanelId[]): void {

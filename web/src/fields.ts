@@ -9,7 +9,8 @@ import type { Key } from './i18n';
 
 export interface FieldSpec {
   path: string;
-  kind: 'number' | 'int' | 'select' | 'bool';
+  /** 'text' and 'object' only outside the form (sim.current.code: set by the Code view). */
+  kind: 'number' | 'int' | 'select' | 'bool' | 'text' | 'object';
   /** English and Chinese label. */
   label: [string, string];
   /** Unit shown when there is no choice. */
@@ -46,7 +47,7 @@ interface SchemaField {
 }
 
 const FIELDS: SchemaField[] = schema.fields;
-const KIND: Record<string, FieldSpec['kind']> = { number: 'number', integer: 'int', choice: 'select', flag: 'bool' };
+const KIND: Record<string, FieldSpec['kind']> = { number: 'number', integer: 'int', choice: 'select', flag: 'bool', text: 'text', object: 'object' };
 
 const value = (inp: Input, path: string): unknown => {
   const [s, ...rest] = path.split('.');
@@ -70,6 +71,14 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
   'motor.ld_h': { units: L_UNITS, placeholderFrom: 'input.motor.ld_h' },
   'motor.lq_h': { units: L_UNITS, placeholderFrom: 'input.motor.lq_h' },
   'motor.bemf_v': { placeholderFrom: 'input.motor.bemf_v' },
+  'motor.rr_ohm': { units: R_UNITS },
+  'motor.lm_h': { units: L_UNITS },
+  'motor.lls_h': { units: L_UNITS },
+  'motor.llr_h': { units: L_UNITS },
+  'motor.ls_h': { units: L_UNITS },
+  'motor.lr_h': { units: L_UNITS },
+  // checked against motor.kind in code (the schema's only_with stays within a section)
+  'datasheet.lms_h': { units: L_UNITS, enabled: (i) => String(i.motor?.kind ?? 'pmsm') === 'acim' },
   'datasheet.ke_v_per_krpm': { units: ['V/krpm', 'V/rpm'] },
   'datasheet.rs_line_ohm': { units: R_UNITS },
   'datasheet.rs_phase_ohm': { units: R_UNITS },
@@ -163,6 +172,11 @@ export function fieldLabel(f: FieldSpec, lang: 'en' | 'zh'): string {
 }
 
 export const ALL_FIELDS: FieldSpec[] = SECTIONS.flatMap((s) => s.fields);
+
+/** Your routine in the current loop (sim.current.code): filled by the Code view's "Use in the loop",
+ * kept in links and storage, not in the form. */
+export const LOOP_PATH = 'sim.current.code';
+export const LOOP_FIELDS: FieldSpec[] = FIELDS.filter((f) => f.path.startsWith(`${LOOP_PATH}.`)).map((f) => spec(f, false));
 
 /** The SI unit of an input path as pulab reads it ('' for a count or a raw integer). */
 export function siUnit(path: string): string {

@@ -18,12 +18,14 @@ import course from './i18n/course';
 import simfirmware from './i18n/simfirmware';
 import codeprove from './i18n/codeprove';
 import audit from './i18n/audit';
+import acim from './i18n/acim';
+import codeloop from './i18n/codeloop';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...audit.en };
+  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...audit.en, ...acim.en, ...codeloop.en };
 
 export type Key = keyof typeof en;
 
@@ -46,6 +48,8 @@ const zh: Record<Key, string> = {
   ...simfirmware.zh,
   ...codeprove.zh,
   ...audit.zh,
+  ...acim.zh,
+  ...codeloop.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

@@ -91,7 +91,21 @@ export interface SimCurrent {
   metrics: Record<string, unknown>;
   /** TI's, NXP's, ST's and Microchip's own integer PI (docs/contract.md, "Every other firmware"). */
   by_profile?: Record<string, SimProfileRun>;
+  /** The user's routine in the loop (input sim.current.code; docs/contract.md, "Your code in the loop"). */
+  code?: SimCodeRun;
   [k: string]: unknown;
+}
+export interface SimCodeRun {
+  ran: true;
+  scale: string;
+  lsb_a: number;
+  variant: { id: number[]; iq: number[]; ud: number[]; uq: number[] };
+  ints: { fb_d: number[]; fb_q: number[]; out_d: number[]; out_q: number[] };
+  metrics: Record<string, number | null>;
+  events: { feedback_saturate: number; beyond_limit: number };
+  flags: string[];
+  first_event: { axis: string; call: number; line: number; kind: string; name: string } | null;
+  zeroed: string[];
 }
 /** One firmware's fixed-point current-loop run, or the problems that keep it from running. */
 export type SimProfileRun =
@@ -134,6 +148,26 @@ export interface Report {
   loop?: LoopReport;
   /** Present when the input has a `profiles` section (docs/contract.md, "Output: profiles.NAME"). */
   profiles?: Record<string, ProfileReport>;
+  /** Present for an induction motor (motor.kind = acim; docs/contract.md, "Induction motor"): then
+   * `pu`, `vendor`, `constants`, `mechanical` and `firmware` are absent. */
+  acim?: AcimReport;
+}
+
+/** The report's `acim` section: SI values (null where undefined), `pu`, `observer`, `inovance`. */
+export interface AcimReport {
+  [k: string]: unknown;
+  magnetizing_from: 'given' | 'no_load_estimate';
+  pu: Record<string, number | null>;
+  observer: Record<string, number>;
+  inovance: { applies: string[]; not_covered: string };
+}
+
+/** A vendor's induction-motor profile: its C floats, or why it has none. */
+export interface AcimProfile {
+  available: boolean;
+  reason?: string;
+  not_covered?: string;
+  constants?: Record<string, { value: number; ideal: number; error_pct: number; format: string; expression: string; flags: string[] }>;
 }
 
 /** One vendor profile of the report: its inputs, constants and bases. */

@@ -3,7 +3,7 @@
 // anywhere: a wrong type, an object where a string belongs ({"toString": 1}), an unknown key or a
 // non-JSON text must never reach the form. What cannot be used is dropped and named; the rest is
 // kept. Range checks stay with pulab (it names the field); here only the JSON shape is checked.
-import { ALL_FIELDS, type FieldSpec } from './fields';
+import { ALL_FIELDS, LOOP_FIELDS, type FieldSpec } from './fields';
 import type { Input, Json } from './json';
 import type { UnitId } from './units';
 
@@ -47,12 +47,14 @@ function fits(f: FieldSpec, v: unknown): boolean {
     case 'int': return typeof v === 'number' && Number.isSafeInteger(v);
     case 'select': return typeof v === 'string' && (f.options ?? []).includes(v);
     case 'bool': return typeof v === 'boolean';
+    case 'text': return typeof v === 'string';
+    case 'object': return isObject(v);
   }
 }
 
-const FIELD_BY_PATH = new Map(ALL_FIELDS.map((f) => [f.path, f]));
+const FIELD_BY_PATH = new Map([...ALL_FIELDS, ...LOOP_FIELDS].map((f) => [f.path, f]));
 /** Objects that hold fields: "motor", …, "sim", "sim.current", "sim.pll". */
-const CONTAINERS = new Set(ALL_FIELDS.flatMap((f) => {
+const CONTAINERS = new Set([...ALL_FIELDS, ...LOOP_FIELDS].flatMap((f) => {
   const parts = f.path.split('.');
   return parts.slice(0, -1).map((_, i) => parts.slice(0, i + 1).join('.'));
 }));

@@ -13,17 +13,28 @@ Examples
 ...     "rated_freq_hz": 50, "rated_speed_rpm": 1370, "pole_pairs": 2, "rs_ohm": 0.6,
 ...     "rr_ohm": 0.4, "lls_h": 0.009, "llr_h": 0.009, "lm_h": 0.0525},
 ...     "drive": {"udc_v": 150, "ts_s": 1e-4}})
->>> round(r["acim"]["sigma"], 7), r["profiles"]["ti"]["available"]
+>>> round(r["acim"]["sigma"], 7), r["profiles"]["microchip"]["available"]
 (0.2712671, False)
 """
 
 from __future__ import annotations
 
+import math
+
+from ..fixedpoint.counted import wrap
 from ..profiles import registry
 from ..profiles.vendor import provided
 from .review import SEVERITIES, _finding
 
-__all__ = ["INOVANCE", "profiles", "loop_view", "review", "NOT_APPLICABLE"]
+__all__ = ["INOVANCE", "profiles", "loop_view", "review", "NOT_APPLICABLE", "flux_buildup",
+           "FLUX_STEPS_MAX", "FLUX_POINTS", "STALL_PCT"]
+
+#: The longest flux build-up simulated, in controller periods (10·τ_r/T_s beyond it is cut).
+FLUX_STEPS_MAX = 100_000
+#: Points of each trace of the build-up (every k-th period).
+FLUX_POINTS = 200
+#: A fixed-point flux model that stops this far (%) below its reference is a warning.
+STALL_PCT = 0.1
 
 #: What of the seed's Inovance code holds for an induction motor, and what does not.
 INOVANCE = {
@@ -65,7 +76,62 @@ def loop_view(out: dict, a: dict) -> dict:
             "pu": {"psi_r_wb": a["lm_h"] / a["lr_h"] * a["rotor_flux_wb"]}}
 
 
-def review(n: dict, a: dict, robust_c: tuple = (20.0, 155.0), alpha: float = 0.00393) -> dict:
+def flux_buildup(a: dict, n: dict, kr: int, q: int = 24) -> dict:
+    """The rotor flux built by a step of i_d to I_m: TI's current model in float and in IQ``q``.
+
+    TI's ``CUR_MOD_MACRO`` (controlSUITE ``cur_mod.h``) updates the magnetizing current
+    ``IMDs += _IQmpy(Kr, IDs - IMDs)`` every period, ``_IQmpy`` = ``(int64 a·b) >> q`` (floor);
+    the float run does the same with the exact Kr = T_s/τ_r.  The fixed-point model stops
+    moving once Kr·(IDs − IMDs) < 2^q: it stalls below its reference (``stall_lsb``).
+
+    Parameters
+    ----------
+    a : dict — the report's ``acim`` section ; n : dict — the normalized input
+    kr : int — TI's stored Kr (``profiles.ti.constants.Kr.value``) ; q : int — GLOBAL_Q
+
+    Returns
+    -------
+    dict
+        ``steps`` (periods simulated: 10·τ_r/T_s, at most :data:`FLUX_STEPS_MAX`), ``complete``
+        (not cut), ``kr``, ``id_ref`` (IDs, IQ``q`` of the d reference I_m in per unit),
+        ``t95_float_s``/``t95_fixed_s`` (first time at 95 %, None if not reached),
+        ``final_float_pu``, ``final_fixed`` (IQ``q``), ``final_fixed_pu``, ``stall_lsb``
+        (IDs − IMDs at the end), ``stall_pct`` (of IDs), ``events`` (wraps counted) and
+        ``trace`` (``t_s``, ``float_pu``, ``fixed_pu``, every ``FLUX_POINTS``-th).
+
+    >>> a = {"tau_r_s": 0.15375, "pu": {"magnetizing_current_a": 0.55 / 1.5}}
+    >>> f = flux_buildup(a, {"drive": {"ts_s": 1e-4}}, 10912)
+    >>> f["stall_lsb"], round(f["stall_pct"], 4)
+    (1537, 0.025)
+    """
+    ts, tau, i_d = n["drive"]["ts_s"], a["tau_r_s"], a["pu"]["magnetizing_current_a"]
+    want = math.ceil(10.0 * tau / ts)
+    steps = min(want, FLUX_STEPS_MAX)
+    ids, k_real = int(i_d * 2 ** q), ts / tau        # _IQ(x): a C cast, toward zero
+    every = max(1, steps // FLUX_POINTS)
+    x, imds, ev = 0.0, 0, {}
+    t95 = {"float": None, "fixed": None}
+    trace = {"t_s": [0.0], "float_pu": [0.0], "fixed_pu": [0.0]}
+    for k in range(1, steps + 1):
+        x += k_real * (i_d - x)
+        imds = wrap(imds + wrap((kr * (ids - imds)) >> q, 32, ev), 32, ev)
+        if t95["float"] is None and x >= 0.95 * i_d:
+            t95["float"] = k * ts
+        if t95["fixed"] is None and 20 * imds >= 19 * ids:
+            t95["fixed"] = k * ts
+        if k % every == 0 or k == steps:
+            trace["t_s"].append(k * ts)
+            trace["float_pu"].append(x)
+            trace["fixed_pu"].append(imds / 2 ** q)
+    return {"steps": steps, "complete": steps == want, "kr": kr, "id_ref": ids,
+            "t95_float_s": t95["float"], "t95_fixed_s": t95["fixed"], "final_float_pu": x,
+            "final_fixed": imds, "final_fixed_pu": imds / 2 ** q, "stall_lsb": ids - imds,
+            "stall_pct": 100.0 * (ids - imds) / ids if ids else 0.0, "events": ev,
+            "trace": trace}
+
+
+def review(n: dict, a: dict, robust_c: tuple = (20.0, 155.0), alpha: float = 0.00393,
+           flux: dict | None = None) -> dict:
     """The induction motor's findings (the same record as :mod:`pulab.analyses.review`).
 
     ``robust_c`` and ``alpha``: the winding temperature range and copper coefficient the
@@ -93,5 +159,8 @@ def review(n: dict, a: dict, robust_c: tuple = (20.0, 155.0), alpha: float = 0.0
             _finding(f, "warning", "acim_slip_mismatch", "acim.slip_freq_model_hz",
                      "motor.rated_speed_rpm", off, model=model_hz, plate=a["slip_freq_hz"],
                      pct=off)
+    if flux is not None and flux["stall_pct"] >= STALL_PCT:
+        _finding(f, "warning", "acim_flux_stall", "acim_flux.stall_pct", "drive.ts_s",
+                 flux["stall_pct"], pct=flux["stall_pct"], lsb=flux["stall_lsb"], kr=flux["kr"])
     f.sort(key=lambda x: SEVERITIES.index(x["severity"]))
     return {"findings": f, "counts": {s: sum(x["severity"] == s for x in f) for s in SEVERITIES}}

@@ -27,7 +27,7 @@ from ..schema.errors import InputError
 from ..schema.textnum import parse_int, parse_real
 from ..schema.validate import shown
 
-__all__ = ["EXERCISES", "BUGGY_RPM", "check", "answers", "trainee_input", "spec"]
+__all__ = ["EXERCISES", "EXAMPLE_ACIM", "BUGGY_RPM", "check", "answers", "trainee_input", "spec"]
 
 #: The "find the bug" routine: the Rpm statement of the vendor code without its ``(Ulong)``
 #: cast, so the product is computed in the 16-bit ``unsigned int`` of the C2000 and wraps.
@@ -42,13 +42,15 @@ class _Ctx:
     """The report of one input, with the loop analysis and the tracer computed only when asked."""
 
     def __init__(self, inp: dict):
-        from ..report import report
+        from ..report import report, require_pmsm
         self.input = inp
         self.r = report(inp)
+        require_pmsm(self.r["input"])  # a trainee's motor is a PMSM (the exercises read its firmware)
         self._loop = None
         self._trace = None
         self.fw = None
         self.obs = None
+        self.acim = None
 
     def loop(self) -> dict:
         if self._loop is None:
@@ -188,6 +190,28 @@ def _obs(c: _Ctx) -> dict:
     return c.obs
 
 
+#: The induction motor of the induction-motor exercises: ST's public ACIM GUI example
+#: (novaksta/MEZ-ACIM-FOC : Inc/acim_motor_parameters.h), 42 V phase, 1.5 A, 50 Hz, 1370 rpm.
+EXAMPLE_ACIM = {"motor": {"kind": "acim", "rated_voltage_v": 42 * math.sqrt(3.0),
+                          "rated_current_a": 1.5, "rated_freq_hz": 50, "rated_speed_rpm": 1370,
+                          "pole_pairs": 2, "rs_ohm": 0.6, "rr_ohm": 0.4, "lls_h": 0.009,
+                          "llr_h": 0.009, "lm_h": 0.0525, "magnetizing_current_a": 0.55},
+                "drive": {"udc_v": 150, "ts_s": 1e-4}}
+
+
+def _acim(*keys) -> Callable[[_Ctx], object]:
+    """A value of :data:`EXAMPLE_ACIM`'s report (the same motor for every trainee)."""
+    def get(c: _Ctx):
+        if c.acim is None:
+            from ..report import report
+            c.acim = report(EXAMPLE_ACIM)
+        v = c.acim
+        for k in keys:
+            v = v[k]
+        return v
+    return get
+
+
 EXERCISES: tuple[Exercise, ...] = (
     # day one, step 1: per-unit intuition
     Exercise("warmup-current", "00-warm-up", "real", lambda c: 2.0 / c.r["base"]["I_b"], 0.01),
@@ -248,6 +272,10 @@ EXERCISES: tuple[Exercise, ...] = (
     Exercise("board-pu", "09-vendors", "real", lambda c: _board(c)["pu_per_count"], 0.01),
     Exercise("board-gain", "09-vendors", "real", _board_gain, 0.01, "V/V"),
     Exercise("board-ti-kp", "09-vendors", "int", _board_ti_kp),
+    # reference: induction motors, the same bases (the example motor EXAMPLE_ACIM)
+    Exercise("acim-sigma", "06-conventions", "real", _acim("acim", "sigma"), 0.01),
+    Exercise("acim-tau-r-pu", "06-conventions", "real", _acim("acim", "pu", "tau_r_s"), 0.01),
+    Exercise("acim-pm-kp", "06-conventions", "int", _acim("current_pi", "d", "pm_kp"), 1),
 )
 _BY_ID = {e.id: e for e in EXERCISES}
 

@@ -247,12 +247,17 @@ class Evaluator(NodeVisitor):
     def again(self, inputs: dict) -> list:
         """Run the entry once more on the memory the last run left (globals, ``static``
         locals, what pointer parameters point to), ``inputs`` (validated, as the
-        constructor's) given first: the firmware's next control period.  Returns its steps."""
+        constructor's) given first: the firmware's next control period.  Without an entry the
+        statements outside functions run again: a variable declared without an initializer
+        keeps its value (a global), one with an initializer is set again.  Returns its steps."""
         self.inputs = inputs
         self.unset = [n for n in self.names if n not in inputs and self.mem.get(n) is None]
         self.steps, self.terms, self.count, self.undefined = [], [], 0, set()
         self.seen, self.event, self._pending = set(), None, None
         self.mem.update(inputs)  # globals; the entry's own inputs get their steps in enter
+        if self.checked.entry is None:  # the statements are the period's code
+            for s in self.checked.program.statements:
+                self.statement(s)
         self.enter()
         return self.steps
 

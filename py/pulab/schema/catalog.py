@@ -279,6 +279,27 @@ MESSAGES = {
                              "(fewer calls?)", "第 {call} 次调用时整个序列执行的语句达到 {limit} 条"
                              "（减少调用次数？）"),
     "trace_in_call": ("in call {call}: {reason}", "第 {call} 次调用：{reason}"),
+    "sim_code_in_call": ("in period {call} of the simulation: {reason}",
+                         "仿真第 {call} 个周期：{reason}"),
+    "sim_code_feedback": ("bind the measured current (feedback) or the error (error)",
+                          "请绑定电流反馈（feedback）或误差（error）"),
+    "sim_code_unread": ("{name} is not read by the code before it is written: binding it "
+                        "would change nothing", "代码在写入 {name} 之前不读取它：绑定它不起作用"),
+    "sim_code_return": ("the entry returns no integer: bind a variable or a field",
+                        "入口函数不返回整数：请绑定变量或字段"),
+    "sim_code_no_output": ("{name} has no value after call {call}", "第 {call} 次调用后 {name} 没有值"),
+    "sim_code_fit": ("{value} (call {call}) does not fit {name} ({lo}..{hi})",
+                     "{value}（第 {call} 次调用）超出 {name} 的范围（{lo}..{hi}）"),
+    "sim_code_path": ("{got} names no integer of the report", "{got} 不是报告中的整数"),
+    "sim_code_set_value": ("must be an integer, a report path, &OBJECT or {{\"d\": …, \"q\": …}}, "
+                           "got {got}", "必须是整数、报告路径、&对象 或 {{\"d\": …, \"q\": …}}，"
+                           "当前为 {got}"),
+    "sim_code_scale": ("the {vendor} firmware cannot represent this drive ({problems}): no "
+                       "integer units to run the code in", "{vendor} 固件无法表示该驱动（{problems}）："
+                       "没有可运行代码的整数单位"),
+    "sim_code_steps": ("the routine executed more than {limit} statements by period {call} "
+                       "(a shorter duration?)", "例程在第 {call} 个周期时执行的语句超过 {limit} 条"
+                       "（缩短时长？）"),
     "trace_undefine_name": ("-U takes a macro name, got {got}", "-U 需要宏名，当前为 {got}"),
     "trace_float_operator": ("{op} of a floating constant cannot be folded (only + - * /, "
                              "comparisons, && || and ?:)", "浮点常量不能用 {op} 折叠（只支持 + - * /、"
@@ -490,6 +511,10 @@ MESSAGES = {
                      "{x:.4g} > {limit:g}），对象极点 e^(−R·Ts/L) 低于舍入误差，PI 零点无法对消；"
                      "请缩短 Ts，或检查 R 与 L"),
     "fw_no_voltage": ("leaves a voltage limit of {value:g} V", "电压极限为 {value:g} V，无可用电压"),
+    "nxp_u_max_zero": ("gives U_max = U_DCB_MAX/UmaxCoeff = {value:g} V, which MCAT's rounding to "
+                       "0.1 V makes 0 V (every scale would divide by it)",
+                       "使 U_max = U_DCB_MAX/UmaxCoeff = {value:g} V，MCAT 取整到 0.1 V 后为 0 V"
+                       "（所有比例都要除以它）"),
     "board_either": ("give this or {other}, not both (one replaces the other)",
                      "此项与 {other} 只能填一个（二者互相替代）"),
     "board_needs": ("is needed with {other}", "填写 {other} 时必须同时填写此项"),
@@ -809,6 +834,13 @@ MESSAGES = {
                                    "等效电路给出的额定转差频率 {model:.4g} Hz = I_q/(2π·τ_r·I_m)，"
                                    "铭牌转速给出 {plate:.4g} Hz（{pct:+.3g} %）：R_r、L_r 或 I_m "
                                    "与铭牌不符"),
+    "finding.acim_flux_stall": ("TI's IQ24 current model stops {pct:.3g} % ({lsb} LSB) below the "
+                                "flux reference: _IQmpy(Kr = {kr}, error) floors to 0 once the error "
+                                "is below 2^24/Kr. Round the product (add 2^23 before the shift), "
+                                "keep more fraction bits in IMDs, or run the model at a longer period",
+                                "TI 的 IQ24 电流模型停在磁链给定以下 {pct:.3g} %（{lsb} LSB）：误差小于 "
+                                "2^24/Kr 后 _IQmpy(Kr = {kr}, 误差) 向下取整为 0。请对乘积做舍入（移位前加 "
+                                "2^23）、为 IMDs 保留更多小数位，或以更长的周期运行该模型"),
     "set_syntax": ("--set needs NAME=VALUE, got {got}", "--set 需要 NAME=VALUE，当前为 {got}"),
     "json_invalid": ("not valid JSON: {detail}", "不是合法的 JSON：{detail}"),
     "json_not_text": ("not valid JSON: the input is not text", "不是合法的 JSON：输入不是文本"),

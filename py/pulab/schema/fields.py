@@ -15,9 +15,10 @@ datasheet's "give one of them") stay in the code that converts them.
 Kinds: ``number`` (finite JSON number, booleans refused), ``integer``
 (integral JSON number), ``choice`` (one of ``choices``), ``flag`` (true/false),
 ``name_or_number`` (one of ``choices``, or a number in the range), ``pair``
-(``[low, high]``: two numbers in the range, low ≤ high) and ``table`` (at least
+(``[low, high]``: two numbers in the range, low ≤ high), ``table`` (at least
 2 rows of numbers, one per ``columns`` entry ``(name, unit, sign)``; the first
-column strictly increases, as a lookup table's).
+column strictly increases, as a lookup table's), ``text`` (a string of at most
+``hi`` characters) and ``object`` (a JSON object, checked by the code that reads it).
 ``sign`` is checked before the range: ``'>0'``, ``'>=0'`` or ``'!=0'``;
 ``lo_open``/``hi_open`` leave the range's end out.
 ``default`` is a value, :data:`REQUIRED`, or ``None`` (absent; ``derived``
@@ -330,6 +331,32 @@ TABLE = (
     F('sim.current.speed_hz', 'number', 'Hz', default=0.0, label=('Electrical speed', '电角频率')),
     F('sim.current.delay', 'flag', '', default=False,
       label=('One-sample computation delay', '一拍计算延时')),
+    Section('sim.current.code', ("your C routine as the current controller, run beside pulab's own "
+                                 "(absent: pulab's only)", '以你的 C 例程作电流控制器，与 pulab 自己的并列'
+                                 '运行（不填则只有 pulab 的）')),
+    F('sim.current.code.text', 'text', '', hi=200_000, default=REQUIRED,
+      label=('C code of one axis\'s controller', '单轴控制器的 C 代码')),
+    F('sim.current.code.target', 'choice', '', choices=('c28x', 'avr', 'msp430', 'arm'),
+      default='c28x', label=('Target', '目标')),
+    F('sim.current.code.entry', 'text', '', hi=200,
+      derived='the statements outside functions are the period\'s code',
+      label=('Entry function, called every period', '入口函数，每周期调用')),
+    F('sim.current.code.scale', 'choice', '', choices=('inovance', 'ti', 'nxp', 'st', 'microchip'),
+      default='inovance', label=('Integer units of current and voltage: this firmware\'s',
+                                 '电流与电压的整数单位：取该固件的')),
+    F('sim.current.code.reference', 'text', '', hi=200, label=('Input: current reference', '输入：电流给定')),
+    F('sim.current.code.feedback', 'text', '', hi=200, label=('Input: measured current', '输入：电流反馈')),
+    F('sim.current.code.error', 'text', '', hi=200,
+      label=('Input: reference − feedback', '输入：给定 − 反馈')),
+    F('sim.current.code.output', 'text', '', hi=200, default=REQUIRED,
+      label=('Output: voltage command (variable, field or return)', '输出：电压指令（变量、字段或 return）')),
+    F('sim.current.code.set', 'object', '', derived='none',
+      label=('Values given before the first call: name → integer, report path or {"d", "q"}',
+             '首次调用前给定的值：名字 → 整数、报告路径或 {"d", "q"}')),
+    F('sim.current.code.integral', 'text', '', hi=200, derived='no preload (starts at 0)',
+      label=('Integrator to preload with the back-EMF', '用反电势预置的积分器')),
+    F('sim.current.code.integral_shift', 'integer', '', lo=0, hi=31, default=0,
+      label=('Integrator = output units · 2^shift', '积分器 = 输出单位 · 2^shift')),
     Section('sim.pll', ('the PLL simulation', '锁相环仿真')),
     F('sim.pll.speed_hz', 'number', 'Hz', derived='motor.rated_freq_hz',
       label=('Electrical speed', '电角频率')),
@@ -538,6 +565,10 @@ def _range(f: Field) -> str:
     if f.kind == "table":
         cols = ", ".join(f"{n} ({u}, {_SIGNS[s]})" for n, u, s in f.columns)
         return f"list of ≥ 2 rows [{cols}], {f.columns[0][0]} increasing"
+    if f.kind == "text":
+        return f"text, ≤ {_g(f.hi)} characters"
+    if f.kind == "object":
+        return "object"
     if f.kind == "name_or_number":
         return ", ".join(f"`{c}`" for c in f.choices) + f" or a number, {f.unit}, {_g(f.lo)}..{_g(f.hi)}"
     if f.kind == "pair":

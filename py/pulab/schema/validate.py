@@ -140,6 +140,16 @@ def value(f: Field, v, path: str | None = None):
         return v
     if f.kind == "integer":
         return integer(v, path, int(f.lo), int(f.hi))
+    if f.kind == "text":
+        if not isinstance(v, str):
+            raise InputError(path, code="not_string", got=shown(v))
+        if len(v) > f.hi:
+            raise InputError(path, code="json_too_long", limit=int(f.hi))
+        return v
+    if f.kind == "object":
+        if not isinstance(v, dict):
+            raise InputError(path, code="not_object", got=shown(v))
+        return v
     return _number(f, v, path)
 
 

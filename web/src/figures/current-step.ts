@@ -1,5 +1,5 @@
 // Current-loop step response: SI, per-unit and the fixed point of the firmware the reader ships,
-// with that fixed − SI error below.
+// the user's routine when it is in the loop, with that fixed − SI error below.
 import { t, type Key } from '../i18n';
 import type { SimCurrent, SimProfileRun } from '../report-types';
 import { vendorName } from '../vendors';
@@ -25,6 +25,9 @@ export function renderCurrentStep(el: HTMLElement, sim: SimCurrent, axis: 'd' | 
     traces.push({ x: ms, y: s[key], name: `${t(`variant_${v}` as Key)} i_${axis}`, color: COLORS[v], dash: v === 'pu' ? 'dash' : 'solid', width: v === 'pu' ? 2.4 : 1.6 });
   }
   if (fx) traces.push({ x: ms, y: fx, name: `${t('sf_fixed', { name })} i_${axis}`, color: COLORS.fixed, width: 1.6 });
+  // The user's routine in the loop (sim.current.code), dotted so an equal fixed-point trace shows under it.
+  const own = sim.code?.variant[key];
+  if (own) traces.push({ x: ms, y: own, name: `${t('cl_code')} i_${axis}`, color: COLORS.code, dash: 'dot', width: 2.2 });
   const ref = (sim as Record<string, unknown>)[`${key}_ref`] ?? (sim as Record<string, unknown>).ref;
   if (Array.isArray(ref)) traces.push({ x: ms, y: ref as number[], name: 'ref', color: COLORS.ref, dash: 'dot', width: 1 });
   const si = sim.variants.si?.[key];

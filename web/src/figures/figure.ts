@@ -24,7 +24,7 @@ if (typeof window !== 'undefined') window.addEventListener('online', () => {
 });
 
 export const COLORS: Record<string, string> = {
-  si: '#1f6feb', pu: '#2da44e', fixed: '#d4670f', q15: '#8250df', naive: '#cf222e', ref: '#57606a',
+  si: '#1f6feb', pu: '#2da44e', fixed: '#d4670f', q15: '#8250df', naive: '#cf222e', ref: '#57606a', code: '#bf3989',
 };
 
 export interface Trace {

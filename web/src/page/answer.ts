@@ -3,7 +3,7 @@
 // repeated data-keys, equal values); a firmware that cannot hold the motor says why here too, with the same box as its panel.
 import { h, num, patch } from '../dom';
 import { t } from '../i18n';
-import { VENDOR_NAMES, type ProfileReport } from '../report-types';
+import { VENDOR_NAMES, type AcimProfile, type ProfileReport } from '../report-types';
 import type { PanelContext } from '../panels/panel';
 import { limitsBox } from '../panels/limits';
 import { shippedProfileReport } from '../panels/vendors';
@@ -54,11 +54,23 @@ function reviewLine(ctx: PanelContext): HTMLElement[] {
   return serious ? [h('div', { class: 'warnings' }, line)] : [line, h('div', { class: 'warnings' })];
 }
 
+/** An induction motor: the current-PI integers for Inovance, the C floats of a vendor with an
+ * induction-motor profile (the page's own report holds them), else that it has none. */
+function acimChips(ctx: PanelContext, v: Vendor): HTMLElement[] {
+  const r = ctx.report!;
+  if (v === 'inovance') return (['pm_kp', 'pm_ki'] as const).map((k) => chip(k, `current_pi.d.${k}`, r.current_pi?.d?.[k]));
+  const p = (r.profiles as unknown as Record<string, AcimProfile> | undefined)?.[v];
+  if (!p?.available || !p.constants) return [h('span', { class: 'num na' }, t('acimNoProfile'))];
+  return Object.entries(p.constants).map(([k, c]) => h('span', { class: 'int-chip' }, h('code', {}, k), ' ',
+    num(`profiles.${v}.constants.${k}.value`, c.value, { sig: 9 })));
+}
+
 /** Render the strip into `el`; `again` renders it once more (a profile's report arrived); `pick`
  * sets the shipped firmware in the input. */
 export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => void, pick: (v: Vendor) => void): void {
   const v = shippedProfile(ctx);
-  const other = v === 'inovance' ? null : shippedProfileReport(ctx, v, again);
+  const acim = Boolean(ctx.report?.acim);
+  const other = v === 'inovance' || acim ? null : shippedProfileReport(ctx, v, again);
   const picker = h('select', {
     name: 'answer.profile', 'aria-label': t('answerProfile'),
     onchange: (ev: Event) => pick((ev.target as HTMLSelectElement).value as Vendor),
@@ -69,8 +81,11 @@ export function renderAnswer(el: HTMLElement, ctx: PanelContext, again: () => vo
       h('label', { class: 'answer-profile' }, h('span', {}, t('answerProfile')), picker),
       reviewLine(ctx)),
     h('div', { class: 'answer-ints', 'data-profile': v },
-      h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(other?.profile, v),
-        h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers'))),
-      limitsBox(v, v === 'inovance' ? ctx.report?.firmware?.inovance : other?.status)),
+      acim
+        ? h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, acimChips(ctx, v),
+          h('a', { class: 'more', href: '#panel-acim', 'data-nav': 'acim' }, t('answerAllIntegers')))
+        : h('div', { class: 'chips', 'aria-label': t('answerIntegers') }, v === 'inovance' ? inovanceChips(ctx) : profileChips(other?.profile, v),
+          h('a', { class: 'more', href: `#panel-${v === 'inovance' ? 'vendor' : 'vendors'}`, 'data-nav': v === 'inovance' ? 'vendor' : 'vendors' }, t('answerAllIntegers'))),
+      acim ? null : limitsBox(v, v === 'inovance' ? ctx.report?.firmware?.inovance : other?.status)),
   );
 }

@@ -1,6 +1,6 @@
 // The page's skeleton (full page or one embedded panel): the answer strip, the views (tabs) and
 // the panels rendered into them, and the stale marking of numbers that no longer match the form.
-import { h, keepFocus } from '../dom';
+import { h, keepFocus, patch } from '../dom';
 import { errText, t, type Key } from '../i18n';
 import type { Panel, PanelContext, PanelId } from '../panels/panel';
 import { PANELS } from '../panels/registry';
@@ -22,6 +22,15 @@ const idle = (f: () => void, timeout = 1000): void => {
   if (typeof requestIdleCallback === 'function') requestIdleCallback(f, { timeout });
   else setTimeout(f, Math.min(timeout, 500));
 };
+
+/** The panels that show an induction motor's report (motor.kind = acim); the others compute a
+ * permanent-magnet motor and say so instead of reading sections its report does not have. */
+const ACIM_PANELS = new Set<PanelId>(['acim', 'review', 'bases', 'pll', 'qcalc', 'conventions', 'docs']);
+
+function renderPanel(p: Panel, el: HTMLElement, ctx: PanelContext): void {
+  if (ctx.report?.acim && !ACIM_PANELS.has(p.id)) patch(el, h('p', { class: 'note acim-na' }, t('acimNotApplicable')));
+  else p.render(el, ctx);
+}
 
 export class Layout {
   private panelEls = new Map<PanelId, HTMLElement>();
@@ -215,7 +224,7 @@ export class Layout {
       const el = this.panelEls.get(p.id);
       if (!el) continue;
       const t0 = performance.now();
-      keepFocus(el, () => p.render(el, ctx));
+      keepFocus(el, () => renderPanel(p, el, ctx));
       took.push([p.id, performance.now() - t0]);
     }
     // <html data-render-slowest>: the three slowest panels of the last render (the bench prints them).
@@ -247,7 +256,7 @@ export class Layout {
     for (const p of this.panels()) {
       if (!p.pure) continue;
       const body = out.get(p.id) ?? h('div', { class: 'panel-body' });
-      p.render(body, ctx);
+      renderPanel(p, body, ctx);
       out.set(p.id, body);
     }
     return out;

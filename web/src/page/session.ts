@@ -309,7 +309,8 @@ export class ComputeSession {
   }
 
   private async computeSim(eff: Input): Promise<void> {
-    if (!this.wantsSim || !eff.sim) return;
+    // an induction motor has no simulation yet (pulab refuses its "sim" section)
+    if (!this.wantsSim || !eff.sim || eff.motor?.kind === 'acim') return;
     // Only the newest input is simulated once the gate opens.
     const waiting = this.simLatest !== null;
     this.simLatest = eff;

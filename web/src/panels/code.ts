@@ -5,6 +5,7 @@ import { flagChips, focusedInput, h, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import { codeSearch, codeStateFromSearch, DEFAULT_TARGET, DEFAULT_VS, differingSteps, differingVars, prefill, traceRequest, type CodeState } from '../code-share';
 import { copyLinkToast } from '../page/toast';
+import { LOOP_FIELDS, LOOP_PATH as LOOP_FIELD } from '../fields';
 import type { Panel, PanelContext } from './panel';
 import { renderProve, type ProveHost } from './code-prove';
 import type { TraceExample, TraceLine, TraceTerm, TraceVar } from '../api-types';
@@ -234,10 +235,96 @@ const proveHost: ProveHost = {
   },
 };
 
+/** The binding the user picked in the loop box (role → C name; '' = not bound). */
+const loopPick: Record<string, string> = {};
+const LOOP_ROLES: [string, RegExp][] = [['error', /err/i], ['feedback', /(^|[._>])(fb|fbk|feedback|meas)/i], ['reference', /ref/i]];
+const LOOP_SCALES = LOOP_FIELDS.find((f) => f.path === `${LOOP_FIELD}.scale`)?.options ?? ['inovance'];
+/** Report values that describe one worked example, not a constant of the firmware: not given to the loop. */
+const EXAMPLE_ONLY = /^current_pi\.step_example\./;
+
+/** `set` of the binding: the typed values, else the report's integer by its path (per axis for a
+ * current_pi.d/q path), for every input not bound. */
+function loopSet(bound: Set<string>, ctx: PanelContext): Record<string, unknown> {
+  const s = st();
+  const fromReport = prefill(inputs, ctx.report);
+  const out: Record<string, unknown> = {};
+  for (const name of inputs) {
+    if (bound.has(name)) continue;
+    const typed = s.set[name]?.trim();
+    const r = fromReport[name];
+    if (typed) out[name] = typed;
+    else if (r && !EXAMPLE_ONLY.test(r.source)) {
+      const axis = /^current_pi\.[dq]\./.exec(r.source);
+      out[name] = axis ? { d: r.source.replace(/^current_pi\.[dq]\./, 'current_pi.d.'), q: r.source.replace(/^current_pi\.[dq]\./, 'current_pi.q.') } : r.source;
+    }
+  }
+  return out;
+}
+
+/** "In the current loop": bind the routine's inputs and output by name and put it into the simulation. */
+function renderLoop(box: HTMLElement, ctx: PanelContext): void {
+  const a = main?.ok ? main : null;
+  const s = st();
+  const current = (ctx.input.sim?.current as Record<string, unknown> | undefined)?.code as Record<string, unknown> | undefined;
+  // pulab's verdict on the binding (the simulation names the sim.current.code field at fault)
+  const err = current && ctx.simError?.startsWith(LOOP_FIELD) ? ctx.simError : '';
+  const key = JSON.stringify([a ? [inputs, Object.keys(a.vars)] : null, !!current, current?.output, getLang(), !!ctx.setLoop, err]);
+  if (box.dataset.key === key) return;
+  box.dataset.key = key;
+  if (ctx.embed) { // an embedded Code view has no loop to put it in
+    box.replaceChildren();
+    return;
+  }
+  if (!a || !ctx.setLoop) {
+    box.replaceChildren(...(current && ctx.setLoop ? [h('h3', {}, t('cl_title')), loopActive(current, ctx, err)] : []));
+    return;
+  }
+  const written = Object.keys(a.vars).filter((n) => n !== 'return' && !a.vars[n].input && a.vars[n].c_type !== 'pointer');
+  const outputs = [...(a.vars.return && a.vars.return.c_type !== 'pointer' ? ['return'] : []), ...written];
+  for (const [role, re] of LOOP_ROLES) {
+    if (loopPick[role] === undefined || (loopPick[role] && !inputs.includes(loopPick[role]))) loopPick[role] = inputs.find((n) => re.test(n)) ?? '';
+  }
+  if (!loopPick.output || !outputs.includes(loopPick.output)) {
+    const last = [...a.steps].reverse().find((x) => x.var && written.includes(x.var))?.var;
+    loopPick.output = outputs.includes('return') ? 'return' : last ?? outputs[0] ?? '';
+  }
+  loopPick.scale ??= 'inovance';
+  const pick = (role: string, label: string, options: string[], none: boolean) =>
+    h('label', {}, `${t(label as Parameters<typeof t>[0])} `,
+      h('select', { name: `loop.${role}`, onchange: (ev: Event) => { loopPick[role] = (ev.target as HTMLSelectElement).value; } },
+        [...(none ? [''] : []), ...options].map((v) => h('option', { value: v, selected: v === loopPick[role] }, v || t('cl_none')))));
+  const use = () => {
+    const bound = new Set(LOOP_ROLES.map(([r]) => loopPick[r]).filter((n) => n));
+    const code: Record<string, unknown> = { text: s.code, target: s.target, scale: loopPick.scale, output: loopPick.output, set: loopSet(bound, ctx) };
+    if (s.entry) code.entry = s.entry;
+    for (const [role] of LOOP_ROLES) if (loopPick[role]) code[role] = loopPick[role];
+    ctx.setLoop?.(code);
+  };
+  box.replaceChildren(
+    h('h3', {}, t('cl_title')),
+    h('p', { class: 'hint' }, t('cl_intro')),
+    h('div', { class: 'code-controls code-loop' },
+      ...LOOP_ROLES.map(([role]) => pick(role, `cl_${role}`, inputs, true)),
+      pick('output', 'cl_output', outputs, false),
+      pick('scale', 'cl_scale', LOOP_SCALES, false),
+      h('button', { type: 'button', class: 'code-loop-use', onclick: use }, t('cl_use'))),
+    current ? loopActive(current, ctx, err) : '');
+}
+
+function loopActive(current: Record<string, unknown>, ctx: PanelContext, err: string): HTMLElement {
+  return h('div', {},
+    h('p', { class: 'note code-loop-active' },
+      t('cl_active', { output: String(current.output ?? ''), entry: String(current.entry ?? '—'), scale: String(current.scale ?? 'inovance') }), ' ',
+      h('button', { type: 'button', class: 'code-loop-remove', onclick: () => ctx.setLoop?.(null) }, t('cl_remove'))),
+    err ? h('p', { class: 'err code-loop-err', role: 'alert' }, err) : '');
+}
+
 function update(el: HTMLElement, ctx: PanelContext): void {
   const s = st();
   const proveBox = el.querySelector<HTMLElement>('.code-prove-box');
   if (proveBox) renderProve(proveBox, ctx, proveHost);
+  const loopEl = el.querySelector<HTMLElement>('.code-loop-box');
+  if (loopEl) renderLoop(loopEl, ctx);
   const box = el.querySelector<HTMLElement>('.code-inputs');
   const boxKey = JSON.stringify([inputs, ctx.report ? prefill(inputs, ctx.report) : null, getLang()]);
   if (box && box.dataset.key !== boxKey) {
@@ -383,6 +470,7 @@ export const codePanel: Panel = {
             h('div', { class: 'code-inputs fields' })),
           h('div', { class: 'code-out' })),
         h('div', { class: 'code-prove-box' }),
+        h('div', { class: 'code-loop-box' }),
         h('div', { class: 'code-trace' })),
     );
     const ta = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');

@@ -53,6 +53,27 @@ function noTrace(sim: SimCurrent, fw: string, report: Report | null | undefined)
     t('sf_cannot', { name: vendorName(fw), fields: [...new Set(fields)].join(', ') || '—' }));
 }
 
+/** The user's routine in the loop (sim.current.code): its distance from SI and from pulab's
+ * integers, its clips, its first wrap or saturation and the inputs that started at 0. */
+function codeNotes(sim: SimCurrent): HTMLElement[] {
+  const c = sim.code;
+  if (!c) return [];
+  const p = 'sim.current.code';
+  const fe = c.first_event;
+  return [
+    h('p', { class: 'note sim-code' }, `${t('cl_vs')}: `,
+      num(`${p}.metrics.vs_si_max_abs_a`, c.metrics.vs_si_max_abs_a, { unit: 'A' }), ' = ',
+      num(`${p}.metrics.vs_si_max_lsb`, c.metrics.vs_si_max_lsb, { sig: 4 }), ` ${t('sf_lsb')}`,
+      ...(c.metrics.vs_fixed_max_abs_a === null ? [] : ['; ', `${t('cl_vs_fixed')}: `,
+        num(`${p}.metrics.vs_fixed_max_abs_a`, c.metrics.vs_fixed_max_abs_a, { unit: 'A' })])),
+    h('p', { class: 'note sim-code-events' }, `${t('cl_events')} `,
+      num(`${p}.events.feedback_saturate`, c.events.feedback_saturate, { kind: 'int' }), `, ${t('cl_beyond')} `,
+      num(`${p}.events.beyond_limit`, c.events.beyond_limit, { kind: 'int' }),
+      fe ? ` ${t('cl_first', { call: fe.call, axis: fe.axis, line: fe.line, kind: fe.kind, name: fe.name })}` : ''),
+    ...(c.zeroed.length ? [h('p', { class: 'note sim-code-zeroed' }, `${t('cl_zeroed')} `, h('code', {}, c.zeroed.join(', ')))] : []),
+  ];
+}
+
 /** The shipped firmware's run below the table: its distance from SI and its wraps and saturations. */
 function profileNotes(sim: SimCurrent, fw: string): (HTMLElement | null)[] {
   const run = sim.by_profile?.[fw];
@@ -86,6 +107,7 @@ export const currentPanel: Panel = {
     const fxMetrics = fw === 'inovance' ? (sim?.metrics.fixed as Record<string, unknown> | undefined) : run?.ran ? run.metrics : undefined;
     const extra: MetricColumn[] = fxMetrics ? [{ label: t('sf_fixed', { name: vendorName(fw) }),
       path: fw === 'inovance' ? 'sim.current.metrics.fixed' : `sim.current.by_profile.${fw}.metrics`, metrics: fxMetrics }] : [];
+    if (sim?.code) extra.push({ label: t('cl_code'), path: 'sim.current.code.metrics', metrics: sim.code.metrics });
     patch(el, ...[
       h('div', { class: 'formulas' },
         tex(DESIGN()[method] ?? DESIGN().manual, true),
@@ -96,6 +118,8 @@ export const currentPanel: Panel = {
           h('tr', {}, h('th', {}, t('axis')), h('th', {}, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', { class: 'sep' }, 'kp_pu'), h('th', {}, 'ki_pu [1/s]'), h('th', { class: 'sep' }, 'pm_kp (Q12)'), h('th', {}, 'pm_ki (Q16·Ts)'), h('th', { class: 'sep' }, 'kp [Ω]'), h('th', {}, 'ki [Ω/s]'), h('th', {}, `${t('impliedBw')} [Hz]`))),
         h('tbody', {}, axisRow('d', pi?.d), axisRow('q', pi?.q))),
       h('h3', {}, t('plotCurrent')),
+      // the routine put into the loop could not run: the plot below is the last input's
+      ctx.simError?.startsWith('sim.current.code') ? h('p', { class: 'err sim-code-err', role: 'alert' }, ctx.simError) : null,
       sim ? noTrace(sim, fw, report) : null,
       h('div', { class: 'figure', 'data-keep': 'current-step' }),
       sim ? metricsTable('sim.current.metrics', sim.metrics, ['si', 'pu'], METRIC_ROWS, extra) : null,
@@ -105,6 +129,7 @@ export const currentPanel: Panel = {
         '; ', h('span', { class: sim.metrics.fixed_wraps ? 'flag-wrap' : '' }, `${t('fixedWraps')}: `,
           num('sim.current.metrics.fixed_wraps', sim.metrics.fixed_wraps, { kind: 'int' }))) : null,
       ...(sim ? profileNotes(sim, fw) : []),
+      ...(sim ? codeNotes(sim) : []),
       ex ? h('div', { class: 'step-example' }, h('h3', {}, t('stepExample', { e: ex.error })), traceTable('current_pi.step_example.trace', ex.trace)) : null,
     ]);
     keptFigure(el, 'current-step', sim, (fig) => renderCurrentStep(fig, sim!, axis, ctx.report?.input.drive?.ts_s as number | undefined, fw), () => simPlaceholder(ctx));

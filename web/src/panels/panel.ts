@@ -19,6 +19,8 @@ export interface PanelContext {
   client: PulabClient | null;
   /** A panel's own request failed on an input (`err`) or passed (null): the form shows it at the field. */
   fieldError?: (panel: PanelId, err: ApiErr | null) => void;
+  /** Put a routine into the simulated current loop (the input's sim.current.code), or with null take it out. */
+  setLoop?: (code: Record<string, unknown> | null) => void;
   embed: boolean;
 }
 

@@ -21,11 +21,13 @@ import { boardPanel } from './board';
 import { fwPanel } from './fw';
 import { observerPanel } from './observer';
 import { auditPanel } from './audit';
+import { acimPanel } from './acim';
 import { docsPanel, setPanelRegistry } from './docs';
 
 export const PANELS: Panel[] = [
   reviewPanel, // first: the design review is the page's summary
   datasheetPanel,
+  acimPanel,
   basesPanel,
   puPanel,
   vendorPanel,

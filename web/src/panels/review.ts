@@ -79,10 +79,11 @@ export const reviewPanel: Panel = {
       findings.length
         ? h('ul', { class: 'findings' }, findings.map(findingItem))
         : h('p', { class: 'ok' }, t('reviewQuiet')),
-      h('h3', {}, t('headroomTitle')),
-      table([t('quantity'), t('value'), t('unit')], HEADROOM.map((k) => [
+      // an induction motor's review has neither (docs/contract.md, "Induction motor")
+      hr && h('h3', {}, t('headroomTitle')),
+      hr && table([t('quantity'), t('value'), t('unit')], HEADROOM.map((k) => [
         t(`hr_${k}` as Key), hr[k] === null ? '—' : num(`review.headroom.${k}`, hr[k], { sig: 6 }), k === 'field_weakening_from_hz' ? 'Hz' : 'V']), 'headroom'),
-      h('details', { class: 'thresholds' }, h('summary', {}, t('reviewThresholds')),
+      thr && h('details', { class: 'thresholds' }, h('summary', {}, t('reviewThresholds')),
         table([t('quantity'), t('sev_note'), t('sev_warning'), t('sev_error')], Object.keys(thr).map((k) => [
           t(`thr_${k}` as Key),
           ...(['note', 'warning', 'error'] as const).map((s) => num(`review.thresholds.${k}.${s}`, thr[k][s] ?? null, { text: thr[k][s] === undefined ? '—' : String(thr[k][s]) })),

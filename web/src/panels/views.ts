@@ -11,7 +11,7 @@ export interface View {
 
 export const VIEWS: View[] = [
   // First: the answer (review, the firmware integers) and what it is built from.
-  { id: 'design', panels: ['review', 'vendor', 'bases', 'pu', 'datasheet'] },
+  { id: 'design', panels: ['review', 'vendor', 'acim', 'bases', 'pu', 'datasheet'] },
   { id: 'firmware', panels: ['vendors', 'board', 'constants', 'code', 'audit'] },
   { id: 'loops', panels: ['current', 'pll', 'loop', 'fw', 'observer'] },
   { id: 'tools', panels: ['qcalc', 'conventions', 'sweep', 'prove', 'batch'] },

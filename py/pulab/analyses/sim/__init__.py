@@ -9,6 +9,7 @@ Modules, one concept each:
 - :mod:`.plant` — PMSM dq model (seed 1.2-3), exact zero-order-hold discretization;
 - :mod:`.current` — current loop: SI float, per-unit float, vendor fixed point;
 - :mod:`.vendor_loop` — TI's, NXP's, ST's and Microchip's integer PI (each vendor's ``pi``);
+- :mod:`.code_loop` — the user's C routine as the controller (``sim.current.code``);
 - :mod:`.pll` — PLL: SI, per unit, int16 angle (Q15 of π), naive gains;
 - :mod:`.metrics` — rise/settling/overshoot, lock detection;
 - :mod:`.inputs` — validation and defaults;
@@ -36,6 +37,8 @@ this drive (``firmware.inovance``), ``fixed`` is absent, ``fixed_vs_si_*`` are n
 float variants, which always run, clamp at U_dc/√2.  ``current.by_profile`` holds TI's,
 NXP's, ST's and Microchip's own integer PI (:mod:`.vendor_loop`), each with its metrics and
 its count of wraps and saturations, or the problems that keep it from running.
+``current.code`` (only with the input ``sim.current.code``) is the user's C routine in the
+loop (:mod:`.code_loop`; docs/contract.md, "Your code in the loop").
 """
 
 from __future__ import annotations
@@ -119,6 +122,17 @@ def _current_section(report: dict, cfg: dict):
                             "variant": {k: _pick(run[k], idx) for k in ("id", "iq", "ud", "uq")},
                             "metrics": m}
         yield
+    code = r.get("code")
+    if code is not None:
+        m = step_metrics(t, code[key], ref, code["sat"], ts)
+        d = _max_diff(code, si)
+        own = None if fx is None else _max_diff(code, fx)
+        m.update(vs_si_max_abs_a=d, vs_si_max_lsb=d / code["lsb_a"], vs_fixed_max_abs_a=own)
+        code = {"ran": True, "scale": code["scale"], "lsb_a": code["lsb_a"],
+                "variant": {k: _pick(code[k], idx) for k in ("id", "iq", "ud", "uq")},
+                "ints": {k: _pick(code[k], idx) for k in ("fb_d", "fb_q", "out_d", "out_q")},
+                "metrics": m, "events": code["events"], "flags": code["flags"],
+                "first_event": code["first_event"], "zeroed": code["zeroed"]}
     # First-order design value (bandwidth design: closed loop 1/(1 + s/ω_c)):
     # t_r = ln(9)/ω_c ≈ 2.2/(2π·bw).  Shown next to the simulated value, deviation included.
     cl = report["input"]["current_loop"]
@@ -132,8 +146,11 @@ def _current_section(report: dict, cfg: dict):
     metrics["first_order_rise_time_s"] = first
     metrics["wc_ts"] = wc_ts
     metrics["rise_time_deviation_pct"] = dev
-    return {"t": _pick(t, idx), "variants": variants, "metrics": metrics,
-            "by_profile": by_profile}
+    out = {"t": _pick(t, idx), "variants": variants, "metrics": metrics,
+           "by_profile": by_profile}
+    if code is not None:
+        out["code"] = code
+    return out
 
 
 def _max_diff(a: dict, b: dict) -> float:

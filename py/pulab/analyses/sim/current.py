@@ -64,7 +64,7 @@ from ...fixedpoint.qformat import iqsat, round_half_away
 from ...profiles.inovance_code import current_pi_step
 from .inputs import periods
 from .plant import zoh
-from . import vendor_loop
+from . import code_loop, vendor_loop
 
 __all__ = ["voltage_limits", "run_float", "run_fixed", "run", "run_float_steps", "run_fixed_steps", "run_steps",
            "MAX_STEPS", "Q12_CURRENT_LIMIT_PU"]
@@ -303,14 +303,17 @@ def run_steps(report: dict, cfg: dict):
         ``t`` (s), ``ts``, ``n``, ``axis``, ``ref_a`` (A), and ``variants``:
         ``si``/``pu``/``fixed`` → ``id, iq, ud, uq`` in A and V (phase) plus ``sat``;
         no ``fixed`` when the Inovance firmware cannot compute its voltage limits;
-        ``by_profile``: TI, NXP, ST, Microchip (:func:`_profile_runs`).
+        ``by_profile``: TI, NXP, ST, Microchip (:func:`_profile_runs`); with
+        ``sim.current.code``, ``code``: the user's routine (:func:`.code_loop.run_code_steps`,
+        plus ``lsb_a``, ``scale`` and ``zeroed``).
 
     Raises
     ------
     InputError
         ``sim.current.duration_s`` for too many periods, ``sim.current.step_a``
         for a reference outside the Q12 int16 range, ``sim.current.speed_hz`` at or
-        above half the control frequency.
+        above half the control frequency; ``sim.current.code.*`` for a routine that does
+        not compile or a binding the code does not have (:func:`.code_loop.bind`).
     """
     inp, b, pu, vendor, pi = (report["input"], report["base"], report["pu"], report["vendor"],
                               report["current_pi"])
@@ -320,7 +323,9 @@ def run_steps(report: dict, cfg: dict):
     axis = cfg["axis"]
     duration = cfg["duration_s"] if cfg["duration_s"] is not None else \
         default_duration(report, axis)
-    n = periods(duration, ts, MAX_STEPS, "sim.current.duration_s")
+    code = cfg.get("code")
+    n = periods(duration, ts, MAX_STEPS if code is None else code_loop.MAX_PERIODS,
+                "sim.current.duration_s")
     step = cfg["step_a"] if cfg["step_a"] is not None else 0.5 * i_b
     if abs(step / i_b) >= Q12_CURRENT_LIMIT_PU:
         raise InputError("sim.current.step_a", code="step_q12", value=step, pu=step / i_b,
@@ -338,6 +343,14 @@ def run_steps(report: dict, cfg: dict):
     gd, gq = pi["d"], pi["q"]
 
     z_si = zoh(m["rs_ohm"], m["ld_h"], m["lq_h"], pu["psi_r_wb"], omega, ts)
+    if code is not None:  # bound first: a binding error costs no simulation
+        sc = code_loop.scale(report, code["scale"], umax_pu, maxout if fixed else None)
+        shift = code["integral_shift"]
+        # the back-EMF within the voltage limit, as every run here clamps its preload
+        top = sc["out_limit"] << shift
+        preload = 0 if code["integral"] is None else \
+            max(-top, min(top, round_half_away(z_si.bemf / sc["to_volt"] * 2.0 ** shift)))
+        binding = code_loop.bind(code, report, preload)
     si = yield from run_float_steps(z_si, gd["kp"], gd["ki"] * ts, gq["kp"], gq["ki"] * ts,
                                     umax_pu * u_b, imax_pu * u_b, ref_d, ref_q, z_si.bemf, n,
                                     cfg["delay"])
@@ -353,16 +366,21 @@ def run_steps(report: dict, cfg: dict):
     variants = {"si": si, "pu": p}
     by_profile = yield from _profile_runs(report, z_si, umax_pu * u_b, ref_d, ref_q, n,
                                           cfg["delay"])
+    out = {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "axis": axis,
+           "ref_a": step, "variants": variants, "by_profile": by_profile}
+    if code is not None:
+        run = yield from code_loop.run_code_steps(z_si, binding, sc, ref_d, ref_q,
+                                                  preload >> shift, n, cfg["delay"])
+        out["code"] = {**run, "lsb_a": sc["lsb_a"], "scale": code["scale"],
+                       "zeroed": binding.zeroed}
     if not fixed:
-        return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n,
-                "axis": axis, "ref_a": step, "variants": variants, "by_profile": by_profile}
+        return out
     variants["fixed"] = yield from run_fixed_steps(z_si, i_b, u_b, gd["pm_kp"], gd["pm_ki"], gq["pm_kp"],
                                     gq["pm_ki"], maxu, maxout,
                                     round_half_away(ref_d / i_b * 4096.0),
                                     round_half_away(ref_q / i_b * 4096.0),
                                     round_half_away(z_pu.bemf * 16777216.0), n, cfg["delay"])
-    return {"t": array("d", (k * ts for k in range(n + 1))), "ts": ts, "n": n, "axis": axis,
-            "ref_a": step, "variants": variants, "by_profile": by_profile}
+    return out
 
 
 def _profile_runs(report: dict, z, umax_v: float, ref_d: float, ref_q: float, n: int,

@@ -30,7 +30,8 @@ from ...schema.validate import read
 __all__ = ["validate", "periods", "FIELDS"]
 
 #: Allowed keys per subsection.
-FIELDS = {name: tuple(f.key for f in section_fields(f"sim.{name}")) for name in ("current", "pll")}
+FIELDS = {name: tuple(f.key for f in section_fields(f"sim.{name}"))
+          for name in ("current", "current.code", "pll")}
 
 
 def periods(duration: float, ts: float, cap: int, field: str) -> int:
@@ -82,4 +83,7 @@ def validate(sim_input) -> dict:
         Naming the JSON path of the first bad field.
     """
     sim = read("sim", sim_input)
-    return {"current": read("sim.current", sim.get("current")), "pll": read("sim.pll", sim.get("pll"))}
+    current = read("sim.current", sim.get("current"))
+    if "code" in current:  # the user's routine as the controller (:mod:`.code_loop`)
+        current["code"] = read("sim.current.code", current["code"])
+    return {"current": current, "pll": read("sim.pll", sim.get("pll"))}

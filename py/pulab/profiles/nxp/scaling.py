@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import math
 
+from ...schema.errors import InputError
 from ..common import SOURCES, SQRT3, TWO_PI, board_value, fixed, mantissa_shift, real
 from ..vendor import Option
 
@@ -82,7 +83,11 @@ def u_max(udcb_max_v: float, coeff: float, rounded: bool = True) -> float:
 
 
 def _scales(opt: dict) -> tuple[float, float]:
-    return u_max(opt["udcb_max_v"], opt["u_max_coeff"], opt["round_u_max"]), opt["i_max_a"]
+    um = u_max(opt["udcb_max_v"], opt["u_max_coeff"], opt["round_u_max"])
+    if isinstance(um, float) and um == 0.0:    # (over a box of a family proof: an interval)
+        raise InputError("profiles.nxp.u_max_coeff", code="nxp_u_max_zero",
+                         value=opt["udcb_max_v"] / opt["u_max_coeff"])
+    return um, opt["i_max_a"]
 
 
 def bases(ctx: dict, opt: dict) -> tuple:

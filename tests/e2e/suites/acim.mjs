@@ -1,0 +1,54 @@
+// Induction motors: a share link with motor.kind = acim shows the Induction motor panel equal to
+// CPython pulab (every number a data-key), the PMSM-only panels say they do not apply, the form's
+// kind switches which fields apply and recomputes, and the panel is looked at in zh and en.
+import { join } from 'node:path';
+
+export default async function acim({ check, assert, newPage, subSrv, ready, waitValue, cpython, golden, compareShown, SHOTS }) {
+  const st = golden('acim/01_st_mez_acim.json').input;
+  const page = await newPage();
+  // an induction motor's report has no vendor.Rpm (what `ready` waits for): its own first number
+  const acimReady = (p) => p.waitForSelector('#panel-acim [data-key="acim.tau_r_s"][data-value]', { timeout: 60_000 });
+
+  await check('acim: a share link shows the induction motor as CPython pulab computes it', async () => {
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(st))}`);
+    await acimReady(page);
+    const n = await compareShown(page, cpython(st), '#panel-acim');
+    assert(n >= 70, `only ${n} induction-motor numbers compared`);
+    const na = await page.$eval('#panel-pu', (e) => e.textContent ?? '');
+    assert(na.includes('Does not apply to an induction motor'), `pu panel: ${na.slice(0, 80)}`);
+    const chip = await page.$eval('section.answer [data-key="current_pi.d.pm_kp"]', (e) => Number(e.dataset.value));
+    assert(chip === cpython(st).current_pi.d.pm_kp, `answer strip pm_kp ${chip}`);
+  });
+
+  await check('acim: the form switches by motor.kind and recomputes', async () => {
+    const seed = golden('01_seed_motor.json').input;
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(seed))}`);
+    await ready(page);
+    assert(await page.$eval('input[name="motor.rr_ohm"]', (e) => e.disabled), 'R_r enabled for a PMSM');
+    await page.selectOption('select[name="motor.kind"]', 'acim');
+    assert(await page.$eval('input[name="motor.ld_h"]', (e) => e.disabled), 'L_d enabled for an induction motor');
+    for (const [k, v] of [['rated_speed_rpm', '3200'], ['rr_ohm', '1.2'], ['lm_h', '20000'], ['lls_h', '1000'], ['llr_h', '1000']]) {
+      await page.$eval(`[name="motor.${k}"]`, (e) => e.closest('details')?.setAttribute('open', ''));
+      await page.fill(`input[name="motor.${k}"]`, v);  // inductances in µH, the form's first unit
+    }
+    const inp = { motor: { kind: 'acim', rated_voltage_v: 17, rated_current_a: 1.5, rated_freq_hz: 220, rs_ohm: 1.5,
+      pole_pairs: 4, rated_speed_rpm: 3200, rr_ohm: 1.2, lm_h: 0.02, lls_h: 0.001, llr_h: 0.001 }, drive: seed.drive };
+    await waitValue(page, 'acim.tau_r_s', cpython(inp).acim.tau_r_s);
+  });
+
+  await check('acim: screenshots at 390 and 1366 px, zh and en, without overflow', async () => {
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(st))}`);
+    await acimReady(page);
+    for (const lang of ['en', 'zh']) {
+      for (const w of [390, 1366]) {
+        await page.setViewportSize({ width: w, height: 900 });
+        await page.click(`button[data-lang="${lang}"]`);
+        await page.$eval('#panel-acim', (e) => e.scrollIntoView());
+        const overflow = await page.$eval('#panel-acim', (e) => e.scrollWidth - e.clientWidth);
+        assert(overflow <= 1, `acim panel overflows by ${overflow}px at ${w} (${lang})`);
+        await (await page.$('#panel-acim')).screenshot({ path: join(SHOTS, `acim-${w}-${lang}.png`) });
+      }
+    }
+  });
+  await page.close();
+}
