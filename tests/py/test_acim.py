@@ -141,7 +141,10 @@ def test_vendors_without_acim_say_so():
     assert p["ti"]["constants"]["Kr"]["format"] == "IQ24"
     for name in ("inovance", "microchip"):
         assert p[name] == {"available": False, "reason": "no public induction-motor scaling is "
-                                                         "modelled for this vendor in pu-lab"}
+                                                         "modelled for this vendor in pu-lab",
+                           "reason_zh": "pu-lab 未建模该厂商公开的感应电机标定"}
+    for name in ("nxp", "st", "ti"):     # what is not computed, said in both languages
+        assert p[name]["not_covered"] and p[name]["not_covered_zh"] != p[name]["not_covered"]
 
 
 def test_loop_is_the_pmsm_loop_on_the_sigma_plant():

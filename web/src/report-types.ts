@@ -159,7 +159,7 @@ export interface AcimReport {
   magnetizing_from: 'given' | 'no_load_estimate';
   pu: Record<string, number | null>;
   observer: Record<string, number>;
-  inovance: { applies: string[]; not_covered: string };
+  inovance: { applies: string[]; not_covered: string; not_covered_zh: string };
 }
 
 /** A vendor's induction-motor profile: its C floats, or why it has none. */
@@ -167,6 +167,7 @@ export interface AcimProfile {
   available: boolean;
   reason?: string;
   not_covered?: string;
+  not_covered_zh?: string;
   constants?: Record<string, { value: number; ideal: number; error_pct: number; format: string; expression: string; flags: string[] }>;
 }
 

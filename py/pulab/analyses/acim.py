@@ -43,7 +43,9 @@ INOVANCE = {
                 "loop.speed (with analysis.speed)"],
     "not_covered": "the seed's raw parameter block (LD, LQ, BemfVolt …) is a PMSM's; it documents "
                    "no induction-motor block (R_r, L_m, L_σ, I_0), so none of their integers is "
-                   "computed"}
+                   "computed",
+    "not_covered_zh": "源文档的原始参数块（LD、LQ、BemfVolt …）属于永磁同步电机；它没有感应电机的参数块"
+                      "（R_r、L_m、L_σ、I_0），因此这些量的整数都不计算"}
 #: Input sections that do not apply to an induction motor yet (each refused, naming it).
 NOT_APPLICABLE = ("raw", "board", "sim", "profiles", "analysis.fw", "analysis.robust",
                   "analysis.speed.response")
@@ -57,7 +59,8 @@ def profiles(a: dict, n: dict) -> dict:
         if own is None:
             out[v.NAME] = {"available": False,
                            "reason": "no public induction-motor scaling is modelled for this "
-                                     "vendor in pu-lab"}
+                                     "vendor in pu-lab",
+                           "reason_zh": "pu-lab 未建模该厂商公开的感应电机标定"}
         else:
             out[v.NAME] = {"available": True, **own(a, n)}
     return out

@@ -2,7 +2,7 @@
 // current-model observer, the current PI on σ·L_s, R_σ and each vendor's C floats. Every number
 // is pulab's (report `acim`, `current_pi`, `profiles`); this file formats only.
 import { h, num, patch, table } from '../dom';
-import { t, type Key } from '../i18n';
+import { getLang, t, type Key } from '../i18n';
 import type { AcimProfile } from '../report-types';
 import type { Panel } from './panel';
 
@@ -50,7 +50,7 @@ export const acimPanel: Panel = {
           table([t('quantity'), t('value'), '', '=', 'err %'], Object.entries(p.constants).map(([k, c]) => [h('code', {}, k),
             num(`profiles.${v}.constants.${k}.value`, c.value, { sig: 9 }), c.format, c.expression,
             num(`profiles.${v}.constants.${k}.error_pct`, c.error_pct, { sig: 3 })])),
-          h('p', { class: 'note' }, p.not_covered ?? ''))
+          h('p', { class: 'note' }, (getLang() === 'zh' ? p.not_covered_zh : p.not_covered) ?? ''))
         : h('p', { class: 'note', 'data-vendor': v }, h('strong', {}, v), `: ${t('acimNoProfile')}`)),
     );
   },

@@ -57,4 +57,6 @@ def acim(a: dict, n: dict) -> dict:
             ("M1_Q_KI_GAIN", ki, "V/A", "ω_0²·σL_s·T_s"))
     return {"constants": {k: real(k, v, u, e, SOURCE, single=True, decimals=DECIMALS) for k, v, u, e in rows},
             "not_covered": "M1_RFO_PSI_SA1/SA2 (the stator-flux integrator's cut-off, an MCAT "
-                           "setting), the speed PI and the field-weakening gains"}
+                           "setting), the speed PI and the field-weakening gains",
+            "not_covered_zh": "M1_RFO_PSI_SA1/SA2（定子磁链积分器的截止频率，MCAT 的设置项）、"
+                              "速度 PI 与弱磁增益"}

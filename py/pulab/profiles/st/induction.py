@@ -43,4 +43,6 @@ def acim(a: dict, n: dict) -> dict:
             ("NOMINAL_FREQ", m["rated_freq_hz"], "Hz", "f_n"))
     return {"constants": {k: real(k, v, u, e, SOURCE, single=True, decimals=DECIMALS) for k, v, u, e in rows},
             "not_covered": "FLUX_K and NOMINAL_CURRENT (board-scaled by CURRENT_CONV_FACTOR), "
-                           "the LSO observer's gains (acim_lso_parameters.h: GUI settings)"}
+                           "the LSO observer's gains (acim_lso_parameters.h: GUI settings)",
+            "not_covered_zh": "FLUX_K 与 NOMINAL_CURRENT（按 CURRENT_CONV_FACTOR 随板卡换算）、"
+                              "LSO 观测器增益（acim_lso_parameters.h：GUI 设置项）"}

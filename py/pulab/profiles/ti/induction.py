@@ -56,4 +56,6 @@ def acim(a: dict, n: dict) -> dict:
                        fmt=f"IQ{GLOBAL_Q}", value=value)
     return {"constants": out,
             "not_covered": "the flux estimator's K1…K8 (aci_fe_const.h) and the speed "
-                           "estimator's constants (aci_se_const.h)"}
+                           "estimator's constants (aci_se_const.h)",
+            "not_covered_zh": "磁链估计器的 K1…K8（aci_fe_const.h）与速度估计器的常数"
+                              "（aci_se_const.h）"}
