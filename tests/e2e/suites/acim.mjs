@@ -36,11 +36,11 @@ export default async function acim({ check, assert, newPage, subSrv, ready, wait
     await waitValue(page, 'acim.tau_r_s', cpython(inp).acim.tau_r_s);
   });
 
-  await check('acim: screenshots at 390 and 1366 px, zh and en, without overflow', async () => {
+  await check('acim: screenshots at 390, 900 and 1366 px, zh and en, without overflow', async () => {
     await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(st))}`);
     await acimReady(page);
     for (const lang of ['en', 'zh']) {
-      for (const w of [390, 1366]) {
+      for (const w of [390, 900, 1366]) {
         await page.setViewportSize({ width: w, height: 900 });
         await page.click(`button[data-lang="${lang}"]`);
         await page.$eval('#panel-acim', (e) => e.scrollIntoView());

@@ -1,6 +1,6 @@
 // Audit view: a pasted NXP MCAT header and a chosen ST MCSDK file set are audited on the page to the
 // same numbers as CPython pulab (every data-key the view shows), a header of no known vendor is
-// named at the text box, and the view is looked at in en and zh at 390 and 1366 px.
+// named at the text box, and the view is looked at in en and zh at 390, 900 and 1366 px.
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -52,9 +52,9 @@ export default async function audit({ check, assert, newPage, subSrv, ready, com
     await page.waitForSelector('#panel-audit [data-audit-profile="nxp"]', { timeout: 60_000 });
   });
 
-  await check('audit: screenshots at 390/1366 px, zh and en', async () => {
+  await check('audit: screenshots at 390/900/1366 px, zh and en', async () => {
     for (const lang of ['en', 'zh']) {
-      for (const w of [390, 1366]) {
+      for (const w of [390, 900, 1366]) {
         await page.setViewportSize({ width: w, height: 900 });
         await page.click(`button[data-lang="${lang}"]`);
         await open();

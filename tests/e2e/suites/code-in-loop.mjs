@@ -46,6 +46,23 @@ export default async function codeInLoop(ctx) {
     await p.screenshot({ path: join(SHOTS, 'code-in-loop-1366-en.png') });
   });
 
+  await check('code-in-loop: the loop box and the current plot at 390/900/1366 px, zh and en, without overflow', async () => {
+    for (const lang of ['zh', 'en']) {
+      for (const w of [390, 900, 1366]) {
+        await p.setViewportSize({ width: w, height: 900 });
+        await p.click(`button[data-lang="${lang}"]`);
+        await p.$eval('#panel-current .figure', (e) => e.scrollIntoView({ block: 'center' }));
+        await p.waitForSelector('#panel-current .plot-host .main-svg', { timeout: 30_000 });
+        for (const id of ['#panel-current', '#panel-code']) {
+          const over = await p.$eval(id, (e) => e.scrollWidth - e.clientWidth);
+          assert(over <= 1, `${id} overflows by ${over} px at ${w} (${lang})`);
+        }
+        await (await p.$('#panel-current')).screenshot({ path: join(SHOTS, `code-in-loop-current-${w}-${lang}.png`) });
+      }
+    }
+    await p.setViewportSize({ width: 1366, height: 900 });
+  });
+
   await check('code-in-loop: the link keeps the routine in the loop; "Remove from the loop" takes it out', async () => {
     await p.reload();
     await ready(p);
