@@ -143,14 +143,19 @@ _PROVE_KEYS = _TRACE_KEYS + ("range", "budget")
 _SEQUENCE_KEYS = _TRACE_KEYS + ("calls", "table")
 
 
-def _trace_request(req, keys: tuple) -> tuple:
-    """The checked fields of a tracer request: (code, defines, sets, zero_unset)."""
+def _request_object(req, keys: tuple) -> None:
+    """A request that is a JSON object of ``keys`` only (the first unknown key, sorted, named)."""
     if not isinstance(req, dict):
         raise InputError("input", code="not_object", got=shown(req))
     unknown = set(req) - set(keys)
     if unknown:
         raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
                          expected=", ".join(keys))
+
+
+def _trace_request(req, keys: tuple) -> tuple:
+    """The checked fields of a tracer request: (code, defines, sets, zero_unset)."""
+    _request_object(req, keys)
     zero_unset = req.get("zero_unset", False)
     if not isinstance(zero_unset, bool):
         raise InputError("zero_unset", code="not_flag", got=shown(zero_unset))
@@ -214,12 +219,7 @@ def _audit(req) -> dict:
     """A vendor's generated headers read back (:func:`pulab.analyses.audit.audit`):
     ``files`` [{"name", "text"}], ``profile`` (optional), ``define`` [NAME[=VALUE]]."""
     from .analyses.audit import audit
-    if not isinstance(req, dict):
-        raise InputError("input", code="not_object", got=shown(req))
-    unknown = set(req) - set(_AUDIT_KEYS)
-    if unknown:
-        raise InputError(key_path("", sorted(unknown, key=str)[0]), code="unknown_field",
-                         expected=", ".join(_AUDIT_KEYS))
+    _request_object(req, _AUDIT_KEYS)
     files = req.get("files")
     if not isinstance(files, list) or not files:
         raise InputError("files", code="audit_no_files")

@@ -221,15 +221,17 @@ def format_sequence_text(r: dict) -> str:
     return "\n".join(lines)
 
 
+def _whole(text: str, field: str, hi: int) -> int:
+    """A command-line whole number (its range is checked where it is used)."""
+    try:
+        return int(text)
+    except ValueError:
+        raise InputError(field, code="integer_range", lo=1, hi=hi, got=shown(text)) from None
+
+
 def _sequence(code: str, args: argparse.Namespace, gq) -> int:
     from ..ctrace.sequence import MAX_CALLS, read_table, trace_sequence
-    calls = None
-    if args.calls is not None:
-        try:
-            calls = int(args.calls)
-        except ValueError:
-            raise InputError("calls", code="integer_range", lo=1, hi=MAX_CALLS,
-                             got=shown(args.calls)) from None
+    calls = None if args.calls is None else _whole(args.calls, "calls", MAX_CALLS)
     table = None
     if args.inputs is not None:
         kind = args.inputs.rpartition(".")[2].lower()
@@ -254,13 +256,7 @@ def _sequence(code: str, args: argparse.Namespace, gq) -> int:
 
 def _prove(code: str, args: argparse.Namespace, gq) -> int:
     from ..ctrace.prove import DEFAULT_BUDGET, MAX_BUDGET, prove_code
-    budget = DEFAULT_BUDGET
-    if args.budget is not None:
-        try:
-            budget = int(args.budget)
-        except ValueError:
-            raise InputError("budget", code="integer_range", lo=1, hi=MAX_BUDGET,
-                             got=shown(args.budget)) from None
+    budget = DEFAULT_BUDGET if args.budget is None else _whole(args.budget, "budget", MAX_BUDGET)
     r = prove_code(code, args.target, args.entry, parse_ranges(args.ranges),
                    parse_sets(args.set), args.define, gq, budget, args.zero_unset,
                    args.undefine)

@@ -29,7 +29,7 @@ from ..schema.validate import shown
 from .errors import TraceError
 from .evaluate import FLAGS, Evaluator
 from .macro_entry import entry_macros
-from .tracing import DEFAULT_GLOBAL_Q, compile_code, input_values, inputs_for, result_vars
+from .tracing import DEFAULT_GLOBAL_Q, compile_code, input_values, result_vars, run_error
 
 __all__ = ["trace_sequence", "run_sequence", "read_table", "MAX_CALLS", "MAX_SEQUENCE_STEPS",
            "EVENT_KINDS"]
@@ -206,8 +206,4 @@ def trace_sequence(code: str, target: str = "c28x", calls: int | None = None,
     try:
         return run_sequence(checked, calls, table, inputs, global_q, zero_unset)
     except InputError as e:
-        err = TraceError.of(e)
-        err.inputs = inputs_for(checked, inputs if isinstance(inputs, dict) else {})
-        err.functions = [f for f in checked.functions if f not in checked.program.macros]
-        err.macros = entry_macros(checked.program)
-        raise err
+        raise run_error(e, checked, inputs) from None

@@ -314,11 +314,16 @@ def trace(code: str, target: str = "c28x", inputs: dict | None = None,
     try:
         return trace_checked(checked, inputs, global_q, zero_unset)
     except InputError as e:
-        err = TraceError.of(e)
-        err.inputs = inputs_for(checked, inputs if isinstance(inputs, dict) else {})
-        err.functions = [f for f in checked.functions if f not in checked.program.macros]
-        err.macros = entry_macros(checked.program)
-        raise err
+        raise run_error(e, checked, inputs) from None
+
+
+def run_error(e: InputError, checked: Checked, inputs) -> TraceError:
+    """A run-time error of checked code, with what the user can set and call beside it."""
+    err = TraceError.of(e)
+    err.inputs = inputs_for(checked, inputs if isinstance(inputs, dict) else {})
+    err.functions = [f for f in checked.functions if f not in checked.program.macros]
+    err.macros = entry_macros(checked.program)
+    return err
 
 
 def trace_checked(checked: Checked, inputs: dict | None = None,

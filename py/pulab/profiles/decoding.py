@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["macro", "result", "current_loop", "check", "near", "numbers_in"]
+__all__ = ["macro", "result", "current_loop", "check", "loop_margin_checks", "near", "numbers_in"]
 
 
 def macro(si, unit: str | None, meaning: str, formula: str) -> dict:
@@ -56,6 +56,17 @@ def check(severity: str, code: str, macros: list, advice: str = "", **params) ->
     """A finding of the vendor's: (severity, code, macros, params, advice); the words are the
     catalog's ``audit.<code>``."""
     return severity, code, macros, params, advice
+
+
+def loop_margin_checks(loops: dict, ts: float, macros: list) -> list:
+    """A ``loop_margin`` warning per current-loop axis whose bandwidth ω_c·T_s exceeds 0.2."""
+    out = []
+    for axis, c in loops.items():
+        wts = 2.0 * math.pi * c["bandwidth_hz"] * ts
+        if wts > 0.2:
+            out.append(check("warning", "loop_margin", macros, axis=axis, wts=round(wts, 3),
+                             bw=round(c["bandwidth_hz"], 1), ts=ts))
+    return out
 
 
 def near(a: float, b: float, rel: float) -> bool:

@@ -33,7 +33,7 @@ import json
 import math
 
 from ..common import SQRT3
-from ..decoding import check, current_loop, macro, result
+from ..decoding import check, current_loop, loop_margin_checks, macro, result
 
 __all__ = ["decode_header"]
 
@@ -288,11 +288,7 @@ def decode_header(values: dict, notes: dict) -> dict:
                 c["bandwidth_hz"] = c["mcat_f0_hz"]
             loops[axis] = c
     design["current_loop"] = loops or None
-    for axis, c in loops.items():
-        wts = 2.0 * math.pi * c["bandwidth_hz"] * ts
-        if wts > 0.2:
-            checks.append(check("warning", "loop_margin", list(_GAINS), axis=axis,
-                                wts=round(wts, 3), bw=round(c["bandwidth_hz"], 1), ts=ts))
+    checks += loop_margin_checks(loops, ts, list(_GAINS))
     speed = None
     if has("M1_SPEED_PI_PROP_GAIN") and (flt or (i_max and w_max)):
         g = 1.0 if flt else i_max / w_max / _Q15

@@ -26,7 +26,7 @@ from __future__ import annotations
 import math
 
 from ..common import SQRT2, SQRT3
-from ..decoding import check, current_loop, macro, result
+from ..decoding import check, current_loop, loop_margin_checks, macro, result
 
 __all__ = ["decode_header"]
 
@@ -193,11 +193,7 @@ def decode_header(values: dict, notes: dict) -> dict:
                                  "read in a public file): kp, ki and the bandwidth in SI follow "
                                  "it; Ki/Kp per sample does not")
     design["current_loop"] = loops or None
-    for axis, c in loops.items():
-        wts = 2.0 * math.pi * c["bandwidth_hz"] * ts
-        if wts > 0.2:
-            checks.append(check("warning", "loop_margin", list(_GAINS), axis=axis,
-                                wts=round(wts, 3), bw=round(c["bandwidth_hz"], 1), ts=ts))
+    checks += loop_margin_checks(loops, ts, list(_GAINS))
     if loops:
         design["input"]["current_loop"] = {"method": "manual",
                                            "kp": loops["q" if "q" in loops else "d"]["kp_v_per_a"],

@@ -159,28 +159,24 @@ def board_constants(ctx: dict, opt: dict | None = None) -> dict:
     the same for the bus; ``USER_M1_PWM_TBPRD_NUM`` = (uint16_t)(f_clk/f_pwm/2), an
     up-down count.
 
-    >>> b = {"current": {"full_range_a": 3.3 / 0.07}, "bus": None, "pwm": None}
+    >>> b = {"current": {"full_range_a": 3.3 / 0.07, "a_per_count": 3.3 / 0.07 / 4096},
+    ...      "bus": None, "pwm": None}
     >>> c = board_constants({"board": b, "board_input": {"current": {"adc_bits": 12}}})
     >>> c["USER_M1_ADC_FULL_SCALE_CURRENT_A"]["value"], c["USER_M1_CURRENT_SF"]["format"]
     (47.14285659790039, 'float32')
     """
     b, bi, out = ctx.get("board") or {}, ctx.get("board_input") or {}, {}
-    if b.get("current"):
-        full, bits = b["current"]["full_range_a"], bi["current"]["adc_bits"]
-        out["USER_M1_ADC_FULL_SCALE_CURRENT_A"] = real(
-            "USER_M1_ADC_FULL_SCALE_CURRENT_A", full, "A", "V_ref/(R_shunt·G): the whole ADC range",
-            SOURCES["ti_umcl"], single=True)
-        out["USER_M1_CURRENT_SF"] = real("USER_M1_CURRENT_SF", full / 2.0 ** bits, "A/count",
-                                         f"USER_M1_ADC_FULL_SCALE_CURRENT_A/{2 ** bits}",
-                                         SOURCES["ti_umcl"], single=True)
-    if b.get("bus"):
-        full, bits = b["bus"]["max_v"], bi["bus"]["adc_bits"]
-        out["USER_M1_ADC_FULL_SCALE_VOLTAGE_V"] = real(
-            "USER_M1_ADC_FULL_SCALE_VOLTAGE_V", full, "V", "V_ref·(R_top + R_bottom)/R_bottom",
-            SOURCES["ti_umcl"], single=True)
-        out["USER_M1_VOLTAGE_SF"] = real("USER_M1_VOLTAGE_SF", full / 2.0 ** bits, "V/count",
-                                         f"USER_M1_ADC_FULL_SCALE_VOLTAGE_V/{2 ** bits}",
-                                         SOURCES["ti_umcl"], single=True)
+    # (chain, its full scale and one count in the board output, the macro names, unit, formula)
+    for chain, full, lsb, name, sf, unit, expr in (
+            ("current", "full_range_a", "a_per_count", "USER_M1_ADC_FULL_SCALE_CURRENT_A",
+             "USER_M1_CURRENT_SF", "A", "V_ref/(R_shunt·G): the whole ADC range"),
+            ("bus", "max_v", "v_per_count", "USER_M1_ADC_FULL_SCALE_VOLTAGE_V",
+             "USER_M1_VOLTAGE_SF", "V", "V_ref·(R_top + R_bottom)/R_bottom")):
+        if b.get(chain):
+            bits = bi[chain]["adc_bits"]
+            out[name] = real(name, b[chain][full], unit, expr, SOURCES["ti_umcl"], single=True)
+            out[sf] = real(sf, b[chain][lsb], f"{unit}/count", f"{name}/{2 ** bits}",
+                           SOURCES["ti_umcl"], single=True)
     p = bi.get("pwm") or {}
     if b.get("pwm") and p.get("clock_hz") is not None:
         clk = p["clock_hz"]
