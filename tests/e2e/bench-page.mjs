@@ -77,38 +77,43 @@ function floorPage() {
   const worker = readdirSync(join(DIST, 'assets')).find((f) => /^worker-.*\.js$/.test(f));
   const js = `const d = document.documentElement.dataset;
 const mark = (k) => { d[k] ??= performance.now().toFixed(0); };
-const w = new SharedWorker(new URL('./assets/${worker}', document.baseURI), { type: 'module', name: 'pulab-report' });
-w.port.onmessage = ({ data: m }) => {
+const dedicated = new URLSearchParams(location.search).has('dedicated');
+const u = new URL('./assets/${worker}', document.baseURI);
+const w = dedicated ? new Worker(u, { type: 'module', name: 'pulab-report' }) : new SharedWorker(u, { type: 'module', name: 'pulab-report' });
+const port = dedicated ? w : w.port;
+port.onmessage = ({ data: m }) => {
   if (m.type === 'progress') { mark('tBoot' + m.stage[0].toUpperCase() + m.stage.slice(1)); d['w' + m.stage] ??= m.ms.toFixed(0); }
   else if (m.type === 'ready') { mark('tBootReady'); d.pythonBoot = m.from ?? 'full'; d.wready = m.bootMs.toFixed(0); }
   else if (m.type === 'result') { mark('tLive'); d.numbers = m.result.ok ? 'live' : 'error'; }
   else if (m.type === 'fatal') d.numbers = 'fatal: ' + m.message;
 };
-w.port.postMessage({ type: 'init', indexURL: new URL('pyodide/', document.baseURI).href, timeoutMs: 60000 });
-w.port.postMessage({ type: 'call', id: 1, kind: 'report', payload: ${JSON.stringify(JSON.stringify(SHARE_INPUT))}, channel: 'report' });
+port.postMessage({ type: 'init', indexURL: new URL('pyodide/', document.baseURI).href, timeoutMs: 60000 });
+port.postMessage({ type: 'call', id: 1, kind: 'report', payload: ${JSON.stringify(JSON.stringify(SHARE_INPUT))}, channel: 'report' });
 `;
   return {
     'floor.html': ['text/html; charset=utf-8', '<!doctype html><meta charset="utf-8"><title>floor</title><script type="module" src="./floor.js"></script>'],
     'floor.js': ['text/javascript', js],
   };
 }
-if (SCEN.has('floor')) {
+// The floor twice, interleaved run by run: with the SharedWorker the page uses, and with a
+// dedicated Worker (a SharedWorker is started in a process of its own).
+for (const variant of SCEN.has('floor') ? ['shared', ...(SCEN.has('floordedicated') ? ['dedicated'] : [])] : []) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();
     const p = await ctx.newPage();
     const t0 = Date.now();
-    await p.goto(`${url}floor.html`, { waitUntil: 'commit' });
+    await p.goto(`${url}floor.html${variant === 'dedicated' ? '?dedicated' : ''}`, { waitUntil: 'commit' });
     await p.waitForFunction(() => document.documentElement.dataset.numbers, null, { timeout: 90_000, polling: 10 });
     const wall = Date.now() - t0;
     const d = await p.evaluate(() => ({ ...document.documentElement.dataset }));
     if (d.numbers !== 'live') throw new Error(`floor page: ${d.numbers}`);
     const phases = Object.fromEntries(PHASES.filter((k) => d[`t${k[0].toUpperCase()}${k.slice(1)}`] !== undefined).map((k) => [k, Number(d[`t${k[0].toUpperCase()}${k.slice(1)}`])]));
     const worker = Object.fromEntries(['runtime', 'snapshot', 'files', 'import', 'ready'].map((k) => [k, Number(d[`w${k}`])]));
-    runs.push({ first: phases.bootReady, live: wall, phases, worker, from: d.pythonBoot, runtime: 'shared' });
+    runs.push({ first: phases.bootReady, live: wall, phases, worker, from: d.pythonBoot, runtime: variant });
     await ctx.close();
   }
-  console.log(`page: floor (blank page, runtime only)  ready ${stat(runs.map((r) => r.phases.bootReady))} in page   report answered ${stat(runs.map((r) => r.phases.live))} in page, ${stat(runs.map((r) => r.live))} wall   [${runs[0]?.from ?? '?'} boot]`);
+  console.log(`page: floor (blank page, runtime only, ${variant} worker)  ready ${stat(runs.map((r) => r.phases.bootReady))} in page   report answered ${stat(runs.map((r) => r.phases.live))} in page, ${stat(runs.map((r) => r.live))} wall   [${runs[0]?.from ?? '?'} boot]`);
   const ph = PHASES.map((k) => [k, runs.map((r) => r.phases[k]).filter((v) => v !== undefined)]).filter(([, v]) => v.length);
   console.log(`      phases (median ms since navigation): ${ph.map(([k, v]) => `${k} ${q(v, 0.5).toFixed(0)}`).join(' → ')}`);
   const w = ['runtime', 'snapshot', 'files', 'import', 'ready'].map((k) => [k, runs.map((r) => r.worker[k]).filter((v) => !Number.isNaN(v))]).filter(([, v]) => v.length);

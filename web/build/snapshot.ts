@@ -16,6 +16,32 @@ export const SNAPSHOT_MAX_BYTES = 48 * 1024 * 1024;
 
 interface SnapshotPyodide extends PyodideLike {
   makeMemorySnapshot(): Uint8Array;
+  _module: { _malloc(n: number): number; _free(p: number): void; _sbrk(n: number): number; HEAPU8: Uint8Array };
+}
+
+/**
+ * Zero the heap's free memory below the allocator's break before the snapshot is taken: malloc
+ * keeps what freed blocks held, and those pages were shipped (and decompressed, and copied into
+ * every runtime's memory) for nothing. Every block malloc hands out below the break is taken,
+ * zeroed and given back; what Python holds is not touched. Returns the bytes zeroed.
+ */
+export function zeroFreeMemory(m: SnapshotPyodide['_module']): number {
+  const brk = m._sbrk(0);
+  const taken: number[] = [];
+  let zeroed = 0;
+  for (let size = 1 << 20; size >= 16;) {
+    const p = m._malloc(size);
+    if (p === 0 || p + size > brk) {
+      if (p !== 0) m._free(p);
+      size >>= 1;
+      continue;
+    }
+    m.HEAPU8.fill(0, p, p + size);
+    taken.push(p);
+    zeroed += size;
+  }
+  for (const p of taken) m._free(p);
+  return zeroed;
 }
 
 /** py/pulab/**.py keyed as the bundle's glob keys ('../../py/pulab/api.py'), as writePulab takes them. */
@@ -58,6 +84,8 @@ export async function makeSnapshot(indexURL: string, files: Record<string, strin
   const py = (await loadPyodide({ indexURL, _makeSnapshot: true })) as unknown as SnapshotPyodide;
   writePulab(py, files);
   py.runPython(warm(key));
+  py.runPython('import gc; gc.collect()');
+  zeroFreeMemory(py._module);
   const bytes = py.makeMemorySnapshot();
   const ms = performance.now() - t0;
   if (bytes.length > SNAPSHOT_MAX_BYTES) return { ok: false, reason: `snapshot ${bytes.length} bytes > ${SNAPSHOT_MAX_BYTES}` };

@@ -69,6 +69,7 @@ export class Layout {
   /** Build the skeleton; `chrome` is the header (full page) or the embed bar. */
   build(chrome: HTMLElement): void {
     this.panelEls.clear();
+    this.waiting.clear();
     const panels = this.panels();
     const sections = panels.map((p) => {
       const body = h('div', { class: 'panel-body' });
@@ -148,6 +149,8 @@ export class Layout {
       const sec = body.closest<HTMLElement>('section.panel');
       if (sec) sec.hidden = !view.panels.includes(pid);
     }
+    const due = view.panels.filter((p) => this.waiting.has(p));
+    if (due.length && this.lastCtx) this.renderPanels(this.lastCtx, due);
     for (const a of this.root.querySelectorAll<HTMLElement>('nav.tabs a[data-view]')) {
       a.classList.toggle('on', a.dataset.view === id);
       if (a.dataset.view === id) a.setAttribute('aria-current', 'true');
@@ -217,12 +220,21 @@ export class Layout {
     if (el && this.lastCtx) renderAnswer(el, this.lastCtx, this.renderAnswer, (v) => this.onPickProfile(v));
   };
 
+  /** Panels of a hidden view not rendered yet: before the first numbers they have nothing current to
+   * show, and building them then took the page's main thread from the boot (docs/performance.md). */
+  private waiting = new Set<PanelId>();
+
   renderPanels(ctx: PanelContext, only?: PanelId[]): void {
     const took: [string, number][] = [];
     for (const p of PANELS) {
-      if (only && !only.includes(p.id)) continue;
+      if (only && !only.includes(p.id) && !(ctx.report && this.waiting.has(p.id))) continue;
       const el = this.panelEls.get(p.id);
       if (!el) continue;
+      if (!ctx.report && el.closest<HTMLElement>('section.panel')?.hidden) {
+        this.waiting.add(p.id);
+        continue;
+      }
+      this.waiting.delete(p.id);
       const t0 = performance.now();
       keepFocus(el, () => renderPanel(p, el, ctx));
       took.push([p.id, performance.now() - t0]);
