@@ -9,7 +9,7 @@
 // Each boot is printed in phases (ms since navigation) from <html data-t-…> marks.
 //   floor: a blank page that only starts the report runtime from its snapshot (the build's own
 //   worker script, no page code) and asks it for the share link's report before it is ready.
-// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=floor,cold,warm,share,nosnap,embeds,elements,input,typing
+// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=floor,floordedicated,cold,warm,share,nosnap,embeds,panel,elements,input,typing
 // picks scenarios (nosnap: cold with the snapshot refused, the fallback boot).
 import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
@@ -26,7 +26,7 @@ if (!existsSync(CHROMIUM)) {
   process.exit(0);
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
-const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'floor,cold,warm,share,nosnap,embeds,elements,input,typing').split(','));
+const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'floor,cold,warm,share,nosnap,embeds,panel,elements,input,typing').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
 if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--configLoader', 'runner', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
@@ -193,9 +193,15 @@ const TWELVE = [...SIX, 'loop', 'qcalc', 'conventions', 'datasheet', 'review', '
 /** A docs page of another origin (same site) with 12 <pu-lab-panel>, every other one another motor. */
 // A real server on its own port: a page answered by a route has no address, and Chromium refuses
 // its requests to the loopback site (local network access).
-const elementsServer = createServer((req, res) => res.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' }).end(elementsHost()));
+const elementsServer = createServer((req, res) => res.writeHead(200, { 'Content-Type': 'text/html; charset=utf-8' }).end(req.url?.startsWith('/panel.html') ? panelHost() : elementsHost()));
 await new Promise((r) => elementsServer.listen(0, '127.0.0.1', r));
 const ELEMENTS_HOST = `http://127.0.0.1:${elementsServer.address().port}/docs.html`;
+const PANEL_HOST = `http://127.0.0.1:${elementsServer.address().port}/panel.html`;
+const OTHER = { motor: { rated_voltage_v: 380, rated_current_a: 14.5, rated_freq_hz: 50, pole_pairs: 2, rs_ohm: 0.42, ld_h: 0.0085, lq_h: 0.0135, bemf_v: 335 }, drive: { udc_v: 540, ts_s: 0.000125 } };
+/** A docs page of another origin with one <pu-lab-panel> of a motor that is not the seed (a cold panel). */
+function panelHost() {
+  return `<!doctype html><meta charset="utf-8"><title>docs</title><script type="module" src="${url}embed.js"></script><h2>bases</h2><pu-lab-panel panel="bases" input='${JSON.stringify(OTHER)}'></pu-lab-panel>`;
+}
 function elementsHost() {
   const other = JSON.stringify({ motor: { rated_voltage_v: 380, rated_current_a: 14.5, rated_freq_hz: 50, pole_pairs: 2, rs_ohm: 0.42, ld_h: 0.0085, lq_h: 0.0135, bemf_v: 335 }, drive: { udc_v: 540, ts_s: 0.000125 } });
   return `<!doctype html><meta charset="utf-8"><title>docs</title><script type="module" src="${url}embed.js"></script>`
@@ -208,8 +214,8 @@ function elementsHost() {
  * started, time to first and to all-live numbers, PSS of every Chromium process 3 s after all are live.
  */
 async function embedsRun(ctx, cdp, mark, elements = false) {
-  const panels = elements ? TWELVE : SIX;
-  const hostUrl = elements ? ELEMENTS_HOST : `${url}embed-host.html`;
+  const panels = elements === 'one' ? ['bases'] : elements ? TWELVE : SIX;
+  const hostUrl = elements === 'one' ? PANEL_HOST : elements ? ELEMENTS_HOST : `${url}embed-host.html`;
   const host = elements ? null : `<!doctype html><meta charset="utf-8"><title>embeds</title>${panels.map((p) => `<iframe src="./?embed=${p}" width="900" height="400"></iframe>`).join('')}`;
   if (!elements) await ctx.route(hostUrl, (r) => r.fulfill({ body: host, contentType: 'text/html' }));
   const workers = new Set();
@@ -275,6 +281,9 @@ if (SCEN.has('embeds')) {
   reportEmbeds('incognito context', otr);
 }
 
+if (SCEN.has('panel')) {
+  reportEmbeds('fresh profile on disk', await freshProfiles('one'), '1 <pu-lab-panel> (not the seed), other origin');
+}
 if (SCEN.has('elements')) {
   reportEmbeds('fresh profile on disk', await freshProfiles(true), '12 <pu-lab-panel>, other origin');
 }
