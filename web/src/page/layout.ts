@@ -220,9 +220,11 @@ export class Layout {
     if (el && this.lastCtx) renderAnswer(el, this.lastCtx, this.renderAnswer, (v) => this.onPickProfile(v));
   };
 
-  /** Panels of a hidden view not rendered yet: before the first numbers they have nothing current to
-   * show, and building them then took the page's main thread from the boot (docs/performance.md). */
+  /** Panels of a hidden view not rendered yet. Before the first numbers they have nothing current to
+   * show: the shown view is built first and these when the page is idle (or with the first report,
+   * or when their view is shown, whichever comes first), so the first paint does not wait for them. */
   private waiting = new Set<PanelId>();
+  private idleBuild = false;
 
   renderPanels(ctx: PanelContext, only?: PanelId[]): void {
     const took: [string, number][] = [];
@@ -230,7 +232,16 @@ export class Layout {
       if (only && !only.includes(p.id) && !(ctx.report && this.waiting.has(p.id))) continue;
       const el = this.panelEls.get(p.id);
       if (!el) continue;
-      if (!ctx.report && el.closest<HTMLElement>('section.panel')?.hidden) {
+      if (!ctx.report && !this.idleBuild && el.closest<HTMLElement>('section.panel')?.hidden) {
+        if (!this.waiting.size) idle(() => {
+          if (!this.waiting.size || !this.lastCtx) return;
+          this.idleBuild = true;
+          try {
+            this.renderPanels(this.lastCtx, [...this.waiting]);
+          } finally {
+            this.idleBuild = false;
+          }
+        }, 3000);
         this.waiting.add(p.id);
         continue;
       }
