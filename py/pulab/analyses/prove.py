@@ -17,12 +17,12 @@ verdict is
 
 Soundness by construction: SI inputs map to the firmware's raw integers by a
 monotone rounding (``round(x·scale)``), so a range of an input is exactly a range
-of raw integers.  The vendor code itself (:data:`~pulab.profiles.inovance_code.VENDOR_CODE`,
+of raw integers.  The vendor code itself (:data:`~pulab.analyses.prove_intervals.VENDOR_CODE`,
 the statements the report runs) is evaluated over intervals of those integers
 (:class:`~pulab.fixedpoint.interval.ICInt`, the exact C semantics on ``[lo, hi]``),
 so its result encloses every value and flag of every point.  A box whose
 enclosure raises nothing is proven (and its quantization error bounded by the floors of
-its statements, :func:`~pulab.profiles.inovance_code.error_bound`); otherwise its corners and centre are run
+its statements, :func:`~pulab.analyses.prove_intervals.error_bound`); otherwise its corners and centre are run
 concretely (a failure there is the counterexample), and else it is split in two
 along its relatively widest raw input.  A box of one raw point is evaluated
 exactly, so the split ends.
@@ -63,14 +63,14 @@ from typing import NamedTuple
 
 from ..fixedpoint.cint import UINT16, CDivisionByZero
 from ..fixedpoint.interval import ANY, Branch, Empty, ICInt, RInterval, Undecided, forcing
-from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR_READS,
-                                      VENDOR_RESULTS, Block, error_bound, raw_source,
-                                      raw_value)
+from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_READS, VENDOR_RESULTS,
+                                      raw_source, raw_value)
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.inputs import SECTIONS, normalize
 from ..schema.validate import key_path, real, shown
 from .integers import profile_name
+from .prove_intervals import VENDOR_CODE, Block, error_bound
 from .slices import finish
 
 __all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "integer_steps",
