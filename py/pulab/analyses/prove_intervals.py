@@ -1,171 +1,65 @@
-"""The seed's vendor blocks over intervals of raw integers: what the family prover
-(:mod:`pulab.analyses.prove`) still evaluates by hand.
+"""The seed's vendor blocks over boxes of raw integers, for the family prover
+(:mod:`pulab.analyses.prove`): the same C the report runs (:mod:`pulab.profiles.inovance_code`),
+through the tracer's interval evaluator (:class:`~pulab.ctrace.abstract.BoxEvaluator`).
 
-The report, the simulations and every concrete point run the seed's C itself
-(:mod:`pulab.profiles.inovance_code`); this module keeps the statements' interval version
-(:class:`~pulab.fixedpoint.interval.ICInt` through the operators of
-:mod:`pulab.fixedpoint.cint`) and the error bound built on its floors, until the prover
-runs the same C through the tracer's interval evaluator (:mod:`pulab.ctrace.abstract`).
-Each statement's text is the C line it evaluates.
+Each assignment gives the hull of the values it stores over the box and the failures some
+point may meet, named as the report names them (``wrap``, ``store`` into a Uint16
+parameter, ``div0``); :func:`error_bound` bounds the quantization error from the lowest
+value of each floor the code takes.
 
->>> from pulab.fixedpoint.interval import ICInt
->>> b = Block()
->>> VENDOR_CODE["FreqPer"](b, {"FreqRated01": ICInt(100, 200, UINT16),
-...                            "FullFreq01": ICInt(22000, 22000, UINT16)}, "10uH")
-ICInt(148, 297, Uint16, [])
->>> b.trace[-1]["code"]
-'gMotorInfo.FreqPer = ((Ulong)gMotorInfo.FreqRated01<<15)/gBasePar.FullFreq01;'
+>>> own, before = interval_steps("FreqPer", {"FreqRated01": (100, 200),
+...                                          "FullFreq01": (22000, 22000)})
+>>> own[0]["value"], own[0]["flags"], own[0]["type"]
+((148, 297), [], 'Uint16')
 """
 
 from __future__ import annotations
 
 import math
 
-from ..fixedpoint.cint import INT32, UINT16, UINT32, CDivisionByZero, CInt, CType
-from ..profiles.inovance_code import SQRT3, TWO_PI
-from ..schema.errors import InputError
+from ..ctrace.abstract import BoxEvaluator
+from ..ctrace.parser import ExprStmt
+from ..ctrace.tracing import DEFAULT_GLOBAL_Q
+from ..profiles.inovance_code import SQRT3, TWO_PI, VENDOR_BLOCKS, block_program
 
-__all__ = ["Block", "VENDOR_CODE", "error_bound"]
+__all__ = ["interval_steps", "error_bound"]
 
-
-class Block:
-    """Runs the statements of one vendor code block and records the trace."""
-
-    def __init__(self) -> None:
-        self.trace: list[dict] = []
-
-    def let(self, code: str, var: str, ctype: CType, expr: CInt, meaning: str,
-            extra_flags: tuple = ()) -> CInt:
-        """Assign ``expr`` to a variable of ``ctype``, as the C assignment converts it."""
-        stored = expr.cast(ctype)
-        flags = set(expr.flags) | set(extra_flags)
-        if stored.value != expr.value:
-            # Conversion into the destination: for gMotorExtPer.* (Uint16) the
-            # firmware silently keeps the value modulo 65536.
-            flags.add("store" if ctype == UINT16 else "wrap")
-        self.trace.append({"code": code, "var": var, "type": ctype.name,
-                           "value": stored.value, "meaning": meaning,
-                           "flags": sorted(flags)})
-        return stored.clean()
-
-    def result(self, q: int, ideal: float, si: float, unit: str) -> dict:
-        last = self.trace[-1]
-        flags = sorted({f for s in self.trace for f in s["flags"]})
-        value = last["value"]
-        return {"value": value, "ideal": ideal, "q": q, "type": last["type"], "si": si,
-                "unit": unit,
-                "error_pct": 0.0 if ideal == 0 else 100.0 * (value - ideal) / ideal,
-                "flags": flags, "trace": self.trace}
+_UINT16_MAX = 0xFFFF
 
 
-def _u16(raw: dict, name: str) -> CInt:
-    v = raw[name]
-    # A prover passes an interval of the parameter (pulab.fixedpoint.interval), already a CInt.
-    return v if isinstance(v, CInt) else CInt(v, UINT16)
-
-
-def _divide(a: CInt, b: CInt, field: str, why: str) -> CInt:
-    try:
-        return a // b
-    except CDivisionByZero:
-        raise InputError(f"raw.{field}", code="firmware_div0", why=why) from None
-
-
-def _rpm_code(b: Block, raw: dict) -> None:
-    m = b.let("m_UData = ((Ulong)gMotorExtInfo.RsPm * (Ulong)gMotorInfo.Current)"
-              "/gMotorInfo.Voltage;", "m_UData", UINT32,
-              _divide(_u16(raw, "RsPm").cast(UINT32) * _u16(raw, "Current").cast(UINT32),
-                      _u16(raw, "Voltage"), "Voltage", "Voltage = 0"),
-              "R_s[mΩ]·I_b[0.01 A]/U_LL[V] = 10^5/√3 · R_pu")
-    b.let("gMotorExtPer.Rpm = ((Ulong)m_UData * 18597)>>14;", "gMotorExtPer.Rpm", UINT16,
-          (m * CInt(18597, INT32).cast(UINT32)) >> 14, "R_pu·2^16 (Q16)")
-
-
-def _base_l_steps(b: Block, raw: dict) -> CInt:
-    m = b.let("m_BaseL = ((Ulong)gMotorInfo.Voltage * 3678)/gMotorInfo.Current;",
-              "m_BaseL", UINT32,
-              _divide(_u16(raw, "Voltage").cast(UINT32) * CInt(3678, INT32).cast(UINT32),
-                      _u16(raw, "Current"), "Current", "Current = 0"),
-              "U_LL·3678/I_b[0.01 A]")
-    return b.let("m_BaseL = ((Ulong)m_BaseL * 5000)/gBasePar.FullFreq01; //Q15",
-                 "m_BaseL", UINT32,
-                 _divide(m * CInt(5000, INT32).cast(UINT32), _u16(raw, "FullFreq01"),
-                         "FullFreq01", "FullFreq01 = 0"),
-                 "≈ 2·10^4·L_b[H]; 3678 ≈ 2·10^4/(√3·π)")
-
-
-def _inductance_code(b: Block, raw: dict, name: str, unit: str) -> None:
-    base = _base_l_steps(b, raw)
-    m = b.let(f"m_Ulong = ((Ulong)gMotorExtInfo.{name} <<14) + (m_BaseL >>1);", "m_Ulong",
-              UINT32, (_u16(raw, name).cast(UINT32) << 14) + (base >> 1),
-              f"{name}·2^14 + m_BaseL/2")
-    if base.value == 0:  # (an interval's value is a pair: its division flags div0 instead)
-        # Blame the divisor that made m_BaseL truncate to zero.
-        culprit = "Current" if b.trace[0]["value"] == 0 else "FullFreq01"
-        raise InputError(f"raw.{culprit}", code="firmware_div0",
-                         why="m_BaseL = Voltage·3678/Current·5000/FullFreq01 = 0")
-    m = b.let("m_Ulong = m_Ulong / m_BaseL;", "m_Ulong", UINT32, m // base,
-              "10·L_pu·2^13")
-    b.let(f"gMotorExtPer.{name} = m_Ulong / 10; // Q13", f"gMotorExtPer.{name}", UINT16,
-          m // CInt(10, INT32).cast(UINT32),
-          "10·L_pu·2^13 (µH ≠ 0.01 mH)" if unit == "uH"
-          else "L_pu·2^13 (Q13)", ("unit_uH",) if unit == "uH" else ())
-
-
-def _freq_per_code(b: Block, raw: dict) -> CInt:
-    return b.let("gMotorInfo.FreqPer = ((Ulong)gMotorInfo.FreqRated01<<15)/gBasePar.FullFreq01;",
-          "gMotorInfo.FreqPer", UINT16,
-          _divide(_u16(raw, "FreqRated01").cast(UINT32) << 15, _u16(raw, "FullFreq01"),
-                  "FullFreq01", "FullFreq01 = 0"),
-          "f_n/f_b·2^15 (Q15)")
-
-
-def _flux_code(b: Block, raw: dict, freq_per: CInt) -> None:
-    # Voltage*10 is unsigned int (16-bit) arithmetic on C2000, then promoted to long.
-    v10 = _u16(raw, "Voltage") * CInt(10, UINT16)
-    m = b.let("m_Ulong = ((Long)gMotorExtInfo.BemfVolt <<12) / (gMotorInfo.Voltage *10); //Q12",
-              "m_Ulong", UINT32,
-              _divide(_u16(raw, "BemfVolt").cast(INT32) << 12, v10, "Voltage",
-                      "Voltage*10 ≡ 0 (mod 2^16)"),
-              "2π·f_n·ψ_r/U_b·2^12")
-    b.let("gMotorExtPer.FluxRotor = (m_Ulong << 15) / gMotorInfo.FreqPer; //Q12",
-          "gMotorExtPer.FluxRotor", UINT16,
-          _divide(m << 15, freq_per, "FreqRated01",
-                  "FreqPer = 0 (FreqRated01·2^15 < FullFreq01, or ≡ 0 mod 2^16)"),
-          "ψ_r/ψ_b·2^12 (Q12)")
-
-
-def _max_vol_code(b: Block, raw: dict) -> CInt:
-    d = b.let("data1 = ((long)gUDC.uDCFilter * 2316L)>>15; // Udc/sqrt(2)/10", "data1", INT32,
-              (_u16(raw, "uDCFilter").cast(INT32) * CInt(2316, INT32)) >> 15,
-              "U_dc/√2 [V] (2316 ≈ 2^15/(10·√2))")
-    return b.let("pm_maxout_vol = (data1<<12)/gMotorInfo.Voltage;", "pm_maxout_vol", INT32,
-                 _divide(d << 12, _u16(raw, "Voltage"), "Voltage", "Voltage = 0"),
-                 "(U_dc/√2)/U_LL·2^12 (Q12)")
-
-
-def _maxu_code(b: Block, mo: CInt) -> None:
-    b.let("maxu = (long)pm_maxout_vol<<12;", "maxu", INT32, mo << 12,
-          "(U_dc/√2)/U_LL·2^24 (Q24)")
-
-
-#: The C statements alone of each vendor result, run on a block ``b`` (its ``trace`` gets one
-#: step per statement) over raw integers or over intervals of them
-#: (:mod:`pulab.fixedpoint.interval`): the code a prover evaluates is the code the report runs.
-VENDOR_CODE = {
-    "Rpm": lambda b, raw, unit: _rpm_code(b, raw),
-    "LD": lambda b, raw, unit: _inductance_code(b, raw, "LD", unit),
-    "LQ": lambda b, raw, unit: _inductance_code(b, raw, "LQ", unit),
-    "FreqPer": lambda b, raw, unit: _freq_per_code(b, raw),
-    "FluxRotor": lambda b, raw, unit: _flux_code(b, raw, _freq_per_code(Block(), raw)),
-    "pm_maxout_vol": lambda b, raw, unit: _max_vol_code(b, raw),
-    "maxu": lambda b, raw, unit: _maxu_code(b, _max_vol_code(Block(), raw)),
-}
+def interval_steps(name: str, box: dict):
+    """The assignments of vendor result ``name`` over ``box`` (raw field → (lo, hi); a field
+    the box lacks ranges over Uint16, and each range is cut to what a Uint16 holds), as
+    (its own assignments, those before it that it reads): each ``value`` (lo, hi),
+    ``flags`` and ``type`` (the variable's spelling).  None when every point of the box
+    divides by zero before the result is stored (the concrete code stops there)."""
+    block, own, before = VENDOR_BLOCKS[name]
+    checked = block_program(block).checked
+    ranges = {}
+    for path in checked.inputs:
+        lo, hi = box.get(path.rpartition(".")[2], (0, _UINT16_MAX))
+        ranges[path] = (min(lo, _UINT16_MAX), min(hi, _UINT16_MAX))
+    records = BoxEvaluator.over(checked, ranges, DEFAULT_GLOBAL_Q).run_box()
+    steps = []
+    for s in checked.program.statements:
+        if type(s) is not ExprStmt:
+            continue
+        rec = records.get((s.line, s.column))
+        if rec is None or rec["lo"] is None:  # every point stopped at or before it
+            break
+        spelling = checked.symbols[rec["var"]].spelling
+        flags = {"div0" if k == "division_by_zero" else
+                 "store" if k == "conversion" and spelling == "Uint16" else "wrap"
+                 for k in rec["kinds"]}
+        steps.append({"value": (rec["lo"], rec["hi"]), "flags": sorted(flags),
+                      "type": spelling})
+    if len(steps) < own.stop:
+        return None
+    return steps[own], steps[before]
 
 
 def _low(step: dict) -> int:
-    v = step["value"]
-    return v[0] if isinstance(v, tuple) else v
+    return step["value"][0]
 
 
 def _floor(low: int, exponent: int):
@@ -191,11 +85,11 @@ def _ld_factors(trace: list, unit: str) -> list:
             (1.0 - (0.5 + 0.5 / b) / z, 1.0 + 0.5 / z), _floor(ld, 1)]
 
 
-def error_bound(name: str, raw: dict, unit: str):
+def error_bound(name: str, box: dict, unit: str):
     """A bound on |error_pct| of vendor result ``name`` (its integer against ``ideal``) for
-    every raw point of ``raw`` (integers or intervals,
-    :class:`~pulab.fixedpoint.interval.ICInt`); None where a step it runs (FreqPer's too,
-    for FluxRotor) may wrap, change a store or divide by zero, or a floor may reach 0.
+    every raw point of ``box`` (raw field → (lo, hi)); None where an assignment it runs
+    (FreqPer's too, for FluxRotor) may wrap, change a store or divide by zero, or a floor
+    may reach 0.
 
     Every result is its ideal times a constant (the code's integer constants over the real
     ones: 18597/2^14 for 10^5/(√3·2^16)…) times, per floor of the code, floor(y)/y — in the
@@ -205,30 +99,26 @@ def error_bound(name: str, raw: dict, unit: str):
 
     >>> from pulab.profiles.inovance_code import freq_per
     >>> raw = {"FreqRated01": 22000, "FullFreq01": 22000}
-    >>> error_bound("FreqPer", raw, "10uH") >= abs(freq_per(raw)["error_pct"])
+    >>> error_bound("FreqPer", {k: (v, v) for k, v in raw.items()}, "10uH") \\
+    ...     >= abs(freq_per(raw)["error_pct"])
     True
     """
-    b = Block()
-    VENDOR_CODE[name](b, raw, unit)
-    lows = [_low(s) for s in b.trace]
-    steps = list(b.trace)
+    run = interval_steps(name, box)
+    if run is None:
+        return None
+    own, before = run
+    steps = own + before  # a FreqPer that wraps is its own failure, but breaks this bound
     if name in ("LD", "LQ"):
-        factors = _ld_factors(b.trace, unit)
+        factors = _ld_factors(own, unit)
     elif name == "FluxRotor":  # m·2^15/FreqPer: FreqPer's floor divides
-        fp = Block()
-        _freq_per_code(fp, raw)
-        steps += fp.trace  # a FreqPer that wraps is its own failure, but breaks this bound
-        factors = [_floor(lows[0], 1), _floor(lows[1], 1), _floor(_low(fp.trace[0]), -1)]
+        factors = [_floor(_low(own[0]), 1), _floor(_low(own[1]), 1),
+                   _floor(_low(before[0]), -1)]
     elif name in ("pm_maxout_vol", "maxu"):  # maxu = pm_maxout_vol·2^12 exactly
-        if name == "maxu":
-            b = Block()
-            _max_vol_code(b, raw)
-            steps += b.trace
         c = 2316.0 / 32768.0 * 10.0 * math.sqrt(2.0)
-        factors = [(c, c)] + [_floor(_low(s), 1) for s in b.trace]
+        factors = [(c, c)] + [_floor(_low(s), 1) for s in (before if name == "maxu" else own)]
     else:
         c = 18597.0 / 16384.0 / (SQRT3 * 65536.0 / 1e5) if name == "Rpm" else 1.0
-        factors = [(c, c)] + [_floor(v, 1) for v in lows]
+        factors = [(c, c)] + [_floor(_low(s), 1) for s in own]
     if any(f is None for f in factors) or any({"wrap", "store", "div0"} & set(s["flags"])
                                                for s in steps):
         return None

@@ -47,7 +47,8 @@ __all__ = [
     "RAW_FIELDS", "RAW_SCALE", "INDUCTANCE_SCALE", "raw_source", "raw_value", "raw_split",
     "raw_from_si", "round_half_away", "vendor_split",
     "rpm", "inductance", "freq_per", "flux_rotor", "max_output_voltage",
-    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "current_pi_step", "PiStep", "to_si",
+    "vendor_results", "VENDOR_RESULTS", "VENDOR_READS", "VENDOR_BLOCKS", "block_program",
+    "current_pi_step", "PiStep", "to_si",
 ]
 
 SQRT3 = math.sqrt(3.0)
@@ -186,8 +187,9 @@ _FLAG = {"signed_overflow": "wrap", "unsigned_wrap": "wrap", "conversion": "wrap
          "shift_count": "wrap", "truncation": "truncation", "saturate": "saturate"}
 
 
-def _program(block: str):
-    """The block's closures (parsed, checked as C2000 code and compiled once)."""
+def block_program(block: str):
+    """A block's closures (parsed, checked as C2000 code and compiled once; its checked
+    program is ``.checked``), by the names of :data:`VENDOR_BLOCKS`."""
     return compiled(compile_code(_CODE[block], "c28x"))
 
 
@@ -198,7 +200,7 @@ def _lines(block: str) -> list:
 def _run(block: str, raw: dict) -> tuple:
     """Run a block on the raw parameters present in ``raw``: (its assignment steps, the
     index of the assignment it stopped at or None)."""
-    prog = _program(block)
+    prog = block_program(block)
     inputs = {p: raw[p.rpartition(".")[2]] for p in prog.checked.inputs
               if p.rpartition(".")[2] in raw}
     try:
@@ -212,7 +214,7 @@ def _run(block: str, raw: dict) -> tuple:
 def _trace(block: str, steps: list, meanings: tuple, first: int = 0) -> list:
     """The report's trace of assignment steps (``first``: the index of the first in its
     block): the source line, variable, type, value, meaning and flags of each."""
-    prog = _program(block)
+    prog = block_program(block)
     lines = _lines(block)
     out = []
     for i, s in enumerate(steps, first):
@@ -345,7 +347,7 @@ def _read_paths(node, out: list) -> None:
 def _reads(block: str, own: slice, before: slice = slice(0)) -> tuple:
     """The raw fields a result reads: the inputs its own assignments of the block read, then
     those of the assignments before it that it depends on, in the order the C reads them."""
-    prog = _program(block)
+    prog = block_program(block)
     stmts = [s for s in prog.checked.program.statements if type(s) is ExprStmt]
     paths: list = []
     for s in stmts[own] + stmts[before]:
@@ -353,17 +355,21 @@ def _reads(block: str, own: slice, before: slice = slice(0)) -> tuple:
     return tuple(dict.fromkeys(p.rpartition(".")[2] for p in paths if p in prog.checked.inputs))
 
 
+#: Each vendor result's block, its own assignments there and the assignments before them
+#: that it reads (FluxRotor divides by FreqPer, maxu shifts pm_maxout_vol).
+VENDOR_BLOCKS = {
+    "Rpm": ("rpm", slice(0, 2), slice(0)),
+    "LD": ("LD", slice(0, 5), slice(0)),
+    "LQ": ("LQ", slice(0, 5), slice(0)),
+    "FreqPer": ("flux", slice(0, 1), slice(0)),
+    "FluxRotor": ("flux", slice(1, 3), slice(0, 1)),
+    "pm_maxout_vol": ("maxu", slice(0, 2), slice(0)),
+    "maxu": ("maxu", slice(2, 3), slice(0, 2)),
+}
+
 #: The raw fields each vendor result reads (the C statements of its block and the ones before
 #: it that it reads), so a caller may reuse a result while these stay the same.
-VENDOR_READS = {
-    "Rpm": _reads("rpm", slice(0, 2)),
-    "LD": _reads("LD", slice(0, 5)),
-    "LQ": _reads("LQ", slice(0, 5)),
-    "FreqPer": _reads("flux", slice(0, 1)),
-    "FluxRotor": _reads("flux", slice(1, 3), slice(0, 1)),
-    "pm_maxout_vol": _reads("maxu", slice(0, 2)),
-    "maxu": _reads("maxu", slice(2, 3), slice(0, 2)),
-}
+VENDOR_READS = {name: _reads(*spec) for name, spec in VENDOR_BLOCKS.items()}
 
 
 def vendor_results(raw: dict, inductance_unit: str) -> dict:
@@ -469,7 +475,7 @@ def current_pi_step(integral: int, error: int, kp: int, ki: int, maxu: int,
         if not lo <= v <= hi:
             raise ValueError(f"{v} does not fit long")
     inputs = dict(zip(_PI_INPUTS, args))
-    prog = _program("pi")
+    prog = block_program("pi")
     if trace is not None:
         run = prog.run(inputs)
         steps = [s for s in run.steps if type(s.stmt) is ExprStmt]
