@@ -197,18 +197,31 @@ def _lines(block: str) -> list:
     return _CODE[block].splitlines()
 
 
+#: The last block runs, by block and inputs (a report asks FreqPer and FluxRotor of one flux
+#: run, pm_maxout_vol and maxu of one maxu run; a sweep or proof revisits points).
+_RUNS: dict = {}
+_RUNS_KEPT = 32
+
+
 def _run(block: str, raw: dict) -> tuple:
     """Run a block on the raw parameters present in ``raw``: (its assignment steps, the
     index of the assignment it stopped at or None)."""
     prog = block_program(block)
     inputs = {p: raw[p.rpartition(".")[2]] for p in prog.checked.inputs
               if p.rpartition(".")[2] in raw}
+    key = (block, *inputs.items())
+    hit = _RUNS.get(key)
+    if hit is not None:
+        return hit
     try:
         steps, stop = prog.run(inputs).steps, None
     except Stopped as e:
         steps = e.steps
         stop = sum(1 for s in e.steps if type(s.stmt) is ExprStmt)
-    return [s for s in steps if type(s.stmt) is ExprStmt], stop
+    out = _RUNS[key] = (tuple(s for s in steps if type(s.stmt) is ExprStmt), stop)
+    while len(_RUNS) > _RUNS_KEPT:
+        del _RUNS[next(iter(_RUNS))]
+    return out
 
 
 def _trace(block: str, steps: list, meanings: tuple, first: int = 0) -> list:
@@ -255,7 +268,7 @@ def _complete(block: str, raw: dict, upto: int) -> list:
     steps, stop = _run(block, raw)
     if stop is not None and stop < upto:
         raise _failed(block, stop, raw, steps)
-    return steps[:upto]
+    return list(steps[:upto])
 
 
 def rpm(raw: dict) -> dict:
