@@ -190,7 +190,14 @@ _FLAG = {"signed_overflow": "wrap", "unsigned_wrap": "wrap", "conversion": "wrap
 def block_program(block: str):
     """A block's closures (parsed, checked as C2000 code and compiled once; its checked
     program is ``.checked``), by the names of :data:`VENDOR_BLOCKS`."""
-    return compiled(compile_code(_CODE[block], "c28x"))
+    prog = _PROGRAMS.get(block)
+    if prog is None:
+        prog = _PROGRAMS[block] = compiled(compile_code(_CODE[block], "c28x"))
+    return prog
+
+
+#: The blocks' closures, kept here: the tracer's own cache also serves the page's code.
+_PROGRAMS: dict = {}
 
 
 def _lines(block: str) -> list:
