@@ -125,26 +125,14 @@ def _arith(op: str, t: CType):
     ``arith``; a zero divisor stops the run)."""
     lo, hi, over = t.min, t.max, _overflow(t)
     if op in ("+", "-", "*"):
+        exact = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__}[op]
+
         def f(a, b, fl):
-            x = a + b if op == "+" else a - b if op == "-" else a * b
+            x = exact(a, b)
             if lo <= x <= hi:
                 return x
             fl.append(over)
             return wrap_to(x, t)
-        if op == "+":
-            def f(a, b, fl):  # noqa: F811 (the hot ones without the op test)
-                x = a + b
-                if lo <= x <= hi:
-                    return x
-                fl.append(over)
-                return wrap_to(x, t)
-        elif op == "*":
-            def f(a, b, fl):  # noqa: F811
-                x = a * b
-                if lo <= x <= hi:
-                    return x
-                fl.append(over)
-                return wrap_to(x, t)
         return f
     if op == "/":
         def f(a, b, fl):
