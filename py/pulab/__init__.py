@@ -21,7 +21,7 @@ deferred ones too::
     profiles/     firmware scaling, one package per vendor     registry (the list), vendor
                                                                (the interface), inovance
                                                                (+ inovance_code: the seed's
-                                                               C code bit-exact), ti, st, nxp,
+                                                               C, run by ctrace), ti, st, nxp,
                                                                microchip, headers, translate
     ctrace/       the C tracer: a user's own fixed-point code  lexer, parser, check, evaluate…
     analyses/     what is computed from a model                loop/, sim/, review, sweep,

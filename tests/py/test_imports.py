@@ -23,8 +23,9 @@ LAYERS = (
     ("model",),
     # reads a datasheet's values into the input (model.datasheet converts them)
     ("schema.inputs",),
-    ("profiles",),
+    # the tracer: the profiles run the seed's C through it
     ("ctrace",),
+    ("profiles",),
     ("analyses",),
     ("report",),
     # families: each calls report() for every motor, point or box

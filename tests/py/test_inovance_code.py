@@ -39,7 +39,7 @@ def test_inductance_q13_and_the_x10_puzzle():
 def test_freq_per_and_flux_rotor_q12():
     fp = freq_per({**SEED_RAW, "FullFreq01": 44000})
     assert fp["value"] == 16384
-    fr = flux_rotor(SEED_RAW, freq_per(SEED_RAW)["value"])
+    fr = flux_rotor(SEED_RAW)
     # (120<<12)/(17*10) = 2891; (2891<<15)/32768 = 2891
     assert [s["value"] for s in fr["trace"]] == [2891, 2891]
     assert fr["ideal"] == pytest.approx(12 / 17 * 4096, rel=1e-15)
@@ -48,7 +48,7 @@ def test_freq_per_and_flux_rotor_q12():
 def test_voltage_times_ten_wraps_in_16_bits():
     # Voltage 6600 → Voltage*10 = 66000 → 464 in 16-bit arithmetic: FluxRotor is garbage.
     raw = {**SEED_RAW, "Voltage": 6600, "BemfVolt": 60000}
-    fr = flux_rotor(raw, freq_per(raw)["value"])
+    fr = flux_rotor(raw)
     assert fr["trace"][0]["value"] == (60000 << 12) // 464
     assert "wrap" in fr["flags"]
 

@@ -17,14 +17,14 @@ verdict is
 
 Soundness by construction: SI inputs map to the firmware's raw integers by a
 monotone rounding (``round(x·scale)``), so a range of an input is exactly a range
-of raw integers.  The vendor code itself (:data:`~pulab.profiles.inovance_code.VENDOR_CODE`,
-the statements the report runs) is evaluated over intervals of those integers
-(:class:`~pulab.fixedpoint.interval.ICInt`, the exact C semantics on ``[lo, hi]``),
-so its result encloses every value and flag of every point.  A box whose
+of raw integers.  The vendor code itself (the seed's C the report runs) is evaluated over
+intervals of those integers by the tracer's interval evaluator
+(:func:`~pulab.analyses.prove_intervals.interval_steps`, the exact C semantics on
+``[lo, hi]``), so its result encloses every value and flag of every point.  A box whose
 enclosure raises nothing is proven (and its quantization error bounded by the floors of
-its statements, :func:`~pulab.profiles.inovance_code.error_bound`); otherwise its corners and centre are run
-concretely (a failure there is the counterexample), and else it is split in two
-along its relatively widest raw input.  A box of one raw point is evaluated
+its statements, :func:`~pulab.analyses.prove_intervals.error_bound`); otherwise its corners
+and centre are run concretely (a failure there is the counterexample), and else it is split
+in two along its relatively widest raw input.  A box of one raw point is evaluated
 exactly, so the split ends.
 
 The current-PI integers ``pm_kp``/``pm_ki`` (seed 2.2-9) are designed in floating
@@ -61,16 +61,15 @@ import heapq
 import math
 from typing import NamedTuple
 
-from ..fixedpoint.cint import UINT16, CDivisionByZero
-from ..fixedpoint.interval import ANY, Branch, Empty, ICInt, RInterval, Undecided, forcing
-from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_CODE, VENDOR_READS,
-                                      VENDOR_RESULTS, Block, error_bound, raw_source,
-                                      raw_value)
+from ..fixedpoint.interval import ANY, Branch, Empty, RInterval, Undecided, forcing
+from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_READS, VENDOR_RESULTS,
+                                      raw_source, raw_value)
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.inputs import SECTIONS, normalize
 from ..schema.validate import key_path, real, shown
 from .integers import profile_name
+from .prove_intervals import error_bound, interval_steps
 from .slices import finish
 
 __all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "integer_steps",
@@ -341,24 +340,18 @@ def _enclose(name: str, box: dict, unit: str) -> tuple:
     kinds = {"outside"} if any(box[k][1] > _UINT16_MAX for k in VENDOR_READS[name]) else set()
     if any(box[k][0] > _UINT16_MAX for k in VENDOR_READS[name]):
         return kinds, None, None
-    raw = _raw_intervals(name, box)
-    b = Block()
-    try:
-        VENDOR_CODE[name](b, raw, unit)
-    except (InputError, CDivisionByZero):
+    run = interval_steps(name, box)
+    if run is None:
         return kinds | {"div0"}, None, None
-    for s in b.trace:
+    own, before = run
+    for s in own:
         kinds |= {"wrap", "store", "div0"} & set(s["flags"])
-    lo, hi = b.trace[-1]["value"]
+    if any("div0" in s["flags"] for s in before):  # a value that may not exist
+        kinds.add("div0")
+    lo, hi = own[-1]["value"]
     if lo <= 0 <= hi:
         kinds.add("zero")
-    return kinds, (lo, hi), b.trace[-1]["type"]
-
-
-def _raw_intervals(name: str, box: dict) -> dict:
-    """The raw parameters result ``name`` reads, as Uint16 intervals (the part of each range
-    a Uint16 holds)."""
-    return {k: ICInt(box[k][0], min(box[k][1], _UINT16_MAX), UINT16) for k in VENDOR_READS[name]}
+    return kinds, (lo, hi), own[-1]["type"]
 
 
 def _volume(box: dict, dims) -> int:
@@ -431,7 +424,7 @@ def _prove_vendor(problem: Problem, name: str):
             rng_proven = _hull(rng_proven, enc)
             proven_volume += -neg_vol
             if bounded:
-                b = error_bound(name, _raw_intervals(name, box), unit)
+                b = error_bound(name, box, unit)
                 bounded = b is not None
                 bound = max(bound, b or 0.0)
             for pt in (box_lo(box), {k: hi for k, (_, hi) in box.items()}):  # tied: equal ends
@@ -850,7 +843,7 @@ def integer_names() -> tuple:
     >>> integer_names()[-1]
     'current_pi.q.pm_ki'
     """
-    return (tuple(f"raw.{k}" for k in RAW_FIELDS) + tuple(f"vendor.{k}" for k in VENDOR_CODE)
+    return (tuple(f"raw.{k}" for k in RAW_FIELDS) + tuple(f"vendor.{k}" for k in VENDOR_RESULTS)
             + _PI_NAMES)
 
 

@@ -12,6 +12,7 @@ Modules: :mod:`~pulab.ctrace.lexer` (tokens), :mod:`~pulab.ctrace.preprocess`
 (the subset, typedefs, ``// @q`` annotations), :mod:`~pulab.ctrace.types`
 (targets, type names, conversions), :mod:`~pulab.ctrace.check` (static types),
 :mod:`~pulab.ctrace.evaluate` (values and flags, on :mod:`pulab.fixedpoint.cint`),
+:mod:`~pulab.ctrace.compile` (the same run as Python closures, for code run many times),
 :mod:`~pulab.ctrace.tracing` (the entry point), :mod:`~pulab.ctrace.sequence` (the entry
 called N times with the firmware's memory kept), :mod:`~pulab.cli.trace`
 (``python -m pulab trace``), :mod:`~pulab.ctrace.examples` (the seed's blocks).
