@@ -1,0 +1,90 @@
+"""Microchip's and TI's sensorless constants: motorBench's printed pll_params.h reproduced from
+each reference project's stated motor and board; TI's eSMO floats against the float32 oracle."""
+
+from __future__ import annotations
+
+import json
+import math
+import pathlib
+import re
+
+import pytest
+
+import pulab
+
+HERE = pathlib.Path(__file__).resolve().parents[1]
+MCHP = HERE / "data" / "headers" / "microchip"
+GOLDEN = HERE / "golden" / "observer" / "ti_esmo.json"
+
+#: The three motorBench 2.50 reference projects (motor_params.h comments and data-model-dump.yaml
+#: of each): pole pairs, nominal speed (rpm), K_e (V/(rad/s) mechanical, line-neutral peak).
+#: LVMC board: V_b 71.3 V, I_b 43.6 A, Δt 50 µs; velocity base = 1.5 × nominal
+#: (operation-fullscale_base_ratio); pll-omega1 116.5 Hz, pll-tau 2.19 ms.
+PROJECTS = {"actblf02": (4, 4000.0, 3.712916167e-02), "elra": (2, 3000.0, 3.146130776e-02),
+            "linix": (2, 4000.0, 2.836246446e-02)}
+MCHP_MACROS = ("MCAF_PLL_DT_ANGULAR", "KFILTER_ESDQ", "KFILTER_VELESTIM", "DECIMATE_BASE_SPEED",
+               "MCAF_PLL_VELOCITY_FILTER_THRESHOLD")
+
+
+def _mchp_input(project: str) -> dict:
+    pp, rpm, ke = PROJECTS[project]
+    f_nom = pp * rpm / 60.0
+    psi = ke / pp
+    return {"motor": {"rated_voltage_v": 24.0, "rated_current_a": 5.0, "rated_freq_hz": f_nom,
+                      "rs_ohm": 0.3, "ld_h": 3e-4, "lq_h": 3e-4, "pole_pairs": pp,
+                      "bemf_v": psi * 2 * math.pi * f_nom * math.sqrt(3) / math.sqrt(2)},
+            "drive": {"udc_v": 24.0, "ts_s": 5e-5, "base_freq_hz": f_nom},
+            "profiles": {"microchip": {"voltage_base_v": 71.3, "current_base_a": 43.6,
+                                       "velocity_base_hz": 1.5 * f_nom}},
+            "observer": {"bemf_f0_hz": 116.5, "speed_filter_hz": 1.0 / (2 * math.pi * 2.19e-3)}}
+
+
+def _printed(path: pathlib.Path) -> dict:
+    """name → (integer, ideal engineering number) of each Q15 line of a pll_params.h."""
+    out = {}
+    for m in re.finditer(r"#define (\w+)\s+(-?\d+)\s+// Q\d+\(\s*\S+\) = \s*\S+ \S+\s+= \s*([+-][\d.]+)",
+                         path.read_text(encoding="utf-8")):
+        out[m.group(1)] = (int(m.group(2)), float(m.group(3)))
+    return out
+
+
+@pytest.mark.parametrize("project", sorted(PROJECTS))
+def test_microchip_pll_params_reproduce_motorbench(project):
+    printed = _printed(MCHP / f"pll_params_{project}.h")
+    c = pulab.report(_mchp_input(project))["profiles"]["microchip"]["constants"]
+    assert {k: c[k]["value"] for k in MCHP_MACROS} == {k: printed[k][0] for k in MCHP_MACROS}
+
+
+def test_microchip_ke_inverse_reproduces_motor_params():
+    """MCAF_MOTOR_KE_INVERSE of the three motor_params.h (12519, 19698, 16388; Q12)."""
+    got = {p: pulab.report(_mchp_input(p))["profiles"]["microchip"]["constants"]
+           ["MCAF_MOTOR_KE_INVERSE"]["value"] for p in PROJECTS}
+    assert got == {"actblf02": 12519, "elra": 19698, "linix": 16388}
+
+
+def test_microchip_engineering_values_match_the_printed_column():
+    """The header's ideal column (µs, rad/s, RPM) against pulab's SI ideal (si_ideal)."""
+    printed = _printed(MCHP / "pll_params_actblf02.h")
+    c = pulab.report(_mchp_input("actblf02"))["profiles"]["microchip"]["constants"]
+    assert c["MCAF_PLL_DT_ANGULAR"]["si_ideal"] == pytest.approx(printed["MCAF_PLL_DT_ANGULAR"][1] * 1e-6,
+                                                                 rel=1e-6)
+    for k in ("KFILTER_ESDQ", "KFILTER_VELESTIM"):
+        assert c[k]["si_ideal"] == pytest.approx(printed[k][1], rel=1e-6)
+    rpm = c["DECIMATE_BASE_SPEED"]["si_ideal"] * 30 / math.pi / 4
+    assert rpm == pytest.approx(printed["DECIMATE_BASE_SPEED"][1], rel=1e-9)
+
+
+def test_microchip_observer_constants_listed_only_with_an_observer():
+    inp = _mchp_input("linix")
+    p = pulab.report(inp)["profiles"]["microchip"]
+    assert p["observer_constants"] == list(MCHP_MACROS) + ["MCAF_MOTOR_KE_INVERSE"]
+    del inp["observer"]
+    assert "observer_constants" not in pulab.report(inp)["profiles"]["microchip"]
+
+
+def test_microchip_filter_beyond_q15_is_flagged():
+    """A back-EMF corner above 1/(2π·Δt) (3.18 kHz at 50 µs) leaves Q15: shown, not wrapped."""
+    inp = _mchp_input("linix")
+    inp["observer"]["bemf_f0_hz"] = 4000.0
+    c = pulab.report(inp)["profiles"]["microchip"]["constants"]["KFILTER_ESDQ"]
+    assert c["value"] == 32767 and "out_of_range" in c["flags"]
