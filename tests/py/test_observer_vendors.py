@@ -7,6 +7,9 @@ import json
 import math
 import pathlib
 import re
+import struct
+import subprocess
+import sys
 
 import pytest
 
@@ -88,3 +91,50 @@ def test_microchip_filter_beyond_q15_is_flagged():
     inp["observer"]["bemf_f0_hz"] = 4000.0
     c = pulab.report(inp)["profiles"]["microchip"]["constants"]["KFILTER_ESDQ"]
     assert c["value"] == 32767 and "out_of_range" in c["flags"]
+
+
+# Golden vectors of tests/oracle/observer_vendors_oracle.py (motorBench's printed integers; TI's
+# esmo.c re-run in numpy float32; never imports pulab); the same files go through Pyodide in
+# tests/web/golden-observer-vendors.test.ts.
+VENDOR_GOLDEN = sorted((HERE / "golden" / "observer-vendors").glob("*.json"))
+
+
+def test_observer_vendor_golden_files_are_fresh():
+    assert {p.name[:2] for p in VENDOR_GOLDEN} == {"mc", "ti"}
+    r = subprocess.run([sys.executable, "observer_vendors_oracle.py", "--check"],
+                       capture_output=True, text=True, cwd=HERE / "oracle")
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+@pytest.mark.parametrize("path", VENDOR_GOLDEN, ids=[p.stem for p in VENDOR_GOLDEN])
+def test_observer_vendor_golden(path):
+    case = json.loads(path.read_text(encoding="utf-8"))
+    got, tol = pulab.report(case["input"]), case["tolerance"]
+    for key, want in case["expected"].items():
+        have = got
+        for k in key.split("."):
+            have = have[k]
+        if isinstance(want, int):
+            assert have == want, key
+        else:
+            assert have == pytest.approx(want, rel=tol["rel"], abs=tol["abs"]), key
+
+
+def test_ti_esmo_values_are_float32():
+    """Each eSMO field is the binary32 the C2000 holds (``float32_t``), not a double."""
+    case = json.loads((HERE / "golden" / "observer-vendors" / "ti_teknic_m2310pln04k.json")
+                      .read_text(encoding="utf-8"))
+    c = pulab.report(case["input"])["profiles"]["ti"]["constants"]
+    for k in ("Fdsmopos", "Gdsmopos", "Kslf", "lpf_a1", "thetaDelta", "pll_Kp"):
+        assert c[k]["format"] == "float32"
+        assert struct.unpack("<f", struct.pack("<f", c[k]["value"]))[0] == c[k]["value"], k
+
+
+def test_ti_pll_kp_crosses_over_at_the_tracking_bandwidth():
+    """The proportional PLL θ += Kp·(Δθ/2π)·f_max·T_s: its loop gain per period is
+    Kp·f_max·T_s, a crossover at Kp·f_max rad/s = 2π·tracking_f0_hz (15 Hz, f_max 400 Hz)."""
+    case = json.loads((HERE / "golden" / "observer-vendors" / "ti_teknic_m2310pln04k.json")
+                      .read_text(encoding="utf-8"))
+    inp = {**case["input"], "observer": {**case["input"]["observer"], "tracking_f0_hz": 15.0}}
+    kp = pulab.report(inp)["profiles"]["ti"]["constants"]["pll_Kp"]["value"]
+    assert kp * 400.0 == pytest.approx(2 * math.pi * 15.0, rel=1e-6)
