@@ -138,3 +138,16 @@ def test_ti_pll_kp_crosses_over_at_the_tracking_bandwidth():
     inp = {**case["input"], "observer": {**case["input"]["observer"], "tracking_f0_hz": 15.0}}
     kp = pulab.report(inp)["profiles"]["ti"]["constants"]["pll_Kp"]["value"]
     assert kp * 400.0 == pytest.approx(2 * math.pi * 15.0, rel=1e-6)
+
+
+def test_ti_header_prints_the_esmo_macros_and_the_fields_as_a_comment():
+    """user_mtr1.h holds only the USER_MOTOR1_ macros; the eSMO fields are computed at run time,
+    so the header shows them in a comment, not as _IQ integers."""
+    case = json.loads((HERE / "golden" / "observer-vendors" / "ti_teknic_m2310pln04k.json")
+                      .read_text(encoding="utf-8"))
+    from pulab.profiles import header
+    text = header(pulab.report(case["input"]), "ti")
+    assert re.search(r"#define USER_MOTOR1_BEMF_KSLF_FC_Hz\s+\(2\.0f\)", text)
+    assert re.search(r"#define USER_MOTOR1_SPEED_LPF_FC_Hz\s+\(200\.0f\)", text)
+    assert re.search(r"^ \*   Fdsmopos = 0\.97793\d+", text, re.M)
+    assert "FDSMOPOS" not in text and "KSLF_IQ" not in text
