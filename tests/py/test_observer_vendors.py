@@ -45,8 +45,8 @@ def _mchp_input(project: str) -> dict:
 def _printed(path: pathlib.Path) -> dict:
     """name → (integer, ideal engineering number) of each Q15 line of a pll_params.h."""
     out = {}
-    for m in re.finditer(r"#define (\w+)\s+(-?\d+)\s+// Q\d+\(\s*\S+\) = \s*\S+ \S+\s+= \s*([+-][\d.]+)",
-                         path.read_text(encoding="utf-8")):
+    line = r"#define (\w+)\s+(-?\d+)\s+// Q\d+\(\s*\S+\) = \s*\S+ \S+\s+= \s*([+-][\d.]+)"
+    for m in re.finditer(line, path.read_text(encoding="utf-8")):
         out[m.group(1)] = (int(m.group(2)), float(m.group(3)))
     return out
 
@@ -69,8 +69,8 @@ def test_microchip_engineering_values_match_the_printed_column():
     """The header's ideal column (µs, rad/s, RPM) against pulab's SI ideal (si_ideal)."""
     printed = _printed(MCHP / "pll_params_actblf02.h")
     c = pulab.report(_mchp_input("actblf02"))["profiles"]["microchip"]["constants"]
-    assert c["MCAF_PLL_DT_ANGULAR"]["si_ideal"] == pytest.approx(printed["MCAF_PLL_DT_ANGULAR"][1] * 1e-6,
-                                                                 rel=1e-6)
+    dt_us = printed["MCAF_PLL_DT_ANGULAR"][1]
+    assert c["MCAF_PLL_DT_ANGULAR"]["si_ideal"] == pytest.approx(dt_us * 1e-6, rel=1e-6)
     for k in ("KFILTER_ESDQ", "KFILTER_VELESTIM"):
         assert c[k]["si_ideal"] == pytest.approx(printed[k][1], rel=1e-6)
     rpm = c["DECIMATE_BASE_SPEED"]["si_ideal"] * 30 / math.pi / 4

@@ -26,7 +26,7 @@ limits) are not computed: their rule is not public and the three headers do not 
 Examples
 --------
 >>> ctx = {"ts": 5e-5, "psi_peak": 9.28229e-3, "f_rated": 16000 / 60,
-...        "observer": {"bemf_f0_hz": 116.5, "speed_filter_hz": 1 / (2 * 3.141592653589793 * 2.19e-3)}}
+...        "observer": {"bemf_f0_hz": 116.5, "speed_filter_hz": 72.6735}}
 >>> opt = {"voltage_base_v": 71.3, "velocity_base_hz": 400.0}
 >>> c = observer(ctx, opt)
 >>> [c[k]["value"] for k in ("MCAF_PLL_DT_ANGULAR", "KFILTER_ESDQ", "KFILTER_VELESTIM")]
