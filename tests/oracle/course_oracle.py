@@ -89,7 +89,8 @@ def observer_answers(inp: dict) -> dict:
     back-EMF observer's kp = 2ζω0·L_d − R (250 Hz, ζ = 1); NXP's M1_TO_KP_SHIFT of
     2ζω_t/ω_max (15 Hz, ζ = 1, ω_max = 2π·f_b), MCAT's rule ceil(log2 k) for k ≥ 1,
     −ceil(log2(1/k) − 1) below; the lowest speed where ψ·ω = ΔR·I + LSB·|R + jωL_q| with
-    ΔR = 0.00393·135·R, I = √2·I_n, LSB = 2√2·I_n/4096, solved as a quadratic in ω."""
+    ΔR = 0.00393·135·R, I = √2·I_n, LSB = 2√2·I_n/4096, solved as a quadratic in ω; Microchip's
+    KFILTER_ESDQ, the forward-Euler back-EMF low-pass of MCAF's pll.c at 250 Hz: round(ω·T_s·2^15)."""
     m, d = inp["motor"], inp["drive"]
     r, ld, lq, p = m["rs_ohm"], m["ld_h"], m["lq_h"], m["pole_pairs"]
     f_b = d.get("base_freq_hz", m["rated_freq_hz"])
@@ -101,7 +102,8 @@ def observer_answers(inp: dict) -> dict:
     qa, qb, qc = psi ** 2 - (c1 * lq) ** 2, -2 * psi * c0, c0 ** 2 - (c1 * r) ** 2
     w = (-qb + math.sqrt(qb * qb - 4 * qa * qc)) / (2 * qa)
     return {"obs-bemf-kp": 2 * 2 * math.pi * 250 * ld - r, "obs-to-kp-shift": shift,
-            "obs-lowest": w * 30 / (math.pi * p)}
+            "obs-lowest": w * 30 / (math.pi * p),
+            "obs-mchp-kfilter": math.floor(2 * math.pi * 250 * d["ts_s"] * 32768 + 0.5)}
 
 
 def expected(inp: dict) -> dict:

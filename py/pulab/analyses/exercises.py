@@ -182,11 +182,11 @@ def _fw(c: _Ctx) -> dict:
 
 
 def _obs(c: _Ctx) -> dict:
-    """The trainee motor's report with ``observer: {}`` and the NXP profile (every default),
-    computed once per context (three exercises read it)."""
+    """The trainee motor's report with ``observer: {}`` and the NXP and Microchip profiles (every
+    default), computed once per context (four exercises read it)."""
     if c.obs is None:
         from ..report import report
-        c.obs = report({**c.input, "observer": {}, "profiles": {"nxp": {}}})
+        c.obs = report({**c.input, "observer": {}, "profiles": {"nxp": {}, "microchip": {}}})
     return c.obs
 
 
@@ -264,6 +264,8 @@ EXERCISES: tuple[Exercise, ...] = (
              lambda c: _obs(c)["observer"]["design"]["bemf"]["kp_v_per_a"], 0.01, "V/A"),
     Exercise("obs-to-kp-shift", "08-loop-design", "int",
              lambda c: _obs(c)["profiles"]["nxp"]["constants"]["M1_TO_KP_SHIFT"]["value"]),
+    Exercise("obs-mchp-kfilter", "08-loop-design", "int",
+             lambda c: _obs(c)["profiles"]["microchip"]["constants"]["KFILTER_ESDQ"]["value"]),
     Exercise("obs-lowest", "08-loop-design", "real",
              lambda c: _obs(c)["observer"]["budget"]["min_speed_rpm"], 0.01, "rpm"),
     # reference: the board sets the scales

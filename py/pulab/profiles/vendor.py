@@ -14,7 +14,7 @@ Examples
 --------
 >>> from pulab.profiles import registry
 >>> ti = registry.get("ti")
->>> ti.NAMES, ti.gain_fields("q"), provided(ti, "observer")
+>>> ti.NAMES, ti.gain_fields("q"), provided(registry.get("inovance"), "observer")
 (('TI', 'TI'), ('Kp_Iq', 'Ki_Iq'), None)
 >>> f = ti.OPTIONS[4].field("ti")
 >>> f.path, f.kind, f.lo, f.hi

@@ -1,4 +1,4 @@
-// Sensorless: the view's numbers (design, budget, NXP's and ST's integers) equal CPython pulab for
+// Sensorless: the view's numbers (design, budget, NXP's, ST's, Microchip's and TI's constants) equal CPython pulab for
 // the page's motor with the observer defaults and with a typed option, a bad option is named at
 // its field, both plots are drawn, and the view is looked at in zh and en at 390/900/1366 px.
 import { join } from 'node:path';
@@ -7,7 +7,7 @@ export default async function observer({ check, assert, newPage, subSrv, ready, 
   // the seed's motor (docs: the lowest speed worked by hand, 569.12 rpm with the defaults)
   const seed = { motor: { rated_voltage_v: 17, rated_current_a: 1.5, rated_freq_hz: 220, rs_ohm: 1.5,
     ld_h: 0.0006, lq_h: 0.0006, bemf_v: 12, pole_pairs: 4 }, drive: { udc_v: 24, ts_s: 0.0001 } };
-  const asked = (o) => ({ ...seed, observer: o, profiles: { nxp: {}, st: {} } });
+  const asked = (o) => ({ ...seed, observer: o, profiles: { nxp: {}, st: {}, microchip: {}, ti: {} } });
   const page = await newPage();
   /** A plot is drawn once it is on screen (figures/figure.ts, whenVisible), and a re-render after
    * a language or width change may move the page under it: scroll it into view until drawn. */
@@ -34,6 +34,17 @@ export default async function observer({ check, assert, newPage, subSrv, ready, 
     assert(n >= 40, `only ${n} numbers compared`);
     assert(Math.abs(want.observer.budget.min_speed_rpm - 569.12) < 0.01, 'hand-worked lowest speed');
     for (const fig of ['obs-poles', 'obs-budget']) await seeFigure(fig);
+  });
+
+  await check('observer: Microchip\'s and TI\'s tables list their estimator constants, TI\'s as float32 reals', async () => {
+    const want = cpython(asked({}));
+    for (const [v, k] of [['microchip', 'KFILTER_ESDQ'], ['microchip', 'MCAF_PLL_DT_ANGULAR'], ['ti', 'Fdsmopos'], ['ti', 'Kslf']]) {
+      const key = `profiles.${v}.constants.${k}.value`;
+      const shown = await page.$eval(`#panel-observer [data-key="${key}"]`, (e) => e.getAttribute('data-value'));
+      assert(JSON.parse(shown) === want.profiles[v].constants[k].value, `${key}: ${shown}`);
+    }
+    const tiInt = await page.$eval('#panel-observer [data-key="profiles.ti.constants.Fdsmopos.value"]', (e) => e.classList.contains('int'));
+    assert(!tiInt, 'TI\'s float32 shown as an integer');
   });
 
   await check('observer: a typed bandwidth recomputes; a bad one is named at its field', async () => {

@@ -1,5 +1,6 @@
 // Sensorless: the back-EMF and tracking observers' gains, discrete poles and margins, the speed
-// filter, the lowest speed the back-EMF budget allows, and NXP's and ST's sensorless integers —
+// filter, the lowest speed the back-EMF budget allows, and NXP's, ST's, Microchip's and TI's
+// sensorless constants (TI's eSMO fields are float32: shown as reals) —
 // the report's "observer" section and profiles for the page's motor and the form's observer
 // options (`{}` when none are typed), asked of pulab by this panel.
 import { h, num, patch, table } from '../dom';
@@ -14,13 +15,13 @@ import type { Panel } from './panel';
 import { OwnRequest } from './own-request';
 
 /** The vendors whose sensorless integers the panel shows. */
-const VENDORS = ['nxp', 'st'];
+const VENDORS = ['nxp', 'st', 'microchip', 'ti'];
 
 type Obj = { [k: string]: Json };
 const obj = (v: unknown): Obj => (v && typeof v === 'object' && !Array.isArray(v) ? (v as Obj) : {});
 
 /** The input pulab computes the panel's numbers from: the report input, the observer section
- * (`{}` = defaults) and the NXP and ST profiles with the form's options. */
+ * (`{}` = defaults) and the vendors' profiles with the form's options. */
 export function observerInput(inp: Input): Input {
   const eff = effectiveInput(inp);
   const prof = obj(eff.profiles);
@@ -57,7 +58,7 @@ function vendorTable(name: string, p: ProfileReport | undefined): Node | null {
     table([t('name'), t('value'), t('obsIdeal'), t('obsErrorPct'), t('obsFlags')], names.map((k) => {
       const c = p.constants[k];
       return [h('code', {}, k),
-        num(`profiles.${name}.constants.${k}.value`, c.value, { kind: 'int' }),
+        num(`profiles.${name}.constants.${k}.value`, c.value, c.real ? {} : { kind: 'int' }),
         num(`profiles.${name}.constants.${k}.ideal`, c.ideal),
         num(`profiles.${name}.constants.${k}.error_pct`, c.error_pct, { unit: '%' }),
         c.flags.join(', ') || '—'];

@@ -2,6 +2,7 @@
 
 from .decode import decode_header
 from .header import header
+from .observer import observer
 from .pi import controller
 from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
 

@@ -26,8 +26,16 @@ def header(p: dict, ctx: dict, r: dict) -> str:
         define_float("USER_MOTOR_MAX_CURRENT", o["max_current_a"], "A peak"),
         "", "/* Controller gains as stored _iq integers (series PI) */",
     ]
+    obs = p.get("observer_constants", [])
     body += [define(f"USER_MTR1_{k.upper()}_IQ", r, "int32_t") for k, r in c.items()
-             if not k.startswith("USER_M1_")]
+             if not k.startswith("USER_M1_") and k not in obs]
+    if obs:
+        # only the USER_MOTOR1_ macros are the header's; ESMO_setParams computes the fields
+        body += ["", "/* eSMO (universal lab user_mtr1.h macros) */"]
+        body += [define(k, c[k]) for k in obs if k.startswith("USER_MOTOR1_")]
+        body += ["/* ESMO_Obj fields ESMO_setParams computes from them (float32):"]
+        body += [f" *   {k} = {c[k]['value']:.9g}  ({c[k]['expression']})"
+                 for k in obs if not k.startswith("USER_MOTOR1_")] + [" */"]
     board = [define(k, r) for k, r in c.items() if k.startswith("USER_M1_")]
     if board:
         body += ["", "/* Board (universal lab user_mtr1.h names) */"] + board
