@@ -393,3 +393,73 @@ def test_st_workbench_rule_aims_at_a_quarter_of_the_open_loop_poles():
     c3 = 16 / f / (ls * imax)
     z = poles(1.0 - a, w["k1"], c3, w["k2"])
     assert [p.real for p in z] == pytest.approx([a / 4, 0.25], abs=1e-12)
+
+
+#: Three public MCAT headers with their JSON: (file, board and motor).
+MCAT_HEADERS = [("m1_pmsm_appconfig.h", "TWR-MC56F8200, Teknic M-2311P, 2025"),
+                ("mcat_teknic_m2310p_m2_pmsm_appconfig.h", "TWR-MC56F8200, Teknic M-2310P, 2024"),
+                ("mcat_linix.json", "MC56F83000-EVK, linix, 2024")]
+
+
+def _mcat_header(name: str) -> tuple:
+    """(the JSON MCAT wrote, {macro: printed text}) of one header (or its numbers' file)."""
+    path = HERE / "data" / "headers" / "nxp" / name
+    if name.endswith(".json"):
+        d = json.loads(path.read_text(encoding="utf-8"))
+        return d["mcat"], d["printed"]
+    text = path.read_text(encoding="utf-8")
+    blocks = re.findall(r"/\*(.*?)\*/", text, re.S)
+    mcat = next(json.loads(b) for b in blocks if b.strip().startswith("{") and '"parameters"' in b)
+    return mcat, dict(re.findall(r"^#define (M1_\w+) (.*?)\s*$", text, re.M))
+
+
+_Q = {"FRAC16": 15, "FRAC32": 31, "ACC32": 15, "": 0}
+
+
+@pytest.mark.parametrize("name,board", MCAT_HEADERS, ids=[h[0] for h in MCAT_HEADERS])
+def test_mcat_json_alone_reproduces_its_header(name, board):
+    """``{"profiles": {"nxp": {"mcat": JSON}}}`` alone: every macro the NXP profile computes
+    that the header prints has MCAT's wrapper and MCAT's 6 significant digits (the argument
+    printed as %.6g — MCAT's own √3 = 1.73205 decides two of them)."""
+    mcat, printed = _mcat_header(name)
+    r = pulab.report({"profiles": {"nxp": {"mcat": mcat}}})
+    c = r["profiles"]["nxp"]["constants"]
+    shared = [k for k in printed if k in c]
+    assert len(shared) >= 25
+    for k in shared:
+        wrap, arg = _printed(printed[k])
+        want = float(arg.rstrip("F"))
+        rec = c[k]
+        assert rec["format"].split(" ")[0].startswith(wrap or "int"), (k, rec["format"])
+        assert float(f"{rec['ideal'] / 2 ** _Q[wrap]:.6g}") == want, (k, printed[k], rec["ideal"])
+
+
+def test_mcat_json_fills_the_motor_and_typed_fields_win():
+    """The conversions of pulab.model.mcat, and a typed field over the JSON's."""
+    mcat, _ = _mcat_header("m1_pmsm_appconfig.h")
+    r = pulab.report({"profiles": {"nxp": {"mcat": mcat}}, "motor": {"rs_ohm": 0.6}})
+    m, d = r["input"]["motor"], r["input"]["drive"]
+    assert m["rs_ohm"] == 0.6 and m["ld_h"] == 0.0003356 and m["pole_pairs"] == 4
+    assert m["rated_current_a"] == pytest.approx(8 / math.sqrt(2), rel=1e-12)
+    assert m["rated_voltage_v"] == pytest.approx(15 * math.sqrt(1.5), rel=1e-12)
+    assert m["rated_freq_hz"] == pytest.approx(4000 * 4 / 60, rel=1e-12)
+    assert (d["udc_v"], d["ts_s"]) == (36.3, 0.0001)
+    assert d["base_freq_hz"] == pytest.approx(4400 * 4 / 60, rel=1e-12)
+    assert r["input"]["observer"]["bemf_f0_hz"] == 300
+    assert r["profiles"]["nxp"]["inputs"]["u_max_coeff"] == 1.73205
+
+
+def test_mcat_newer_pole_pair_key_and_bad_json_name_the_field(tmp_path):
+    mcat, _ = _mcat_header("m1_pmsm_appconfig.h")
+    newer = copy.deepcopy(mcat)
+    newer["parameters"]["parametersPp"] = newer["parameters"].pop("parametersPP")
+    assert pulab.report({"profiles": {"nxp": {"mcat": newer}}})["input"]["motor"]["pole_pairs"] == 4
+    for bad, field in (([1, 2], "profiles.nxp.mcat"), ({"parameters": 3}, "profiles.nxp.mcat.parameters")):
+        with pytest.raises(InputError) as e:
+            pulab.report({"profiles": {"nxp": {"mcat": bad}}})
+        assert e.value.field == field
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps({"profiles": {"nxp": {"mcat": {"parameters": {}}}}}))
+    run = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)], capture_output=True,
+                         text=True, env={**__import__("os").environ, "PYTHONPATH": str(HERE.parent / "py")})
+    assert run.returncode == 2 and "motor." in run.stderr
