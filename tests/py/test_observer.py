@@ -471,3 +471,16 @@ def test_mcat_newer_pole_pair_key_and_bad_json_name_the_field(tmp_path):
     run = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)], capture_output=True,
                          text=True, env={**__import__("os").environ, "PYTHONPATH": str(HERE.parent / "py")})
     assert run.returncode == 2 and "motor." in run.stderr
+
+
+@pytest.mark.parametrize("name", ["m1_pmsm_appconfig.h", "mcat_teknic_m2310p_m2_pmsm_appconfig.h"])
+def test_pulab_header_with_mcat_json_prints_mcats_macros_in_its_order(name):
+    """``pulab header --profile nxp`` with MCAT's JSON: the same #define lines as MCAT's file,
+    in its order, character for character."""
+    from pulab.profiles import header
+    mcat, _ = _mcat_header(name)
+    text = (HERE / "data" / "headers" / "nxp" / name).read_text(encoding="utf-8")
+    theirs = re.findall(r"^#define (M1_\w+) (.*?)\s*$", text, re.M)
+    ours = re.findall(r"^#define (M1_\w+) (.*?)\s*$",
+                      header(pulab.report({"profiles": {"nxp": {"mcat": mcat}}}), "nxp"), re.M)
+    assert ours == theirs
