@@ -43,7 +43,8 @@ def mcat_define(name: str, c: dict) -> str:
     to 6 significant digits, ``(n)`` for an integer, ``(xF)`` for a float.
 
     >>> from pulab.profiles.common import fixed
-    >>> mcat_define("M1_N_MIN", fixed("M1_N_MIN", 300 / 4400, 16, 15, 4400.0, "rpm", "", ""))
+    >>> c = fixed("M1_N_MIN", 300 / 4400, 16, 15, 4400.0, "rpm", "", "", fmt="FRAC16")
+    >>> mcat_define("M1_N_MIN", c)
     '#define M1_N_MIN FRAC16(0.0681818)'
     """
     if c.get("real"):
