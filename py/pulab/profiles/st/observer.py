@@ -15,7 +15,10 @@ With a = 1 − RS·T/LS (the current model's pole), T = 1/f_reg::
 N = MAX_APPLICATION_SPEED_RPM, p the pole pairs.  K1, K2 place the error poles below at
 z = a/4 and 1/4: the open-loop poles (a, and 1 of the back-EMF integrator) divided by 4.
 The PLL gains grow with the electrical top speed N·p/60 (the constants are bracketed by
-the headers: 532.000..532.015 and 345·65536/60 within ±0.07 %).  ``profiles.st.observer_design``
+the headers: 532.000..532.015 and 345·65536/60 within ±0.07 %).  The CORDIC observer's
+CORD_F1, CORD_F2, CORD_GAIN1, CORD_GAIN2 equal F1, F2, GAIN1, GAIN2 in the three collected
+headers that print both (guojie12/PMSM-FOC, valentinognev/STM32_MCSDK_Project, two sets);
+it has no PLL.  ``profiles.st.observer_design``
 = true replaces this rule by pulab's design described next.
 
 
