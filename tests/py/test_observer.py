@@ -185,6 +185,9 @@ G431 = {"motor": {"rated_voltage_v": 24, "rated_current_a": 5, "rated_freq_hz": 
         "drive": {"udc_v": 24, "ts_s": 5e-5},
         "profiles": {"st": {"rshunt_ohm": 0.003, "amplification_gain": 9.14}},
         "observer": {"min_speed_rpm": 1440}}
+#: the same project with pulab's own observer design instead of the Workbench's rule
+G431_DESIGN = copy.deepcopy(G431)
+G431_DESIGN["profiles"]["st"]["observer_design"] = True
 
 
 def test_st_conversion_constants_of_the_g431_project():
@@ -209,7 +212,7 @@ def test_st_gains_place_the_sto_poles_where_the_design_asks(f0, zeta):
     """pulab's GAIN1/GAIN2 put the firmware's own error loop (C1..C4 as stored) at e^{sT} of the
     design poles, within what the integer rounding of GAIN1/GAIN2 moves them."""
     from pulab.profiles.st.observer import poles
-    inp = copy.deepcopy(G431)
+    inp = copy.deepcopy(G431_DESIGN)
     inp["observer"].update(bemf_f0_hz=f0, bemf_damping=zeta)
     r = pulab.report(inp)
     c = r["profiles"]["st"]["constants"]
@@ -226,7 +229,7 @@ def test_st_gains_place_the_sto_poles_where_the_design_asks(f0, zeta):
 def test_st_pll_ki_too_small_for_its_word_shows_its_error():
     """At 1440 rpm and 15 Hz the integral gain per 50 µs period is 2.3e-5: one LSB of 2^-15,
     +35 % off — the report says so rather than hide it (ST's own project stores 8/65535)."""
-    c = pulab.report(copy.deepcopy(G431))["profiles"]["st"]["constants"]
+    c = pulab.report(copy.deepcopy(G431_DESIGN))["profiles"]["st"]["constants"]
     assert c["PLL_KI_GAIN"]["value"] == 1 and c["PLL_KIDIV"]["value"] == 32768
     assert c["PLL_KI_GAIN"]["error_pct"] > 30
 
@@ -316,3 +319,168 @@ def test_lowest_speed_against_a_hand_worked_mcsdk_note():
     b = pulab.report(inp)["observer"]["budget"]
     assert b["min_speed_rpm"] == pytest.approx(1600 / math.sqrt(2 / 3), rel=1e-9)
     assert b["min_speed_rpm"] == pytest.approx(1959.6, abs=0.05)
+
+
+ST_SETS = json.loads((HERE / "data" / "headers" / "st" / "observer_sets.json")
+                     .read_text(encoding="utf-8"))["sets"]
+
+
+def _st_input(s: dict) -> dict:
+    """pulab's input for one MCSDK header set (the printed strings of its inputs); the rated
+    values do not enter the observer's integers: plausible ones."""
+    i = {k: float(v) for k, v in s["inputs"].items()}
+    n, p = i["MAX_APPLICATION_SPEED_RPM"], int(i["POLE_PAIR_NUM"])
+    fe = n * p / 60.0
+    return {"motor": {"rated_voltage_v": 24, "rated_current_a": 2, "rated_freq_hz": fe,
+                      "rs_ohm": i["RS"], "ld_h": i["LS"], "lq_h": i["LS"],
+                      "bemf_v": i["MOTOR_VOLTAGE_CONSTANT"] * n / 1000.0, "pole_pairs": p},
+            "drive": {"udc_v": 24, "ts_s": i["REGULATION_EXECUTION_RATE"] / i["PWM_FREQUENCY"],
+                      "base_freq_hz": fe},
+            "profiles": {"st": {"rshunt_ohm": i["RSHUNT"], "amplification_gain":
+                                i["AMPLIFICATION_GAIN"], "f1": int(i["F1"])}},
+            "observer": {}}
+
+
+def _half_digit(text: str) -> float:
+    """Half a unit of the last printed digit of a number as the header prints it, relative."""
+    dec = len(text.split(".")[1]) if "." in text else 0
+    return 0.5 * 10.0 ** -dec / float(text)
+
+
+@pytest.mark.parametrize("s", ST_SETS, ids=[f"{s['repo']}:{s['path'].split()[0]}"
+                                            for s in ST_SETS])
+def test_st_workbench_rule_reproduces_public_mcsdk_headers(s):
+    """The Workbench's observer rule (pulab.profiles.st.observer) from each header's own motor
+    parameters: F2 and PLL_KP_GAIN exactly, PLL_KI_GAIN exactly (2022+ headers), GAIN1 within
+    one LSB, GAIN2 within one LSB or within what the header's two-decimal AMPLIFICATION_GAIN
+    hides; each miss the fixture lists is a miss, with the reason it gives checked where a
+    number can check it."""
+    c = pulab.report(_st_input(s))["profiles"]["st"]["constants"]
+    got = {k: c[k]["value"] for k in s["printed"]}
+    misses = s["misses"]
+    for k, want in s["printed"].items():
+        if k in misses:
+            assert got[k] != want, f"{k} listed as a miss but hits"
+            continue
+        if k == "GAIN1":
+            assert abs(got[k] - want) <= 1, k
+        elif k == "GAIN2" and abs(got[k] - want) > 1:
+            rel = abs(c[k]["ideal"] / want - 1.0)
+            assert rel <= _half_digit(s["inputs"]["AMPLIFICATION_GAIN"]), (k, got[k], want)
+        elif k != "GAIN2":
+            assert got[k] == want, (k, got[k], want)
+    if "PLL_KI_GAIN" in misses:
+        assert s["header_year"] <= 2019 and got["PLL_KI_GAIN"] == s["printed"]["PLL_KI_GAIN"] + 1
+    if "LS printed" in misses.get("GAIN2", ""):
+        rel = abs(c["GAIN2"]["ideal"] / s["printed"]["GAIN2"] - 1.0)
+        assert rel <= _half_digit(s["inputs"]["LS"])
+
+
+def test_st_workbench_rule_over_the_collected_sets():
+    """What the note claims: of 13 sets × 5 macros, the misses are the 9 the fixture lists
+    (3 older-generator KI, 2 GAIN2 from another back-EMF + its F2, 3 from LS's printed digits)."""
+    assert len(ST_SETS) == 13
+    assert sum(len(s["misses"]) for s in ST_SETS) == 9
+    assert len({s["repo"] for s in ST_SETS}) == 12
+
+
+def test_st_workbench_rule_aims_at_a_quarter_of_the_open_loop_poles():
+    """K1, K2 of the rule put the float loop's error poles at a/4 and 1/4 (a = 1 − RS·T/LS)."""
+    from pulab.profiles.st.observer import poles, workbench
+    rs, ls, f, e, imax = 0.35, 6e-4, 20000.0, 15.68, 3.3 / (2 * 0.003 * 9.14)
+    w = workbench(rs, ls, f, e, imax, 4000, 2)
+    a = 1.0 - rs / (ls * f)
+    c3 = 16 / f / (ls * imax)
+    z = poles(1.0 - a, w["k1"], c3, w["k2"])
+    assert [p.real for p in z] == pytest.approx([a / 4, 0.25], abs=1e-12)
+
+
+#: Three public MCAT headers with their JSON: (file, board and motor).
+MCAT_HEADERS = [("m1_pmsm_appconfig.h", "TWR-MC56F8200, Teknic M-2311P, 2025"),
+                ("mcat_teknic_m2310p_m2_pmsm_appconfig.h", "TWR-MC56F8200, Teknic M-2310P, 2024"),
+                ("mcat_linix.json", "MC56F83000-EVK, linix, 2024")]
+
+
+def _mcat_header(name: str) -> tuple:
+    """(the JSON MCAT wrote, {macro: printed text}) of one header (or its numbers' file)."""
+    path = HERE / "data" / "headers" / "nxp" / name
+    if name.endswith(".json"):
+        d = json.loads(path.read_text(encoding="utf-8"))
+        return d["mcat"], d["printed"]
+    text = path.read_text(encoding="utf-8")
+    blocks = re.findall(r"/\*(.*?)\*/", text, re.S)
+    mcat = next(json.loads(b) for b in blocks if b.strip().startswith("{") and '"parameters"' in b)
+    return mcat, dict(re.findall(r"^#define (M1_\w+) (.*?)\s*$", text, re.M))
+
+
+_Q = {"FRAC16": 15, "FRAC32": 31, "ACC32": 15, "": 0}
+
+
+_WRAP = {"FRAC16": ("FRAC16",), "FRAC32": ("FRAC32",), "ACC32": ("ACC32",),
+         "": ("int", "int16", "float32")}
+
+
+@pytest.mark.parametrize("name,board", MCAT_HEADERS, ids=[h[0] for h in MCAT_HEADERS])
+def test_mcat_json_alone_reproduces_its_header(name, board):
+    """``{"profiles": {"nxp": {"mcat": JSON}}}`` alone gives every macro the header prints —
+    but the encoder's ``M1_POSPE_…``/``M1_POS_P_PROP_GAIN`` (not computed) — with MCAT's
+    wrapper and MCAT's 6 significant digits (the argument printed as %.6g; MCAT's own
+    √3 = 1.73205 decides two of them)."""
+    mcat, printed = _mcat_header(name)
+    r = pulab.report({"profiles": {"nxp": {"mcat": mcat}}})
+    c = r["profiles"]["nxp"]["constants"]
+    missing = [k for k in printed if k not in c]
+    assert all(k.startswith(("M1_POSPE_", "M1_POS_P_")) for k in missing), missing
+    assert len(printed) - len(missing) == 63
+    for k in printed:
+        if k in missing:
+            continue
+        wrap, arg = _printed(printed[k])
+        rec = c[k]
+        assert rec["format"].split(" ")[0] in _WRAP[wrap], (k, rec["format"])
+        assert float(f"{rec['ideal'] / 2 ** _Q[wrap]:.6g}") == float(arg.rstrip("F")), \
+            (k, printed[k], rec["ideal"])
+
+
+def test_mcat_json_fills_the_motor_and_typed_fields_win():
+    """The conversions of pulab.model.mcat, and a typed field over the JSON's."""
+    mcat, _ = _mcat_header("m1_pmsm_appconfig.h")
+    r = pulab.report({"profiles": {"nxp": {"mcat": mcat}}, "motor": {"rs_ohm": 0.6}})
+    m, d = r["input"]["motor"], r["input"]["drive"]
+    assert m["rs_ohm"] == 0.6 and m["ld_h"] == 0.0003356 and m["pole_pairs"] == 4
+    assert m["rated_current_a"] == pytest.approx(8 / math.sqrt(2), rel=1e-12)
+    assert m["rated_voltage_v"] == pytest.approx(15 * math.sqrt(1.5), rel=1e-12)
+    assert m["rated_freq_hz"] == pytest.approx(4000 * 4 / 60, rel=1e-12)
+    assert (d["udc_v"], d["ts_s"]) == (36.3, 0.0001)
+    assert d["base_freq_hz"] == pytest.approx(4400 * 4 / 60, rel=1e-12)
+    assert r["input"]["observer"]["bemf_f0_hz"] == 300
+    assert r["profiles"]["nxp"]["inputs"]["u_max_coeff"] == 1.73205
+
+
+def test_mcat_newer_pole_pair_key_and_bad_json_name_the_field(tmp_path):
+    mcat, _ = _mcat_header("m1_pmsm_appconfig.h")
+    newer = copy.deepcopy(mcat)
+    newer["parameters"]["parametersPp"] = newer["parameters"].pop("parametersPP")
+    assert pulab.report({"profiles": {"nxp": {"mcat": newer}}})["input"]["motor"]["pole_pairs"] == 4
+    for bad, field in (([1, 2], "profiles.nxp.mcat"), ({"parameters": 3}, "profiles.nxp.mcat.parameters")):
+        with pytest.raises(InputError) as e:
+            pulab.report({"profiles": {"nxp": {"mcat": bad}}})
+        assert e.value.field == field
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps({"profiles": {"nxp": {"mcat": {"parameters": {}}}}}))
+    run = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)], capture_output=True,
+                         text=True, env={**__import__("os").environ, "PYTHONPATH": str(HERE.parent / "py")})
+    assert run.returncode == 2 and "motor." in run.stderr
+
+
+@pytest.mark.parametrize("name", ["m1_pmsm_appconfig.h", "mcat_teknic_m2310p_m2_pmsm_appconfig.h"])
+def test_pulab_header_with_mcat_json_prints_mcats_macros_in_its_order(name):
+    """``pulab header --profile nxp`` with MCAT's JSON: the same #define lines as MCAT's file,
+    in its order, character for character."""
+    from pulab.profiles import header
+    mcat, _ = _mcat_header(name)
+    text = (HERE / "data" / "headers" / "nxp" / name).read_text(encoding="utf-8")
+    theirs = re.findall(r"^#define (M1_\w+) (.*?)\s*$", text, re.M)
+    ours = re.findall(r"^#define (M1_\w+) (.*?)\s*$",
+                      header(pulab.report({"profiles": {"nxp": {"mcat": mcat}}}), "nxp"), re.M)
+    assert ours == theirs

@@ -300,7 +300,7 @@ def test_every_profile_option_has_a_label_in_both_languages():
     from pulab.schema import vendors
     keys = {f"profiles.{n}.{o[0]}" for n, m in MODULES.items() for o in m.OPTIONS}
     labels = {f.path: f.label for f in vendors.option_fields()}
-    assert set(labels) == keys and len(keys) == 22
+    assert set(labels) == keys and len(keys) == 24
     for en, zh in labels.values():
         assert en and zh and " · " in en and " · " in zh
 

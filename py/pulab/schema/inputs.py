@@ -19,6 +19,7 @@ pulab.schema.errors.InputError: motor.rated_voltage_v: is required (or give data
 from __future__ import annotations
 
 from ..model import datasheet as _datasheet
+from ..model import mcat as _mcat
 from .errors import InputError
 from .fields import FIELD, section_fields
 from .validate import children, key_path, object_fields, read, real, shown, value
@@ -55,6 +56,7 @@ def normalize(inp: dict) -> dict:
     """
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
+    inp = _mcat.expand(inp)  # profiles.nxp.mcat: MCAT's own inputs fill the fields they imply
     for key in inp:
         if key not in children(""):
             raise InputError(key_path("", key), code="unknown_section",

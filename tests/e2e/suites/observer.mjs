@@ -64,6 +64,23 @@ export default async function observer({ check, assert, newPage, subSrv, ready, 
     await page.waitForFunction(() => (document.querySelector('[data-err-for="observer.bemf_f0_hz"]')?.textContent ?? '') === '', null, { timeout: 30_000 });
   });
 
+  await check('observer: a pasted MCAT header gives MCAT\'s motor and integers; ST by the Workbench rule', async () => {
+    const { readFileSync } = await import('node:fs');
+    const text = readFileSync(join(process.cwd(), 'tests/data/headers/nxp/m1_pmsm_appconfig.h'), 'utf8');
+    const mcat = JSON.parse(text.match(/\/\*\s*(\{[\s\S]*?"parameters"[\s\S]*?\})\s*\*\//)[1]);
+    await page.$eval('#panel-observer', (e) => e.scrollIntoView());
+    await page.fill('textarea[name="profiles.nxp.mcat"]', text);
+    const want = cpython({ observer: {}, profiles: { nxp: { mcat }, st: {} } });
+    assert(want.profiles.nxp.constants.M1_BEMF_DQ_KP_GAIN.value === 12589, 'MCAT printed ACC32(0.384202)');
+    await waitValue(page, 'profiles.nxp.constants.M1_BEMF_DQ_KP_GAIN.value', 12589, 0, 60_000);
+    await waitValue(page, 'profiles.st.constants.GAIN1.value', want.profiles.st.constants.GAIN1.value, 0, 60_000);
+    assert(await page.$eval('#panel-observer [data-st-rule]', (e) => e.getAttribute('data-st-rule')) === 'workbench', 'ST rule note');
+    await page.fill('textarea[name="profiles.nxp.mcat"]', '{not json');
+    await page.waitForFunction(() => (document.querySelector('[data-err-for="profiles.nxp.mcat"]')?.textContent ?? '').length > 0, null, { timeout: 30_000 });
+    await page.fill('textarea[name="profiles.nxp.mcat"]', '');
+    await page.waitForFunction(() => (document.querySelector('[data-err-for="profiles.nxp.mcat"]')?.textContent ?? '') === '', null, { timeout: 30_000 });
+  });
+
   await check('observer: screenshots at 390/900/1366 px, zh and en', async () => {
     for (const lang of ['en', 'zh']) {
       for (const w of [390, 900, 1366]) {

@@ -20,16 +20,40 @@ const VENDORS = ['nxp', 'st', 'microchip', 'ti'];
 type Obj = { [k: string]: Json };
 const obj = (v: unknown): Obj => (v && typeof v === 'object' && !Array.isArray(v) ? (v as Obj) : {});
 
+/** What the reader pasted into the MCAT box, and the JSON object found in it (null: none). */
+const mcatPaste: { text: string; json: Obj | null } = { text: '', json: null };
+
+/** The JSON object MCAT writes: the pasted text itself, or the first comment of a pasted
+ * m1_pmsm_appconfig.h that is a JSON object with a "parameters" section. */
+export function mcatJson(text: string): Obj | null {
+  const tryParse = (s: string): Obj | null => {
+    try {
+      const v: unknown = JSON.parse(s);
+      return v && typeof v === 'object' && !Array.isArray(v) ? (v as Obj) : null;
+    } catch {
+      return null;
+    }
+  };
+  const whole = tryParse(text.trim());
+  if (whole) return whole;
+  for (const m of text.matchAll(/\/\*([\s\S]*?)\*\//g)) {
+    const j = m[1].trim().startsWith('{') ? tryParse(m[1]) : null;
+    if (j && j.parameters && typeof j.parameters === 'object') return j;
+  }
+  return null;
+}
+
 /** The input pulab computes the panel's numbers from: the report input, the observer section
- * (`{}` = defaults) and the vendors' profiles with the form's options. */
+ * (`{}` = defaults) and the vendors' profiles with the form's options. With pasted MCAT inputs
+ * the motor and drive are MCAT's (pulab.model.mcat fills them), not the page's: the view then
+ * shows the motor of the pasted header. */
 export function observerInput(inp: Input): Input {
   const eff = effectiveInput(inp);
   const prof = obj(eff.profiles);
-  return {
-    ...reportInput(eff),
-    observer: obj(inp.observer),
-    profiles: { ...prof, ...Object.fromEntries(VENDORS.map((v) => [v, obj(prof[v])])) },
-  };
+  const profiles: Obj = { ...prof, ...Object.fromEntries(VENDORS.map((v) => [v, obj(prof[v])])) };
+  if (!mcatPaste.json) return { ...reportInput(eff), observer: obj(inp.observer), profiles };
+  profiles.nxp = { ...obj(profiles.nxp), mcat: mcatPaste.json };
+  return { observer: obj(inp.observer), profiles };
 }
 
 interface Shown { report: Report }
@@ -105,7 +129,19 @@ export const observerPanel: Panel = {
       h('h3', {}, t('obsBudget')),
       h('div', { class: 'figure', 'data-keep': 'obs-budget' }),
       h('h3', {}, t('obsIntegers')),
+      h('label', { class: 'field paste' }, h('span', { class: 'lbl' }, t('obsMcat')),
+        h('textarea', { name: 'profiles.nxp.mcat', rows: '3', spellcheck: 'false',
+          oninput: (ev: Event) => {
+            mcatPaste.text = (ev.target as HTMLTextAreaElement).value;
+            mcatPaste.json = mcatJson(mcatPaste.text);
+            v!.ask(ctx);
+            observerPanel.render(el, ctx);
+          } }, mcatPaste.text),
+        h('span', { class: 'err', 'data-err-for': 'profiles.nxp.mcat' },
+          mcatPaste.text.trim() && !mcatPaste.json ? t('obsMcatBad') : '')),
       ...VENDORS.map((name) => vendorTable(name, r?.profiles?.[name])),
+      r?.profiles?.st?.observer_constants?.length ? h('p', { class: 'note', 'data-st-rule': r.profiles.st.inputs?.observer_design ? 'design' : 'workbench' },
+        t(r.profiles.st.inputs?.observer_design ? 'obsStDesign' : 'obsStRule')) : null,
     );
     keptFigure(el, 'obs-poles', o, (fig) => renderObserverPoles(fig, o!));
     keptFigure(el, 'obs-budget', o, (fig) => renderObserverBudget(fig, o!));

@@ -5,7 +5,8 @@ from .induction import acim
 from .header import header
 from .observer import observer
 from .pi import controller
-from .scaling import *  # noqa: F403 (OPTIONS, bases, profile, …: see its __all__)
+from .scaling import *  # noqa: F403 (OPTIONS, bases, …: see its __all__)
+from .appconfig import profile  # scaling.profile and, with MCAT's inputs, its whole header
 
 NAME = "nxp"
 NAMES = ("NXP", "NXP")

@@ -2,14 +2,74 @@
 
 from __future__ import annotations
 
+from decimal import Decimal
+
 from ..headers import define, define_float, guard
 
 __all__ = ["header"]
 
+#: MCAT's order of the macros in a fixed-point m1_pmsm_appconfig.h, by its section comments.
+MCAT_ORDER = (
+    ("PARAMETERS", ("M1_N_MAX", "M1_FREQ_MAX", "M1_I_MAX", "M1_U_MAX", "M1_E_MAX", "M1_MOTOR_PP",
+                    "M1_I_PH_NOM", "M1_N_NOM", "M1_U_DCB_MAX", "M1_U_DCB_TRIP",
+                    "M1_U_DCB_UNDERVOLTAGE", "M1_U_DCB_OVERVOLTAGE", "M1_N_OVERSPEED", "M1_N_MIN",
+                    "M1_E_BLOCK_TRH", "M1_E_BLOCK_PER", "M1_CALIB_DURATION", "M1_FAULT_DURATION",
+                    "M1_FREEWHEEL_DURATION", "M1_SCALAR_UQ_MIN", "M1_ALIGN_VOLTAGE",
+                    "M1_ALIGN_DURATION", "M1_UDCB_IIR_B0", "M1_UDCB_IIR_B1", "M1_UDCB_IIR_A1",
+                    "M1_SCALAR_VHZ_FACTOR_GAIN", "M1_SCALAR_VHZ_FACTOR_SHIFT",
+                    "M1_SCALAR_INTEG_GAIN", "M1_SCALAR_RAMP_UP", "M1_SCALAR_RAMP_DOWN")),
+    ("CURRENTLOOP", ("M1_D_KP_GAIN", "M1_D_KI_GAIN", "M1_Q_KP_GAIN", "M1_Q_KI_GAIN",
+                     "M1_CLOOP_LIMIT")),
+    ("SPEEDLOOP", ("M1_SPEED_RAMP_UP", "M1_SPEED_RAMP_DOWN", "M1_SPEED_LOOP_HIGH_LIMIT",
+                   "M1_SPEED_LOOP_LOW_LIMIT", "M1_SPEED_PI_PROP_GAIN", "M1_SPEED_PI_INTEG_GAIN",
+                   "M1_SPEED_IIR_B0", "M1_SPEED_IIR_B1", "M1_SPEED_IIR_A1")),
+    ("SENSORLESS", ("M1_OL_START_RAMP_INC", "M1_OL_START_I", "M1_MERG_SPEED_TRH",
+                    "M1_MERG_COEFF", "M1_I_SCALE", "M1_U_SCALE", "M1_E_SCALE", "M1_WI_SCALE",
+                    "M1_BEMF_DQ_KP_GAIN", "M1_BEMF_DQ_KI_GAIN", "M1_TO_KP_SHIFT", "M1_TO_KP_GAIN",
+                    "M1_TO_KI_SHIFT", "M1_TO_KI_GAIN", "M1_TO_THETA_SHIFT", "M1_TO_THETA_GAIN",
+                    "M1_TO_SPEED_IIR_B0", "M1_TO_SPEED_IIR_B1", "M1_TO_SPEED_IIR_A1")))
+_Q = {"FRAC16": 15, "FRAC32": 31, "ACC32": 15}
+
+
+def _six(x: float, zeros: bool = False) -> str:
+    """x to 6 significant digits, positional (MCAT writes 0.0000681818, never 6.8e-05);
+    ``zeros``: keep trailing zeros, as MCAT does for its ACC32 arguments (0.0209740)."""
+    s = format(Decimal(f"{x:#.6g}" if zeros else f"{x:.6g}"), "f")
+    return s if "." in s else s + ".0"
+
+
+def mcat_define(name: str, c: dict) -> str:
+    """One line as MCAT prints it: ``FRAC16(x)``/``FRAC32(x)``/``ACC32(x)`` with the argument
+    to 6 significant digits, ``(n)`` for an integer, ``(xF)`` for a float.
+
+    >>> from pulab.profiles.common import fixed
+    >>> c = fixed("M1_N_MIN", 300 / 4400, 16, 15, 4400.0, "rpm", "", "", fmt="FRAC16")
+    >>> mcat_define("M1_N_MIN", c)
+    '#define M1_N_MIN FRAC16(0.0681818)'
+    """
+    if c.get("real"):
+        return f"#define {name} ({_six(c['ideal'])}F)"
+    wrap = c["format"].split(" ")[0]
+    if wrap in _Q:
+        return f"#define {name} {wrap}({_six(c['ideal'] / 2 ** _Q[wrap], wrap == 'ACC32')})"
+    return f"#define {name} ({c['value']})"
+
+
+def _mcat_header(c: dict) -> str:
+    """MCAT's layout (its section comments and order); macros the profile has not are left out."""
+    out = ["#ifndef __M1_PMSM_APPCONFIG_H ", "#define __M1_PMSM_APPCONFIG_H ", ""]
+    for section, names in MCAT_ORDER:
+        out.append(f"/* {section}*/")
+        out += [mcat_define(n, c[n]) for n in names if n in c]
+    return "\n".join(out + ["#endif /* __M1_PMSM_APPCONFIG_H */", ""])
+
 
 def header(p: dict, ctx: dict, r: dict) -> str:
-    """An ``m1_pmsm_appconfig.h``-style block (integers in place of ACC32()/FRAC16())."""
+    """An ``m1_pmsm_appconfig.h``-style block (integers in place of ACC32()/FRAC16()); with
+    ``profiles.nxp.mcat``, MCAT's own layout, order and wrappers (:func:`mcat_define`)."""
     o, c = p["inputs"], p["constants"]
+    if o.get("mcat"):
+        return _mcat_header(c)
     body = ["/* Application scales */",
             define_float("M1_I_MAX", o["i_max_a"], "A"),
             define_float("M1_U_DCB_MAX", o["udcb_max_v"], "V"),

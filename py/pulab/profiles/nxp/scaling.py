@@ -55,6 +55,10 @@ OPTIONS = (
     Option("round_u_max", lambda c: False, "round U_max to 0.1 V as the JavaScript MCAT does; "
            "default false",
            ("U_max rounded to 0.1 V", "U_max 取整到 0.1 V"), kind="flag"),
+    Option("mcat", lambda c: None, "the JSON object MCAT writes at the top of "
+           "m1_pmsm_appconfig.h; fills the motor, drive, current-loop, observer and NXP fields "
+           "it implies (pulab.model.mcat), typed fields win",
+           ("MCAT inputs (JSON)", "MCAT 输入（JSON）"), kind="object"),
 )
 CONVENTIONS = {
     "voltage_base": "U_max = U_DCB_MAX/UmaxCoeff (hardware)",

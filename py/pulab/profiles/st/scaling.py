@@ -92,6 +92,9 @@ OPTIONS = (
     Option("f2", lambda c: None, "observer scaling F2 (power of two); default the largest ≤ 16384 "
            "keeping GAIN2 in int16 (with an observer section)",
            ("observer F2", "观测器 F2"), kind="integer", lo=1, hi=16384, power_of_two=True),
+    Option("observer_design", lambda c: False, "true: GAIN1/GAIN2 and the PLL gains from pulab's "
+           "observer design (observer.bemf_*, observer.tracking_*); default the Workbench's rule",
+           ("observer gains from pulab's design", "观测器增益按 pu-lab 设计"), kind="flag"),
 )
 CONVENTIONS = {
     "voltage_base": "U_dc/√3 at 32768 digits (assumed, full modulation)",
