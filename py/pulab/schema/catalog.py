@@ -371,6 +371,10 @@ MESSAGES = {
                             "{name}() 需要 {n} 个参数，实际为 {got} 个"),
     "trace_iqmpy_q": ("__IQmpy(a, b, q): q must be an integer constant 0..62",
                       "__IQmpy(a, b, q)：q 必须是 0..62 的整数常量"),
+    "trace_iq_float": ("{name}() returns a float: the tracer follows integers only (use "
+                       "_IQint/_IQfrac, or trace the integer you pass to it)",
+                       "{name}() 返回浮点数：追踪器只跟踪整数（可改用 _IQint/_IQfrac，"
+                       "或追踪传给它的整数）"),
     "trace_macro_arity": ("macro {name}({params}) has {n} parameters, {given} types given",
                           "宏 {name}({params}) 有 {n} 个参数，给出了 {given} 个类型"),
     "trace_macro_param_taken": ("macro {name}: its parameter {param} is already a name of the "
