@@ -142,6 +142,7 @@ def _agree(code, entry, outputs, rows, target):
     unit = Unit(code, entry, [("long", "a"), ("long", "b")], [("long", "a"), ("long", "b")],
                 [("long", n) for n in outputs], prelude=REFERENCE)
     got = run_calls(unit, rows, target)
+    assert len(got) == len(traced["calls"]) == len(rows)
     for k, (call, g) in enumerate(zip(traced["calls"], got)):
         mine = {n: call["vars"][n]["value"] for n in outputs}
         assert mine == g, f"call {k} {rows[k]}: tracer {mine} vs compiler {g}"
