@@ -209,9 +209,17 @@ def format_sequence_text(r: dict) -> str:
     call 0  return 32000 (0x7D00)
     call 1  return -31536 (0x84D0)  signed_overflow
     first event: call 1, line 1, signed_overflow, a
+    >>> r = trace_sequence("int a; int f(int e) { a = e; return a; }", "c28x", 2,
+    ...                    entry="f", gen={"e": "ramp:start=30000,slope=3000"})
+    >>> print(format_sequence_text(r).splitlines()[1])
+    generated e = ramp:start=30000,slope=3000  (1 values held at the limits of int, first at call 1)
     """
     lines = [f"target {r['target']}, entry {r['entry']}, {len(r['calls'])} calls; inputs: " +
              (", ".join(r["inputs"]) or "none")]
+    for name, g in r.get("generated", {}).items():
+        lines.append(f"generated {name} = {g['spec']}" + (
+            f"  ({g['clamped']} values held at the limits of {g['type']}, first at call "
+            f"{g['first_clamped']})" if g["clamped"] else ""))
     for k, c in enumerate(r["calls"]):
         ret = c["return"]
         line = f"call {k}" + (f"  return {ret['value']} ({ret['hex']})"
