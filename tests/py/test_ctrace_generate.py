@@ -97,6 +97,13 @@ def test_step_and_ramp_give_their_definitions_exactly():
     assert (g["values"], g["first_clamped"], g["type"]) == ([0, 0, 0], 1, "uint8_t")
 
 
+def test_values_beyond_binary64_are_held_at_the_limits():
+    g = _gen("ramp:start=1e308,slope=1e308", 3)
+    assert (g["values"], g["clamped"]) == ([32767, 32767, 32767], 3)
+    g = _gen("noise:amp=1e308,offset=-1e308", 50)
+    assert set(g["values"]) <= {-32768, 32767} and g["clamped"] == 50
+
+
 def test_sine_is_within_half_an_lsb_of_its_formula():
     amp, period, offset, phase = 12345.0, 37.5, -200.0, 45.0
     g = _gen(f"sine:amp={amp},period={period},offset={offset},phase={phase}", 300)

@@ -132,7 +132,9 @@ def values(spec: dict, calls: int, lo: int, hi: int) -> tuple:
     ``[lo, hi]``, how many were held at a limit, and the first such call (None when none)."""
     out, first, count = [], None, 0
     for k, x in enumerate(_raw(spec, calls)):
-        n = int(math.floor(abs(x) + 0.5)) * (1 if x >= 0 else -1)
+        # beyond binary64 (offset 1e308 plus a swing): past either limit anyway
+        n = int(math.floor(abs(x) + 0.5)) * (1 if x >= 0 else -1) if math.isfinite(x) else \
+            hi + 1 if x > 0 else lo - 1
         if not lo <= n <= hi:
             n = hi if n > hi else lo
             first = k if first is None else first
