@@ -45,13 +45,12 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["IQ_OPS", "IQ_CALL", "iq_value", "ARITY"]
+__all__ = ["ARITY", "IQ_CALL", "INEXACT", "iq_value"]
 
 #: The operations and their argument counts; ``sat`` and ``abs`` have no Q.
 ARITY = {"mpy": 2, "rmpy": 2, "rsmpy": 2, "div": 2, "sqrt": 1, "sin": 1, "cos": 1, "sinPU": 1,
          "cosPU": 1, "atan2": 2, "atan2PU": 2, "mag": 2, "int": 1, "frac": 1, "toF": 1,
          "sat": 3, "abs": 1}
-IQ_OPS = tuple(ARITY)
 #: ``_IQop`` (GLOBAL_Q) or ``_IQNop`` (Q = N, 1..30); ``_IQsat`` and ``_IQabs`` only as such.
 IQ_CALL = re.compile(r"_IQ(?P<n>[1-9]|[12][0-9]|30)?(?P<op>rsmpy|rmpy|mpy|div|sqrt|sinPU|cosPU"
                      r"|sin|cos|atan2PU|atan2|mag|int|frac|toF)\Z|_IQ(?P<plain>sat|abs)\Z")
@@ -99,8 +98,10 @@ def iq_value(op: str, args: list, q: int, bits: int) -> tuple:
         return c
 
     a = args[0]
-    if op == "sat":
-        return clamp_between(a, args[1], args[2], flags), flags
+    if op == "sat":  # _IQsat(x, top, bottom): top when above it, else bottom when below it
+        top, bottom = args[1], args[2]
+        v = top if a > top else bottom if a < bottom else a
+        return v, (["saturate"] if v != a else [])
     if op == "abs":
         v = (abs(a) - lo) % (1 << bits) + lo
         if v != abs(a):
@@ -117,7 +118,8 @@ def iq_value(op: str, args: list, q: int, bits: int) -> tuple:
         mag = min(abs(a), hi)  # C28x ABSTC with overflow mode: |LONG_MIN| saturates
         part = mag >> q if op == "int" else mag & ((1 << q) - 1)
         return (-part if a < 0 else part), flags
-    flags.append("not_bit_exact")
+    if op in INEXACT:
+        flags.append("not_bit_exact")
     one = 1 << q
     if op == "div":
         b = args[1]
@@ -140,10 +142,3 @@ def iq_value(op: str, args: list, q: int, bits: int) -> tuple:
     f = math.sin if op.startswith("sin") else math.cos
     return clamp(round(f(x) * one)), flags
 
-
-def clamp_between(x: int, top: int, bottom: int, flags: list) -> int:
-    """``_IQsat(x, top, bottom)``: ``top`` when above it, else ``bottom`` when below it."""
-    v = top if x > top else bottom if x < bottom else x
-    if v != x:
-        flags.append("saturate")
-    return v
