@@ -28,6 +28,8 @@ export default async function codeSeq(ctx) {
     await ready(p);
     await p.click('nav.tabs a[data-view="firmware"]');
     await p.waitForSelector('#panel-code .code-seq-run', { timeout: 60_000 });
+    // the single trace's reply first: it names the inputs (acc, e) whose values the calls start from
+    await p.waitForSelector('#panel-code input[name="set.e"]', { state: 'attached', timeout: 60_000 });
     await run(40, 'e=ramp:start=0,slope=1000');
     await p.waitForSelector('[data-key="code.seq.calls.39.return.value"][data-value]', { state: 'attached', timeout: 60_000 });
     const want = cli(40, 'e=ramp:start=0,slope=1000');
@@ -37,10 +39,13 @@ export default async function codeSeq(ctx) {
     const event = await p.$eval('[data-key="code.seq.first_event"]', (e) => JSON.parse(e.dataset.value));
     assert(JSON.stringify(event) === JSON.stringify(want.first_event) && event.call === 8, `first event ${JSON.stringify(event)}`);
     await run(8, 'e=sine:amp=40000,period=4');
-    await p.waitForSelector('[data-key="code.seq.generated.e.clamped"]', { timeout: 60_000 });
+    await p.waitForFunction(() => document.querySelectorAll('[data-key^="code.seq.calls."][data-value]').length === 8, null, { timeout: 60_000 });
     const clamped = await p.$eval('[data-key="code.seq.generated.e.clamped"]', (e) => Number(e.dataset.value));
     assert(clamped === cli(8, 'e=sine:amp=40000,period=4').generated.e.clamped && clamped === 4, `clamped ${clamped}`);
-    await p.$eval('#panel-code .code-seq-box', (e) => e.scrollIntoView());
+    await p.$eval('#panel-code .code-seq-plot', (e) => e.scrollIntoView({ block: 'center' }));
+    await p.waitForSelector('#panel-code .code-seq-plot .main-svg', { timeout: 30_000 });
+    const legend = await p.$$eval('#panel-code .code-seq-plot .legendtext', (els) => els.map((e) => e.textContent));
+    assert(legend.includes('e') && legend.length === 2, `legend ${legend}`);
     await p.screenshot({ path: join(SHOTS, 'code-seq-1366-en.png') });
   });
 
@@ -56,7 +61,7 @@ export default async function codeSeq(ctx) {
     await p.setViewportSize({ width: 390, height: 900 });
     await p.click('button[data-lang="zh"]');
     await run(20, 'e=step:at=5,after=300');
-    await p.waitForSelector('[data-key="code.seq.calls.19.return.value"][data-value]', { state: 'attached', timeout: 60_000 });
+    await p.waitForFunction(() => document.querySelectorAll('[data-key^="code.seq.calls."][data-value]').length === 20, null, { timeout: 60_000 });
     const over = await p.$eval('#panel-code', (e) => e.scrollWidth - e.clientWidth);
     assert(over <= 1, `#panel-code overflows by ${over} px`);
     await p.$eval('#panel-code .code-seq-box', (e) => e.scrollIntoView());

@@ -8,6 +8,7 @@ import { copyLinkToast } from '../page/toast';
 import { LOOP_FIELDS, LOOP_PATH as LOOP_FIELD } from '../fields';
 import type { Panel, PanelContext } from './panel';
 import { renderProve, type ProveHost } from './code-prove';
+import { COLORS, plotRaw } from '../figures/figure';
 import type { TraceExample, TraceLine, TraceSequence, TraceTerm, TraceVar } from '../api-types';
 import type { ApiErr, Ok } from '../protocol';
 
@@ -343,10 +344,11 @@ function renderSeq(box: HTMLElement, ctx: PanelContext): void {
   }
   const r = seqState.reply;
   const runSeq = () => {
-    if (!ctx.client || seqState.busy) return;
+    const c = lastCtx ?? ctx; // the page's current context (the worker may have started since)
+    if (!c.client || seqState.busy) return;
     seqState.busy = true;
-    const req = { ...traceRequest(s, s.target, inputs, ctx.report), calls: /^\s*\d+\s*$/.test(seqState.calls) ? Number(seqState.calls) : seqState.calls, gen: genSpecs(seqState.gen) };
-    void ctx.client.call('trace', req, 'trace-seq').then(({ result }) => {
+    const req = { ...traceRequest(s, s.target, inputs, c.report), calls: /^\s*\d+\s*$/.test(seqState.calls) ? Number(seqState.calls) : seqState.calls, gen: genSpecs(seqState.gen) };
+    void c.client.call('trace', req, 'trace-seq').then(({ result }) => {
       seqState.reply = result as (Ok<'trace'> & TraceSequence) | ApiErr;
     }, () => undefined).finally(() => {
       seqState.busy = false;
@@ -375,8 +377,28 @@ function renderSeq(box: HTMLElement, ctx: PanelContext): void {
     ...Object.entries(ok?.generated ?? {}).filter(([, g]) => g.clamped > 0).map(([name, g]) =>
       h('p', { class: 'note code-seq-clamped', 'data-key': `code.seq.generated.${name}.clamped`, 'data-value': String(g.clamped) },
         t('cs_clamped', { name, n: g.clamped, type: g.type, call: g.first_clamped ?? '' }))),
+    ok ? h('div', { class: 'code-seq-plot figure' }) : '',
     ok ? h('div', { class: 'code-seq-calls' }, table([t('cs_call'), t('cs_return'), t('flags')], rows, 'code-steps')) : '',
   );
+  const fig = box.querySelector<HTMLElement>('.code-seq-plot');
+  if (ok && fig) seqPlot(fig, ok);
+}
+
+/** The result over the calls, the generated inputs below it. */
+function seqPlot(el: HTMLElement, r: TraceSequence): void {
+  const k = r.calls.map((_, i) => i);
+  const gen = Object.entries(r.generated ?? {});
+  const palette = [COLORS.si, COLORS.fixed, COLORS.q15, COLORS.pu];
+  plotRaw(el, [
+    { type: 'scatter', mode: 'lines', x: k, y: r.calls.map((c) => c.return?.value ?? null), name: t('cs_return'), line: { color: COLORS.code, width: 1.6 } },
+    ...gen.map(([name, g], i) => ({ type: 'scatter', mode: 'lines', x: k, y: g.values, name, yaxis: 'y2', line: { color: palette[i % palette.length], width: 1.2 } })),
+  ], {
+    legend: { orientation: 'h', y: 1.1, x: 0 },
+    grid: { rows: 2, columns: 1, roworder: 'top to bottom' },
+    xaxis: { title: { text: t('cs_call') }, gridcolor: '#eaeef2', anchor: 'y2' },
+    yaxis: { title: { text: t('cs_return') }, domain: [0.4, 1], gridcolor: '#eaeef2' },
+    yaxis2: { title: { text: t('cs_gen') }, domain: [0, 0.3], gridcolor: '#eaeef2' },
+  }, 320);
 }
 
 function update(el: HTMLElement, ctx: PanelContext): void {
