@@ -41,7 +41,8 @@ MAX_CALLS = 10_000
 #: own limit too); more is an error naming the call that reached it.
 MAX_SEQUENCE_STEPS = 1_000_000
 #: The flags that make a call's ``first_event``: a wrap (an unsigned result reduced, or a
-#: conversion that changed the value), a signed overflow, a clamp by ``_IQsat``/``__IQsat``.
+#: conversion that changed the value), a signed overflow, a clamp by ``_IQsat``/``__IQsat`` or
+#: an IQmath call that saturated (``_IQrsmpy``, ``_IQdiv``, ``_IQmag``).
 EVENT_KINDS = ("signed_overflow", "unsigned_wrap", "conversion", "saturate")
 
 
