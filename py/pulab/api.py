@@ -140,7 +140,7 @@ def _batch(req) -> dict:
 
 _TRACE_KEYS = ("code", "target", "set", "global_q", "define", "undefine", "entry", "zero_unset")
 _PROVE_KEYS = _TRACE_KEYS + ("range", "budget")
-_SEQUENCE_KEYS = _TRACE_KEYS + ("calls", "table")
+_SEQUENCE_KEYS = _TRACE_KEYS + ("calls", "table", "gen")
 
 
 def _request_object(req, keys: tuple) -> None:
@@ -176,15 +176,16 @@ def _undefines(req) -> list:
 
 
 def _trace(req) -> dict:
-    """One call, or with ``calls``/``table`` a sequence of calls
+    """One call, or with ``calls``/``table``/``gen`` a sequence of calls
     (:func:`pulab.ctrace.sequence.trace_sequence`)."""
     from .ctrace import trace
-    if isinstance(req, dict) and ("calls" in req or "table" in req):
+    if isinstance(req, dict) and ("calls" in req or "table" in req or "gen" in req):
         from .ctrace.sequence import trace_sequence
         code, defines, sets, zero_unset = _trace_request(req, _SEQUENCE_KEYS)
         reply = trace_sequence(code, req.get("target", "c28x"), req.get("calls"),
                                req.get("table"), sets, req.get("global_q"), defines,
-                               req.get("entry") or None, zero_unset, _undefines(req))
+                               req.get("entry") or None, zero_unset, _undefines(req),
+                               req.get("gen"))
         reply.pop("ok", None)
         return reply
     code, defines, sets, zero_unset = _trace_request(req, _TRACE_KEYS)

@@ -195,10 +195,10 @@ def _run_program(text: str, chunks: list, target: str, workdir: str, index: int,
         f.write(text)
     if target == "avr":
         cmd = ["avr-gcc", "-mmcu=atmega2560", "-Os", "-fwrapv", "-std=gnu11", "-w", *flags,
-               src, "-o", exe]
+               src, "-o", exe, "-lm"]
     else:
         cmd = ["gcc", "-m32", "-O1", "-fwrapv", "-funsigned-char", "-std=gnu11", "-w", *flags,
-               src, "-o", exe]
+               src, "-o", exe, "-lm"]
     cc = subprocess.run(cmd, capture_output=True, text=True)
     if cc.returncode:
         raise RuntimeError(f"{cmd[0]} failed on {src}:\n{cc.stderr[:4000]}")

@@ -19,9 +19,10 @@ def test_a_short_run_formats_every_number():
     assert set(r["report_ms"]) == set(MOTORS)
     numbers = [*r["report_ms"].values(), *r["loop_ms"].values(), r["sim"]["total_s"],
                r["trace"]["median_ms"], r["trace"]["p95_ms"], r["trace"]["unit_again"]["median_ms"],
-               r["trace"]["sequence"]["median_s"]]
+               r["trace"]["sequence"]["median_s"], r["trace"]["sequence_gen"]["median_s"]]
     assert all(math.isfinite(x) and x > 0 for x in numbers), numbers
     assert r["trace"]["lines"] == len(TRACE_SNIPPET.strip().splitlines())
     text = format_run(r)
     assert all(name in text for name in MOTORS) and "nan" not in text
     assert "trace sequence: 3 calls of the unit" in text and "compiled program reused" in text
+    assert "inputs generated (sine, ramp): 3 calls" in text

@@ -24,6 +24,18 @@ export interface TraceRequest {
   /** The function of the code to run, or a statement macro as `NAME` / `NAME(TYPE, …)` (absent: the statements outside functions). */
   entry?: string;
   zero_unset?: boolean;
+  /** A sequence: call the entry this many times (the reply is a {@link TraceSequence}). */
+  calls?: number | string;
+  /** Generated per-call inputs: input name → `KIND:PARAM=VALUE,…` (pulab.ctrace.generate). */
+  gen?: Record<string, string>;
+}
+/** The reply of `trace` with `calls`/`gen`: each call's result, the first wrap/overflow/clamp,
+ * and the values the generators gave. */
+export interface TraceSequence {
+  target: string; entry: string; inputs: string[];
+  calls: { return: TraceVar | null; vars: Record<string, TraceVar>; flags: string[] }[];
+  first_event: { call: number; line: number; kind: string; name: string } | null;
+  generated?: Record<string, { spec: string; type: string; values: number[]; clamped: number; first_clamped: number | null }>;
 }
 /** A term; a call of a function of the code carries `call` and the statements it ran. */
 export interface TraceTerm { expr: string; line: number; column: number; type: string; value: number | null; hex: string | null; flags: string[]; var?: string; rounding?: 'floor' | 'toward_zero'; lost?: number; call?: string; steps?: TraceLine[] }

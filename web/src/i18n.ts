@@ -20,12 +20,13 @@ import codeprove from './i18n/codeprove';
 import audit from './i18n/audit';
 import acim from './i18n/acim';
 import codeloop from './i18n/codeloop';
+import codeseq from './i18n/codeseq';
 
 export type Lang = 'en' | 'zh';
 
 const en = { ...page.en, ...form.en, ...report.en, ...sim.en, ...family.en, ...code.en, ...vendors.en, ...loop.en, ...review.en, ...qcalc.en,
   ...screens.en, ...datasheet.en,
-  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...audit.en, ...acim.en, ...codeloop.en };
+  ...ctrace.en, ...prove.en, ...course.en, ...simfirmware.en, ...codeprove.en, ...audit.en, ...acim.en, ...codeloop.en, ...codeseq.en };
 
 export type Key = keyof typeof en;
 
@@ -50,6 +51,7 @@ const zh: Record<Key, string> = {
   ...audit.zh,
   ...acim.zh,
   ...codeloop.zh,
+  ...codeseq.zh,
 };
 
 export const DICTS: Record<Lang, Record<Key, string>> = { en, zh };

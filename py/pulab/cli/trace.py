@@ -1,8 +1,8 @@
 """``python -m pulab trace FILE.c --target c28x [--entry F] --set NAME=VALUE …
 [-D NAME[=VALUE]]… [-U NAME]… [--zero-unset] [--global-q N] [--format json|text]
-[--calls N] [--inputs TABLE.csv|TABLE.jsonl] [--prove --range NAME=LO:HI … [--budget N]]``.
+[--calls N] [--inputs TABLE.csv|TABLE.jsonl] [--gen NAME=KIND:PARAM=VALUE,…]… [--prove --range NAME=LO:HI … [--budget N]]``.
 
-Prints the :func:`~pulab.ctrace.trace` JSON on stdout (with ``--calls`` or ``--inputs``, the
+Prints the :func:`~pulab.ctrace.trace` JSON on stdout (with ``--calls``, ``--inputs`` or ``--gen``, the
 :func:`~pulab.ctrace.sequence.trace_sequence` JSON; with ``--prove``, the
 :func:`~pulab.ctrace.prove.prove_code` JSON: exit 0 proven, 1 violated or unknown); bad
 code or input exits with status 2 and one line on stderr, ``error: code: LINE:COLUMN:
@@ -50,6 +50,10 @@ def add_trace_parser(sub) -> None:
     tp.add_argument("--inputs", default=None, metavar="TABLE.csv|TABLE.jsonl",
                     help="per-call inputs: row k sets its columns before call k (an empty "
                          "cell or missing key keeps the carried value)")
+    tp.add_argument("--gen", action="append", default=[], metavar="NAME=KIND:PARAM=VALUE,…",
+                    help="a generated per-call input: step:at=K[,before=V,after=V], "
+                         "ramp:start=S,slope=D[,min=,max=], sine:amp=A,period=P[,offset=,phase=DEG], "
+                         "noise:amp=A[,dist=uniform|gauss,seed=S,offset=]; repeat for each input")
     tp.add_argument("--format", choices=("json", "text"), default="json",
                     help="json (default) or text: one line per executed statement")
     tp.add_argument("--global-q", type=str, default=None,
@@ -205,9 +209,17 @@ def format_sequence_text(r: dict) -> str:
     call 0  return 32000 (0x7D00)
     call 1  return -31536 (0x84D0)  signed_overflow
     first event: call 1, line 1, signed_overflow, a
+    >>> r = trace_sequence("int a; int f(int e) { a = e; return a; }", "c28x", 2,
+    ...                    entry="f", gen={"e": "ramp:start=30000,slope=3000"})
+    >>> print(format_sequence_text(r).splitlines()[1])
+    generated e = ramp:start=30000,slope=3000  (1 values held at the limits of int, first at call 1)
     """
     lines = [f"target {r['target']}, entry {r['entry']}, {len(r['calls'])} calls; inputs: " +
              (", ".join(r["inputs"]) or "none")]
+    for name, g in r.get("generated", {}).items():
+        lines.append(f"generated {name} = {g['spec']}" + (
+            f"  ({g['clamped']} values held at the limits of {g['type']}, first at call "
+            f"{g['first_clamped']})" if g["clamped"] else ""))
     for k, c in enumerate(r["calls"]):
         ret = c["return"]
         line = f"call {k}" + (f"  return {ret['value']} ({ret['hex']})"
@@ -244,8 +256,14 @@ def _sequence(code: str, args: argparse.Namespace, gq) -> int:
             raise InputError("inputs", code="trace_table_read", name=shown(args.inputs),
                              reason=str(getattr(e, "strerror", None) or e)) from None
         table = read_table(text, kind)
+    gen = {}
+    for item in args.gen:
+        name, eq, spec = item.partition("=")
+        if not eq or not name.strip():
+            raise InputError("gen", code="trace_gen_syntax", got=shown(item))
+        gen[name.strip().replace("->", ".")] = spec
     r = trace_sequence(code, args.target, calls, table, parse_sets(args.set), gq, args.define,
-                       args.entry, args.zero_unset, args.undefine)
+                       args.entry, args.zero_unset, args.undefine, gen)
     if args.format == "text":
         sys.stdout.write(format_sequence_text(r) + "\n")
     else:
@@ -293,7 +311,7 @@ def trace_main(args: argparse.Namespace) -> int:
             except ValueError:
                 raise InputError("global_q", code="integer_range", lo=1, hi=30,
                                  got=shown(args.global_q)) from None
-        sequence = args.calls is not None or args.inputs is not None
+        sequence = args.calls is not None or args.inputs is not None or bool(args.gen)
         if args.prove and sequence:
             raise InputError("calls", code="trace_calls_prove")
         if args.prove:

@@ -34,11 +34,14 @@ Examples
 
 from __future__ import annotations
 
+import math
+
 from ..fixedpoint.cint import CType, convert, trunc_div
 from ..fixedpoint.interval import ICInt
 from .check import VOID
 from .errors import TraceError
 from .evaluate import Evaluator, _Jump, _Return
+from .iqmath import iq_value
 from .parser import Binary, Cast, Cond, If, Label, Logical, Member, Num, Unary, Var
 
 __all__ = ["BoxEvaluator", "Split", "FAILURES", "decide"]
@@ -593,26 +596,42 @@ class BoxEvaluator(Evaluator):
         long_t = self.long
         flags: list = []
         args = [self.convert(self.eval(a), long_t, flags) for a in e.args]
-        if e.name in ("_IQsat", "__IQsat"):
+        q = self.global_q if e.q is None else e.q
+        one, op = 1 << q, e.iq
+        if op == "sat":
             x, hi, lo = args
             if lo.hi <= hi.lo:  # then the clamp is max(lo, min(x, hi)): monotone in each
                 v = ICInt(max(lo.lo, min(x.lo, hi.lo)), max(lo.hi, min(x.hi, hi.hi)), long_t)
             else:
                 v = ICInt(min(x.lo, hi.lo, lo.lo), max(x.hi, hi.hi, lo.hi), long_t)
-        elif e.name == "_IQabs":
+        elif op == "abs":
             x = args[0]
             lo, hi = (x.lo, x.hi) if x.lo >= 0 else (-x.hi, -x.lo) if x.hi <= 0 else \
                 (0, max(-x.lo, x.hi))
             v, changed = _fit(lo, hi, long_t)
             if changed:
                 flags.append("signed_overflow")
-        else:
-            q = self.global_q if e.q is None else e.q
+        elif op in ("mpy", "rmpy", "rsmpy"):
             x, y = args
-            c = [p * r for p in (x.lo, x.hi) for r in (y.lo, y.hi)]
-            v, changed = _fit(min(c) >> q, max(c) >> q, long_t)  # floor is monotone
-            if changed:
-                flags.append("conversion")
+            half = 0 if op == "mpy" else one >> 1
+            c = [p * r + half for p in (x.lo, x.hi) for r in (y.lo, y.hi)]
+            lo, hi = min(c) >> q, max(c) >> q  # floor is monotone
+            if op == "rsmpy":
+                v = ICInt(max(lo, long_t.min), min(hi, long_t.max), long_t)
+            else:
+                v, changed = _fit(lo, hi, long_t)
+                if changed:
+                    flags.append("conversion")
+        elif op in ("int", "sqrt"):  # monotone: the ends' values
+            x = args[0]
+            v = ICInt(iq_value(op, [x.lo], q, long_t.bits)[0],
+                      iq_value(op, [x.hi], q, long_t.bits)[0], long_t)
+        else:  # the range of the result, whatever the arguments
+            lo, hi = {"frac": (1 - one, one - 1), "atan2PU": (0, one),
+                      "atan2": (-round(math.pi * one), round(math.pi * one)),
+                      "mag": (0, long_t.max), "div": (long_t.min, long_t.max)
+                      }.get(op, (-one, one))
+            v = ICInt(max(lo, long_t.min), min(hi, long_t.max), long_t)
         self.term(e, v, flags)
         return v
 

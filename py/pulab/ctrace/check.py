@@ -39,7 +39,7 @@ from .macro_entry import entry_macros
 from .parser import (Arr, Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, FNum, FuncDef,
                      If, IncDec, Index, InitList, Jump, Label, Logical, Loop, Member, Num,
                      NodeVisitor, Program, Ptr, Return, StructDef, Switch, Unary, Unsupported,
-                     Var, constant_value, float_to_int, IQ_FUNCTIONS)
+                     Var, constant_value, float_to_int)
 from ..schema.errors import InputError
 from .types import Target, common_type, promote
 
@@ -659,7 +659,7 @@ class _Checker(NodeVisitor):
         return PtrT(tt.to)
 
     def call(self, e: Call) -> object:
-        if e.q is not None or e.name in IQ_FUNCTIONS:
+        if e.iq is not None:
             e.func = None
             for a in e.args:
                 self.scalar(a)

@@ -18,7 +18,12 @@ this module adds the C operators cint has no use for and names the flags:
     a shift count < 0 or ≥ the width: undefined; the value shown is that of a full
     shift (0, or −1 for a negative value shifted right) — CPUs differ (x86 masks the count);
 ``saturate``
-    ``_IQsat``/``__IQsat`` clamped the value.
+    ``_IQsat``/``__IQsat`` clamped the value, or ``_IQrsmpy``, ``_IQdiv``, ``_IQmag``
+    saturated their result;
+``not_bit_exact``
+    an IQmath call whose last bits TI's closed library decides (``_IQdiv``, ``_IQsqrt``,
+    ``_IQsin``…): the value is the correctly rounded one, not necessarily TI's
+    (:mod:`pulab.ctrace.iqmath`).
 
 Division or remainder by zero raises :class:`TraceError` at the divisor.
 
@@ -42,6 +47,7 @@ from ..fixedpoint.cint import CInt, CType, convert, trunc_div, wrap_to
 from .check import (ArrT, Checked, PtrT, StructT, VOID, describe, leaves, linked, pointee,
                     same_layout)
 from .errors import TraceError
+from .iqmath import iq_value
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
                      Index, InitList, Jump, Label, Logical, Loop, Member, NodeVisitor, Num,
                      Return, Switch, Unary, Var)
@@ -55,7 +61,7 @@ MAX_CALL_DEPTH = 32
 
 #: Every flag a step can carry, in the order the page lists them.
 FLAGS = ("signed_overflow", "unsigned_wrap", "conversion", "truncation", "shift_count",
-         "saturate")
+         "saturate", "not_bit_exact")
 
 _COMPARE = {"<": int.__lt__, ">": int.__gt__, "<=": int.__le__, ">=": int.__ge__,
             "==": int.__eq__, "!=": int.__ne__}
@@ -799,24 +805,15 @@ class Evaluator(NodeVisitor):
         long_t = self.long
         flags: list = []
         args = [self.convert(self.eval(a), long_t, flags) for a in e.args]
-        if e.name in ("_IQsat", "__IQsat"):
-            x, hi, lo = args
-            v = hi if x > hi else lo if x < lo else x
-            if v != x:
-                flags.append("saturate")
-        elif e.name == "_IQabs":  # labs(): |LONG_MIN| does not fit, shown as the wrap
-            v = wrap_to(abs(args[0]), long_t)
-            if v != abs(args[0]):
-                flags.append("signed_overflow")
-                self.undefined.add("signed_overflow")
-        else:
-            q = self.global_q if e.q is None else e.q
-            product = args[0] * args[1]  # exact: the 64-bit product of two longs
-            shifted = product >> q       # arithmetic shift: floor, as TI's __IQmpy
-            if shifted << q != product:
-                flags.append("truncation")
-            v, conv = self.store(shifted, long_t)
-            flags += conv
-            extra = {"q": q, **_rounding(">>", product, q, shifted, flags)}
-        self.term(e, v, flags, **(extra if e.name.endswith("mpy") else {}))
+        q = self.global_q if e.q is None else e.q
+        v, more = iq_value(e.iq, args, q, long_t.bits)
+        flags += more
+        if "signed_overflow" in more:  # labs(LONG_MIN)
+            self.undefined.add("signed_overflow")
+        extra = {}
+        if e.iq not in ("sat", "abs"):
+            extra["q"] = q
+            if e.iq == "mpy":
+                extra.update(_rounding(">>", args[0] * args[1], q, args[0] * args[1] >> q, flags))
+        self.term(e, v, flags, **extra)
         return v

@@ -16,8 +16,9 @@ What it accepts:
 - every C integer operator (compound assignments, ``++``/``--`` and ``?:`` included), casts
   (to integer types, and pointer casts between the same memory layout), ``.``, ``->``,
   ``[]``, unary ``&`` and ``*``, integer constants (decimal, hex, octal, binary, suffixes
-  ``U``, ``L``, ``LL``), calls of the code's functions and the IQmath calls ``_IQmpy``,
-  ``_IQNmpy``, ``__IQmpy(a,b,q)``, ``_IQsat``, ``__IQsat``, ``_IQabs``;
+  ``U``, ``L``, ``LL``), calls of the code's functions and the IQmath calls of
+  :mod:`pulab.ctrace.iqmath` (``_IQmpy``, ``_IQNrsmpy``, ``_IQsinPU``, ``__IQmpy(a,b,q)``,
+  ``_IQsat``, ``__IQsat``, ``_IQabs``, …);
 - the preprocessor of :mod:`pulab.ctrace.preprocess` (macros, ``#if`` family,
   standard headers; ``#define GLOBAL_Q n`` also sets IQmath's Q);
 - annotations ``// @q NAME Qn [base=NUMBER [UNIT]]``: the variable holds a Qn number
@@ -50,6 +51,7 @@ import struct
 
 from ..fixedpoint.cint import trunc_div
 from .errors import TraceError
+from .iqmath import ARITY, IQ_CALL
 from .lexer import Token, beyond_64_bits, integer_digits, quoted, tokenize
 from .preprocess import preprocess
 from .types import BASE_TYPE_WORDS, TARGETS
@@ -58,7 +60,7 @@ __all__ = ["parse", "Program", "QNote", "Num", "Var", "Unary", "Binary", "Logica
            "Cast", "FNum", "Assign", "IncDec", "Call", "Member", "Index", "InitList", "Decl", "ExprStmt",
            "If", "Block", "Return", "Loop", "Switch", "Label", "Jump", "FuncDef", "StructDef", "Ptr",
            "Arr", "Unsupported", "NodeVisitor", "float_to_int",
-           "constant_value", "IQ_FUNCTIONS", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
+           "constant_value", "MAX_DEPTH", "MAX_HEIGHT", "ALL_TYPE_NAMES"]
 
 #: Deeper nesting of parentheses, unary operators and blocks is refused, and so are
 #: expression trees taller than MAX_HEIGHT (recursion guards: pasted garbage must not crash).
@@ -86,9 +88,8 @@ _CONST_OPS = {"+": int.__add__, "-": int.__sub__, "*": int.__mul__,
 #: A decimal floating constant (C99 6.4.4.2): its digits, its suffix.
 _FLOAT_LITERAL = re.compile(r"((?:[0-9]+\.[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?|[0-9]+[eE][-+]?[0-9]+)"
                             r"([fFlL]?)")
-_IQ_N = re.compile(r"_IQ([1-9]|[12][0-9]|30)mpy")
-#: The IQmath calls understood, with their argument counts.
-IQ_FUNCTIONS = {"_IQmpy": 2, "__IQmpy": 3, "_IQsat": 3, "__IQsat": 3, "_IQabs": 1}
+#: TI's intrinsics spelled with two underscores: the IQmath operation and its argument count.
+_IQ_INTRINSICS = {"__IQmpy": ("mpy", 3), "__IQsat": ("sat", 3)}
 
 _PRECEDENCE = {op: level for level, ops in enumerate(
     [("||",), ("&&",), ("|",), ("^",), ("&",), ("==", "!="), ("<", ">", "<=", ">="),
@@ -246,11 +247,14 @@ class IncDec(Node):
 
 
 class Call(Node):
-    __slots__ = ("name", "args", "q", "func")
+    """A call: of a function of the code (``iq`` None), or of IQmath (``iq`` its operation,
+    :data:`~pulab.ctrace.iqmath.ARITY`; ``q`` its Q, None for GLOBAL_Q)."""
+
+    __slots__ = ("name", "args", "q", "func", "iq")
     CHILDREN = ("args",)
 
-    def __init__(self, name: str, args: list, q: int | None) -> None:
-        self.name, self.args, self.q, self.func = name, args, q, None
+    def __init__(self, name: str, args: list, q: int | None, iq: str | None = None) -> None:
+        self.name, self.args, self.q, self.func, self.iq = name, args, q, None, iq
 
 
 class Member(Node):
@@ -1296,11 +1300,15 @@ class _Parser:
     def call(self) -> Node:
         tok = self.take()
         name = tok.text
-        nargs = IQ_FUNCTIONS.get(name)
         q = None
-        m = _IQ_N.fullmatch(name)
+        op, nargs = _IQ_INTRINSICS.get(name, (None, None))
+        m = IQ_CALL.fullmatch(name) if op is None else None
         if m:
-            nargs, q = 2, int(m[1])
+            op = m["op"] or m["plain"]
+            nargs = ARITY[op]
+            q = int(m["n"]) if m["n"] else None
+            if op == "toF":  # a float result: outside the integer subset
+                raise TraceError.at(tok, code="trace_iq_float", name=name)
         self.take()  # (
         self.deeper()
         args = []
@@ -1312,7 +1320,7 @@ class _Parser:
                 self.take()
         self.expect(")", "close_call", name=name)
         self.shallower()
-        if nargs is None:  # a function of the pasted code: resolved by the checker
+        if op is None:  # a function of the pasted code: resolved by the checker
             return Call(name, args, None).at(tok, self.last())
         if len(args) != nargs:
             raise TraceError.at(tok, code="trace_builtin_arity", name=name, n=nargs, got=len(args))
@@ -1322,7 +1330,7 @@ class _Parser:
                 raise TraceError.at(tok, code="trace_iqmpy_q")
             q = qa.value
             args = args[:2]
-        return Call(name, args, q).at(tok, self.last())
+        return Call(name, args, q, op).at(tok, self.last())
 
 
 def _f32(x: float) -> float:

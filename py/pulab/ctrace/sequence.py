@@ -28,6 +28,7 @@ from ..schema.errors import InputError
 from ..schema.validate import shown
 from .errors import TraceError
 from .evaluate import FLAGS, Evaluator
+from .generate import generate
 from .macro_entry import entry_macros
 from .tracing import DEFAULT_GLOBAL_Q, compile_code, input_values, result_vars, run_error
 
@@ -40,7 +41,8 @@ MAX_CALLS = 10_000
 #: own limit too); more is an error naming the call that reached it.
 MAX_SEQUENCE_STEPS = 1_000_000
 #: The flags that make a call's ``first_event``: a wrap (an unsigned result reduced, or a
-#: conversion that changed the value), a signed overflow, a clamp by ``_IQsat``/``__IQsat``.
+#: conversion that changed the value), a signed overflow, a clamp by ``_IQsat``/``__IQsat`` or
+#: an IQmath call that saturated (``_IQrsmpy``, ``_IQdiv``, ``_IQmag``).
 EVENT_KINDS = ("signed_overflow", "unsigned_wrap", "conversion", "saturate")
 
 
@@ -96,13 +98,23 @@ def _row_values(checked, row, k: int) -> dict:
 
 
 def run_sequence(checked, calls: int, table: list | None = None, inputs: dict | None = None,
-                 global_q: int | None = None, zero_unset: bool = False) -> dict:
+                 global_q: int | None = None, zero_unset: bool = False,
+                 gen: dict | None = None) -> dict:
     """:func:`trace_sequence` for code already compiled by
     :func:`~pulab.ctrace.tracing.compile_code` (with an entry)."""
     if checked.entry is None:
         raise InputError("entry", code="trace_calls_entry")
     if table is not None and len(table) != calls:
         raise InputError("inputs", code="trace_table_rows", rows=len(table), calls=calls)
+    generated = None
+    if gen:
+        made, generated = generate(checked, gen, calls)
+        for k, row in enumerate(table or ()):
+            both = next((n for n in generated if isinstance(row, dict) and n in row), None)
+            if both is not None:
+                raise InputError(f"gen.{both}", code="trace_gen_table", name=both, call=k)
+        table = [{**row, **g} if isinstance(row, dict) else row for row, g in zip(table, made)] \
+            if table else made
     gq = checked.program.global_q or global_q or DEFAULT_GLOBAL_Q
     first = input_values(checked, inputs or {}, zero_unset)
     rows = [_row_values(checked, row, k) for k, row in enumerate(table or ())]
@@ -142,18 +154,21 @@ def run_sequence(checked, calls: int, table: list | None = None, inputs: dict | 
         vars_ = result_vars(checked, ev, names, state)
         out.append({"return": vars_.get("return"), "vars": vars_,
                     "flags": sorted(ev.seen, key=FLAGS.index)})
-    return {"ok": True, "target": checked.target.name, "global_q": gq,
-            "entry": checked.entry.name,
-            "functions": [f for f in checked.functions if f not in checked.program.macros],
-            "macros": entry_macros(checked.program),
-            "unresolved_includes": list(checked.program.unresolved),
-            "inputs": ev.names, "calls": out, "first_event": event}
+    result = {"ok": True, "target": checked.target.name, "global_q": gq,
+              "entry": checked.entry.name,
+              "functions": [f for f in checked.functions if f not in checked.program.macros],
+              "macros": entry_macros(checked.program),
+              "unresolved_includes": list(checked.program.unresolved),
+              "inputs": ev.names, "calls": out, "first_event": event}
+    if generated is not None:
+        result["generated"] = generated
+    return result
 
 
 def trace_sequence(code: str, target: str = "c28x", calls: int | None = None,
                    table: list | None = None, inputs: dict | None = None,
                    global_q: int | None = None, defines=None, entry: str | None = None,
-                   zero_unset: bool = False, undefines=None) -> dict:
+                   zero_unset: bool = False, undefines=None, gen: dict | None = None) -> dict:
     """Call ``entry`` ``calls`` times with the firmware's memory kept between the calls.
 
     Parameters
@@ -167,6 +182,10 @@ def trace_sequence(code: str, target: str = "c28x", calls: int | None = None,
         be ``calls``.  :func:`read_table` reads CSV and JSON lines.
     inputs : dict, optional
         Input name → value, given once before call 0 (the CLI's ``--set``).
+    gen : dict, optional
+        Input name → generator spec (:mod:`pulab.ctrace.generate`: ``"sine:amp=1000,
+        period=200"``…): that input's value before every call, generated; not also a column of
+        ``table``.
 
     Returns
     -------
@@ -177,7 +196,9 @@ def trace_sequence(code: str, target: str = "c28x", calls: int | None = None,
         fields are ``vars["return.FIELD"]`` — ``vars`` as the trace's after the call, and
         ``flags``, the union over the call's steps) and ``first_event``
         ``{"call", "line", "kind", "name"}`` (the first flag of :data:`EVENT_KINDS`; ``call``
-        from 0; ``name`` the variable the statement stores, else its text) or None.
+        from 0; ``name`` the variable the statement stores, else its text) or None.  With
+        ``gen``, ``generated``: per generated input ``{"spec", "type", "values" (per call),
+        "clamped" (how many values were held at the type's limit), "first_clamped"}``.
 
     Raises
     ------
@@ -204,6 +225,6 @@ def trace_sequence(code: str, target: str = "c28x", calls: int | None = None,
     except InputError as e:
         raise TraceError.of(e) from None
     try:
-        return run_sequence(checked, calls, table, inputs, global_q, zero_unset)
+        return run_sequence(checked, calls, table, inputs, global_q, zero_unset, gen)
     except InputError as e:
         raise run_error(e, checked, inputs) from None

@@ -37,6 +37,8 @@ export default dict(
     flagHelp_unsigned_wrap: 'an unsigned result was reduced modulo 2^bits',
     flagHelp_conversion: 'a conversion (assignment, cast, argument, operand to an unsigned type) changed the value',
     flagHelp_shift_count: 'shift count negative or ≥ the width: undefined behaviour; CPUs differ',
+    flag_not_bit_exact: 'not bit-exact to TI\'s library',
+    flagHelp_not_bit_exact: 'an IQmath call whose last bits TI\'s closed library decides (div, sqrt, sin, cos, atan2, mag): the value shown is the correctly rounded one; TI documents ~28–30 bits',
   },
   {
     p_code: '你的代码：按目标编译器的规则显示每个中间整数',
@@ -73,5 +75,7 @@ export default dict(
     flagHelp_unsigned_wrap: '无符号结果按 2^位数 取模',
     flagHelp_conversion: '类型转换（赋值、强制转换、参数、转为无符号类型的操作数）改变了数值',
     flagHelp_shift_count: '移位位数为负或不小于位宽：未定义行为；不同 CPU 结果不同',
+    flag_not_bit_exact: '与 TI 库非逐位一致',
+    flagHelp_not_bit_exact: 'IQmath 调用的最后几位由 TI 闭源库决定（div、sqrt、sin、cos、atan2、mag）：此处显示正确舍入的值；TI 文档给出约 28–30 位精度',
   },
 );

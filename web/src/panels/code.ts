@@ -8,7 +8,8 @@ import { copyLinkToast } from '../page/toast';
 import { LOOP_FIELDS, LOOP_PATH as LOOP_FIELD } from '../fields';
 import type { Panel, PanelContext } from './panel';
 import { renderProve, type ProveHost } from './code-prove';
-import type { TraceExample, TraceLine, TraceTerm, TraceVar } from '../api-types';
+import { COLORS, plotRaw } from '../figures/figure';
+import type { TraceExample, TraceLine, TraceSequence, TraceTerm, TraceVar } from '../api-types';
 import type { ApiErr, Ok } from '../protocol';
 
 type TraceOk = Ok<'trace'>;
@@ -319,12 +320,103 @@ function loopActive(current: Record<string, unknown>, ctx: PanelContext, err: st
     err ? h('p', { class: 'err code-loop-err', role: 'alert' }, err) : '');
 }
 
+/** The sequence box's own state: how many calls, the generator specs as typed, its last reply. */
+const seqState = { calls: '1000', gen: '', reply: null as (Ok<'trace'> & TraceSequence) | ApiErr | null, busy: false };
+/** The program (code, entry, target) the sequence box shows the calls of. */
+let seqFor = '';
+
+/** `NAME=SPEC; NAME=SPEC` → {NAME: SPEC}: the request's `gen`, split as typed (pulab checks each spec). */
+function genSpecs(text: string): Record<string, string> {
+  const out: Record<string, string> = {};
+  for (const part of text.split(';')) {
+    const at = part.indexOf('=');
+    if (part.trim()) out[at < 0 ? part.trim() : part.slice(0, at).trim()] = at < 0 ? '' : part.slice(at + 1).trim();
+  }
+  return out;
+}
+
+/** "Over many calls": the entry called N times with generated inputs, the result per call. */
+function renderSeq(box: HTMLElement, ctx: PanelContext): void {
+  const s = st();
+  if (!s.entry) {
+    box.replaceChildren();
+    return;
+  }
+  const r = seqState.reply;
+  const runSeq = () => {
+    const c = lastCtx ?? ctx; // the page's current context (the worker may have started since)
+    if (!c.client || seqState.busy) return;
+    seqState.busy = true;
+    const req = { ...traceRequest(s, s.target, inputs, c.report), calls: /^\s*\d+\s*$/.test(seqState.calls) ? Number(seqState.calls) : seqState.calls, gen: genSpecs(seqState.gen) };
+    void c.client.call('trace', req, 'trace-seq').then(({ result }) => {
+      seqState.reply = result as (Ok<'trace'> & TraceSequence) | ApiErr;
+    }, () => undefined).finally(() => {
+      seqState.busy = false;
+      renderSeq(box, ctx);
+    });
+  };
+  const err = r && !r.ok ? `${r.field}: ${errText(r)}` : '';
+  const ok = r && r.ok ? r : null;
+  const event = ok?.first_event;
+  const rows = (ok?.calls ?? []).map((c, k) => h('tr', { class: c.flags.length ? 'flagged' : '' },
+    h('td', { class: 'r' }, String(k)),
+    h('td', { class: 'r' }, c.return ? intCell(`code.seq.calls.${k}.return.value`, c.return.value, c.return.hex) : '—'),
+    h('td', {}, flagChips(c.flags))));
+  box.replaceChildren(
+    h('h3', {}, t('cs_title')),
+    h('p', { class: 'hint' }, t('cs_intro')),
+    h('div', { class: 'code-controls code-seq' },
+      h('label', {}, `${t('cs_calls')} `, h('input', { type: 'text', name: 'calls', value: seqState.calls, inputmode: 'numeric', size: 6,
+        oninput: (ev: Event) => { seqState.calls = (ev.target as HTMLInputElement).value; } })),
+      h('label', { class: 'code-seq-gen' }, `${t('cs_gen')} `, h('input', { type: 'text', name: 'gen', value: seqState.gen, spellcheck: 'false',
+        placeholder: 'e=sine:amp=1000,period=200', oninput: (ev: Event) => { seqState.gen = (ev.target as HTMLInputElement).value; } })),
+      h('button', { type: 'button', class: 'code-seq-run', onclick: runSeq }, t('cs_run'))),
+    err ? h('p', { class: 'err code-seq-err', role: 'alert' }, err) : '',
+    ok ? h('p', { class: 'note code-seq-event', 'data-key': 'code.seq.first_event', 'data-value': JSON.stringify(event) },
+      event ? t('cs_event', { call: event.call, line: event.line, kind: event.kind, name: event.name }) : t('cs_none', { n: ok.calls.length })) : '',
+    ...Object.entries(ok?.generated ?? {}).filter(([, g]) => g.clamped > 0).map(([name, g]) =>
+      h('p', { class: 'note code-seq-clamped', 'data-key': `code.seq.generated.${name}.clamped`, 'data-value': String(g.clamped) },
+        t('cs_clamped', { name, n: g.clamped, type: g.type, call: g.first_clamped ?? '' }))),
+    ok ? h('div', { class: 'code-seq-plot figure' }) : '',
+    ok ? h('div', { class: 'code-seq-calls' }, table([t('cs_call'), t('cs_return'), t('flags')], rows, 'code-steps')) : '',
+  );
+  const fig = box.querySelector<HTMLElement>('.code-seq-plot');
+  if (ok && fig) seqPlot(fig, ok);
+}
+
+/** The result over the calls, the generated inputs below it. */
+function seqPlot(el: HTMLElement, r: TraceSequence): void {
+  const k = r.calls.map((_, i) => i);
+  const gen = Object.entries(r.generated ?? {});
+  const palette = [COLORS.si, COLORS.fixed, COLORS.q15, COLORS.pu];
+  plotRaw(el, [
+    { type: 'scatter', mode: 'lines', x: k, y: r.calls.map((c) => c.return?.value ?? null), name: t('cs_return'), line: { color: COLORS.code, width: 1.6 } },
+    ...gen.map(([name, g], i) => ({ type: 'scatter', mode: 'lines', x: k, y: g.values, name, yaxis: 'y2', line: { color: palette[i % palette.length], width: 1.2 } })),
+  ], {
+    legend: { orientation: 'h', y: 1.1, x: 0 },
+    grid: { rows: 2, columns: 1, roworder: 'top to bottom' },
+    xaxis: { title: { text: t('cs_call') }, gridcolor: '#eaeef2', anchor: 'y2' },
+    yaxis: { title: { text: t('cs_return') }, domain: [0.4, 1], gridcolor: '#eaeef2' },
+    yaxis2: { title: { text: t('cs_gen') }, domain: [0, 0.3], gridcolor: '#eaeef2' },
+  }, 320);
+}
+
 function update(el: HTMLElement, ctx: PanelContext): void {
   const s = st();
   const proveBox = el.querySelector<HTMLElement>('.code-prove-box');
   if (proveBox) renderProve(proveBox, ctx, proveHost);
   const loopEl = el.querySelector<HTMLElement>('.code-loop-box');
   if (loopEl) renderLoop(loopEl, ctx);
+  const seqEl = el.querySelector<HTMLElement>('.code-seq-box');
+  const seqKey = JSON.stringify([s.code, s.entry ?? '', s.target]);
+  if (seqFor !== seqKey) { // another program: the last run's calls are not this one's
+    seqFor = seqKey;
+    seqState.reply = null;
+  }
+  if (seqEl && seqEl.dataset.key !== seqKey + getLang()) {
+    seqEl.dataset.key = seqKey + getLang();
+    renderSeq(seqEl, ctx);
+  }
   const box = el.querySelector<HTMLElement>('.code-inputs');
   const boxKey = JSON.stringify([inputs, ctx.report ? prefill(inputs, ctx.report) : null, getLang()]);
   if (box && box.dataset.key !== boxKey) {
@@ -471,6 +563,7 @@ export const codePanel: Panel = {
           h('div', { class: 'code-out' })),
         h('div', { class: 'code-prove-box' }),
         h('div', { class: 'code-loop-box' }),
+        h('div', { class: 'code-seq-box' }),
         h('div', { class: 'code-trace' })),
     );
     const ta = el.querySelector<HTMLTextAreaElement>('textarea[name="code"]');
