@@ -11,7 +11,7 @@ divisor) gives the statements run so far and where it stopped (:class:`Stopped`)
 
 The straight-line part of the subset compiles: integer declarations, expressions of every
 operator, casts, assignments (compound too), ``++``/``--``, ``?:``, ``&&``/``||``, ``if``,
-blocks, and IQmath's ``_IQsat``/``_IQabs``/``_IQmpy`` calls.  Functions, loops, ``switch``,
+blocks, and IQmath's calls (:mod:`pulab.ctrace.iqmath`).  Functions, loops, ``switch``,
 structs, arrays and pointers raise :class:`Uncompilable` (the evaluator runs those).
 
 Examples
@@ -28,6 +28,7 @@ from __future__ import annotations
 from ..fixedpoint.cint import CType, convert, trunc_div, wrap_to
 from .check import Checked
 from .evaluate import FLAGS, MAX_STEPS
+from .iqmath import iq_value
 from .tracing import DEFAULT_GLOBAL_Q, input_values, run_checked
 from .parser import (Assign, Binary, Block, Call, Cast, Cond, Decl, ExprStmt, If, IncDec,
                      Logical, Member, Num, Unary, Var)
@@ -530,45 +531,19 @@ class Compiled:
         return incdec
 
     def call(self, e: Call):
+        if e.iq is None:  # a function of the code: the evaluator runs it
+            raise Uncompilable(e.name)
         args = [self.expr(a) for a in e.args]
-        long_t = self.long
-        conv = _converter(long_t)
-        name = e.name
-        if name in ("_IQsat", "__IQsat"):
-            x_, hi_, lo_ = args
-
-            def sat(mem, fl):
-                x, hi, lo = conv(x_(mem, fl), fl), conv(hi_(mem, fl), fl), conv(lo_(mem, fl), fl)
-                if x > hi:
-                    fl.append("saturate")
-                    return hi
-                if x < lo:
-                    fl.append("saturate")
-                    return lo
-                return x
-            return sat
-        if name == "_IQabs":
-            (a_,) = args
-
-            def iqabs(mem, fl):
-                a = abs(conv(a_(mem, fl), fl))
-                v = wrap_to(a, long_t)
-                if v != a:
-                    fl.append("signed_overflow")
-                return v
-            return iqabs
-        if len(args) != 2:
-            raise Uncompilable(name)
+        conv = _converter(self.long)
         q = self.global_q if e.q is None else e.q
-        a_, b_ = args
+        op, bits = e.iq, self.long.bits
 
-        def mpy(mem, fl):
-            product = conv(a_(mem, fl), fl) * conv(b_(mem, fl), fl)
-            shifted = product >> q  # floor, as TI's __IQmpy
-            if shifted << q != product:
-                fl.append("truncation")
-            return conv(shifted, fl)
-        return mpy
+        def iq(mem, fl):
+            # the arguments as the library's long, then the operation as the evaluator does it
+            v, more = iq_value(op, [conv(a(mem, fl), fl) for a in args], q, bits)
+            fl.extend(more)
+            return v
+        return iq
 
 
 #: Compiled programs by their checked program (a few: the seed's blocks and a page's code).
