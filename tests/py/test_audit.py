@@ -132,6 +132,39 @@ def test_st_edited_resistance_breaks_the_cancellation():
     assert len(f) == 1 and "RS" in f[0]["macros"] and chinese(f[0]["message_zh"])
 
 
+def test_st_loop_margin_is_the_reports_delay_aware_margin(st):
+    # ω_c·Ts = 0.35 here, yet with the report's delay model the loop keeps 50° of phase margin
+    inp = copy.deepcopy(st["design"]["input"])
+    inp["analysis"] = {}
+    want = report(inp)["loop"]["current"]
+    for axis in ("d", "q"):
+        got = st["design"]["current_loop"][axis]
+        assert got["delay"] == "computation_pwm" and got["stable"] is True
+        assert got["phase_margin_deg"] == pytest.approx(want[axis]["phase_margin_deg"], abs=1e-9)
+        assert got["gain_margin_db"] == pytest.approx(want[axis]["gain_margin_db"], abs=1e-9)
+        assert 50.0 < got["phase_margin_deg"] < 50.5
+    assert not [f for f in st["findings"] if f["code"] == "loop_margin"]
+
+
+@pytest.mark.parametrize("kp, severity", [(5000, "warning"), (9000, "error")])
+def test_st_gains_raised_by_hand_lose_their_margin(kp, severity):
+    files = [(n, t.replace("#define PID_TORQUE_KP_DEFAULT         2312",
+                           f"#define PID_TORQUE_KP_DEFAULT         {kp}"))
+             for n, t in _files("st", ST_SET)]
+    d = audit(files)
+    q = d["design"]["current_loop"]["q"]
+    inp = copy.deepcopy(d["design"]["input"])
+    inp["analysis"] = {}
+    want = report(inp)["loop"]["current"]["q"]
+    assert q["stable"] is want["stable"] and q["stable"] is (severity == "warning")
+    f = [f for f in d["findings"] if f["code"] == "loop_margin"]
+    assert [x["severity"] for x in f] == [severity]
+    assert f[0]["macros"] == ["PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT"]
+    assert chinese(f[0]["message_zh"]) and "30°" in f[0]["message"]
+    if q["stable"]:
+        assert q["phase_margin_deg"] < 30.0
+
+
 # -- NXP MCAT (nxp-mcuxpresso/mcuxsdk-examples : …/twrmc56f8200/…/m1_pmsm_appconfig.h) --------
 
 def test_nxp_fractions_are_the_printed_decimals(nxp):

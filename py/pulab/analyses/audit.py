@@ -44,6 +44,7 @@ from ..schema.catalog import render
 from ..schema.errors import InputError
 from ..schema.validate import shown
 from .cconst import NotConstant, evaluate
+from .loop.current import axis_loop
 
 __all__ = ["audit", "LIBRARY", "MAX_FILES", "MAX_CHARS"]
 
@@ -72,6 +73,10 @@ _SENTINEL = "__pulab_audit_"
 #: The inputs a report needs that a header may not fix (``design.missing`` names them).
 _REQUIRED = (("motor", ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm", "ld_h",
                         "lq_h", "bemf_v", "pole_pairs")), ("drive", ("udc_v", "ts_s")))
+#: The delay model of the margins (the report's default: computation and PWM) and the phase
+#: margin below which a loop is called under-damped (the report's ``warning.current_low_pm``).
+_DELAY = "computation_pwm"
+_PM_LOW = 30.0
 _COMMENT = re.compile(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|//(?:\\\r?\n|[^\n])*|/\*.*?(?:\*/|\Z)',
                       re.S)
 
@@ -264,6 +269,39 @@ def _finding(severity: str, code: str, macros: list, params: dict, advice: str =
             "message_zh": render(f"audit.{code}", params, "zh"), "advice": advice}
 
 
+def _margins(design: dict) -> list:
+    """Each current-loop axis measured as the report measures a loop (the firmware PI, the ZOH
+    plant R + sL, one sample of computation and the PWM's half period,
+    :func:`pulab.analyses.loop.current.axis_loop`): its ``delay``, ``phase_margin_deg``,
+    ``gain_margin_db``, ``crossover_hz`` and ``stable`` are added to the axis; a
+    ``loop_margin`` finding when it is unstable (error) or under 30° of phase margin."""
+    motor = design.get("input", {}).get("motor", {})
+    ts = design.get("input", {}).get("drive", {}).get("ts_s")
+    out = []
+    for axis, c in design["current_loop"].items():
+        r, l = motor.get("rs_ohm"), motor.get("ld_h" if axis == "d" else "lq_h")
+        if not (ts and l and r is not None):
+            continue
+        m = axis_loop(r, l, ts, c["kp_v_per_a"], c["ki_v_per_a_s"], _DELAY)
+        c.update(delay=_DELAY, phase_margin_deg=m["phase_margin_deg"],
+                 gain_margin_db=m["gain_margin_db"], crossover_hz=m["crossover_hz"],
+                 stable=m["stable"])
+        pm = m["phase_margin_deg"]
+        if m["stable"] and (pm is None or pm >= _PM_LOW):
+            continue
+        out.append(_finding("error" if not m["stable"] else "warning", "loop_margin",
+                            list(c.get("macros", ())), {
+                                "axis": axis, "pm": "—" if pm is None else round(pm, 1),
+                                "gm": "—" if m["gain_margin_db"] is None
+                                else round(m["gain_margin_db"], 1),
+                                "fc": "—" if m["crossover_hz"] is None
+                                else round(m["crossover_hz"], 1),
+                                "ts": ts, "stable": "stable" if m["stable"] else "unstable",
+                                "stable_zh": "稳定" if m["stable"] else "不稳定"},
+                            "lower the bandwidth (kp) until the phase margin is 30° or more"))
+    return out
+
+
 def _roundtrip(vendor: str, design: dict, macros: dict) -> tuple:
     """(``regenerated``, ``roundtrip``): pu-lab's header for ``design.input`` (None when the
     files do not fix a whole report input, ``design.missing``) and, per macro both headers
@@ -392,6 +430,7 @@ def _read(files, vendor: str | None, defines) -> dict:
                 "ctype": folded[n]["type"]}))
     design = result["design"]
     design["current_loop"] = design.get("current_loop") or {}
+    findings += _margins(design)
     design.setdefault("assumed", [])
     design["missing"] = [f"{sec}.{k}" for sec, keys in _REQUIRED for k in keys
                          if k not in design.get("input", {}).get(sec, {})]

@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["macro", "result", "current_loop", "check", "loop_margin_checks", "near", "numbers_in"]
+__all__ = ["macro", "result", "current_loop", "check", "near", "numbers_in"]
 
 
 def macro(si, unit: str | None, meaning: str, formula: str) -> dict:
@@ -34,8 +34,9 @@ def result(reads, target: str, macros: dict, design: dict, checks: list) -> dict
             "checks": checks}
 
 
-def current_loop(kp: float, ki: float, r: float, l: float) -> dict | None:
-    """The current loop of a parallel PI ``kp + ki/s`` [V/A, V/(A·s)] on the plant ``1/(Ls+R)``.
+def current_loop(kp: float, ki: float, r: float, l: float, macros=()) -> dict | None:
+    """The current loop of a parallel PI ``kp + ki/s`` [V/A, V/(A·s)] on the plant ``1/(Ls+R)``;
+    ``macros``: the names that store its gains (kept as ``macros``).
 
     ``zero_rad_s`` = ki/kp; ``cancels_plant`` when it is R/L within 1 %; ``bandwidth_hz`` the
     crossover of the continuous open loop, |kp + ki/(jω)| = |jωL + R|, i.e. the positive root
@@ -49,24 +50,14 @@ def current_loop(kp: float, ki: float, r: float, l: float) -> dict | None:
     x = (-b + math.sqrt(b * b + 4.0 * l * l * ki * ki)) / (2.0 * l * l)
     return {"kp_v_per_a": kp, "ki_v_per_a_s": ki, "bandwidth_hz": math.sqrt(x) / (2.0 * math.pi),
             "zero_rad_s": zero, "plant_pole_rad_s": pole,
-            "cancels_plant": zero is not None and abs(zero / pole - 1.0) <= 0.01}
+            "cancels_plant": zero is not None and abs(zero / pole - 1.0) <= 0.01,
+            "macros": list(macros)}
 
 
 def check(severity: str, code: str, macros: list, advice: str = "", **params) -> tuple:
     """A finding of the vendor's: (severity, code, macros, params, advice); the words are the
     catalog's ``audit.<code>``."""
     return severity, code, macros, params, advice
-
-
-def loop_margin_checks(loops: dict, ts: float, macros: list) -> list:
-    """A ``loop_margin`` warning per current-loop axis whose bandwidth ω_c·T_s exceeds 0.2."""
-    out = []
-    for axis, c in loops.items():
-        wts = 2.0 * math.pi * c["bandwidth_hz"] * ts
-        if wts > 0.2:
-            out.append(check("warning", "loop_margin", macros, axis=axis, wts=round(wts, 3),
-                             bw=round(c["bandwidth_hz"], 1), ts=ts))
-    return out
 
 
 def near(a: float, b: float, rel: float) -> bool:

@@ -889,11 +889,12 @@ MESSAGES = {
                            "the first such branch is taken whatever was meant",
                            "#if 比较了所给文件中都未定义的名字（{names}）：它们都为 0，因此总是取"
                            "第一个这样的分支"),
-    "audit.loop_margin": ("{axis} current loop: ω_c·Ts = {wts} (bandwidth {bw} Hz at Ts = {ts} "
-                          "s): above 0.2 the sampling and computation delay cost more than "
-                          "17° of phase margin",
-                          "{axis} 轴电流环：ω_c·Ts = {wts}（带宽 {bw} Hz，Ts = {ts} s）：超过 0.2 "
-                          "时采样与计算延迟使相位裕度损失超过 17°"),
+    "audit.loop_margin": ("{axis} current loop with one sample of computation and the PWM's "
+                          "half period (Ts = {ts} s): {stable}, phase margin {pm}°, gain margin "
+                          "{gm} dB, crossover {fc} Hz (the report wants 30° or more)",
+                          "{axis} 轴电流环（计入一个采样周期的计算延迟与 PWM 半周期，Ts = {ts} s）："
+                          "{stable_zh}，相位裕度 {pm}°，增益裕度 {gm} dB，穿越频率 {fc} Hz"
+                          "（报告要求相位裕度不低于 30°）"),
 }
 
 

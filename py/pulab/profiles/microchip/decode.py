@@ -125,7 +125,7 @@ def decode_header(values: dict, notes: dict) -> dict:
     loops = {}
     if "KIP" in g and "KII" in g and "rs_ohm" in motor:
         for axis, key in (("d", "ld_h"), ("q", "lq_h")):
-            c = current_loop(g["KIP"], g["KII"], motor["rs_ohm"], motor[key]) \
+            c = current_loop(g["KIP"], g["KII"], motor["rs_ohm"], motor[key], ("KIP", "KII")) \
                 if key in motor else None
             if c is not None:
                 loops[axis] = c

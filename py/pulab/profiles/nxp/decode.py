@@ -33,7 +33,7 @@ import json
 import math
 
 from ..common import SQRT3
-from ..decoding import check, current_loop, loop_margin_checks, macro, result
+from ..decoding import check, current_loop, macro, result
 
 __all__ = ["decode_header"]
 
@@ -278,7 +278,7 @@ def decode_header(values: dict, notes: dict) -> dict:
         out[ki_n] = macro(ki, "V/(A·s)", f"current PI ki, {axis} axis",
                           f"{ki_n}{scaled}·{k:g}/T_s")
         l = motor.get(l_key)
-        c = current_loop(kp, ki, motor["rs_ohm"], l) if l and "rs_ohm" in motor else None
+        c = current_loop(kp, ki, motor["rs_ohm"], l, (kp_n, ki_n)) if l and "rs_ohm" in motor else None
         if c is not None:
             w0 = math.sqrt(ki / l) if ki > 0 else None
             c["mcat_f0_hz"] = w0 / (2.0 * math.pi) if w0 else None
@@ -288,7 +288,6 @@ def decode_header(values: dict, notes: dict) -> dict:
                 c["bandwidth_hz"] = c["mcat_f0_hz"]
             loops[axis] = c
     design["current_loop"] = loops or None
-    checks += loop_margin_checks(loops, ts, list(_GAINS))
     speed = None
     if has("M1_SPEED_PI_PROP_GAIN") and (flt or (i_max and w_max)):
         g = 1.0 if flt else i_max / w_max / _Q15

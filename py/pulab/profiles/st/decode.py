@@ -26,7 +26,7 @@ from __future__ import annotations
 import math
 
 from ..common import SQRT2, SQRT3
-from ..decoding import check, current_loop, loop_margin_checks, macro, result
+from ..decoding import check, current_loop, macro, result
 
 __all__ = ["decode_header"]
 
@@ -174,7 +174,7 @@ def decode_header(values: dict, notes: dict) -> dict:
             out[kp_n].update(si=kp, unit="V/A", formula=f"{kp_n}/TF_KPDIV·(U_dc/√3)/MAX_CURRENT")
             out[ki_n].update(si=ki, unit="V/(A·s)",
                              formula=f"{ki_n}/TF_KIDIV·(U_dc/√3)/MAX_CURRENT/T")
-            c = current_loop(kp, ki, r, l)
+            c = current_loop(kp, ki, r, l, (kp_n, ki_n))
             if c is not None:
                 loops[axis] = c
     if r and l and ts and "ki_over_kp_per_sample" in design and design["ki_over_kp_per_sample"]:
@@ -193,7 +193,6 @@ def decode_header(values: dict, notes: dict) -> dict:
                                  "read in a public file): kp, ki and the bandwidth in SI follow "
                                  "it; Ki/Kp per sample does not")
     design["current_loop"] = loops or None
-    checks += loop_margin_checks(loops, ts, list(_GAINS))
     if loops:
         design["input"]["current_loop"] = {"method": "manual",
                                            "kp": loops["q" if "q" in loops else "d"]["kp_v_per_a"],

@@ -187,7 +187,7 @@ def decode_header(values: dict, notes: dict) -> dict:
                           f"kp·{ki_n}/2^{q}/T")
         l = motor.get("ld_h" if axis == "d" else "lq_h")
         if l and "rs_ohm" in motor:
-            c = current_loop(kp, ki, motor["rs_ohm"], l)
+            c = current_loop(kp, ki, motor["rs_ohm"], l, (kp_n, ki_n))
             if c is not None:
                 loops[axis] = c
     design["current_loop"] = loops or None
