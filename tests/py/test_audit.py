@@ -286,6 +286,57 @@ def test_ti_selected_motor_and_board(ti):
     assert not ti["findings"]
 
 
+def test_ti_current_and_speed_pi_as_the_lab_computes_them_at_run_time(ti):
+    # motor_common.c setupControllers (MotorControl SDK v3.03): Kp = L·BWc, Ki = 0.25·R/L·T
+    # (series: ki = Kp·Ki/T), speed Kp = BWc/(δ·Kctrl), Ki = BWc·T_spd/δ², Kctrl = 3·pp·ψ/(2J)
+    bwc, t = 2.0 * math.pi * 400.0, 1.0 / 15000.0
+    r, l, pp = 0.38157931, 1.8829548e-4, 4
+    psi, j = 0.03966425 / (2.0 * math.pi), 7.06154e-06
+    for axis in ("d", "q"):
+        c = ti["design"]["current_loop"][axis]
+        assert c["kp_v_per_a"] == pytest.approx(l * bwc, rel=1e-6)
+        assert c["ki_v_per_a_s"] == pytest.approx(l * bwc * 0.25 * r / l * t / t, rel=1e-6)
+        assert c["zero_rad_s"] == pytest.approx(0.25 * r / l, rel=1e-6)
+        assert c["cancels_plant"] is False and c["stable"] is True
+    sp = ti["design"]["speed_loop"]
+    kctrl = 3.0 * pp * psi / (2.0 * j)
+    assert sp["kp_a_per_hz"] == pytest.approx(bwc / (10.0 * kctrl), rel=1e-6)
+    assert sp["ki_series"] == pytest.approx(bwc * 10.0 * t / 100.0, rel=1e-6)
+    # closed loop s² + k·kp·s + k·ki with k = 1.5·pp²·ψ/(2πJ) (A → electrical Hz/s)
+    k = 1.5 * pp * pp * psi / (2.0 * math.pi * j)
+    wn = math.sqrt(k * sp["ki_a_per_hz_s"])
+    assert sp["natural_hz"] == pytest.approx(wn / (2.0 * math.pi), rel=1e-6)
+    assert sp["damping"] == pytest.approx(k * sp["kp_a_per_hz"] / (2.0 * wn), rel=1e-6)
+    assert ti["design"]["input"]["current_loop"]["kp"] == pytest.approx(l * bwc, rel=1e-6)
+    assert ti["regenerated"]["header"]
+
+
+def test_nxp_observers_come_back_to_their_json_design(nxp):
+    s = nxp["design"]["mcat_inputs"]["sensorless"]
+    ob = nxp["design"]["observer"]
+    assert ob["tracking"]["natural_hz"] == pytest.approx(s["sensorlessTrackObsrvF0"], rel=1e-4)
+    assert ob["tracking"]["damping"] == pytest.approx(s["sensorlessTrackObsrvKsi"], rel=1e-4)
+    assert ob["bemf"]["natural_hz"] == pytest.approx(s["sensorlessBemfObsrvF0"], rel=1e-4)
+    assert ob["bemf"]["damping"] == pytest.approx(s["sensorlessBemfObsrvKsi"], rel=1e-4)
+
+
+def test_nxp_float_observers_come_back_to_their_json_design(nxp_float):
+    s = nxp_float["design"]["mcat_inputs"]["sensorless"]
+    ob = nxp_float["design"]["observer"]
+    assert ob["tracking"]["natural_hz"] == pytest.approx(s["sensorlessTrackObsrvF0"], rel=1e-5)
+    assert ob["bemf"]["natural_hz"] == pytest.approx(s["sensorlessBemfObsrvF0"], rel=1e-5)
+    assert ob["bemf"]["damping"] == pytest.approx(s["sensorlessBemfObsrvKsi"], rel=1e-5)
+
+
+def test_nxp_speed_loop_from_its_manual_gains_and_the_json_mechanics(nxp):
+    p = nxp["design"]["mcat_inputs"]["parameters"]
+    sl = nxp["design"]["speed_loop"]
+    k = p["parametersPP"] * p["parametersKt"] / p["parametersJ"]
+    wn = math.sqrt(k * 0.009)  # the JSON's manual Ki = 0.009 A/rad, Kp = 0.003 A/(rad/s)
+    assert sl["natural_hz"] == pytest.approx(wn / (2.0 * math.pi), rel=0.01)
+    assert sl["damping"] == pytest.approx(k * 0.003 / (2.0 * wn), rel=0.01)
+
+
 def test_ti_without_user_common_every_motor_id_is_zero():
     d = audit(_files("ti", ["user_mtr1.h"]), defines=["BSXL8323RS_REVA"])
     f = d["findings"][0]

@@ -63,6 +63,9 @@ LIBRARY = {
                  ": (-2147483647L-1)) : 2147483647L))",
     "ACC32(x)": "((acc32_t)(((x) < 65535.999969482421875) ? (((x) >= -65536.0) ? (x)*32768.0 "
                 ": (-2147483647L-1)) : 2147483647L))",
+    # TI C2000Ware libraries/math/include/math.h (the universal lab's user_mtr1.h uses them)
+    "MATH_PI": "((float32_t)(3.1415926535897932384626433832f))",
+    "MATH_TWO_PI": "((float32_t)(6.283185307179586f))",
 }
 _LIB_NAMES = {k.split("(")[0] for k in LIBRARY}
 _STD_NAMES = {n for h in STANDARD_HEADERS.values() for n in h}

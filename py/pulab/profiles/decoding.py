@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["macro", "result", "current_loop", "check", "near", "numbers_in"]
+__all__ = ["macro", "result", "current_loop", "integrator_loop", "check", "near", "numbers_in"]
 
 
 def macro(si, unit: str | None, meaning: str, formula: str) -> dict:
@@ -52,6 +52,28 @@ def current_loop(kp: float, ki: float, r: float, l: float, macros=()) -> dict | 
             "zero_rad_s": zero, "plant_pole_rad_s": pole,
             "cancels_plant": zero is not None and abs(zero / pole - 1.0) <= 0.01,
             "macros": list(macros)}
+
+
+def integrator_loop(kp: float, ki: float, k: float) -> dict | None:
+    """A PI ``kp + ki/s`` around an integrating plant ``k/s`` (a speed loop: current to speed,
+    ``k`` = (speed unit/s) per A; a PLL: ``k`` = 1, gains in rad/s per rad and rad/s² per rad).
+
+    Closed loop s² + k·kp·s + k·ki = 0: ``natural_hz`` = √(k·ki)/2π, ``damping`` ζ =
+    k·kp/(2·√(k·ki)); ``bandwidth_hz`` the open loop's crossover, |k·(kp + ki/jω)/jω| = 1,
+    i.e. ω² = (k²kp² + √(k⁴kp⁴ + 4k²ki²))/2; ``zero_rad_s`` = ki/kp. None when a gain or ``k``
+    is not positive (no loop to speak of).
+
+    >>> c = integrator_loop(2 * 0.7 * 100.0, 100.0 ** 2, 1.0)
+    >>> round(c["natural_hz"] * 2 * math.pi, 6), round(c["damping"], 6)
+    (100.0, 0.7)
+    """
+    if not (kp > 0 and ki > 0 and k > 0 and math.isfinite(kp * ki * k)):
+        return None
+    wn = math.sqrt(k * ki)
+    a = (k * kp) ** 2
+    wc = math.sqrt((a + math.sqrt(a * a + 4.0 * k * k * ki * ki)) / 2.0)
+    return {"bandwidth_hz": wc / (2.0 * math.pi), "natural_hz": wn / (2.0 * math.pi),
+            "damping": k * kp / (2.0 * wn), "zero_rad_s": ki / kp}
 
 
 def check(severity: str, code: str, macros: list, advice: str = "", **params) -> tuple:

@@ -33,7 +33,7 @@ import json
 import math
 
 from ..common import SQRT3
-from ..decoding import check, current_loop, macro, result
+from ..decoding import check, current_loop, integrator_loop, macro, result
 
 __all__ = ["decode_header"]
 
@@ -165,6 +165,37 @@ def _expected(j: dict, k: float, flt: bool) -> dict:
             out["M1_SPEED_PI_INTEG_GAIN"] = (sl["speedLoopSLKi"] * w_max / i_max * tsp,
                                              _acc32, _Q15)
     return out
+
+
+def _observer(v: dict, flt: bool, ts, ts_theta, w_max, i_max, motor: dict) -> dict | None:
+    """The back-EMF observer and the tracking observer (:mod:`pulab.profiles.nxp.observer`'s
+    formulas read backwards): the BEMF observer's kp = 2ζω0·L_d − R_s [Ω], ki = L_d·ω0² [Ω/s]
+    (fractional: ·E_max/I_max/2^15, ki per T_s), so ω0 = √(ki/L_d), ζ = (kp + R_s)/(2ω0·L_d);
+    the tracking observer's kp = 2ζω_t, ki = ω_t² (fractional: gain·2^shift/2^15·ω_max, ki per
+    T_s): a PLL, :func:`pulab.profiles.decoding.integrator_loop` with k = 1."""
+    has = v.keys().__contains__
+    out = {}
+    if has("M1_TO_THETA_GAIN") and (flt or has("M1_TO_THETA_SHIFT")):
+        out["tracking_theta_gain"] = v["M1_TO_THETA_GAIN"] if flt else \
+            v["M1_TO_THETA_GAIN"] / _Q15 * 2.0 ** v["M1_TO_THETA_SHIFT"]
+        out["ts_from_theta_s"] = ts_theta
+    if ts and all(map(has, ("M1_TO_KP_GAIN", "M1_TO_KI_GAIN"))) and (
+            flt or (w_max and has("M1_TO_KP_SHIFT") and has("M1_TO_KI_SHIFT"))):
+        g = (lambda n: v[f"{n}_GAIN"]) if flt else \
+            (lambda n: v[f"{n}_GAIN"] / _Q15 * 2.0 ** v[f"{n}_SHIFT"] * w_max)
+        t = integrator_loop(g("M1_TO_KP"), g("M1_TO_KI") / ts, 1.0)
+        if t is not None:
+            out["tracking"] = {"kp_per_s": g("M1_TO_KP"), "ki_per_s2": g("M1_TO_KI") / ts, **t}
+    ld, rs, e_max = motor.get("ld_h"), motor.get("rs_ohm"), v.get("M1_E_MAX")
+    if ts and ld and rs is not None and has("M1_BEMF_DQ_KP_GAIN") and has("M1_BEMF_DQ_KI_GAIN") \
+            and (flt or (e_max and i_max)):
+        g = 1.0 if flt else e_max / i_max / _Q15
+        kp, ki = v["M1_BEMF_DQ_KP_GAIN"] * g, v["M1_BEMF_DQ_KI_GAIN"] * g / ts
+        if ki > 0:
+            w0 = math.sqrt(ki / ld)
+            out["bemf"] = {"kp_ohm": kp, "ki_ohm_per_s": ki, "natural_hz": w0 / (2.0 * math.pi),
+                           "damping": (kp + rs) / (2.0 * w0 * ld)}
+    return out or None
 
 
 def decode_header(values: dict, notes: dict) -> dict:
@@ -302,12 +333,15 @@ def decode_header(values: dict, notes: dict) -> dict:
                                              "M1_SPEED_PI_PROP_GAIN"
                                              + ("" if flt else "/2^15·I_max/ω_max"))
     design["speed_loop"] = speed
-    design["observer"] = None
-    if flt and has("M1_TO_THETA_GAIN"):
-        design["observer"] = {"tracking_theta_gain": v["M1_TO_THETA_GAIN"], "ts_from_theta_s": ts_theta}
-    elif has("M1_TO_THETA_GAIN") and has("M1_TO_THETA_SHIFT"):
-        design["observer"] = {"tracking_theta_gain": v["M1_TO_THETA_GAIN"] / _Q15
-                              * 2.0 ** v["M1_TO_THETA_SHIFT"], "ts_from_theta_s": ts_theta}
+    if speed is not None and speed.get("ki_a_per_rad"):
+        # the mechanics only the JSON states: Kt [N·m/A] and J [kg·m²] → el. rad/s² per A
+        p = (j or {}).get("parameters", {})
+        kt, jm = p.get("parametersKt"), p.get("parametersJ")
+        if isinstance(kt, (int, float)) and isinstance(jm, (int, float)) and jm > 0 and pp:
+            speed["plant_rad_s2_per_a"] = pp * kt / jm
+            speed.update(integrator_loop(speed["kp_a_per_rad_s"], speed["ki_a_per_rad"],
+                                         speed["plant_rad_s2_per_a"]) or {})
+    design["observer"] = _observer(v, flt, ts, ts_theta, w_max, i_max, motor)
     # the JSON: every constant it determines, again, in LSB (a float: relative, 6 digits printed)
     for n, (x, f, per) in expected.items():
         if not has(n):
