@@ -165,6 +165,36 @@ def test_st_gains_raised_by_hand_lose_their_margin(kp, severity):
         assert q["phase_margin_deg"] < 30.0
 
 
+def test_st_constants_proven_for_every_motor_within_20_percent(st):
+    rp = st["design"]["range_proof"]
+    assert rp["verdict"] == "proven" and rp["spread"] == 0.2
+    assert rp["ranges"]["motor.rs_ohm"] == pytest.approx([0.28, 0.42])
+    lo, hi = rp["constants"]["NOMINAL_CURRENT"]["range"]
+    assert lo <= 870 <= hi and hi <= 32767
+    assert not [f for f in st["findings"] if f["code"] == "overflow"]
+
+
+def test_st_current_near_the_word_overflows_for_a_motor_20_percent_larger():
+    files = [(n, t.replace("#define NOMINAL_CURRENT         870",
+                           "#define NOMINAL_CURRENT         30000"))
+             for n, t in _files("st", ST_SET)]
+    d = audit(files)
+    f = [f for f in d["findings"] if f["code"] == "overflow"]
+    assert [x["macros"] for x in f] == [["NOMINAL_CURRENT"]] and f[0]["severity"] == "warning"
+    assert "20 %" in f[0]["message"] and chinese(f[0]["message_zh"])
+    c = d["design"]["range_proof"]["constants"]["NOMINAL_CURRENT"]
+    assert c["verdict"] == "violated"
+    # the counterexample's peak current in ST's digits (32767 at (V_ref/2)/(R_shunt·G)) is
+    # beyond int16, and the motor is inside the box
+    i_rated = c["counterexample"]["motor"]["rated_current_a"]
+    assert i_rated <= 1.2 * d["design"]["input"]["motor"]["rated_current_a"] * (1 + 1e-12)
+    assert i_rated * math.sqrt(2) * 32767 * 0.003 * 9.14 / (3.3 / 2) > 32767
+
+
+def test_no_range_proof_without_a_whole_report_input(mchp):
+    assert mchp["design"]["missing"] and mchp["design"]["range_proof"] is None
+
+
 # -- NXP MCAT (nxp-mcuxpresso/mcuxsdk-examples : …/twrmc56f8200/…/m1_pmsm_appconfig.h) --------
 
 def test_nxp_fractions_are_the_printed_decimals(nxp):

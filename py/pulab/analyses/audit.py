@@ -45,6 +45,8 @@ from ..schema.errors import InputError
 from ..schema.validate import shown
 from .cconst import NotConstant, evaluate
 from .loop.current import axis_loop
+from .prove import PROFILES as PROVABLE
+from .prove import prove
 
 __all__ = ["audit", "LIBRARY", "MAX_FILES", "MAX_CHARS"]
 
@@ -80,6 +82,10 @@ _REQUIRED = (("motor", ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "
 #: margin below which a loop is called under-damped (the report's ``warning.current_low_pm``).
 _DELAY = "computation_pwm"
 _PM_LOW = 30.0
+#: The motor box of the range proof: every motor number of ``design.input`` × (1 ∓ 20 %), and
+#: the boxes the family prover may evaluate per constant (it answers ``unknown`` beyond).
+SPREAD = 0.2
+PROOF_BUDGET = 400
 _COMMENT = re.compile(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|//(?:\\\r?\n|[^\n])*|/\*.*?(?:\*/|\Z)',
                       re.S)
 
@@ -266,10 +272,13 @@ def _decoders() -> dict:
             if (f := provided(registry.get(n), "decode_header")) is not None}
 
 
-def _finding(severity: str, code: str, macros: list, params: dict, advice: str = "") -> dict:
+def _finding(severity: str, code: str, macros: list, params: dict, advice: str = "",
+             words: str | None = None) -> dict:
+    """A finding; ``words``: the catalog entry ``audit.<words>`` when not ``audit.<code>``."""
+    key = f"audit.{words or code}"
     return {"severity": severity, "code": code, "macros": macros,
-            "message": render(f"audit.{code}", params, "en"),
-            "message_zh": render(f"audit.{code}", params, "zh"), "advice": advice}
+            "message": render(key, params, "en"), "message_zh": render(key, params, "zh"),
+            "advice": advice}
 
 
 def _margins(design: dict) -> list:
@@ -303,6 +312,46 @@ def _margins(design: dict) -> list:
                                 "stable_zh": "稳定" if m["stable"] else "不稳定"},
                             "lower the bandwidth (kp) until the phase margin is 30° or more"))
     return out
+
+
+def _range_proof(vendor: str, design: dict, macros: dict) -> tuple:
+    """(``design.range_proof``, findings): the vendor's constants for every motor within
+    ± :data:`SPREAD` of the one the files encode, decided by the family prover
+    (:func:`pulab.analyses.prove.prove`: interval evaluation of the profile's own code, so
+    ``proven`` holds for the whole box and ``violated`` comes with a motor that breaks it). A
+    violated constant is an ``overflow`` warning naming the macro and that motor."""
+    if design["missing"] or vendor not in PROVABLE:
+        return None, []
+    motor = design["input"].get("motor", {})
+    ranges = {f"motor.{k}": [x * (1.0 - SPREAD), x * (1.0 + SPREAD)] for k, x in motor.items()
+              if k != "pole_pairs" and isinstance(x, float) and x > 0}
+    if not ranges:
+        return None, []
+    try:
+        r = prove({"input": design["input"], "ranges": ranges, "profile": vendor,
+                   "budget": PROOF_BUDGET})
+    except InputError as e:
+        # a box end the report refuses (e.g. a rated voltage above the bus): no proof, said why
+        return {"verdict": None, "spread": SPREAD, "error": e.message,
+                "error_zh": e.message_zh}, []
+    out = {"verdict": r["verdict"], "spread": SPREAD, "ranges": r["ranges"], "constants": {}}
+    found = []
+    for name, e in r["integers"].items():
+        short = name.rsplit(".", 1)[-1]
+        keep = {k: e[k] for k in ("verdict", "range", "word", "kind", "statement",
+                                  "counterexample") if k in e}
+        out["constants"][short] = keep
+        if e["verdict"] != "violated":
+            continue
+        motor_at = (e.get("counterexample") or {}).get("motor", {})
+        at = ", ".join(f"{k} = {motor_at[k]:.6g}" for k in sorted(motor_at)
+                       if f"motor.{k}" in ranges)
+        found.append(_finding("warning", "overflow", [short] if short in macros else [], {
+            "macro": short, "spread": round(100 * SPREAD), "kind": e.get("kind", ""),
+            "statement": e.get("statement", ""), "at": at},
+            "a wider word, a larger scale or a smaller shift for this constant",
+            words="overflow_range"))
+    return out, found
 
 
 def _roundtrip(vendor: str, design: dict, macros: dict) -> tuple:
@@ -366,6 +415,9 @@ def audit(files, profile: str | None = None, defines=None) -> dict:
         no macro of a known vendor, an unknown ``profile``.
     """
     out = _read(files, profile, defines)
+    out["design"]["range_proof"], found = _range_proof(out["profile"], out["design"],
+                                                       out["macros"])
+    out["findings"] += found
     out["regenerated"], out["roundtrip"] = _roundtrip(out["profile"], out["design"], out["macros"])
     return out
 

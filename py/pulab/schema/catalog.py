@@ -883,6 +883,10 @@ MESSAGES = {
     "audit.overflow": ("{macro}: the compiler's value {value} is not the {ideal} its formula "
                        "means: it does not fit {ctype}",
                        "{macro}：编译器得到的 {value} 不是公式所指的 {ideal}：超出 {ctype} 范围"),
+    "audit.overflow_range": ("{macro}: fits for this motor, but not for every motor within ± "
+                             "{spread} % ({kind} at {statement}; e.g. {at})",
+                             "{macro}：对本电机不溢出，但在 ±{spread} % 范围内的电机中并非都不溢出"
+                             "（{kind}，位于 {statement}；例如 {at}）"),
     "audit.rounding": ("{macro} = {value} stands for {ideal}: rounding costs {err} %",
                        "{macro} = {value} 代表 {ideal}：取整误差 {err} %"),
     "audit.if_undefined": ("#if compares names no given file defines ({names}): each is 0, so "
