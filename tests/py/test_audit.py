@@ -119,6 +119,17 @@ def test_st_round_trip_regenerates_the_workbench_integers(st):
     assert "#define PID_TORQUE_KP_DEFAULT" in st["regenerated"]["header"]
 
 
+def test_st_conversion_constants_come_back_to_the_lsb():
+    # with MCSDK 5.x's mc_math.h (SQRT_2 1.4142, SQRT_3 1.732) every integer the Workbench set
+    # holds or its conversion file computes is the one pu-lab computes from the decoded design
+    d = audit(_files("st", ST_SET), defines=["SQRT_2=1.4142", "SQRT_3=1.732"])
+    ints = {n: r["delta_lsb"] for n, r in d["roundtrip"].items() if "delta_lsb" in r}
+    assert {"C1", "C3", "C5", "MAX_BEMF_VOLTAGE", "MAX_VOLTAGE", "CURRENT_CONV_FACTOR",
+            "PWM_PERIOD_CYCLES", "NOMINAL_CURRENT", "PID_TORQUE_KP_DEFAULT",
+            "PID_TORQUE_KI_DEFAULT", "PID_FLUX_KP_DEFAULT", "PID_FLUX_KI_DEFAULT"} <= set(ints)
+    assert all(v == 0 for v in ints.values()), ints
+
+
 def test_nxp_round_trip_needs_the_back_emf(nxp):
     assert nxp["design"]["missing"] == ["motor.bemf_v"] and nxp["regenerated"] is None \
         and nxp["roundtrip"] == {}
@@ -598,12 +609,18 @@ def test_cli_output_has_every_key_and_shape_of_the_contract():
     assert out["design"]["missing"] == []
     assert all(isinstance(out["design"]["input"][s][k], (int, float)) for s, k in _DESIGN_INPUTS)
     assert set(out["design"]["current_loop"]) == {"d", "q"}
-    # roundtrip.NAME for every macro with a value in both the file set and pu-lab's header
-    mine = audit([("pulab_st.h", out["regenerated"]["header"])], "st")["macros"]
+    # roundtrip.NAME for every macro with a value in both the file set and pu-lab's header, or
+    # among the constants pu-lab's profile computes (ST's conversion file derives C1…C5 itself)
+    mine = {n: m["value"] for n, m in
+            audit([("pulab_st.h", out["regenerated"]["header"])], "st")["macros"].items()}
+    inp = copy.deepcopy(out["design"]["input"])
+    for n, c in report(inp)["profiles"]["st"]["constants"].items():
+        mine.setdefault(n, c["value"])
     both = {n for n, m in out["macros"].items() if n in mine}
-    assert both and set(out["roundtrip"]) == both
+    assert {"C1", "C5", "CURRENT_CONV_FACTOR", "PID_TORQUE_KP_DEFAULT"} <= both
+    assert set(out["roundtrip"]) == both
     for n, r in out["roundtrip"].items():
-        a, b = out["macros"][n]["value"], mine[n]["value"]
+        a, b = out["macros"][n]["value"], mine[n]
         assert (r["file"], r["pulab"]) == (a, b), n
         if isinstance(a, int) and isinstance(b, int):
             assert set(r) == {"file", "pulab", "delta_lsb"} and r["delta_lsb"] == a - b, n

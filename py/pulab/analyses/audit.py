@@ -356,8 +356,10 @@ def _range_proof(vendor: str, design: dict, macros: dict) -> tuple:
 
 def _roundtrip(vendor: str, design: dict, macros: dict) -> tuple:
     """(``regenerated``, ``roundtrip``): pu-lab's header for ``design.input`` (None when the
-    files do not fix a whole report input, ``design.missing``) and, per macro both headers
-    define, file vs pu-lab (``delta_lsb`` for two integers, else ``delta_rel``)."""
+    files do not fix a whole report input, ``design.missing``) and, per macro the files define
+    and pu-lab generates — in its header, or among the profile's constants that the vendor's
+    own conversion file computes from the others (ST's ``C1``…``C5``) —, file vs pu-lab
+    (``delta_lsb`` for two integers, else ``delta_rel``)."""
     if design["missing"]:
         return None, {}
     from .. import profiles
@@ -365,14 +367,19 @@ def _roundtrip(vendor: str, design: dict, macros: dict) -> tuple:
     inp = copy.deepcopy(design["input"])
     inp.setdefault("profiles", {}).setdefault(vendor, {})
     try:
-        text = profiles.header(report(inp), vendor)
-        mine = _read([(f"pulab_{vendor}.h", text)], vendor, None)["macros"]
+        rep = report(inp)
+        text = profiles.header(rep, vendor)
+        mine = {n: m["value"] for n, m in
+                _read([(f"pulab_{vendor}.h", text)], vendor, None)["macros"].items()}
     except InputError as e:
         return {"header": None, "error": e.message, "error_zh": e.message_zh}, {}
+    for n, c in ((rep.get("profiles") or {}).get(vendor) or {}).get("constants", {}).items():
+        mine.setdefault(n, c.get("value") if isinstance(c, dict) else None)
     out = {}
     for n, m in macros.items():
-        a, b = m["value"], mine.get(n, {}).get("value")
-        if not isinstance(a, (int, float)) or not isinstance(b, (int, float)):
+        a, b = m["value"], mine.get(n)
+        if not isinstance(a, (int, float)) or not isinstance(b, (int, float)) \
+                or isinstance(b, bool):
             continue
         if isinstance(a, int) and isinstance(b, int):
             out[n] = {"file": a, "pulab": b, "delta_lsb": a - b}
