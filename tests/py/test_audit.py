@@ -264,9 +264,14 @@ def test_nxp_sample_time_without_the_json(nxp):
 
 
 def test_nxp_speed_integral_gain_loses_one_lsb_in_67(nxp):
-    # ACC32(0.00207345) = 67.94 → 67: 1/67 = 1.49 %
+    # the JSON's Ki 0.009 A/rad: 0.009·ω_max/I_max·T_speed·2^15 = 67.94, which ACC32 truncates
+    # to 67 (−1.39 %)
     f = [f for f in nxp["findings"] if f["code"] == "rounding"]
     assert [x["macros"] for x in f] == [["M1_SPEED_PI_INTEG_GAIN"]]
+    w_max = 2 * math.pi * 4400 * 4 / 60
+    ideal = 0.009 * w_max / 8 * 0.001 * 32768
+    assert f"{ideal:.4f}" in f[0]["message"] and f"{100 * (67 - ideal) / ideal:.2f} %" in f[0]["message"]
+    assert nxp["macros"]["M1_SPEED_PI_INTEG_GAIN"]["si"] == pytest.approx(67 / 32768 * 8 / w_max / 0.001)
 
 
 # -- NXP MCAT, floating-point variant (nxp-appcodehub/an-mc-pmsm-mcxe31b : source/…) --------

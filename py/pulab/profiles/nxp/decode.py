@@ -328,6 +328,13 @@ def decode_header(values: dict, notes: dict) -> dict:
             tsp = (j or {}).get("speedLoop", {}).get("speedLoopSampleTime")
             speed["ki_a_per_rad_s_per_sample"] = ki_per_sample
             speed["ki_a_per_rad"] = ki_per_sample / tsp if isinstance(tsp, (int, float)) else None
+            scaled = "" if flt else "/2^15·I_max/ω_max"
+            out["M1_SPEED_PI_INTEG_GAIN"] = (
+                macro(speed["ki_a_per_rad"], "A/rad", "speed PI ki (electrical rad)",
+                      f"M1_SPEED_PI_INTEG_GAIN{scaled}/T_speed (T_speed: the MCAT JSON)")
+                if speed["ki_a_per_rad"] is not None else
+                macro(ki_per_sample, "A/(rad/s)", "speed PI ki per speed-loop sample",
+                      f"M1_SPEED_PI_INTEG_GAIN{scaled}"))
         out["M1_SPEED_PI_PROP_GAIN"] = macro(speed["kp_a_per_rad_s"], "A/(rad/s)",
                                              "speed PI kp (electrical rad/s)",
                                              "M1_SPEED_PI_PROP_GAIN"
@@ -360,7 +367,15 @@ def decode_header(values: dict, notes: dict) -> dict:
                                 diff=delta))
     design["json_checked"] = sorted(n for n in expected if has(n))
     for n in _GAINS + ("M1_SPEED_PI_PROP_GAIN", "M1_SPEED_PI_INTEG_GAIN"):
-        if isinstance(v.get(n), int) and v[n] and 1.0 / abs(v[n]) > 0.01:  # ACC32 truncates: up to 1 LSB lost
+        if not (isinstance(v.get(n), int) and v[n]):
+            continue
+        if n in expected and expected[n][1] is not None:
+            # the JSON's inputs give the value the integer truncates
+            x = expected[n][0] * expected[n][2]
+            if x and abs(x - v[n]) / abs(x) > 0.01:
+                checks.append(check("warning", "rounding", [n], "", macro=n, value=v[n],
+                                    ideal=f"{x:.4f}", err=round(100.0 * (v[n] - x) / x, 2)))
+        elif 1.0 / abs(v[n]) > 0.01:  # ACC32 truncates: up to 1 LSB lost
             checks.append(check("warning", "rounding", [n], "", macro=n, value=v[n],
                                 ideal=f"{n} + [0, 1) LSB", err=round(100.0 / abs(v[n]), 2)))
     drive: dict = {}
