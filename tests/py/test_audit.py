@@ -430,6 +430,13 @@ def test_microchip_constants_are_their_printed_si_values(mchp):
     assert mchp["design"]["input"]["motor"]["pole_pairs"] == 4
 
 
+def test_microchip_every_integer_rederived_from_its_printed_design_value(mchp):
+    # motorBench prints the value each integer was designed for: all 28 round to the integer
+    checked = mchp["design"]["comment_checked"]
+    assert len(checked) == 28 and set(checked.values()) == {0}
+    assert {"KIP", "KII", "KWP", "KWI", "MCAF_MOTOR_RS", "MCAF_MOTOR_LD_BASE_DT"} <= set(checked)
+
+
 def test_microchip_pwm_period_from_the_two_pi_scales(mchp):
     # KII's base is KIP's over Δt: (0.59922182/0.36642)/(1766.67/0.05402) = 1.63534/32704 = 50 µs
     assert mchp["design"]["ts_s"] == pytest.approx(50e-6, rel=2e-4)
