@@ -385,6 +385,28 @@ def test_nxp_speed_loop_from_its_manual_gains_and_the_json_mechanics(nxp):
     assert sl["damping"] == pytest.approx(k * 0.003 / (2.0 * wn), rel=0.01)
 
 
+def test_ti_am26x_lab_estun_servo_on_the_high_voltage_kit():
+    # TexasInstruments/motor-control-sdk (AM26x), HVMTRPFC_REV1P1 selects the Estun EMJ-04APB22
+    files = [(f"am263x/{n}", (HEADERS / "ti" / "am263x" / n).read_text(encoding="utf-8"))
+             for n in ("user_mtr1.h", "user_common.h")]
+    d = audit(files, defines=["HVMTRPFC_REV1P1"])
+    m = d["design"]["input"]["motor"]
+    assert (m["rs_ohm"], m["ld_h"], m["pole_pairs"]) == pytest.approx((2.3679111, 0.00836551283, 4))
+    assert d["design"]["input"]["drive"]["udc_v"] == 220.0
+    assert d["design"]["input"]["board"]["bus"]["max_v"] == pytest.approx(409.90)
+    # this SDK's user_mtr1.c: BWc = 2π·200 rad/s, δ = 20 (the C2000 lab: 2π·400, 10)
+    q = d["design"]["current_loop"]["q"]
+    assert q["runtime"]["sdk"] == "AM26x motor-control-sdk"
+    assert q["kp_v_per_a"] == pytest.approx(0.00836551283 * 2 * math.pi * 200, rel=1e-6)
+    assert q["zero_rad_s"] == pytest.approx(0.25 * 2.3679111 / 0.00836551283, rel=1e-6)
+    assert d["design"]["speed_loop"]["delta"] == 20.0
+    # the file names no rated speed: no round trip, said so
+    assert set(d["design"]["missing"]) == {"motor.rated_freq_hz", "motor.bemf_v"}
+    # it compares an id user_common.h never defines, but its own choice does not depend on it
+    f = [f for f in d["findings"] if f["code"] == "if_undefined"]
+    assert [(x["severity"], "Regal_Beloit_5SME39DL0756" in x["message"]) for x in f] == [("note", True)]
+
+
 def test_ti_without_user_common_every_motor_id_is_zero():
     d = audit(_files("ti", ["user_mtr1.h"]), defines=["BSXL8323RS_REVA"])
     f = d["findings"][0]

@@ -233,9 +233,17 @@ def _comments(text: str) -> dict:
     return out
 
 
-def _undefined_if(src: _Source, macros: dict) -> list:
-    """Names an ``#if``/``#elif`` compares with ``==``/``!=`` that no file defines."""
-    names = []
+def _undefined_if(src: _Source, macros: dict, folded: dict) -> tuple:
+    """(names, accidental): the names an ``#if``/``#elif`` compares with ``==``/``!=`` that no
+    file defines, and whether some comparison has both sides 0 through undefined names (a
+    name no file defines, or a macro that expands only to such names): 0 == 0 then picks a
+    branch by accident. Otherwise such a branch can only never be chosen by its name."""
+    names, accidental = [], False
+
+    def undefined_zero(n: str) -> bool:
+        f = folded.get(n)
+        return n not in macros or (f is not None and bool(f["unknown"]) and not f["value"])
+
     for m in _IF.finditer(src.text):
         cond = re.sub(r"defined\s*\(?\s*\w+\s*\)?|//.*|/\*.*?\*/", " ", m[1])
         if "==" not in cond and "!=" not in cond:
@@ -243,7 +251,9 @@ def _undefined_if(src: _Source, macros: dict) -> list:
         for n in re.findall(r"[A-Za-z_]\w*", cond):
             if n not in macros and n not in names:
                 names.append(n)
-    return names
+        for a, b in re.findall(r"([A-Za-z_]\w*)\s*[=!]=\s*([A-Za-z_]\w*)", cond):
+            accidental = accidental or (undefined_zero(a) and undefined_zero(b))
+    return names, accidental
 
 
 def _fold_all(src: _Source, names: list, defines: dict, target: str, lines: dict) -> dict:
@@ -496,10 +506,12 @@ def _read(files, vendor: str | None, defines) -> dict:
     design.setdefault("assumed", [])
     design["missing"] = [f"{sec}.{k}" for sec, keys in _REQUIRED for k in keys
                          if k not in design.get("input", {}).get(sec, {})]
-    undefined = _undefined_if(src, pre.macros)
+    undefined, accidental = _undefined_if(src, pre.macros, folded)
     if undefined:
-        findings.insert(0, _finding("warning", "if_undefined", [], {"names": ", ".join(undefined)},
-                                    "give the file that defines them, or -D NAME=VALUE"))
+        findings.insert(0, _finding("warning" if accidental else "note", "if_undefined", [],
+                                    {"names": ", ".join(undefined)},
+                                    "give the file that defines them, or -D NAME=VALUE",
+                                    words=None if accidental else "if_undefined_unused"))
     other = {n: {"value": f["value"], "source": "{}:{}".format(*lines[n])}
              for n, f in folded.items() if n not in macros and n in lines
              and f["value"] is not None}

@@ -893,6 +893,11 @@ MESSAGES = {
                            "the first such branch is taken whatever was meant",
                            "#if 比较了所给文件中都未定义的名字（{names}）：它们都为 0，因此总是取"
                            "第一个这样的分支"),
+    "audit.if_undefined_unused": ("#if compares names no given file defines ({names}): the "
+                                  "files' own choice is not affected, but a branch compared with "
+                                  "them cannot be chosen by that name",
+                                  "#if 比较了所给文件中都未定义的名字（{names}）：不影响文件当前的选择，"
+                                  "但与它们比较的分支无法按该名字选中"),
     "audit.loop_margin": ("{axis} current loop with one sample of computation and the PWM's "
                           "half period (Ts = {ts} s): {stable}, phase margin {pm}°, gain margin "
                           "{gm} dB, crossover {fc} Hz (the report wants 30° or more)",

@@ -8,7 +8,10 @@ of it; ``…_VOLTAGE_V``). Its PIs are computed at run time from these macros, a
 reproduces that computation (``anyway-blows/ti-c2000-motor-control-sdk :
 solutions/universal_motorcontrol_lab/common/source/motor_common.c``, ``setupControllers``, and
 ``…/user_mtr1.c``, ``USER_setMotor1Params``, with ``flag_bypassMotorId = true`` as
-``…/sys_main.c`` sets it): BW_c = 2π·400 rad/s and δ = 10, the current PI (series form of
+``…/sys_main.c`` sets it): BW_c = 2π·400 rad/s and δ = 10 — the AM26x SDK's copy of the lab
+(``TexasInstruments/motor-control-sdk : examples/tidm_02018_universal_motorcontrol/
+universal_motorcontrol/src_board/user_mtr1.c``; told apart by its speed-gain schedule macros
+``USER_MOTOR1_KP_SPD_HIGH_SF``) sets 2π·200 rad/s and δ = 20 —, the current PI (series form of
 ``libraries/control/pi/include/pi.h``: U_i += Ki·Kp·e, so ki = Kp·Ki/T)
 
     Kp = L·BW_c [V/A],  Ki = 0.25·(R/L)·T_cur,  i.e. ki = 0.25·R·BW_c [V/(A·s)]
@@ -57,6 +60,7 @@ _PLAIN = {
     "USER_MOTOR1_RATED_VOLTAGE_V": ("V", "rated voltage"),
     "USER_MOTOR1_RATED_SPEED_KRPM": ("krpm", "rated speed"),
     "USER_MOTOR1_FREQ_MAX_HZ": ("Hz", "maximum electrical frequency"),
+    "USER_MOTOR1_FREQ_MAX_Hz": ("Hz", "maximum electrical frequency (AM26x SDK's spelling)"),
     "USER_MOTOR1_INERTIA_Kgm2": ("kg·m²", "inertia"),
     "USER_M1_NOMINAL_DC_BUS_VOLTAGE_V": ("V", "nominal DC bus"),
     "USER_M1_ADC_FULL_SCALE_VOLTAGE_V": ("V", "voltage at the full ADC range"),
@@ -94,9 +98,10 @@ _GAINS = {"d": ("USER_MTR1_KP_ID_IQ", "USER_MTR1_KI_ID_IQ"),
 READS = tuple(_PLAIN) + tuple(n for pair in _GAINS.values() for n in pair) + (
     "USER_M1_NUM_ISR_TICKS_PER_CURRENT_TICK", "USER_M1_NUM_ISR_TICKS_PER_SPEED_TICK")
 #: The universal lab's run-time design with the motor from the header (user_mtr1.c:
-#: flag_bypassMotorId true): the current bandwidth BW_c [rad/s] and the speed loop's δ.
-RUNTIME_BWC = 2.0 * math.pi * 400.0
-RUNTIME_DELTA = 10.0
+#: flag_bypassMotorId true): SDK → (the current bandwidth BW_c [rad/s], the speed loop's δ, the
+#: macro that marks that SDK's user_mtr1.h or None).
+RUNTIME = {"C2000 MotorControl SDK": (2.0 * math.pi * 400.0, 10.0, None),
+           "AM26x motor-control-sdk": (2.0 * math.pi * 200.0, 20.0, "USER_MOTOR1_KP_SPD_HIGH_SF")}
 
 
 def _runtime(v: dict, motor: dict, psi: float | None) -> tuple:
@@ -104,6 +109,9 @@ def _runtime(v: dict, motor: dict, psi: float | None) -> tuple:
     f = v.get("USER_M1_ISR_FREQ_Hz")
     if not f or "rs_ohm" not in motor:
         return {}, None
+    sdk = next((k for k, (_, _, mark) in RUNTIME.items() if mark and mark in v),
+               "C2000 MotorControl SDK")
+    bwc, delta, _ = RUNTIME[sdk]
     t_cur = v.get("USER_M1_NUM_ISR_TICKS_PER_CURRENT_TICK", 1) / f
     names = ["USER_MOTOR1_Rs_Ohm", "USER_M1_ISR_FREQ_Hz"]
     loops = {}
@@ -111,11 +119,11 @@ def _runtime(v: dict, motor: dict, psi: float | None) -> tuple:
         if key not in motor:
             continue
         l = motor[key]
-        kp = l * RUNTIME_BWC
+        kp = l * bwc
         ki_series = 0.25 * motor["rs_ohm"] / l * t_cur
         c = current_loop(kp, kp * ki_series / t_cur, motor["rs_ohm"], l, [name] + names)
         if c is not None:
-            c["runtime"] = {"bwc_rad_s": RUNTIME_BWC, "kp": kp, "ki_series": ki_series,
+            c["runtime"] = {"sdk": sdk, "bwc_rad_s": bwc, "kp": kp, "ki_series": ki_series,
                             "period_s": t_cur}
             loops[axis] = c
     j, pp = v.get("USER_MOTOR1_INERTIA_Kgm2"), motor.get("pole_pairs")
@@ -123,15 +131,16 @@ def _runtime(v: dict, motor: dict, psi: float | None) -> tuple:
     if not (j and j > 0 and pp and psi):
         return loops, None
     k_ctrl = 3.0 * pp * psi / (2.0 * j)
-    if k_ctrl <= 0.01 and v.get("USER_MOTOR1_FREQ_MAX_HZ") and v.get("USER_MOTOR1_MAX_CURRENT_A"):
-        kp = 2.5 * v["USER_MOTOR1_MAX_CURRENT_A"] / v["USER_MOTOR1_FREQ_MAX_HZ"]
+    f_max = v.get("USER_MOTOR1_FREQ_MAX_HZ", v.get("USER_MOTOR1_FREQ_MAX_Hz"))
+    if k_ctrl <= 0.01 and f_max and v.get("USER_MOTOR1_MAX_CURRENT_A"):
+        kp = 2.5 * v["USER_MOTOR1_MAX_CURRENT_A"] / f_max
         ki_series = 5.0 * v["USER_MOTOR1_MAX_CURRENT_A"] / f
     else:
-        kp = RUNTIME_BWC / (RUNTIME_DELTA * k_ctrl)
-        ki_series = RUNTIME_BWC * t_spd / RUNTIME_DELTA ** 2
+        kp = bwc / (delta * k_ctrl)
+        ki_series = bwc * t_spd / delta ** 2
     # the plant from A to electrical Hz: dω_m/dt = 1.5·pp·ψ·i/J, f_e = pp·ω_m/2π
     plant = 1.5 * pp * pp * psi / (j * 2.0 * math.pi)
-    speed = {"kp_a_per_hz": kp, "ki_a_per_hz_s": kp * ki_series / t_spd, "ki_series": ki_series,
+    speed = {"sdk": sdk, "bwc_rad_s": bwc, "delta": delta, "kp_a_per_hz": kp, "ki_a_per_hz_s": kp * ki_series / t_spd, "ki_series": ki_series,
              "period_s": t_spd, "k_ctrl": k_ctrl, "plant_hz_per_a_s": plant,
              "macros": ["USER_MOTOR1_INERTIA_Kgm2", "USER_MOTOR1_RATED_FLUX_VpHz",
                         "USER_MOTOR1_NUM_POLE_PAIRS", "USER_M1_NUM_ISR_TICKS_PER_SPEED_TICK"]}
@@ -254,10 +263,11 @@ def decode_header(values: dict, notes: dict) -> dict:
     if not loops and has("USER_MOTOR1_Rs_Ohm"):
         loops, speed = _runtime(v, motor, design.get("psi_wb"))
         if loops:
+            c = next(iter(loops.values()))["runtime"]
             design["assumed"].append(
-                "the current and speed PIs as the universal lab computes them at run time "
-                "(motor_common.c setupControllers, BW_c = 2π·400 rad/s, δ = 10), the speed PI's "
-                "speed in electrical Hz")
+                f"the current and speed PIs as the universal lab of the {c['sdk']} computes "
+                f"them at run time (motor_common.c setupControllers, BW_c = "
+                f"{c['bwc_rad_s']:.6g} rad/s), the speed PI's speed in electrical Hz")
     design["current_loop"] = loops or None
     if loops:
         c = loops.get("q") or loops["d"]
