@@ -130,6 +130,17 @@ def test_st_conversion_constants_come_back_to_the_lsb():
     assert all(v == 0 for v in ints.values()), ints
 
 
+def test_st_speed_pi_in_si_once_speed_unit_is_given():
+    # MCSDK's mc_stm_types.h: SPEED_UNIT = U_01HZ = 10, so the error is in 0.1 Hz (mechanical)
+    d = audit(_files("st", ST_SET), defines=["SQRT_3=1.732", "SPEED_UNIT=10"])
+    sp = d["design"]["speed_loop"]
+    i_digit = 3.3 / 2 / (0.003 * 9.14) / 32767
+    assert sp["kp_a_per_rad_s"] == pytest.approx(3144 / 1024 * i_digit / (2 * math.pi * 0.1))
+    assert sp["ki_a_per_rad"] == pytest.approx(141 / 16384 * i_digit / (2 * math.pi * 0.1) * 1000)
+    assert "SPEED_UNIT" not in d["macros"]  # a -D value, not one of the files' macros
+    assert audit(_files("st", ST_SET))["design"]["speed_loop"] is None
+
+
 def test_nxp_round_trip_needs_the_back_emf(nxp):
     assert nxp["design"]["missing"] == ["motor.bemf_v"] and nxp["regenerated"] is None \
         and nxp["roundtrip"] == {}

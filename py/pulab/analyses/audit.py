@@ -480,7 +480,10 @@ def _read(files, vendor: str | None, defines) -> dict:
             file, line = lines.get(n, (src.names[-1], 0))
             raise InputError("files", code="audit_define", file=file, line=line, name=n,
                              why=f["error"])
-    values = {n: f["value"] for n, f in folded.items() if f["value"] is not None}
+    # a -D value is the decoder's too (ST leaves SPEED_UNIT to its library), not a file's macro
+    given = _fold_all(src, list(defs), defs, target, {}) if defs else {}
+    values = {n: f["value"] for d in (given, folded) for n, f in d.items()
+              if f["value"] is not None}
     try:
         result = dec(values, comments)
     except (ArithmeticError, ValueError) as e:
@@ -490,6 +493,8 @@ def _read(files, vendor: str | None, defines) -> dict:
                          why=type(e).__name__) from None
     macros = {}
     for n, d in result["macros"].items():
+        if n not in folded:
+            continue  # given by -D, not by a file
         f = folded[n]
         file, line = lines.get(n, ("", 0))
         macros[n] = {"value": f["value"], "type": f["type"], **d,

@@ -68,7 +68,31 @@ _PLAIN = {
 _CURRENTS = ("NOMINAL_CURRENT", "IQMAX", "ID_DEMAG")
 _GAINS = ("PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "PID_FLUX_KP_DEFAULT",
           "PID_FLUX_KI_DEFAULT")
-READS = tuple(_PLAIN) + _CURRENTS + _GAINS
+_SPEED = ("PID_SPEED_KP_DEFAULT", "PID_SPEED_KI_DEFAULT")
+READS = tuple(_PLAIN) + _CURRENTS + _GAINS + _SPEED
+
+
+def _speed_loop(v: dict, i_digit: float | None, out: dict) -> dict | None:
+    """The speed PI in SI: the error is in 1/``SPEED_UNIT`` Hz of mechanical speed (MCSDK's
+    ``mc_stm_types.h``: 10 for 0.1 Hz; the file leaves it to that library, so it must be given,
+    ``-D SPEED_UNIT=10``), the output in current digits, Ki once per speed-loop period:
+    kp = KP/SP_KPDIV·i_digit·SPEED_UNIT/2π [A/(rad/s)], ki = KI/SP_KIDIV·i_digit·SPEED_UNIT/2π·
+    f_speed [A/rad]. The files hold no inertia, so no bandwidth."""
+    has = v.keys().__contains__
+    if not (all(map(has, _SPEED + ("SPEED_UNIT", "SPEED_LOOP_FREQUENCY_HZ")))
+            and v.get("SP_KPDIV") and v.get("SP_KIDIV") and i_digit):
+        return None
+    per = i_digit * v["SPEED_UNIT"] / (2.0 * math.pi)
+    kp = v["PID_SPEED_KP_DEFAULT"] / v["SP_KPDIV"] * per
+    ki = v["PID_SPEED_KI_DEFAULT"] / v["SP_KIDIV"] * per * v["SPEED_LOOP_FREQUENCY_HZ"]
+    out["PID_SPEED_KP_DEFAULT"] = macro(kp, "A/(rad/s)", "speed PI kp (mechanical rad/s)",
+                                        "PID_SPEED_KP_DEFAULT/SP_KPDIV·(V_ref/2)/(32767·R_shunt·G)"
+                                        "·SPEED_UNIT/2π")
+    out["PID_SPEED_KI_DEFAULT"] = macro(ki, "A/rad", "speed PI ki (mechanical rad)",
+                                        "PID_SPEED_KI_DEFAULT/SP_KIDIV·(V_ref/2)/(32767·R_shunt·G)"
+                                        "·SPEED_UNIT/2π·SPEED_LOOP_FREQUENCY_HZ")
+    return {"kp_a_per_rad_s": kp, "ki_a_per_rad": ki, "zero_rad_s": ki / kp if kp else None,
+            "period_s": 1.0 / v["SPEED_LOOP_FREQUENCY_HZ"], "macros": list(_SPEED)}
 
 
 def decode_header(values: dict, notes: dict) -> dict:
@@ -197,7 +221,7 @@ def decode_header(values: dict, notes: dict) -> dict:
         design["input"]["current_loop"] = {"method": "manual",
                                            "kp": loops["q" if "q" in loops else "d"]["kp_v_per_a"],
                                            "ki": loops["q" if "q" in loops else "d"]["ki_v_per_a_s"]}
-    design["speed_loop"] = None
+    design["speed_loop"] = _speed_loop(v, i_digit, out)
     design["observer"] = ({"pll_kp": v["PLL_KP_GAIN"] / v["PLL_KPDIV"],
                            "pll_ki": v["PLL_KI_GAIN"] / v["PLL_KIDIV"]}
                           if all(map(has, ("PLL_KP_GAIN", "PLL_KI_GAIN")))
