@@ -217,6 +217,21 @@ def test_no_range_proof_without_a_whole_report_input(mchp):
     assert mchp["design"]["missing"] and mchp["design"]["range_proof"] is None
 
 
+@pytest.mark.parametrize("kp", ["1e300", "2312e30"])
+def test_st_absurd_gains_give_no_margin_and_no_crash(kp):
+    files = [(n, t.replace("#define PID_TORQUE_KP_DEFAULT         2312",
+                           f"#define PID_TORQUE_KP_DEFAULT         {kp}"))
+             for n, t in _files("st", ST_SET)]
+    try:
+        d = audit(files)
+    except InputError as e:
+        assert e.field.startswith("files")
+        return
+    q = d["design"]["current_loop"].get("q", {})
+    assert "phase_margin_deg" not in q or q["stable"] is False or q["phase_margin_deg"] is None \
+        or math.isfinite(q["phase_margin_deg"])
+
+
 # -- NXP MCAT (nxp-mcuxpresso/mcuxsdk-examples : …/twrmc56f8200/…/m1_pmsm_appconfig.h) --------
 
 def test_nxp_fractions_are_the_printed_decimals(nxp):

@@ -32,6 +32,7 @@ Examples
 from __future__ import annotations
 
 import copy
+import math
 import re
 
 from ..ctrace.errors import TraceError
@@ -44,7 +45,7 @@ from ..schema.catalog import render
 from ..schema.errors import InputError
 from ..schema.validate import shown
 from .cconst import NotConstant, evaluate
-from .loop.current import axis_loop
+from .loop.current import STATIC_PLANT, axis_loop
 from .prove import PROFILES as PROVABLE
 from .prove import prove
 
@@ -302,9 +303,16 @@ def _margins(design: dict) -> list:
     out = []
     for axis, c in design["current_loop"].items():
         r, l = motor.get("rs_ohm"), motor.get("ld_h" if axis == "d" else "lq_h")
-        if not (ts and l and r is not None):
+        # R·Ts/L beyond STATIC_PLANT: the plant settles within a sample, no loop to measure
+        if not (ts and l and r is not None and r * ts / l <= STATIC_PLANT):
             continue
-        m = axis_loop(r, l, ts, c["kp_v_per_a"], c["ki_v_per_a_s"], _DELAY)
+        try:
+            m = axis_loop(r, l, ts, c["kp_v_per_a"], c["ki_v_per_a_s"], _DELAY)
+        except (ArithmeticError, ValueError):
+            continue  # gains the header makes absurd (1e300 V/A): no margin is a number
+        if not all(map(math.isfinite, (m["spectral_radius"], *(x for x in (
+                m["phase_margin_deg"], m["gain_margin_db"]) if x is not None)))):
+            continue
         c.update(delay=_DELAY, phase_margin_deg=m["phase_margin_deg"],
                  gain_margin_db=m["gain_margin_db"], crossover_hz=m["crossover_hz"],
                  stable=m["stable"])
