@@ -298,7 +298,7 @@ def test_nxp_speed_integral_gain_loses_one_lsb_in_67(nxp):
     ideal = 0.009 * w_max / 8 * 0.001 * 32768
     assert f"{ideal:.4f}" in f[0]["message"] and f"{100 * (67 - ideal) / ideal:.2f} %" in f[0]["message"]
     # ω_max from the header's printed M1_FREQ_MAX (6 digits)
-    assert nxp["macros"]["M1_SPEED_PI_INTEG_GAIN"]["si"] == pytest.approx(67 / 32768 * 8 / w_max / 0.001,
+    assert nxp["macros"]["M1_SPEED_PI_INTEG_GAIN"]["si"] == pytest.approx(67 / 32768 * 8 / w_max * 2 / 0.001,
                                                                          rel=1e-5)
 
 
@@ -406,9 +406,13 @@ def test_nxp_speed_loop_from_its_manual_gains_and_the_json_mechanics(nxp):
     p = nxp["design"]["mcat_inputs"]["parameters"]
     sl = nxp["design"]["speed_loop"]
     k = p["parametersPP"] * p["parametersKt"] / p["parametersJ"]
-    wn = math.sqrt(k * 0.009)  # the JSON's manual Ki = 0.009 A/rad, Kp = 0.003 A/(rad/s)
+    # the JSON's manual Kp = 0.003 A/(rad/s) and Ki 0.009 stored as 0.009·T_speed per sample,
+    # which the trapezoidal PI (e_k + e_k−1) integrates twice: ki = 0.018 A/rad
+    ki = 2 * 0.009
+    assert sl["ki_a_per_rad"] == pytest.approx(ki, rel=0.02)  # 67 of 67.94 LSB
+    wn = math.sqrt(k * ki)
     assert sl["natural_hz"] == pytest.approx(wn / (2.0 * math.pi), rel=0.01)
-    assert sl["damping"] == pytest.approx(k * 0.003 / (2.0 * wn), rel=0.01)
+    assert sl["damping"] == pytest.approx(k * 0.003 / (2.0 * wn), rel=0.02)
 
 
 def test_ti_am26x_lab_estun_servo_on_the_high_voltage_kit():

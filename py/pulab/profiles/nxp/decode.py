@@ -13,7 +13,8 @@ formulas are those of :mod:`pulab.profiles.nxp.scaling` (MCAT's ``inner_CLoop.js
 - the current PI: kp = K_p·U_max/I_max [V/A], ki = K_i·U_max/I_max·k/T_s with k = 2 (MCAT's
   trapezoidal integrator; the JSON decides when present), and from them MCAT's own design
   inputs ω0 = √(ki/L), ξ = (kp + R_s)/(2·ω0·L);
-- the speed PI (in A per electrical rad/s): kp = K_p·I_max/ω_max, ki = K_i·I_max/ω_max/T_speed.
+- the speed PI (in A per electrical rad/s): kp = K_p·I_max/ω_max, ki = K_i·I_max/ω_max·k/T_speed
+  (the same controller as the current loop, so the same k; T_speed from the JSON).
 
 The MCAT JSON in the header's first comment (its inputs) is read and every constant it
 determines is computed again from it and compared in LSB (MCAT prints 6 significant digits,
@@ -327,11 +328,12 @@ def decode_header(values: dict, notes: dict) -> dict:
             ki_per_sample = v["M1_SPEED_PI_INTEG_GAIN"] * g
             tsp = (j or {}).get("speedLoop", {}).get("speedLoopSampleTime")
             speed["ki_a_per_rad_s_per_sample"] = ki_per_sample
-            speed["ki_a_per_rad"] = ki_per_sample / tsp if isinstance(tsp, (int, float)) else None
+            speed["ki_a_per_rad"] = ki_per_sample * k / tsp if isinstance(tsp, (int, float)) \
+                else None
             scaled = "" if flt else "/2^15·I_max/ω_max"
             out["M1_SPEED_PI_INTEG_GAIN"] = (
                 macro(speed["ki_a_per_rad"], "A/rad", "speed PI ki (electrical rad)",
-                      f"M1_SPEED_PI_INTEG_GAIN{scaled}/T_speed (T_speed: the MCAT JSON)")
+                      f"M1_SPEED_PI_INTEG_GAIN{scaled}·{k:g}/T_speed (T_speed: the MCAT JSON)")
                 if speed["ki_a_per_rad"] is not None else
                 macro(ki_per_sample, "A/(rad/s)", "speed PI ki per speed-loop sample",
                       f"M1_SPEED_PI_INTEG_GAIN{scaled}"))
