@@ -141,6 +141,21 @@ def test_st_speed_pi_in_si_once_speed_unit_is_given():
     assert audit(_files("st", ST_SET))["design"]["speed_loop"] is None
 
 
+def test_st_pll_bandwidth_and_damping_at_the_maximum_speed():
+    # STO_ExecutePLL: error E·sin(θ − θ̂) in back-EMF digits (32768 per MAX_BEMF_VOLTAGE = 15 V,
+    # the integer C3 uses), PI output in angle digits (65536 per turn) per 50 µs period
+    d = audit(_files("st", ST_SET), defines=["SQRT_2=1.4142", "SQRT_3=1.732"])
+    tr = d["design"]["observer"]["tracking"]
+    e = 32768 * 4.0 * 4000 / 1000 * math.sqrt(2 / 3) / 15
+    g = e * 2 * math.pi / 65536
+    kp, ki = 213 / 16384 * g / 5e-5, 8 / 65535 * g / 5e-5 ** 2
+    assert tr["natural_hz"] == pytest.approx(math.sqrt(ki) / (2 * math.pi), rel=1e-9)
+    assert tr["damping"] == pytest.approx(kp / (2 * math.sqrt(ki)), rel=1e-9)
+    assert 0.95 < tr["damping"] < 1.0 and 55 < tr["natural_hz"] < 60
+    # without MAX_BEMF_VOLTAGE (SQRT_2 unknown) only the gains
+    assert "tracking" not in audit(_files("st", ST_SET))["design"]["observer"]
+
+
 def test_nxp_round_trip_needs_the_back_emf(nxp):
     assert nxp["design"]["missing"] == ["motor.bemf_v"] and nxp["regenerated"] is None \
         and nxp["roundtrip"] == {}

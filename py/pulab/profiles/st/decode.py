@@ -26,7 +26,7 @@ from __future__ import annotations
 import math
 
 from ..common import SQRT2, SQRT3
-from ..decoding import check, current_loop, macro, result
+from ..decoding import check, current_loop, integrator_loop, macro, result
 
 __all__ = ["decode_header"]
 
@@ -222,10 +222,32 @@ def decode_header(values: dict, notes: dict) -> dict:
                                            "kp": loops["q" if "q" in loops else "d"]["kp_v_per_a"],
                                            "ki": loops["q" if "q" in loops else "d"]["ki_v_per_a_s"]}
     design["speed_loop"] = _speed_loop(v, i_digit, out)
-    design["observer"] = ({"pll_kp": v["PLL_KP_GAIN"] / v["PLL_KPDIV"],
-                           "pll_ki": v["PLL_KI_GAIN"] / v["PLL_KIDIV"]}
-                          if all(map(has, ("PLL_KP_GAIN", "PLL_KI_GAIN")))
-                          and v.get("PLL_KPDIV") and v.get("PLL_KIDIV")
-                          else None)
+    design["observer"] = _pll(v, ts, rpm)
     return result(READS, "arm", out, design, checks)
+
+
+def _pll(v: dict, ts: float | None, rpm: float | None) -> dict | None:
+    """The state observer's PLL (MCSDK ``sto_pll_speed_pos_fdbk.c``, ``STO_ExecutePLL``): its
+    error is e_β·cos θ̂ − e_α·sin θ̂ = E·sin(θ − θ̂) in back-EMF digits (32768 per
+    ``MAX_BEMF_VOLTAGE`` volts, the scale ``C3`` gives the observer), its PI
+    (Kp·e/PLL_KPDIV + ΣKi·e/PLL_KIDIV) is the speed in angle digits (65536 per turn) per FOC
+    period. So the loop gain grows with the back-EMF: at the maximum application speed,
+    g = E_digits·2π/65536 and kp = Kp/PLL_KPDIV·g/T [1/s], ki = Ki/PLL_KIDIV·g/T² [1/s²]
+    (:func:`pulab.profiles.decoding.integrator_loop`, k = 1); at half the speed, half of both."""
+    has = v.keys().__contains__
+    if not (has("PLL_KP_GAIN") and has("PLL_KI_GAIN") and v.get("PLL_KPDIV")
+            and v.get("PLL_KIDIV")):
+        return None
+    kp, ki = v["PLL_KP_GAIN"] / v["PLL_KPDIV"], v["PLL_KI_GAIN"] / v["PLL_KIDIV"]
+    out = {"pll_kp": kp, "pll_ki": ki}
+    ke, e_fs = v.get("MOTOR_VOLTAGE_CONSTANT"), v.get("MAX_BEMF_VOLTAGE")
+    if not (ts and rpm and ke and e_fs):
+        return out
+    # Ke is V rms line-to-line per krpm: the observer's back-EMF is the phase peak
+    e_digits = 32768.0 * ke * rpm / 1000.0 * SQRT2 / SQRT3 / e_fs
+    g = e_digits * 2.0 * math.pi / 65536.0
+    out["tracking"] = {"at_speed_rpm": float(rpm), "bemf_digits": e_digits,
+                       "kp_per_s": kp * g / ts, "ki_per_s2": ki * g / ts ** 2,
+                       **(integrator_loop(kp * g / ts, ki * g / ts ** 2, 1.0) or {})}
+    return out
 
