@@ -18,7 +18,7 @@ import control
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from oracle import oracle_report, parse  # noqa: E402
-from loop_oracle import measure, pi  # noqa: E402
+from loop_oracle import current_loop, measure, pi  # noqa: E402
 from acim_oracle import ST_MEZ, expected as acim_expected  # noqa: E402
 
 #: Trainee number → the input of the motor a trainee link carries.
@@ -168,6 +168,7 @@ def expected(inp: dict) -> dict:
         # TI's IQ24 Kp with I_FS the largest reading ±V_ref/(2·R·G) and V_FS = U_dc, truncated
         "board-ti-kp": math.trunc(r["current_pi"]["q"]["kp"] * (3.3 / (2 * 0.007 * 10))
                                   / P["udc_v"] * 2 ** 24),
+        **AUDIT,
         # the induction motor of every trainee: ST's ACIM GUI example (acim_oracle.ST_MEZ)
         "acim-sigma": ACIM["acim"]["sigma"],
         "acim-tau-r-pu": ACIM["acim"]["pu"]["tau_r_s"],
@@ -176,3 +177,21 @@ def expected(inp: dict) -> dict:
 
 
 ACIM = acim_expected(ST_MEZ)
+
+
+def audit_answers() -> dict:
+    """The Workbench header of dronectl/g431-mcsdk read back by hand: a current digit is
+    (V_ref/2)/(R_shunt·G)/32767 A (NOMINAL_CURRENT's own comment), the PI is Kp·e/KPDIV +
+    ΣKi·e/KIDIV once per 1/20 kHz, a voltage digit (U_dc/√3)/32768 V (pu-lab's stated
+    assumption), the loop measured by python-control with one sample plus half a PWM period."""
+    i_digit = 3.3 / 2 / (0.003 * 9.14) / 32767
+    ts = 1 / 20000
+    kp_pu, ki_pu = 2312 / 128, 2158 / 4096
+    volts_per_amp = 24 / math.sqrt(3) / 32768 / (i_digit * 32767 / 32768)
+    kp, ki = kp_pu * volts_per_amp, ki_pu * volts_per_amp / ts
+    m = measure(current_loop(0.35, 0.0006, ts, kp, ki, "computation_pwm"), ts)
+    return {"audit-st-current": 870 * i_digit, "audit-st-zero": ki_pu / kp_pu / ts,
+            "audit-st-pm": m["phase_margin_deg"]}
+
+
+AUDIT = audit_answers()

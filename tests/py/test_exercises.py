@@ -20,10 +20,11 @@ import course_oracle  # noqa: E402
 #: Floats: the oracle and pulab compute the same formulas in another order; the base frequency of
 #: pi-choose-fb is pulab's bisection on its review against the oracle's closed form; the base
 #: speed of fw-base is pulab's closed-form MTPA against the oracle's numeric maximum of the torque,
-#: whose angle a flat maximum fixes only to about √ε (1e-8 relative).
+#: whose angle a flat maximum fixes only to about √ε (1e-8 relative); the phase margin of
+#: audit-st-pm is pulab's exact polynomial roots against python-control's (the loop goldens' 1e-6).
 REL = 1e-9
 REL_FB = 1e-6
-ROUGH = {"pi-choose-fb", "fw-base"}
+ROUGH = {"pi-choose-fb", "fw-base", "audit-st-pm"}
 
 
 @pytest.mark.parametrize("n", sorted(course_oracle.TRAINEES))

@@ -158,6 +158,14 @@ export interface AuditFinding {
 export interface AuditLoop {
   kp_v_per_a: number; ki_v_per_a_s: number; bandwidth_hz: number; zero_rad_s: number | null;
   plant_pole_rad_s: number; cancels_plant: boolean;
+  macros?: string[]; delay?: string; phase_margin_deg?: number | null; gain_margin_db?: number | null;
+  crossover_hz?: number | null; stable?: boolean;
+}
+/** A PI around an integrator (a speed loop, a PLL) as the audit reads it from its gains. */
+export interface AuditDynamics { bandwidth_hz?: number; natural_hz?: number; damping?: number; [key: string]: unknown }
+export interface AuditRangeProof {
+  verdict: 'proven' | 'violated' | 'unknown' | null; spread: number; error?: string; error_zh?: string;
+  constants?: Record<string, { verdict: string; range?: number[]; word?: number[] }>;
 }
 export interface Audit {
   profile: string; target: string; files: string[]; unresolved: string[];
@@ -167,7 +175,8 @@ export interface Audit {
   design: {
     input: Input; assumed: string[]; missing: string[];
     current_loop: Partial<Record<'d' | 'q', AuditLoop>>;
-    speed_loop: Record<string, number | null> | null; observer: Record<string, number | null> | null;
+    speed_loop: AuditDynamics | null; observer: Record<string, unknown> | null;
+    range_proof?: AuditRangeProof | null;
     [key: string]: unknown;
   };
   findings: AuditFinding[];

@@ -32,6 +32,7 @@ Examples
 from __future__ import annotations
 
 import copy
+import math
 import re
 
 from ..ctrace.errors import TraceError
@@ -44,6 +45,9 @@ from ..schema.catalog import render
 from ..schema.errors import InputError
 from ..schema.validate import shown
 from .cconst import NotConstant, evaluate
+from .loop.current import STATIC_PLANT, axis_loop
+from .prove import PROFILES as PROVABLE
+from .prove import prove
 
 __all__ = ["audit", "LIBRARY", "MAX_FILES", "MAX_CHARS"]
 
@@ -62,6 +66,9 @@ LIBRARY = {
                  ": (-2147483647L-1)) : 2147483647L))",
     "ACC32(x)": "((acc32_t)(((x) < 65535.999969482421875) ? (((x) >= -65536.0) ? (x)*32768.0 "
                 ": (-2147483647L-1)) : 2147483647L))",
+    # TI C2000Ware libraries/math/include/math.h (the universal lab's user_mtr1.h uses them)
+    "MATH_PI": "((float32_t)(3.1415926535897932384626433832f))",
+    "MATH_TWO_PI": "((float32_t)(6.283185307179586f))",
 }
 _LIB_NAMES = {k.split("(")[0] for k in LIBRARY}
 _STD_NAMES = {n for h in STANDARD_HEADERS.values() for n in h}
@@ -72,6 +79,14 @@ _SENTINEL = "__pulab_audit_"
 #: The inputs a report needs that a header may not fix (``design.missing`` names them).
 _REQUIRED = (("motor", ("rated_voltage_v", "rated_current_a", "rated_freq_hz", "rs_ohm", "ld_h",
                         "lq_h", "bemf_v", "pole_pairs")), ("drive", ("udc_v", "ts_s")))
+#: The delay model of the margins (the report's default: computation and PWM) and the phase
+#: margin below which a loop is called under-damped (the report's ``warning.current_low_pm``).
+_DELAY = "computation_pwm"
+_PM_LOW = 30.0
+#: The motor box of the range proof: every motor number of ``design.input`` × (1 ∓ 20 %), and
+#: the boxes the family prover may evaluate per constant (it answers ``unknown`` beyond).
+SPREAD = 0.2
+PROOF_BUDGET = 400
 _COMMENT = re.compile(r'"(?:\\.|[^"\\\n])*"|\'(?:\\.|[^\'\\\n])*\'|//(?:\\\r?\n|[^\n])*|/\*.*?(?:\*/|\Z)',
                       re.S)
 
@@ -219,9 +234,17 @@ def _comments(text: str) -> dict:
     return out
 
 
-def _undefined_if(src: _Source, macros: dict) -> list:
-    """Names an ``#if``/``#elif`` compares with ``==``/``!=`` that no file defines."""
-    names = []
+def _undefined_if(src: _Source, macros: dict, folded: dict) -> tuple:
+    """(names, accidental): the names an ``#if``/``#elif`` compares with ``==``/``!=`` that no
+    file defines, and whether some comparison has both sides 0 through undefined names (a
+    name no file defines, or a macro that expands only to such names): 0 == 0 then picks a
+    branch by accident. Otherwise such a branch can only never be chosen by its name."""
+    names, accidental = [], False
+
+    def undefined_zero(n: str) -> bool:
+        f = folded.get(n)
+        return n not in macros or (f is not None and bool(f["unknown"]) and not f["value"])
+
     for m in _IF.finditer(src.text):
         cond = re.sub(r"defined\s*\(?\s*\w+\s*\)?|//.*|/\*.*?\*/", " ", m[1])
         if "==" not in cond and "!=" not in cond:
@@ -229,7 +252,9 @@ def _undefined_if(src: _Source, macros: dict) -> list:
         for n in re.findall(r"[A-Za-z_]\w*", cond):
             if n not in macros and n not in names:
                 names.append(n)
-    return names
+        for a, b in re.findall(r"([A-Za-z_]\w*)\s*[=!]=\s*([A-Za-z_]\w*)", cond):
+            accidental = accidental or (undefined_zero(a) and undefined_zero(b))
+    return names, accidental
 
 
 def _fold_all(src: _Source, names: list, defines: dict, target: str, lines: dict) -> dict:
@@ -258,16 +283,101 @@ def _decoders() -> dict:
             if (f := provided(registry.get(n), "decode_header")) is not None}
 
 
-def _finding(severity: str, code: str, macros: list, params: dict, advice: str = "") -> dict:
+def _finding(severity: str, code: str, macros: list, params: dict, advice: str = "",
+             words: str | None = None) -> dict:
+    """A finding; ``words``: the catalog entry ``audit.<words>`` when not ``audit.<code>``."""
+    key = f"audit.{words or code}"
     return {"severity": severity, "code": code, "macros": macros,
-            "message": render(f"audit.{code}", params, "en"),
-            "message_zh": render(f"audit.{code}", params, "zh"), "advice": advice}
+            "message": render(key, params, "en"), "message_zh": render(key, params, "zh"),
+            "advice": advice}
+
+
+def _margins(design: dict) -> list:
+    """Each current-loop axis measured as the report measures a loop (the firmware PI, the ZOH
+    plant R + sL, one sample of computation and the PWM's half period,
+    :func:`pulab.analyses.loop.current.axis_loop`): its ``delay``, ``phase_margin_deg``,
+    ``gain_margin_db``, ``crossover_hz`` and ``stable`` are added to the axis; a
+    ``loop_margin`` finding when it is unstable (error) or under 30° of phase margin."""
+    motor = design.get("input", {}).get("motor", {})
+    ts = design.get("input", {}).get("drive", {}).get("ts_s")
+    out = []
+    for axis, c in design["current_loop"].items():
+        r, l = motor.get("rs_ohm"), motor.get("ld_h" if axis == "d" else "lq_h")
+        # R·Ts/L beyond STATIC_PLANT: the plant settles within a sample, no loop to measure
+        if not (ts and l and r is not None and r * ts / l <= STATIC_PLANT):
+            continue
+        try:
+            m = axis_loop(r, l, ts, c["kp_v_per_a"], c["ki_v_per_a_s"], _DELAY)
+        except (ArithmeticError, ValueError):
+            continue  # gains the header makes absurd (1e300 V/A): no margin is a number
+        if not all(map(math.isfinite, (m["spectral_radius"], *(x for x in (
+                m["phase_margin_deg"], m["gain_margin_db"]) if x is not None)))):
+            continue
+        c.update(delay=_DELAY, phase_margin_deg=m["phase_margin_deg"],
+                 gain_margin_db=m["gain_margin_db"], crossover_hz=m["crossover_hz"],
+                 stable=m["stable"])
+        pm = m["phase_margin_deg"]
+        if m["stable"] and (pm is None or pm >= _PM_LOW):
+            continue
+        out.append(_finding("error" if not m["stable"] else "warning", "loop_margin",
+                            list(c.get("macros", ())), {
+                                "axis": axis, "pm": "—" if pm is None else round(pm, 1),
+                                "gm": "—" if m["gain_margin_db"] is None
+                                else round(m["gain_margin_db"], 1),
+                                "fc": "—" if m["crossover_hz"] is None
+                                else round(m["crossover_hz"], 1),
+                                "ts": ts, "stable": "stable" if m["stable"] else "unstable",
+                                "stable_zh": "稳定" if m["stable"] else "不稳定"},
+                            "lower the bandwidth (kp) until the phase margin is 30° or more"))
+    return out
+
+
+def _range_proof(vendor: str, design: dict, macros: dict) -> tuple:
+    """(``design.range_proof``, findings): the vendor's constants for every motor within
+    ± :data:`SPREAD` of the one the files encode, decided by the family prover
+    (:func:`pulab.analyses.prove.prove`: interval evaluation of the profile's own code, so
+    ``proven`` holds for the whole box and ``violated`` comes with a motor that breaks it). A
+    violated constant is an ``overflow`` warning naming the macro and that motor."""
+    if design["missing"] or vendor not in PROVABLE:
+        return None, []
+    motor = design["input"].get("motor", {})
+    ranges = {f"motor.{k}": [x * (1.0 - SPREAD), x * (1.0 + SPREAD)] for k, x in motor.items()
+              if k != "pole_pairs" and isinstance(x, float) and x > 0}
+    if not ranges:
+        return None, []
+    try:
+        r = prove({"input": design["input"], "ranges": ranges, "profile": vendor,
+                   "budget": PROOF_BUDGET})
+    except InputError as e:
+        # a box end the report refuses (e.g. a rated voltage above the bus): no proof, said why
+        return {"verdict": None, "spread": SPREAD, "error": e.message,
+                "error_zh": e.message_zh}, []
+    out = {"verdict": r["verdict"], "spread": SPREAD, "ranges": r["ranges"], "constants": {}}
+    found = []
+    for name, e in r["integers"].items():
+        short = name.rsplit(".", 1)[-1]
+        keep = {k: e[k] for k in ("verdict", "range", "word", "kind", "statement",
+                                  "counterexample") if k in e}
+        out["constants"][short] = keep
+        if e["verdict"] != "violated":
+            continue
+        motor_at = (e.get("counterexample") or {}).get("motor", {})
+        at = ", ".join(f"{k} = {motor_at[k]:.6g}" for k in sorted(motor_at)
+                       if f"motor.{k}" in ranges)
+        found.append(_finding("warning", "overflow", [short] if short in macros else [], {
+            "macro": short, "spread": round(100 * SPREAD), "kind": e.get("kind", ""),
+            "statement": e.get("statement", ""), "at": at},
+            "a wider word, a larger scale or a smaller shift for this constant",
+            words="overflow_range"))
+    return out, found
 
 
 def _roundtrip(vendor: str, design: dict, macros: dict) -> tuple:
     """(``regenerated``, ``roundtrip``): pu-lab's header for ``design.input`` (None when the
-    files do not fix a whole report input, ``design.missing``) and, per macro both headers
-    define, file vs pu-lab (``delta_lsb`` for two integers, else ``delta_rel``)."""
+    files do not fix a whole report input, ``design.missing``) and, per macro the files define
+    and pu-lab generates — in its header, or among the profile's constants that the vendor's
+    own conversion file computes from the others (ST's ``C1``…``C5``) —, file vs pu-lab
+    (``delta_lsb`` for two integers, else ``delta_rel``)."""
     if design["missing"]:
         return None, {}
     from .. import profiles
@@ -275,14 +385,19 @@ def _roundtrip(vendor: str, design: dict, macros: dict) -> tuple:
     inp = copy.deepcopy(design["input"])
     inp.setdefault("profiles", {}).setdefault(vendor, {})
     try:
-        text = profiles.header(report(inp), vendor)
-        mine = _read([(f"pulab_{vendor}.h", text)], vendor, None)["macros"]
+        rep = report(inp)
+        text = profiles.header(rep, vendor)
+        mine = {n: m["value"] for n, m in
+                _read([(f"pulab_{vendor}.h", text)], vendor, None)["macros"].items()}
     except InputError as e:
         return {"header": None, "error": e.message, "error_zh": e.message_zh}, {}
+    for n, c in ((rep.get("profiles") or {}).get(vendor) or {}).get("constants", {}).items():
+        mine.setdefault(n, c.get("value") if isinstance(c, dict) else None)
     out = {}
     for n, m in macros.items():
-        a, b = m["value"], mine.get(n, {}).get("value")
-        if not isinstance(a, (int, float)) or not isinstance(b, (int, float)):
+        a, b = m["value"], mine.get(n)
+        if not isinstance(a, (int, float)) or not isinstance(b, (int, float)) \
+                or isinstance(b, bool):
             continue
         if isinstance(a, int) and isinstance(b, int):
             out[n] = {"file": a, "pulab": b, "delta_lsb": a - b}
@@ -325,6 +440,9 @@ def audit(files, profile: str | None = None, defines=None) -> dict:
         no macro of a known vendor, an unknown ``profile``.
     """
     out = _read(files, profile, defines)
+    out["design"]["range_proof"], found = _range_proof(out["profile"], out["design"],
+                                                       out["macros"])
+    out["findings"] += found
     out["regenerated"], out["roundtrip"] = _roundtrip(out["profile"], out["design"], out["macros"])
     return out
 
@@ -370,7 +488,10 @@ def _read(files, vendor: str | None, defines) -> dict:
             file, line = lines.get(n, (src.names[-1], 0))
             raise InputError("files", code="audit_define", file=file, line=line, name=n,
                              why=f["error"])
-    values = {n: f["value"] for n, f in folded.items() if f["value"] is not None}
+    # a -D value is the decoder's too (ST leaves SPEED_UNIT to its library), not a file's macro
+    given = _fold_all(src, list(defs), defs, target, {}) if defs else {}
+    values = {n: f["value"] for d in (given, folded) for n, f in d.items()
+              if f["value"] is not None}
     try:
         result = dec(values, comments)
     except (ArithmeticError, ValueError) as e:
@@ -380,6 +501,8 @@ def _read(files, vendor: str | None, defines) -> dict:
                          why=type(e).__name__) from None
     macros = {}
     for n, d in result["macros"].items():
+        if n not in folded:
+            continue  # given by -D, not by a file
         f = folded[n]
         file, line = lines.get(n, ("", 0))
         macros[n] = {"value": f["value"], "type": f["type"], **d,
@@ -392,13 +515,16 @@ def _read(files, vendor: str | None, defines) -> dict:
                 "ctype": folded[n]["type"]}))
     design = result["design"]
     design["current_loop"] = design.get("current_loop") or {}
+    findings += _margins(design)
     design.setdefault("assumed", [])
     design["missing"] = [f"{sec}.{k}" for sec, keys in _REQUIRED for k in keys
                          if k not in design.get("input", {}).get(sec, {})]
-    undefined = _undefined_if(src, pre.macros)
+    undefined, accidental = _undefined_if(src, pre.macros, folded)
     if undefined:
-        findings.insert(0, _finding("warning", "if_undefined", [], {"names": ", ".join(undefined)},
-                                    "give the file that defines them, or -D NAME=VALUE"))
+        findings.insert(0, _finding("warning" if accidental else "note", "if_undefined", [],
+                                    {"names": ", ".join(undefined)},
+                                    "give the file that defines them, or -D NAME=VALUE",
+                                    words=None if accidental else "if_undefined_unused"))
     other = {n: {"value": f["value"], "source": "{}:{}".format(*lines[n])}
              for n, f in folded.items() if n not in macros and n in lines
              and f["value"] is not None}

@@ -27,7 +27,7 @@ from ..schema.errors import InputError
 from ..schema.textnum import parse_int, parse_real
 from ..schema.validate import shown
 
-__all__ = ["EXERCISES", "EXAMPLE_ACIM", "BUGGY_RPM", "check", "answers", "trainee_input", "spec"]
+__all__ = ["EXERCISES", "EXAMPLE_ACIM", "EXAMPLE_HEADER", "BUGGY_RPM", "check", "answers", "trainee_input", "spec"]
 
 #: The "find the bug" routine: the Rpm statement of the vendor code without its ``(Ulong)``
 #: cast, so the product is computed in the 16-bit ``unsigned int`` of the C2000 and wraps.
@@ -51,6 +51,7 @@ class _Ctx:
         self.fw = None
         self.obs = None
         self.acim = None
+        self.audit = None
 
     def loop(self) -> dict:
         if self._loop is None:
@@ -212,6 +213,33 @@ def _acim(*keys) -> Callable[[_Ctx], object]:
     return get
 
 
+#: The numbers of a real generated header set: ST Motor Control Workbench's output for a
+#: B-G431B-ESC1 drone drive (dronectl/g431-mcsdk : Inc/pmsm_motor_parameters.h,
+#: drive_parameters.h, power_stage_parameters.h), written out as plain ``#define``s; the audit
+#: exercises read them back (the same header for every trainee).
+EXAMPLE_HEADER = (("st_workbench.h", "\n".join(f"#define {n} {v}" for n, v in (
+    ("RS", 0.35), ("LS", 0.0006), ("POLE_PAIR_NUM", 2), ("MOTOR_VOLTAGE_CONSTANT", 4.0),
+    ("MAX_APPLICATION_SPEED_RPM", 4000), ("NOMINAL_CURRENT", 870), ("PWM_FREQUENCY", 20000),
+    ("REGULATION_EXECUTION_RATE", 1), ("RSHUNT", 0.003), ("AMPLIFICATION_GAIN", 9.14),
+    ("ADC_REFERENCE_VOLTAGE", 3.3), ("NOMINAL_BUS_VOLTAGE_V", 24),
+    ("PID_TORQUE_KP_DEFAULT", 2312), ("PID_TORQUE_KI_DEFAULT", 2158),
+    ("PID_FLUX_KP_DEFAULT", 2312), ("PID_FLUX_KI_DEFAULT", 2158),
+    ("TF_KPDIV", 128), ("TF_KIDIV", 4096))) + "\n"),)
+
+
+def _audit(*keys) -> Callable[[_Ctx], object]:
+    """A value of the audit of :data:`EXAMPLE_HEADER` (:func:`pulab.analyses.audit.audit`)."""
+    def get(c: _Ctx):
+        if c.audit is None:
+            from .audit import audit
+            c.audit = audit(list(EXAMPLE_HEADER))
+        v = c.audit
+        for k in keys:
+            v = v[k]
+        return v
+    return get
+
+
 EXERCISES: tuple[Exercise, ...] = (
     # day one, step 1: per-unit intuition
     Exercise("warmup-current", "00-warm-up", "real", lambda c: 2.0 / c.r["base"]["I_b"], 0.01),
@@ -274,6 +302,13 @@ EXERCISES: tuple[Exercise, ...] = (
     Exercise("board-pu", "09-vendors", "real", lambda c: _board(c)["pu_per_count"], 0.01),
     Exercise("board-gain", "09-vendors", "real", _board_gain, 0.01, "V/V"),
     Exercise("board-ti-kp", "09-vendors", "int", _board_ti_kp),
+    # reference: a real generated header read back (EXAMPLE_HEADER, the same for every trainee)
+    Exercise("audit-st-current", "09-vendors", "real", _audit("macros", "NOMINAL_CURRENT", "si"),
+             0.01, "A"),
+    Exercise("audit-st-zero", "09-vendors", "real",
+             _audit("design", "current_loop", "q", "zero_rad_s"), 0.01, "rad/s"),
+    Exercise("audit-st-pm", "09-vendors", "real",
+             _audit("design", "current_loop", "q", "phase_margin_deg"), 0.01, "°"),
     # reference: induction motors, the same bases (the example motor EXAMPLE_ACIM)
     Exercise("acim-sigma", "06-conventions", "real", _acim("acim", "sigma"), 0.01),
     Exercise("acim-tau-r-pu", "06-conventions", "real", _acim("acim", "pu", "tau_r_s"), 0.01),

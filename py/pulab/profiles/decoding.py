@@ -19,7 +19,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["macro", "result", "current_loop", "check", "loop_margin_checks", "near", "numbers_in"]
+__all__ = ["macro", "result", "current_loop", "integrator_loop", "check", "near", "numbers_in"]
 
 
 def macro(si, unit: str | None, meaning: str, formula: str) -> dict:
@@ -34,8 +34,9 @@ def result(reads, target: str, macros: dict, design: dict, checks: list) -> dict
             "checks": checks}
 
 
-def current_loop(kp: float, ki: float, r: float, l: float) -> dict | None:
-    """The current loop of a parallel PI ``kp + ki/s`` [V/A, V/(A·s)] on the plant ``1/(Ls+R)``.
+def current_loop(kp: float, ki: float, r: float, l: float, macros=()) -> dict | None:
+    """The current loop of a parallel PI ``kp + ki/s`` [V/A, V/(A·s)] on the plant ``1/(Ls+R)``;
+    ``macros``: the names that store its gains (kept as ``macros``).
 
     ``zero_rad_s`` = ki/kp; ``cancels_plant`` when it is R/L within 1 %; ``bandwidth_hz`` the
     crossover of the continuous open loop, |kp + ki/(jω)| = |jωL + R|, i.e. the positive root
@@ -49,24 +50,36 @@ def current_loop(kp: float, ki: float, r: float, l: float) -> dict | None:
     x = (-b + math.sqrt(b * b + 4.0 * l * l * ki * ki)) / (2.0 * l * l)
     return {"kp_v_per_a": kp, "ki_v_per_a_s": ki, "bandwidth_hz": math.sqrt(x) / (2.0 * math.pi),
             "zero_rad_s": zero, "plant_pole_rad_s": pole,
-            "cancels_plant": zero is not None and abs(zero / pole - 1.0) <= 0.01}
+            "cancels_plant": zero is not None and abs(zero / pole - 1.0) <= 0.01,
+            "macros": list(macros)}
+
+
+def integrator_loop(kp: float, ki: float, k: float) -> dict | None:
+    """A PI ``kp + ki/s`` around an integrating plant ``k/s`` (a speed loop: current to speed,
+    ``k`` = (speed unit/s) per A; a PLL: ``k`` = 1, gains in rad/s per rad and rad/s² per rad).
+
+    Closed loop s² + k·kp·s + k·ki = 0: ``natural_hz`` = √(k·ki)/2π, ``damping`` ζ =
+    k·kp/(2·√(k·ki)); ``bandwidth_hz`` the open loop's crossover, |k·(kp + ki/jω)/jω| = 1,
+    i.e. ω² = (k²kp² + √(k⁴kp⁴ + 4k²ki²))/2; ``zero_rad_s`` = ki/kp. None when a gain or ``k``
+    is not positive (no loop to speak of).
+
+    >>> c = integrator_loop(2 * 0.7 * 100.0, 100.0 ** 2, 1.0)
+    >>> round(c["natural_hz"] * 2 * math.pi, 6), round(c["damping"], 6)
+    (100.0, 0.7)
+    """
+    if not (kp > 0 and ki > 0 and k > 0 and math.isfinite(kp * ki * k)):
+        return None
+    wn = math.sqrt(k * ki)
+    a = (k * kp) ** 2
+    wc = math.sqrt((a + math.sqrt(a * a + 4.0 * k * k * ki * ki)) / 2.0)
+    return {"bandwidth_hz": wc / (2.0 * math.pi), "natural_hz": wn / (2.0 * math.pi),
+            "damping": k * kp / (2.0 * wn), "zero_rad_s": ki / kp}
 
 
 def check(severity: str, code: str, macros: list, advice: str = "", **params) -> tuple:
     """A finding of the vendor's: (severity, code, macros, params, advice); the words are the
     catalog's ``audit.<code>``."""
     return severity, code, macros, params, advice
-
-
-def loop_margin_checks(loops: dict, ts: float, macros: list) -> list:
-    """A ``loop_margin`` warning per current-loop axis whose bandwidth ω_c·T_s exceeds 0.2."""
-    out = []
-    for axis, c in loops.items():
-        wts = 2.0 * math.pi * c["bandwidth_hz"] * ts
-        if wts > 0.2:
-            out.append(check("warning", "loop_margin", macros, axis=axis, wts=round(wts, 3),
-                             bw=round(c["bandwidth_hz"], 1), ts=ts))
-    return out
 
 
 def near(a: float, b: float, rel: float) -> bool:

@@ -905,17 +905,27 @@ MESSAGES = {
     "audit.overflow": ("{macro}: the compiler's value {value} is not the {ideal} its formula "
                        "means: it does not fit {ctype}",
                        "{macro}：编译器得到的 {value} 不是公式所指的 {ideal}：超出 {ctype} 范围"),
+    "audit.overflow_range": ("{macro}: fits for this motor, but not for every motor within ± "
+                             "{spread} % ({kind} at {statement}; e.g. {at})",
+                             "{macro}：对本电机不溢出，但在 ±{spread} % 范围内的电机中并非都不溢出"
+                             "（{kind}，位于 {statement}；例如 {at}）"),
     "audit.rounding": ("{macro} = {value} stands for {ideal}: rounding costs {err} %",
                        "{macro} = {value} 代表 {ideal}：取整误差 {err} %"),
     "audit.if_undefined": ("#if compares names no given file defines ({names}): each is 0, so "
                            "the first such branch is taken whatever was meant",
                            "#if 比较了所给文件中都未定义的名字（{names}）：它们都为 0，因此总是取"
                            "第一个这样的分支"),
-    "audit.loop_margin": ("{axis} current loop: ω_c·Ts = {wts} (bandwidth {bw} Hz at Ts = {ts} "
-                          "s): above 0.2 the sampling and computation delay cost more than "
-                          "17° of phase margin",
-                          "{axis} 轴电流环：ω_c·Ts = {wts}（带宽 {bw} Hz，Ts = {ts} s）：超过 0.2 "
-                          "时采样与计算延迟使相位裕度损失超过 17°"),
+    "audit.if_undefined_unused": ("#if compares names no given file defines ({names}): the "
+                                  "files' own choice is not affected, but a branch compared with "
+                                  "them cannot be chosen by that name",
+                                  "#if 比较了所给文件中都未定义的名字（{names}）：不影响文件当前的选择，"
+                                  "但与它们比较的分支无法按该名字选中"),
+    "audit.loop_margin": ("{axis} current loop with one sample of computation and the PWM's "
+                          "half period (Ts = {ts} s): {stable}, phase margin {pm}°, gain margin "
+                          "{gm} dB, crossover {fc} Hz (the report wants 30° or more)",
+                          "{axis} 轴电流环（计入一个采样周期的计算延迟与 PWM 半周期，Ts = {ts} s）："
+                          "{stable_zh}，相位裕度 {pm}°，增益裕度 {gm} dB，穿越频率 {fc} Hz"
+                          "（报告要求相位裕度不低于 30°）"),
 }
 
 

@@ -3,7 +3,7 @@
 import { h, keepFocus, num, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
-import type { Audit, AuditRequest } from '../api-types';
+import type { Audit, AuditDynamics, AuditRequest } from '../api-types';
 import type { Reply } from '../protocol';
 import { encodeHash } from '../state';
 
@@ -87,10 +87,29 @@ function loopTable(d: Audit): HTMLElement | null {
     const k = `audit.design.current_loop.${a}`;
     return [[a, num(`${k}.kp_v_per_a`, c.kp_v_per_a, { unit: 'V/A' }), num(`${k}.ki_v_per_a_s`, c.ki_v_per_a_s, { unit: 'V/(A·s)' }),
       num(`${k}.bandwidth_hz`, c.bandwidth_hz, { unit: 'Hz' }), num(`${k}.zero_rad_s`, c.zero_rad_s, { unit: 'rad/s' }),
-      num(`${k}.plant_pole_rad_s`, c.plant_pole_rad_s, { unit: 'rad/s' }), c.cancels_plant ? t('au_yes') : t('au_no')]];
+      num(`${k}.plant_pole_rad_s`, c.plant_pole_rad_s, { unit: 'rad/s' }), c.cancels_plant ? t('au_yes') : t('au_no'),
+      typeof c.phase_margin_deg === 'number' ? num(`${k}.phase_margin_deg`, c.phase_margin_deg, { unit: '°', sig: 3 }) : (c.stable === false ? t('au_unstable') : '')]];
   });
   if (!rows.length) return null;
-  return h('div', { class: 'scroll' }, table([t('au_axis'), 'kp', 'ki', t('au_bw'), t('au_zero'), t('au_pole'), t('au_cancels')], rows, 'dtable'));
+  return h('div', { class: 'scroll' }, table([t('au_axis'), 'kp', 'ki', t('au_bw'), t('au_zero'), t('au_pole'), t('au_cancels'), t('au_pm')], rows, 'dtable'));
+}
+
+/** The speed loop and the observers whose bandwidth and damping the gains give. */
+function dynamicsTable(d: Audit): HTMLElement | null {
+  const obs = (d.design.observer ?? {}) as Record<string, unknown>;
+  const parts: [string, string, AuditDynamics | null | undefined][] = [
+    [t('au_speed'), 'audit.design.speed_loop', d.design.speed_loop],
+    [t('au_tracking'), 'audit.design.observer.tracking', obs.tracking as AuditDynamics | undefined],
+    [t('au_bemf'), 'audit.design.observer.bemf', obs.bemf as AuditDynamics | undefined],
+  ];
+  const rows = parts.filter(([, , x]) => x && typeof x.natural_hz === 'number').map(([name, k, x]) => [
+    name,
+    typeof x!.bandwidth_hz === 'number' ? num(`${k}.bandwidth_hz`, x!.bandwidth_hz, { unit: 'Hz' }) : '',
+    num(`${k}.natural_hz`, x!.natural_hz as number, { unit: 'Hz' }),
+    num(`${k}.damping`, x!.damping as number, { sig: 3 }),
+  ]);
+  if (!rows.length) return null;
+  return h('div', { class: 'scroll' }, table(['', t('au_bw'), t('au_natural'), t('au_damping')], rows, 'dtable'));
 }
 
 function motorTable(d: Audit): HTMLElement {
@@ -160,7 +179,10 @@ export const auditPanel: Panel = {
             ? h('ul', { class: 'findings' }, ok.findings.map((f) => h('li', { class: `sev-${f.severity}`, 'data-finding': f.code },
               h('b', {}, `${f.severity} · ${f.code}`), ' ', getLang() === 'zh' ? f.message_zh : f.message, f.advice ? h('span', { class: 'hint' }, ` — ${f.advice}`) : null)))
             : h('p', {}, t('au_none')),
-          h('h3', {}, t('au_loop')), loopTable(ok) ?? h('p', {}, t('au_noloop')),
+          h('h3', {}, t('au_loop')), loopTable(ok) ?? h('p', {}, t('au_noloop')), dynamicsTable(ok),
+          ok.design.range_proof?.verdict
+            ? h('p', { 'data-audit-proof': ok.design.range_proof.verdict }, t('au_proof', { verdict: t(`au_v_${ok.design.range_proof.verdict}`) }))
+            : null,
           h('h3', {}, t('au_design')), motorTable(ok),
           ok.design.missing.length
             ? h('p', { class: 'hint' }, `${t('au_missing')}: ${ok.design.missing.join(', ')}`)

@@ -70,6 +70,24 @@ def _si_unit(number: str, unit: str) -> tuple:
     return x, unit
 
 
+def _against_comments(v: dict, notes: dict) -> dict:
+    """Every integer whose comment prints the value it was designed for, re-derived from it:
+    name → the integer minus round(designed/scale·2^Q), the scale being the comment's printed SI
+    value (8 digits) over the integer: the generator's own rounding checked (an
+    integer edited after generation is ``comment_stale``: its printed Q value no longer
+    matches)."""
+    out = {}
+    for n, note in notes.items():
+        c = _COMMENT.search(note) if isinstance(note, str) else None
+        if c is None or not isinstance(v.get(n), int) or not v[n]:
+            continue
+        got, _ = _si_unit(c[3], c[4])
+        want, _ = _si_unit(c[5], c[6])
+        if got:
+            out[n] = v[n] - round(want / got * v[n])
+    return out
+
+
 def decode_header(values: dict, notes: dict) -> dict:
     """Microchip macros in SI, the design and the checks (:mod:`pulab.profiles.decoding`)."""
     v = values
@@ -104,7 +122,7 @@ def decode_header(values: dict, notes: dict) -> dict:
             continue
         scales[n] = scale
         out[n] = macro(norm * scale, unit, meaning, f"{n}/2^{q}·{source}")
-    design: dict = {"assumed": []}
+    design: dict = {"assumed": [], "comment_checked": _against_comments(v, notes)}
     g = {n: out[n]["si"] for n in out}
     motor: dict = {}
     for key, names in (("rs_ohm", ("MCAF_MOTOR_RS", "MOTOR_PARAM_R")),
@@ -125,7 +143,7 @@ def decode_header(values: dict, notes: dict) -> dict:
     loops = {}
     if "KIP" in g and "KII" in g and "rs_ohm" in motor:
         for axis, key in (("d", "ld_h"), ("q", "lq_h")):
-            c = current_loop(g["KIP"], g["KII"], motor["rs_ohm"], motor[key]) \
+            c = current_loop(g["KIP"], g["KII"], motor["rs_ohm"], motor[key], ("KIP", "KII")) \
                 if key in motor else None
             if c is not None:
                 loops[axis] = c

@@ -13,7 +13,8 @@ formulas are those of :mod:`pulab.profiles.nxp.scaling` (MCAT's ``inner_CLoop.js
 - the current PI: kp = K_p·U_max/I_max [V/A], ki = K_i·U_max/I_max·k/T_s with k = 2 (MCAT's
   trapezoidal integrator; the JSON decides when present), and from them MCAT's own design
   inputs ω0 = √(ki/L), ξ = (kp + R_s)/(2·ω0·L);
-- the speed PI (in A per electrical rad/s): kp = K_p·I_max/ω_max, ki = K_i·I_max/ω_max/T_speed.
+- the speed PI (in A per electrical rad/s): kp = K_p·I_max/ω_max, ki = K_i·I_max/ω_max·k/T_speed
+  (the same controller as the current loop, so the same k; T_speed from the JSON).
 
 The MCAT JSON in the header's first comment (its inputs) is read and every constant it
 determines is computed again from it and compared in LSB (MCAT prints 6 significant digits,
@@ -33,7 +34,7 @@ import json
 import math
 
 from ..common import SQRT3
-from ..decoding import check, current_loop, loop_margin_checks, macro, result
+from ..decoding import check, current_loop, integrator_loop, macro, result
 
 __all__ = ["decode_header"]
 
@@ -167,6 +168,37 @@ def _expected(j: dict, k: float, flt: bool) -> dict:
     return out
 
 
+def _observer(v: dict, flt: bool, ts, ts_theta, w_max, i_max, motor: dict) -> dict | None:
+    """The back-EMF observer and the tracking observer (:mod:`pulab.profiles.nxp.observer`'s
+    formulas read backwards): the BEMF observer's kp = 2ζω0·L_d − R_s [Ω], ki = L_d·ω0² [Ω/s]
+    (fractional: ·E_max/I_max/2^15, ki per T_s), so ω0 = √(ki/L_d), ζ = (kp + R_s)/(2ω0·L_d);
+    the tracking observer's kp = 2ζω_t, ki = ω_t² (fractional: gain·2^shift/2^15·ω_max, ki per
+    T_s): a PLL, :func:`pulab.profiles.decoding.integrator_loop` with k = 1."""
+    has = v.keys().__contains__
+    out = {}
+    if has("M1_TO_THETA_GAIN") and (flt or has("M1_TO_THETA_SHIFT")):
+        out["tracking_theta_gain"] = v["M1_TO_THETA_GAIN"] if flt else \
+            v["M1_TO_THETA_GAIN"] / _Q15 * 2.0 ** v["M1_TO_THETA_SHIFT"]
+        out["ts_from_theta_s"] = ts_theta
+    if ts and all(map(has, ("M1_TO_KP_GAIN", "M1_TO_KI_GAIN"))) and (
+            flt or (w_max and has("M1_TO_KP_SHIFT") and has("M1_TO_KI_SHIFT"))):
+        g = (lambda n: v[f"{n}_GAIN"]) if flt else \
+            (lambda n: v[f"{n}_GAIN"] / _Q15 * 2.0 ** v[f"{n}_SHIFT"] * w_max)
+        t = integrator_loop(g("M1_TO_KP"), g("M1_TO_KI") / ts, 1.0)
+        if t is not None:
+            out["tracking"] = {"kp_per_s": g("M1_TO_KP"), "ki_per_s2": g("M1_TO_KI") / ts, **t}
+    ld, rs, e_max = motor.get("ld_h"), motor.get("rs_ohm"), v.get("M1_E_MAX")
+    if ts and ld and rs is not None and has("M1_BEMF_DQ_KP_GAIN") and has("M1_BEMF_DQ_KI_GAIN") \
+            and (flt or (e_max and i_max)):
+        g = 1.0 if flt else e_max / i_max / _Q15
+        kp, ki = v["M1_BEMF_DQ_KP_GAIN"] * g, v["M1_BEMF_DQ_KI_GAIN"] * g / ts
+        if ki > 0:
+            w0 = math.sqrt(ki / ld)
+            out["bemf"] = {"kp_ohm": kp, "ki_ohm_per_s": ki, "natural_hz": w0 / (2.0 * math.pi),
+                           "damping": (kp + rs) / (2.0 * w0 * ld)}
+    return out or None
+
+
 def decode_header(values: dict, notes: dict) -> dict:
     """NXP MCAT macros in SI, the design, the checks against the embedded JSON
     (:mod:`pulab.profiles.decoding`)."""
@@ -278,7 +310,7 @@ def decode_header(values: dict, notes: dict) -> dict:
         out[ki_n] = macro(ki, "V/(A·s)", f"current PI ki, {axis} axis",
                           f"{ki_n}{scaled}·{k:g}/T_s")
         l = motor.get(l_key)
-        c = current_loop(kp, ki, motor["rs_ohm"], l) if l and "rs_ohm" in motor else None
+        c = current_loop(kp, ki, motor["rs_ohm"], l, (kp_n, ki_n)) if l and "rs_ohm" in motor else None
         if c is not None:
             w0 = math.sqrt(ki / l) if ki > 0 else None
             c["mcat_f0_hz"] = w0 / (2.0 * math.pi) if w0 else None
@@ -288,7 +320,6 @@ def decode_header(values: dict, notes: dict) -> dict:
                 c["bandwidth_hz"] = c["mcat_f0_hz"]
             loops[axis] = c
     design["current_loop"] = loops or None
-    checks += loop_margin_checks(loops, ts, list(_GAINS))
     speed = None
     if has("M1_SPEED_PI_PROP_GAIN") and (flt or (i_max and w_max)):
         g = 1.0 if flt else i_max / w_max / _Q15
@@ -297,18 +328,29 @@ def decode_header(values: dict, notes: dict) -> dict:
             ki_per_sample = v["M1_SPEED_PI_INTEG_GAIN"] * g
             tsp = (j or {}).get("speedLoop", {}).get("speedLoopSampleTime")
             speed["ki_a_per_rad_s_per_sample"] = ki_per_sample
-            speed["ki_a_per_rad"] = ki_per_sample / tsp if isinstance(tsp, (int, float)) else None
+            speed["ki_a_per_rad"] = ki_per_sample * k / tsp if isinstance(tsp, (int, float)) \
+                else None
+            scaled = "" if flt else "/2^15·I_max/ω_max"
+            out["M1_SPEED_PI_INTEG_GAIN"] = (
+                macro(speed["ki_a_per_rad"], "A/rad", "speed PI ki (electrical rad)",
+                      f"M1_SPEED_PI_INTEG_GAIN{scaled}·{k:g}/T_speed (T_speed: the MCAT JSON)")
+                if speed["ki_a_per_rad"] is not None else
+                macro(ki_per_sample, "A/(rad/s)", "speed PI ki per speed-loop sample",
+                      f"M1_SPEED_PI_INTEG_GAIN{scaled}"))
         out["M1_SPEED_PI_PROP_GAIN"] = macro(speed["kp_a_per_rad_s"], "A/(rad/s)",
                                              "speed PI kp (electrical rad/s)",
                                              "M1_SPEED_PI_PROP_GAIN"
                                              + ("" if flt else "/2^15·I_max/ω_max"))
     design["speed_loop"] = speed
-    design["observer"] = None
-    if flt and has("M1_TO_THETA_GAIN"):
-        design["observer"] = {"tracking_theta_gain": v["M1_TO_THETA_GAIN"], "ts_from_theta_s": ts_theta}
-    elif has("M1_TO_THETA_GAIN") and has("M1_TO_THETA_SHIFT"):
-        design["observer"] = {"tracking_theta_gain": v["M1_TO_THETA_GAIN"] / _Q15
-                              * 2.0 ** v["M1_TO_THETA_SHIFT"], "ts_from_theta_s": ts_theta}
+    if speed is not None and speed.get("ki_a_per_rad"):
+        # the mechanics only the JSON states: Kt [N·m/A] and J [kg·m²] → el. rad/s² per A
+        p = (j or {}).get("parameters", {})
+        kt, jm = p.get("parametersKt"), p.get("parametersJ")
+        if isinstance(kt, (int, float)) and isinstance(jm, (int, float)) and jm > 0 and pp:
+            speed["plant_rad_s2_per_a"] = pp * kt / jm
+            speed.update(integrator_loop(speed["kp_a_per_rad_s"], speed["ki_a_per_rad"],
+                                         speed["plant_rad_s2_per_a"]) or {})
+    design["observer"] = _observer(v, flt, ts, ts_theta, w_max, i_max, motor)
     # the JSON: every constant it determines, again, in LSB (a float: relative, 6 digits printed)
     for n, (x, f, per) in expected.items():
         if not has(n):
@@ -327,7 +369,15 @@ def decode_header(values: dict, notes: dict) -> dict:
                                 diff=delta))
     design["json_checked"] = sorted(n for n in expected if has(n))
     for n in _GAINS + ("M1_SPEED_PI_PROP_GAIN", "M1_SPEED_PI_INTEG_GAIN"):
-        if isinstance(v.get(n), int) and v[n] and 1.0 / abs(v[n]) > 0.01:  # ACC32 truncates: up to 1 LSB lost
+        if not (isinstance(v.get(n), int) and v[n]):
+            continue
+        if n in expected and expected[n][1] is not None:
+            # the JSON's inputs give the value the integer truncates
+            x = expected[n][0] * expected[n][2]
+            if x and abs(x - v[n]) / abs(x) > 0.01:
+                checks.append(check("warning", "rounding", [n], "", macro=n, value=v[n],
+                                    ideal=f"{x:.4f}", err=round(100.0 * (v[n] - x) / x, 2)))
+        elif 1.0 / abs(v[n]) > 0.01:  # ACC32 truncates: up to 1 LSB lost
             checks.append(check("warning", "rounding", [n], "", macro=n, value=v[n],
                                 ideal=f"{n} + [0, 1) LSB", err=round(100.0 / abs(v[n]), 2)))
     drive: dict = {}

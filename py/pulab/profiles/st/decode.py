@@ -26,7 +26,7 @@ from __future__ import annotations
 import math
 
 from ..common import SQRT2, SQRT3
-from ..decoding import check, current_loop, loop_margin_checks, macro, result
+from ..decoding import check, current_loop, integrator_loop, macro, result
 
 __all__ = ["decode_header"]
 
@@ -68,7 +68,31 @@ _PLAIN = {
 _CURRENTS = ("NOMINAL_CURRENT", "IQMAX", "ID_DEMAG")
 _GAINS = ("PID_TORQUE_KP_DEFAULT", "PID_TORQUE_KI_DEFAULT", "PID_FLUX_KP_DEFAULT",
           "PID_FLUX_KI_DEFAULT")
-READS = tuple(_PLAIN) + _CURRENTS + _GAINS
+_SPEED = ("PID_SPEED_KP_DEFAULT", "PID_SPEED_KI_DEFAULT")
+READS = tuple(_PLAIN) + _CURRENTS + _GAINS + _SPEED
+
+
+def _speed_loop(v: dict, i_digit: float | None, out: dict) -> dict | None:
+    """The speed PI in SI: the error is in 1/``SPEED_UNIT`` Hz of mechanical speed (MCSDK's
+    ``mc_stm_types.h``: 10 for 0.1 Hz; the file leaves it to that library, so it must be given,
+    ``-D SPEED_UNIT=10``), the output in current digits, Ki once per speed-loop period:
+    kp = KP/SP_KPDIV·i_digit·SPEED_UNIT/2π [A/(rad/s)], ki = KI/SP_KIDIV·i_digit·SPEED_UNIT/2π·
+    f_speed [A/rad]. The files hold no inertia, so no bandwidth."""
+    has = v.keys().__contains__
+    if not (all(map(has, _SPEED + ("SPEED_UNIT", "SPEED_LOOP_FREQUENCY_HZ")))
+            and v.get("SP_KPDIV") and v.get("SP_KIDIV") and i_digit):
+        return None
+    per = i_digit * v["SPEED_UNIT"] / (2.0 * math.pi)
+    kp = v["PID_SPEED_KP_DEFAULT"] / v["SP_KPDIV"] * per
+    ki = v["PID_SPEED_KI_DEFAULT"] / v["SP_KIDIV"] * per * v["SPEED_LOOP_FREQUENCY_HZ"]
+    out["PID_SPEED_KP_DEFAULT"] = macro(kp, "A/(rad/s)", "speed PI kp (mechanical rad/s)",
+                                        "PID_SPEED_KP_DEFAULT/SP_KPDIV·(V_ref/2)/(32767·R_shunt·G)"
+                                        "·SPEED_UNIT/2π")
+    out["PID_SPEED_KI_DEFAULT"] = macro(ki, "A/rad", "speed PI ki (mechanical rad)",
+                                        "PID_SPEED_KI_DEFAULT/SP_KIDIV·(V_ref/2)/(32767·R_shunt·G)"
+                                        "·SPEED_UNIT/2π·SPEED_LOOP_FREQUENCY_HZ")
+    return {"kp_a_per_rad_s": kp, "ki_a_per_rad": ki, "zero_rad_s": ki / kp if kp else None,
+            "period_s": 1.0 / v["SPEED_LOOP_FREQUENCY_HZ"], "macros": list(_SPEED)}
 
 
 def decode_header(values: dict, notes: dict) -> dict:
@@ -174,7 +198,7 @@ def decode_header(values: dict, notes: dict) -> dict:
             out[kp_n].update(si=kp, unit="V/A", formula=f"{kp_n}/TF_KPDIV·(U_dc/√3)/MAX_CURRENT")
             out[ki_n].update(si=ki, unit="V/(A·s)",
                              formula=f"{ki_n}/TF_KIDIV·(U_dc/√3)/MAX_CURRENT/T")
-            c = current_loop(kp, ki, r, l)
+            c = current_loop(kp, ki, r, l, (kp_n, ki_n))
             if c is not None:
                 loops[axis] = c
     if r and l and ts and "ki_over_kp_per_sample" in design and design["ki_over_kp_per_sample"]:
@@ -193,16 +217,37 @@ def decode_header(values: dict, notes: dict) -> dict:
                                  "read in a public file): kp, ki and the bandwidth in SI follow "
                                  "it; Ki/Kp per sample does not")
     design["current_loop"] = loops or None
-    checks += loop_margin_checks(loops, ts, list(_GAINS))
     if loops:
         design["input"]["current_loop"] = {"method": "manual",
                                            "kp": loops["q" if "q" in loops else "d"]["kp_v_per_a"],
                                            "ki": loops["q" if "q" in loops else "d"]["ki_v_per_a_s"]}
-    design["speed_loop"] = None
-    design["observer"] = ({"pll_kp": v["PLL_KP_GAIN"] / v["PLL_KPDIV"],
-                           "pll_ki": v["PLL_KI_GAIN"] / v["PLL_KIDIV"]}
-                          if all(map(has, ("PLL_KP_GAIN", "PLL_KI_GAIN")))
-                          and v.get("PLL_KPDIV") and v.get("PLL_KIDIV")
-                          else None)
+    design["speed_loop"] = _speed_loop(v, i_digit, out)
+    design["observer"] = _pll(v, ts, rpm)
     return result(READS, "arm", out, design, checks)
+
+
+def _pll(v: dict, ts: float | None, rpm: float | None) -> dict | None:
+    """The state observer's PLL (MCSDK ``sto_pll_speed_pos_fdbk.c``, ``STO_ExecutePLL``): its
+    error is e_β·cos θ̂ − e_α·sin θ̂ = E·sin(θ − θ̂) in back-EMF digits (32768 per
+    ``MAX_BEMF_VOLTAGE`` volts, the scale ``C3`` gives the observer), its PI
+    (Kp·e/PLL_KPDIV + ΣKi·e/PLL_KIDIV) is the speed in angle digits (65536 per turn) per FOC
+    period. So the loop gain grows with the back-EMF: at the maximum application speed,
+    g = E_digits·2π/65536 and kp = Kp/PLL_KPDIV·g/T [1/s], ki = Ki/PLL_KIDIV·g/T² [1/s²]
+    (:func:`pulab.profiles.decoding.integrator_loop`, k = 1); at half the speed, half of both."""
+    has = v.keys().__contains__
+    if not (has("PLL_KP_GAIN") and has("PLL_KI_GAIN") and v.get("PLL_KPDIV")
+            and v.get("PLL_KIDIV")):
+        return None
+    kp, ki = v["PLL_KP_GAIN"] / v["PLL_KPDIV"], v["PLL_KI_GAIN"] / v["PLL_KIDIV"]
+    out = {"pll_kp": kp, "pll_ki": ki}
+    ke, e_fs = v.get("MOTOR_VOLTAGE_CONSTANT"), v.get("MAX_BEMF_VOLTAGE")
+    if not (ts and rpm and ke and e_fs):
+        return out
+    # Ke is V rms line-to-line per krpm: the observer's back-EMF is the phase peak
+    e_digits = 32768.0 * ke * rpm / 1000.0 * SQRT2 / SQRT3 / e_fs
+    g = e_digits * 2.0 * math.pi / 65536.0
+    out["tracking"] = {"at_speed_rpm": float(rpm), "bemf_digits": e_digits,
+                       "kp_per_s": kp * g / ts, "ki_per_s2": ki * g / ts ** 2,
+                       **(integrator_loop(kp * g / ts, ki * g / ts ** 2, 1.0) or {})}
+    return out
 

@@ -4,9 +4,27 @@ MotorWare's ``user.h`` read back (``decode_header``).
 The universal lab keeps the motor in SI floats (``USER_MOTOR1_Rs_Ohm``, ``…_Ls_d_H``,
 ``…_RATED_FLUX_VpHz``: the peak phase back-EMF per electrical Hz, so ψ = flux/(2π)) and the
 board as ADC full scales (``USER_M1_ADC_FULL_SCALE_CURRENT_A``: the whole ADC range, ±half
-of it; ``…_VOLTAGE_V``); its current PI is computed at run time (motor_common.c), so the
-design has no current loop unless the file stores gains (MotorWare's IQ24 ``Kp``/``Ki``,
-series form: kp = Kp/2^Q·V_FS/I_FS, ki = kp·Ki/2^Q/T; :func:`pulab.profiles.ti.scaling.ints_to_gains`).
+of it; ``…_VOLTAGE_V``). Its PIs are computed at run time from these macros, and the design
+reproduces that computation (``anyway-blows/ti-c2000-motor-control-sdk :
+solutions/universal_motorcontrol_lab/common/source/motor_common.c``, ``setupControllers``, and
+``…/user_mtr1.c``, ``USER_setMotor1Params``, with ``flag_bypassMotorId = true`` as
+``…/sys_main.c`` sets it): BW_c = 2π·400 rad/s and δ = 10 — the AM26x SDK's copy of the lab
+(``TexasInstruments/motor-control-sdk : examples/tidm_02018_universal_motorcontrol/
+universal_motorcontrol/src_board/user_mtr1.c``; told apart by its speed-gain schedule macros
+``USER_MOTOR1_KP_SPD_HIGH_SF``) sets 2π·200 rad/s and δ = 20 —, the current PI (series form of
+``libraries/control/pi/include/pi.h``: U_i += Ki·Kp·e, so ki = Kp·Ki/T)
+
+    Kp = L·BW_c [V/A],  Ki = 0.25·(R/L)·T_cur,  i.e. ki = 0.25·R·BW_c [V/(A·s)]
+
+(T_cur = ``USER_M1_NUM_ISR_TICKS_PER_CURRENT_TICK``/``USER_M1_ISR_FREQ_Hz``: the zero sits at a
+quarter of the plant pole, on purpose), and the speed PI (speed in electrical Hz, current in A)
+
+    K_ctrl = 3·pp·ψ/(2·J),  Kp = BW_c/(δ·K_ctrl) [A/Hz],  Ki = BW_c·T_spd/δ²
+
+(T_spd = ``…_PER_SPEED_TICK``/``USER_M1_ISR_FREQ_Hz``; when K_ctrl ≤ 0.01 the lab uses
+Kp = 2.5·I_max/f_max, Ki = 5·I_max·T instead). MotorWare's ``user.h`` stores IQ24 gains
+(series form: kp = Kp/2^Q·V_FS/I_FS, ki = kp·Ki/2^Q/T;
+:func:`pulab.profiles.ti.scaling.ints_to_gains`), read as they are.
 
 The files select the board and the motor with ``#if``: the board by a compiler ``-D``
 (``BSXL8323RS_REVA`` …), the motor by ``USER_MOTOR1`` compared with ids that
@@ -28,7 +46,7 @@ from __future__ import annotations
 import math
 
 from ..common import SQRT2, SQRT3
-from ..decoding import check, current_loop, macro, numbers_in, result
+from ..decoding import check, current_loop, integrator_loop, macro, numbers_in, result
 
 __all__ = ["decode_header"]
 
@@ -42,6 +60,7 @@ _PLAIN = {
     "USER_MOTOR1_RATED_VOLTAGE_V": ("V", "rated voltage"),
     "USER_MOTOR1_RATED_SPEED_KRPM": ("krpm", "rated speed"),
     "USER_MOTOR1_FREQ_MAX_HZ": ("Hz", "maximum electrical frequency"),
+    "USER_MOTOR1_FREQ_MAX_Hz": ("Hz", "maximum electrical frequency (AM26x SDK's spelling)"),
     "USER_MOTOR1_INERTIA_Kgm2": ("kg·m²", "inertia"),
     "USER_M1_NOMINAL_DC_BUS_VOLTAGE_V": ("V", "nominal DC bus"),
     "USER_M1_ADC_FULL_SCALE_VOLTAGE_V": ("V", "voltage at the full ADC range"),
@@ -76,7 +95,57 @@ _ALIASES = {"pp": ("USER_MOTOR1_NUM_POLE_PAIRS", "USER_MOTOR_NUM_POLE_PAIRS"),
             "ts": ("USER_M1_CTRL_PERIOD_sec", "USER_CTRL_PERIOD_sec")}
 _GAINS = {"d": ("USER_MTR1_KP_ID_IQ", "USER_MTR1_KI_ID_IQ"),
           "q": ("USER_MTR1_KP_IQ_IQ", "USER_MTR1_KI_IQ_IQ")}
-READS = tuple(_PLAIN) + tuple(n for pair in _GAINS.values() for n in pair)
+READS = tuple(_PLAIN) + tuple(n for pair in _GAINS.values() for n in pair) + (
+    "USER_M1_NUM_ISR_TICKS_PER_CURRENT_TICK", "USER_M1_NUM_ISR_TICKS_PER_SPEED_TICK")
+#: The universal lab's run-time design with the motor from the header (user_mtr1.c:
+#: flag_bypassMotorId true): SDK → (the current bandwidth BW_c [rad/s], the speed loop's δ, the
+#: macro that marks that SDK's user_mtr1.h or None).
+RUNTIME = {"C2000 MotorControl SDK": (2.0 * math.pi * 400.0, 10.0, None),
+           "AM26x motor-control-sdk": (2.0 * math.pi * 200.0, 20.0, "USER_MOTOR1_KP_SPD_HIGH_SF")}
+
+
+def _runtime(v: dict, motor: dict, psi: float | None) -> tuple:
+    """(current loops, speed loop) the universal lab computes at run time from the header."""
+    f = v.get("USER_M1_ISR_FREQ_Hz")
+    if not f or "rs_ohm" not in motor:
+        return {}, None
+    sdk = next((k for k, (_, _, mark) in RUNTIME.items() if mark and mark in v),
+               "C2000 MotorControl SDK")
+    bwc, delta, _ = RUNTIME[sdk]
+    t_cur = v.get("USER_M1_NUM_ISR_TICKS_PER_CURRENT_TICK", 1) / f
+    names = ["USER_MOTOR1_Rs_Ohm", "USER_M1_ISR_FREQ_Hz"]
+    loops = {}
+    for axis, key, name in (("d", "ld_h", "USER_MOTOR1_Ls_d_H"), ("q", "lq_h", "USER_MOTOR1_Ls_q_H")):
+        if key not in motor:
+            continue
+        l = motor[key]
+        kp = l * bwc
+        ki_series = 0.25 * motor["rs_ohm"] / l * t_cur
+        c = current_loop(kp, kp * ki_series / t_cur, motor["rs_ohm"], l, [name] + names)
+        if c is not None:
+            c["runtime"] = {"sdk": sdk, "bwc_rad_s": bwc, "kp": kp, "ki_series": ki_series,
+                            "period_s": t_cur}
+            loops[axis] = c
+    j, pp = v.get("USER_MOTOR1_INERTIA_Kgm2"), motor.get("pole_pairs")
+    t_spd = v.get("USER_M1_NUM_ISR_TICKS_PER_SPEED_TICK", 1) / f
+    if not (j and j > 0 and pp and psi):
+        return loops, None
+    k_ctrl = 3.0 * pp * psi / (2.0 * j)
+    f_max = v.get("USER_MOTOR1_FREQ_MAX_HZ", v.get("USER_MOTOR1_FREQ_MAX_Hz"))
+    if k_ctrl <= 0.01 and f_max and v.get("USER_MOTOR1_MAX_CURRENT_A"):
+        kp = 2.5 * v["USER_MOTOR1_MAX_CURRENT_A"] / f_max
+        ki_series = 5.0 * v["USER_MOTOR1_MAX_CURRENT_A"] / f
+    else:
+        kp = bwc / (delta * k_ctrl)
+        ki_series = bwc * t_spd / delta ** 2
+    # the plant from A to electrical Hz: dω_m/dt = 1.5·pp·ψ·i/J, f_e = pp·ω_m/2π
+    plant = 1.5 * pp * pp * psi / (j * 2.0 * math.pi)
+    speed = {"sdk": sdk, "bwc_rad_s": bwc, "delta": delta, "kp_a_per_hz": kp, "ki_a_per_hz_s": kp * ki_series / t_spd, "ki_series": ki_series,
+             "period_s": t_spd, "k_ctrl": k_ctrl, "plant_hz_per_a_s": plant,
+             "macros": ["USER_MOTOR1_INERTIA_Kgm2", "USER_MOTOR1_RATED_FLUX_VpHz",
+                        "USER_MOTOR1_NUM_POLE_PAIRS", "USER_M1_NUM_ISR_TICKS_PER_SPEED_TICK"]}
+    speed.update(integrator_loop(speed["kp_a_per_hz"], speed["ki_a_per_hz_s"], plant) or {})
+    return loops, speed
 
 #: The readings of a V/krpm figure from the flux in V/Hz at pp pole pairs: name → factor
 #: on flux·pp·1000/60 (the peak phase back-EMF at 1000 rpm).
@@ -187,14 +256,23 @@ def decode_header(values: dict, notes: dict) -> dict:
                           f"kp·{ki_n}/2^{q}/T")
         l = motor.get("ld_h" if axis == "d" else "lq_h")
         if l and "rs_ohm" in motor:
-            c = current_loop(kp, ki, motor["rs_ohm"], l)
+            c = current_loop(kp, ki, motor["rs_ohm"], l, (kp_n, ki_n))
             if c is not None:
                 loops[axis] = c
+    speed = None
+    if not loops and has("USER_MOTOR1_Rs_Ohm"):
+        loops, speed = _runtime(v, motor, design.get("psi_wb"))
+        if loops:
+            c = next(iter(loops.values()))["runtime"]
+            design["assumed"].append(
+                f"the current and speed PIs as the universal lab of the {c['sdk']} computes "
+                f"them at run time (motor_common.c setupControllers, BW_c = "
+                f"{c['bwc_rad_s']:.6g} rad/s), the speed PI's speed in electrical Hz")
     design["current_loop"] = loops or None
     if loops:
         c = loops.get("q") or loops["d"]
         design["input"]["current_loop"] = {"method": "manual", "kp": c["kp_v_per_a"],
                                            "ki": c["ki_v_per_a_s"]}
-    design["speed_loop"] = None
+    design["speed_loop"] = speed
     design["observer"] = None
     return result(READS, "c28x", out, design, checks)
