@@ -64,8 +64,11 @@ from typing import NamedTuple
 
 from ..fixedpoint.boxsearch import halve, headroom_bits, hull, search, volume
 from ..fixedpoint.interval import ANY, Branch, Empty, RInterval, Undecided, forcing
+from ..model.gains import pi_integer_ideals
+from ..profiles import MODULES, context
 from ..profiles.inovance.code import (RAW_FIELDS, RAW_SCALE, VENDOR_READS, VENDOR_RESULTS,
                                       raw_source, raw_value)
+from ..report import current_pi_section, input_bases, report, require_pmsm
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.inputs import SECTIONS, normalize
@@ -167,7 +170,6 @@ def make_problem(req) -> Problem:
     inp = req.get("input")
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
-    from ..report import require_pmsm
     require_pmsm(inp)
     inp = {k: v for k, v in inp.items() if k not in ("sim", "analysis", "profiles")}
     profile = req.get("profile")
@@ -236,7 +238,7 @@ def make_problem(req) -> Problem:
     if profile == "inovance":
         problem.names = integer_names()
     else:
-        from ..report import report  # checks the options and names the constants
+        # The report checks the options and names the constants.
         full = report({**inp, "profiles": {profile: options}})
         r = full["profiles"][profile]
         problem.options = {k: r["inputs"][k] for k in options}
@@ -302,8 +304,8 @@ def counterexample(problem: Problem, point: dict) -> dict | None:
 
 
 def _reproduces(inp: dict, name: str) -> bool:
-    """Whether the report of ``inp`` shows integer ``name`` failing (the counterexample check)."""
-    from ..report import report  # the whole report: what a user sees when opening the input
+    """Whether the report of ``inp`` shows integer ``name`` failing (the counterexample check:
+    the whole report, what a user sees when opening the input)."""
     try:
         r = report(inp)
     except InputError:
@@ -498,7 +500,6 @@ def _prove_raw(problem: Problem, name: str) -> dict:
 def _pi_at(n: dict, name: str):
     """One current-PI integer of a normalized input whose values may be intervals: the
     report's own design code (``current_pi_section``), run once more."""
-    from ..report import current_pi_section, input_bases
     _, axis, key = name.split(".")
     return current_pi_section(n, input_bases(n))[axis][key]
 
@@ -535,8 +536,6 @@ def _pi_enclose(problem: Problem, name: str, box: dict, forced: dict = None) -> 
 
 def _pi_point(problem: Problem, name: str, pt: dict) -> tuple:
     """(kind or None, value, error_pct, input) of a current-PI integer at an SI point."""
-    from ..model.gains import pi_integer_ideals
-    from ..report import current_pi_section, input_bases
     inp = _with(problem.input, {p: (v, v) for p, v in pt.items()}, 0)
     try:
         n = normalize(inp)
@@ -551,7 +550,6 @@ def _pi_point(problem: Problem, name: str, pt: dict) -> tuple:
 
 
 def _pi_reproduces(inp: dict, name: str, kind: str) -> bool:
-    from ..report import report
     _, axis, key = name.split(".")
     try:
         r = report(inp)
@@ -568,8 +566,6 @@ def _profile_constants(n: dict, problem: Problem) -> dict:
     """A vendor profile's constants for a normalized input whose values may be intervals:
     the profile's own code (its ``constants``, what its ``profile`` reports), with the
     options the input gives and the others at their defaults for this motor."""
-    from ..profiles import MODULES, context
-    from ..report import current_pi_section, input_bases
     ctx = context(n, {}, {}, current_pi_section(n, input_bases(n)), (), problem.board)
     mod = MODULES[problem.profile]
     opt = {k: problem.options[k] if k in problem.options else default(ctx)
@@ -657,7 +653,6 @@ def _profile_point(problem: Problem, name: str, pt: dict) -> tuple:
 
 
 def _profile_reproduces(inp: dict, name: str, kind: str) -> bool:
-    from ..report import report
     _, profile, group, key = name.split(".")
     try:
         c = report(inp)["profiles"][profile]["constants"][key]
