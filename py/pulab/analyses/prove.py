@@ -898,8 +898,8 @@ def prove(req) -> dict:
         the box where the code completes), type and word [min, max] of its C type,
         proven_fraction, worst_error_pct and error_bound (raw parameters and proven
         integers: a bound over the box — for a vendor result only where no floor of its code
-        may be 0; else the worst at the points run, error_bound false), and when violated: kind (wrap, store, div0, zero, outside, saturate,
-        invalid), statement, raw (the raw point) and counterexample (an input JSON inside
+        may be 0; else the worst at the points run, error_bound false), and when violated:
+        kind (wrap, store, div0, zero, outside, saturate, invalid), statement, raw (the raw point) and counterexample (an input JSON inside
         the box)}}, ``counterexample`` (the first violated integer's),
         ``raw_box`` and ``not_analysed``.
     """
