@@ -12,7 +12,8 @@ layers listed above it, never from a layer below; the import graph has no cycle.
 above their folder: the families that call :func:`report`) and checks every import,
 deferred ones too::
 
-    fixedpoint/   Q formats and C integer arithmetic           qformat, cint, counted
+    fixedpoint/   Q formats and C integer arithmetic; the      qformat, cint, counted,
+                  proofs' box search                           interval, boxsearch
     schema/       what an input is and how it is read and      errors, jsontext, textnum,
                   checked; the error texts                     inputs, catalog, vendors (the
                                                                vendors the input knows)
@@ -20,7 +21,7 @@ deferred ones too::
                                                                (sensing and PWM scales)
     profiles/     firmware scaling, one package per vendor     registry (the list), vendor
                                                                (the interface), inovance
-                                                               (+ inovance_code: the seed's
+                                                               (+ inovance/code: the seed's
                                                                C, run by ctrace), ti, st, nxp,
                                                                microchip, headers, translate
     ctrace/       the C tracer: a user's own fixed-point code  lexer, parser, check, evaluate…

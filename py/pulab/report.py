@@ -28,7 +28,7 @@ from .analyses.review import review
 from .analyses.slices import finish
 from . import profiles as _profiles
 from .profiles import limits, registry
-from .profiles.inovance_code import current_pi_step, raw_from_si, raw_split, vendor_split
+from .profiles.inovance.code import current_pi_step, raw_from_si, raw_split, vendor_split
 from .profiles.vendor import provided
 
 __all__ = ["report", "report_steps", "format_text", "input_bases", "input_raw", "input_raw_split",

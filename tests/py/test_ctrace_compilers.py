@@ -7,7 +7,7 @@ the tracer's.  Built with -fwrapv: signed overflow is compared as the two's-comp
 wrap; vectors that meet other undefined behaviour (shift count out of range, INT_MIN/-1,
 division by zero) are excluded and counted.  The seed's own Inovance blocks run over
 1,100 random motors the same way (the report's vendor integers are these blocks,
-pulab.profiles.inovance_code).
+pulab.profiles.inovance.code).
 
 Missing tools: SKIPPED loudly; with CI=true the missing tools fail the test.
 """

@@ -26,14 +26,14 @@ LAYERS = (
     # the tracer: the profiles run the seed's C through it
     ("ctrace",),
     ("profiles",),
-    ("analyses",),
+    # the code proof: the box search (fixedpoint.boxsearch) over the tracer's runs, in slices
+    # (analyses.slices)
+    ("analyses", "ctrace.prove"),
     ("report",),
     # families: each calls report() for every motor, point or box
     ("analyses.integers", "analyses.sweep", "analyses.exercises", "analyses.batch",
      "analyses.prove", "analyses.propose", "analyses.sim.bench", "profiles.translate",
      "analyses.audit"),
-    # the C family proof runs the box search of analyses.prove
-    ("ctrace.prove",),
     ("export", "html", "qcalc", "benchmark"),
     ("api", "cli"),
     ("__main__", ""),

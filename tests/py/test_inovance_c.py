@@ -14,7 +14,7 @@ import pytest
 from pulab.analyses.prove_intervals import interval_steps
 from pulab.ctrace import compile_code, run_checked
 from pulab.ctrace.examples import EXAMPLES
-from pulab.profiles.inovance_code import VENDOR_READS, VENDOR_RESULTS, current_pi_step
+from pulab.profiles.inovance.code import VENDOR_READS, VENDOR_RESULTS, current_pi_step
 from pulab.schema.errors import InputError
 
 SEED = 20261129

@@ -1,11 +1,11 @@
-"""pulab.profiles.inovance_code: the vendor code of seed 1.4 and 2.2, against the seed's own
+"""pulab.profiles.inovance.code: the vendor code of seed 1.4 and 2.2, against the seed's own
 numbers and hand arithmetic."""
 import math
 
 import pytest
 
 from pulab import InputError
-from pulab.profiles.inovance_code import (current_pi_step, flux_rotor, freq_per, inductance,
+from pulab.profiles.inovance.code import (current_pi_step, flux_rotor, freq_per, inductance,
                           max_output_voltage, raw_from_si, round_half_away, rpm, to_si)
 
 SEED_RAW = {"Voltage": 17, "Current": 150, "FullFreq01": 22000, "FreqRated01": 22000,

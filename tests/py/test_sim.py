@@ -18,7 +18,7 @@ from pulab.analyses import sim
 from pulab.schema.errors import InputError
 from pulab.analyses.sim import current, metrics, plant
 from pulab.analyses.sim.linalg import expm, matmul
-from pulab.profiles.inovance_code import current_pi_step
+from pulab.profiles.inovance.code import current_pi_step
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 GOLDEN = ROOT / "tests" / "golden" / "sim"

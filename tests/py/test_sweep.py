@@ -258,7 +258,7 @@ def test_vendor_reads_lists_every_raw_field_a_result_depends_on():
     # The sweep reuses a vendor result while the raw fields VENDOR_READS names repeat; changing
     # any other field must leave the result as it is (value, flags and whole trace).
     import random
-    from pulab.profiles.inovance_code import RAW_FIELDS, VENDOR_READS, VENDOR_RESULTS
+    from pulab.profiles.inovance.code import RAW_FIELDS, VENDOR_READS, VENDOR_RESULTS
     rng = random.Random(3)
     for _ in range(200):
         raw = {k: rng.choice((1, 2, 7, 150, 1500, 22000, 65535, rng.randrange(65536)))

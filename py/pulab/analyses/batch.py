@@ -42,7 +42,7 @@ from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.validate import shown
 from ..report import report, require_pmsm
-from ..profiles.inovance_code import RAW_FIELDS, VENDOR_RESULTS
+from ..profiles.inovance.code import RAW_FIELDS, VENDOR_RESULTS
 
 __all__ = ["read_table", "batch_rows", "batch_csv", "to_csv", "output_columns", "findings_counts",
            "UNITS", "REPORT_COLUMNS", "SEVERITIES"]

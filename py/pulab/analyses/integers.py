@@ -47,7 +47,7 @@ from ..model.gains import pi_integer_ideals
 from ..schema.inputs import normalize
 from ..schema.validate import shown
 from ..report import current_pi_section, input_bases, input_raw, report
-from ..profiles.inovance_code import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS
+from ..profiles.inovance.code import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS
 
 __all__ = ["evaluate", "integer_names", "profile_name", "STATUSES", "DEFAULT_PROFILE",
            "INOVANCE_NAMES", "RAW_ONLY_NAMES"]

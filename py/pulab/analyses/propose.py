@@ -45,6 +45,7 @@ from __future__ import annotations
 import heapq
 import math
 
+from ..fixedpoint.boxsearch import search
 from ..fixedpoint.interval import Branch, Empty, RInterval, Undecided, forcing
 from ..profiles.common import pow2_exponent
 from ..schema.errors import InputError
@@ -103,30 +104,25 @@ def _log_ratio(r: tuple) -> float:
 def _leaves(problem, full: dict):
     """A partition of the box into pieces that evaluate: [(box, forced, {name: (lo, hi)})];
     None when the budget ran out first."""
-    heap = [(-1.0, 0, dict(full), {})]
-    order, evaluated, leaves = 1, 0, []
-    while heap:
-        if evaluated >= problem.budget:
-            return None
-        neg, _, box, forced = heapq.heappop(heap)
-        evaluated += 1
+    leaves, undecided = [], False
+
+    def visit(neg, box, forced):
+        nonlocal undecided
         try:
             cs = _evaluate(problem, box, forced)
         except Branch as b:
-            for c in b.choices:
-                heapq.heappush(heap, (neg / len(b.choices), order, box, {**forced, b.site: c}))
-                order += 1
-            continue
+            return 1, [(neg / len(b.choices), box, {**forced, b.site: c}) for c in b.choices]
         except Undecided:  # a design comparison differs inside the box: split it
             if not full or -neg < 1e-12:
-                return None
-            for half in _halves(box, full):
-                heapq.heappush(heap, (neg / 2, order, half, forced))
-                order += 1
-            continue
+                undecided = True
+                return 1, None
+            return 1, [(neg / 2, half, forced) for half in _halves(box, full)]
         if cs is not None:
             leaves.append((box, forced, cs))
-    return leaves
+        return 1, ()
+
+    _, left = finish(search(dict(full), -1.0, visit, problem.budget, {}))
+    return None if left or undecided else leaves
 
 
 #: Boxes evaluated per constant and end while closing an enclosure's end in on its values.

@@ -25,7 +25,9 @@ enclosure raises nothing is proven (and its quantization error bounded by the fl
 its statements, :func:`~pulab.analyses.prove_intervals.error_bound`); otherwise its corners
 and centre are run concretely (a failure there is the counterexample), and else it is split
 in two along its relatively widest raw input.  A box of one raw point is evaluated
-exactly, so the split ends.
+exactly, so the split ends.  Each integer's search is :func:`pulab.fixedpoint.boxsearch.search`,
+the code proof's too (:mod:`pulab.ctrace.prove`); this module gives it what a box evaluates to,
+which points are run and how a failure is reproduced (through :func:`pulab.report`).
 
 The current-PI integers ``pm_kp``/``pm_ki`` (seed 2.2-9) are designed in floating
 point: the report's design code runs over intervals of the ranged inputs themselves
@@ -57,13 +59,16 @@ Examples
 
 from __future__ import annotations
 
-import heapq
 import math
 from typing import NamedTuple
 
+from ..fixedpoint.boxsearch import halve, headroom_bits, hull, search, volume
 from ..fixedpoint.interval import ANY, Branch, Empty, RInterval, Undecided, forcing
-from ..profiles.inovance_code import (RAW_FIELDS, RAW_SCALE, VENDOR_READS, VENDOR_RESULTS,
+from ..model.gains import pi_integer_ideals
+from ..profiles import MODULES, context
+from ..profiles.inovance.code import (RAW_FIELDS, RAW_SCALE, VENDOR_READS, VENDOR_RESULTS,
                                       raw_source, raw_value)
+from ..report import current_pi_section, input_bases, report, require_pmsm
 from ..schema.errors import InputError
 from ..schema.fields import FIELD
 from ..schema.inputs import SECTIONS, normalize
@@ -73,7 +78,7 @@ from .prove_intervals import error_bound, interval_steps
 from .slices import finish
 
 __all__ = ["prove", "prove_steps", "make_problem", "Problem", "integer_names", "integer_steps",
-           "PROFILES", "propose_global_q", "headroom_bits",
+           "PROFILES", "propose_global_q",
            "summary", "VERDICTS", "KINDS",
            "DEFAULT_BUDGET", "MAX_BUDGET"]
 
@@ -165,7 +170,6 @@ def make_problem(req) -> Problem:
     inp = req.get("input")
     if not isinstance(inp, dict):
         raise InputError("input", code="not_json_object")
-    from ..report import require_pmsm
     require_pmsm(inp)
     inp = {k: v for k, v in inp.items() if k not in ("sim", "analysis", "profiles")}
     profile = req.get("profile")
@@ -234,7 +238,7 @@ def make_problem(req) -> Problem:
     if profile == "inovance":
         problem.names = integer_names()
     else:
-        from ..report import report  # checks the options and names the constants
+        # The report checks the options and names the constants.
         full = report({**inp, "profiles": {profile: options}})
         r = full["profiles"][profile]
         problem.options = {k: r["inputs"][k] for k in options}
@@ -300,8 +304,8 @@ def counterexample(problem: Problem, point: dict) -> dict | None:
 
 
 def _reproduces(inp: dict, name: str) -> bool:
-    """Whether the report of ``inp`` shows integer ``name`` failing (the counterexample check)."""
-    from ..report import report  # the whole report: what a user sees when opening the input
+    """Whether the report of ``inp`` shows integer ``name`` failing (the counterexample check:
+    the whole report, what a user sees when opening the input)."""
     try:
         r = report(inp)
     except InputError:
@@ -354,13 +358,6 @@ def _enclose(name: str, box: dict, unit: str) -> tuple:
     return kinds, (lo, hi), own[-1]["type"]
 
 
-def _volume(box: dict, dims) -> int:
-    v = 1
-    for k in dims:
-        v *= box[k][1] - box[k][0] + 1
-    return v
-
-
 def _tie(x: dict, ties: dict) -> dict:
     """A point or box with every tied raw field set to its leader's."""
     return {**x, **{f: x[lead] for f, lead in ties.items()}} if ties else x
@@ -384,9 +381,7 @@ def _split(box: dict, dims, ties: dict) -> tuple:
     # Relatively widest first: the code multiplies and divides, so ratios matter.
     k = max((k for k in dims if box[k][1] > box[k][0]),
             key=lambda k: (box[k][1] - box[k][0]) / (box[k][0] + 1))
-    lo, hi = box[k]
-    mid = (lo + hi) // 2
-    return _tie({**box, k: (lo, mid)}, ties), _tie({**box, k: (mid + 1, hi)}, ties)
+    return tuple(_tie(half, ties) for half in halve(box, k))
 
 
 _WORDS = {"Uint16": (0, _UINT16_MAX), "long": (-(1 << 31), (1 << 31) - 1),
@@ -401,27 +396,21 @@ def _prove_vendor(problem: Problem, name: str):
     # A tied field is split and sampled through its leader.
     dims = list(dict.fromkeys(ties.get(k, k) for k in VENDOR_READS[name]
                               if problem.box[k][0] != problem.box[k][1]))
-    total = _volume(problem.box, dims)
-    heap = [(-total, 0, problem.box)]
-    order = 1
+    total = volume(problem.box, dims)
     proven_volume = 0
     rng = rng_proven = None  # hull of every box's enclosure, of the proven boxes' only
     word = None
     worst = None  # (|error_pct|, error_pct, raw point) over the points run
     bound, bounded = 0.0, True  # the worst |error| over the proven boxes, all bounded?
-    evaluated = 0
-    while heap:
-        if evaluated >= problem.budget:
-            break
-        if evaluated and evaluated % _SLICE_BOXES == 0:
-            yield
-        neg_vol, _, box = heapq.heappop(heap)
-        evaluated += 1
+    violated = None  # (kind, statement, raw point, input) reproduced by the report
+
+    def visit(neg_vol, box, _):
+        nonlocal proven_volume, rng, rng_proven, word, worst, bound, bounded, violated
         kinds, enc, w = _enclose(name, box, unit)
         word = word or w
-        rng = _hull(rng, enc)
+        rng = hull(rng, enc)
         if not kinds:
-            rng_proven = _hull(rng_proven, enc)
+            rng_proven = hull(rng_proven, enc)
             proven_volume += -neg_vol
             if bounded:
                 b = error_bound(name, box, unit)
@@ -429,26 +418,28 @@ def _prove_vendor(problem: Problem, name: str):
                 bound = max(bound, b or 0.0)
             for pt in (box_lo(box), {k: hi for k, (_, hi) in box.items()}):  # tied: equal ends
                 worst = _worse(worst, _point(name, pt, unit), pt)
-            continue
-        for pt in _corners(box, dims, problem.ties):
+            return 1, ()
+        for pt in _corners(box, dims, ties):
             got = _point(name, pt, unit)
             if got[0] is not None:
                 inp = counterexample(problem, pt)
                 if inp is not None and _reproduces(inp, name):
-                    return _entry("violated", rng, word, proven_volume / total, worst,
-                                  boxes=evaluated,
-                                  kind=got[0], statement=got[3],
-                                  raw={k: pt[k] for k in VENDOR_READS[name]},
-                                  counterexample=inp)
+                    violated = got[0], got[3], {k: pt[k] for k in VENDOR_READS[name]}, inp
+                    return 1, None
             else:
                 worst = _worse(worst, got, pt)
-        if _volume(box, dims) == 1:
+        if volume(box, dims) == 1:
             # A single point evaluates exactly: its failure did not reproduce as an input.
-            break
-        for half in _split(box, dims, problem.ties):
-            heapq.heappush(heap, (-_volume(half, dims), order, half))
-            order += 1
-    if not heap and proven_volume == total:
+            return 1, None
+        return 1, [(-volume(half, dims), half, None) for half in _split(box, dims, ties)]
+
+    evaluated, left = yield from search(problem.box, -total, visit, problem.budget,
+                                        every=_SLICE_BOXES)
+    if violated is not None:
+        kind, statement, raw, inp = violated
+        return _entry("violated", rng, word, proven_volume / total, worst, boxes=evaluated,
+                      kind=kind, statement=statement, raw=raw, counterexample=inp)
+    if not left and proven_volume == total:
         entry = _entry("proven", rng_proven, word, 1.0, worst, boxes=evaluated)
         if bounded:
             entry.update(worst_error_pct=bound, worst_error_raw=None, error_bound=True)
@@ -461,30 +452,11 @@ def _log_width(r: tuple) -> float:
     return math.log(r[1] / r[0]) if r[0] > 0 else r[1] - r[0]
 
 
-def _hull(a, b):
-    """The smallest interval holding both (either may be None)."""
-    return b if a is None else a if b is None else (min(a[0], b[0]), max(a[1], b[1]))
-
-
 def _worse(worst, got, pt):
     err = got[2]
     if got[0] is not None or err is None or (worst is not None and abs(err) <= worst[0]):
         return worst
     return abs(err), err, dict(pt)
-
-
-def headroom_bits(rng, word) -> int:
-    """How many more fractional bits the word holds for every value of a proven range: the
-    largest k with (hi + 1)·2^k − 1 ≤ max and lo·2^k ≥ min.
-
-    >>> headroom_bits((3338, 53414), (0, 65535)), headroom_bits((692, 2808), (0, 65535))
-    (0, 4)
-    """
-    lo, hi = rng
-    k = 0
-    while k < 62 and (hi + 1) << (k + 1) <= word[1] + 1 and lo << (k + 1) >= word[0]:
-        k += 1
-    return k
 
 
 def _entry(verdict: str, rng, word, fraction: float, worst, **extra) -> dict:
@@ -528,7 +500,6 @@ def _prove_raw(problem: Problem, name: str) -> dict:
 def _pi_at(n: dict, name: str):
     """One current-PI integer of a normalized input whose values may be intervals: the
     report's own design code (``current_pi_section``), run once more."""
-    from ..report import current_pi_section, input_bases
     _, axis, key = name.split(".")
     return current_pi_section(n, input_bases(n))[axis][key]
 
@@ -565,8 +536,6 @@ def _pi_enclose(problem: Problem, name: str, box: dict, forced: dict = None) -> 
 
 def _pi_point(problem: Problem, name: str, pt: dict) -> tuple:
     """(kind or None, value, error_pct, input) of a current-PI integer at an SI point."""
-    from ..model.gains import pi_integer_ideals
-    from ..report import current_pi_section, input_bases
     inp = _with(problem.input, {p: (v, v) for p, v in pt.items()}, 0)
     try:
         n = normalize(inp)
@@ -581,7 +550,6 @@ def _pi_point(problem: Problem, name: str, pt: dict) -> tuple:
 
 
 def _pi_reproduces(inp: dict, name: str, kind: str) -> bool:
-    from ..report import report
     _, axis, key = name.split(".")
     try:
         r = report(inp)
@@ -598,8 +566,6 @@ def _profile_constants(n: dict, problem: Problem) -> dict:
     """A vendor profile's constants for a normalized input whose values may be intervals:
     the profile's own code (its ``constants``, what its ``profile`` reports), with the
     options the input gives and the others at their defaults for this motor."""
-    from ..profiles import MODULES, context
-    from ..report import current_pi_section, input_bases
     ctx = context(n, {}, {}, current_pi_section(n, input_bases(n)), (), problem.board)
     mod = MODULES[problem.profile]
     opt = {k: problem.options[k] if k in problem.options else default(ctx)
@@ -687,7 +653,6 @@ def _profile_point(problem: Problem, name: str, pt: dict) -> tuple:
 
 
 def _profile_reproduces(inp: dict, name: str, kind: str) -> bool:
-    from ..report import report
     _, profile, group, key = name.split(".")
     try:
         c = report(inp)["profiles"][profile]["constants"][key]
@@ -737,42 +702,39 @@ def _prove_float(problem: Problem, name: str):
     full = {p: r for p, r in problem.ranges.items()
             if not p.startswith("raw.") and r[0] != r[1]}
     dims = list(full)
-    heap = [(-1.0, 0, dict(full), {}, 1.0)]
-    order, evaluated, proven_share = 1, 0, 0.0
+    proven_share = 0.0
     rng = rng_proven = worst = None
     bound, bounded = 0.0, True  # the worst |error| over the proven pieces, all bounded?
     corners_run = False
-    statement = spec.statement
-    while heap and evaluated < problem.budget:
-        if evaluated and evaluated % _SLICE_BOXES == 0:
-            yield
-        neg_share, _, box, forced, box_share = heapq.heappop(heap)
-        evaluated += 1
+    violated = None  # (kind, value, input) reproduced by the report
+
+    def visit(neg_share, box, data):
+        nonlocal dims, proven_share, rng, rng_proven, worst, bound, bounded, corners_run
+        nonlocal violated
+        forced, box_share = data
         kinds, enc, extra = spec.enclose(problem, name, box, forced)
         if kinds == {"empty"}:
             proven_share += -neg_share
-            continue
+            return 1, ()
         if kinds == {"branch"}:
-            for c in extra.choices:
-                heapq.heappush(heap, (neg_share / len(extra.choices), order, box,
-                                      {**forced, extra.site: c}, box_share))
-                order += 1
-            continue
-        rng = _hull(rng, enc)
+            return 1, [(neg_share / len(extra.choices), box, ({**forced, extra.site: c},
+                                                               box_share))
+                       for c in extra.choices]
+        rng = hull(rng, enc)
         if enc is not None and box_share == 1.0 and len(dims) > 1:
             # Split only inputs the integer depends on: fixing one it does not leaves the whole
             # box's enclosure as it is.
             moving = [q for q in dims if _fixed(spec, problem, name, box, forced, q) != enc]
             dims = moving or dims
         if not kinds:
-            rng_proven = _hull(rng_proven, enc)
+            rng_proven = hull(rng_proven, enc)
             proven_share += -neg_share
             bounded = bounded and extra is not None
             bound = max(bound, extra) if extra is not None else bound
             for end in (0, 1):
                 pt = {p: r[end] for p, r in box.items()}
                 worst = _worse(worst, spec.point(problem, name, pt)[:3], pt)
-            continue
+            return 1, ()
         # Every corner of the whole box (a monotone design breaks at one); the centre of each
         # smaller box, where a break inside the box is closed in on.
         corners = [{}]
@@ -783,24 +745,29 @@ def _prove_float(problem: Problem, name: str):
         for pt in [{**{p: lo for p, (lo, _) in box.items()}, **c} for c in corners] + [centre]:
             kind, value, err, inp = spec.point(problem, name, pt)
             if kind is not None and spec.reproduces(inp, name, kind):
-                return _entry("violated", rng, spec.word, proven_share, worst, boxes=evaluated,
-                              kind=kind, statement=statement, raw={"value": value},
-                              counterexample=inp)
+                violated = kind, value, inp
+                return 1, None
             worst = _worse(worst, (kind, value, err), pt)
         if box_share < _MIN_SHARE or not dims:
-            continue
+            return 1, ()
         p = _split_dim(spec, problem, name, box, forced, dims, full,
                        round(-math.log2(box_share)))
         lo, hi = box[p]
         # Ratios of inputs (I_max/I_FS …) narrow by the ratio hi/lo: split at the geometric
         # mean while it is large.
         mid = math.sqrt(lo * hi) if lo > 0 and hi > 4 * lo else lo + (hi - lo) / 2
-        for half in ((lo, mid), (mid, hi)):
-            part = (half[1] - half[0]) / (hi - lo)
-            heapq.heappush(heap, (neg_share * part, order, {**box, p: half}, forced,
-                                  box_share * part))
-            order += 1
-    if not heap and proven_share >= 1.0 - 1e-9:
+        parts = [(half, (half[1] - half[0]) / (hi - lo)) for half in ((lo, mid), (mid, hi))]
+        return 1, [(neg_share * part, {**box, p: half}, (forced, box_share * part))
+                   for half, part in parts]
+
+    evaluated, left = yield from search(dict(full), -1.0, visit, problem.budget, ({}, 1.0),
+                                        every=_SLICE_BOXES)
+    if violated is not None:
+        kind, value, inp = violated
+        return _entry("violated", rng, spec.word, proven_share, worst, boxes=evaluated,
+                      kind=kind, statement=spec.statement, raw={"value": value},
+                      counterexample=inp)
+    if not left and proven_share >= 1.0 - 1e-9:
         entry = _entry("proven", rng_proven, spec.word, 1.0, worst, boxes=evaluated)
         if ".constants." not in name and not name.startswith("current_pi."):
             entry["headroom_bits"] = None  # a shift or divisor: no fractional bits to add
@@ -931,8 +898,8 @@ def prove(req) -> dict:
         the box where the code completes), type and word [min, max] of its C type,
         proven_fraction, worst_error_pct and error_bound (raw parameters and proven
         integers: a bound over the box — for a vendor result only where no floor of its code
-        may be 0; else the worst at the points run, error_bound false), and when violated: kind (wrap, store, div0, zero, outside, saturate,
-        invalid), statement, raw (the raw point) and counterexample (an input JSON inside
+        may be 0; else the worst at the points run, error_bound false), and when violated:
+        kind (wrap, store, div0, zero, outside, saturate, invalid), statement, raw (the raw point) and counterexample (an input JSON inside
         the box)}}, ``counterexample`` (the first violated integer's),
         ``raw_box`` and ``not_analysed``.
     """

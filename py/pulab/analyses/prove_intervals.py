@@ -1,5 +1,5 @@
 """The seed's vendor blocks over boxes of raw integers, for the family prover
-(:mod:`pulab.analyses.prove`): the same C the report runs (:mod:`pulab.profiles.inovance_code`),
+(:mod:`pulab.analyses.prove`): the same C the report runs (:mod:`pulab.profiles.inovance.code`),
 through the tracer's interval evaluator (:class:`~pulab.ctrace.abstract.BoxEvaluator`).
 
 Each assignment gives the hull of the values it stores over the box and the failures some
@@ -20,7 +20,7 @@ import math
 from ..ctrace.abstract import BoxEvaluator
 from ..ctrace.parser import ExprStmt
 from ..ctrace.tracing import DEFAULT_GLOBAL_Q
-from ..profiles.inovance_code import SQRT3, TWO_PI, VENDOR_BLOCKS, block_program
+from ..profiles.inovance.code import SQRT3, TWO_PI, VENDOR_BLOCKS, block_program
 
 __all__ = ["interval_steps", "error_bound"]
 
@@ -97,7 +97,7 @@ def error_bound(name: str, box: dict, unit: str):
     LD/LQ, its rounded division; each floor's lowest value over the box bounds its factor.
     The bound is rounded up by 1e-10 percentage points for the doubles' own rounding.
 
-    >>> from pulab.profiles.inovance_code import freq_per
+    >>> from pulab.profiles.inovance.code import freq_per
     >>> raw = {"FreqRated01": 22000, "FullFreq01": 22000}
     >>> error_bound("FreqPer", {k: (v, v) for k, v in raw.items()}, "10uH") \\
     ...     >= abs(freq_per(raw)["error_pct"])

@@ -35,7 +35,7 @@ from ..schema.catalog import render
 from ..schema.errors import InputError
 from ..schema import vendors
 from ..schema.fields import FIELDS
-from ..profiles.inovance_code import RAW_FIELDS, raw_source
+from ..profiles.inovance.code import RAW_FIELDS, raw_source
 
 __all__ = ["THRESHOLDS", "SEVERITIES", "grade", "review", "headroom"]
 

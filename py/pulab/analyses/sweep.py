@@ -50,7 +50,7 @@ from ..schema.validate import object_fields, real, shown
 from ..report import require_pmsm
 from .integers import RAW_ONLY_NAMES, STATUSES, evaluate, integer_names, profile_name
 from ..fixedpoint.qformat import round_half_away
-from ..profiles.inovance_code import raw_value
+from ..profiles.inovance.code import raw_value
 
 __all__ = ["Axis", "Plan", "make_plan", "chunk", "merge", "sweep", "describe", "MAX_AXIS_POINTS",
            "MAX_POINTS", "ERROR_THRESHOLDS_PCT", "WORST_PER_INTEGER"]

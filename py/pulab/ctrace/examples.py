@@ -3,7 +3,7 @@
 The Inovance statements are quoted from the seed (§1.4.1 eq. 1.4-1/1.4-2,
 §1.4.2 eq. 1.4-3 … 1.4-6, §1.4.3 eq. 1.4-23 … 1.4-25, §2.2 eq. 2.2-2 and the PI
 update), with the seed's typo ``Votage`` corrected; the FreqPer line is the one
-:mod:`pulab.profiles.inovance_code` runs, and the PI block sets ``minu = -maxu`` (the seed's
+:mod:`pulab.profiles.inovance.code` runs, and the PI block sets ``minu = -maxu`` (the seed's
 lower limit, left implicit there).  Each input variable is named as in the firmware, so
 the page prefills it from the report's ``raw`` integers.
 

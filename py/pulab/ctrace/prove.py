@@ -10,7 +10,10 @@ searched for one by running the concrete tracer at its centre and corners (an un
 at its centre).  A counterexample is reported only after the concrete trace at that point
 raises the failure on that statement, so ``violated`` is always reproducible, and ``proven``
 holds for every point of the box because every interval run is sound.  Work (interval runs +
-concrete runs) is capped by ``budget``.
+concrete runs) is capped by ``budget``.  The search itself — largest box first, the budget,
+the slices — is :func:`pulab.fixedpoint.boxsearch.search`, the family proof's too
+(:mod:`pulab.analyses.prove`); this module gives it what a box of C evaluates to and which
+points it traces.
 
 Verdict of a statement: ``violated`` (a counterexample), ``proven`` (every part of the box lies
 in a box whose interval run completed without the statement failing there — a box left when the
@@ -30,14 +33,12 @@ Examples
 
 from __future__ import annotations
 
-import heapq
 import math
 import random
 import re
-import time
 
-from ..analyses.prove import headroom_bits
 from ..analyses.slices import finish
+from ..fixedpoint.boxsearch import halve, headroom_bits, search, volume
 from ..fixedpoint.cint import CType
 from ..schema.errors import InputError
 from ..schema.validate import key_path, shown
@@ -191,13 +192,6 @@ def _error_kind(e: TraceError):
     return "error"
 
 
-def _volume(box: dict) -> int:
-    v = 1
-    for lo, hi in box.values():
-        v *= hi - lo + 1
-    return v
-
-
 def _points(box: dict, rng: random.Random, corners: bool = True) -> list:
     """The centre, then corners (all when few, else a sample), of a box."""
     names = list(box)
@@ -220,11 +214,8 @@ def _split(box: dict, root: dict, hint=()) -> tuple:
     """Halve the box along the input widest relative to its whole range, among the inputs
     in ``hint`` (those an undecided statement read) when one of them can be split."""
     wide = [n for n in box if box[n][0] < box[n][1]]
-    name = max([n for n in wide if n in hint] or wide,
-               key=lambda n: (box[n][1] - box[n][0]) / (root[n][1] - root[n][0] + 1))
-    lo, hi = box[name]
-    mid = lo + (hi - lo) // 2
-    return {**box, name: (lo, mid)}, {**box, name: (mid + 1, hi)}
+    return halve(box, max([n for n in wide if n in hint] or wide,
+                          key=lambda n: (box[n][1] - box[n][0]) / (root[n][1] - root[n][0] + 1)))
 
 
 def _parse_real(field: str, pair) -> tuple:
@@ -327,17 +318,14 @@ def _search(pb: _Problem, box: dict, budget: int):
     """The proof over ``box`` (see the module text); a generator, as :func:`prove_code_steps`."""
     checked, fixed, gq = pb.checked, pb.fixed, pb.global_q
     fixed_box = {k: (v, v) for k, v in fixed.items()}
-    total = _volume(box)
+    total = volume(box)
     rng = random.Random(2026)
     stats: dict = {}   # (line, column) → per-statement tally
     cx: dict = {}      # (line, column) → (point, kinds) reproduced by the tracer
     decided = 0        # points in final boxes that ran to the end
     credited = 0       # … and in boxes left to the budget whose enclosing box's run completed
     clean = 0          # points of credited boxes where no statement may fail
-    work = 0
     finals = 0
-    heap = [(-total, 0, box, None)]
-    order = 1
 
     def stat(key, rec=None) -> dict:
         s = stats.get(key)
@@ -369,14 +357,10 @@ def _search(pb: _Problem, box: dict, budget: int):
                 s["failing"] += vol
                 s["may"].update(r["kinds"])
 
-    last = time.perf_counter()
-    while heap and work < budget:
-        if time.perf_counter() - last > _SLICE_S:
-            yield
-            last = time.perf_counter()
-        _, _, b, _ = heapq.heappop(heap)
-        vol = _volume(b)
-        work += 1
+    def visit(_key, b, _run):
+        nonlocal decided, finals
+        vol = volume(b)
+        work = 1
         hint = ()
         try:
             records = BoxEvaluator.over(checked, {**fixed_box, **b}, gq).run_box()
@@ -398,17 +382,18 @@ def _search(pb: _Problem, box: dict, budget: int):
                         cx[key] = (pt, kinds)
             open_fail = [k for k in failing if k not in cx]
         if vol > 1 and (records is None or open_fail):
-            for half in _split(b, box, hint):
-                heapq.heappush(heap, (-_volume(half), order, half, records))
-                order += 1
-            continue
+            # The halves carry this box's run: what holds of them if the budget runs out.
+            return work, [(-volume(half), half, records) for half in _split(b, box, hint)]
         finals += 1
         if records is not None:  # else one point the interval run cannot finish (step cap)
             decided += vol
             account(records, vol)
-    for _, _, b, inherited in heap:  # the budget ran out: their enclosing box's run holds
+        return work, ()
+
+    work, left = yield from search(box, -total, visit, budget, seconds=_SLICE_S)
+    for _, _, b, inherited in left:  # the budget ran out: their enclosing box's run holds
         if inherited is not None:
-            account(inherited, _volume(b))
+            account(inherited, volume(b))
     for key in cx:
         stat(key)
     statements = []

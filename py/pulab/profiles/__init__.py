@@ -1,7 +1,7 @@
 """Vendor profiles: the same motor and drive in five vendors' scaling (docs/contract.md).
 
 One package per vendor — :mod:`.inovance` (the seed's code, via
-:mod:`pulab.profiles.inovance_code`), :mod:`.ti`, :mod:`.nxp`, :mod:`.st`,
+:mod:`pulab.profiles.inovance.code`), :mod:`.ti`, :mod:`.nxp`, :mod:`.st`,
 :mod:`.microchip` — each with the members of :class:`pulab.profiles.vendor.Vendor`, listed
 once in :mod:`pulab.profiles.registry`.
 This module composes them: the ``profiles`` input section checked (:func:`options`), every

@@ -28,7 +28,7 @@ def context(n: dict, raw: dict, vendor: dict, pi: dict, problems: list = (),
     n : dict
         The normalized input (:func:`pulab.schema.inputs.normalize`).
     raw, vendor : dict
-        The Inovance raw integers and results (:mod:`pulab.profiles.inovance_code`).
+        The Inovance raw integers and results (:mod:`pulab.profiles.inovance.code`).
     pi : dict
         The report's ``current_pi``; its SI kp [V/A], ki [V/(A·s)] per axis are the
         gains every profile stores (a V/A ratio is the same in peak and RMS).

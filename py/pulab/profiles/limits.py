@@ -22,7 +22,7 @@ import math
 
 from ..schema.catalog import render
 from ..schema.errors import InputError
-from .inovance_code import RAW_SCALE, INDUCTANCE_SCALE
+from .inovance.code import RAW_SCALE, INDUCTANCE_SCALE
 
 __all__ = ["RAW_UNITS", "raw_problem", "error_problem", "constant_problem", "inovance", "status"]
 
@@ -105,8 +105,8 @@ def inovance(outside: dict, failed: dict, inductance_unit: str) -> list:
 
     Parameters
     ----------
-    outside : dict — raw name → needed integer outside Uint16 (:func:`.inovance_code.raw_split`)
-    failed : dict — vendor result → InputError (:func:`.inovance_code.vendor_split`)
+    outside : dict — raw name → needed integer outside Uint16 (:func:`.inovance.code.raw_split`)
+    failed : dict — vendor result → InputError (:func:`.inovance.code.vendor_split`)
     inductance_unit : {'10uH', 'uH'}
     """
     by_field: dict = {}

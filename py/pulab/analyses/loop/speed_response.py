@@ -24,7 +24,7 @@ runs on the filtered speed.  Variants:
     Q15 (α in Q15, rounded shift), the speed PI in the module's Q formats
     (e Q15, pm_kp Q12, pm_ki Q16, integral Q24, output Q12 current reference,
     int64 products), the current read as Q12 and the vendor current PI
-    (:func:`pulab.profiles.inovance_code.current_pi_step`).
+    (:func:`pulab.profiles.inovance.code.current_pi_step`).
 
 The speed reference steps by ``step_pu``·ω_mb at t = 0; the load torque steps
 by ``load_pu``·T_mb at the middle of the run.
@@ -39,7 +39,7 @@ from ..sim.current import voltage_limits
 from ..sim.linalg import expm
 from ..sim.metrics import overshoot_pct, rise_time, settling_time
 from ...fixedpoint.qformat import round_half_away
-from ...profiles.inovance_code import current_pi_step
+from ...profiles.inovance.code import current_pi_step
 
 __all__ = ["run", "MAX_STEPS"]
 

@@ -38,7 +38,7 @@ def bench(steps: int = 20000, repeat: int = 3) -> dict:
         ``steps``, ``total_s`` and ``steps_per_s`` (steps of all variants together per
         second, :func:`pulab.analyses.sim.current.run`), and single-variant times
         ``float_variant_s``, ``fixed_variant_s``, ``fixed_no_memo_s`` (the worst case,
-        every step a call of :func:`pulab.profiles.inovance_code.current_pi_step`) and
+        every step a call of :func:`pulab.profiles.inovance.code.current_pi_step`) and
         ``vendors_s`` (TI, NXP, ST and Microchip together, :mod:`.vendor_loop`).
     """
     from ... import report

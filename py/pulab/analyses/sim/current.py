@@ -14,7 +14,7 @@ those of the number representation:
 ``fixed``
     The vendor code: the plant current quantized to Q12 (round to nearest, ties
     away, int16 saturation ±8 pu, i.e. the ADC reading ``gIMTQ12``), the exact
-    integer update :func:`pulab.profiles.inovance_code.current_pi_step` (Q12 error, Q24
+    integer update :func:`pulab.profiles.inovance.code.current_pi_step` (Q12 error, Q24
     integral, pm_kp Q12, pm_ki Q16, clamps ±maxu and ±pm_maxout_vol), and the
     Q12 output turned into plant voltage.
 ``by_profile``
@@ -61,7 +61,7 @@ from ...schema.errors import InputError
 from ..slices import SLICE_STEPS, finish
 from ...fixedpoint.cint import INT32, wrap_to
 from ...fixedpoint.qformat import iqsat, round_half_away
-from ...profiles.inovance_code import current_pi_step
+from ...profiles.inovance.code import current_pi_step
 from .inputs import periods
 from .plant import zoh
 from . import code_loop, vendor_loop
@@ -158,7 +158,7 @@ def run_float(*args, **kwargs):
 def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp_q: int,
                     pm_ki_q: int, maxu: int, maxout: int, ref_d: int, ref_q: int,
                     integ_q0: int, n: int, delay: bool, memo: bool = True):
-    """Vendor fixed-point PI (seed 2.2, :func:`pulab.profiles.inovance_code.current_pi_step`) on the SI plant.
+    """Vendor fixed-point PI (seed 2.2, :func:`pulab.profiles.inovance.code.current_pi_step`) on the SI plant.
 
     Parameters
     ----------

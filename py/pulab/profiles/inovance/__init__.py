@@ -1,6 +1,6 @@
 """Inovance C2000 (the seed's code): per unit of the motor's rated values, Q12/Q16 integers.
 
-Its scaling is a view of :mod:`pulab.profiles.inovance_code` (the report's own integers) and its
+Its scaling is a view of :mod:`pulab.profiles.inovance.code` (the report's own integers) and its
 header the report's; its simulation is the report's fixed-point variant
 (:mod:`pulab.analyses.sim.current`), so it provides no ``controller``.
 """

@@ -2,7 +2,7 @@
 seed's code (``PULAB_RAW_*``, the normalized integers, the current PI), the only ``#define``
 form of the source document's parameter table.
 
-The raw Uint16 parameters decode to SI by their firmware units (:mod:`pulab.profiles.inovance_code`:
+The raw Uint16 parameters decode to SI by their firmware units (:mod:`pulab.profiles.inovance.code`:
 1 V, 0.01 A, 0.01 Hz, 1 mΩ, 0.01 mH, 0.1 V); every normalized integer is computed again from
 them with the seed's own integer code, bit-exact, and a stored value that differs is an
 ``inconsistent`` finding (the raw table was edited after the block was generated). The
@@ -24,7 +24,7 @@ from __future__ import annotations
 from ...schema.fields import RAW_FIELDS
 from ..common import SQRT3
 from ..decoding import check, macro, result
-from ..inovance_code import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS, to_si
+from .code import RAW_SCALE, VENDOR_READS, VENDOR_RESULTS, to_si
 
 __all__ = ["decode_header"]
 

@@ -1,6 +1,6 @@
-"""Inovance-style C2000 scaling (the seed's code) — a view of :mod:`pulab.profiles.inovance_code`.
+"""Inovance-style C2000 scaling (the seed's code) — a view of :mod:`pulab.profiles.inovance.code`.
 
-The motor constants are :func:`pulab.profiles.inovance_code.vendor_results` (bit-exact C2000
+The motor constants are :func:`pulab.profiles.inovance.code.vendor_results` (bit-exact C2000
 statements); the current-loop integers are :func:`pulab.model.gains.current_pi` with
 Inovance's own bases U_b = U_LL/√3, I_b = I_rms (seed 1.4-13), whatever the
 report's ``conventions.base`` says:
@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from ...model.gains import current_pi, gains_from_integers
 from ..common import SOURCES, SQRT3, TWO_PI, fixed
-from ..inovance_code import to_si
+from .code import to_si
 
 __all__ = ["OPTIONS", "CONVENTIONS", "CONVENTIONS_ZH", "FILES", "bases", "gain_fields",
            "gain_range", "gains_to_ints", "ints_to_gains", "profile"]

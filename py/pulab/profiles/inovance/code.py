@@ -35,13 +35,13 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from ..ctrace.compile import Stopped, compiled
-from ..ctrace.examples import EXAMPLES
-from ..ctrace.parser import ExprStmt, Member, Var
-from ..ctrace.tracing import compile_code
-from ..schema.errors import InputError
-from ..schema.fields import RAW_FIELDS
-from ..fixedpoint.qformat import round_half_away
+from ...ctrace.compile import Stopped, compiled
+from ...ctrace.examples import EXAMPLES
+from ...ctrace.parser import ExprStmt, Member, Var
+from ...ctrace.tracing import compile_code
+from ...schema.errors import InputError
+from ...schema.fields import RAW_FIELDS
+from ...fixedpoint.qformat import round_half_away
 
 __all__ = [
     "RAW_FIELDS", "RAW_SCALE", "INDUCTANCE_SCALE", "raw_source", "raw_value", "raw_split",
