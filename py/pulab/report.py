@@ -96,7 +96,7 @@ def input_raw(n: dict) -> dict:
 
 def input_raw_split(n: dict) -> tuple[dict, dict]:
     """The raw firmware integers that fit, and those the firmware cannot hold
-    (:func:`pulab.profiles.inovance_code.raw_split`)."""
+    (:func:`pulab.profiles.inovance.code.raw_split`)."""
     return raw_split(_si(n), n["conventions"]["inductance_unit"], n["raw"])
 
 
