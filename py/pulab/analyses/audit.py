@@ -326,8 +326,8 @@ def _margins(design: dict) -> list:
                                 else round(m["gain_margin_db"], 1),
                                 "fc": "—" if m["crossover_hz"] is None
                                 else round(m["crossover_hz"], 1),
-                                "ts": ts, "stable": "stable" if m["stable"] else "unstable",
-                                "stable_zh": "稳定" if m["stable"] else "不稳定"},
+                                "ts": ts, "stable": {"code": "audit.loop_stable" if m["stable"]
+                                                     else "audit.loop_unstable", "params": {}}},
                             "lower the bandwidth (kp) until the phase margin is 30° or more"))
     return out
 

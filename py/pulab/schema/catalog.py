@@ -924,8 +924,10 @@ MESSAGES = {
                           "half period (Ts = {ts} s): {stable}, phase margin {pm}°, gain margin "
                           "{gm} dB, crossover {fc} Hz (the report wants 30° or more)",
                           "{axis} 轴电流环（计入一个采样周期的计算延迟与 PWM 半周期，Ts = {ts} s）："
-                          "{stable_zh}，相位裕度 {pm}°，增益裕度 {gm} dB，穿越频率 {fc} Hz"
+                          "{stable}，相位裕度 {pm}°，增益裕度 {gm} dB，穿越频率 {fc} Hz"
                           "（报告要求相位裕度不低于 30°）"),
+    "audit.loop_stable": ("stable", "稳定"),
+    "audit.loop_unstable": ("unstable", "不稳定"),
 }
 
 
