@@ -26,11 +26,20 @@ U_max = U_DCB,max/UmaxCoeff, T = currentLoopSampleTime, T_w = speedLoopSampleTim
         parameters)
     M1_SPEED_IIR_B0 = B1 = y/(2 + y)/2, M1_SPEED_IIR_A1 = (2 − y)/(2 + y)/2,  y = 2π·fc·T_w
 
+The encoder (MCAT's SENSORS section; its bundled JavaScript, nxp-mcuxpresso/mcux-motor_control :
+freemaster/pmsm_frac/mcat/js/mcat.js, SENSORS ``calculateParams``), ω_mech = 2π·N_max/60::
+
+    M1_POSPE_ENC_PULSES, _DIRECTION = sensorEncPulseNumber, sensorEncDir
+    M1_POSPE_ENC_N_MIN = sensorEncNmin/N_max (FRAC32),  M1_POS_P_PROP_GAIN = positionLoopPLKp
+    M1_POSPE_MECH_POS_GAIN = 2^15/(4·N_enc/2) (ACC32: a revolution is 2^16 position LSBs)
+    M1_POSPE_TO_KP, _KI, _THETA = the tracking observer of the sensorless one
+        (:func:`pulab.profiles.nxp.observer.tracking`) on the mechanical angle: ω_mech for
+        ω_max, ω0 = 2π·sensorObsrvParF0, ζ = sensorObsrvParKsi, T = sensorObsrvParSampleTime
+
 Read in the MCAT-generated headers rather than the JavaScript (which is older than the
 generator): U_max and f_max unrounded, the scalar minimum voltage over U_max (not U_DCB,max),
 the bus filter at ``parametersUdcbIIRf0`` (not a fixed 100 Hz), the V/Hz factor (no JavaScript
 read states it; it reproduces the three headers of tests/data/headers/nxp/observer_README.md).
-The encoder macros (``M1_POSPE_…``) are not computed.
 
 Examples
 --------

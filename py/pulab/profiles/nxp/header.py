@@ -54,7 +54,7 @@ def _six(x: float) -> str:
 
 def mcat_define(name: str, c: dict) -> str:
     """One line as MCAT prints it: ``FRAC16(x)``/``FRAC32(x)``/``ACC32(x)`` with the argument
-    to 6 significant digits, ``(n)`` for an integer, ``(xF)`` for a float.
+    as MCAT prints a number (:func:`_six`), ``(n)`` for an integer, ``(xF)`` for a float.
 
     >>> from pulab.profiles.common import fixed
     >>> c = fixed("M1_N_MIN", 300 / 4400, 16, 15, 4400.0, "rpm", "", "", fmt="FRAC16")

@@ -24,6 +24,9 @@ JavaScript above is older than the generator:
   (coeff/100)·60/(p·N_merge)/T_s/2/32768 instead (the JavaScript's);
 - ``M1_N_MIN`` = N_min/N_max, ``M1_E_BLOCK_TRH`` = E_block/E_max (FRAC16).
 
+The tracking observer's three gains are :func:`tracking`'s, which the encoder's observer
+(``M1_POSPE_TO_…``, :mod:`pulab.profiles.nxp.appconfig`) shares.
+
 FRAC16(x) and FRAC32(x) truncate toward zero and saturate (RTCESL mlib_types.h), like ACC32.
 The observer's own scales (``M1_I_SCALE`` …) and the theta gain are in
 :func:`pulab.profiles.nxp.scaling.constants`.
@@ -36,7 +39,7 @@ import math
 from ..common import SOURCES, TWO_PI, derived, fixed, mantissa_shift
 from .scaling import _acc32, _scales
 
-__all__ = ["observer"]
+__all__ = ["observer", "tracking"]
 
 _APPCONFIG = ("MCAT-generated m1_pmsm_appconfig.h headers (tests/data/headers/nxp/"
               "observer_README.md)")
