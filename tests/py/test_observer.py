@@ -408,7 +408,9 @@ MCAT_HEADERS = [("m1_pmsm_appconfig.h", "TWR-MC56F8200, Teknic M-2311P, 2025"),
                 ("mcat_enc_frdmmcxa153_m1_pmsm_appconfig.h",
                  "FRDM-MCXA153, Linix 45ZWN 24-40, T = 62.5 µs, 2024"),
                 ("mcat_enc_frdmmcxa153_m2_pmsm_appconfig.h",
-                 "FRDM-MCXA153, Teknic M-2310P, T = 62.5 µs, 2024")]
+                 "FRDM-MCXA153, Teknic M-2310P, T = 62.5 µs, 2024"),
+                ("mcat_enc_mc56f81000evk_2025_m1_pmsm_appconfig.h",
+                 "MC56F81000-EVK, Teknic M-2311P, 2000 pulses, 2025")]
 MCAT_ENC_HEADERS = [h for h, _ in MCAT_HEADERS if h.startswith("mcat_enc_")]
 
 #: The linix file's encoder tracking-observer lines that MCAT did not write (fixture README):
