@@ -295,6 +295,24 @@ def test_nxp_a_constant_edited_by_hand_disagrees_with_the_json():
     assert [x["macros"] for x in f] == [["M1_D_KP_GAIN"]] and "410" in f[0]["message"]
 
 
+def test_nxp_encoder_macros_checked_against_the_json_flag_the_linix_hand_edit():
+    """The encoder's macros join the JSON check: the BSD pmsm_enc header agrees in all 11; the
+    linix file (its numbers, mcat_linix.json, rebuilt as MCAT lays a header out) disagrees in
+    exactly the six tracking-observer lines edited by hand (README of the fixtures)."""
+    twin = audit(_files("nxp", ["mcat_enc_mc56f83000evk_m1_pmsm_appconfig.h"]))
+    enc = [n for n in twin["design"]["json_checked"] if n.startswith(("M1_POSPE_", "M1_POS_P_"))]
+    assert len(enc) == 11 and not [f for f in twin["findings"] if f["code"] == "json"]
+    d = json.loads((HEADERS / "nxp" / "mcat_linix.json").read_text(encoding="utf-8"))
+    text = "/*\n" + json.dumps(d["mcat"], indent=4) + "\n*/\n" + "".join(
+        f"#define {k} {v}\n" for k, v in d["printed"].items())
+    f = [f for f in audit([("m1_pmsm_appconfig.h", text)])["findings"] if f["code"] == "json"]
+    assert sorted(x["macros"][0] for x in f) == sorted(
+        f"M1_POSPE_TO_{g}_{k}" for g in ("KP", "KI", "THETA") for k in ("GAIN", "SHIFT"))
+    # 0.0000318310·2^15 stores 1 where MCAT's T·ω_mech/π = 0.938667·2^-6 stores 30758
+    theta = next(x for x in f if x["macros"] == ["M1_POSPE_TO_THETA_GAIN"])
+    assert "= 1," in theta["message"] and "30758" in theta["message"]
+
+
 def test_nxp_sample_time_without_the_json(nxp):
     (n, t), = _files("nxp", ["m1_pmsm_appconfig.h"])
     start = t.index("/*\n{")

@@ -395,10 +395,28 @@ def test_st_workbench_rule_aims_at_a_quarter_of_the_open_loop_poles():
     assert [p.real for p in z] == pytest.approx([a / 4, 0.25], abs=1e-12)
 
 
-#: Three public MCAT headers with their JSON: (file, board and motor).
+#: Public MCAT headers with their JSON: (file, board and motor).  The mcat_enc_* files are
+#: projects with a quadrature encoder (MCAT's SENSORS section, the M1_POSPE_… macros).
 MCAT_HEADERS = [("m1_pmsm_appconfig.h", "TWR-MC56F8200, Teknic M-2311P, 2025"),
                 ("mcat_teknic_m2310p_m2_pmsm_appconfig.h", "TWR-MC56F8200, Teknic M-2310P, 2024"),
-                ("mcat_linix.json", "MC56F83000-EVK, linix, 2024")]
+                ("mcat_linix.json", "MC56F83000-EVK, linix, 2024"),
+                ("mcat_enc_mc56f83000evk_m1_pmsm_appconfig.h", "MC56F83000-EVK, linix, 2024"),
+                ("mcat_enc_mc56f83000evk_m2_pmsm_appconfig.h",
+                 "MC56F83000-EVK, Teknic M-2310P, 2024"),
+                ("mcat_enc_twrmc56f8400_m1_pmsm_appconfig.h", "TWR-MC56F8400, Linix, 2024"),
+                ("mcat_enc_twrmc56f8400_m2_pmsm_appconfig.h", "TWR-MC56F8400, Teknic M-2310P, 2024"),
+                ("mcat_enc_frdmmcxa153_m1_pmsm_appconfig.h",
+                 "FRDM-MCXA153, Linix 45ZWN 24-40, T = 62.5 µs, 2024"),
+                ("mcat_enc_frdmmcxa153_m2_pmsm_appconfig.h",
+                 "FRDM-MCXA153, Teknic M-2310P, T = 62.5 µs, 2024"),
+                ("mcat_enc_mc56f81000evk_2025_m1_pmsm_appconfig.h",
+                 "MC56F81000-EVK, Teknic M-2311P, 2000 pulses, 2025")]
+MCAT_ENC_HEADERS = [h for h, _ in MCAT_HEADERS if h.startswith("mcat_enc_")]
+
+#: The linix file's encoder tracking-observer lines that MCAT did not write (fixture README):
+#: its BSD twin (same MCAT run, DATE stamp and observer inputs) prints MCAT's.
+LINIX_HAND_EDITED = {f"M1_POSPE_TO_{g}_{k}" for g in ("KP", "KI", "THETA")
+                     for k in ("GAIN", "SHIFT")}
 
 
 def _mcat_header(name: str) -> tuple:
@@ -422,24 +440,58 @@ _WRAP = {"FRAC16": ("FRAC16",), "FRAC32": ("FRAC32",), "ACC32": ("ACC32",),
 
 @pytest.mark.parametrize("name,board", MCAT_HEADERS, ids=[h[0] for h in MCAT_HEADERS])
 def test_mcat_json_alone_reproduces_its_header(name, board):
-    """``{"profiles": {"nxp": {"mcat": JSON}}}`` alone gives every macro the header prints —
-    but the encoder's ``M1_POSPE_…``/``M1_POS_P_PROP_GAIN`` (not computed) — with MCAT's
-    wrapper and MCAT's 6 significant digits (the argument printed as %.6g; MCAT's own
-    √3 = 1.73205 decides two of them)."""
+    """``{"profiles": {"nxp": {"mcat": JSON}}}`` alone gives every macro the header prints
+    with MCAT's wrapper and MCAT's 6 significant digits (the argument printed as %.6g; MCAT's
+    own √3 = 1.73205 decides two of them) — the linix file's six hand-edited lines aside."""
     mcat, printed = _mcat_header(name)
     r = pulab.report({"profiles": {"nxp": {"mcat": mcat}}})
     c = r["profiles"]["nxp"]["constants"]
-    missing = [k for k in printed if k not in c]
-    assert all(k.startswith(("M1_POSPE_", "M1_POS_P_")) for k in missing), missing
-    assert len(printed) - len(missing) == 63
+    assert not [k for k in printed if k not in c]
+    assert len(printed) == (74 if "sensorEncPulseNumber" in mcat.get("sensors", {}) else 63)
+    misses = set()
     for k in printed:
-        if k in missing:
-            continue
         wrap, arg = _printed(printed[k])
         rec = c[k]
         assert rec["format"].split(" ")[0] in _WRAP[wrap], (k, rec["format"])
-        assert float(f"{rec['ideal'] / 2 ** _Q[wrap]:.6g}") == float(arg.rstrip("F")), \
-            (k, printed[k], rec["ideal"])
+        if float(f"{rec['ideal'] / 2 ** _Q[wrap]:.6g}") != float(arg.rstrip("F")):
+            misses.add(k)
+    assert misses == (LINIX_HAND_EDITED if name == "mcat_linix.json" else set()), name
+
+
+def test_mcat_linix_hand_edited_lines_are_mcats_in_its_twin():
+    """The linix file (NXP licence) and the BSD mc56f83000evk header carry the same MCAT DATE
+    stamp and the same encoder-observer inputs (N_max, sensorObsrvPar…); pulab gives for the
+    linix JSON what the twin prints, not the six edited lines (MCAT writes each SHIFT before its
+    GAIN; the edited lines have GAIN first and the float gains 1256.64, 39.4784, 0.0000318310
+    of the pmsm_float header split as x/2^n with the shift −n)."""
+    linix, edited = _mcat_header("mcat_linix.json")
+    twin, printed = _mcat_header("mcat_enc_mc56f83000evk_m1_pmsm_appconfig.h")
+    keys = ("parametersNmax", "sensorObsrvParSampleTime", "sensorObsrvParF0", "sensorObsrvParKsi")
+    assert [linix["parameters"].get(k, linix["sensors"].get(k)) for k in keys] == \
+        [twin["parameters"].get(k, twin["sensors"].get(k)) for k in keys]
+    c = pulab.report({"profiles": {"nxp": {"mcat": linix}}})["profiles"]["nxp"]["constants"]
+    for k in LINIX_HAND_EDITED:
+        wrap, arg = _printed(printed[k])
+        assert float(f"{c[k]['ideal'] / 2 ** _Q[wrap]:.6g}") == float(arg), k
+        assert edited[k] != printed[k], k
+    assert list(edited).index("M1_POSPE_TO_KP_GAIN") < list(edited).index("M1_POSPE_TO_KP_SHIFT")
+
+
+def test_mcat_encoder_macros_values_and_flags():
+    """The stored integers of the encoder macros (FRAC16/ACC32 truncate toward zero), for the
+    FRDM-MCXA153 header: 2 pole pairs, 1000 pulses, T = 62.5 µs, f0 = 100 Hz."""
+    mcat, printed = _mcat_header("mcat_enc_frdmmcxa153_m1_pmsm_appconfig.h")
+    c = pulab.report({"profiles": {"nxp": {"mcat": mcat}}})["profiles"]["nxp"]["constants"]
+    for k in ("M1_POSPE_MECH_POS_GAIN", "M1_POS_P_PROP_GAIN", "M1_POSPE_TO_KI_GAIN",
+              "M1_POSPE_TO_THETA_GAIN"):
+        wrap, arg = _printed(printed[k])
+        assert c[k]["value"] == int(float(arg) * 2 ** _Q[wrap]), k  # what FRAC16()/ACC32() store
+    assert (c["M1_POSPE_ENC_PULSES"]["value"], c["M1_POSPE_ENC_DIRECTION"]["value"]) == (1000, 1)
+    assert c["M1_POSPE_TO_KI_SHIFT"]["value"] == -4 and c["M1_POSPE_TO_KI_GAIN"]["shift"] == -4
+    bad = copy.deepcopy(mcat)
+    bad["sensors"]["positionLoopPLKp"] = 1.5   # FRAC16 holds < 1: saturates, flagged
+    c = pulab.report({"profiles": {"nxp": {"mcat": bad}}})["profiles"]["nxp"]["constants"]
+    assert c["M1_POS_P_PROP_GAIN"]["value"] == 32767 and c["M1_POS_P_PROP_GAIN"]["flags"]
 
 
 def test_mcat_json_fills_the_motor_and_typed_fields_win():
@@ -473,7 +525,8 @@ def test_mcat_newer_pole_pair_key_and_bad_json_name_the_field(tmp_path):
     assert run.returncode == 2 and "motor." in run.stderr
 
 
-@pytest.mark.parametrize("name", ["m1_pmsm_appconfig.h", "mcat_teknic_m2310p_m2_pmsm_appconfig.h"])
+@pytest.mark.parametrize("name", ["m1_pmsm_appconfig.h", "mcat_teknic_m2310p_m2_pmsm_appconfig.h",
+                                  *MCAT_ENC_HEADERS])
 def test_pulab_header_with_mcat_json_prints_mcats_macros_in_its_order(name):
     """``pulab header --profile nxp`` with MCAT's JSON: the same #define lines as MCAT's file,
     in its order, character for character."""

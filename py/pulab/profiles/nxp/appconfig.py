@@ -26,11 +26,20 @@ U_max = U_DCB,max/UmaxCoeff, T = currentLoopSampleTime, T_w = speedLoopSampleTim
         parameters)
     M1_SPEED_IIR_B0 = B1 = y/(2 + y)/2, M1_SPEED_IIR_A1 = (2 − y)/(2 + y)/2,  y = 2π·fc·T_w
 
+The encoder (MCAT's SENSORS section; its bundled JavaScript, nxp-mcuxpresso/mcux-motor_control :
+freemaster/pmsm_frac/mcat/js/mcat.js, SENSORS ``calculateParams``), ω_mech = 2π·N_max/60::
+
+    M1_POSPE_ENC_PULSES, _DIRECTION = sensorEncPulseNumber, sensorEncDir
+    M1_POSPE_ENC_N_MIN = sensorEncNmin/N_max (FRAC32),  M1_POS_P_PROP_GAIN = positionLoopPLKp
+    M1_POSPE_MECH_POS_GAIN = 2^15/(4·N_enc/2) (ACC32: a revolution is 2^16 position LSBs)
+    M1_POSPE_TO_KP, _KI, _THETA = the tracking observer of the sensorless one
+        (:func:`pulab.profiles.nxp.observer.tracking`) on the mechanical angle: ω_mech for
+        ω_max, ω0 = 2π·sensorObsrvParF0, ζ = sensorObsrvParKsi, T = sensorObsrvParSampleTime
+
 Read in the MCAT-generated headers rather than the JavaScript (which is older than the
 generator): U_max and f_max unrounded, the scalar minimum voltage over U_max (not U_DCB,max),
 the bus filter at ``parametersUdcbIIRf0`` (not a fixed 100 Hz), the V/Hz factor (no JavaScript
 read states it; it reproduces the three headers of tests/data/headers/nxp/observer_README.md).
-The encoder macros (``M1_POSPE_…``) are not computed.
 
 Examples
 --------
@@ -47,13 +56,15 @@ from __future__ import annotations
 from ...model.mcat import flatten
 from ..common import TWO_PI, fixed, real
 from . import scaling
-from .observer import _frac, _gain_shift
+from .observer import _frac, _gain_shift, tracking
 from .scaling import _acc32, _scales
 
 __all__ = ["constants", "profile"]
 
 _JS = ("Masmiseim36/nxpSDK : middleware/motor_control/freemaster/pmsm_frac/mcat/src/"
        "JS_functions/inner_Parameters.js, inner_SLoop.js")
+_ENC = ("nxp-mcuxpresso/mcux-motor_control : freemaster/pmsm_frac/mcat/js/mcat.js (MCAT's "
+        "SENSORS calculateParams)")
 _HDR = "MCAT-generated m1_pmsm_appconfig.h headers (tests/data/headers/nxp/observer_README.md)"
 
 
@@ -158,6 +169,35 @@ def constants(m: dict, ctx: dict, opt: dict) -> dict:
     fc = _n(m, "speedLoopCutOffFreq")
     if fc and tw:
         out.update(_iir("M1_SPEED_IIR", fc, tw, "speed low-pass at speedLoopCutOffFreq"))
+    out.update(_encoder(m, n_max))
+    return out
+
+
+def _encoder(m: dict, n_max) -> dict:
+    """The quadrature encoder's macros (MCAT's SENSORS section), from the JSON's ``sensors``."""
+    out = {}
+    pulses = _n(m, "sensorEncPulseNumber")
+    if pulses:
+        out["M1_POSPE_ENC_PULSES"] = _int("M1_POSPE_ENC_PULSES", pulses, "sensorEncPulseNumber",
+                                          _ENC)
+        # 4·N counts a revolution, and a revolution is 2^16 LSBs of the 16-bit position
+        out["M1_POSPE_MECH_POS_GAIN"] = _acc32("M1_POSPE_MECH_POS_GAIN", 32768.0 / (2.0 * pulses),
+                                               1.0, "LSB/count", "2^15/(4·N_enc/2)", _ENC)
+    if _n(m, "sensorEncDir") is not None:
+        out["M1_POSPE_ENC_DIRECTION"] = _int("M1_POSPE_ENC_DIRECTION", m["sensorEncDir"],
+                                             "sensorEncDir", _ENC)
+    n_min = _n(m, "sensorEncNmin")
+    if n_min is not None and n_max:
+        out["M1_POSPE_ENC_N_MIN"] = _frac("M1_POSPE_ENC_N_MIN", n_min / n_max, 32, n_max, "rpm",
+                                          "sensorEncNmin/N_max", _ENC)
+    kp = _n(m, "positionLoopPLKp")
+    if kp is not None:
+        out["M1_POS_P_PROP_GAIN"] = _frac("M1_POS_P_PROP_GAIN", kp, 16, 1.0, "",
+                                          "positionLoopPLKp", _ENC)
+    f0, ksi, t = (_n(m, k) for k in ("sensorObsrvParF0", "sensorObsrvParKsi",
+                                      "sensorObsrvParSampleTime"))
+    if f0 and ksi and t and n_max:  # the observer tracks the mechanical angle
+        out.update(tracking("M1_POSPE_TO", ksi, TWO_PI * f0, t, TWO_PI * n_max / 60.0, _ENC))
     return out
 
 

@@ -34,7 +34,9 @@ import json
 import math
 
 from ..common import SQRT3
+from ...model.mcat import flatten
 from ..decoding import check, current_loop, integrator_loop, macro, result
+from .appconfig import _encoder
 
 __all__ = ["decode_header"]
 
@@ -96,6 +98,9 @@ def _acc32(x: float) -> int:
 
 def _frac32(x: float) -> int:
     return int(max(-1.0, min(x, (_Q31 - 1) / _Q31)) * _Q31)
+
+
+_STORE = {"FRAC16": (_frac16, _Q15), "FRAC32": (_frac32, 2.0 ** 31), "ACC32": (_acc32, _Q15)}
 
 
 def _expected(j: dict, k: float, flt: bool) -> dict:
@@ -165,6 +170,10 @@ def _expected(j: dict, k: float, flt: bool) -> dict:
         if isinstance(sl.get("speedLoopSLKi"), (int, float)) and isinstance(tsp, (int, float)):
             out["M1_SPEED_PI_INTEG_GAIN"] = (sl["speedLoopSLKi"] * w_max / i_max * tsp,
                                              _acc32, _Q15)
+    if not flt:  # the encoder's macros: the profile's own records (appconfig)
+        for name, rec in _encoder(flatten(j), n_max).items():
+            store, per = _STORE.get(rec["format"].split(" ")[0], (round, 1.0))
+            out[name] = (rec["ideal"] / per, store, per)
     return out
 
 

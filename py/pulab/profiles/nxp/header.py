@@ -23,6 +23,10 @@ MCAT_ORDER = (
     ("SPEEDLOOP", ("M1_SPEED_RAMP_UP", "M1_SPEED_RAMP_DOWN", "M1_SPEED_LOOP_HIGH_LIMIT",
                    "M1_SPEED_LOOP_LOW_LIMIT", "M1_SPEED_PI_PROP_GAIN", "M1_SPEED_PI_INTEG_GAIN",
                    "M1_SPEED_IIR_B0", "M1_SPEED_IIR_B1", "M1_SPEED_IIR_A1")),
+    ("SENSORS", ("M1_POSPE_ENC_PULSES", "M1_POSPE_ENC_DIRECTION", "M1_POSPE_ENC_N_MIN",
+                 "M1_POSPE_MECH_POS_GAIN", "M1_POS_P_PROP_GAIN", "M1_POSPE_TO_KP_SHIFT",
+                 "M1_POSPE_TO_KP_GAIN", "M1_POSPE_TO_KI_SHIFT", "M1_POSPE_TO_KI_GAIN",
+                 "M1_POSPE_TO_THETA_SHIFT", "M1_POSPE_TO_THETA_GAIN")),
     ("SENSORLESS", ("M1_OL_START_RAMP_INC", "M1_OL_START_I", "M1_MERG_SPEED_TRH",
                     "M1_MERG_COEFF", "M1_I_SCALE", "M1_U_SCALE", "M1_E_SCALE", "M1_WI_SCALE",
                     "M1_BEMF_DQ_KP_GAIN", "M1_BEMF_DQ_KI_GAIN", "M1_TO_KP_SHIFT", "M1_TO_KP_GAIN",
@@ -31,16 +35,26 @@ MCAT_ORDER = (
 _Q = {"FRAC16": 15, "FRAC32": 31, "ACC32": 15}
 
 
-def _six(x: float, zeros: bool = False) -> str:
-    """x to 6 significant digits, positional (MCAT writes 0.0000681818, never 6.8e-05);
-    ``zeros``: keep trailing zeros, as MCAT does for its ACC32 arguments (0.0209740)."""
-    s = format(Decimal(f"{x:#.6g}" if zeros else f"{x:.6g}"), "f")
-    return s if "." in s else s + ".0"
+def _six(x: float) -> str:
+    """x as MCAT prints a number (its mcat.js, nxp-mcuxpresso/mcux-motor_control :
+    freemaster/pmsm_frac/mcat/js/mcat.js): an integer with ".0"; a number JavaScript writes
+    with fewer than 6 decimals as JavaScript writes it (0.0025, 16.384); any other to 6
+    significant digits with their trailing zeros (0.0209740, 0.00156250), positional.
+
+    >>> _six(4400.0), _six(0.0025), _six(0.0015625), _six(2 / 3 * 1e-4)
+    ('4400.0', '0.0025', '0.00156250', '0.0000666667')
+    """
+    if x == int(x):
+        return f"{int(x)}.0"
+    short = format(Decimal(repr(x)), "f")  # JavaScript's and Python's shortest digits agree
+    if len(short.split(".")[1]) < 6:
+        return short
+    return format(Decimal(f"{x:#.6g}"), "f")
 
 
 def mcat_define(name: str, c: dict) -> str:
     """One line as MCAT prints it: ``FRAC16(x)``/``FRAC32(x)``/``ACC32(x)`` with the argument
-    to 6 significant digits, ``(n)`` for an integer, ``(xF)`` for a float.
+    as MCAT prints a number (:func:`_six`), ``(n)`` for an integer, ``(xF)`` for a float.
 
     >>> from pulab.profiles.common import fixed
     >>> c = fixed("M1_N_MIN", 300 / 4400, 16, 15, 4400.0, "rpm", "", "", fmt="FRAC16")
@@ -51,16 +65,16 @@ def mcat_define(name: str, c: dict) -> str:
         return f"#define {name} ({_six(c['ideal'])}F)"
     wrap = c["format"].split(" ")[0]
     if wrap in _Q:
-        return f"#define {name} {wrap}({_six(c['ideal'] / 2 ** _Q[wrap], wrap == 'ACC32')})"
+        return f"#define {name} {wrap}({_six(c['ideal'] / 2 ** _Q[wrap])})"
     return f"#define {name} ({c['value']})"
 
 
 def _mcat_header(c: dict) -> str:
     """MCAT's layout (its section comments and order); macros the profile has not are left out."""
     out = ["#ifndef __M1_PMSM_APPCONFIG_H ", "#define __M1_PMSM_APPCONFIG_H ", ""]
-    for section, names in MCAT_ORDER:
-        out.append(f"/* {section}*/")
-        out += [mcat_define(n, c[n]) for n in names if n in c]
+    for section, names in MCAT_ORDER:  # a section without macros has no comment (MCAT's)
+        lines = [mcat_define(n, c[n]) for n in names if n in c]
+        out += [f"/* {section}*/"] + lines if lines else []
     return "\n".join(out + ["#endif /* __M1_PMSM_APPCONFIG_H */", ""])
 
 

@@ -24,6 +24,9 @@ JavaScript above is older than the generator:
   (coeff/100)·60/(p·N_merge)/T_s/2/32768 instead (the JavaScript's);
 - ``M1_N_MIN`` = N_min/N_max, ``M1_E_BLOCK_TRH`` = E_block/E_max (FRAC16).
 
+The tracking observer's three gains are :func:`tracking`'s, which the encoder's observer
+(``M1_POSPE_TO_…``, :mod:`pulab.profiles.nxp.appconfig`) shares.
+
 FRAC16(x) and FRAC32(x) truncate toward zero and saturate (RTCESL mlib_types.h), like ACC32.
 The observer's own scales (``M1_I_SCALE`` …) and the theta gain are in
 :func:`pulab.profiles.nxp.scaling.constants`.
@@ -36,7 +39,7 @@ import math
 from ..common import SOURCES, TWO_PI, derived, fixed, mantissa_shift
 from .scaling import _acc32, _scales
 
-__all__ = ["observer"]
+__all__ = ["observer", "tracking"]
 
 _APPCONFIG = ("MCAT-generated m1_pmsm_appconfig.h headers (tests/data/headers/nxp/"
               "observer_README.md)")
@@ -57,6 +60,24 @@ def _gain_shift(name, k, per_unit, unit, expr, source) -> dict:
                                    source, fmt="int16")}
 
 
+def tracking(prefix: str, zeta: float, w0: float, ts: float, w_ref: float, source) -> dict:
+    """MCAT's AMCLIB_TrackObsrv gains, each a FRAC16 mantissa with its shift (and the shifts
+    as constants of their own): ``{prefix}_KP`` = 2ζω0/ω_ref, ``{prefix}_KI`` = ω0²·T/ω_ref,
+    ``{prefix}_THETA`` = T·ω_ref/π, where ω_ref is the speed of the observer's full scale (the
+    electrical ω_max for the sensorless observer, the mechanical one for the encoder's).
+
+    >>> g = tracking("M1_POSPE_TO", 1.0, 2 * math.pi * 100, 1e-4, 2 * math.pi * 4400 / 60, "")
+    >>> g["M1_POSPE_TO_KP_SHIFT"]["value"], g["M1_POSPE_TO_THETA_SHIFT"]["value"]
+    (2, -6)
+    """
+    return {**_gain_shift(f"{prefix}_KP", 2.0 * zeta * w0 / w_ref, w_ref, "1/s", "2ζω0/ω_ref",
+                          source),
+            **_gain_shift(f"{prefix}_KI", w0 * w0 * ts / w_ref, w_ref / ts, "1/s²",
+                          "ω0²·T/ω_ref", source),
+            **_gain_shift(f"{prefix}_THETA", ts * w_ref / math.pi, math.pi / ts, "rad/s",
+                          "T·ω_ref/π", source)}
+
+
 def observer(ctx: dict, opt: dict) -> dict:
     """MCAT's sensorless integers for the settings ``ctx['observer']`` (None: none)."""
     s = ctx.get("observer")
@@ -75,13 +96,10 @@ def observer(ctx: dict, opt: dict) -> dict:
                                      "V/A", "(2ζω0·L_d − R_s)·I_max/E_max", js),
         "M1_BEMF_DQ_KI_GAIN": _acc32("M1_BEMF_DQ_KI_GAIN", ld * w0 * w0 * ts * im / em,
                                      em / im / ts, "V/(A·s)", "L_d·ω0²·T_s·I_max/E_max", js),
-        **_gain_shift("M1_TO_KP", 2.0 * s["tracking_damping"] * wt / w_max, w_max, "1/s",
-                      "2ζω_t/ω_max", js),
-        **_gain_shift("M1_TO_KI", wt * wt * ts / w_max, w_max / ts, "1/s²", "ω_t²·T_s/ω_max", js),
     }
-    theta = mantissa_shift(ts * w_max / math.pi, "nxp.M1_TO_THETA_SHIFT")[1]
-    out["M1_TO_THETA_SHIFT"] = fixed("M1_TO_THETA_SHIFT", theta, 16, 0, 1.0, "",
-                                     "shift of T_s·ω_max/π (M1_TO_THETA_GAIN's)", js, fmt="int16")
+    # M1_TO_THETA_GAIN itself is the profile's (scaling.constants): it is there without observer
+    out.update((k, v) for k, v in tracking("M1_TO", s["tracking_damping"], wt, ts, w_max,
+                                           js).items() if k != "M1_TO_THETA_GAIN")
     x = TWO_PI * s["speed_filter_hz"] * ts
     b0, a1 = x / (2.0 + x), (x - 2.0) / (2.0 + x)
     for name, v, expr in (("B0", b0 / 2.0, "b0/2"), ("B1", b0 / 2.0, "b1/2"),
