@@ -801,3 +801,14 @@ def test_api_bad_input_names_its_field(req, field):
     out = json.loads(call_json("audit", json.dumps(req)))
     assert out["ok"] is False and out["field"] == field, out
     assert out["message"] and chinese(out["message_zh"])
+
+
+def test_nxp_newer_mcat_spelling_of_the_pole_pairs_is_checked_too():
+    """MCAT's newer headers spell the pole pairs parametersPp: their constants are checked
+    against the JSON as the older ones' are."""
+    name = "mcat_enc_mc56f81000evk_2025_m1_pmsm_appconfig.h"
+    text = (HEADERS / "nxp" / name).read_text(encoding="utf-8")
+    assert '"parametersPp"' in text and '"parametersPP"' not in text
+    d = audit([(name, text)])
+    assert len(d["design"]["json_checked"]) >= 25
+    assert not [f for f in d["findings"] if f["code"] == "json"]

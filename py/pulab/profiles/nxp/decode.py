@@ -111,7 +111,9 @@ def _expected(j: dict, k: float, flt: bool) -> dict:
     sl, sn = j.get("speedLoop", {}), j.get("sensorless", {})
     out: dict = {}
     try:
-        i_max, udcb, pp = p["parametersImax"], p["parametersUdcbMax"], p["parametersPP"]
+        # MCAT spells the pole pairs parametersPP in older versions, parametersPp in newer ones
+        i_max, udcb = p["parametersImax"], p["parametersUdcbMax"]
+        pp = p["parametersPp"] if "parametersPp" in p else p["parametersPP"]
         n_max, e_max = p["parametersNmax"], p.get("parametersEmax")
         rs, ld, lq = p["parametersRs"], p["parametersLd"], p["parametersLq"]
         ts = c["currentLoopSampleTime"]
