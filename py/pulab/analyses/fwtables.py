@@ -221,8 +221,8 @@ def microchip_fw_id(curve: list, on_speed: int, shift: int, speed: int) -> int:
     then ``curve[i] − ((curve[i] − curve[i+1])·(speed − on_speed − i·2^shift) >> shift)`` with
     ``i = (speed − on_speed) >> shift`` (int16 differences, a 16×16 → 32-bit product).
 
-    >>> microchip_fw_id([0, -1043, -1341], 10000, 10, 10512)
-    -522
+    >>> microchip_fw_id([0, -1043, -1341], 10000, 10, 10512)   # 0 − (1043·512 >> 10)
+    -521
     """
     if speed <= on_speed:
         return curve[0]
