@@ -25,7 +25,7 @@ Examples
 >>> m = Limits(3.6, 0.036, 0.051, 0.545, 3, 540 / 3 ** 0.5, 4.3 * 2 ** 0.5)
 >>> t = generic_mtpa(m, 8, 15, "linear")
 >>> t["values"][:3], round(t["error_bound"], 5)
-([0, -105, -408], 0.00217)
+([0, -109, -435], 0.00505)
 """
 
 from __future__ import annotations
