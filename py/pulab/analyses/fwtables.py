@@ -146,7 +146,12 @@ def _q_of(x: float, lsb: float, flags: list) -> int:
 def _table(quantity, x_lsb, x_unit, k0, step, values, exact_ys, lsb, q, interpolation, worst,
            flags, **extra):
     n = len(values)
-    return {"quantity": quantity, "x": [(k0 + j * step) * x_lsb for j in range(n)],
+    name = "fw_id_of_speed" if x_unit == "rpm" else "mtpa_id_of_iq"
+    c = (f"/* {quantity}: breakpoints every {step} input digits from digit {k0} "
+         f"({x_lsb:.9g} {x_unit}/digit), Q{q} of the current limit ({lsb:.9g} A/LSB), "
+         f"{interpolation} */\n"
+         f"static const int16_t {name}[{n}] = {{ {', '.join(map(str, values))} }};")
+    return {"quantity": quantity, "c": c, "x": [(k0 + j * step) * x_lsb for j in range(n)],
             "y": exact_ys, "values": values, "format": f"int16 Q{q} of the current limit",
             "scale": lsb, "unit": "A", "x_scale": x_lsb, "x_unit": x_unit,
             "x_first_digit": k0, "x_step_digits": step, "error_bound": worst,
@@ -267,7 +272,12 @@ def microchip_fw(m: Limits, current_base_a: float, end_rpm: float) -> dict | Non
     for s in range(on, last + 1):
         e = abs(microchip_fw_id(curve, on, shift, s) * lsb - circle.id_at(s / w_to_erpm))
         worst = max(worst, e)
-    return {"quantity": "id_a(speed_rpm), Microchip AN1078 FieldWeakening (fdweak.c)",
+    c = "\n".join([f"#define FWONSPEED {on}  /* electrical rpm */",
+                    f"#define SPEED_INDEX_CONST {shift}",
+                    f"#define NORM_CURRENT_CONST {lsb:.9g}"]
+                   + [f"#define IDREF_SPEED{j} {v}  /* NORM_CURRENT({y:.6g}) */"
+                      for j, (v, y) in enumerate(zip(curve, ys))])
+    return {"quantity": "id_a(speed_rpm), Microchip AN1078 FieldWeakening (fdweak.c)", "c": c,
             "x": [(on + (j << shift)) / p for j in range(18)], "y": ys, "values": curve,
             "fwonspeed": on, "speed_index_const": shift, "norm_current_const": lsb,
             "format": "int16 Q15 of I_b (NORM_CURRENT)", "scale": lsb, "unit": "A",
@@ -314,6 +324,8 @@ def ti_mtpa(m: Limits, samples: int = 4096) -> dict | None:
     flags = [] if neg >= 0.0 else ["cla_nan"]
     cla = None if neg < 0.0 else abs(k32 - math.sqrt(neg) - mtpa(m, m.i)[0])
     return {"quantity": "id_a(is_a), TI MTPA_computeCurrentReference (float32)",
+            "c": f"/* kconst = 0.25*flux/(Lq - Ld), computed at run time by "
+                 f"MTPA_computeParameters: {k32!r} in float32 (exact {k!r}) */",
             "x": [0.0, m.i], "y": [0.0, mtpa(m, m.i)[0]], "values": [k32],
             "kconst": k32, "kconst_ideal": k, "kconst_error": (k32 - k) / k,
             "format": "float32 kconst (i_d = K − √(K² + I_s²/2))", "scale": None, "unit": "A",
@@ -352,7 +364,12 @@ def _pi_table(quantity, consts: dict, ss: dict, fmt: str, flags: list) -> dict:
     """A voltage-loop field weakening as a table-shaped entry: ``values`` its stored constants
     (``constants``: name → {value, ideal, error, unit}), ``error_bound`` its steady-state d
     current against the exact one, ``steady`` the rest of :func:`pi_fw`."""
-    return {"quantity": quantity, "x": [], "y": [], "values": [c["value"] for c in consts.values()],
+    c = "\n".join((f"#define {k} {v['value']}" if isinstance(v["value"], int) else
+                    f"#define {k} ({v['ideal']!r}f)  /* float32 {v['value']!r} */")
+                   if k.isupper() else f"/* {k} = {v['value']} (computed at run time) */"
+                   for k, v in consts.items())
+    return {"quantity": quantity, "c": c, "x": [], "y": [],
+            "values": [c["value"] for c in consts.values()],
             "constants": consts, "steady": ss, "format": fmt, "scale": None, "unit": "A",
             "error_bound": ss["error_bound"], "interpolation": "none (PI on the voltage)",
             "flags": sorted(set(flags))}
@@ -400,7 +417,8 @@ def st_fw(m: Limits, udc: float, digits_per_a: float, end_w: float) -> dict:
 #: TI's universal motor-control lab (user_mtr1.h): USER_M1_FWC_VREF = 0.98 of the Vs limit,
 #: USER_M1_FWC_KP 0.0225, USER_M1_FWC_KI 0.00225, USER_M1_FWC_MAX_ANGLE −10° (the PI's limit,
 #: current angle = 90° − output).
-TI_FWC = {"vref": 0.98, "kp": 0.0225, "ki": 0.00225, "max_angle_deg": -10.0}
+TI_FWC = {"vref_of_max_vs": 0.98, "USER_M1_FWC_KP": 0.0225, "USER_M1_FWC_KI": 0.00225,
+          "USER_M1_FWC_MAX_ANGLE": -10.0}
 
 
 def ti_fwc(m: Limits, end_w: float) -> dict:
@@ -408,9 +426,9 @@ def ti_fwc(m: Limits, end_w: float) -> dict:
     output advances the current angle by at most |USER_M1_FWC_MAX_ANGLE|, so at full current
     i_d ≥ −I·sin(10°): its steady state versus the exact trajectory, and the speed that angle
     limit leaves."""
-    adv = math.radians(-TI_FWC["max_angle_deg"])
+    adv = math.radians(-TI_FWC["USER_M1_FWC_MAX_ANGLE"])
     consts = {k: _const(_f32(v), v, "") for k, v in TI_FWC.items()}
-    ss = pi_fw(m, _f32(TI_FWC["vref"]), -m.i * math.sin(adv), end_w)
+    ss = pi_fw(m, _f32(TI_FWC["vref_of_max_vs"]), -m.i * math.sin(adv), end_w)
     return _pi_table("id_a(|v|), TI FWC_computeCurrentAngle (fwc.h)", consts, ss,
                      "float32 constants", [])
 
