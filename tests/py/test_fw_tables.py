@@ -72,8 +72,45 @@ def test_step_interpolation_bound_is_the_worst_digit():
     assert t["error_bound"] > fwtables.generic_mtpa(m, 8, 12, "linear")["error_bound"]
 
 
-def test_c_division_truncates_toward_zero():
-    assert [fwtables.c_div(a, b) for a, b in ((7, 2), (-7, 2), (7, -2), (-7, -2))] == [3, -3, -3, 3]
+_GENERIC_C = r"""
+#include <stdio.h>
+#include <stdint.h>
+#include <math.h>
+%(array)s
+int main(void) {
+    const double lsb = %(lsb).17g, psi = %(psi).17g, dl = %(dl).17g;
+    double worst = 0.0;
+    for (int32_t k = 0; k <= %(kmax)d; ++k) {
+        int32_t j = k / %(step)d;
+        if (j > %(last)d) j = %(last)d;
+        int32_t v = mtpa_id_of_iq[j] + (mtpa_id_of_iq[j + 1] - mtpa_id_of_iq[j]) * (k - j * %(step)d) / %(step)d;
+        double iq = k * lsb, e = fabs(v * lsb - (-psi + sqrt(psi * psi + 4.0 * dl * dl * iq * iq)) / (2.0 * dl));
+        if (e > worst) worst = e;
+    }
+    printf("%%.17g\n", worst);
+    return 0;
+}
+"""
+
+
+def test_generic_table_as_gcc_runs_its_c_export(tmp_path):
+    """The generic MTPA table's C text, read by the routine the contract states compiled by gcc
+    (C's division), gives pulab's error bound over every q-current digit."""
+    import subprocess
+    from ctrace_compilers import available
+    if available("gcc"):
+        pytest.skip(f"missing {available('gcc')}")
+    inp = json.loads(GOLDEN[0].read_text(encoding="utf-8"))["input"]
+    t = pulab.report(inp)["fw"]["tables"]["generic"]
+    m = _limits(inp)
+    src = tmp_path / "g.c"
+    src.write_text(_GENERIC_C % {"array": t["c"], "lsb": t["scale"], "psi": m.psi,
+                                 "dl": m.ld - m.lq, "kmax": t["x_last_digit"],
+                                 "step": t["x_step_digits"], "last": len(t["values"]) - 2})
+    exe = tmp_path / "g"
+    subprocess.run(["gcc", "-O1", str(src), "-o", str(exe), "-lm"], check=True)
+    worst = float(subprocess.run([str(exe)], check=True, capture_output=True, text=True).stdout)
+    assert t["error_bound"] == pytest.approx(worst, rel=1e-9)
 
 
 def test_microchip_q15_macro_gives_an1078_printed_curve():

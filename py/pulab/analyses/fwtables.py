@@ -37,25 +37,8 @@ from . import envelope
 from .envelope import (RPM, Limits, base_speed, best_torque, max_speed, mtpa, mtpa_id,
                        _st_digits_per_a, _vendor_options)
 
-__all__ = ["analyze", "fw_id", "generic_mtpa", "generic_fw", "microchip_fw", "ti_mtpa", "pi_fw", "c_div",
-           "lookup"]
-
-
-def c_div(a: int, b: int) -> int:
-    """C's integer division (toward zero)."""
-    q = abs(a) // abs(b)
-    return q if (a >= 0) == (b > 0) else -q
-
-
-def lookup(values: list, step: int, k: int, interpolation: str) -> int:
-    """The generic table's routine at input digit ``k`` (0 = the first breakpoint): segment
-    ``min(k/step, N−2)``, ``y[j] + (y[j+1] − y[j])·(k − j·step)/step`` in C integers (the last
-    segment extends past its end), or ``y[min(k/step, N−1)]`` for a step."""
-    j = k // step
-    if interpolation == "step":
-        return values[min(j, len(values) - 1)]
-    j = min(j, len(values) - 2)
-    return values[j] + c_div((values[j + 1] - values[j]) * (k - j * step), step)
+__all__ = ["analyze", "fw_id", "generic_mtpa", "generic_fw", "microchip_fw", "microchip_fw_id",
+           "ti_mtpa", "ti_fwc", "st_fw", "pi_fw"]
 
 
 def _speed_on_circle(m: Limits, th: float) -> float:
@@ -68,42 +51,53 @@ def _speed_on_circle(m: Limits, th: float) -> float:
 
 
 class _Circle:
-    """The field-weakening d current on the current circle, solved for one speed after another
-    (Newton on the current angle from the last solution, bisection when Newton leaves its
-    bracket): between the MTPA angle (base speed) and π (the maximum speed) the speed at which
-    the circle meets the voltage limit rises with the angle."""
+    """The field-weakening d current on the current circle, solved for one speed after another:
+    between the MTPA angle (base speed) and π (the maximum speed) the speed at which the circle
+    meets the voltage limit rises with the current angle. Secant steps from the last solution
+    extrapolated (the first with the last slope), inside a bisection bracket; done when
+    the speed is met to 1e-13 relative (the angle then to ~1e-13 rad, i_d to ~1e-13·I)."""
 
     def __init__(self, m: Limits):
         self.m = m
         self.lo = math.atan2(*reversed(mtpa(m, m.i)))
-        self.hi = math.pi
-        self.th = self.lo
+        self.w_lo, self.w_hi = _speed_on_circle(m, self.lo), _speed_on_circle(m, math.pi)
+        self.th, self.w, self.slope, self.d = self.lo, self.w_lo, 0.0, None
+
+    def _derivative(self, th: float) -> float:
+        h = 1e-6
+        return (_speed_on_circle(self.m, th + h) - _speed_on_circle(self.m, th - h)) / (2.0 * h)
 
     def id_at(self, w: float) -> float:
-        m, lo, hi = self.m, self.lo, self.hi
-        if w <= _speed_on_circle(m, lo):
-            return m.i * math.cos(lo)
-        if w >= _speed_on_circle(m, hi):
+        m = self.m
+        if w <= self.w_lo:
+            return m.i * math.cos(self.lo)
+        if w >= self.w_hi:
             return -m.i
-        th = min(max(self.th, lo), hi)
-        for _ in range(100):
+        lo, hi = self.lo, math.pi
+        th = min(max(self.th + self.slope * (w - self.w), lo), hi)
+        if self.d is None:
+            self.d = self._derivative(th)
+        prev = None
+        for _ in range(200):
             f = _speed_on_circle(m, th) - w
+            if abs(f) <= 1e-13 * w:
+                break
             if f > 0.0:
                 hi = th
             else:
                 lo = th
-            if hi - lo < 1e-15:
-                break
-            h = 1e-7
-            d = (_speed_on_circle(m, th + h) - _speed_on_circle(m, th - h)) / (2.0 * h)
-            nxt = th - f / d if d > 0.0 else 0.5 * (lo + hi)
+            if prev is not None and th != prev[0] and f != prev[1]:
+                self.d = (f - prev[1]) / (th - prev[0])     # the secant's slope
+            prev = (th, f)
+            nxt = th - f / self.d if self.d > 0.0 else 0.5 * (lo + hi)
             if not lo < nxt < hi:
                 nxt = 0.5 * (lo + hi)
-            if abs(nxt - th) < 1e-14:
-                th = nxt
+            if nxt == th:
                 break
             th = nxt
-        self.th = th
+        if w != self.w:
+            self.slope = (th - self.th) / (w - self.w)
+        self.th, self.w = th, w
         return m.i * math.cos(th)
 
 
@@ -134,6 +128,29 @@ def _on_circle_until(m: Limits, w_end: float) -> float:
         mid = 0.5 * (lo + hi)
         lo, hi = (mid, hi) if on(mid) else (lo, mid)
     return lo
+
+
+def _worst(values: list, step: int, count: int, interpolation: str, exact, lsb: float) -> float:
+    """max |table(k)·lsb − exact(k)| over the input digits k = 0..count−1 of the generic routine:
+    segment j = min(k/step, N−2), ``y[j] + (y[j+1] − y[j])·(k − j·step)/step`` in C integers
+    (division toward zero; the last segment extends past its end), or ``y[min(k/step, N−1)]``
+    for a step."""
+    worst, n = 0.0, len(values)
+    for j in range(0, (count - 1) // step + 1):
+        first, last = j * step, min((j + 1) * step, count)
+        if interpolation == "step":
+            y = values[min(j, n - 1)] * lsb
+            worst = max(worst, max(abs(y - exact(k)) for k in range(first, last)))
+            continue
+        s = min(j, n - 2)
+        y0, dy, k0 = values[s], values[s + 1] - values[s], s * step
+        for k in range(first, last):
+            num = dy * (k - k0)
+            v = y0 + (num // step if num >= 0 else -(-num // step))
+            e = abs(v * lsb - exact(k))
+            if e > worst:
+                worst = e
+    return worst
 
 
 def _q_of(x: float, lsb: float, flags: list) -> int:
@@ -173,8 +190,12 @@ def generic_mtpa(m: Limits, n: int, q: int, interpolation: str) -> dict:
         flags.append("fewer_digits_than_points")
     ys = [mtpa_id(m, j * step * lsb) for j in range(n)]
     values = [_q_of(y, lsb, flags) for y in ys]
-    worst = max(abs(lookup(values, step, k, interpolation) * lsb - mtpa_id(m, k * lsb))
-                for k in range(kmax + 1))
+    dl, psi = m.lq - m.ld, m.psi
+
+    def exact(k):   # mtpa_id inlined
+        iq = k * lsb
+        return -2.0 * dl * iq * iq / (psi + math.sqrt(psi * psi + 4.0 * dl * dl * iq * iq))
+    worst = _worst(values, step, kmax + 1, interpolation, exact, lsb)
     return _table("id_a(iq_a)", lsb, "A", 0, step, values, ys, lsb, q, interpolation, worst,
                   flags, x_last_digit=kmax)
 
@@ -208,8 +229,8 @@ def generic_fw(m: Limits, n: int, q: int, interpolation: str, end_rpm: float) ->
     ys = [circle.id_at((k0 + j * step) * x_lsb) for j in range(n)]
     values = [_q_of(y, lsb, flags) for y in ys]
     circle = _Circle(m)
-    worst = max(abs(lookup(values, step, k - k0, interpolation) * lsb - circle.id_at(k * x_lsb))
-                for k in range(k0, k1 + 1))
+    worst = _worst(values, step, k1 - k0 + 1, interpolation,
+                   lambda k: circle.id_at((k0 + k) * x_lsb), lsb)
     return _table("id_a(speed_rpm)", x_lsb_rpm, "rpm", k0, step, values, ys, lsb, q,
                   interpolation, worst, flags, x_last_digit=k1)
 
