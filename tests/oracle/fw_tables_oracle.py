@@ -158,23 +158,39 @@ def ti(P):
     return {"kconst": float(k), "error_sampled": float(np.abs(got.astype(np.longdouble) - exact).max())}
 
 
-def st(P, udc, dpa, end_rpm):
+def held_max_rpm(P, v_held, id_min):
+    """The highest speed at which full current with i_d = id_min needs no more than v_held."""
     r, ld, lq, psi, p, v, i = P
-    max_module = min(32767, math.floor(32767 * v / (udc / math.sqrt(3))))
-    ref = 985 * max_module // 1000
-    nominal = min(32767, math.floor(i * dpa))
-    v_held = ref * udc / (math.sqrt(3) * 32767)
-    Ph = (r, ld, lq, psi, p, v_held, i)
-    th = math.acos(max(-1.0, -nominal / dpa / i))
-    d, q = i * math.cos(th), i * math.sin(th)
+    d = max(id_min, -i)
+    q = math.sqrt(i * i - d * d)
     lo, hi = 0.0, 1.0
-    while vsq(Ph, hi, d, q) < v_held ** 2:
+    while vsq(P, hi, d, q) < v_held ** 2:
         hi *= 2
     for _ in range(200):
         mid = (lo + hi) / 2
-        lo, hi = (mid, hi) if vsq(Ph, mid, d, q) < v_held ** 2 else (lo, mid)
+        lo, hi = (mid, hi) if vsq(P, mid, d, q) < v_held ** 2 else (lo, mid)
+    return lo * 60 / (2 * math.pi * p)
+
+
+def st(P, udc, dpa):
+    v, i = P[5], P[6]
+    max_module = min(32767, math.floor(32767 * v / (udc / math.sqrt(3))))
+    ref = 985 * max_module // 1000
+    nominal = min(32767, math.floor(i * dpa))
     return {"values": [985, max_module, ref, -nominal, 3000, 5000, 32768, 32768],
-            "max_speed_rpm": lo * 60 / (2 * math.pi * p)}
+            "max_speed_rpm": held_max_rpm(P, ref * udc / (math.sqrt(3) * 32767), -nominal / dpa)}
+
+
+def nxp(P, udc):
+    """FRAC16(0.9) = 29491 of U_DCB/√3 held; MCAT's float 0.9/1.73205 printed to 12 decimals."""
+    return {"values": [29491, float(f"{0.9 / 1.73205:.12f}")],
+            "max_speed_rpm": held_max_rpm(P, 29491 / 32768 * udc / math.sqrt(3), -P[6])}
+
+
+def ti_fwc(P):
+    """0.98 of the voltage limit (as float32), the current angle at most 10° past the q axis."""
+    return {"max_speed_rpm": held_max_rpm(P, float(np.float32(0.98)) * P[5],
+                                          -P[6] * math.sin(math.radians(10)))}
 
 
 def expected(inp):
@@ -187,8 +203,9 @@ def expected(inp):
     out["ti_mtpa"] = ti(P)
     s = inp["profiles"]["st"]
     out["st_fw"] = st(P, inp["drive"]["udc_v"],
-                      65536 * s["rshunt_ohm"] * s["amplification_gain"] / s["adc_reference_v"],
-                      end_rpm)
+                      65536 * s["rshunt_ohm"] * s["amplification_gain"] / s["adc_reference_v"])
+    out["nxp_fw"] = nxp(P, inp["drive"]["udc_v"])
+    out["ti_fwc"] = ti_fwc(P)
     return out
 
 

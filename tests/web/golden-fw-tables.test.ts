@@ -36,11 +36,15 @@ describe('golden firmware MTPA/field-weakening tables through Pyodide', () => {
         expect(got, name).toBeDefined();
         for (const [key, value] of Object.entries(want)) {
           const have = key in got ? got[key] : got.steady?.[key];
-          if (typeof value === 'number' && !Number.isInteger(value)) {
-            const h = have as number;
-            expect(Math.abs(h - value), `${name}.${key}`).toBeLessThanOrEqual(gold.compare.rel * Math.max(Math.abs(h), Math.abs(value)) + 1e-12);
-          } else {
-            expect(have, `${name}.${key}`).toEqual(value);
+          const pairs: [unknown, unknown][] = Array.isArray(value) ? value.map((v, i) => [(have as unknown[])[i], v]) : [[have, value]];
+          if (Array.isArray(value)) expect((have as unknown[]).length, `${name}.${key}`).toBe(value.length);
+          for (const [h, v] of pairs) {
+            // a JSON float written with a fraction (the oracle's floats) to the tolerance, integers exactly
+            if (typeof v === 'number' && !Number.isInteger(v)) {
+              expect(Math.abs((h as number) - v), `${name}.${key}`).toBeLessThanOrEqual(gold.compare.rel * Math.max(Math.abs(h as number), Math.abs(v)) + 1e-12);
+            } else {
+              expect(h, `${name}.${key}`).toEqual(v);
+            }
           }
         }
       }

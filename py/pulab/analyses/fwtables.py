@@ -15,7 +15,9 @@ error the firmware can make, not a sample.
   libraries/control/mtpa/include/mtpa.h).
 - :func:`pi_fw`: a voltage-loop field weakening (ST MCSDK ``FW_CalcCurrRef``, Cuixudong/BLDC_DRV :
   firmware/FOC/foc_f405/MCSDK_v5.4.4-Full/MotorControl/MCSDK/MCLib/Any/Src/flux_weakening_ctrl.c;
-  TI ``FWC_computeCurrentAngle``, libraries/control/fwc/include/fwc.h): no table, so its constants
+  TI ``FWC_computeCurrentAngle``, libraries/control/fwc/include/fwc.h; NXP ``AMCLIB_CtrlFluxWkng``,
+  Masmiseim36/nxpSDK : middleware/rtcesl/CM4F_RTCESL_4.5_IAR/AMCLIB/Include/
+  AMCLIB_CtrlFluxWkng_FLT.h, held at MCAT's M1_CLOOP_LIMIT): no table, so its constants
   as integers versus their ideal, and the d current its voltage reference settles to versus the
   exact trajectory.
 
@@ -38,7 +40,7 @@ from .envelope import (RPM, Limits, base_speed, best_torque, max_speed, mtpa, mt
                        _st_digits_per_a, _vendor_options)
 
 __all__ = ["analyze", "fw_id", "generic_mtpa", "generic_fw", "microchip_fw", "microchip_fw_id",
-           "ti_mtpa", "ti_fwc", "st_fw", "pi_fw"]
+           "ti_mtpa", "ti_fwc", "st_fw", "nxp_fw", "pi_fw"]
 
 
 def _speed_on_circle(m: Limits, th: float) -> float:
@@ -384,16 +386,17 @@ def pi_fw(m: Limits, v_ratio: float, id_min: float, end_w: float, points: int = 
 def _pi_table(quantity, consts: dict, ss: dict, fmt: str, flags: list) -> dict:
     """A voltage-loop field weakening as a table-shaped entry: ``values`` its stored constants
     (``constants``: name → {value, ideal, error, unit}), ``error_bound`` its steady-state d
-    current against the exact one, ``steady`` the rest of :func:`pi_fw`."""
+    current against the exact one, ``steady`` the rest of :func:`pi_fw`; flag ``speed_limited``
+    when its voltage reference or output limit stops it below the end of the range."""
     c = "\n".join((f"#define {k} {v['value']}" if isinstance(v["value"], int) else
                     f"#define {k} ({v['ideal']!r}f)  /* float32 {v['value']!r} */")
-                   if k.isupper() else f"/* {k} = {v['value']} (computed at run time) */"
+                   if k.isupper() else f"/* {k} = {v['value']!r} */"
                    for k, v in consts.items())
     return {"quantity": quantity, "c": c, "x": [], "y": [],
             "values": [c["value"] for c in consts.values()],
             "constants": consts, "steady": ss, "format": fmt, "scale": None, "unit": "A",
             "error_bound": ss["error_bound"], "interpolation": "none (PI on the voltage)",
-            "flags": sorted(set(flags))}
+            "flags": sorted(set(flags + (["speed_limited"] if ss["cut_at_rpm"] is not None else [])))}
 
 
 def _const(value, ideal, unit):
@@ -470,6 +473,28 @@ def analyze(report: dict, cfg: dict) -> dict:
            "microchip_fw": microchip_fw(m, _vendor_options(report, "microchip")["current_base_a"],
                                         end_rpm),
            "ti_mtpa": ti_mtpa(m), "ti_fwc": ti_fwc(m, end_w),
+           "nxp_fw": nxp_fw(m, report["input"]["drive"]["udc_v"], end_w),
            "st_fw": st_fw(m, report["input"]["drive"]["udc_v"], _st_digits_per_a(report), end_w)}
     fw["tables"].update({k: v for k, v in out.items() if v is not None})
     return fw
+
+
+#: NXP MCAT's current-loop output limit (M1_CLOOP_LIMIT, 90 % by default): FRAC16(0.9) of
+#: U_max = U_DCB/√3 in the fractional build; 0.9/1.73205 of U_DCB in the float build (MCAT's
+#: √3 has six digits: Masmiseim36/nxpSDK : boards/hvpkv58f/demo_apps/mc_acim/m1_acim_appconfig.h
+#: prints 0.519615484541).
+NXP_CLOOP = 0.9
+
+
+def nxp_fw(m: Limits, udc: float, end_w: float) -> dict:
+    """NXP RTCESL ``AMCLIB_CtrlFluxWkng`` (AMCLIB_CtrlFluxWkng_FLT.h: inputs the q-current error,
+    the required q voltage and its limit): it weakens while the q voltage sits at the current
+    loop's limit, so it settles where |v| = M1_CLOOP_LIMIT·U_DCB/√3, i_d ≥ −I (its PI's lower
+    limit at the current limit). The fractional build stores FRAC16(0.9) = ⌊0.9·32768⌋."""
+    frac = math.floor(NXP_CLOOP * 32768.0)
+    flt = NXP_CLOOP / 1.73205
+    consts = {"M1_CLOOP_LIMIT": _const(frac, NXP_CLOOP * 32768.0, "FRAC16 of U_max"),
+              "M1_CLOOP_LIMIT_float": _const(flt, NXP_CLOOP / math.sqrt(3.0), "of U_DCB")}
+    ss = pi_fw(m, frac / 32768.0 * udc / math.sqrt(3.0) / m.v, -m.i, end_w)
+    return _pi_table("id_a(|v|), NXP AMCLIB_CtrlFluxWkng at M1_CLOOP_LIMIT", consts, ss,
+                     "FRAC16 / float32", [])
