@@ -218,3 +218,14 @@ def test_ti_fwc_angle_limit_stops_short_of_the_maximum_speed():
     t = fw["tables"]["ti_fwc"]
     assert t["flags"] == ["speed_limited"]
     assert 0.98 * fw["base_speed_rpm"] < t["steady"]["max_speed_rpm"] < fw["base_speed_rpm"]
+
+
+def test_coarse_note_only_for_tables_whose_size_the_input_sets():
+    """fw_table_coarse names analysis.fw.table_points: raised for the 8-point field-weakening
+    tables (2.1 % of I on the 2.2-kW motor), never for a vendor's fixed table or a voltage loop
+    (NXP's 90 % voltage costs 1.65 A of d current, not a breakpoint count)."""
+    inp = json.loads(GOLDEN[1].read_text(encoding="utf-8"))["input"]
+    r = pulab.report(inp)
+    keys = {x["key"] for x in r["review"] if x["code"] == "fw_table_coarse"}
+    assert keys == {"fw.tables.fw_id_of_speed.error_bound", "fw.tables.generic_fw.error_bound"}
+    assert r["fw"]["tables"]["nxp_fw"]["error_bound"] > 0.01 * r["fw"]["current_limit_a"]
