@@ -226,6 +226,6 @@ def test_coarse_note_only_for_tables_whose_size_the_input_sets():
     (NXP's 90 % voltage costs 1.65 A of d current, not a breakpoint count)."""
     inp = json.loads(GOLDEN[1].read_text(encoding="utf-8"))["input"]
     r = pulab.report(inp)
-    keys = {x["key"] for x in r["review"] if x["code"] == "fw_table_coarse"}
+    keys = {x["key"] for x in r["review"]["findings"] if x["code"] == "fw_table_coarse"}
     assert keys == {"fw.tables.fw_id_of_speed.error_bound", "fw.tables.generic_fw.error_bound"}
     assert r["fw"]["tables"]["nxp_fw"]["error_bound"] > 0.01 * r["fw"]["current_limit_a"]
