@@ -172,25 +172,37 @@ def held_max_rpm(P, v_held, id_min):
     return lo * 60 / (2 * math.pi * p)
 
 
-def st(P, udc, dpa):
+def steady(P, v_held, id_min, end_rpm):
+    """The d-current command of a voltage loop holding v_held (≥ id_min) against the exact one,
+    at 101 speeds from the lower base speed to the end: the largest difference, and the speed to
+    which it holds full current."""
+    r, ld, lq, psi, p, v, i = P
+    Ph = (r, ld, lq, psi, p, v_held, i)
+    top = min(end_rpm * p * 2 * math.pi / 60, max_w(P))
+    w = np.linspace(min(base_w(Ph), base_w(P)), top, 101)
+    held = np.maximum(fw_id(Ph, w), id_min)
+    return {"error_bound": float(np.abs(held - fw_id(P, w)).max()),
+            "max_speed_rpm": held_max_rpm(P, v_held, id_min)}
+
+
+def st(P, udc, dpa, end_rpm):
     v, i = P[5], P[6]
     max_module = min(32767, math.floor(32767 * v / (udc / math.sqrt(3))))
     ref = 985 * max_module // 1000
     nominal = min(32767, math.floor(i * dpa))
     return {"values": [985, max_module, ref, -nominal, 3000, 5000, 32768, 32768],
-            "max_speed_rpm": held_max_rpm(P, ref * udc / (math.sqrt(3) * 32767), -nominal / dpa)}
+            **steady(P, ref * udc / (math.sqrt(3) * 32767), -nominal / dpa, end_rpm)}
 
 
-def nxp(P, udc):
+def nxp(P, udc, end_rpm):
     """FRAC16(0.9) = 29491 of U_DCB/√3 held; MCAT's float 0.9/1.73205 printed to 12 decimals."""
     return {"values": [29491, float(f"{0.9 / 1.73205:.12f}")],
-            "max_speed_rpm": held_max_rpm(P, 29491 / 32768 * udc / math.sqrt(3), -P[6])}
+            **steady(P, 29491 / 32768 * udc / math.sqrt(3), -P[6], end_rpm)}
 
 
-def ti_fwc(P):
+def ti_fwc(P, end_rpm):
     """0.98 of the voltage limit (as float32), the current angle at most 10° past the q axis."""
-    return {"max_speed_rpm": held_max_rpm(P, float(np.float32(0.98)) * P[5],
-                                          -P[6] * math.sin(math.radians(10)))}
+    return steady(P, float(np.float32(0.98)) * P[5], -P[6] * math.sin(math.radians(10)), end_rpm)
 
 
 def expected(inp):
@@ -203,9 +215,10 @@ def expected(inp):
     out["ti_mtpa"] = ti(P)
     s = inp["profiles"]["st"]
     out["st_fw"] = st(P, inp["drive"]["udc_v"],
-                      65536 * s["rshunt_ohm"] * s["amplification_gain"] / s["adc_reference_v"])
-    out["nxp_fw"] = nxp(P, inp["drive"]["udc_v"])
-    out["ti_fwc"] = ti_fwc(P)
+                      65536 * s["rshunt_ohm"] * s["amplification_gain"] / s["adc_reference_v"],
+                      end_rpm)
+    out["nxp_fw"] = nxp(P, inp["drive"]["udc_v"], end_rpm)
+    out["ti_fwc"] = ti_fwc(P, end_rpm)
     return out
 
 

@@ -223,7 +223,7 @@ def test_ti_fwc_angle_limit_stops_short_of_the_maximum_speed():
 def test_coarse_note_only_for_tables_whose_size_the_input_sets():
     """fw_table_coarse names analysis.fw.table_points: raised for the 8-point field-weakening
     tables (2.1 % of I on the 2.2-kW motor), never for a vendor's fixed table or a voltage loop
-    (NXP's 90 % voltage costs 1.65 A of d current, not a breakpoint count)."""
+    (NXP's 90 % voltage costs 1.68 A of d current, not a breakpoint count)."""
     inp = json.loads(GOLDEN[1].read_text(encoding="utf-8"))["input"]
     r = pulab.report(inp)
     keys = {x["key"] for x in r["review"]["findings"] if x["code"] == "fw_table_coarse"}

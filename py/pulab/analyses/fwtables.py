@@ -357,30 +357,29 @@ def ti_mtpa(m: Limits, samples: int = 4096) -> dict | None:
 
 
 def pi_fw(m: Limits, v_ratio: float, id_min: float, end_w: float, points: int = 101) -> dict:
-    """The steady state of a voltage-loop field weakening that holds |v| at ``v_ratio``·V with
-    i_d ≥ ``id_min`` (its output limit), at full current, versus the exact trajectory (|v| = V):
-    ``error_bound`` the largest |i_d − exact i_d| over ``points`` speeds from base to the end
-    (where it can still hold the voltage; beyond, ``max_speed_rpm`` is where it cannot), the
-    lost speed ``max_speed_rpm`` versus the motor's."""
+    """The steady state of a voltage-loop field weakening that holds |v| at ``v_ratio``·V at full
+    current, its d-current command limited to ≥ ``id_min`` (its output limit, where it then
+    stays), versus the exact trajectory (|v| = V): ``error_bound`` the largest |command − exact
+    i_d| at ``points`` speeds uniform from the lower of the two base speeds to the end of the
+    range (the maximum speed or the end drawn); ``max_speed_rpm`` the highest speed at which it
+    still holds its voltage at full current (where the reduced voltage limit meets the current
+    circle at i_d = ``id_min``), ``base_speed_rpm`` where it starts weakening."""
     reduced = m._replace(v=m.v * v_ratio)
     wmax = max_speed(m)
     top = end_w if wmax is None else min(end_w, wmax)
     w0 = base_speed(reduced)
+    start = min(w0, base_speed(m))
     exact, held = _Circle(m), _Circle(reduced)
-    worst, w_lim = 0.0, None
-    ws = [w0 + (top - w0) * k / (points - 1) for k in range(points)] if top > w0 else []
-    for w in ws:
-        i_d = held.id_at(w)
-        if i_d < id_min or (max_speed(reduced) is not None and w >= max_speed(reduced)):
-            w_lim = w if w_lim is None else w_lim
-            break
-        worst = max(worst, abs(i_d - exact.id_at(w)))
-    # the highest speed it holds: the reduced ellipse meets the circle at i_d = id_min (or −I)
+    worst = 0.0
+    if top > start:
+        for k in range(points):
+            w = start + (top - start) * k / (points - 1)
+            worst = max(worst, abs(max(held.id_at(w), id_min) - exact.id_at(w)))
     th = math.acos(max(-1.0, min(1.0, id_min / m.i)))
     w_hold = _speed_on_circle(reduced, th)
     return {"v_ratio": v_ratio, "id_min_a": id_min, "base_speed_rpm": w0 * RPM / m.p,
             "max_speed_rpm": w_hold * RPM / m.p, "error_bound": worst, "unit": "A",
-            "cut_at_rpm": None if w_lim is None else w_lim * RPM / m.p}
+            "speed_limited": w_hold < top * (1.0 - 1e-12)}
 
 
 def _pi_table(quantity, consts: dict, ss: dict, fmt: str, flags: list) -> dict:
@@ -396,7 +395,7 @@ def _pi_table(quantity, consts: dict, ss: dict, fmt: str, flags: list) -> dict:
             "values": [c["value"] for c in consts.values()],
             "constants": consts, "steady": ss, "format": fmt, "scale": None, "unit": "A",
             "error_bound": ss["error_bound"], "interpolation": "none (PI on the voltage)",
-            "flags": sorted(set(flags + (["speed_limited"] if ss["cut_at_rpm"] is not None else [])))}
+            "flags": sorted(set(flags + (["speed_limited"] if ss["speed_limited"] else [])))}
 
 
 def _const(value, ideal, unit):
