@@ -229,3 +229,15 @@ def test_coarse_note_only_for_tables_whose_size_the_input_sets():
     keys = {x["key"] for x in r["review"]["findings"] if x["code"] == "fw_table_coarse"}
     assert keys == {"fw.tables.fw_id_of_speed.error_bound", "fw.tables.generic_fw.error_bound"}
     assert r["fw"]["tables"]["nxp_fw"]["error_bound"] > 0.01 * r["fw"]["current_limit_a"]
+
+
+def test_no_field_weakening_range_when_resistance_takes_the_voltage():
+    """R·I above the voltage limit (a fuzzer's ZeroDivisionError): base and maximum speed 0, no
+    speed table, the others still there."""
+    inp = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
+                     "rs_ohm": 81.9, "ld_h": 0.0006, "lq_h": 0.0006, "bemf_v": 12, "pole_pairs": 4},
+           "drive": {"udc_v": 24, "ts_s": 0.0001}, "analysis": {"fw": {"modulation": "spwm"}}}
+    fw = pulab.report(inp)["fw"]
+    assert fw["max_speed_rpm"] == 0.0
+    assert "generic_fw" not in fw["tables"] and "microchip_fw" not in fw["tables"]
+    assert fw["tables"]["generic"]["error_bound"] == 0.0      # surface motor: i_d = 0 exactly

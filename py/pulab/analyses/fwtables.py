@@ -216,6 +216,8 @@ def generic_fw(m: Limits, n: int, q: int, interpolation: str, end_rpm: float) ->
     above base speed; its error is the routine's at every speed digit of the range (base speed to
     the maximum speed, the end drawn or the start of MTPV) against the exact d current on the
     current circle. None when the range holds no digit above base speed."""
+    if not end_rpm > 0.0:   # no range (R·I alone exceeds the voltage limit)
+        return None
     x_lsb_rpm = end_rpm / 2.0 ** q
     x_lsb = x_lsb_rpm * m.p / RPM
     k0, k1 = _fw_range(m, end_rpm * m.p / RPM, x_lsb)
