@@ -322,11 +322,14 @@ def ti_mtpa(m: Limits, samples: int = 4096) -> dict | None:
     """TI's MTPA (``MTPA_computeParameters``, ``MTPA_computeCurrentReference``) in float32.
 
     K = 0.25·ψ/(L_q − L_d) (``kconst``) and i_d = K − √(K² + 0.5·I_s²), which is the exact MTPA
-    root; the error is float32 rounding only. ``error_bound`` is proven (u = 2⁻²⁴, ρ the relative
-    error of the stored K): ρ·K + 1.01·(2.5·u·√(K² + I²/2) + u·|i_d(I)|), since
-    ∂i_d/∂K ∈ [0, 1), the radicand's terms are both positive (≤ 3u relative), √ halves that and
-    adds u, and the subtraction adds u of its result; ``error_sampled`` is the emulated float32
-    routine's largest error at ``samples`` + 1 currents 0..I. The CLA build of mtpa.h writes
+    root; the error is float32 rounding only. ``error_bound`` is proven for the all-float32 build
+    (C28x COFF, where double is 32-bit; EABI computes the radicand in double, which errs less):
+    with u = 2⁻²⁴ and ρ the stored K's relative error, |error| ≤ ρ·K + 1.01·(2.5·u·√(K² + I²/2)
+    + u·|i_d(I)|), because ∂i_d/∂K ∈ [0, 1), the radicand K·K + 0.5·(I_s·I_s) has two rounded
+    products and a rounded sum of positive terms (≤ 2u relative, ×0.5 exact), √ halves that and
+    adds u (≤ 2u of √(K² + I_s²/2) in all, 2.5u with margin), and the subtraction adds u of its
+    result; ``error_sampled`` is the emulated float32 routine's largest error at ``samples`` + 1
+    currents 0..I (at most the bound: tested). The CLA build of mtpa.h writes
     √(K² − 0.5·I_s²): ``cla_error_at_limit_a`` is its error at I (null: the root of a negative
     number, flag ``cla_nan``). None for a surface motor (TI sets K = 0: i_d = 0, exact).
     """
