@@ -205,6 +205,26 @@ def ti_fwc(P, end_rpm):
     return steady(P, float(np.float32(0.98)) * P[5], -P[6] * math.sin(math.radians(10)), end_rpm)
 
 
+def microchip_ff(P, end_rpm):
+    """Microchip's feed-forward law (K_e = ψ, L_s = L_d, V_FW = V, clamp [−I, 0]) at full current:
+    the fixed point i_d = law(ω, √(I² − i_d²)) by a vectorised bisection over 101 speeds from base
+    to the end, against the exact i_d."""
+    r, ld, lq, psi, p, v, i = P
+    w = np.linspace(base_w(P), min(end_rpm * p * 2 * math.pi / 60, max_w(P)), 101)
+    lo, hi = np.full(w.shape, -i), np.zeros(w.shape)
+
+    def g(d):
+        arg = (v / w) ** 2 - (ld * np.sqrt(np.maximum(i * i - d * d, 0))) ** 2
+        law = np.clip((-psi + np.sqrt(np.maximum(arg, 0))) / ld, -i, 0)
+        return np.where(arg < 0, -1.0, law - d)
+    for _ in range(100):
+        mid = (lo + hi) / 2
+        up = g(mid) > 0
+        lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
+    d = np.where(g(np.zeros(w.shape)) >= 0, 0.0, np.where(g(np.full(w.shape, -i)) <= 0, -i, (lo + hi) / 2))
+    return {"error_bound": float(np.abs(d - fw_id(P, w)).max())}
+
+
 def expected(inp):
     P = params(inp)
     p = P[4]
@@ -219,6 +239,7 @@ def expected(inp):
                       end_rpm)
     out["nxp_fw"] = nxp(P, inp["drive"]["udc_v"], end_rpm)
     out["ti_fwc"] = ti_fwc(P, end_rpm)
+    out["microchip_ff"] = microchip_ff(P, end_rpm)
     return out
 
 

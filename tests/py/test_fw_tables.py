@@ -241,3 +241,15 @@ def test_no_field_weakening_range_when_resistance_takes_the_voltage():
     assert fw["max_speed_rpm"] == 0.0
     assert "generic_fw" not in fw["tables"] and "microchip_fw" not in fw["tables"]
     assert fw["tables"]["generic"]["error_bound"] == 0.0      # surface motor: i_d = 0 exactly
+
+
+def test_microchip_feed_forward_is_exact_without_resistance_on_a_surface_motor():
+    """Microchip's feed-forward law is the lossless surface-motor solution: with R → 0 and
+    L_d = L_q its steady state is the exact trajectory; R and saliency are what it misses."""
+    m = envelope.Limits(1e-9, 1.05e-3, 1.05e-3, 0.0098, 4, 24 / math.sqrt(3), 1.8)
+    wb, wm = envelope.base_speed(m), envelope.max_speed(m)
+    t = fwtables.microchip_ff(m, wm)
+    assert t["error_bound"] < 1e-6 * m.i and t["flags"] == []
+    assert fwtables.microchip_ff(m._replace(r=0.75), wm)["error_bound"] > 0.1
+    assert fwtables.microchip_ff(m._replace(lq=2.1e-3), wm)["flags"] == ["one_inductance"]
+    assert wb < wm

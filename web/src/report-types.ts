@@ -48,7 +48,7 @@ export interface FwTable {
   c?: string; x_scale?: number; x_unit?: string; x_first_digit?: number; x_step_digits?: number; x_last_digit?: number;
   fwonspeed?: number; speed_index_const?: number; kconst?: number; error_sampled?: number; cla_error_at_limit_a?: number | null;
   constants?: Record<string, { value: number; ideal: number | null; error: number | null; unit: string }>;
-  steady?: { max_speed_rpm: number; base_speed_rpm: number; error_bound: number; v_ratio: number; id_min_a: number };
+  steady?: { max_speed_rpm?: number; base_speed_rpm: number; error_bound: number; v_ratio?: number; id_min_a?: number };
 }
 
 /** The report's "fw" section (pulab.analyses.envelope). */

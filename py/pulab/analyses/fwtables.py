@@ -40,7 +40,7 @@ from .envelope import (RPM, Limits, base_speed, best_torque, max_speed, mtpa, mt
                        _st_digits_per_a, _vendor_options)
 
 __all__ = ["analyze", "fw_id", "generic_mtpa", "generic_fw", "microchip_fw", "microchip_fw_id",
-           "ti_mtpa", "ti_fwc", "st_fw", "nxp_fw", "pi_fw"]
+           "ti_mtpa", "ti_fwc", "st_fw", "nxp_fw", "microchip_ff", "pi_fw"]
 
 
 def _speed_on_circle(m: Limits, th: float) -> float:
@@ -478,6 +478,7 @@ def analyze(report: dict, cfg: dict) -> dict:
                                         end_rpm),
            "ti_mtpa": ti_mtpa(m), "ti_fwc": ti_fwc(m, end_w),
            "nxp_fw": nxp_fw(m, report["input"]["drive"]["udc_v"], end_w),
+           "microchip_ff": microchip_ff(m, end_w),
            "st_fw": st_fw(m, report["input"]["drive"]["udc_v"], _st_digits_per_a(report), end_w)}
     fw["tables"].update({k: v for k, v in out.items() if v is not None})
     return fw
@@ -502,3 +503,50 @@ def nxp_fw(m: Limits, udc: float, end_w: float) -> dict:
     ss = pi_fw(m, frac / 32768.0 * udc / math.sqrt(3.0) / m.v, -m.i, end_w)
     return _pi_table("id_a(|v|), NXP AMCLIB_CtrlFluxWkng at M1_CLOOP_LIMIT", consts, ss,
                      "FRAC16 / float32", [])
+
+
+def _mchp_ff_id(m: Limits, ls: float, w: float) -> float:
+    """The steady state of Microchip's feed-forward law at full current: the i_d with
+    i_d = (−ψ + √((V/ω)² − (L_s·i_q)²))/L_s, clamped to [−I, 0], and i_q = √(I² − i_d²) (its q
+    limit), by bisection on i_d (the law's radicand is negative while i_d is too shallow)."""
+    def g(i_d):
+        i_q = math.sqrt(max(m.i * m.i - i_d * i_d, 0.0))
+        arg = (m.v / w) ** 2 - (ls * i_q) ** 2
+        if arg < 0.0:
+            return -1.0
+        return min(max((-m.psi + math.sqrt(arg)) / ls, -m.i), 0.0) - i_d
+    lo, hi = -m.i, 0.0
+    if g(hi) >= 0.0:
+        return 0.0
+    if g(lo) <= 0.0:
+        return -m.i
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if g(mid) > 0.0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def microchip_ff(m: Limits, end_w: float, points: int = 101) -> dict:
+    """Microchip's feed-forward field weakening (flux_control.c, dsPIC33A motor-control
+    application, 2024: ``MCAPP_FeedForwardFluxWeakening``, found by exact-string search, index id
+    5334745449, repository not named by the search tool): i_d = (−K_e + √((V_FW/ω)² −
+    (L_s·i_q)²))/L_s in float, saturated to [IdRefMin, 0], above fwEnableSpeed. A lossless
+    surface-motor law with one inductance: evaluated with K_e = ψ, L_s = L_d, V_FW = V,
+    IdRefMin = −I, fwEnableSpeed = the base speed, at full current (i_q at its limit
+    √(I² − i_d²)), against the exact trajectory at ``points`` speeds from base to the end."""
+    wb = base_speed(m)
+    wmax = max_speed(m)
+    top = end_w if wmax is None else min(end_w, wmax)
+    exact = _Circle(m)
+    worst = 0.0
+    if top > wb > 0.0:
+        for k in range(points):
+            w = wb + (top - wb) * k / (points - 1)
+            worst = max(worst, abs(_mchp_ff_id(m, m.ld, w) - exact.id_at(w)))
+    consts = {"Ke": _const(_f32(m.psi), m.psi, "V·s/rad"), "Ls": _const(_f32(m.ld), m.ld, "H"),
+              "voltageLimitFW": _const(_f32(m.v), m.v, "V"), "IdRefMin": _const(_f32(-m.i), -m.i, "A")}
+    ss = {"error_bound": worst, "base_speed_rpm": wb * RPM / m.p, "l_s_is": "L_d",
+          "speed_limited": False}
+    flags = ["one_inductance"] if m.ld != m.lq else []
+    return _pi_table("id_a(speed, iq), Microchip MCAPP_FeedForwardFluxWeakening (float)", consts,
+                     ss, "float32 constants", flags)

@@ -43,7 +43,7 @@ export default async function fw({ check, assert, newPage, subSrv, ready, waitVa
     await page.waitForFunction(() => (document.querySelector('[data-err-for="analysis.fw.current_limit_a"]')?.textContent ?? '') === '', null, { timeout: 30_000 });
   });
 
-  await check('fw: an interior motor\'s vendor tables (generic, Microchip, TI, ST, NXP) equal CPython pulab', async () => {
+  await check('fw: an interior motor\'s vendor tables (generic, Microchip AN1078 and feed-forward, TI, ST, NXP) equal CPython pulab', async () => {
     // motulator's 2.2-kW interior motor (tests/golden/fw_tables/03_motulator_2k2_ipm.json)
     const gold = JSON.parse(readFileSync(join(GOLDEN, 'fw_tables', '03_motulator_2k2_ipm.json'), 'utf8'));
     await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(gold.input))}`);
@@ -54,7 +54,7 @@ export default async function fw({ check, assert, newPage, subSrv, ready, waitVa
     const n = await compareShown(page, want, '#panel-fw');
     const keys = await page.$$eval('#panel-fw [data-key^="fw.tables."]', (els) => els.map((e) => e.getAttribute('data-key')));
     for (const k of ['generic.error_bound', 'generic.x_step_digits', 'generic_fw.error_bound', 'microchip_fw.fwonspeed', 'ti_mtpa.kconst',
-      'ti_mtpa.error_sampled', 'st_fw.constants.wVoltLimit_Ref.value', 'st_fw.steady.max_speed_rpm', 'nxp_fw.constants.M1_CLOOP_LIMIT.value', 'ti_fwc.steady.max_speed_rpm']) {
+      'ti_mtpa.error_sampled', 'st_fw.constants.wVoltLimit_Ref.value', 'st_fw.steady.max_speed_rpm', 'nxp_fw.constants.M1_CLOOP_LIMIT.value', 'ti_fwc.steady.max_speed_rpm', 'microchip_ff.constants.Ls.value']) {
       assert(keys.includes(`fw.tables.${k}`), `fw.tables.${k} not shown`);
     }
     assert(n >= 40, `only ${n} numbers compared`);

@@ -46,7 +46,7 @@ function tableDetails(name: string, tb: FwTable): HTMLElement | null {
     parts.push('kconst ', num(k('kconst'), tb.kconst), `; ${t('fwSampled')} `, num(k('error_sampled'), tb.error_sampled, { unit: 'A' }));
     if (tb.cla_error_at_limit_a !== undefined) parts.push(`; ${t('fwClaError')} `, tb.cla_error_at_limit_a === null ? h('span', { 'data-key': k('cla_error_at_limit_a'), 'data-value': 'null' }, 'NaN') : num(k('cla_error_at_limit_a'), tb.cla_error_at_limit_a, { unit: 'A' }));
   }
-  if (tb.steady) parts.push(`${t('fwHeldMax')} `, num(k('steady.max_speed_rpm'), tb.steady.max_speed_rpm, { unit: 'rpm' }));
+  if (tb.steady?.max_speed_rpm !== undefined) parts.push(`${t('fwHeldMax')} `, num(k('steady.max_speed_rpm'), tb.steady.max_speed_rpm, { unit: 'rpm' }));
   const consts = tb.constants ? table([t('fwConstant'), t('fwStored'), t('fwIdeal'), t('fwRelError')],
     Object.entries(tb.constants).map(([c, v]) => [h('code', {}, c), num(k(`constants.${c}.value`), v.value),
       v.ideal === null ? '—' : num(k(`constants.${c}.ideal`), v.ideal), v.error === null ? '—' : num(k(`constants.${c}.error`), v.error, { kind: 'pct' })]), 'fw-constants') : null;
