@@ -20,6 +20,8 @@ error the firmware can make, not a sample.
   AMCLIB_CtrlFluxWkng_FLT.h, held at MCAT's M1_CLOOP_LIMIT): no table, so its constants
   as integers versus their ideal, and the d current its voltage reference settles to versus the
   exact trajectory.
+- :func:`microchip_ff`: Microchip's feed-forward law (a lossless one-inductance formula), its
+  steady state at full current against the exact trajectory.
 
 Examples
 --------
