@@ -253,3 +253,12 @@ def test_microchip_feed_forward_is_exact_without_resistance_on_a_surface_motor()
     assert fwtables.microchip_ff(m._replace(r=0.75), wm)["error_bound"] > 0.1
     assert fwtables.microchip_ff(m._replace(lq=2.1e-3), wm)["flags"] == ["one_inductance"]
     assert wb < wm
+
+
+def test_fw_table_golden_files_are_fresh():
+    """The oracle rewritten now gives the committed files (numpy; < 1 s)."""
+    import subprocess
+    import sys
+    r = subprocess.run([sys.executable, "fw_tables_oracle.py", "--check"], capture_output=True,
+                       text=True, cwd=pathlib.Path(__file__).resolve().parents[1] / "oracle")
+    assert r.returncode == 0, r.stdout + r.stderr
