@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from fw_oracle import CASES, params
+from fw_oracle import mtpa as fw_mtpa
 from golden_files import golden_dir, sync
 
 GOLDEN = Path(__file__).resolve().parents[1] / "golden" / "fw_tables"
@@ -152,10 +153,14 @@ def ti(P):
     k = f(0.25) * (f(psi) / (f(lq) - f(ld)))
     iss = np.linspace(0, i, 4097).astype(np.float32)
     got = k - np.sqrt(k * k + f(0.5) * (iss * iss))
-    # exact MTPA i_d at magnitude I_s: K − √(K² + I_s²/2) in long double, K exact
+    # exact MTPA i_d at magnitude I_s: K − √(K² + I_s²/2) in long double, K exact; the identity
+    # with fw_oracle's MTPA (a dense scan of the current angle) checked at three magnitudes
     kk = np.longdouble(psi) / (4 * np.longdouble(lq - ld))
     exact = kk - np.sqrt(kk * kk + iss.astype(np.longdouble) ** 2 / 2)
-    return {"kconst": float(k), "error_sampled": float(np.abs(got.astype(np.longdouble) - exact).max())}
+    for j in (1024, 2048, 4096):
+        assert abs(float(exact[j]) - fw_mtpa(P, float(iss[j]))[0]) < 1e-7 * i
+    return {"kconst": float(k),
+            "error_sampled": float(np.abs(got.astype(np.longdouble) - exact).max())}
 
 
 def held_max_rpm(P, v_held, id_min):
@@ -221,7 +226,8 @@ def microchip_ff(P, end_rpm):
         mid = (lo + hi) / 2
         up = g(mid) > 0
         lo, hi = np.where(up, mid, lo), np.where(up, hi, mid)
-    d = np.where(g(np.zeros(w.shape)) >= 0, 0.0, np.where(g(np.full(w.shape, -i)) <= 0, -i, (lo + hi) / 2))
+    d = np.where(g(np.zeros(w.shape)) >= 0, 0.0,
+                 np.where(g(np.full(w.shape, -i)) <= 0, -i, (lo + hi) / 2))
     return {"error_bound": float(np.abs(d - fw_id(P, w)).max())}
 
 

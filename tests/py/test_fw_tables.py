@@ -16,7 +16,8 @@ import pulab
 from pulab import InputError
 from pulab.analyses import envelope, fwtables
 
-GOLDEN = sorted((pathlib.Path(__file__).resolve().parents[1] / "golden" / "fw_tables").glob("*.json"))
+GOLDEN = sorted((pathlib.Path(__file__).resolve().parents[1] / "golden" / "fw_tables")
+                .glob("*.json"))
 
 
 def _close(a, b, rel):
@@ -162,7 +163,8 @@ def test_microchip_routine_as_gcc_runs_it(tmp_path):
     subprocess.run(["gcc", "-O1", str(src), "-o", str(exe)], check=True)
     out = list(map(int, subprocess.run([str(exe)], check=True, capture_output=True,
                                        text=True).stdout.split()))
-    assert out == [fwtables.microchip_fw_id(t["values"], on, shift, s) for s in range(on - 3, hi + 1)]
+    assert out == [fwtables.microchip_fw_id(t["values"], on, shift, s)
+                   for s in range(on - 3, hi + 1)]
 
 
 def test_ti_mtpa_constant_and_its_cla_build():

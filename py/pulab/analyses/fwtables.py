@@ -309,7 +309,8 @@ def microchip_fw(m: Limits, current_base_a: float, end_rpm: float) -> dict | Non
             "fwonspeed": on, "speed_index_const": shift, "norm_current_const": lsb,
             "format": "int16 Q15 of I_b (NORM_CURRENT)", "scale": lsb, "unit": "A",
             "x_scale": 1.0 / p, "x_unit": "rpm", "error_bound": worst,
-            "error_bound_digits": worst / lsb, "interpolation": "AN1078 segments (>> SPEED_INDEX_CONST)",
+            "error_bound_digits": worst / lsb,
+            "interpolation": "AN1078 segments (>> SPEED_INDEX_CONST)",
             "flags": sorted(set(flags))}
 
 
@@ -546,7 +547,8 @@ def microchip_ff(m: Limits, end_w: float, points: int = 101) -> dict:
             w = wb + (top - wb) * k / (points - 1)
             worst = max(worst, abs(_mchp_ff_id(m, m.ld, w) - exact.id_at(w)))
     consts = {"Ke": _const(_f32(m.psi), m.psi, "V·s/rad"), "Ls": _const(_f32(m.ld), m.ld, "H"),
-              "voltageLimitFW": _const(_f32(m.v), m.v, "V"), "IdRefMin": _const(_f32(-m.i), -m.i, "A")}
+              "voltageLimitFW": _const(_f32(m.v), m.v, "V"),
+              "IdRefMin": _const(_f32(-m.i), -m.i, "A")}
     ss = {"error_bound": worst, "base_speed_rpm": wb * RPM / m.p, "l_s_is": "L_d",
           "speed_limited": False}
     flags = ["one_inductance"] if m.ld != m.lq else []
