@@ -9,7 +9,8 @@ error the firmware can make, not a sample.
   in the input digit, linear interpolation (C division toward zero) or a step (hold).
 - :func:`microchip_fw`: Microchip AN1078's 18-entry field-weakening curve (``qFwCurve``, speed in
   electrical rpm, index ``(speed − FWONSPEED) >> SPEED_INDEX_CONST``; microchip-pic-avr-solutions/
-  lvmc-dspic33ck256mp508-an1078 : lvmc-dspic33ck256mp508-an1078/fdweak.c and userparms.h).
+  lvmc-dspic33ck256mp508-an1078 : lvmc-dspic33ck256mp508-an1078/fdweak.c and userparms.h; pmsm.c
+  sets the speed reference in electrical rpm, ENDSPEED_ELECTR … MAXIMUMSPEED_ELECTR).
 - :func:`ti_mtpa`: TI's MTPA (``kconst`` = 0.25·ψ/(L_q − L_d), i_d = K − √(K² + I_s²/2), float32;
   anyway-blows/ti-c2000-motor-control-sdk : libraries/control/mtpa/source/mtpa.c and
   libraries/control/mtpa/include/mtpa.h).
