@@ -205,9 +205,11 @@ def nxp(P, udc, end_rpm):
             **steady(P, 29491 / 32768 * udc / math.sqrt(3), -P[6], end_rpm)}
 
 
-def ti_fwc(P, end_rpm):
-    """0.98 of the voltage limit (as float32), the current angle at most 10° past the q axis."""
-    return steady(P, float(np.float32(0.98)) * P[5], -P[6] * math.sin(math.radians(10)), end_rpm)
+def ti_fwc(P, udc, end_rpm):
+    """VsRef = float32(0.98f·0.576)·V_dc; the current angle at most 10° past the q axis, or the
+    MTPA angle when larger."""
+    vref = float(np.float32(float(np.float32(0.98)) * 0.576)) * udc
+    return steady(P, vref, min(-P[6] * math.sin(math.radians(10)), mtpa_at_limit(P)[0]), end_rpm)
 
 
 def microchip_ff(P, end_rpm):
@@ -244,7 +246,7 @@ def expected(inp):
                       65536 * s["rshunt_ohm"] * s["amplification_gain"] / s["adc_reference_v"],
                       end_rpm)
     out["nxp_fw"] = nxp(P, inp["drive"]["udc_v"], end_rpm)
-    out["ti_fwc"] = ti_fwc(P, end_rpm)
+    out["ti_fwc"] = ti_fwc(P, inp["drive"]["udc_v"], end_rpm)
     out["microchip_ff"] = microchip_ff(P, end_rpm)
     return out
 

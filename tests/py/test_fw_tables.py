@@ -213,8 +213,8 @@ def test_nxp_cloop_limit_reproduces_mcat_s_printed_float():
 
 def test_ti_fwc_angle_limit_stops_short_of_the_maximum_speed():
     """A 10° current-angle advance at full current gains almost nothing on the 2.2-kW motor (its
-    MTPA angle is already 9.1°), and 98 % of the voltage costs more: full current only up to
-    1532.7 rpm, below the exact base speed 1558.5 rpm. Flagged, its speed stated."""
+    MTPA angle is already 9.1°), and VsRef = 0.98·0.576·V_dc costs more: full current only up
+    to 1528.9 rpm, below the exact base speed 1558.5 rpm. Flagged, its speed stated."""
     inp = json.loads(GOLDEN[1].read_text(encoding="utf-8"))["input"]
     fw = pulab.report(inp)["fw"]
     t = fw["tables"]["ti_fwc"]

@@ -397,6 +397,7 @@ def _pi_table(quantity, consts: dict, ss: dict, fmt: str, flags: list) -> dict:
     current against the exact one, ``steady`` the rest of :func:`pi_fw`; flag ``speed_limited``
     when its voltage reference or output limit stops it below the end of the range."""
     c = "\n".join((f"#define {k} {v['value']}" if isinstance(v["value"], int) else
+                    f"#define {k} ({v['value']!r})" if v["value"] == v["ideal"] else
                     f"#define {k} ({v['ideal']!r}f)  /* float32 {v['value']!r} */")
                    if k.isupper() else f"/* {k} = {v['value']!r} */"
                    for k, v in consts.items())
@@ -446,46 +447,29 @@ def st_fw(m: Limits, udc: float, digits_per_a: float, end_w: float) -> dict:
                      "int16/uint32 digits", flags)
 
 
-#: TI's universal motor-control lab (user_mtr1.h): USER_M1_FWC_VREF = 0.98 of the Vs limit,
-#: USER_M1_FWC_KP 0.0225, USER_M1_FWC_KI 0.00225, USER_M1_FWC_MAX_ANGLE −10° (the PI's limit,
-#: current angle = 90° − output).
-TI_FWC = {"vref_of_max_vs": 0.98, "USER_M1_FWC_KP": 0.0225, "USER_M1_FWC_KI": 0.00225,
-          "USER_M1_FWC_MAX_ANGLE": -10.0}
+#: TI's universal motor-control lab (anyway-blows/ti-c2000-motor-control-sdk :
+#: solutions/universal_motorcontrol_lab/common/include/user_mtr1.h: USER_M1_MAX_VS_MAG_PU 0.576
+#: of V_dc, USER_M1_FWC_KP 0.0225, USER_M1_FWC_KI 0.00225, USER_M1_FWC_MAX_ANGLE −10°;
+#: common/source/motor1_drive.c: VsRef_pu = 0.98·USER_M1_MAX_VS_MAG_PU, VsRef_V = VsRef_pu·V_dc,
+#: current angle = max(FWC angle, MTPA angle), FWC angle = 90° − the PI's output).
+TI_FWC = {"USER_M1_MAX_VS_MAG_PU": 0.576, "VsRef_pu_factor": 0.98, "USER_M1_FWC_KP": 0.0225,
+          "USER_M1_FWC_KI": 0.00225, "USER_M1_FWC_MAX_ANGLE": -10.0}
 
 
-def ti_fwc(m: Limits, end_w: float) -> dict:
-    """TI's FWC (``FWC_computeCurrentAngle``): a float32 PI on |V_s| to USER_M1_FWC_VREF whose
-    output advances the current angle by at most |USER_M1_FWC_MAX_ANGLE|, so at full current
-    i_d ≥ −I·sin(10°): its steady state versus the exact trajectory, and the speed that angle
-    limit leaves."""
-    adv = math.radians(-TI_FWC["USER_M1_FWC_MAX_ANGLE"])
-    consts = {k: _const(_f32(v), v, "") for k, v in TI_FWC.items()}
-    ss = pi_fw(m, _f32(TI_FWC["vref_of_max_vs"]), -m.i * math.sin(adv), end_w)
+def ti_fwc(m: Limits, udc: float, end_w: float) -> dict:
+    """TI's FWC (``FWC_computeCurrentAngle``): a float32 PI on |V_s| to VsRef = 0.98·0.576·V_dc
+    whose output advances the current angle by at most |USER_M1_FWC_MAX_ANGLE|, the MTPA angle
+    taken when larger, so at full current i_d ≥ min(−I·sin 10°, MTPA i_d at I): its steady state
+    versus the exact trajectory, and the speed that angle limit leaves."""
+    # float32 constants (…f literals); USER_M1_MAX_VS_MAG_PU is a double literal, the product
+    # 0.98f·(0.576) is double, stored in float32 VsRef_pu
+    c = {k: (v if k == "USER_M1_MAX_VS_MAG_PU" else _f32(v)) for k, v in TI_FWC.items()}
+    adv = math.radians(-c["USER_M1_FWC_MAX_ANGLE"])
+    consts = {k: _const(c[k], v, "") for k, v in TI_FWC.items()}
+    vref = _f32(c["VsRef_pu_factor"] * c["USER_M1_MAX_VS_MAG_PU"]) * udc
+    ss = pi_fw(m, vref / m.v, min(-m.i * math.sin(adv), mtpa(m, m.i)[0]), end_w)
     return _pi_table("id_a(|v|), TI FWC_computeCurrentAngle (fwc.h)", consts, ss,
                      "float32 constants", [])
-
-
-def analyze(report: dict, cfg: dict) -> dict:
-    """The report's ``fw`` section: :func:`pulab.analyses.envelope.analyze` with the generic
-    tables and each vendor's storage added to ``tables`` (docs/contract.md, "Output: fw",
-    "Field-weakening tables per vendor")."""
-    fw = envelope.analyze(report, cfg)
-    m = envelope.limits(report["input"]["motor"], fw["psi_wb"], fw["voltage_limit_v"],
-                        fw["current_limit_a"])
-    n, q, how = cfg["table_points"], cfg["table_q"], cfg["interpolation"]
-    end_rpm = fw["speed_max_rpm"] if fw["max_speed_rpm"] is None else \
-        min(fw["speed_max_rpm"], fw["max_speed_rpm"])
-    end_w = end_rpm * m.p / RPM
-    out = {"generic": generic_mtpa(m, n, q, how),
-           "generic_fw": generic_fw(m, n, q, how, end_rpm),
-           "microchip_fw": microchip_fw(m, _vendor_options(report, "microchip")["current_base_a"],
-                                        end_rpm),
-           "ti_mtpa": ti_mtpa(m), "ti_fwc": ti_fwc(m, end_w),
-           "nxp_fw": nxp_fw(m, report["input"]["drive"]["udc_v"], end_w),
-           "microchip_ff": microchip_ff(m, end_w),
-           "st_fw": st_fw(m, report["input"]["drive"]["udc_v"], _st_digits_per_a(report), end_w)}
-    fw["tables"].update({k: v for k, v in out.items() if v is not None})
-    return fw
 
 
 #: NXP MCAT's current-loop output limit (M1_CLOOP_LIMIT, 90 % by default): FRAC16(0.9) of
@@ -555,3 +539,26 @@ def microchip_ff(m: Limits, end_w: float, points: int = 101) -> dict:
     flags = ["one_inductance"] if m.ld != m.lq else []
     return _pi_table("id_a(speed, iq), Microchip MCAPP_FeedForwardFluxWeakening (float)", consts,
                      ss, "float32 constants", flags)
+
+
+def analyze(report: dict, cfg: dict) -> dict:
+    """The report's ``fw`` section: :func:`pulab.analyses.envelope.analyze` with the generic
+    tables and each vendor's storage added to ``tables`` (docs/contract.md, "Output: fw",
+    "Output: fw.tables")."""
+    fw = envelope.analyze(report, cfg)
+    m = envelope.limits(report["input"]["motor"], fw["psi_wb"], fw["voltage_limit_v"],
+                        fw["current_limit_a"])
+    n, q, how = cfg["table_points"], cfg["table_q"], cfg["interpolation"]
+    end_rpm = fw["speed_max_rpm"] if fw["max_speed_rpm"] is None else \
+        min(fw["speed_max_rpm"], fw["max_speed_rpm"])
+    end_w = end_rpm * m.p / RPM
+    out = {"generic": generic_mtpa(m, n, q, how),
+           "generic_fw": generic_fw(m, n, q, how, end_rpm),
+           "microchip_fw": microchip_fw(m, _vendor_options(report, "microchip")["current_base_a"],
+                                        end_rpm),
+           "ti_mtpa": ti_mtpa(m), "ti_fwc": ti_fwc(m, report["input"]["drive"]["udc_v"], end_w),
+           "nxp_fw": nxp_fw(m, report["input"]["drive"]["udc_v"], end_w),
+           "microchip_ff": microchip_ff(m, end_w),
+           "st_fw": st_fw(m, report["input"]["drive"]["udc_v"], _st_digits_per_a(report), end_w)}
+    fw["tables"].update({k: v for k, v in out.items() if v is not None})
+    return fw
