@@ -214,8 +214,8 @@ def report_steps(inp: dict):
         out["loop"] = _loop.analyze(out, n["analysis"])
         out["input"]["analysis"] = _loop.validate(n["analysis"])
         if out["input"]["analysis"]["fw"] is not None:
-            from .analyses import envelope as _envelope
-            out["fw"] = _envelope.analyze(out, out["input"]["analysis"]["fw"])
+            from .analyses import fwtables as _fwtables
+            out["fw"] = _fwtables.analyze(out, out["input"]["analysis"]["fw"])
     if sim_in is not None:
         out["sim"] = yield from _sim.simulate_steps(out, sim_in)
     out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"), firmware,

@@ -41,9 +41,14 @@ export type BoardRow = Record<string, number | string | null>;
 
 /** One stored table of the field-weakening output. */
 export interface FwTable {
-  quantity: string; x: number[]; y: number[]; values: number[]; format: string; scale: number; unit: string; error_bound: number; interpolation: string;
+  quantity: string; x: number[]; y: number[]; values: number[]; format: string; scale: number | null; unit: string; error_bound: number; interpolation: string;
   /** ST's 8-segment look-up: its macros, the other build's (>> 15) bound, what did not fit int16. */
   segdiv?: number; iqmax?: number; angc?: number[]; ofst?: number[]; error_bound_shift?: number; flags?: string[];
+  /** pulab.analyses.fwtables: the C text, the input digits, TI's float32 figures, a voltage loop's constants and steady state. */
+  c?: string; x_scale?: number; x_unit?: string; x_first_digit?: number; x_step_digits?: number; x_last_digit?: number;
+  fwonspeed?: number; speed_index_const?: number; kconst?: number; error_sampled?: number; cla_error_at_limit_a?: number | null;
+  constants?: Record<string, { value: number; ideal: number | null; error: number | null; unit: string }>;
+  steady?: { max_speed_rpm?: number; base_speed_rpm: number; error_bound: number; v_ratio?: number; id_min_a?: number };
 }
 
 /** The report's "fw" section (pulab.analyses.envelope). */

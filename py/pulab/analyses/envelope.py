@@ -273,12 +273,17 @@ def _table(quantity: str, xs: list, exact, scale: float, unit: str, dense: list)
             "scale": scale, "unit": unit, "error_bound": err, "interpolation": "linear"}
 
 
-def _st_digits_per_a(report: dict) -> float | None:
-    """ST's current digits per ampere, 65536·R_shunt·G/V_ref, from its profile's options (the
-    report's, else its defaults for this report: the board's when given)."""
+def _vendor_options(report: dict, name: str) -> dict:
+    """A vendor profile's options: the report's, else its defaults for this report (the board's
+    when given)."""
     from ..profiles import context_of, options
-    prof = (report.get("profiles") or {}).get("st")
-    o = prof["inputs"] if prof is not None else options({}, context_of(report))["st"]
+    prof = (report.get("profiles") or {}).get(name)
+    return prof["inputs"] if prof is not None else options({}, context_of(report))[name]
+
+
+def _st_digits_per_a(report: dict) -> float:
+    """ST's current digits per ampere, 65536·R_shunt·G/V_ref."""
+    o = _vendor_options(report, "st")
     return 65536.0 * o["rshunt_ohm"] * o["amplification_gain"] / o["adc_reference_v"]
 
 

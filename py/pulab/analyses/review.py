@@ -487,8 +487,10 @@ def _fw(f: list, n: dict, fw: dict | None) -> None:
     if top is not None and given.get("speed_max_rpm") is not None and given["speed_max_rpm"] > top:
         _finding(f, "warning", "fw_beyond_max", "fw.max_speed_rpm", "analysis.fw.speed_max_rpm",
                  top, want=given["speed_max_rpm"], top=top)
-    for name, t in fw["tables"].items():
-        if t["error_bound"] > 0.01 * fw["current_limit_a"]:
+    # only the tables whose size analysis.fw.table_points sets (a vendor's has its own)
+    for name in ("mtpa_id_of_iq", "fw_id_of_speed", "generic", "generic_fw"):
+        t = fw["tables"].get(name)
+        if t is not None and t["error_bound"] > 0.01 * fw["current_limit_a"]:
             _finding(f, "note", "fw_table_coarse", f"fw.tables.{name}.error_bound",
                      "analysis.fw.table_points", t["error_bound"], table=name,
                      err=t["error_bound"], pct=100.0 * t["error_bound"] / fw["current_limit_a"],

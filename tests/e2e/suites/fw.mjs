@@ -1,8 +1,9 @@
 // Above base speed: the view's numbers equal CPython pulab for the page's motor and the form's
 // options, a bad option is shown, and the view is looked at in zh and en at 390/900/1366 px.
+import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
-export default async function fw({ check, assert, newPage, subSrv, ready, waitValue, cpython, compareShown, SHOTS }) {
+export default async function fw({ check, assert, newPage, subSrv, ready, waitValue, cpython, compareShown, SHOTS, GOLDEN }) {
   // MathWorks' BLY171D on a 24 V DRV8312 kit: base speed 5393 rpm (mcb.PMSMSpeeds)
   const bly = { motor: { rated_voltage_v: 24, rated_current_a: 1.8 / Math.SQRT2, rated_freq_hz: 4000 * 4 / 60,
     rs_ohm: 0.75, ld_h: 1.05e-3, lq_h: 1.05e-3, bemf_v: 3.8 * 4 / Math.SQRT2, pole_pairs: 4 }, drive: { udc_v: 24, ts_s: 5e-5 } };
@@ -40,6 +41,26 @@ export default async function fw({ check, assert, newPage, subSrv, ready, waitVa
     await page.fill(box, '');
     await page.$eval('#panel-fw', (e) => e.scrollIntoView());
     await page.waitForFunction(() => (document.querySelector('[data-err-for="analysis.fw.current_limit_a"]')?.textContent ?? '') === '', null, { timeout: 30_000 });
+  });
+
+  await check('fw: an interior motor\'s vendor tables (generic, Microchip AN1078 and feed-forward, TI, ST, NXP) equal CPython pulab', async () => {
+    // motulator's 2.2-kW interior motor (tests/golden/fw_tables/03_motulator_2k2_ipm.json)
+    const gold = JSON.parse(readFileSync(join(GOLDEN, 'fw_tables', '03_motulator_2k2_ipm.json'), 'utf8'));
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(gold.input))}`);
+    await ready(page);
+    await open();
+    // TI's MTPA exists for an interior motor only: the BLY171D's view is gone when it shows
+    await page.waitForSelector('#panel-fw [data-key="fw.tables.ti_mtpa.kconst"][data-value]', { timeout: 60_000 });
+    const want = cpython(gold.input);
+    const n = await compareShown(page, want, '#panel-fw');
+    const keys = await page.$$eval('#panel-fw [data-key^="fw.tables."]', (els) => els.map((e) => e.getAttribute('data-key')));
+    for (const k of ['generic.error_bound', 'generic.x_step_digits', 'generic_fw.error_bound', 'microchip_fw.fwonspeed', 'ti_mtpa.kconst',
+      'ti_mtpa.error_sampled', 'st_fw.constants.wVoltLimit_Ref.value', 'st_fw.steady.max_speed_rpm', 'nxp_fw.constants.M1_CLOOP_LIMIT.value', 'ti_fwc.steady.max_speed_rpm', 'microchip_ff.constants.Ls.value']) {
+      assert(keys.includes(`fw.tables.${k}`), `fw.tables.${k} not shown`);
+    }
+    assert(n >= 40, `only ${n} numbers compared`);
+    const c = await page.$$eval('#panel-fw pre.c-array', (els) => els.map((e) => e.textContent ?? ''));
+    assert(c.some((t) => t.includes('#define SPEED_INDEX_CONST')) && c.some((t) => t.includes('static const int16_t mtpa_id_of_iq[8]')), 'C exports');
   });
 
   await check('fw: screenshots at 390/900/1366 px, zh and en', async () => {

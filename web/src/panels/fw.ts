@@ -22,12 +22,36 @@ export function fwInput(inp: Input): Input {
 const views = new WeakMap<HTMLElement, OwnRequest<FwReport>>();
 
 function cArray(name: string, tb: FwTable): string {
+  if (tb.c !== undefined) return tb.c;
   // ST's look-up is three macros of drive_parameters.h, the others one array each
   if (tb.segdiv !== undefined && tb.angc && tb.ofst) {
     return [`#define IQMAX   ${tb.iqmax}`, `#define SEGDIV  ${tb.segdiv}`,
       `#define ANGC    {${tb.angc.join(',')}}`, `#define OFST    {${tb.ofst.join(',')}}`].join('\n');
   }
   return `static const int16_t ${name}[${tb.values.length}] = { ${tb.values.join(', ')} };`;
+}
+
+/** What a table of pulab.analyses.fwtables adds: its input digits, TI's float32 figures, a voltage
+ * loop's constants (stored, ideal, error) and the speed its steady state holds. */
+function tableDetails(name: string, tb: FwTable): HTMLElement | null {
+  const k = (key: string): string => `fw.tables.${name}.${key}`;
+  const parts: (Node | string)[] = [];
+  if (tb.x_scale !== undefined) {
+    parts.push(`${t('fwInput')}: `, num(k('x_scale'), tb.x_scale, { unit: `${tb.x_unit}/digit` }));
+    if (tb.x_step_digits !== undefined) parts.push(' × ', num(k('x_step_digits'), tb.x_step_digits, { kind: 'int' }));
+    if (tb.x_first_digit !== undefined) parts.push(', ', num(k('x_first_digit'), tb.x_first_digit, { kind: 'int' }), '…', num(k('x_last_digit'), tb.x_last_digit, { kind: 'int' }));
+  }
+  if (tb.fwonspeed !== undefined) parts.push(' FWONSPEED ', num(k('fwonspeed'), tb.fwonspeed, { kind: 'int' }), ', SPEED_INDEX_CONST ', num(k('speed_index_const'), tb.speed_index_const, { kind: 'int' }));
+  if (tb.kconst !== undefined) {
+    parts.push('kconst ', num(k('kconst'), tb.kconst), `; ${t('fwSampled')} `, num(k('error_sampled'), tb.error_sampled, { unit: 'A' }));
+    if (tb.cla_error_at_limit_a !== undefined) parts.push(`; ${t('fwClaError')} `, tb.cla_error_at_limit_a === null ? h('span', { 'data-key': k('cla_error_at_limit_a'), 'data-value': 'null' }, 'NaN') : num(k('cla_error_at_limit_a'), tb.cla_error_at_limit_a, { unit: 'A' }));
+  }
+  if (tb.steady?.max_speed_rpm !== undefined) parts.push(`${t('fwHeldMax')} `, num(k('steady.max_speed_rpm'), tb.steady.max_speed_rpm, { unit: 'rpm' }));
+  const consts = tb.constants ? table([t('fwConstant'), t('fwStored'), t('fwIdeal'), t('fwRelError')],
+    Object.entries(tb.constants).map(([c, v]) => [h('code', {}, c), num(k(`constants.${c}.value`), v.value),
+      v.ideal === null ? '—' : num(k(`constants.${c}.ideal`), v.ideal), v.error === null ? '—' : num(k(`constants.${c}.error`), v.error, { kind: 'pct' })]), 'fw-constants') : null;
+  if (!parts.length && !consts) return null;
+  return h('div', { class: 'fw-details' }, parts.length ? h('p', {}, ...parts) : null, consts);
 }
 
 export const fwPanel: Panel = {
@@ -55,10 +79,13 @@ export const fwPanel: Panel = {
       h('h3', {}, t('fwSpeedCurves')),
       h('div', { class: 'figure', 'data-keep': 'fw-speed' }),
       h('h3', {}, t('fwTables')),
+      fw ? h('p', { class: 'note' }, t('fwTablesNote')) : null,
       ...(fw ? Object.entries(fw.tables).map(([name, tb]) => h('div', { class: 'fw-table' },
-        h('p', {}, h('code', {}, name), ` — ${tb.quantity}, ${tb.format} (`, num(`fw.tables.${name}.scale`, tb.scale, { unit: `${tb.unit}/LSB` }),
-          `), ${t('fwErrorBound')} `, num(`fw.tables.${name}.error_bound`, tb.error_bound, { unit: tb.unit }),
+        h('p', {}, h('code', {}, name), ` — ${tb.quantity}, ${tb.format}`,
+          tb.scale !== null ? [' (', num(`fw.tables.${name}.scale`, tb.scale, { unit: `${tb.unit}/LSB` }), ')'] : null,
+          `, ${t('fwErrorBound')} `, num(`fw.tables.${name}.error_bound`, tb.error_bound, { unit: tb.unit }),
           tb.error_bound_shift !== undefined ? [' (>> 15: ', num(`fw.tables.${name}.error_bound_shift`, tb.error_bound_shift, { unit: tb.unit }), ')'] : null),
+        tableDetails(name, tb),
         tb.flags?.length ? flagChips(tb.flags) : null,
         h('pre', { class: 'c-array' }, cArray(name, tb)))) : []),
     );
