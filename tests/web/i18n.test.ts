@@ -1,5 +1,7 @@
 import { describe, it, expect } from 'vitest';
-import { DICTS, defaultLang, errText, setLang, t } from '../../web/src/i18n';
+import { readFileSync, readdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { DICTS, defaultLang, errText, has, setLang, t } from '../../web/src/i18n';
 import { ALL_FIELDS, SECTIONS } from '../../web/src/fields';
 import { vendorName } from '../../web/src/vendors';
 
@@ -80,4 +82,17 @@ describe('the feature files under i18n/', () => {
     expect(Object.keys(DICTS.en).sort()).toEqual(keys);
     expect(dicts.length).toBeGreaterThanOrEqual(10);
   });
+});
+
+describe('the field-weakening tables are described in both languages', () => {
+  // every table the golden interior motors produce (tests/golden/fw_tables, written by numpy)
+  const dir = join(__dirname, '../golden/fw_tables');
+  const names = new Set(readdirSync(dir).filter((f) => f.endsWith('.json'))
+    .flatMap((f) => Object.keys((JSON.parse(readFileSync(join(dir, f), 'utf8')) as { expected: object }).expected)));
+  for (const name of [...names, 'st_mtpa', 'mtpa_id_of_iq', 'fw_id_of_speed']) {
+    it(name, () => {
+      expect(has(`fwTable_${name}`), name).toBe(true);
+      expect(DICTS.zh[`fwTable_${name}` as keyof typeof DICTS.zh]).toMatch(/[\u4e00-\u9fff]/);
+    });
+  }
 });

@@ -3,7 +3,7 @@
 // analysis.fw options, asked of pulab by this panel (it costs more than a report, so it has its
 // own request and never delays the numbers of the others).
 import { flagChips, h, num, patch, table } from '../dom';
-import { t } from '../i18n';
+import { has, t } from '../i18n';
 import { effectiveInput } from '../fields';
 import { reportInput, type Input } from '../state';
 import { keptFigure } from '../figures/figure';
@@ -20,6 +20,12 @@ export function fwInput(inp: Input): Input {
 }
 
 const views = new WeakMap<HTMLElement, OwnRequest<FwReport>>();
+
+/** What a table holds, in the page's language (the report's `quantity` and `format` are English). */
+function tableWhat(name: string, tb: FwTable): string {
+  const key = `fwTable_${name}`;
+  return has(key) ? t(key) : `${tb.quantity}, ${tb.format}`;
+}
 
 function cArray(name: string, tb: FwTable): string {
   if (tb.c !== undefined) return tb.c;
@@ -81,7 +87,7 @@ export const fwPanel: Panel = {
       h('h3', {}, t('fwTables')),
       fw ? h('p', { class: 'note' }, t('fwTablesNote')) : null,
       ...(fw ? Object.entries(fw.tables).map(([name, tb]) => h('div', { class: 'fw-table' },
-        h('p', {}, h('code', {}, name), ` — ${tb.quantity}, ${tb.format}`,
+        h('p', {}, h('code', {}, name), ` — ${tableWhat(name, tb)}`,
           tb.scale !== null ? [' (', num(`fw.tables.${name}.scale`, tb.scale, { unit: `${tb.unit}/LSB` }), ')'] : null,
           `, ${t('fwErrorBound')} `, num(`fw.tables.${name}.error_bound`, tb.error_bound, { unit: tb.unit }),
           tb.error_bound_shift !== undefined ? [' (>> 15: ', num(`fw.tables.${name}.error_bound_shift`, tb.error_bound_shift, { unit: tb.unit }), ')'] : null),
