@@ -183,8 +183,8 @@ def run_fixed_steps(z, i_b: float, u_b: float, pm_kp_d: int, pm_ki_d: int, pm_kp
     to_q12 = 4096.0 / i_b
     to_volt = u_b / 4096.0
     xd, xq = z.x0
-    # as the PI clamps them (minu = -maxu)
-    integ_d = iqsat(integ_d0, maxu, wrap_to(-maxu, INT32))
+    # a preload as the PI clamps it (minu = -maxu); no d preload is the reset state, 0
+    integ_d = iqsat(integ_d0, maxu, wrap_to(-maxu, INT32)) if integ_d0 else 0
     integ_q = iqsat(integ_q0, maxu, wrap_to(-maxu, INT32))
     prev_d = max(-maxout, min(maxout, integ_d >> 12)) * to_volt
     prev_q = max(-maxout, min(maxout, integ_q >> 12)) * to_volt
