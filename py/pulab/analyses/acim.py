@@ -161,26 +161,27 @@ def hot_rotor(a: dict, alpha: float, rise_k: float = HOT_K) -> dict | None:
 
     R_r → R_r·(1 + α·ΔT), so the true τ_r is k = 1/(1 + α·ΔT) of the estimate and the slip the
     controller sets is k times what the orientation needs.  In steady state at the rated
-    currents (t = I_q/I_m) the rotor flux is ψ = L_m·i/(1 + j·k·t): its angle is off by
-    atan(t) − atan(k·t), its magnitude by √((1 + t²)/(1 + k²·t²)), the torque per ampere by
+    currents (t = I_q/I_m) the rotor flux is ψ = L_m·i/(1 + j·k·t): it leads the controller's
+    d axis by atan(t) − atan(k·t), its magnitude by √((1 + t²)/(1 + k²·t²)), the torque per ampere by
     k·(1 + t²)/(1 + k²·t²) (linear magnetics: in a real motor saturation caps the flux rise).
 
     Returns
     -------
     dict or None (no torque current at rated current) — ``rise_k``, ``rr_pct`` (R_r rise),
-    ``slip_pct`` (needed slip over the estimate − 1), ``angle_deg``, ``flux_pct``,
+    ``slip_pct`` (needed slip over the estimate − 1), ``angle_deg`` (the flux's lead),
+    ``flux_pct``,
     ``torque_pct`` (each the error, %)
 
     >>> h = hot_rotor({"torque_current_a": 1.39553, "magnetizing_current_a": 0.55}, 0.00393)
     >>> round(h["slip_pct"], 3), round(h["angle_deg"], 2), round(h["torque_pct"], 1)
-    (39.3, -7.26, 23.7)
+    (39.3, 7.26, 23.7)
     """
     if a["torque_current_a"] is None:
         return None
     k = 1.0 / (1.0 + alpha * rise_k)
     t = a["torque_current_a"] / a["magnetizing_current_a"]
     return {"rise_k": rise_k, "rr_pct": 100.0 * alpha * rise_k, "slip_pct": 100.0 * (1.0 / k - 1.0),
-            "angle_deg": math.degrees(math.atan(k * t) - math.atan(t)),
+            "angle_deg": math.degrees(math.atan(t) - math.atan(k * t)),
             "flux_pct": 100.0 * (math.sqrt((1.0 + t * t) / (1.0 + k * k * t * t)) - 1.0),
             "torque_pct": 100.0 * (k * (1.0 + t * t) / (1.0 + k * k * t * t) - 1.0)}
 

@@ -844,12 +844,12 @@ MESSAGES = {
         "{t95:.3g} s（约 3·τ_r），或起动时加大 i_d，或在磁链模型达到 95 % 前保持转矩给定为零"),
     "finding.acim_rr_hot": (
         "with the rotor {rise_k:g} K hotter R_r rises {rr_pct:.3g} %, and a slip estimate with the "
-        "cold τ_r sets {slip_pct:.3g} % too little slip: at rated current the field orientation is "
-        "off by {angle_deg:.3g}°, the rotor flux by {flux_pct:+.3g} % and the torque per ampere by "
+        "cold τ_r sets {slip_pct:.3g} % too little slip: at rated current the rotor flux leads the "
+        "controller's d axis by {angle_deg:.3g}°, the rotor flux by {flux_pct:+.3g} % and the torque per ampere by "
         "{torque_pct:+.3g} % (linear magnetics; saturation limits the flux rise, the torque then "
         "falls short). Track R_r (temperature model, MRAS) or tune τ_r for the hot motor",
         "转子温升 {rise_k:g} K 时 R_r 升高 {rr_pct:.3g} %，用冷态 τ_r 的转差估计少给 {slip_pct:.3g} % "
-        "的转差：额定电流下磁场定向偏差 {angle_deg:.3g}°，转子磁链偏差 {flux_pct:+.3g} %，每安培转矩"
+        "的转差：额定电流下转子磁链超前控制器 d 轴 {angle_deg:.3g}°，转子磁链偏差 {flux_pct:+.3g} %，每安培转矩"
         "偏差 {torque_pct:+.3g} %（线性磁路；饱和会限制磁链上升，转矩随之不足）。请跟踪 R_r"
         "（温度模型、MRAS）或按热态整定 τ_r"),
     "finding.acim_im_ratio": (

@@ -1,0 +1,153 @@
+"""An induction motor's simulation (pulab.analyses.sim.induction) and its review findings.
+
+1. Golden trajectories: tests/oracle/acim_sim_oracle.py (flux-linkage ODE discretized with
+   scipy, float PI and the seed's PI in np.int32; never imports pulab).  The ``pu`` variant
+   is compared with the oracle's ``si``.
+2. TI's IQ PI: the feedback a run recorded replayed through the C oracle
+   (tests/oracle/vendor_pi.c, gcc -m32 -fwrapv), output for output.
+3. Refusals name their field; the review's hot-rotor numbers against a time-domain run.
+"""
+
+from __future__ import annotations
+
+import copy
+import json
+import math
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+import pulab
+from ctrace_compilers import require
+from pulab.analyses import acim as acim_review
+from pulab.analyses.sim import induction
+from pulab.analyses.sim.current import run_float
+from pulab.analyses.sim.plant import acim_zoh
+from pulab.analyses.sim.vendor_loop import run_profile_steps
+from pulab.analyses.slices import finish
+from pulab.schema.errors import InputError
+from test_sim import _compare
+from test_vendor_loop import _replay, oracle  # noqa: F401 (the compiled C oracle fixture)
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+GOLDEN = sorted((ROOT / "tests/golden/acim-sim").glob("*.json"))
+MEZ = {"motor": {"kind": "acim", "rated_voltage_v": 42 * math.sqrt(3.0), "rated_current_a": 1.5,
+                 "rated_freq_hz": 50, "rated_speed_rpm": 1370, "pole_pairs": 2, "rs_ohm": 0.6,
+                 "rr_ohm": 0.4, "lls_h": 0.009, "llr_h": 0.009, "lm_h": 0.0525,
+                 "magnetizing_current_a": 0.55},
+       "drive": {"udc_v": 150, "ts_s": 1e-4}}
+
+
+def test_golden_files_exist_and_are_fresh():
+    assert len(GOLDEN) >= 2
+    r = subprocess.run([sys.executable, str(ROOT / "tests/oracle/acim_sim_oracle.py"), "--check"],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+
+
+def _project(got: dict, exp: dict) -> dict:
+    """pulab's section reduced to the oracle's keys (a key pulab lacks fails as KeyError)."""
+    out = {k: got[k] for k in exp if k not in ("variants", "metrics")}
+    out["variants"] = {k: {kk: got["variants"][k][kk] for kk in exp["variants"][k]}
+                       for k in exp["variants"]}
+    out["metrics"] = {k: {kk: got["metrics"][k][kk] for kk in exp["metrics"][k]}
+                      for k in exp["metrics"]}
+    return out
+
+
+@pytest.mark.parametrize("path", GOLDEN, ids=[p.stem for p in GOLDEN])
+def test_golden_trajectory(path):
+    case = json.loads(path.read_text())
+    sim = pulab.report(case["input"])["sim"]
+    bad = []
+    for sec in ("current", "flux"):
+        exp = case["expected"][sec]
+        _compare(_project(sim[sec], exp), exp, sec, case["compare"], bad)
+        # the per-unit float run is the SI one in other units
+        pu = {k: sim[sec]["variants"]["pu"][k] for k in exp["variants"]["si"]}
+        _compare(pu, exp["variants"]["si"], f"{sec}.variants.pu", case["compare"], bad)
+    assert not bad, "\n".join(bad[:20])
+
+
+def test_seed_like_flux_numbers():
+    r = pulab.report({**MEZ, "sim": {"current": {"axis": "q", "speed_hz": 20.0}}})
+    f = r["sim"]["flux"]["metrics"]
+    # ln 20·τ_r = 0.46059 s; the current loop (500 Hz) adds well under a millisecond
+    assert r["acim"]["flux_95_s"] == pytest.approx(0.4605938, rel=1e-6)
+    assert 0.0 <= f["si"]["flux_95_s"] - r["acim"]["flux_95_s"] < 1e-3
+    assert f["fixed"]["wraps"] == 0 and f["fixed"]["vs_si_max_lsb"] < 2.0
+    ti = r["sim"]["flux"]["by_profile"]["ti"]
+    assert ti["ran"] and ti["events"]["wrap"] == 0 and ti["metrics"]["vs_si_max_abs_a"] < 1e-3
+    assert r["sim"]["flux"]["by_profile"]["nxp"]["ran"] is False
+
+
+@pytest.mark.parametrize("axis, speed, delay", [("q", 20.0, False), ("d", 0.0, True)])
+def test_ti_closed_loop_equals_the_c_oracle(oracle, capsys, axis, speed, delay):  # noqa: F811
+    require("arm", capsys)
+    r = pulab.report(MEZ)
+    s = induction._setup(r, {"axis": axis, "step_a": 0.6, "speed_hz": speed}, False)
+    peak = math.sqrt(2.0)
+    umax_pu = induction.voltage_limits(r["input"])[0]
+    ctl = induction._ti_controller(r, umax_pu * r["base"]["U_b"] * peak)
+    hd, hq = s["hold"]
+    run = finish(run_profile_steps(s["z_si"](), ctl, peak, s["ref_d"], s["ref_q"], hq, 600,
+                                   delay, record=True, hold_d_v=hd))
+    run["name"] = "ti"
+    for ax, ref, hold in (("d", s["ref_d"], hd), ("q", s["ref_q"], hq)):
+        want, _ = _replay(oracle, ctl, ax, run, round(ref * peak / ctl["i_lsb"]),
+                          ctl["start"](hold * peak))
+        assert want == list(run[f"out_{ax}"])
+
+
+def test_hot_rotor_angle_matches_a_time_domain_run():
+    """Indirect FOC with the cold τ_r on a rotor whose R_r is 39.3 % higher, the currents held
+    at their rated values by the float PI: the rotor flux's angle and size after 20·τ_r
+    against :func:`pulab.analyses.acim.hot_rotor`."""
+    r = pulab.report(MEZ)
+    a, g = r["acim"], r["current_pi"]
+    h = acim_review.hot_rotor(a, 0.00393)
+    i_d, i_q = a["magnetizing_current_a"], a["torque_current_a"]
+    w_sl = i_q / (a["tau_r_s"] * i_d)                       # the cold estimate
+    ts = 1e-4
+    z = acim_zoh(a["rs_ohm"], a["rr_ohm"] * 1.393, a["ls_h"], a["lr_h"], a["lm_h"], w_sl, 0.0,
+                 ts)
+    run = run_float(z, g["d"]["kp"], g["d"]["ki"] * ts, g["q"]["kp"], g["q"]["ki"] * ts, 1e3,
+                    1e3, i_d, i_q, 0.0, int(20 * a["tau_r_s"] / ts), False)
+    assert run["iq"][-1] == pytest.approx(i_q, rel=1e-9)
+    psi_d, psi_q = z.flux[0][0][-1], z.flux[0][1][-1]
+    assert math.degrees(math.atan2(psi_q, psi_d)) == pytest.approx(h["angle_deg"], abs=1e-6)
+    psi_abs = math.hypot(psi_d, psi_q) / (a["lm_h"] * i_d)
+    assert 100.0 * (psi_abs - 1.0) == pytest.approx(h["flux_pct"], abs=1e-6)
+
+
+def test_review_torque_before_flux():
+    slow = pulab.report({**MEZ, "sim": {"flux": {"startup_s": 0.2}}})["review"]["findings"]
+    hit = [x for x in slow if x["code"] == "acim_torque_before_flux"]
+    assert len(hit) == 1 and hit[0]["field"] == "sim.flux.startup_s"
+    assert "72.5 %" in hit[0]["message"] and "72.5 %" in hit[0]["message_zh"]
+    fine = pulab.report({**MEZ, "sim": {"flux": {"startup_s": 0.5}}})["review"]["findings"]
+    assert not [x for x in fine if x["code"] == "acim_torque_before_flux"]
+
+
+@pytest.mark.parametrize("sim, field", [
+    ({"current": {"code": {"text": "int u;", "output": "u"}}}, "sim.current.code"),
+    ({"current": {"axis": "d", "step_a": -1.0}}, "sim.current.step_a"),
+    ({"current": {"speed_hz": 6000.0}}, "sim.current.speed_hz"),
+    ({"flux": {"duration_s": 1e6}}, "sim.flux.duration_s"),
+    ({"flux": {"startup_s": -1}}, "sim.flux.startup_s"),
+])
+def test_bad_sim_input_names_the_field(sim, field):
+    with pytest.raises(InputError) as e:
+        pulab.report({**MEZ, "sim": sim})
+    assert e.value.field == field
+
+
+def test_flux_section_is_an_induction_motors():
+    pmsm = {"motor": {"rated_voltage_v": 17, "rated_current_a": 1.5, "rated_freq_hz": 220,
+                      "rs_ohm": 1.5, "ld_h": 6e-4, "lq_h": 6e-4, "bemf_v": 12, "pole_pairs": 4},
+            "drive": {"udc_v": 24, "ts_s": 1e-4}, "sim": {"flux": {}}}
+    with pytest.raises(InputError) as e:
+        pulab.report(copy.deepcopy(pmsm))
+    assert e.value.field == "sim.flux"
