@@ -36,9 +36,38 @@ export default async function acim({ check, assert, newPage, subSrv, ready, wait
     await waitValue(page, 'acim.tau_r_s', cpython(inp).acim.tau_r_s);
   });
 
-  await check('acim: screenshots at 390, 900 and 1366 px, zh and en, without overflow', async () => {
-    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(st))}`);
+  // the current step (i_q at 20 Hz) and the flux build-up, as CPython simulates them
+  const withSim = { ...st, sim: { current: { axis: 'q', speed_hz: 20 } } };
+  const simReady = (p) => p.waitForSelector('#panel-acim [data-key="sim.flux.metrics.si.flux_95_s"][data-value]', { timeout: 120_000 });
+
+  await check('acim: the simulation draws the current step and flux build-up as CPython computes them', async () => {
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(withSim))}`);
     await acimReady(page);
+    await page.click('nav.tabs a[data-view="design"]');
+    await page.$eval('#panel-acim [data-keep="acim-flux"]', (e) => e.scrollIntoView());
+    await simReady(page);
+    const want = cpython(withSim);
+    const n = await compareShown(page, want, '#panel-acim');
+    assert(n >= 100, `only ${n} induction-motor numbers compared with the simulation`);
+    for (const k of ['sim.flux.metrics.si.flux_95_s', 'sim.flux.metrics.fixed.vs_si_max_abs_a', 'sim.current.metrics.si.rise_time_s',
+      'sim.current.by_profile.ti.metrics.vs_si_max_abs_a', 'sim.flux.by_profile.ti.events.wrap']) {
+      assert(await page.$(`#panel-acim [data-key="${k}"]`), `${k} not shown`);
+    }
+    for (const f of ['acim-current', 'acim-flux']) {
+      await page.waitForSelector(`#panel-acim [data-keep="${f}"] .plot-host .main-svg`, { timeout: 60_000 });
+    }
+  });
+
+  await check('acim: screenshots at 390, 900 and 1366 px, zh and en, without overflow', async () => {
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(withSim))}`);
+    await acimReady(page);
+    await page.click('nav.tabs a[data-view="design"]');
+    await page.$eval('#panel-acim [data-keep="acim-flux"]', (e) => e.scrollIntoView());
+    await simReady(page);
+    for (const f of ['acim-current', 'acim-flux']) {
+      await page.$eval(`#panel-acim [data-keep="${f}"]`, (e) => e.scrollIntoView());
+      await page.waitForSelector(`#panel-acim [data-keep="${f}"] .plot-host .main-svg`, { timeout: 60_000 });
+    }
     for (const lang of ['en', 'zh']) {
       for (const w of [390, 900, 1366]) {
         await page.setViewportSize({ width: w, height: 900 });
