@@ -234,7 +234,7 @@ def report_steps(inp: dict):
 
 def _acim_refuse(n: dict) -> None:
     """An induction motor's input: the first section that does not apply, named."""
-    given = {"raw": n["raw"] or None, "board": n.get("board"),
+    given = {"raw": n["raw"] or None,
              "profiles": n.get("profiles"),
              "datasheet.speed_rpm": n.get("datasheet", {}).get("given", {}).get("speed_rpm")}
     analysis = n["analysis"] if isinstance(n["analysis"], dict) else {}
@@ -272,6 +272,9 @@ def _acim_report(n: dict):
            "profiles": _acim.profiles(a, n)}
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
+    if "board" in n:
+        out["board"] = board(n["board"], b["I_b"], _acim.torque_flux_peak(a), m["pole_pairs"],
+                             d["udc_v"])
     extra = []
     if n["analysis"] is not None:
         from .analyses import loop as _loop
@@ -284,7 +287,8 @@ def _acim_report(n: dict):
         from .analyses.sim import induction as _induction
         out["sim"] = yield from _induction.simulate_steps(out, sim_in)
     out["review"] = _acim.review(n, a, flux=out.get("acim_flux"), sim=out.get("sim"),
-                                 startup_s=None if sim_in is None else sim_in["flux"]["startup_s"])
+                                 startup_s=None if sim_in is None else sim_in["flux"]["startup_s"],
+                                 board=out.get("board"))
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious] + [render(k, p, "en") for k, p in extra]
     out["warnings_zh"] = [x["message_zh"] for x in serious] + [render(k, p, "zh")

@@ -151,3 +151,19 @@ def test_flux_section_is_an_induction_motors():
     with pytest.raises(InputError) as e:
         pulab.report(copy.deepcopy(pmsm))
     assert e.value.field == "sim.flux"
+
+
+def test_board_for_an_induction_motor():
+    """The board's chains do not depend on the motor; its torque per count is k_T per A peak
+    (3·p·(L_m²/L_r)·I_m/√2 per A), and the dead time is judged against R_s·Î + 0.1·ω_n·√2·L_s·I_m."""
+    board = {"current": {"shunt_ohm": 0.01, "gain": 20, "adc_bits": 12, "adc_ref_v": 3.3},
+             "pwm": {"freq_hz": 10000, "deadtime_s": 1e-6, "clock_hz": 100e6}}
+    r = pulab.report({**MEZ, "board": board})
+    lsb = 3.3 / (0.01 * 20) / 4096                   # A per count, the whole ADC range
+    c = r["board"]["current"]
+    assert c["a_per_count"] == pytest.approx(lsb, rel=1e-15)
+    kt_peak = 3 * 2 * 0.0525 ** 2 / 0.0615 * 0.55 / math.sqrt(2.0)
+    assert c["nm_per_count"] == pytest.approx(kt_peak * lsb, rel=1e-12)
+    dead = [x for x in r["review"]["findings"] if x["code"] == "board_deadtime"]
+    need = 0.6 * 1.5 * math.sqrt(2.0) + 0.1 * 2 * math.pi * 50 * math.sqrt(2.0) * 0.0615 * 0.55
+    assert len(dead) == 1 and dead[0]["value"] == pytest.approx(1.5 / need, rel=1e-9)

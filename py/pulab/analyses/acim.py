@@ -22,13 +22,14 @@ from __future__ import annotations
 import math
 
 from ..fixedpoint.counted import wrap
+from ..model.acim import SQRT2
 from ..profiles import registry
 from ..profiles.vendor import provided
-from .review import SEVERITIES, _finding
+from .review import SEVERITIES, _board, _finding
 
 __all__ = ["INOVANCE", "profiles", "loop_view", "review", "NOT_APPLICABLE", "flux_buildup",
            "FLUX_STEPS_MAX", "FLUX_POINTS", "STALL_PCT", "flux_fraction", "hot_rotor", "IM_RATIO",
-           "NOLOAD_PCT", "HOT_K"]
+           "NOLOAD_PCT", "HOT_K", "torque_flux_peak"]
 
 #: The longest flux build-up simulated, in controller periods (10·τ_r/T_s beyond it is cut).
 FLUX_STEPS_MAX = 100_000
@@ -48,7 +49,7 @@ INOVANCE = {
     "not_covered_zh": "源文档的原始参数块（LD、LQ、BemfVolt …）属于永磁同步电机；它没有感应电机的参数块"
                       "（R_r、L_m、L_σ、I_0），因此这些量的整数都不计算"}
 #: Input sections that do not apply to an induction motor yet (each refused, naming it).
-NOT_APPLICABLE = ("raw", "board", "sim.current.code", "profiles", "analysis.fw", "analysis.robust",
+NOT_APPLICABLE = ("raw", "sim.current.code", "profiles", "analysis.fw", "analysis.robust",
                   "analysis.speed.response")
 
 
@@ -65,6 +66,16 @@ def profiles(a: dict, n: dict) -> dict:
         else:
             out[v.NAME] = {"available": True, **own(a, n)}
     return out
+
+
+def torque_flux_peak(a: dict) -> float:
+    """The flux (Wb, peak) whose 1.5·p·ψ is the induction motor's torque per A peak of i_q:
+    √2·(L_m²/L_r)·I_m, so the board's ``nm_per_count`` is k_T/√2 per ampere of a count.
+
+    >>> round(torque_flux_peak({"lm_h": 0.0525, "lr_h": 0.0615, "magnetizing_current_a": 0.55}), 7)
+    0.0348595
+    """
+    return SQRT2 * a["lm_h"] ** 2 / a["lr_h"] * a["magnetizing_current_a"]
 
 
 def loop_view(out: dict, a: dict) -> dict:
@@ -188,13 +199,14 @@ def hot_rotor(a: dict, alpha: float, rise_k: float = HOT_K) -> dict | None:
 
 def review(n: dict, a: dict, robust_c: tuple = (20.0, 155.0), alpha: float = 0.00393,
            flux: dict | None = None, sim: dict | None = None,
-           startup_s: float | None = None) -> dict:
+           startup_s: float | None = None, board: dict | None = None) -> dict:
     """The induction motor's findings (the same record as :mod:`pulab.analyses.review`).
 
     ``robust_c`` and ``alpha``: the winding temperature range and copper coefficient the
     R_r drift is judged over (the robustness view's defaults); ``sim``: the report's
     simulation (its flux build-up, when run); ``startup_s``: when the drive commands torque
-    after magnetizing starts (``sim.flux.startup_s``).
+    after magnetizing starts (``sim.flux.startup_s``); ``board``: the report's ``board``
+    (its findings as for a PMSM, the dead time against the stator flux √2·L_s·I_m).
     """
     f: list = []
     m = n["motor"]
@@ -247,5 +259,6 @@ def review(n: dict, a: dict, robust_c: tuple = (20.0, 155.0), alpha: float = 0.0
     if flux is not None and flux["stall_pct"] >= STALL_PCT:
         _finding(f, "warning", "acim_flux_stall", "acim_flux.stall_pct", "drive.ts_s",
                  flux["stall_pct"], pct=flux["stall_pct"], lsb=flux["stall_lsb"], kr=flux["kr"])
+    _board(f, n, board, SQRT2 * a["ls_h"] * a["magnetizing_current_a"])
     f.sort(key=lambda x: SEVERITIES.index(x["severity"]))
     return {"findings": f, "counts": {s: sum(x["severity"] == s for x in f) for s in SEVERITIES}}

@@ -58,6 +58,17 @@ export default async function acim({ check, assert, newPage, subSrv, ready, wait
     }
   });
 
+  await check('acim: the board view takes an induction motor (torque per count from k_T)', async () => {
+    const inp = { ...st, board: { current: { shunt_ohm: 0.01, gain: 20, adc_bits: 12, adc_ref_v: 3.3 },
+      pwm: { freq_hz: 10000, deadtime_s: 1e-6, clock_hz: 100e6 } } };
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(inp))}`);
+    await page.click('nav.tabs a[data-view="firmware"]');
+    await page.waitForSelector('#panel-board [data-key="board.current.nm_per_count"][data-value]', { timeout: 60_000 });
+    const n = await compareShown(page, cpython(inp), '#panel-board');
+    assert(n >= 10, `only ${n} board numbers compared`);
+    assert(!(await page.$('#panel-board .acim-na')), 'the board panel says it does not apply');
+  });
+
   await check('acim: screenshots at 390, 900 and 1366 px, zh and en, without overflow', async () => {
     await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(withSim))}`);
     await acimReady(page);
