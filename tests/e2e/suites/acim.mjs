@@ -87,6 +87,14 @@ export default async function acim({ check, assert, newPage, subSrv, ready, wait
         const overflow = await page.$eval('#panel-acim', (e) => e.scrollWidth - e.clientWidth);
         assert(overflow <= 1, `acim panel overflows by ${overflow}px at ${w} (${lang})`);
         await (await page.$('#panel-acim')).screenshot({ path: join(SHOTS, `acim-${w}-${lang}.png`) });
+        for (const f of ['acim-current', 'acim-flux']) {   // plots are drawn when in view
+          const fig = `#panel-acim [data-keep="${f}"]`;
+          await page.$eval(fig, (e) => e.scrollIntoView({ block: 'center' }));
+          await page.waitForSelector(`${fig} .plot-host .main-svg`, { timeout: 60_000 });
+          const over = await page.$eval(fig, (e) => e.scrollWidth - e.clientWidth);
+          assert(over <= 1, `${f} overflows by ${over}px at ${w} (${lang})`);
+          await (await page.$(fig)).screenshot({ path: join(SHOTS, `${f}-${w}-${lang}.png`) });
+        }
       }
     }
   });

@@ -22,16 +22,19 @@ export function renderAcimStep(el: HTMLElement, sim: SimCurrent): void {
   const axis = sim.axis === 'q' ? 'q' : 'd';
   const other = axis === 'q' ? 'd' : 'q';
   const traces: Trace[] = [];
-  for (const [name, v, color, dash] of runs(sim)) {
-    traces.push({ x: ms, y: v[`i${axis}`], name: `${name} i_${axis}`, color, dash, width: 1.6 });
-    traces.push({ x: ms, y: v[`i${other}`], name: `${name} i_${other}`, color, dash: 'dot', width: 1, opacity: 0.6 });
-  }
+  for (const [name, v, color, dash] of runs(sim)) traces.push({ x: ms, y: v[`i${axis}`], name: `${name} i_${axis}`, color, dash, width: 1.6 });
+  // the other axis (held at its reference, the coupling shows in it): SI only
+  traces.push({ x: ms, y: sim.variants.si[`i${other}`], name: `${t('variant_si')} i_${other}`, color: COLORS.si, dash: 'dot', width: 1, opacity: 0.6 });
   const si = sim.variants.si[`i${axis}`];
   for (const [name, v, color] of runs(sim).slice(1)) {
     // difference of two series for display only (fixed − SI), in mA
     traces.push({ x: ms, y: v[`i${axis}`].map((x, i) => (x - si[i]) * 1e3), name: `${name} − SI`, color, yaxis: 'y2', width: 1.2 });
   }
-  plot(el, traces, { xTitle: `${t('time')} [ms]`, yTitle: 'i [A]', y2Title: 'Δ [mA]' });
+  // initial view: the transient (5 settling times); zoom out to see all
+  const settle = (sim.metrics.si as Record<string, unknown> | undefined)?.settling_time_s;
+  const tEnd = sim.t[sim.t.length - 1] ?? 0;
+  const span = typeof settle === 'number' && settle > 0 ? Math.min(tEnd, 5 * settle) : tEnd;
+  plot(el, traces, { xTitle: `${t('time')} [ms]`, yTitle: 'i [A]', y2Title: 'Δ [mA]', xRange: span < tEnd ? [0, span * 1e3] : undefined });
 }
 
 /** The flux build-up: ψ_rd of each run, with the SI i_d on the lower axis. */
