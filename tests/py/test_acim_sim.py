@@ -167,3 +167,14 @@ def test_board_for_an_induction_motor():
     dead = [x for x in r["review"]["findings"] if x["code"] == "board_deadtime"]
     need = 0.6 * 1.5 * math.sqrt(2.0) + 0.1 * 2 * math.pi * 50 * math.sqrt(2.0) * 0.0615 * 0.55
     assert len(dead) == 1 and dead[0]["value"] == pytest.approx(1.5 / need, rel=1e-9)
+
+
+def test_csv_export_of_an_induction_motors_current_step():
+    from pulab import api
+    out = json.loads(api.call_json("export.csv_current",
+                                   json.dumps({"input": {**MEZ, "sim": {"current": {"axis": "q"}}}})))
+    assert out["ok"], out
+    head, first = out["text"].splitlines()[:2]
+    cols = head.split(",")
+    assert {"si.psi_d_Wb", "fixed.iq_A", "ti.psi_q_Wb"} <= set(cols)
+    assert float(first.split(",")[cols.index("si.psi_d_Wb")]) == pytest.approx(0.0525 * 0.55, rel=1e-12)
