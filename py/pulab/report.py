@@ -326,6 +326,18 @@ def _format_acim_text(r: dict) -> str:
     lines += _table(f"Current PI on σ·L_s, R_σ ({r['current_pi']['method']})", rows)
     if "loop" in r:
         lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
+    for name in ("current", "flux"):
+        s = r.get("sim", {}).get(name)
+        if s is None:
+            continue
+        runs = dict(s["metrics"])
+        if s["by_profile"]["ti"]["ran"]:
+            runs["ti"] = s["by_profile"]["ti"]["metrics"]
+        keys = ("flux_95_s", "rise_time_s", "overshoot_pct", "vs_si_max_abs_a", "wraps")
+        title = f"current step, axis {s['axis']}" if name == "current" else "flux build-up"
+        lines += _table(f"Simulation: {title}", [
+            (v, "  ".join(f"{k} {m[k]:.6g}" for k in keys if m.get(k) is not None))
+            for v, m in runs.items()])
     c = r["review"]["counts"]
     title = f"Design review: {c['error']} error(s), {c['warning']} warning(s), {c['note']} note(s)"
     lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] {x['message']}"

@@ -178,3 +178,13 @@ def test_csv_export_of_an_induction_motors_current_step():
     cols = head.split(",")
     assert {"si.psi_d_Wb", "fixed.iq_A", "ti.psi_q_Wb"} <= set(cols)
     assert float(first.split(",")[cols.index("si.psi_d_Wb")]) == pytest.approx(0.0525 * 0.55, rel=1e-12)
+
+
+def test_text_report_lists_both_simulations(tmp_path):
+    f = tmp_path / "acim.json"
+    f.write_text(json.dumps({**MEZ, "sim": {"current": {"axis": "q"}}}))
+    out = subprocess.run([sys.executable, "-m", "pulab", "report", str(f), "--format", "text"],
+                         capture_output=True, text=True, env={"PYTHONPATH": str(ROOT / "py")})
+    assert out.returncode == 0, out.stderr
+    assert "Simulation: current step, axis q" in out.stdout
+    assert "Simulation: flux build-up" in out.stdout and "flux_95_s 0.4606" in out.stdout
