@@ -188,3 +188,16 @@ def test_text_report_lists_both_simulations(tmp_path):
     assert out.returncode == 0, out.stderr
     assert "Simulation: current step, axis q" in out.stdout
     assert "Simulation: flux build-up" in out.stdout and "flux_95_s 0.4606" in out.stdout
+
+
+def test_default_flux_run_is_cut_at_the_cap_not_refused():
+    """A rotor with τ_r = 4 s: 5·τ_r is 200 000 periods; the default run stops at the cap and says
+    so, while the same length typed is refused naming the field."""
+    slow = copy.deepcopy(MEZ)
+    slow["motor"]["rr_ohm"] = 0.0615 / 4.0
+    f = pulab.report({**slow, "sim": {}})["sim"]["flux"]
+    assert f["complete"] is False and f["t"][-1] == pytest.approx(induction.MAX_PERIODS * 1e-4)
+    assert f["metrics"]["si"]["flux_95_s"] is None          # 3·τ_r = 12 s is beyond 5 s
+    with pytest.raises(InputError) as e:
+        pulab.report({**slow, "sim": {"flux": {"duration_s": 20.0}}})
+    assert e.value.field == "sim.flux.duration_s"

@@ -145,21 +145,22 @@ class AcimZoh(NamedTuple):
 
     def advance(self):
         """As :meth:`Zoh.advance`; the rotor flux is the closure's own state, recorded."""
-        p = self.phi
-        g = self.gamma
+        (a0, a1, a2, a3, b0, b1, b2, b3, c0, c1, c2, c3, d0, d1, d2, d3) = self.phi
+        g0, g1, g2, g3, g4, g5, g6, g7 = self.gamma
         rec_d, rec_q = array("d"), array("d")
         self.flux.append((rec_d, rec_q))
         put_d, put_q = rec_d.append, rec_q.append
-        psi = [self.start[2], self.start[3]]
+        fd, fq = self.start[2], self.start[3]
 
         def step(xd, xq, ad, aq):
-            fd, fq = psi
+            nonlocal fd, fq
             put_d(fd)
             put_q(fq)
-            psi[0] = p[8] * xd + p[9] * xq + p[10] * fd + p[11] * fq + g[4] * ad + g[5] * aq
-            psi[1] = p[12] * xd + p[13] * xq + p[14] * fd + p[15] * fq + g[6] * ad + g[7] * aq
-            return (p[0] * xd + p[1] * xq + p[2] * fd + p[3] * fq + g[0] * ad + g[1] * aq,
-                    p[4] * xd + p[5] * xq + p[6] * fd + p[7] * fq + g[2] * ad + g[3] * aq)
+            yd = a0 * xd + a1 * xq + a2 * fd + a3 * fq + g0 * ad + g1 * aq
+            yq = b0 * xd + b1 * xq + b2 * fd + b3 * fq + g2 * ad + g3 * aq
+            fd, fq = (c0 * xd + c1 * xq + c2 * fd + c3 * fq + g4 * ad + g5 * aq,
+                      d0 * xd + d1 * xq + d2 * fd + d3 * fq + g6 * ad + g7 * aq)
+            return yd, yq
         return step
 
 
