@@ -3,8 +3,8 @@
 1. Golden trajectories: tests/oracle/acim_sim_oracle.py (flux-linkage ODE discretized with
    scipy, float PI and the seed's PI in np.int32; never imports pulab).  The ``pu`` variant
    is compared with the oracle's ``si``.
-2. TI's IQ PI: the feedback a run recorded replayed through the C oracle
-   (tests/oracle/vendor_pi.c, gcc -m32 -fwrapv), output for output.
+2. The integer PIs in C: the feedback a run recorded replayed through gcc -m32 -fwrapv builds of
+   the seed's PI (tests/oracle/seed_pi.c) and TI's (tests/oracle/vendor_pi.c), output for output.
 3. Refusals name their field; the review's hot-rotor numbers against a time-domain run.
 """
 
@@ -23,7 +23,7 @@ import pulab
 from ctrace_compilers import require
 from pulab.analyses import acim as acim_review
 from pulab.analyses.sim import induction
-from pulab.analyses.sim.current import run_float
+from pulab.analyses.sim.current import run_fixed_steps as _fixed_steps, run_float
 from pulab.analyses.sim.plant import acim_zoh
 from pulab.analyses.sim.vendor_loop import run_profile_steps
 from pulab.analyses.slices import finish
@@ -201,3 +201,35 @@ def test_default_flux_run_is_cut_at_the_cap_not_refused():
     with pytest.raises(InputError) as e:
         pulab.report({**slow, "sim": {"flux": {"duration_s": 20.0}}})
     assert e.value.field == "sim.flux.duration_s"
+
+
+@pytest.mark.parametrize("axis, speed, delay, flux", [("q", 20.0, False, False),
+                                                      ("d", 30.0, True, False),
+                                                      ("d", 0.0, False, True)])
+def test_seed_pi_closed_loop_equals_its_c(tmp_path, capsys, axis, speed, delay, flux):
+    """The Inovance run's outputs (its applied voltages over U_b/2^12) against the seed's PI in C
+    fed the run's own Q12 feedback: current steps and the flux build-up."""
+    require("arm", capsys)
+    exe = tmp_path / "seed_pi"
+    subprocess.run(["gcc", "-m32", "-fwrapv", "-O1", "-o", str(exe),
+                    str(ROOT / "tests/oracle/seed_pi.c")], check=True)
+    r = pulab.report(MEZ)
+    s = induction._setup(r, {"axis": axis, "step_a": 0.6, "speed_hz": speed}, flux)
+    maxout, maxu = induction.voltage_limits(r["input"])[2]
+    b, g = r["base"], r["current_pi"]
+    hd, hq = s["hold"]
+    q24 = [round(h / b["U_b"] * 2 ** 24) for h in (hd, hq)]
+    refs = [round(x / b["I_b"] * 4096) for x in (s["ref_d"], s["ref_q"])]
+    n = 3000
+    run = finish(_fixed_steps(s["z_si"](), b["I_b"], b["U_b"], g["d"]["pm_kp"], g["d"]["pm_ki"],
+                           g["q"]["pm_kp"], g["q"]["pm_ki"], maxu, maxout, *refs, q24[1], n, delay,
+                           integ_d0=q24[0]))
+    for k, ax in enumerate("dq"):
+        text = "".join(f"{refs[k]} {f}\n" for f in run[f"fb_{ax}"])
+        out = subprocess.run([str(exe), str(g[ax]["pm_kp"]), str(g[ax]["pm_ki"]), str(maxu),
+                              str(maxout), str(q24[k])], input=text, capture_output=True,
+                             text=True, check=True).stdout.split()
+        want = [int(x) for x in out[0::2]]
+        applied = [round(v / (b["U_b"] / 4096.0)) for v in run["u" + ax]]
+        got = applied[1:] + [None] if delay else applied
+        assert got[:n] == want[:n], ax
