@@ -233,3 +233,15 @@ def test_seed_pi_closed_loop_equals_its_c(tmp_path, capsys, axis, speed, delay, 
         applied = [round(v / (b["U_b"] / 4096.0)) for v in run["u" + ax]]
         got = applied[1:] + [None] if delay else applied
         assert got[:n] == want[:n], ax
+
+
+def test_voltage_saturation_is_flagged_in_every_run():
+    """A 10 A step on a 1.5 A motor asks kp·10 A ≈ 524 V of a 61 V limit: every run saturates,
+    the seed's PI counts it in its time at the limit, TI's in its events."""
+    c = pulab.report({**MEZ, "sim": {"current": {"axis": "q", "step_a": 10.0,
+                                                  "duration_s": 0.02}}})["sim"]["current"]
+    for name in ("si", "pu", "fixed"):
+        assert c["metrics"][name]["saturation_time_s"] > 0.0, name
+    ti = c["by_profile"]["ti"]
+    assert ti["metrics"]["saturation_time_s"] > 0.0 and ti["events"]["output_limit"] > 0
+    assert c["metrics"]["fixed"]["wraps"] == 0
