@@ -25,6 +25,7 @@ export default async function acim({ check, assert, newPage, subSrv, ready, wait
     await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(seed))}`);
     await ready(page);
     assert(await page.$eval('input[name="motor.rr_ohm"]', (e) => e.disabled), 'R_r enabled for a PMSM');
+    assert(await page.$eval('input[name="sim.flux.startup_s"]', (e) => e.disabled), 'the flux build-up enabled for a PMSM');
     await page.selectOption('select[name="motor.kind"]', 'acim');
     assert(await page.$eval('input[name="motor.ld_h"]', (e) => e.disabled), 'L_d enabled for an induction motor');
     for (const [k, v] of [['rated_speed_rpm', '3200'], ['rr_ohm', '1.2'], ['lm_h', '20000'], ['lls_h', '1000'], ['llr_h', '1000']]) {
@@ -56,6 +57,23 @@ export default async function acim({ check, assert, newPage, subSrv, ready, wait
     for (const f of ['acim-current', 'acim-flux']) {
       await page.waitForSelector(`#panel-acim [data-keep="${f}"] .plot-host .main-svg`, { timeout: 60_000 });
     }
+  });
+
+  await check('acim: the start-up time in the form gives the torque-before-flux finding (zh and en)', async () => {
+    await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(withSim))}`);
+    await acimReady(page);
+    await page.$eval('[name="sim.flux.startup_s"]', (e) => e.closest('details')?.setAttribute('open', ''));
+    assert(!(await page.$eval('input[name="sim.flux.startup_s"]', (e) => e.disabled)), 'startup_s disabled for an induction motor');
+    await page.fill('input[name="sim.flux.startup_s"]', '200');   // ms, the field's first unit
+    await page.click('nav.tabs a[data-view="design"]');
+    await page.$eval('#panel-acim [data-keep="acim-flux"]', (e) => e.scrollIntoView());
+    const item = await page.waitForSelector('#panel-review li[data-finding="sim.flux.metrics.si.flux_95_s"]', { timeout: 120_000 });
+    const text = await item.textContent();
+    assert(text.includes('0.2 s') && text.includes('0.461'), `finding: ${text}`);
+    await page.click('button[data-lang="zh"]');
+    const zh = await page.$eval('#panel-review li[data-finding="sim.flux.metrics.si.flux_95_s"]', (e) => e.textContent);
+    assert(zh.includes('预励磁'), `zh finding: ${zh}`);
+    await page.click('button[data-lang="en"]');
   });
 
   await check('acim: the board view takes an induction motor (torque per count from k_T)', async () => {
