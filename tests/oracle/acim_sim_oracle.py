@@ -37,7 +37,7 @@ from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from acim_oracle import KRAUSE_3HP, ST_MEZ, expected  # noqa: E402
+from acim_oracle import KRAUSE_3HP, NXP_KV58, ST_MEZ, expected  # noqa: E402
 from golden_files import golden_dir, sync  # noqa: E402
 from sim_oracle import decim, rha, step_metrics  # noqa: E402
 
@@ -226,6 +226,10 @@ CASES = [
      with_sim(KRAUSE_3HP, {"current": {"axis": "d", "step_a": 2.0, "speed_hz": 30.0,
                                        "delay": True, "duration_s": 0.02},
                            "flux": {"duration_s": 0.3}})),
+    # NXP's HVP-KV58 demo motor (230 V, R_r 23 Ω: τ_r = 23 ms), its 150 Hz damping-designed
+    # loop: i_q step 0.4 A at 45 Hz; the build-up over its default 5·τ_r.
+    ("03_nxp_kv58_q_step",
+     with_sim(NXP_KV58, {"current": {"axis": "q", "step_a": 0.4, "speed_hz": 45.0}})),
 ]
 
 

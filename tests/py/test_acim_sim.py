@@ -41,7 +41,7 @@ MEZ = {"motor": {"kind": "acim", "rated_voltage_v": 42 * math.sqrt(3.0), "rated_
 
 
 def test_golden_files_exist_and_are_fresh():
-    assert len(GOLDEN) >= 2
+    assert len(GOLDEN) >= 3
     r = subprocess.run([sys.executable, str(ROOT / "tests/oracle/acim_sim_oracle.py"), "--check"],
                        capture_output=True, text=True)
     assert r.returncode == 0, r.stdout + r.stderr

@@ -33,7 +33,7 @@ beforeAll(async () => {
 });
 
 describe('golden induction-motor simulations through Pyodide', () => {
-  it('finds tests/golden/acim-sim/*.json', () => expect(files.length).toBeGreaterThanOrEqual(2));
+  it('finds tests/golden/acim-sim/*.json', () => expect(files.length).toBeGreaterThanOrEqual(3));
 
   for (const f of files) {
     it(`${f} matches the oracle`, () => {

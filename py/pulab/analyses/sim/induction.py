@@ -206,7 +206,7 @@ def _section(report: dict, cfg: dict, flux: bool, delay: bool):
         # flux: 5·τ_r (99.3 %); current: as the PMSM's, 30 closed-loop time constants on σ·L_s
         want = 5.0 * a["tau_r_s"] if flux else \
             30.0 * a["sigma_ls_h"] / report["current_pi"][cfg["axis"]]["kp"]
-        n_want = max(200, math.ceil(want / ts))
+        n_want = max(200, int(round(want / ts)))
         n_steps, complete = min(n_want, MAX_PERIODS), n_want <= MAX_PERIODS
     runs, by_profile, ints = yield from _runs(report, cfg, n_steps, s, delay)
     t = array("d", (k * ts for k in range(n_steps + 1)))
