@@ -138,10 +138,10 @@ def _setup(report: dict, cfg: dict, flux: bool) -> dict:
             "hold": (a["rs_ohm"] * i0, w_r * a["ls_h"] * i0)}
 
 
-def _runs(report: dict, cfg: dict, n_steps: int, s: dict, delay: bool):
+def _runs(report: dict, n_steps: int, s: dict, delay: bool):
     """Every variant of one run: currents, voltages, saturation, flux (SI)."""
     b, pi = report["base"], report["current_pi"]
-    i_b, u_b, w_b, psi_b = b["I_b"], b["U_b"], b["w_b"], b["psi_b"]
+    i_b, u_b, psi_b = b["I_b"], b["U_b"], b["psi_b"]
     gd, gq = pi["d"], pi["q"]
     ts = s["ts"]
     umax_pu, imax_pu, ints = voltage_limits(report["input"])
@@ -208,7 +208,7 @@ def _section(report: dict, cfg: dict, flux: bool, delay: bool):
             30.0 * a["sigma_ls_h"] / report["current_pi"][cfg["axis"]]["kp"]
         n_want = max(200, int(round(want / ts)))
         n_steps, complete = min(n_want, MAX_PERIODS), n_want <= MAX_PERIODS
-    runs, by_profile, ints = yield from _runs(report, cfg, n_steps, s, delay)
+    runs, by_profile, ints = yield from _runs(report, n_steps, s, delay)
     t = array("d", (k * ts for k in range(n_steps + 1)))
     idx = decimate_indices(len(t))
     keys = ("id", "iq", "ud", "uq", "psi_d", "psi_q")
@@ -243,8 +243,8 @@ def _section(report: dict, cfg: dict, flux: bool, delay: bool):
         metrics["fixed"]["wraps"] = runs["fixed"]["wraps"]
     for name, (en, zh) in NOT_RUN.items():
         by_profile[name] = {"ran": False, "reason": en, "reason_zh": zh}
-    out = {"t": [t[i] for i in idx], "complete": complete, "axis": axis, "ref_d_a": s["ref_d"], "ref_q_a": s["ref_q"],
-           "omega_e_rad_s": s["w_e"], "omega_r_rad_s": s["w_r"], "psi_ref_wb": psi_ref,
+    out = {"t": [t[i] for i in idx], "complete": complete, "axis": axis, "ref_d_a": s["ref_d"],
+           "ref_q_a": s["ref_q"], "omega_e_rad_s": s["w_e"], "omega_r_rad_s": s["w_r"], "psi_ref_wb": psi_ref,
            "variants": variants, "metrics": metrics, "by_profile": by_profile,
            "fixed": None if ints is None else {"pm_maxout_vol": ints[0], "maxu": ints[1]}}
     if flux:
