@@ -155,7 +155,8 @@ def test_flux_section_is_an_induction_motors():
 
 def test_board_for_an_induction_motor():
     """The board's chains do not depend on the motor; its torque per count is k_T per A peak
-    (3·p·(L_m²/L_r)·I_m/√2 per A), and the dead time is judged against R_s·Î + 0.1·ω_n·√2·L_s·I_m."""
+    (3·p·(L_m²/L_r)·I_m/√2 per A), and the dead time is judged against
+    R_s·Î + 0.1·ω_n·√2·L_s·I_m."""
     board = {"current": {"shunt_ohm": 0.01, "gain": 20, "adc_bits": 12, "adc_ref_v": 3.3},
              "pwm": {"freq_hz": 10000, "deadtime_s": 1e-6, "clock_hz": 100e6}}
     r = pulab.report({**MEZ, "board": board})
