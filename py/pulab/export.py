@@ -20,7 +20,7 @@ __all__ = ["c_header", "sim_csv"]
 
 #: Unit of each simulated signal (pulab.analyses.sim output is SI), as a column-name suffix.
 _CSV_UNITS = {"id": "A", "iq": "A", "ud": "V", "uq": "V", "theta": "rad", "theta_hat": "rad",
-              "omega_hat": "rad_per_s"}
+              "omega_hat": "rad_per_s", "psi_d": "Wb", "psi_q": "Wb"}
 
 
 def sim_csv(r: dict, which: str) -> str:
@@ -29,7 +29,8 @@ def sim_csv(r: dict, which: str) -> str:
     One column per variant and signal, its unit in the name: ``t_s``, ``si.id_A``,
     ``fixed.uq_V`` (phase voltage), ``q15.theta_hat_rad``, ``pu.omega_hat_rad_per_s``
     (electrical); then, for the current loop, each other firmware's run that exists
-    (``ti.id_A``, …, ``microchip.uq_V``, ``sim.current.by_profile``).
+    (``ti.id_A``, …, ``microchip.uq_V``, ``sim.current.by_profile``); an induction motor's
+    runs add its rotor flux (``si.psi_d_Wb``, ``si.psi_q_Wb``).
     """
     s = r.get("sim", {}).get(which)
     if s is None:

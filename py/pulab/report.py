@@ -150,7 +150,7 @@ def report_steps(inp: dict):
     """
     n = normalize(inp)
     if n["motor"].get("kind") == "acim":
-        return _acim_report(n)
+        return (yield from _acim_report(n))
     m, d, c = n["motor"], n["drive"], n["conventions"]
     sim_in = None
     if "sim" in n:
@@ -234,7 +234,7 @@ def report_steps(inp: dict):
 
 def _acim_refuse(n: dict) -> None:
     """An induction motor's input: the first section that does not apply, named."""
-    given = {"raw": n["raw"] or None, "board": n.get("board"), "sim": n.get("sim"),
+    given = {"raw": n["raw"] or None,
              "profiles": n.get("profiles"),
              "datasheet.speed_rpm": n.get("datasheet", {}).get("given", {}).get("speed_rpm")}
     analysis = n["analysis"] if isinstance(n["analysis"], dict) else {}
@@ -249,9 +249,14 @@ def _acim_refuse(n: dict) -> None:
             raise InputError(path, code="acim_not_applicable")
 
 
-def _acim_report(n: dict) -> dict:
-    """The report of an induction motor (docs/contract.md, "Induction motor")."""
+def _acim_report(n: dict):
+    """The report of an induction motor (docs/contract.md, "Induction motor"), in slices
+    like :func:`report_steps`."""
     _acim_refuse(n)
+    sim_in = None
+    if "sim" in n:
+        from .analyses import sim as _sim
+        sim_in = _sim.validate(n["sim"], acim=True)
     m, d, c = n["motor"], n["drive"], n["conventions"]
     b = input_bases(n)
     lms = n.get("datasheet", {}).get("given", {}).get("lms_h")
@@ -267,6 +272,9 @@ def _acim_report(n: dict) -> dict:
            "profiles": _acim.profiles(a, n)}
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
+    if "board" in n:
+        out["board"] = board(n["board"], b["I_b"], _acim.torque_flux_peak(a), m["pole_pairs"],
+                             d["udc_v"])
     extra = []
     if n["analysis"] is not None:
         from .analyses import loop as _loop
@@ -275,7 +283,12 @@ def _acim_report(n: dict) -> dict:
         extra = _loop.warnings(out["loop"])
         # the flux build-up in TI's fixed point (asked with the analysis: thousands of periods)
         out["acim_flux"] = _acim.flux_buildup(a, n, out["profiles"]["ti"]["constants"]["Kr"]["value"])
-    out["review"] = _acim.review(n, a, flux=out.get("acim_flux"))
+    if sim_in is not None:
+        from .analyses.sim import induction as _induction
+        out["sim"] = yield from _induction.simulate_steps(out, sim_in)
+    out["review"] = _acim.review(n, a, flux=out.get("acim_flux"), sim=out.get("sim"),
+                                 startup_s=None if sim_in is None else sim_in["flux"]["startup_s"],
+                                 board=out.get("board"))
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious] + [render(k, p, "en") for k, p in extra]
     out["warnings_zh"] = [x["message_zh"] for x in serious] + [render(k, p, "zh")
@@ -313,6 +326,18 @@ def _format_acim_text(r: dict) -> str:
     lines += _table(f"Current PI on σ·L_s, R_σ ({r['current_pi']['method']})", rows)
     if "loop" in r:
         lines += _table(f"Loop margins (delay {r['loop']['delay']})", _loop_rows(r["loop"]))
+    for name in ("current", "flux"):
+        s = r.get("sim", {}).get(name)
+        if s is None:
+            continue
+        runs = dict(s["metrics"])
+        if s["by_profile"]["ti"]["ran"]:
+            runs["ti"] = s["by_profile"]["ti"]["metrics"]
+        keys = ("flux_95_s", "rise_time_s", "overshoot_pct", "vs_si_max_abs_a", "wraps")
+        title = f"current step, axis {s['axis']}" if name == "current" else "flux build-up"
+        lines += _table(f"Simulation: {title}", [
+            (v, "  ".join(f"{k} {m[k]:.6g}" for k in keys if m.get(k) is not None))
+            for v, m in runs.items()])
     c = r["review"]["counts"]
     title = f"Design review: {c['error']} error(s), {c['warning']} warning(s), {c['note']} note(s)"
     lines += [title, "-" * len(title)] + [f"  {x['severity'].upper():7s} [{x['key']}] {x['message']}"

@@ -70,7 +70,7 @@ ERRORS = [
     (NXP_KV58, ("motor", "ls_h"), 0.487, "motor.ls_h"),
     (NXP_KV58, ("motor", "lls_h"), 0.047, "motor.ls_h"),
     (ST_G431, ("motor", "lm_h"), 0.1485, "datasheet.lms_h"),
-    (ST_MEZ, ("sim",), {}, "sim"),
+    (ST_MEZ, ("sim", "current", "code"), {"text": "int u;", "output": "u"}, "sim.current.code"),
 ]
 
 

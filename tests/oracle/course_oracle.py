@@ -20,6 +20,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from oracle import oracle_report, parse  # noqa: E402
 from loop_oracle import current_loop, measure, pi  # noqa: E402
 from acim_oracle import ST_MEZ, expected as acim_expected  # noqa: E402
+from acim_sim_oracle import section as acim_sim_section  # noqa: E402
 
 #: Trainee number → the input of the motor a trainee link carries.
 TRAINEES = {
@@ -173,6 +174,8 @@ def expected(inp: dict) -> dict:
         "acim-sigma": ACIM["acim"]["sigma"],
         "acim-tau-r-pu": ACIM["acim"]["pu"]["tau_r_s"],
         "acim-pm-kp": ACIM["current_pi"]["d"]["pm_kp"],
+        # its simulated flux build-up (acim_sim_oracle: flux linkages, float PI)
+        "acim-flux-95": ACIM_FLUX["metrics"]["si"]["flux_95_s"],
     }
 
 
@@ -195,3 +198,4 @@ def audit_answers() -> dict:
 
 
 AUDIT = audit_answers()
+ACIM_FLUX = acim_sim_section({**ST_MEZ, "sim": {}}, {}, True, False)

@@ -55,7 +55,7 @@ export class App {
         if (this.session.source === 'live') this.layout.settle(this.ctx());
       },
       // code: its "In the current loop" box shows pulab's verdict on the binding
-      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review', 'code']),
+      sim: () => this.renderPanels(['current', 'pll', 'loop', 'docs', 'review', 'code', 'acim']),
       errors: () => this.showErrors(),
       busy: () => this.status.render(),
     }, pageEnv());

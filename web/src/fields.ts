@@ -100,6 +100,9 @@ const PAGE: Record<string, Partial<FieldSpec>> = {
   'current_loop.pm_ki': { placeholderFrom: 'current_pi.d.pm_ki' },
   'sim.current.duration_s': { units: ['ms', 's'] },
   'sim.pll.duration_s': { units: ['ms', 's'] },
+  // an induction motor's flux build-up (pulab refuses sim.flux for a PMSM)
+  'sim.flux.duration_s': { units: ['ms', 's'], enabled: (i) => value(i, 'motor.kind') === 'acim' },
+  'sim.flux.startup_s': { units: ['ms', 's'], enabled: (i) => value(i, 'motor.kind') === 'acim' },
   'analysis.target_phase_margin_deg': { enabled: (i) => design(i) === 'phase_margin' },
   'analysis.target_bandwidth_hz': { enabled: (i) => design(i) === 'bandwidth', placeholderFrom: 'current_pi.bandwidth_hz' },
   'analysis.speed.ts_s': { units: ['µs', 'kHz', 's'] },
@@ -153,6 +156,7 @@ const LAYOUT: Omit<SectionSpec, 'fields'>[] = [
   { id: 'board.pwm', title: 'sec_board_pwm', collapsed: true },
   { id: 'sim.current', title: 'sec_sim_current', collapsed: true },
   { id: 'sim.pll', title: 'sec_sim_pll', collapsed: true },
+  { id: 'sim.flux', title: 'sec_sim_flux', collapsed: true },
   { id: 'analysis', title: 'sec_analysis', collapsed: true },
   { id: 'analysis.speed', title: 'sec_speed', collapsed: true },
   { id: 'analysis.fw', title: 'sec_fw', collapsed: true },

@@ -139,7 +139,8 @@ export interface Report {
   constants: Record<string, Constant>;
   warnings: string[];
   warnings_zh: string[];
-  sim?: { current?: SimCurrent; pll?: SimPll };
+  /** `flux`: an induction motor's flux build-up (docs/contract.md, "Induction motor: simulation"). */
+  sim?: { current?: SimCurrent; pll?: SimPll; flux?: SimCurrent };
   mechanical: Record<string, number>;
   firmware: Record<string, FirmwareStatus>;
   review: Review;

@@ -132,6 +132,9 @@ export function reportKey(inp: Input): string {
 export function simInput(inp: Input): Input {
   const out = reportInput(inp);
   if (inp.sim) out.sim = inp.sim;
+  // an induction motor's simulation is its current step and flux build-up; the robustness
+  // sweep and the speed response it does not have are not asked for
+  if (inp.motor?.kind === 'acim') return out;
   if (inp.analysis) {
     const speed = inp.analysis.speed;
     // The robustness view: drift, saturation and 200 tolerance samples with the defaults.

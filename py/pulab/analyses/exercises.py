@@ -201,11 +201,12 @@ EXAMPLE_ACIM = {"motor": {"kind": "acim", "rated_voltage_v": 42 * math.sqrt(3.0)
 
 
 def _acim(*keys) -> Callable[[_Ctx], object]:
-    """A value of :data:`EXAMPLE_ACIM`'s report (the same motor for every trainee)."""
+    """A value of :data:`EXAMPLE_ACIM`'s report with its simulation (every default; the same
+    motor for every trainee)."""
     def get(c: _Ctx):
         if c.acim is None:
             from ..report import report
-            c.acim = report(EXAMPLE_ACIM)
+            c.acim = report({**EXAMPLE_ACIM, "sim": {}})
         v = c.acim
         for k in keys:
             v = v[k]
@@ -313,6 +314,8 @@ EXERCISES: tuple[Exercise, ...] = (
     Exercise("acim-sigma", "06-conventions", "real", _acim("acim", "sigma"), 0.01),
     Exercise("acim-tau-r-pu", "06-conventions", "real", _acim("acim", "pu", "tau_r_s"), 0.01),
     Exercise("acim-pm-kp", "06-conventions", "int", _acim("current_pi", "d", "pm_kp"), 1),
+    Exercise("acim-flux-95", "06-conventions", "real",
+             _acim("sim", "flux", "metrics", "si", "flux_95_s"), 0.01, "s"),
 )
 _BY_ID = {e.id: e for e in EXERCISES}
 

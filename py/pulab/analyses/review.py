@@ -425,8 +425,11 @@ BOARD_THRESHOLDS = {
 }
 
 
-def _board(f: list, n: dict, board: dict | None) -> None:
-    """The board's chain against the motor: the ADC range, the dead time, the PWM."""
+def _board(f: list, n: dict, board: dict | None, psi_peak: float | None = None) -> None:
+    """The board's chain against the motor: the ADC range, the dead time, the PWM.
+
+    ``psi_peak``: the stator flux (Wb, phase peak) the dead time's share is judged against;
+    None: the PMSM's, from ``motor.bemf_v``."""
     if not board:
         return
     m = n["motor"]
@@ -456,7 +459,8 @@ def _board(f: list, n: dict, board: dict | None) -> None:
     if p is None:
         return
     if p["deadtime_error_v"] is not None:
-        psi = m["bemf_v"] * math.sqrt(2.0 / 3.0) / (2.0 * math.pi * m["rated_freq_hz"])
+        psi = psi_peak if psi_peak is not None else \
+            m["bemf_v"] * math.sqrt(2.0 / 3.0) / (2.0 * math.pi * m["rated_freq_hz"])
         need = m["rs_ohm"] * peak + 0.1 * 2.0 * math.pi * m["rated_freq_hz"] * psi
         share = p["deadtime_error_v"] / need
         if share > lim["deadtime_share"]["warning"]:

@@ -824,6 +824,11 @@ MESSAGES = {
                                   "(the rated slip would be ≤ 0), got {value:g}",
                                   "必须低于同步转速 60·f_n/p = {sync:g} rpm（否则额定转差 ≤ 0），"
                                   "当前为 {value:g}"),
+    "acim_flux_ref": ("gives the d reference I_m + ({value:g} A) ≤ 0 with I_m = {im:.4g} A: the "
+                      "rotor flux would be reversed or gone; the slip ω_sl* = i_q*/(τ_r·i_d*) "
+                      "is undefined",
+                      "使 d 轴给定 I_m + ({value:g} A) ≤ 0（I_m = {im:.4g} A）：转子磁链反向或消失，"
+                      "转差 ω_sl* = i_q*/(τ_r·i_d*) 无定义"),
     "acim_not_applicable": ("does not apply to an induction motor (motor.kind = acim) yet",
                             "暂不适用于异步电机（motor.kind = acim）"),
     "finding.acim_im_ge_rated": ("the magnetizing current I_m = {value:.4g} A is not below the rated "
@@ -850,6 +855,37 @@ MESSAGES = {
                               "转差估计 ω_sl = i_q/(τ_r·i_d) 与 R_r 成正比：从 {t_lo:g} °C 到 "
                               "{t_hi:g} °C R_r 升高 {pct:.3g} %（α = {alpha:g}/K），磁场定向漂移、"
                               "每安培转矩下降。请自适应 R_r（温度模型、MRAS）或按热态整定 τ_r"),
+    "finding.acim_torque_before_flux": (
+        "torque is commanded {t:.3g} s after magnetizing starts, but the rotor flux needs {t95:.3g} s "
+        "to reach 95 %: only {pct:.3g} % is built then, so the torque per ampere is that share and "
+        "the slip estimate i_q/(τ_r·i_d) is wrong while it builds. Magnetize for at least {t95:.3g} s "
+        "(about 3·τ_r), or boost i_d at start, or hold the torque reference until the flux model "
+        "reaches 95 %",
+        "磁化开始后 {t:.3g} s 即给转矩，但转子磁链需 {t95:.3g} s 才达到 95 %：此时只建立了 "
+        "{pct:.3g} %，每安培转矩仅为该比例，建立期间转差估计 i_q/(τ_r·i_d) 也错误。请至少预励磁 "
+        "{t95:.3g} s（约 3·τ_r），或起动时加大 i_d，或在磁链模型达到 95 % 前保持转矩给定为零"),
+    "finding.acim_rr_hot": (
+        "with the rotor {rise_k:g} K hotter R_r rises {rr_pct:.3g} %, and a slip estimate with the "
+        "cold τ_r sets {slip_pct:.3g} % too little slip: at rated current the rotor flux leads the "
+        "controller's d axis by {angle_deg:.3g}°, the rotor flux by {flux_pct:+.3g} % and the torque per ampere by "
+        "{torque_pct:+.3g} % (linear magnetics; saturation limits the flux rise, the torque then "
+        "falls short). Track R_r (temperature model, MRAS) or tune τ_r for the hot motor",
+        "转子温升 {rise_k:g} K 时 R_r 升高 {rr_pct:.3g} %，用冷态 τ_r 的转差估计少给 {slip_pct:.3g} % "
+        "的转差：额定电流下转子磁链超前控制器 d 轴 {angle_deg:.3g}°，转子磁链偏差 {flux_pct:+.3g} %，每安培转矩"
+        "偏差 {torque_pct:+.3g} %（线性磁路；饱和会限制磁链上升，转矩随之不足）。请跟踪 R_r"
+        "（温度模型、MRAS）或按热态整定 τ_r"),
+    "finding.acim_im_ratio": (
+        "I_m is {pct:.3g} % of the rated current (usual {lo:g}–{hi:g} %): outside that range check "
+        "I_m (RMS no-load current, not its peak) and L_m (per phase, not the 2/3·L_m convention)",
+        "I_m 为额定电流的 {pct:.3g} %（常见 {lo:g}–{hi:g} %）：超出该范围时请核对 I_m（空载电流有效值，"
+        "而非峰值）与 L_m（每相值，而非 2/3·L_m 约定）"),
+    "finding.acim_im_vs_noload": (
+        "the given I_m = {value:.4g} A is {pct:+.3g} % from the no-load current U_ph/(ω·L_s) = "
+        "{noload:.4g} A of the circuit: I_m and L_m (or L_ls) disagree; at rated voltage the flux "
+        "reference L_m·I_m then over- or under-fluxes the motor. Check both against the no-load test",
+        "给定 I_m = {value:.4g} A 与等效电路的空载电流 U_ph/(ω·L_s) = {noload:.4g} A 相差 {pct:+.3g} %："
+        "I_m 与 L_m（或 L_ls）不一致；额定电压下磁链给定 L_m·I_m 会使电机过励或欠励。请用空载试验"
+        "核对两者"),
     "finding.acim_slip_mismatch": ("the circuit gives a rated slip frequency {model:.4g} Hz = "
                                    "I_q/(2π·τ_r·I_m) but the nameplate speed gives {plate:.4g} Hz "
                                    "({pct:+.3g} %): R_r, L_r or I_m do not match the nameplate",

@@ -365,6 +365,13 @@ TABLE = (
     F('sim.pll.ramp_hz_per_s', 'number', 'Hz/s', default=0.0, label=('Speed ramp', '速度斜坡')),
     F('sim.pll.duration_s', 'number', 's', sign='>0', derived='60/(ζω_n), at least 2000 periods',
       label=('Duration', '时长')),
+    Section('sim.flux', ('an induction motor\'s flux build-up (magnetizing) simulation',
+                         '异步电机建磁（励磁）仿真')),
+    F('sim.flux.duration_s', 'number', 's', sign='>0',
+      derived='5·τ_r, 200 to 50 000 periods (cut: complete false)',
+      label=('Duration', '时长')),
+    F('sim.flux.startup_s', 'number', 's', sign='>0', derived='none',
+      label=('Torque commanded after (start-up magnetizing time)', '转矩给定时刻（起动励磁时间）')),
     Section('profiles', ("vendor profiles: each vendor's options are its module's OPTIONS "
                          "(pulab.profiles)", '厂商配置：各厂商的选项见其模块的 OPTIONS（pulab.profiles）')),
     Section('observer', ('sensorless: back-EMF observer, tracking observer and start-up (absent: '

@@ -25,7 +25,7 @@ const idle = (f: () => void, timeout = 1000): void => {
 
 /** The panels that show an induction motor's report (motor.kind = acim); the others compute a
  * permanent-magnet motor and say so instead of reading sections its report does not have. */
-const ACIM_PANELS = new Set<PanelId>(['acim', 'review', 'bases', 'pll', 'qcalc', 'conventions', 'docs']);
+const ACIM_PANELS = new Set<PanelId>(['acim', 'review', 'bases', 'pll', 'qcalc', 'conventions', 'docs', 'board']);
 
 function renderPanel(p: Panel, el: HTMLElement, ctx: PanelContext): void {
   if (ctx.report?.acim && !ACIM_PANELS.has(p.id)) patch(el, h('p', { class: 'note acim-na' }, t('acimNotApplicable')));

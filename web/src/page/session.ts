@@ -309,8 +309,7 @@ export class ComputeSession {
   }
 
   private async computeSim(eff: Input): Promise<void> {
-    // an induction motor has no simulation yet (pulab refuses its "sim" section)
-    if (!this.wantsSim || !eff.sim || eff.motor?.kind === 'acim') return;
+    if (!this.wantsSim || !eff.sim) return;
     // Only the newest input is simulated once the gate opens.
     const waiting = this.simLatest !== null;
     this.simLatest = eff;

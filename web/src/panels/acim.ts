@@ -3,7 +3,10 @@
 // is pulab's (report `acim`, `current_pi`, `profiles`); this file formats only.
 import { h, num, patch, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
-import type { AcimProfile } from '../report-types';
+import type { AcimProfile, SimCurrent, SimEvent, SimProfileRun } from '../report-types';
+import { renderAcimFlux, renderAcimStep } from '../figures/acim-sim';
+import { keptFigure, simPlaceholder } from '../figures/figure';
+import { metricsTable, type MetricColumn, type MetricRow } from './metrics';
 import type { Panel } from './panel';
 
 const UNITS: Record<string, string> = {
@@ -14,13 +17,48 @@ const UNITS: Record<string, string> = {
   slip_gain_per_s: '1/s', flux_95_s: 's',
 };
 const OBSERVER = ['a', 'b_h', 'a_euler', 'b_euler_h'];
+const STEP_ROWS: MetricRow[] = [
+  { key: 'rise_time_s', label: 'riseTime', unit: 'ms', scale: 1e3 },
+  { key: 'overshoot_pct', label: 'overshoot', unit: '%' },
+  { key: 'settling_time_s', label: 'settling', unit: 'ms', scale: 1e3 },
+  { key: 'steady_state_error_a', label: 'sse', unit: 'A' },
+  { key: 'vs_si_max_abs_a', label: 'acimVsSi', unit: 'A' },
+  { key: 'wraps', label: 'acimWraps' },
+];
+const EVENTS: SimEvent[] = ['feedback_saturate', 'wrap', 'saturate', 'integral_limit', 'output_limit'];
+const FLUX_ROWS: MetricRow[] = [
+  { key: 'flux_95_s', label: 'acimFlux95', unit: 's' },
+  { key: 'psi_final_wb', label: 'acimPsiFinal', unit: 'Wb' },
+  ...STEP_ROWS,
+];
+
+/** One simulated run (sim.current or sim.flux): its plot, metrics and TI's event counts. */
+function simSection(name: 'current' | 'flux', sim: SimCurrent | undefined): (HTMLElement | null)[] {
+  const p = `sim.${name}`;
+  const ti = sim?.by_profile?.ti as SimProfileRun | undefined;
+  const extra: MetricColumn[] = ti?.ran ? [{ label: t('acimFixedTi'), path: `${p}.by_profile.ti.metrics`, metrics: ti.metrics }] : [];
+  const variants = sim?.variants.fixed ? ['si', 'pu', 'fixed'] : ['si', 'pu'];
+  return [
+    h('h4', {}, t(name === 'current' ? 'acimSimStep' : 'acimSimFlux')),
+    h('div', { class: 'figure', 'data-keep': `acim-${name}` }),
+    sim ? metricsTable(`${p}.metrics`, sim.metrics, variants, name === 'flux' ? FLUX_ROWS : STEP_ROWS, extra) : null,
+    sim && name === 'flux' ? h('p', { class: 'note' }, `${t('acimModel95')}: `,
+      num('sim.flux.flux_95_model_s', sim.flux_95_model_s as number, { unit: 's', sig: 5 })) : null,
+    ti?.ran ? h('p', { class: `note acim-ti-events${ti.events.wrap || ti.events.saturate ? ' flag-wrap' : ''}` },
+      t('sf_events', { name: 'TI' }), ' ',
+      ...EVENTS.flatMap((e, i) => [i ? ', ' : '', `${t(`sf_ev_${e}` as Key)} `, num(`${p}.by_profile.ti.events.${e}`, ti.events[e], { kind: 'int' })])) : null,
+  ];
+}
 
 export const acimPanel: Panel = {
   id: 'acim',
   title: 'p_acim',
-  pure: true,
-  render(el, { report }) {
+  usesSim: true,
+  render(el, ctx) {
+    const { report } = ctx;
     const a = report?.acim;
+    // the last simulation is an induction motor's when it has the flux build-up
+    const sim = a && ctx.simReport?.sim?.flux ? ctx.simReport.sim : undefined;
     if (!a) {
       patch(el, h('p', { class: 'note' }, t('acimPmsm')));
       return;
@@ -52,6 +90,11 @@ export const acimPanel: Panel = {
             num(`profiles.${v}.constants.${k}.error_pct`, c.error_pct, { sig: 3 })])),
           h('p', { class: 'note' }, (getLang() === 'zh' ? p.not_covered_zh : p.not_covered) ?? ''))
         : h('p', { class: 'note', 'data-vendor': v }, h('strong', {}, v), `: ${t('acimNoProfile')}`)),
+      h('h3', {}, t('acimSim')),
+      ...simSection('current', sim?.current),
+      ...simSection('flux', sim?.flux),
     );
+    keptFigure(el, 'acim-current', sim?.current, (fig) => renderAcimStep(fig, sim!.current!), () => simPlaceholder(ctx));
+    keptFigure(el, 'acim-flux', sim?.flux, (fig) => renderAcimFlux(fig, sim!.flux!), () => simPlaceholder(ctx));
   },
 };

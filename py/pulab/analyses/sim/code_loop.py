@@ -333,9 +333,7 @@ def run_code_steps(z, binding: Binding, sc: dict, ref_d: float, ref_q: float, he
     fb_q, out_d, out_q``, ``events`` (``feedback_saturate``, ``beyond_limit``), ``flags``
     (the tracer's flags met), ``first_event`` ({axis, call, line, kind, name} or None).
     """
-    p0, p1, p2, p3 = z.phi
-    g0, g1, g2, g3 = z.gamma
-    bemf = z.bemf
+    plant = z.advance()
     to_count, to_volt, lim = sc["to_count"], sc["to_volt"], sc["out_limit"]
     hi = (1 << (sc["bits"] - 1)) - 1
     lo = -hi - 1
@@ -352,7 +350,7 @@ def run_code_steps(z, binding: Binding, sc: dict, ref_d: float, ref_q: float, he
     r_d, r_q = count(ref_d), count(ref_q)
     names = binding.names
     inst = binding.instances
-    xd = xq = 0.0
+    xd, xq = z.x0
     prev_d, prev_q = 0.0, max(-lim, min(lim, held_q)) * to_volt
     cols = {k: array("d") for k in ("id", "iq", "ud", "uq")}
     ints = {k: array("q") for k in ("fb_d", "fb_q", "out_d", "out_q")}
@@ -390,8 +388,7 @@ def run_code_steps(z, binding: Binding, sc: dict, ref_d: float, ref_q: float, he
             ad, aq = od_v, oq_v
         cols["ud"].append(ad)
         cols["uq"].append(aq)
-        vq = aq - bemf
-        xd, xq = p0 * xd + p1 * xq + g0 * ad + g1 * vq, p2 * xd + p3 * xq + g2 * ad + g3 * vq
+        xd, xq = plant(xd, xq, ad, aq)
     first = None
     for axis in ("d", "q"):
         e = inst[axis].event

@@ -31,7 +31,7 @@ __all__ = ["validate", "periods", "FIELDS"]
 
 #: Allowed keys per subsection.
 FIELDS = {name: tuple(f.key for f in section_fields(f"sim.{name}"))
-          for name in ("current", "current.code", "pll")}
+          for name in ("current", "current.code", "pll", "flux")}
 
 
 def periods(duration: float, ts: float, cap: int, field: str) -> int:
@@ -62,13 +62,16 @@ def periods(duration: float, ts: float, cap: int, field: str) -> int:
     return max(int(round(q)), 1)
 
 
-def validate(sim_input) -> dict:
+def validate(sim_input, acim: bool = False) -> dict:
     """Check the ``"sim"`` input section and fill in the defaults.
 
     Parameters
     ----------
     sim_input : dict
         The value of the report input's ``"sim"`` key.
+    acim : bool
+        An induction motor's: also ``flux`` (:mod:`.induction`); its ``sim.current.code``
+        is refused.
 
     Returns
     -------
@@ -83,7 +86,14 @@ def validate(sim_input) -> dict:
         Naming the JSON path of the first bad field.
     """
     sim = read("sim", sim_input)
+    if not acim and sim.get("flux") is not None:
+        raise InputError("sim.flux", code="only_with", key="kind", value="acim")
     current = read("sim.current", sim.get("current"))
     if "code" in current:  # the user's routine as the controller (:mod:`.code_loop`)
+        if acim:
+            raise InputError("sim.current.code", code="acim_not_applicable")
         current["code"] = read("sim.current.code", current["code"])
-    return {"current": current, "pll": read("sim.pll", sim.get("pll"))}
+    out = {"current": current, "pll": read("sim.pll", sim.get("pll"))}
+    if acim:
+        out["flux"] = read("sim.flux", sim.get("flux"))
+    return out

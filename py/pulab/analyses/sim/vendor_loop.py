@@ -115,7 +115,7 @@ def _memo_step(memo: dict, step, state: tuple, ref: int, fb: int, ev: dict) -> t
 
 
 def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bemf_v: float,
-                      n: int, delay: bool, record: bool = False):
+                      n: int, delay: bool, record: bool = False, hold_d_v: float = 0.0):
     """One vendor's integer PI on the SI plant for n+1 samples.
 
     Parameters
@@ -127,6 +127,7 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
     bemf_v : float, V — the q integral's start (dq scale)
     n : int ≥ 1 ; delay : bool — one-sample computation delay
     record : bool — also return the integers ``fb_d, fb_q, out_d, out_q`` (for the oracle)
+    hold_d_v : float, V — the d integral's start (an induction motor's magnetized start)
 
     Returns
     -------
@@ -135,8 +136,7 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
         integers ``fb_d, fb_q, out_d, out_q``, ``events`` (:data:`EVENT_NAMES` → count) and
         ``lsb_a`` (one feedback count in A, dq scale).
     """
-    p0, p1, p2, p3 = z.phi
-    g0, g1, g2, g3 = z.gamma
+    plant = z.advance()
     ev = dict.fromkeys(EVENT_NAMES, 0)
     to_count = peak / ctl["i_lsb"]
     to_volt = ctl["u_lsb"] / peak
@@ -144,10 +144,10 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
     step_d, step_q = ctl["steps"]["d"], ctl["steps"]["q"]
     r_d = _quantize(ref_d * to_count, bits, ev)
     r_q = _quantize(ref_q * to_count, bits, ev)
-    st_d = ctl["start"](0.0)
+    st_d = ctl["start"](hold_d_v * peak)
     st_q = ctl["start"](bemf_v * peak)
-    xd = xq = 0.0
-    prev_d, prev_q = 0.0, ctl["held"](st_q) * to_volt
+    xd, xq = z.x0
+    prev_d, prev_q = ctl["held"](st_d) * to_volt, ctl["held"](st_q) * to_volt
     # The steps are pure functions of (state, reference, feedback): in steady state the same
     # pairs recur (limit cycles of a count or two), so a memo saves most calls (as the
     # Inovance run's does); each entry keeps the events of its call, counted again on reuse.
@@ -160,7 +160,6 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
     put_fd, put_fq, put_od, put_oq = (ints[k].append for k in ("fb_d", "fb_q", "out_d", "out_q"))
     hi = (1 << (bits - 1)) - 1
     lo = -hi - 1
-    bemf = z.bemf
     for k in range(n + 1):
         if k and not k % SLICE_STEPS:
             yield
@@ -200,7 +199,6 @@ def run_profile_steps(z, ctl: dict, peak: float, ref_d: float, ref_q: float, bem
             ad, aq = od_v, oq_v
         put_ud(ad)
         put_uq(aq)
-        vq = aq - bemf
-        xd, xq = p0 * xd + p1 * xq + g0 * ad + g1 * vq, p2 * xd + p3 * xq + g2 * ad + g3 * vq
+        xd, xq = plant(xd, xq, ad, aq)
     return {**cols, "sat": sats, **(ints if record else {}), "events": ev,
             "lsb_a": ctl["i_lsb"] / peak}
