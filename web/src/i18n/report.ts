@@ -257,7 +257,7 @@ export default dict(
     obsPoles: '离散极点（×）与设计极点的映像 e^(sT)（○）',
     obsBudget: '随转速的反电势与误差',
     obsIntegers: '厂商整数',
-    obsMcat: 'NXP：粘贴 MCAT 写在 m1_pmsm_appconfig.h 开头的 JSON（或整个头文件）：本视图随即显示 MCAT 的电机、驱动与观测器，而非页面上的',
+    obsMcat: 'NXP：粘贴 MCAT 写在 m1_pmsm_appconfig.h 开头的 JSON（或整个头文件）：本视图随即显示 MCAT 的电机、驱动与观测器，而非页面上的电机。',
     obsMcatBad: '粘贴的文本中没有找到 MCAT 的 JSON 对象',
     obsStRule: 'ST：GAIN1、GAIN2、F2 与 PLL 按 Motor Control Workbench 自身的规则计算，该规则由 13 个公开 MCSDK 项目还原（误差极点在 a/4 与 1/4，a = 1 − RS·T/LS；见第 9 章）。',
     obsStDesign: 'ST：GAIN1、GAIN2 与 PLL 取自 pu-lab 的观测器设计（profiles.st.observer_design），而非 Workbench 的规则。',
