@@ -2,9 +2,9 @@
 // (in the spirit of stlite's types.ts), and every request kind has its request and reply types.
 // The worker only forwards JSON text to pulab.api.call_json.
 
-import type { BatchChunk, BatchRequest, Audit, AuditRequest, CodeProof, CodeProveRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
+import type { BatchChunk, BatchRequest, Audit, AuditRequest, CodeProof, CodeProveRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './generated/api-types';
 import type { Chunk, Plan, Points, Summary } from './family/types';
-import type { Report } from './report-types';
+import type { Report } from './generated/report-types';
 import type { Input, Json } from './json';
 
 export type { Json } from './json';

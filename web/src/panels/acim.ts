@@ -3,7 +3,7 @@
 // is pulab's (report `acim`, `current_pi`, `profiles`); this file formats only.
 import { h, num, patch, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
-import type { AcimProfile } from '../report-types';
+import type { AcimProfile } from '../generated/report-types';
 import type { Panel } from './panel';
 
 const UNITS: Record<string, string> = {

@@ -1,6 +1,6 @@
 import { h, num, patch, tex } from '../dom';
 import { t, type Key } from '../i18n';
-import type { PiAxis, Report, SimCurrent, SimEvent } from '../report-types';
+import type { PiAxis, Report, SimCurrent, SimEvent } from '../generated/report-types';
 import { vendorName } from '../vendors';
 import { fixedRun, renderCurrentStep } from '../figures/current-step';
 import { keptFigure, simPlaceholder } from '../figures/figure';

@@ -1,0 +1,166 @@
+"""pulab.schema.shapes: the declared shapes of the report and of the API's replies are the ones
+pulab really returns, and the page's generated TypeScript is what the build writes from them.
+
+Real outputs only: the report of every golden vector's input (every ``tests/golden/**`` file with
+an ``input``) and each API kind's reply on the seed motor.  A report is checked whole: every
+declared key present (unless optional) with its declared JSON type.  Keys the declaration does
+not name are allowed (the TypeScript declares what the page reads) and listed by
+``PULAB_SHAPES_EXTRA=1 pytest -s tests/py/test_shapes.py``.
+"""
+
+import json
+import os
+import re
+
+import pytest
+
+from conftest import ROOT, SEED_INPUT
+from pulab.api import call_json
+from pulab.profiles.inovance.header import _NAMES
+from pulab.report import report
+from pulab.schema.api_shapes import API
+from pulab.schema.report_shapes import REPORT
+from pulab.schema.shapes import EXTRA, NUM, STR, Arr, Obj, Rec, Ref, names_of, problems
+from pulab.schema.typings import typescript_files
+
+NAMES = names_of(REPORT, API)
+GOLDEN = sorted(p for p in (ROOT / "tests/golden").rglob("*.json")
+                if isinstance(d := json.loads(p.read_text(encoding="utf-8")), dict) and "input" in d)
+#: What an induction motor's report leaves out (the Report declaration's own comment on `acim`),
+#: and its profiles: each an AcimProfile, not a ProfileReport.
+ACIM_ABSENT = ["$: missing pu", "$: missing vendor", "$: missing constants", "$: missing mechanical",
+               "$: missing firmware", "$.review: missing thresholds", "$.review: missing headroom"]
+
+
+def _errors(value, t):
+    """The type problems (extra keys left out)."""
+    return [p for p in problems(json.loads(json.dumps(value)), t, NAMES) if EXTRA not in p]
+
+
+def test_generated_types_are_fresh():
+    """web/src/generated/*.ts is what the build writes; a shape edit needs a build."""
+    for path, text in typescript_files().items():
+        assert (ROOT / path).read_text(encoding="utf-8") == text, path
+
+
+def test_every_name_a_shape_refers_to_is_declared():
+    text = "".join(typescript_files().values())
+    used = set(re.findall(r"\b([A-Z]\w+)\b(?!\s*[:(])", re.sub(r"/\*\*.*?\*/|//.*|'[^']*'", "", text)))
+    assert used - set(NAMES) - {"Input", "Record", "Partial"} == set()
+
+
+def test_vendor_names_are_the_inovance_header_names():
+    (const,) = [s for s in REPORT if s.name == "VENDOR_NAMES"]
+    assert tuple(const.values) == _NAMES
+
+
+@pytest.mark.parametrize("path", GOLDEN, ids=lambda p: str(p.relative_to(ROOT / "tests/golden")))
+def test_every_golden_report_has_the_declared_shape(path):
+    rep = report(json.loads(path.read_text(encoding="utf-8"))["input"])
+    found = _errors(rep, Ref("Report"))
+    if "acim" in rep:
+        assert sorted(p for p in found if not p.startswith("$.profiles.")) == sorted(ACIM_ABSENT)
+        assert _errors(rep.get("profiles", {}), Rec(STR, Ref("AcimProfile"))) == []
+    else:
+        assert found == []
+
+
+def test_the_golden_reports_cover_every_optional_section():
+    """Each optional part of the report appears in some golden report, so the test above checks it."""
+    seen = set()
+    for path in GOLDEN:
+        rep = report(json.loads(path.read_text(encoding="utf-8"))["input"])
+        seen |= {k for k in rep if k not in ("input",)}
+        seen |= {f"sim.{k}" for k in rep.get("sim", {})}
+        seen |= {f"loop.{k}" for k in rep.get("loop", {})}
+    assert {"sim.current", "sim.pll", "datasheet", "fw", "observer", "board", "loop", "loop.robust",
+            "loop.bode", "profiles", "acim"} <= seen
+
+
+def test_a_wrong_report_is_caught():
+    """The check fails on each kind of mistake (a type, a missing key, a member of no union)."""
+    rep = json.loads(json.dumps(report(SEED_INPUT)))
+    rep["warnings"] = "x"
+    del rep["review"]["counts"]
+    rep["review"]["findings"].append({"severity": "fatal"})
+    found = _errors(rep, Ref("Report"))
+    assert "$.warnings: expected array, got string" in found
+    assert "$.review: missing counts" in found
+    assert any(p.startswith("$.review.findings[") and "'error' | 'warning' | 'note'" in p for p in found)
+
+
+SIM = {**SEED_INPUT, "sim": {"current": {"duration_s": 0.005}, "pll": {}}}
+RANGES = {"input": SEED_INPUT, "ranges": {"motor.rs_ohm": [1, 2]}}
+SEQUENCE = {"code": "int16_t acc; int16_t f(int16_t x) { acc += x; return acc; }", "target": "arm",
+            "entry": "f", "calls": 4, "zero_unset": True, "gen": {"x": "ramp:start=0,slope=10000"}}
+AUTO = """int16_t gain(int16_t x, int16_t k) { // @q k auto
+  int32_t p = (int32_t)x * k; // @q p auto
+  return (int16_t)(p >> 12);
+}"""
+HEADER = {"files": [{"name": "a.h", "text": "#define RS 0.35\n#define LS 0.0006\n#define F1 16384\n"
+                     "#define PWM_FREQUENCY 20000\n"
+                     "#define C1 (int32_t)((((int16_t)F1)*RS)/(LS*PWM_FREQUENCY))\n"}]}
+TEXT = Obj(("text", STR))
+
+
+def _reply(kind, req):
+    out = json.loads(call_json(kind, json.dumps(req)))
+    assert out.pop("ok") is True, out
+    return out
+
+
+def _cases():
+    """(kind, request, declared type of the reply's body) on the seed motor."""
+    integer = _reply("prove.plan", RANGES)["plan"]["names"][0]
+    entries = _reply("prove", RANGES)["proof"]["integers"]
+    ti = _reply("vendors.header", {"input": SEED_INPUT, "profile": "ti"})["text"]
+    return [
+        ("report", SEED_INPUT, Obj(("report", Ref("Report")))),
+        ("report", SIM, Obj(("report", Ref("Report")))),
+        ("qcalc", {"value": 0.5, "format": "Q0.15"}, Obj(("format", Ref("QFormat")), ("result", Ref("QResult")))),
+        ("qcalc", {"raw": "0x8000", "format": "Q0.15"}, Obj(("format", Ref("QFormat")), ("result", Ref("QResult")))),
+        ("export.header", {"input": SEED_INPUT}, TEXT),
+        ("export.csv_current", {"input": SIM}, TEXT),
+        ("export.csv_pll", {"input": SIM}, TEXT),
+        ("trace", {"code": "Uint16 v; long x = v*10; long *p = &x;", "set": {"v": 6554}}, Ref("Trace")),
+        ("trace", SEQUENCE, Ref("TraceSequence")),
+        ("trace.examples", {}, Obj(("examples", Arr(Ref("TraceExample"))), ("targets", Arr(STR)))),
+        ("trace.prove", {"code": AUTO, "target": "arm", "entry": "gain",
+                         "range": {"x": [-4096, 4096], "k": ["-1.5", "2.0"]}},
+         Obj(("proof", Ref("CodeProof")))),
+        ("trace.prove", {"code": "int16_t f(int16_t a) { int16_t b = a * 2; return b; }", "target": "arm",
+                         "entry": "f", "range": {"a": [0, 20000]}}, Obj(("proof", Ref("CodeProof")))),
+        ("vendors.header", {"input": SEED_INPUT, "profile": "ti"}, TEXT),
+        ("vendors.translate", {"input": SEED_INPUT, "from": "inovance", "axis": "q",
+                               "values": {"pm_kp": 1180, "pm_ki": 4720}},
+         Obj(("translation", Ref("Translation")))),
+        ("batch", {"csv": "name,motor.rated_voltage_v\na,17\nb,x\n"}, Ref("BatchChunk")),
+        ("prove", RANGES, Obj(("proof", Ref("Proof")))),
+        ("prove", {**RANGES, "ranges": {"drive.udc_v": [24, 7000]}}, Obj(("proof", Ref("Proof")))),
+        ("prove.plan", RANGES, Obj(("plan", Obj(("names", Arr(STR)), ("raw_box", Obj(index=Arr(NUM))))))),
+        ("prove.integer", {**RANGES, "name": integer}, Obj(("integer", Ref("ProveEntry")))),
+        ("prove.summary", {**RANGES, "integers": entries}, Obj(("proof", Ref("Proof")))),
+        *[("prove.propose", {**RANGES, "profile": p}, Obj(("proposal", Ref("Proposal"))))
+          for p in ("inovance", "ti", "nxp", "st", "microchip")],
+        ("audit", HEADER, Obj(("audit", Ref("Audit")))),
+        ("audit", {"files": [{"name": "user.h", "text": ti}], "profile": "ti"}, Obj(("audit", Ref("Audit")))),
+    ]
+
+
+def test_each_kind_replies_in_its_declared_shape():
+    for kind, req, t in _cases():
+        assert _errors(_reply(kind, req), t) == [], kind
+
+
+def test_extra_keys_are_listed_on_request():
+    """Not a check: with PULAB_SHAPES_EXTRA=1, print the keys the declarations leave out."""
+    if not os.environ.get("PULAB_SHAPES_EXTRA"):
+        pytest.skip("set PULAB_SHAPES_EXTRA=1 to list them")
+    extra = set()
+    for path in GOLDEN:
+        rep = report(json.loads(path.read_text(encoding="utf-8"))["input"])
+        extra |= {re.sub(r"\[\d+\]", "[]", p) for p in problems(json.loads(json.dumps(rep)), Ref("Report"), NAMES)
+                  if EXTRA in p}
+    for kind, req, t in _cases():
+        extra |= {f"{kind} " + re.sub(r"\[\d+\]", "[]", p) for p in problems(_reply(kind, req), t, NAMES) if EXTRA in p}
+    print("\n".join(sorted(extra)))
