@@ -1,8 +1,10 @@
-"""The shapes of :mod:`pulab.api`'s requests and of its replies that are not a report.
+"""The shapes of :mod:`pulab.api`'s requests and replies: ``Request`` and ``ReplyBody`` (each
+kind's body, one key per kind of :data:`pulab.api.KINDS`) and the objects they name.
 
 The Q calculator, the C tracer and its proof, the vendor translator, batches, family proofs and
-proposals, and header audits (docs/contract.md, "API"), one entry per JSON object in the type
-language of :mod:`.shapes`.  The build writes them as ``web/src/generated/api-types.ts``;
+proposals, exercises and header audits (docs/contract.md, "API"), one entry per JSON object in
+the type language of :mod:`.shapes`; the report is :mod:`.report_shapes`, the sweep's results
+are declared by the page (web/src/family/types.ts).  The build writes them as ``web/src/generated/api-types.ts``;
 tests/py/test_shapes.py checks each kind's reply on the seed motor against them.  To add a field:
 add ``("name", TYPE)`` (``"name?"`` when optional) to its object's entry, then ``npm run build``.
 
@@ -14,11 +16,17 @@ Examples
 []
 """
 
-from .shapes import (BOOL, NULL, NUM, STR, UNKNOWN, Alias, Arr, Interface, Lit, Never, Obj, Or, Rec, Ref,
-                     Tup)
+from .shapes import (BOOL, NULL, NUM, STR, UNKNOWN, Alias, And, Arr, Interface, Lit, Never, Obj, Or, Rec,
+                     Ref, Tup)
 
-#: The page's input object (web/src/json.ts): sections of fields.
+#: The page's input object (web/src/json.ts): sections of fields; any JSON value.
 INPUT = Ref("Input", "../json", like=Rec(STR, Rec(STR, UNKNOWN)))
+JSON = Ref("Json", "../json")
+#: The sweep's and batch's results, declared by the page (web/src/family/types.ts).
+PLAN, CHUNK, POINTS, SUMMARY = (Ref(n, "../family/types") for n in ("Plan", "Chunk", "Points", "Summary"))
+WITH_INPUT = Obj(("input", INPUT))
+TEXT = Obj(("text", STR))
+EMPTY = Rec(STR, Never())
 NUMS = Arr(NUM)
 STRS = Arr(STR)
 NUM_OR_NULL = Or(NUM, NULL)
@@ -170,4 +178,68 @@ API = [
         ("findings", Arr(Ref("AuditFinding"))),
         ("regenerated", Or(Obj(("header", STR_OR_NULL), ("error?", STR), ("error_zh?", STR)), NULL)),
         ("roundtrip", Rec(STR, Obj(("file", NUM), ("pulab", NUM), ("delta_lsb?", NUM), ("delta_rel?", NUM_OR_NULL))))]),
+    Interface("SweepRequest", [("input", INPUT), ("x", Ref("SweepAxis")), ("y?", Ref("SweepAxis")), ("profile?", STR)],
+              doc='A sweep request (docs/contract.md, "Sweep"): the motor, one or two axes, the profile.'),
+    Interface("SweepAxis", [("path", STR), ("start", NUM), ("stop", NUM), ("n", NUM), ("scale", Lit("linear", "log"))]),
+    Interface("Tolerance", [("kind", Lit("exact", "abs", "rel", "range")), ("value?", NUM), ("en", STR), ("zh", STR)],
+              doc="An exercise's stated tolerance (pulab.analyses.exercises): data and its text in both languages."),
+    Interface("ExerciseSpec", [("id", STR), ("chapter", STR), ("kind", STR), ("unit", STR), ("choices", STRS),
+                               ("tolerance", Ref("Tolerance"))]),
+    Interface("Request", [
+        ("report", INPUT),
+        ("qcalc", Ref("QcalcRequest")),
+        ("export.header", WITH_INPUT),
+        ("export.csv_current", WITH_INPUT),
+        ("export.csv_pll", WITH_INPUT),
+        ("sweep", Ref("SweepRequest")),
+        ("sweep.plan", Ref("SweepRequest")),
+        ("sweep.chunk", And(Ref("SweepRequest"), Obj(("start", NUM), ("count", NUM)))),
+        ("sweep.merge", And(Ref("SweepRequest"), Obj(("summaries", Arr(SUMMARY))))),
+        ("batch", Ref("BatchRequest")),
+        ("trace", Ref("TraceRequest")),
+        ("trace.examples", EMPTY),
+        ("trace.prove", Ref("CodeProveRequest")),
+        ("vendors.header", Obj(("input", INPUT), ("profile", STR))),
+        ("vendors.translate", Ref("TranslateRequest")),
+        ("prove", Ref("ProveRequest")),
+        ("prove.plan", Ref("ProveRequest")),
+        ("prove.integer", And(Ref("ProveRequest"), Obj(("name", STR)))),
+        ("prove.summary", And(Ref("ProveRequest"), Obj(("integers", Rec(STR, Ref("ProveEntry")))))),
+        ("prove.propose", Ref("ProveRequest")),
+        ("course.spec", EMPTY),
+        ("course.check", Obj(("input", INPUT), ("id", STR), ("answer", STR))),
+        ("course.answers", WITH_INPUT),
+        ("course.trainees", Obj(("start", Or(NUM, STR)), ("count", Or(NUM, STR)))),
+        ("audit", Ref("AuditRequest"))],
+        doc="What each request kind sends: `pulab.api.call_json(kind, text)` gets the JSON text of "
+            "`Request[kind]`. `kind` is the one dispatch key (docs/contract.md, \"API\")."),
+    Interface("ReplyBody", [
+        ("report", Obj(("report", Ref("Report", "./report-types", like=Ref("Report"))))),
+        ("qcalc", Obj(("format", Ref("QFormat")), ("result", Ref("QResult")))),
+        ("export.header", TEXT),
+        ("export.csv_current", TEXT),
+        ("export.csv_pll", TEXT),
+        ("sweep", Obj(("sweep", And(PLAN, Obj(("points", POINTS), ("summary", SUMMARY)))))),
+        ("sweep.plan", Obj(("plan", PLAN))),
+        ("sweep.chunk", Obj(("chunk", CHUNK))),
+        ("sweep.merge", Obj(("summary", SUMMARY))),
+        ("batch", Ref("BatchChunk")),
+        ("trace", Ref("Trace")),
+        ("trace.examples", Obj(("examples", Arr(Ref("TraceExample"))), ("targets", STRS))),
+        ("trace.prove", Obj(("proof", Ref("CodeProof")))),
+        ("vendors.header", TEXT),
+        ("vendors.translate", Obj(("translation", Ref("Translation")))),
+        ("prove", Obj(("proof", Ref("Proof")))),
+        ("prove.plan", Obj(("plan", Obj(("names", STRS), ("raw_box", Rec(STR, PAIR)))))),
+        ("prove.integer", Obj(("integer", Ref("ProveEntry")))),
+        ("prove.summary", Obj(("proof", Ref("Proof")))),
+        ("prove.propose", Obj(("proposal", Ref("Proposal")))),
+        ("course.spec", Obj(("exercises", Arr(Ref("ExerciseSpec"))))),
+        ("course.check", Obj(("result", Obj(("id", STR), ("state", Lit("correct", "wrong")), ("expected", JSON),
+                                            ("tolerance", Ref("Tolerance")))))),
+        ("course.answers", Obj(("answers", Rec(STR, Obj(("chapter", STR), ("expected", JSON), ("unit", STR),
+                                                         ("tolerance", Ref("Tolerance"))))))),
+        ("course.trainees", Obj(("trainees", Arr(Obj(("n", NUM), ("input", INPUT)))))),
+        ("audit", Obj(("audit", Ref("Audit"))))],
+        doc="What each kind answers when it succeeds (besides `ok: true`)."),
 ]

@@ -252,7 +252,8 @@ class And(Type):
     def fields(self, names):
         named, other = {}, None
         for t in self.types:
-            f, idx = _resolve(t, names).fields(names)
+            # a member that is not an object here (a type the page declares) leaves it open
+            f, idx = _resolve(t, names).fields(names) or ({}, UNKNOWN)
             named.update(f)
             other = other or idx
         return named, other

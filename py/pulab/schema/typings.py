@@ -16,7 +16,7 @@ def typescript_files() -> dict:
     -------
     dict of str to str
         ``web/src/generated/report-types.ts`` (the report, :data:`.report_shapes.REPORT`) and
-        ``web/src/generated/api-types.ts`` (the API's other bodies, :data:`.api_shapes.API`).
+        ``web/src/generated/api-types.ts`` (requests and replies by kind, :data:`.api_shapes.API`).
 
     Examples
     --------
@@ -30,7 +30,6 @@ def typescript_files() -> dict:
         "web/src/generated/report-types.ts": typescript(
             REPORT, "The parts of the report (docs/contract.md) the page reads. Values are displayed, never computed."),
         "web/src/generated/api-types.ts": typescript(
-            API, 'The bodies of pulab.api\'s requests and replies that are not a report (docs/contract.md, "API"):\n'
-                 "the Q calculator, the C tracer, the vendor translator, batches, proofs and audits. protocol.ts\n"
-                 "pairs them by kind."),
+            API, 'pulab.api\'s requests and replies (docs/contract.md, "API"): each kind\'s `Request` and\n'
+                 "`ReplyBody` and the objects they name; protocol.ts builds the worker's messages on them."),
     }
