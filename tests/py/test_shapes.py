@@ -16,6 +16,7 @@ import pytest
 
 from conftest import ROOT, SEED_INPUT
 from pulab.api import KINDS, call_json
+from pulab.ctrace.examples import EXAMPLES
 from pulab.profiles.inovance.header import _NAMES
 from pulab.report import report
 from pulab.schema.api_shapes import API
@@ -93,6 +94,20 @@ def test_a_wrong_report_is_caught():
 
 
 SIM = {**SEED_INPUT, "sim": {"current": {"duration_s": 0.005}, "pll": {}}}
+#: The seed's PI block (pulab.ctrace.examples) in the current loop, the speed loop's step
+#: response and the robustness Monte Carlo: the report's parts no golden input asks for.
+RICH = {**SEED_INPUT,
+        "sim": {"current": {"duration_s": 0.002, "axis": "q", "code": {
+            "text": EXAMPLES["pi"]["code"], "error": "pm_error_id", "output": "pm_ud",
+            "integral": "pm_integral_d", "integral_shift": 12,
+            "set": {"pm_kp_d": {"d": "current_pi.d.pm_kp", "q": "current_pi.q.pm_kp"},
+                    "pm_ki_d": {"d": "current_pi.d.pm_ki", "q": "current_pi.q.pm_ki"},
+                    "maxu": "vendor.maxu", "pm_maxout_vol": "vendor.pm_maxout_vol"}}}},
+        "analysis": {"speed": {"inertia_kg_m2": 1e-5, "response": True}, "robust": {"samples": 20}}}
+#: ST Motor Control Workbench's generated headers (tests/data/headers/st/README names their source).
+ST = [{"name": n, "text": (ROOT / "tests/data/headers/st" / n).read_text(encoding="utf-8", errors="replace")}
+      for n in ("pmsm_motor_parameters.h", "drive_parameters.h", "power_stage_parameters.h",
+                "parameters_conversion.h", "parameters_conversion_g4xx.h")]
 RANGES = {"input": SEED_INPUT, "ranges": {"motor.rs_ohm": [1, 2]}}
 SEQUENCE = {"code": "int16_t acc; int16_t f(int16_t x) { acc += x; return acc; }", "target": "arm",
             "entry": "f", "calls": 4, "zero_unset": True, "gen": {"x": "ramp:start=0,slope=10000"}}
@@ -100,12 +115,22 @@ AUTO = """int16_t gain(int16_t x, int16_t k) { // @q k auto
   int32_t p = (int32_t)x * k; // @q p auto
   return (int16_t)(p >> 12);
 }"""
+#: A call, a branch, a pointer store, division's rounding and a Q annotation in one trace.
+CALLS = """int16_t half(int16_t a) { return a / 2; }
+int16_t f(int16_t x) { // @q x Q12 base=10 V
+  int16_t y;
+  int16_t *p = &y;
+  if (x > 0) { y = half(x); } else { y = half(-x); }
+  *p = (y >> 1) + (x / 3);
+  return y;
+}"""
 HEADER = {"files": [{"name": "a.h", "text": "#define RS 0.35\n#define LS 0.0006\n#define F1 16384\n"
                      "#define PWM_FREQUENCY 20000\n"
                      "#define C1 (int32_t)((((int16_t)F1)*RS)/(LS*PWM_FREQUENCY))\n"}]}
-AXIS = {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3}
+AXIS = {"path": "motor.rs_ohm", "start": 1, "stop": 2, "n": 3, "scale": "linear"}
 #: Each kind's body type, from the declaration (ReplyBody[kind]).
 REPLY = NAMES["ReplyBody"].obj.fields(NAMES)[0]
+REQUEST = NAMES["Request"].obj.fields(NAMES)[0]
 
 
 def _reply(kind, req):
@@ -122,7 +147,7 @@ def _cases():
     ti = _reply("vendors.header", {"input": SEED_INPUT, "profile": "ti"})["text"]
     sweep = {"input": SEED_INPUT, "x": AXIS}
     return [
-        ("report", SEED_INPUT), ("report", SIM),
+        ("report", SEED_INPUT), ("report", SIM), ("report", RICH),
         ("qcalc", {"value": 0.5, "format": "Q0.15"}), ("qcalc", {"raw": "0x8000", "format": "Q0.15"}),
         ("export.header", {"input": SEED_INPUT}),
         ("export.csv_current", {"input": SIM}),
@@ -131,6 +156,7 @@ def _cases():
         ("sweep.merge", {**sweep, "summaries": []}),
         ("batch", {"csv": "name,motor.rated_voltage_v\na,17\nb,x\n"}),
         ("trace", {"code": "Uint16 v; long x = v*10; long *p = &x;", "set": {"v": 6554}}),
+        ("trace", {"code": CALLS, "entry": "f", "target": "arm", "set": {"x": -5}}),
         # ReplyBody says Trace for every trace; with `calls` the reply is a TraceSequence (the
         # request's own doc says so; the code panel casts to it)
         ("trace", SEQUENCE, Ref("TraceSequence")),
@@ -152,11 +178,12 @@ def _cases():
         ("course.answers", {"input": SEED_INPUT}),
         ("course.trainees", {"start": 1, "count": 2}),
         ("audit", HEADER), ("audit", {"files": [{"name": "user.h", "text": ti}], "profile": "ti"}),
+        ("audit", {"files": ST, "profile": "st"}),
     ]
 
 
 def test_the_request_and_reply_kinds_are_the_api_kinds():
-    assert set(NAMES["Request"].obj.fields(NAMES)[0]) == set(REPLY) == set(KINDS)
+    assert set(REQUEST) == set(REPLY) == set(KINDS)
 
 
 def test_each_kind_replies_in_its_declared_shape():
@@ -164,6 +191,15 @@ def test_each_kind_replies_in_its_declared_shape():
     assert {kind for kind, *_ in cases} == set(KINDS)
     for kind, req, *t in cases:
         assert _errors(_reply(kind, req), t[0] if t else REPLY[kind][0]) == [], kind
+
+
+def test_each_request_sent_has_its_declared_shape():
+    """The requests above (each answered, so each one pulab reads) are Request[kind], top-level
+    extra keys included: a request field the declaration lacks is one the page cannot send (deeper
+    down, echoed data such as prove.summary's entries keeps the reply's extra keys)."""
+    for kind, req, *_ in _cases():
+        found = problems(req, REQUEST[kind][0], NAMES)
+        assert [p for p in found if EXTRA not in p or p.startswith("$: ")] == [], kind
 
 
 def test_extra_keys_are_listed_on_request():

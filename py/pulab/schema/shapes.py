@@ -228,7 +228,8 @@ class Or(Type):
         for t in self.types:
             found = []
             t.check(value, path, names, found)
-            if not found:
+            if not [p for p in found if EXTRA not in p]:  # a member's extra keys do not rule it out
+                out.extend(found)
                 return
             tries.append(found)
         if all(p.endswith(f"got {_kind(value)}") and p.startswith(path + ":") for f in tries for p in f):
