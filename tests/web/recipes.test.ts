@@ -9,7 +9,7 @@ import { PANELS } from '../../web/src/panels/registry';
 import { VIEWS } from '../../web/src/panels/views';
 import { setLang, t, type Key } from '../../web/src/i18n';
 import type { Panel, PanelContext } from '../../web/src/panels/panel';
-import type { Report } from '../../web/src/report-types';
+import type { Report } from '../../web/src/generated/report-types';
 
 // (happy-dom gives import.meta.url an http: scheme; vitest runs from the repository root)
 const ROOT = process.cwd();

@@ -7,7 +7,7 @@ import { PulabClient, type WorkerLike } from '../../web/src/rpc';
 import { SEED_INPUT, clone, encodeHash, reportKey, type Input } from '../../web/src/state';
 import { effectiveInput } from '../../web/src/fields';
 import type { ApiResult, MainToWorker } from '../../web/src/protocol';
-import type { Report } from '../../web/src/report-types';
+import type { Report } from '../../web/src/generated/report-types';
 import { reportCPython } from '../../web/build/prerender';
 
 /** The seed's real reply (CPython's pulab.api.call_json("report", …), as the prerender makes it). */

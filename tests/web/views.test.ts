@@ -7,7 +7,7 @@ import { Layout } from '../../web/src/page/layout';
 import { PANELS } from '../../web/src/panels/registry';
 import { VIEWS, viewsFor } from '../../web/src/panels/views';
 import type { PanelContext } from '../../web/src/panels/panel';
-import type { Report } from '../../web/src/report-types';
+import type { Report } from '../../web/src/generated/report-types';
 
 describe('views', () => {
   it('every registered panel is in exactly one view; the first view holds the review and the firmware integers', () => {

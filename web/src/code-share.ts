@@ -1,7 +1,7 @@
 // The "Your code" panel's state without DOM: reading and writing it in the URL's query
 // (?code=…&target=…&vs=…&entry=…&set.NAME=…, beside #in= which keeps the motor), the trace request,
 // and the inputs prefilled from the report's integers.
-import type { TraceLine } from './api-types';
+import type { TraceLine } from './generated/api-types';
 
 export interface CodeState {
   code: string;

@@ -2,87 +2,13 @@
 // (in the spirit of stlite's types.ts), and every request kind has its request and reply types.
 // The worker only forwards JSON text to pulab.api.call_json.
 
-import type { BatchChunk, BatchRequest, Audit, AuditRequest, CodeProof, CodeProveRequest, Proof, Proposal, ProveEntry, ProveRequest, QcalcRequest, QFormat, QResult, Trace, TraceExample, TraceRequest, Translation, TranslateRequest } from './api-types';
-import type { Chunk, Plan, Points, Summary } from './family/types';
-import type { Report } from './report-types';
-import type { Input, Json } from './json';
+import type { ReplyBody, Request } from './generated/api-types';
+import type { Json } from './json';
 
 export type { Json } from './json';
-
-/** A sweep request (docs/contract.md, "Sweep"): the motor, one or two axes, the profile. */
-export interface SweepRequest {
-  input: Input;
-  x: SweepAxis;
-  y?: SweepAxis;
-  profile?: string;
-}
-export interface SweepAxis { path: string; start: number; stop: number; n: number; scale: 'linear' | 'log' }
-
-/**
- * What each request kind sends: `pulab.api.call_json(kind, text)` gets the JSON text of
- * `Request[kind]`. `kind` is the one dispatch key (docs/contract.md, "API").
- */
-export interface Request {
-  report: Input;
-  qcalc: QcalcRequest;
-  'export.header': { input: Input };
-  'export.csv_current': { input: Input };
-  'export.csv_pll': { input: Input };
-  sweep: SweepRequest;
-  'sweep.plan': SweepRequest;
-  'sweep.chunk': SweepRequest & { start: number; count: number };
-  'sweep.merge': SweepRequest & { summaries: Summary[] };
-  batch: BatchRequest;
-  trace: TraceRequest;
-  'trace.examples': Record<string, never>;
-  'trace.prove': CodeProveRequest;
-  'vendors.header': { input: Input; profile: string };
-  'vendors.translate': TranslateRequest;
-  prove: ProveRequest;
-  'prove.plan': ProveRequest;
-  'prove.integer': ProveRequest & { name: string };
-  'prove.summary': ProveRequest & { integers: Record<string, ProveEntry> };
-  'prove.propose': ProveRequest;
-  'course.spec': Record<string, never>;
-  'course.check': { input: Input; id: string; answer: string };
-  'course.answers': { input: Input };
-  'course.trainees': { start: number | string; count: number | string };
-  audit: AuditRequest;
-}
+/** What each request kind sends and answers (pulab.schema.api_shapes, generated). */
+export type { ReplyBody, Request } from './generated/api-types';
 export type ApiKind = keyof Request;
-
-/** What each kind answers when it succeeds (besides `ok: true`). */
-export interface ReplyBody {
-  report: { report: Report };
-  qcalc: { format: QFormat; result: QResult };
-  'export.header': { text: string };
-  'export.csv_current': { text: string };
-  'export.csv_pll': { text: string };
-  sweep: { sweep: Plan & { points: Points; summary: Summary } };
-  'sweep.plan': { plan: Plan };
-  'sweep.chunk': { chunk: Chunk };
-  'sweep.merge': { summary: Summary };
-  batch: BatchChunk;
-  trace: Trace;
-  'trace.examples': { examples: TraceExample[]; targets: string[] };
-  'trace.prove': { proof: CodeProof };
-  'vendors.header': { text: string };
-  'vendors.translate': { translation: Translation };
-  prove: { proof: Proof };
-  'prove.plan': { plan: { names: string[]; raw_box: Record<string, [number, number]> } };
-  'prove.integer': { integer: ProveEntry };
-  'prove.summary': { proof: Proof };
-  'prove.propose': { proposal: Proposal };
-  'course.spec': { exercises: ExerciseSpec[] };
-  'course.check': { result: { id: string; state: 'correct' | 'wrong'; expected: Json; tolerance: Tolerance } };
-  'course.answers': { answers: Record<string, { chapter: string; expected: Json; unit: string; tolerance: Tolerance }> };
-  'course.trainees': { trainees: { n: number; input: Input }[] };
-  audit: { audit: Audit };
-}
-
-/** An exercise's stated tolerance (pulab.analyses.exercises): data and its text in both languages. */
-export interface Tolerance { kind: 'exact' | 'abs' | 'rel' | 'range'; value?: number; en: string; zh: string }
-export interface ExerciseSpec { id: string; chapter: string; kind: string; unit: string; choices: string[]; tolerance: Tolerance }
 
 /** An error as data (docs/contract.md, Errors): `code` and `params` from pulab's catalog, the text in
  * both languages made from them. Worker-side failures (no reply from Python) have no code. The

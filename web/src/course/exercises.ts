@@ -3,7 +3,8 @@
 // reader's motor), and the element gets data-exercise-state = correct | wrong. Progress is kept in
 // localStorage per motor and can be exported.
 import type { PulabClient } from '../rpc';
-import type { Json, Tolerance } from '../protocol';
+import type { Tolerance } from '../generated/api-types';
+import type { Json } from '../protocol';
 import type { Input } from '../state';
 import { getLang, t } from '../i18n';
 import { fmtNum } from '../format';

@@ -16,7 +16,7 @@ import { langSwitch } from '../page/header';
 import { LANG_KEY, load, store } from '../page/storage';
 import type { PulabClient } from '../rpc';
 import type { Json } from '../protocol';
-import type { Report } from '../report-types';
+import type { Report } from '../generated/report-types';
 import { registerOffline } from '../offline';
 import { applyProgress, clearProgress, exportProgress, loadProgress, motorKey, wireExercises } from './exercises';
 

@@ -2,7 +2,7 @@
 // current step and the flux build-up, SI float beside the seed's Q12/Q16 PI and TI's IQ PI.
 // Every series is pulab's; this file only chooses what is drawn.
 import { t } from '../i18n';
-import type { SimCurrent, SimProfileRun } from '../report-types';
+import type { SimCurrent, SimProfileRun } from '../generated/report-types';
 import { COLORS, plot, type Trace } from './figure';
 
 const TI = '#8250df';

@@ -1,6 +1,6 @@
 // Bode plots of the loop analysis (report "loop.bode"): magnitude above, phase below, log f.
 import { t } from '../i18n';
-import type { BodeCurve } from '../report-types';
+import type { BodeCurve } from '../generated/report-types';
 import { plot, type Trace } from './figure';
 
 export interface BodeLine {

@@ -1,7 +1,7 @@
 // Current-loop step response: SI, per-unit and the fixed point of the firmware the reader ships,
 // the user's routine when it is in the loop, with that fixed − SI error below.
 import { t, type Key } from '../i18n';
-import type { SimCurrent, SimProfileRun } from '../report-types';
+import type { SimCurrent, SimProfileRun } from '../generated/report-types';
 import { vendorName } from '../vendors';
 import { COLORS, plot, type Trace } from './figure';
 

@@ -2,7 +2,7 @@
 // voltage limit at three speeds and the envelope's currents — and torque and power over speed.
 // Every point is pulab's (pulab.analyses.envelope); the page only draws.
 import { t } from '../i18n';
-import type { FwReport } from '../report-types';
+import type { FwReport } from '../generated/report-types';
 import { COLORS, plotRaw } from './figure';
 
 export function renderFwPlane(el: HTMLElement, fw: FwReport): void {

@@ -3,7 +3,7 @@
 // budget over speed with the lowest sensorless speed. Every point is pulab's
 // (pulab.analyses.observer); the page only draws.
 import { t } from '../i18n';
-import type { ObserverReport } from '../report-types';
+import type { ObserverReport } from '../generated/report-types';
 import { COLORS, plotRaw } from './figure';
 
 export function renderObserverPoles(el: HTMLElement, o: ObserverReport): void {

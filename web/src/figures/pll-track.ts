@@ -1,6 +1,6 @@
 // PLL tracking: estimated speed and angle error of the correctly scaled loops vs the naive one.
 import { t, type Key } from '../i18n';
-import type { SimPll } from '../report-types';
+import type { SimPll } from '../generated/report-types';
 import { COLORS, plot, type Trace } from './figure';
 
 export function renderPllTrack(el: HTMLElement, sim: SimPll): void {

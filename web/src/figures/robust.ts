@@ -2,7 +2,7 @@
 // band on the bandwidth axis, the Monte Carlo histograms. Plotly's basic bundle has no heatmap
 // trace, so the map is a scatter of square markers coloured by the margin.
 import { t } from '../i18n';
-import type { Histogram, RobustReport } from '../report-types';
+import type { Histogram, RobustReport } from '../generated/report-types';
 import { COLORS, plot, plotRaw } from './figure';
 
 /** Phase margin (worse of d and q) at each grid point, coloured; the threshold marks the scale. */

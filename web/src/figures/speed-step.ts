@@ -1,6 +1,6 @@
 // Speed step and load step (report "loop.speed.response"): float and fixed point, i_q below.
 import { t } from '../i18n';
-import type { LoopReport } from '../report-types';
+import type { LoopReport } from '../generated/report-types';
 import { COLORS, plot, type Trace } from './figure';
 
 type Response = NonNullable<NonNullable<LoopReport['speed']>['response']>;

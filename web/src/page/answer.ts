@@ -3,7 +3,7 @@
 // repeated data-keys, equal values); a firmware that cannot hold the motor says why here too, with the same box as its panel.
 import { h, num, patch } from '../dom';
 import { t } from '../i18n';
-import { VENDOR_NAMES, type AcimProfile, type ProfileReport } from '../report-types';
+import { VENDOR_NAMES, type AcimProfile, type ProfileReport } from '../generated/report-types';
 import type { PanelContext } from '../panels/panel';
 import { limitsBox } from '../panels/limits';
 import { shippedProfileReport } from '../panels/vendors';

@@ -6,7 +6,7 @@
 //   stale  — numbers on screen are of an earlier input (typing, an error, Python not ready yet);
 //   none   — no numbers yet.
 import { PULAB_HASH, SEED_KEY, SEED_RESULT } from 'virtual:pulab-build';
-import type { Report } from '../report-types';
+import type { Report } from '../generated/report-types';
 import { load, store } from './storage';
 
 export type NumbersSource = 'none' | 'build' | 'cached' | 'live' | 'stale';

@@ -6,7 +6,7 @@ import { effectiveInput } from '../fields';
 import { errText, t } from '../i18n';
 import { Superseded, type PulabClient } from '../rpc';
 import type { ApiErr } from '../protocol';
-import type { Report } from '../report-types';
+import type { Report } from '../generated/report-types';
 import { decodeUnits, encodeHash, initialInput, reportKey, withSim, simInput, type Input } from '../state';
 import type { NumbersSource } from './numbers';
 

@@ -3,7 +3,7 @@
 // is pulab's (report `acim`, `current_pi`, `profiles`); this file formats only.
 import { h, num, patch, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
-import type { AcimProfile, SimCurrent, SimEvent, SimProfileRun } from '../report-types';
+import type { AcimProfile, SimCurrent, SimEvent, SimProfileRun } from '../generated/report-types';
 import { renderAcimFlux, renderAcimStep } from '../figures/acim-sim';
 import { keptFigure, simPlaceholder } from '../figures/figure';
 import { metricsTable, type MetricColumn, type MetricRow } from './metrics';

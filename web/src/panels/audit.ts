@@ -3,7 +3,7 @@
 import { h, keepFocus, num, sameItems, table } from '../dom';
 import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
-import type { Audit, AuditDynamics, AuditRequest } from '../api-types';
+import type { Audit, AuditDynamics, AuditRequest } from '../generated/api-types';
 import type { Reply } from '../protocol';
 import { encodeHash } from '../state';
 

@@ -4,7 +4,7 @@
 import { h, num, patch, table, tex } from '../dom';
 import { t } from '../i18n';
 import type { Panel } from './panel';
-import type { BoardRow, Report } from '../report-types';
+import type { BoardRow, Report } from '../generated/report-types';
 import { vendorName, type Vendor } from '../vendors';
 
 type Row = BoardRow | null | undefined;

@@ -8,7 +8,7 @@ import { errText, getLang, t, type Key } from '../i18n';
 import { prefill, traceRequest, type CodeState } from '../code-share';
 import { Superseded } from '../rpc';
 import type { ApiErr } from '../protocol';
-import type { CodeProof, CodeStatement } from '../api-types';
+import type { CodeProof, CodeStatement } from '../generated/api-types';
 import type { PanelContext } from './panel';
 import { bar } from './prove';
 

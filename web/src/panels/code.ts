@@ -9,7 +9,7 @@ import { LOOP_FIELDS, LOOP_PATH as LOOP_FIELD } from '../fields';
 import type { Panel, PanelContext } from './panel';
 import { renderProve, type ProveHost } from './code-prove';
 import { COLORS, plotRaw } from '../figures/figure';
-import type { TraceExample, TraceLine, TraceSequence, TraceTerm, TraceVar } from '../api-types';
+import type { TraceExample, TraceLine, TraceSequence, TraceTerm, TraceVar } from '../generated/api-types';
 import type { ApiErr, Ok } from '../protocol';
 
 type TraceOk = Ok<'trace'>;

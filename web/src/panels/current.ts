@@ -1,6 +1,6 @@
 import { h, num, patch, tex } from '../dom';
 import { t, type Key } from '../i18n';
-import type { PiAxis, Report, SimCurrent, SimEvent } from '../report-types';
+import type { PiAxis, Report, SimCurrent, SimEvent } from '../generated/report-types';
 import { vendorName } from '../vendors';
 import { fixedRun, renderCurrentStep } from '../figures/current-step';
 import { keptFigure, simPlaceholder } from '../figures/figure';
@@ -48,7 +48,7 @@ function noTrace(sim: SimCurrent, fw: string, report: Report | null | undefined)
   if (fixedRun(sim, fw)) return null;
   const run = sim.by_profile?.[fw];
   const fields = fw === 'inovance' ? (report?.firmware?.inovance?.problems ?? []).map((p) => p.field)
-    : run && !run.ran ? run.problems.map((p) => p.field) : [];
+    : run && !run.ran && 'problems' in run ? run.problems.map((p) => p.field) : [];
   return h('p', { class: 'note bad-text sim-no-trace', role: 'status', 'data-firmware': fw },
     t('sf_cannot', { name: vendorName(fw), fields: [...new Set(fields)].join(', ') || '—' }));
 }

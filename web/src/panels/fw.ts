@@ -8,7 +8,7 @@ import { effectiveInput } from '../fields';
 import { reportInput, type Input } from '../state';
 import { keptFigure } from '../figures/figure';
 import { renderFwPlane, renderFwSpeed } from '../figures/fw';
-import type { FwReport, FwTable } from '../report-types';
+import type { FwReport, FwTable } from '../generated/report-types';
 import type { Panel } from './panel';
 import { OwnRequest } from './own-request';
 

@@ -2,7 +2,7 @@
 // "Firmware limits"): shown at that firmware's own panel, never as an input error.
 import { h } from '../dom';
 import { getLang, t } from '../i18n';
-import type { FirmwareStatus } from '../report-types';
+import type { FirmwareStatus } from '../generated/report-types';
 
 /** The box listing a firmware's problems, or null when it holds the motor. */
 export function limitsBox(name: string, status: FirmwareStatus | undefined): HTMLElement | null {

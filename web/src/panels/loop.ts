@@ -4,7 +4,7 @@
 // Everything shown comes from the report's "loop" section (sent with the simulation request).
 import { h, num, patch, table } from '../dom';
 import { t, type Key } from '../i18n';
-import type { LoopReport, Margins, RobustAxis, RobustCase } from '../report-types';
+import type { LoopReport, Margins, RobustAxis, RobustCase } from '../generated/report-types';
 import { renderBode } from '../figures/bode';
 import { COLORS, keptFigure, simPlaceholder } from '../figures/figure';
 import { renderRobustBand, renderRobustHistogram, renderRobustMap, renderRobustStep } from '../figures/robust';

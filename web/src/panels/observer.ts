@@ -10,7 +10,7 @@ import { reportInput, type Input } from '../state';
 import type { Json } from '../protocol';
 import { keptFigure } from '../figures/figure';
 import { renderObserverBudget, renderObserverPoles } from '../figures/observer';
-import type { ObserverLoop, ProfileReport, Report } from '../report-types';
+import type { ObserverLoop, ProfileReport, Report } from '../generated/report-types';
 import type { Panel } from './panel';
 import { OwnRequest } from './own-request';
 

@@ -4,7 +4,7 @@
 // numbers cleared beside it.
 import { errText } from '../i18n';
 import type { Input } from '../state';
-import type { Report } from '../report-types';
+import type { Report } from '../generated/report-types';
 import type { PanelContext, PanelId } from './panel';
 
 export class OwnRequest<T> {

@@ -1,5 +1,5 @@
 // The one small interface every panel and figure shares.
-import type { Report } from '../report-types';
+import type { Report } from '../generated/report-types';
 import type { Input } from '../state';
 import type { PulabClient } from '../rpc';
 import type { ApiErr } from '../protocol';

@@ -8,7 +8,7 @@ import { parseNumber } from '../format';
 import { errText, getLang, t, type Key } from '../i18n';
 import { encodeHash, getPath, type Input } from '../state';
 import type { ApiErr } from '../protocol';
-import type { Proof, Proposal, ProveEntry as Entry, ProveRequest, ProveVerdict as Verdict } from '../api-types';
+import type { Proof, Proposal, ProveEntry as Entry, ProveRequest, ProveVerdict as Verdict } from '../generated/api-types';
 import type { Panel, PanelContext } from './panel';
 import { pathOption, sweepPaths } from './sweep';
 

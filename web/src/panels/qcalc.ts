@@ -3,7 +3,7 @@ import { flagChips, h, keepFocus, num, sameItems, table } from '../dom';
 import { parseNumber } from '../format';
 import { errText, getLang, t } from '../i18n';
 import type { Panel, PanelContext } from './panel';
-import type { QcalcRequest } from '../api-types';
+import type { QcalcRequest } from '../generated/api-types';
 import type { Reply } from '../protocol';
 
 export interface QcalcState {

@@ -2,7 +2,7 @@
 // marks it leaves at the value each finding concerns. Every number comes from the report.
 import { h, num, patch, table } from '../dom';
 import { getLang, t, type Key } from '../i18n';
-import type { Finding } from '../report-types';
+import type { Finding } from '../generated/report-types';
 import type { Panel, PanelContext } from './panel';
 
 const HEADROOM = ['limit_v', 'udc_limit_v', 'bemf_fb_v', 'need_rated_fn_v', 'need_rated_fb_v', 'field_weakening_from_hz'] as const;

@@ -1,7 +1,7 @@
 import { flagChips, h, num, patch, table } from '../dom';
 import { ALL_FIELDS } from '../fields';
 import { t } from '../i18n';
-import { VENDOR_NAMES, type TraceStep, type VendorResult } from '../report-types';
+import { VENDOR_NAMES, type TraceStep, type VendorResult } from '../generated/report-types';
 import { limitsBox } from './limits';
 import type { Panel } from './panel';
 
