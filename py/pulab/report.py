@@ -141,7 +141,8 @@ def report_steps(inp: dict):
         ``constants``, ``mechanical``, ``review`` (graded findings, :mod:`pulab.analyses.review`),
         ``warnings``/``warnings_zh`` (the review's errors and warnings as text, then the
         profiles' and the loop analysis' warnings), ``datasheet`` (when given: values and
-        conversions) and, when asked, ``sim`` and ``loop``.
+        conversions) and, when asked, the optional sections (``board``, ``observer``,
+        ``loop``, ``fw``, ``sim``: :data:`pulab.analyses.registry.ANALYSES`).
 
     Raises
     ------

@@ -63,8 +63,9 @@ class Analysis:
         :func:`pulab.analyses.review.review` when ``reviewed``.
     asked : str
         The input path that asks for it (dotted): it runs when the value there is not None.
-        Read in the report's input echo once an earlier entry has put its section there
-        (``analysis.fw`` as the loop analysis checked it), else in the normalized input.
+        A ``"report"`` or ``"steps"`` entry reads it in the report's input echo when that
+        holds its top-level section (``analysis.fw`` once the loop's entry echoed ``analysis``
+        checked), else in the normalized input.
     stage : str
         ``"model"`` (``prepare`` runs before the vendor profiles, the section is placed before
         theirs), ``"report"`` (after them) or ``"steps"`` (``run`` is a generator of slices;
@@ -73,8 +74,9 @@ class Analysis:
         ``check(given) -> checked``, run before anything is computed; ``prepare`` or ``run``
         get the checked value.
     prepare : callable, optional
-        ``prepare(core, given) -> value`` (``"model"`` stage): ``core`` holds ``input`` (the
-        normalized input), ``base`` and the values prepared before it, under their keys.
+        ``prepare(core, given) -> value``, required of a ``"model"`` entry (and only there):
+        ``core`` holds ``input`` (the normalized input), ``base`` and the values prepared
+        before it, under their keys.
     run : callable, optional
         ``run(report, value) -> section`` over the report so far; ``value`` is what
         ``prepare`` gave, else the (checked) input. Without it the section is ``prepare``'s.
