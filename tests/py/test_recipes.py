@@ -152,3 +152,14 @@ def test_an_analysis_section_without_its_schema_entry_is_refused():
     with pytest.raises(InputError) as e:
         report({**SEED_INPUT, "ripple": {}})
     assert (e.value.field, e.value.code) == ("ripple", "unknown_section")
+
+
+@pytest.mark.parametrize("entry", [
+    {"stage": "model"},                                   # nothing prepares it
+    {"stage": "report"},                                  # nothing runs it
+    {"stage": "report", "run": len, "prepare": len},      # prepared after the profiles
+    {"stage": "later", "run": len},
+])
+def test_an_analysis_without_what_its_stage_calls_is_refused(entry):
+    with pytest.raises(ValueError, match="analysis half"):
+        Analysis("half", "half", **entry)

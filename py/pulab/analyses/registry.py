@@ -32,7 +32,7 @@ from __future__ import annotations
 
 import importlib
 from dataclasses import dataclass
-from typing import Callable, Optional
+from typing import Callable, Literal, Optional
 
 from ..model.bases import flux_linkage
 from ..model.board import board
@@ -94,13 +94,23 @@ class Analysis:
 
     key: str
     asked: str
-    stage: str = "report"
+    stage: Literal["model", "report", "steps"] = "report"
     check: Optional[Callable] = None
     prepare: Optional[Callable] = None
     run: Optional[Callable] = None
     echo: Optional[Callable] = None
     warnings: Optional[Callable] = None
     reviewed: bool = False
+
+    def __post_init__(self):
+        # what report_steps calls at each stage must be there (an entry is checked once, here)
+        if self.stage not in ("model", "report", "steps"):
+            raise ValueError(f"analysis {self.key}: unknown stage {self.stage!r}")
+        if (self.prepare is not None) != (self.stage == "model"):
+            raise ValueError(f"analysis {self.key}: prepare belongs to (and only to) the "
+                             "model stage")
+        if self.run is None and self.stage != "model":
+            raise ValueError(f"analysis {self.key}: a {self.stage} stage entry runs")
 
 
 def at(tree: dict, path: str):
