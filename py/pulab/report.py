@@ -153,9 +153,9 @@ def report_steps(inp: dict):
     if n["motor"].get("kind") == "acim":
         return _acim_report(n)
     m, d, c = n["motor"], n["drive"], n["conventions"]
-    analyses = _analyses.ANALYSES  # read per call: a test may add an entry
-    checked = {a.key: a.check(given) for a in analyses
-               if a.check is not None and (given := at(n, a.asked)) is not None}
+    plan = _analyses.plan(_analyses.ANALYSES)  # read per call: a test may add an entry
+    checked = {a.key: a.check(given) for a in plan.checked
+               if (given := at(n, a.asked)) is not None}
     b = input_bases(n)
     psi = flux_linkage(c["base"], m["bemf_v"], m["rated_freq_hz"])
     pu = per_unit(b, m["rs_ohm"], m["ld_h"], m["lq_h"], psi, d["ts_s"])
@@ -169,8 +169,8 @@ def report_steps(inp: dict):
     pi["step_example"] = _pi_example(pi["d"], vendor) if _LIMITS <= vendor.keys() else None
     # what the profiles read (the board's scales, the observer's settings), before them
     core = {"input": n, "base": b}
-    for a in analyses:
-        if a.stage == "model" and (given := at(n, a.asked)) is not None:
+    for a in plan.model:
+        if (given := at(n, a.asked)) is not None:
             core[a.key] = a.prepare(core, checked.get(a.key, given))
             if a.echo is not None:
                 put(n, a.asked, a.echo(given, core[a.key]))
@@ -200,14 +200,12 @@ def report_steps(inp: dict):
     }
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
-    for a in analyses:
-        if a.stage == "model" and a.key in core:
+    for a in plan.model:
+        if a.key in core:
             out[a.key] = core[a.key] if a.run is None else a.run(out, core[a.key])
     if prof is not None:
         out["profiles"] = prof
-    for a in analyses:
-        if a.stage == "model":
-            continue
+    for a in plan.later:
         # an earlier entry's echo (the checked ``analysis``) is what a later one reads
         head = a.asked.split(".", 1)[0]
         given = at(out["input"] if head in out["input"] else n, a.asked)
@@ -221,14 +219,14 @@ def report_steps(inp: dict):
         if a.echo is not None:
             put(out["input"], a.asked, a.echo(given, out[a.key]))
     out["review"] = review(n, raw, vendor, pi, firmware=firmware,
-                           **{a.key: out.get(a.key) for a in analyses if a.reviewed})
+                           **{key: out.get(key) for key in plan.reviewed})
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]
     out["warnings_zh"] = [x["message_zh"] for x in serious]
     extra = _profile_warnings(prof) if prof is not None else []
-    for a in analyses:
-        if a.warnings is not None and a.key in out:
+    for a in plan.warned:
+        if a.key in out:
             extra += a.warnings(out[a.key])
     out["warnings"] += [render(code, params, "en") for code, params in extra]
     out["warnings_zh"] += [render(code, params, "zh") for code, params in extra]

@@ -32,13 +32,13 @@ from __future__ import annotations
 
 import importlib
 from dataclasses import dataclass
-from typing import Callable, Literal, Optional
+from typing import Callable, Literal, NamedTuple, Optional
 
 from ..model.bases import flux_linkage
 from ..model.board import board
 from ..model.observer import settings
 
-__all__ = ["Analysis", "Lazy", "ANALYSES", "at", "put"]
+__all__ = ["Analysis", "Lazy", "ANALYSES", "Plan", "plan", "at", "put"]
 
 
 @dataclass(frozen=True)
@@ -113,8 +113,42 @@ class Analysis:
             raise ValueError(f"analysis {self.key}: a {self.stage} stage entry runs")
 
 
+class Plan(NamedTuple):
+    """A tuple of analyses split by what :func:`pulab.report.report_steps` does with each."""
+
+    checked: tuple   # entries with a ``check``
+    model: tuple     # ``"model"`` entries
+    later: tuple     # ``"report"`` and ``"steps"`` entries, in order
+    reviewed: tuple  # keys of the reviewed sections
+    warned: tuple    # entries with ``warnings``
+
+
+_LAST: list = [None, None]  # the last tuple planned and its plan: every report reads one
+
+
+def plan(analyses: tuple) -> Plan:
+    """The :class:`Plan` of ``analyses`` (kept for the last tuple asked: a report reads it
+    once, so it costs a few attribute reads per entry once, not per report).
+
+    Examples
+    --------
+    >>> p = plan(ANALYSES)
+    >>> [a.key for a in p.model], [a.key for a in p.later], p.reviewed
+    (['board', 'observer'], ['loop', 'fw', 'sim'], ('board', 'observer', 'loop', 'fw', 'sim'))
+    """
+    if _LAST[0] is not analyses:
+        _LAST[:] = [analyses, Plan(tuple(a for a in analyses if a.check is not None),
+                                   tuple(a for a in analyses if a.stage == "model"),
+                                   tuple(a for a in analyses if a.stage != "model"),
+                                   tuple(a.key for a in analyses if a.reviewed),
+                                   tuple(a for a in analyses if a.warnings is not None))]
+    return _LAST[1]
+
+
 def at(tree: dict, path: str):
     """The value at dotted ``path`` of nested dicts, None where any step is missing."""
+    if "." not in path:  # most entries: read on every report, so kept short
+        return tree.get(path)
     for part in path.split("."):
         if not isinstance(tree, dict):
             return None
