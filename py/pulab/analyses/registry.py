@@ -13,8 +13,9 @@ report never loads the loop or simulation code) and what it gives the review and
 4. the vendor profiles (:mod:`pulab.profiles`, not listed here: the shipped firmware's profile
    runs even when no profile is asked);
 5. the ``"model"`` entries' sections (``run`` over the report so far, else what ``prepare``
-   gave), then the profiles' section, then the ``"report"`` entries, then the ``"steps"``
-   entries (``run`` is a generator of slices, :mod:`pulab.analyses.slices`);
+   gave), then the profiles' section, then the ``"report"`` and ``"steps"`` entries in the
+   tuple's order (a ``"steps"`` entry's ``run`` is a generator of slices,
+   :mod:`pulab.analyses.slices`: the simulation, listed last);
 6. the review, given each ``reviewed`` section under its key; the warnings, each entry's
    ``warnings`` after the profiles' own.
 
@@ -192,13 +193,13 @@ def _analysis_echo(given: dict, loop: dict) -> dict:
     """The echo of ``analysis``: every default filled (:func:`pulab.analyses.loop.validate`)."""
     return _loop_input(given)
 
+
 #: The optional sections, in the order they run (see the module docstring).
 ANALYSES: tuple = (
     Analysis("board", "board", "model", prepare=_board, reviewed=True),
     Analysis("observer", "observer", "model", prepare=_observer,
              run=Lazy("pulab.analyses.observer", "analyze"), echo=_given_keys, reviewed=True),
-    Analysis("loop", "analysis", run=Lazy(_LOOP, "analyze"),
-             echo=_analysis_echo,
+    Analysis("loop", "analysis", run=Lazy(_LOOP, "analyze"), echo=_analysis_echo,
              warnings=Lazy(_LOOP, "warnings"), reviewed=True),
     Analysis("fw", "analysis.fw", run=Lazy("pulab.analyses.envelope", "analyze"), reviewed=True),
     Analysis("sim", "sim", "steps", check=Lazy("pulab.analyses.sim", "validate"),
