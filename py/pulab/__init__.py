@@ -46,7 +46,8 @@ Where a new module goes: a new number format or integer rule → ``fixedpoint``;
 new input check, parser limit or error text → ``schema``; a new per-unit quantity
 → ``model``; a vendor → ``profiles/NAME/`` (one line in ``profiles/registry.py``;
 docs/design.md, "Adding a vendor"); a
-new computation over a model (margins, responses, families) → ``analyses``; a new
+new computation over a model (margins, responses, families) → ``analyses`` (a report
+section: one entry in ``analyses/registry.py``; docs/design.md, "Adding an analysis"); a new
 output format → ``export``; a new subcommand → ``cli/`` (registered in ``__main__``).
 Tests mirror modules: ``tests/py/test_NAME.py``.
 

@@ -11,8 +11,6 @@ Examples
 
 from __future__ import annotations
 
-from .model.board import board
-from .model.observer import settings as observer_settings
 from .model.bases import bases, flux_linkage, per_unit
 from .profiles.inovance.magic import magic_constants
 from .model.datasheet import mechanical
@@ -24,6 +22,8 @@ from .schema.validate import value
 from .model.acim import model as acim_model
 from .analyses import acim as _acim
 from .schema.catalog import render
+from .analyses import registry as _analyses
+from .analyses.registry import at, put
 from .analyses.review import review
 from .analyses.slices import finish
 from . import profiles as _profiles
@@ -141,7 +141,8 @@ def report_steps(inp: dict):
         ``constants``, ``mechanical``, ``review`` (graded findings, :mod:`pulab.analyses.review`),
         ``warnings``/``warnings_zh`` (the review's errors and warnings as text, then the
         profiles' and the loop analysis' warnings), ``datasheet`` (when given: values and
-        conversions) and, when asked, ``sim`` and ``loop``.
+        conversions) and, when asked, the optional sections (``board``, ``observer``,
+        ``loop``, ``fw``, ``sim``: :data:`pulab.analyses.registry.ANALYSES`).
 
     Raises
     ------
@@ -152,10 +153,9 @@ def report_steps(inp: dict):
     if n["motor"].get("kind") == "acim":
         return (yield from _acim_report(n))
     m, d, c = n["motor"], n["drive"], n["conventions"]
-    sim_in = None
-    if "sim" in n:
-        from .analyses import sim as _sim  # imported only when asked: plain reports stay fast
-        sim_in = _sim.validate(n["sim"])
+    plan = _analyses.plan(_analyses.ANALYSES)  # read per call: a test may add an entry
+    checked = {a.key: a.check(given) for a in plan.checked
+               if (given := at(n, a.asked)) is not None}
     b = input_bases(n)
     psi = flux_linkage(c["base"], m["bemf_v"], m["rated_freq_hz"])
     pu = per_unit(b, m["rs_ohm"], m["ld_h"], m["lq_h"], psi, d["ts_s"])
@@ -167,21 +167,20 @@ def report_steps(inp: dict):
                                                           c["inductance_unit"]))}
     pi = current_pi_section(n, b)
     pi["step_example"] = _pi_example(pi["d"], vendor) if _LIMITS <= vendor.keys() else None
-    # the board before the profiles: each vendor takes its hardware scales from it
-    board_out = None if "board" not in n else board(
-        n["board"], b["I_b"], flux_linkage("peak", m["bemf_v"], m["rated_freq_hz"]),
-        m["pole_pairs"], d["udc_v"])
-    obs = None
-    if "observer" in n:  # resolved before the profiles: their observer integers read it
-        obs = observer_settings(n["observer"], m, d, board_out,
-                                (n["analysis"] or {}).get("robust"))
-        n["observer"] = {k: obs[k] for k in n["observer"]}
+    # what the profiles read (the board's scales, the observer's settings), before them
+    core = {"input": n, "base": b}
+    for a in plan.model:
+        if (given := at(n, a.asked)) is not None:
+            core[a.key] = a.prepare(core, checked.get(a.key, given))
+            if a.echo is not None:
+                put(n, a.asked, a.echo(given, core[a.key]))
     prof = None
     shipped = c["firmware"]
     # The five profiles only when asked (they cost more than the rest); the one shipped always,
     # so that one report holds its integers and the review grades what it cannot hold.
     if "profiles" in n or shipped != "inovance":
-        ctx = _profiles.context(n, raw, vendor, pi, firmware["inovance"]["problems"], board_out)
+        ctx = _profiles.context(n, raw, vendor, pi, firmware["inovance"]["problems"],
+                                core.get("board"))
         opts = _profiles.options(n.get("profiles"), ctx)
         if "profiles" in n:
             n["profiles"] = opts
@@ -201,32 +200,34 @@ def report_steps(inp: dict):
     }
     if "datasheet" in n:
         out["datasheet"] = n["datasheet"]
-    if board_out is not None:
-        out["board"] = board_out
-    if obs is not None:
-        from .analyses import observer as _observer
-        out["observer"] = _observer.analyze(out, obs)
+    for a in plan.model:
+        if a.key in core:
+            out[a.key] = core[a.key] if a.run is None else a.run(out, core[a.key])
     if prof is not None:
         out["profiles"] = prof
-    if n["analysis"] is not None:
-        # only when asked (like "sim"): plain reports stay within their time budget
-        from .analyses import loop as _loop
-        out["loop"] = _loop.analyze(out, n["analysis"])
-        out["input"]["analysis"] = _loop.validate(n["analysis"])
-        if out["input"]["analysis"]["fw"] is not None:
-            from .analyses import fwtables as _fwtables
-            out["fw"] = _fwtables.analyze(out, out["input"]["analysis"]["fw"])
-    if sim_in is not None:
-        out["sim"] = yield from _sim.simulate_steps(out, sim_in)
-    out["review"] = review(n, raw, vendor, pi, out.get("sim"), out.get("loop"), firmware,
-                           out.get("board"), out.get("fw"), out.get("observer"))
+    for a in plan.later:
+        # an earlier entry's echo (the checked ``analysis``) is what a later one reads
+        head = a.asked.split(".", 1)[0]
+        given = at(out["input"] if head in out["input"] else n, a.asked)
+        if given is None:
+            continue
+        value = checked.get(a.key, given)
+        if a.stage == "steps":
+            out[a.key] = yield from a.run(out, value)
+        else:
+            out[a.key] = a.run(out, value)
+        if a.echo is not None:
+            put(out["input"], a.asked, a.echo(given, out[a.key]))
+    out["review"] = review(n, raw, vendor, pi, firmware=firmware,
+                           **{key: out.get(key) for key in plan.reviewed})
     # The pre-review contract: warnings (and errors) of the review as plain strings.
     serious = [x for x in out["review"]["findings"] if x["severity"] != "note"]
     out["warnings"] = [x["message"] for x in serious]
     out["warnings_zh"] = [x["message_zh"] for x in serious]
     extra = _profile_warnings(prof) if prof is not None else []
-    if "loop" in out:
-        extra += _loop.warnings(out["loop"])
+    for a in plan.warned:
+        if a.key in out:
+            extra += a.warnings(out[a.key])
     out["warnings"] += [render(code, params, "en") for code, params in extra]
     out["warnings_zh"] += [render(code, params, "zh") for code, params in extra]
     return out

@@ -78,7 +78,15 @@ def _edges(mods: dict) -> dict:
                 continue
             out |= {t for t in map(_local, targets) if t in mods and t != name}
         edges[name] = out
+    edges["analyses.registry"] |= _lazy_targets()
     return edges
+
+
+def _lazy_targets() -> set:
+    """The modules the analyses' registry imports on first use (its ``Lazy`` functions): edges
+    like any import."""
+    from pulab.analyses.registry import ANALYSES, Lazy
+    return {_local(f.module) for a in ANALYSES for f in vars(a).values() if isinstance(f, Lazy)}
 
 
 def _local(dotted: str):
@@ -150,3 +158,4 @@ def test_the_graph_sees_deferred_and_relative_imports():
     assert "model.bases" in edges["profiles.context"]  # from ..model.bases import …
     assert "profiles.registry" in edges["profiles"]  # from . import limits, registry
     assert "report" in edges["profiles.translate"]
+    assert {"analyses.loop", "analyses.sim"} <= edges["analyses.registry"]  # Lazy("pulab.…")

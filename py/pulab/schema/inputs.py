@@ -32,6 +32,10 @@ DEFAULT_CURRENT_BANDWIDTH_HZ = FIELD["current_loop.bandwidth_hz"].default
 DEFAULT_PLL_BANDWIDTH_HZ = FIELD["pll.bandwidth_hz"].default
 DEFAULT_DAMPING = FIELD["pll.damping"].default
 
+#: The top-level sections :func:`normalize` reads itself (any other one is read by its fields).
+_READ_ABOVE = frozenset(("motor", "drive", "conventions", "current_loop", "pll", "raw",
+                         "datasheet", "board", "sim", "profiles", "observer", "analysis"))
+
 #: Keys of each section that :func:`normalize` returns with its defaults (from the schema).
 SECTIONS = {name: tuple(f.key for f in section_fields(name))
             for name in ("motor", "drive", "conventions", "current_loop", "pll", "raw")}
@@ -122,4 +126,8 @@ def normalize(inp: dict) -> dict:
     if "profiles" in inp:  # checked in pulab.profiles.options: its defaults need the motor
         out["profiles"] = inp["profiles"]
     out["analysis"] = inp.get("analysis")
+    # the section of an analysis added later (docs/design.md, "Adding an analysis"): its fields
+    for key in inp:
+        if key not in _READ_ABOVE and inp[key] is not None:
+            out[key] = read(key, inp[key])
     return out
