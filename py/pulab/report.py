@@ -12,6 +12,7 @@ Examples
 from __future__ import annotations
 
 from .model.bases import bases, flux_linkage, per_unit
+from .model.board import board
 from .profiles.inovance.magic import magic_constants
 from .model.datasheet import mechanical
 from .model.gains import current_pi, current_pi_si, gains_from_integers, pll_gains
