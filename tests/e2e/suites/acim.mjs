@@ -47,6 +47,12 @@ export default async function acim({ check, assert, newPage, subSrv, ready, wait
     await page.click('nav.tabs a[data-view="design"]');
     await page.$eval('#panel-acim [data-keep="acim-flux"]', (e) => e.scrollIntoView());
     await simReady(page);
+    // every simulation the page asked for has answered (or was superseded): the numbers shown are
+    // the newest input's, not an earlier request's still on screen
+    await page.waitForFunction(() => {
+      const d = document.documentElement.dataset;
+      return Number(d.simPosted ?? 0) > 0 && Number(d.simPosted) === Number(d.simDone ?? 0) + Number(d.simSuperseded ?? 0);
+    }, null, { timeout: 120_000 });
     const want = cpython(withSim);
     const n = await compareShown(page, want, '#panel-acim');
     assert(n >= 100, `only ${n} induction-motor numbers compared with the simulation`);
