@@ -78,8 +78,10 @@ export default async function screensPass(ctx) {
     const after = cpython({ ...inp, motor: { ...inp.motor, rs_ohm: 0.84 } });
     await waitValue(p, key, after.profiles.microchip.constants.KII.value);
     await p.waitForFunction(() => document.documentElement.dataset.numbers === 'live');
-    await p.waitForTimeout(300); // before the simulation's pause (400 ms): nothing else may follow
-    const calls = await p.evaluate(() => window.pyCalls.filter((c) => c.startsWith('report/')));
+    await p.waitForTimeout(300);
+    // The simulation's own call (channel "sim", after its pause) may follow on a loaded machine:
+    // what is counted is the calls that serve the numbers and the strip.
+    const calls = await p.evaluate(() => window.pyCalls.filter((c) => c.startsWith('report/') && c !== 'report/sim'));
     assert(JSON.stringify(calls) === JSON.stringify(['report/report']), `report calls per keystroke: ${calls}`);
     assert(after.profiles.microchip.constants.KII.value !== want.profiles.microchip.constants.KII.value, 'the edit does not move KII: not a test');
     await p.context().close();
