@@ -20,7 +20,6 @@ import sys
 
 from .schema.errors import InputError
 from .cli.family import add_family_commands, read_json, write_result
-from .schema.validate import shown
 from .report import format_text, report, require_pmsm
 from .cli.trace import add_trace_parser, trace_main
 from .cli.robust import add_robust_parser

@@ -264,3 +264,20 @@ def test_fw_table_golden_files_are_fresh():
     r = subprocess.run([sys.executable, "fw_tables_oracle.py", "--check"], capture_output=True,
                        text=True, cwd=pathlib.Path(__file__).resolve().parents[1] / "oracle")
     assert r.returncode == 0, r.stdout + r.stderr
+
+
+def test_every_table_carries_its_c_text():
+    """Each stored table, the envelope's too, comes with the C that declares it (the page prints
+    it as given): an array holds exactly the table's integers, ST's look-up its four macros."""
+    gold = json.loads((pathlib.Path(__file__).resolve().parents[1] / "golden" / "fw_tables"
+                       / "03_motulator_2k2_ipm.json").read_text(encoding="utf-8"))
+    fw = pulab.report(gold["input"])["fw"]["tables"]
+    assert all(isinstance(t["c"], str) and t["c"] for t in fw.values())
+    for name in ("mtpa_id_of_iq", "fw_id_of_speed"):
+        t = fw[name]
+        assert t["c"] == (f"static const int16_t {name}[{len(t['values'])}] = "
+                          f"{{ {', '.join(str(v) for v in t['values'])} }};")
+    st = fw["st_mtpa"]
+    assert st["c"].splitlines() == [f"#define IQMAX   {st['iqmax']}", f"#define SEGDIV  {st['segdiv']}",
+                                    "#define ANGC    {" + ",".join(map(str, st["angc"])) + "}",
+                                    "#define OFST    {" + ",".join(map(str, st["ofst"])) + "}"]

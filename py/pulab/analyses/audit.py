@@ -38,7 +38,6 @@ import re
 from ..ctrace.errors import TraceError
 from ..ctrace.lexer import tokenize
 from ..ctrace.preprocess import STANDARD_HEADERS, preprocess
-from ..ctrace.types import TARGETS
 from ..profiles import registry
 from ..profiles.vendor import provided
 from ..schema.catalog import render

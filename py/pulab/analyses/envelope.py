@@ -147,7 +147,11 @@ def st_mtpa(m: Limits, digits_per_a: float, iq_top: float) -> dict:
             "segdiv": segdiv, "iqmax": iqmax, "angc": angc, "ofst": ofst,
             "format": "int16 digits (ANGC·iq/32768 + OFST)", "scale": 1.0 / digits_per_a,
             "unit": "A", "error_bound": worst[False], "error_bound_shift": worst[True],
-            "interpolation": "ST segments", "flags": sorted(set(flags))}
+            "interpolation": "ST segments", "flags": sorted(set(flags)),
+            # three macros of ST's drive_parameters.h
+            "c": "\n".join([f"#define IQMAX   {iqmax}", f"#define SEGDIV  {segdiv}",
+                            f"#define ANGC    {{{','.join(map(str, angc))}}}",
+                            f"#define OFST    {{{','.join(map(str, ofst))}}}"])}
 
 
 def base_speed(m: Limits) -> float:
@@ -262,15 +266,18 @@ def _interp(xs: list, ys: list, x: float) -> float:
     return ys[-1]
 
 
-def _table(quantity: str, xs: list, exact, scale: float, unit: str, dense: list) -> dict:
-    """A table of ``len(xs)`` breakpoints stored as Q15 of the current limit, and its error bound
-    (linear interpolation of the stored integers against the exact curve at ``dense``)."""
+def _table(name: str, quantity: str, xs: list, exact, scale: float, unit: str,
+           dense: list) -> dict:
+    """A table of ``len(xs)`` breakpoints stored as Q15 of the current limit, its C array
+    ``name``, and its error bound (linear interpolation of the stored integers against the
+    exact curve at ``dense``)."""
     ys = [exact(x) for x in xs]
     values = [max(-32768, min(32767, round(y / scale))) for y in ys]
     stored = [v * scale for v in values]
     err = max(abs(_interp(xs, stored, x) - exact(x)) for x in dense) if dense else 0.0
     return {"quantity": quantity, "x": xs, "y": ys, "values": values, "format": "Q15",
-            "scale": scale, "unit": unit, "error_bound": err, "interpolation": "linear"}
+            "scale": scale, "unit": unit, "error_bound": err, "interpolation": "linear",
+            "c": f"static const int16_t {name}[{len(values)}] = {{ {', '.join(map(str, values))} }};"}
 
 
 def _vendor_options(report: dict, name: str) -> dict:
@@ -346,7 +353,7 @@ def analyze(report: dict, cfg: dict) -> dict:
                 hi = mid
         return mtpa(m, 0.5 * (lo + hi))[0]
 
-    tables = {"mtpa_id_of_iq": _table("id_a(iq_a)", iq_x, id_of_iq, scale, "A",
+    tables = {"mtpa_id_of_iq": _table("mtpa_id_of_iq", "id_a(iq_a)", iq_x, id_of_iq, scale, "A",
                                       [iq_top * k / 400 for k in range(401)])}
     if m.lq != m.ld and digits_per_a is not None:
         tables["st_mtpa"] = st_mtpa(m, digits_per_a, iq_top)
@@ -354,7 +361,7 @@ def analyze(report: dict, cfg: dict) -> dict:
     if fw_end > wb * to_rpm:
         sx = [wb * to_rpm + (fw_end - wb * to_rpm) * k / (npts - 1) for k in range(npts)]
         tables["fw_id_of_speed"] = _table(
-            "id_a(speed_rpm)", sx, lambda s: best_torque(m, s / to_rpm)[1], scale, "A",
+            "fw_id_of_speed", "id_a(speed_rpm)", sx, lambda s: best_torque(m, s / to_rpm)[1], scale, "A",
             [wb * to_rpm + (fw_end - wb * to_rpm) * k / 100 for k in range(101)])
     # what the page draws in the i_d–i_q plane: the current limit and the voltage limit at
     # three speeds (base, and two above it), each as the currents whose |v| is exactly V

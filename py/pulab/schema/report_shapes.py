@@ -44,9 +44,9 @@ REPORT = [
         ("unit", STR), ("error_bound", NUM), ("interpolation", STR),
         ("segdiv?", NUM, "ST's 8-segment look-up: its macros, the other build's (>> 15) bound, what did not fit int16."),
         ("iqmax?", NUM), ("angc?", NUMS), ("ofst?", NUMS), ("error_bound_shift?", NUM), ("flags?", STRS),
-        ("c?", STR, "pulab.analyses.fwtables: the C text, the input digits, TI's float32 figures, a voltage "
-                    "loop's constants and steady state."),
-        ("x_scale?", NUM), ("x_unit?", STR), ("x_first_digit?", NUM), ("x_step_digits?", NUM),
+        ("c", STR, "The table (or constants) as the firmware's C declares them."),
+        ("x_scale?", NUM, "pulab.analyses.fwtables: the input digits, TI's float32 figures, a "
+                          "voltage loop's constants and steady state."), ("x_unit?", STR), ("x_first_digit?", NUM), ("x_step_digits?", NUM),
         ("x_last_digit?", NUM), ("fwonspeed?", NUM), ("speed_index_const?", NUM), ("kconst?", NUM),
         ("error_sampled?", NUM), ("cla_error_at_limit_a?", NUM_OR_NULL),
         ("constants?", Rec(STR, Obj(("value", NUM), ("ideal", NUM_OR_NULL), ("error", NUM_OR_NULL),

@@ -57,8 +57,9 @@ export interface FwTable {
   ofst?: number[];
   error_bound_shift?: number;
   flags?: string[];
-  /** pulab.analyses.fwtables: the C text, the input digits, TI's float32 figures, a voltage loop's constants and steady state. */
-  c?: string;
+  /** The table (or constants) as the firmware's C declares them. */
+  c: string;
+  /** pulab.analyses.fwtables: the input digits, TI's float32 figures, a voltage loop's constants and steady state. */
   x_scale?: number;
   x_unit?: string;
   x_first_digit?: number;

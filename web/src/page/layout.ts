@@ -224,23 +224,16 @@ export class Layout {
    * show: the shown view is built first and these when the page is idle (or with the first report,
    * or when their view is shown, whichever comes first), so the first paint does not wait for them. */
   private waiting = new Set<PanelId>();
-  private idleBuild = false;
 
-  renderPanels(ctx: PanelContext, only?: PanelId[]): void {
+  renderPanels(ctx: PanelContext, only?: PanelId[], hiddenToo = false): void {
     const took: [string, number][] = [];
     for (const p of PANELS) {
       if (only && !only.includes(p.id) && !(ctx.report && this.waiting.has(p.id))) continue;
       const el = this.panelEls.get(p.id);
       if (!el) continue;
-      if (!ctx.report && !this.idleBuild && el.closest<HTMLElement>('section.panel')?.hidden) {
+      if (!ctx.report && !hiddenToo && el.closest<HTMLElement>('section.panel')?.hidden) {
         if (!this.waiting.size) idle(() => {
-          if (!this.waiting.size || !this.lastCtx) return;
-          this.idleBuild = true;
-          try {
-            this.renderPanels(this.lastCtx, [...this.waiting]);
-          } finally {
-            this.idleBuild = false;
-          }
+          if (this.waiting.size && this.lastCtx) this.renderPanels(this.lastCtx, [...this.waiting], true);
         }, 3000);
         this.waiting.add(p.id);
         continue;

@@ -27,16 +27,6 @@ function tableWhat(name: string, tb: FwTable): string {
   return has(key) ? t(key) : `${tb.quantity}, ${tb.format}`;
 }
 
-function cArray(name: string, tb: FwTable): string {
-  if (tb.c !== undefined) return tb.c;
-  // ST's look-up is three macros of drive_parameters.h, the others one array each
-  if (tb.segdiv !== undefined && tb.angc && tb.ofst) {
-    return [`#define IQMAX   ${tb.iqmax}`, `#define SEGDIV  ${tb.segdiv}`,
-      `#define ANGC    {${tb.angc.join(',')}}`, `#define OFST    {${tb.ofst.join(',')}}`].join('\n');
-  }
-  return `static const int16_t ${name}[${tb.values.length}] = { ${tb.values.join(', ')} };`;
-}
-
 /** What a table of pulab.analyses.fwtables adds: its input digits, TI's float32 figures, a voltage
  * loop's constants (stored, ideal, error) and the speed its steady state holds. */
 function tableDetails(name: string, tb: FwTable): HTMLElement | null {
@@ -93,7 +83,7 @@ export const fwPanel: Panel = {
           tb.error_bound_shift !== undefined ? [' (>> 15: ', num(`fw.tables.${name}.error_bound_shift`, tb.error_bound_shift, { unit: tb.unit }), ')'] : null),
         tableDetails(name, tb),
         tb.flags?.length ? flagChips(tb.flags) : null,
-        h('pre', { class: 'c-array' }, cArray(name, tb)))) : []),
+        h('pre', { class: 'c-array' }, tb.c))) : []),
     );
     keptFigure(el, 'fw-plane', fw, (fig) => renderFwPlane(fig, fw!));
     keptFigure(el, 'fw-speed', fw, (fig) => renderFwSpeed(fig, fw!));

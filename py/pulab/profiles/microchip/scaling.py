@@ -22,7 +22,6 @@ Examples
 
 from __future__ import annotations
 
-import math
 
 from ..common import SOURCES, TWO_PI, board_value, fixed, pow2_exponent
 from ..vendor import Option
