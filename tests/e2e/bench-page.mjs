@@ -26,6 +26,7 @@ if (!existsSync(CHROMIUM)) {
   process.exit(0);
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
+const SETTLE = process.env.BENCH_SETTLE !== '0'; // see settle()
 const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'floor,cold,warm,share,nosnap,embeds,panel,elements,input,typing').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
@@ -102,6 +103,7 @@ for (const variant of SCEN.has('floor') ? ['shared', ...(SCEN.has('floordedicate
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();
     const p = await ctx.newPage();
+    await settle('playwright_chromium');
     const t0 = Date.now();
     await p.goto(`${url}floor.html${variant === 'dedicated' ? '?dedicated' : ''}`, { waitUntil: 'commit' });
     await p.waitForFunction(() => document.documentElement.dataset.numbers, null, { timeout: 90_000, polling: 10 });
@@ -123,7 +125,9 @@ if (SCEN.has('cold')) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();
-    runs.push(await boot(await ctx.newPage(), url));
+    const p = await ctx.newPage();
+    await settle('playwright_chromium');
+    runs.push(await boot(p, url));
     await ctx.close();
   }
   report('default page, cold profile', runs);
@@ -143,7 +147,9 @@ if (SCEN.has('share')) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();
-    runs.push(await boot(await ctx.newPage(), link));
+    const p = await ctx.newPage();
+    await settle('playwright_chromium');
+    runs.push(await boot(p, link));
     await ctx.close();
   }
   report('share link (380 V), cold', runs);
@@ -152,7 +158,9 @@ if (SCEN.has('nosnap')) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();
-    runs.push(await boot(await ctx.newPage(), nosnap.url));
+    const p = await ctx.newPage();
+    await settle('playwright_chromium');
+    runs.push(await boot(p, nosnap.url));
     await ctx.close();
   }
   report('default page, cold, no snapshot', runs);
@@ -162,7 +170,8 @@ if (SCEN.has('nosnap')) {
  * PSS (kB) summed over the Chromium started by this process whose command line contains `mark`
  * (a browser's --user-data-dir), and its descendants (renderers, GPU, utility).
  */
-function pssOfBrowser(mark) {
+/** The processes of the Chromium whose command line holds `mark` (its profile directory), children included. */
+function browserPids(mark) {
   const ppid = new Map();
   for (const d of readdirSync('/proc')) {
     if (!/^\d+$/.test(d)) continue;
@@ -178,6 +187,39 @@ function pssOfBrowser(mark) {
     grew = false;
     for (const [pid, pp] of ppid) if (!mine.has(pid) && mine.has(pp)) { mine.add(pid); grew = true; }
   }
+  return mine;
+}
+/** CPU time (ms) the browser's processes have used so far. */
+function cpuOfBrowser(mark) {
+  let ticks = 0;
+  for (const pid of browserPids(mark)) {
+    try {
+      const s = readFileSync(`/proc/${pid}/stat`, 'utf8');
+      const f = s.slice(s.lastIndexOf(')') + 2).split(' '); // from field 3 (state) on
+      ticks += Number(f[11]) + Number(f[12]); // utime, stime (fields 14, 15)
+    } catch { /* gone */ }
+  }
+  return ticks * 10; // USER_HZ = 100
+}
+/**
+ * A new window does work of its own before any page is asked for (Chromium 156 headless builds
+ * the omnibox popup's WebUI renderer per window: ≈ 0.5 s of two cores in a trace). A user's link
+ * opens in a browser whose window has long finished that, so a run navigates once the browser has
+ * used under 10 ms of CPU in 300 ms (at most 5 s). BENCH_SETTLE=0: navigate at once, as before.
+ */
+async function settle(mark) {
+  if (!SETTLE) return;
+  const until = Date.now() + 5000;
+  let last = cpuOfBrowser(mark);
+  while (Date.now() < until) {
+    await new Promise((r) => setTimeout(r, 300));
+    const now = cpuOfBrowser(mark);
+    if (now - last < 10) return;
+    last = now;
+  }
+}
+function pssOfBrowser(mark) {
+  const mine = browserPids(mark);
   let kb = 0;
   for (const pid of mine) {
     try {
@@ -224,6 +266,7 @@ async function embedsRun(ctx, cdp, mark, elements = false) {
   });
   await cdp.send('Target.setDiscoverTargets', { discover: true });
   const p = ctx.pages()[0] ?? await ctx.newPage();
+  await settle(mark);
   const t0 = Date.now();
   await p.goto(hostUrl, { waitUntil: 'commit' });
   await p.waitForFunction((n) => document.querySelectorAll('iframe').length === n, panels.length, { timeout: 60_000 });
@@ -411,4 +454,5 @@ server.close();
 nosnap.server.close();
 elementsServer.close();
 const load1 = loadavg();
+console.log(`page: ${SETTLE ? 'each run navigated once its new browser window had settled' : 'each run navigated the moment its window existed (BENCH_SETTLE=0)'}`);
 console.log(`page: load average before ${load0.map((x) => x.toFixed(2)).join(' ')}, after ${load1.map((x) => x.toFixed(2)).join(' ')} (2 cores; ${RUNS} runs per scenario)`);
