@@ -225,6 +225,12 @@ function pssOfBrowser(mark) {
     try {
       const m = /^Pss:\s+(\d+)/m.exec(readFileSync(`/proc/${pid}/smaps_rollup`, 'utf8'));
       if (m) kb += Number(m[1]);
+      if (m && process.env.BENCH_PSS_DETAIL) {
+        const cmd = readFileSync(`/proc/${pid}/cmdline`, 'utf8');
+        const type = /--type=(\S+?)(\s|\0|$)/.exec(cmd)?.[1] ?? 'browser';
+        const sub = /--utility-sub-type=(\S+?)(\s|\0|$)/.exec(cmd)?.[1] ?? (/--extension-process|--webui|--renderer-client-id=\d+/.exec(cmd)?.[0] ?? '');
+        console.log(`      PSS ${(Number(m[1]) / 1024).toFixed(1).padStart(6)} MB  ${type} ${sub}`);
+      }
     } catch { /* gone */ }
   }
   return { kb, processes: mine.size };

@@ -1,6 +1,6 @@
 // A tiny static server for dist/ that behaves like a well-configured production server (README,
 // "Serving"): correct MIME types, the README's CSP as an HTTP header, the site mounted at any
-// sub-path prefix (e.g. /tools/pu-lab/), the build's precompressed twins (.br, .gz) sent by
+// sub-path prefix (e.g. /tools/pu-lab/), the build's precompressed twins (.zst, .br, .gz) sent by
 // Accept-Encoding, validators (ETag, Last-Modified → 304), and long caching of hashed files only.
 import { createServer } from 'node:http';
 import { readFile, stat } from 'node:fs/promises';
@@ -22,10 +22,10 @@ export const HASHED = /(^|\/)(assets\/.*-[\w-]{8,}\.\w+|pyodide\/snapshot-[0-9a-
 /** Files other origins' pages load directly (not through a frame of this site); as a module script, with CORS. */
 export const CROSS_ORIGIN = /^embed\.js$/;
 
-/** Which stored variant to send: brotli, then gzip, then the file itself. */
+/** Which stored variant to send: zstd, then brotli, then gzip, then the file itself. */
 async function variant(file, acceptEncoding) {
   const accepts = (enc) => new RegExp(`(^|[,\\s])${enc}(;q=(?!0(\\.0*)?(,|$))[\\d.]+)?(,|$|\\s)`).test(acceptEncoding ?? '');
-  for (const [enc, ext] of [['br', '.br'], ['gzip', '.gz']]) {
+  for (const [enc, ext] of [['zstd', '.zst'], ['br', '.br'], ['gzip', '.gz']]) {
     if (!accepts(enc)) continue;
     const s = await stat(file + ext).catch(() => null);
     if (s?.isFile()) return { path: file + ext, stat: s, encoding: enc };

@@ -14,9 +14,9 @@ export function offlineCache(): Plugin {
     apply: 'build',
     enforce: 'post',
     generateBundle(_options, bundle) {
-      // Precompressed twins (.br/.gz) are the server's business: the browser asks for the plain name.
+      // Precompressed twins (.zst/.br/.gz) are the server's business: the browser asks for the plain name.
       // KaTeX's .woff/.ttf fonts are fallbacks for browsers without woff2 (none that run Pyodide).
-      const files = Object.keys(bundle).filter((f) => !/\.(map|br|gz)$/.test(f) && !/KaTeX_.*\.(woff|ttf)$/.test(f)).sort();
+      const files = Object.keys(bundle).filter((f) => !/\.(map|br|gz|zst)$/.test(f) && !/KaTeX_.*\.(woff|ttf)$/.test(f)).sort();
       const hash = createHash('sha256');
       for (const f of files) {
         const item = bundle[f];

@@ -422,7 +422,7 @@ export default async function harden({ check: runCheck, assert, browser, subSrv,
     const swFile = join(dir, 'sw.js');
     writeFileSync(swFile, readFileSync(swFile, 'utf8').replace(/const VERSION = "([^"]+)"/, 'const VERSION = "$1-b"'));
     // A real build writes their precompressed twins too; here the stale twins go.
-    for (const f of [index, swFile]) for (const z of ['.br', '.gz']) rmSync(f + z, { force: true });
+    for (const f of [index, swFile]) for (const z of ['.zst', '.br', '.gz']) rmSync(f + z, { force: true });
     srv = await serve(dir, '/off/', Number(port));
     await sw.page.reload();
     await ready(sw.page);

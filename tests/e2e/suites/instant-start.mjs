@@ -1,7 +1,7 @@
 // Instant start: <html data-numbers> (build → live, cached → live, stale while typing
 // before Python is ready), the snapshot refused → full boot, no SharedWorker → dedicated Worker,
 // embeds sharing one runtime per kind, and the server's compression and validators.
-import { readdirSync, statSync, writeFileSync } from 'node:fs';
+import { readFileSync, readdirSync, statSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { watchWorkers } from '../workers.mjs';
 
@@ -171,7 +171,7 @@ export default async function instantStart(ctx) {
     await page.context().close();
   });
 
-  await check('server: precompressed brotli/gzip by Accept-Encoding, ETag/Last-Modified → 304, hashed files immutable', async () => {
+  await check('server: precompressed zstd/brotli/gzip by Accept-Encoding, ETag/Last-Modified → 304, hashed files immutable', async () => {
     const base = ctx.subSrv.url;
     const html = await fetch(base, { headers: { 'accept-encoding': 'identity' } });
     assert(html.headers.get('etag') && html.headers.get('last-modified'), 'no validators');
@@ -180,6 +180,14 @@ export default async function instantStart(ctx) {
     assert(again.status === 304, `If-None-Match → ${again.status}`);
     const since = await fetch(base, { headers: { 'if-modified-since': html.headers.get('last-modified') } });
     assert(since.status === 304, `If-Modified-Since → ${since.status}`);
+    // zstd first where the browser takes it (Chromium sends "gzip, deflate, br, zstd"): the snapshot and the wasm
+    for (const f of ['pyodide.asm.wasm', readdirSync(join(ROOT, 'dist/pyodide')).find((x) => /^snapshot-.*\.bin$/.test(x))]) {
+      const z = await fetch(`${base}pyodide/${f}`, { headers: { 'accept-encoding': 'gzip, deflate, br, zstd' } });
+      assert(z.headers.get('content-encoding') === 'zstd', `${f} not zstd: ${z.headers.get('content-encoding')}`);
+      // Node 20's fetch does not decode zstd (the build checks that each twin decodes to its file)
+      const body = Buffer.from(await z.arrayBuffer());
+      assert(body.equals(readFileSync(join(ROOT, 'dist/pyodide', `${f}.zst`))) || body.equals(readFileSync(join(ROOT, 'dist/pyodide', f))), `${f}: not its zstd twin`);
+    }
     const wasm = await fetch(`${base}pyodide/pyodide.asm.wasm`, { headers: { 'accept-encoding': 'gzip, br' } });
     assert(wasm.headers.get('content-encoding') === 'br' && wasm.headers.get('content-type') === 'application/wasm', 'wasm not brotli');
     const gz = await fetch(`${base}pyodide/pyodide.asm.wasm`, { headers: { 'accept-encoding': 'gzip' } });
