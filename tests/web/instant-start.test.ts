@@ -174,6 +174,25 @@ describe('warm-up runs after the first report (idle only, never ahead of a call)
   });
 });
 
+describe('an embed does not start the warm-up (no form to type in)', () => {
+  it('embeds\' reports are computed once each; the first report of a page with a form starts the runs', async () => {
+    const log: string[] = [];
+    const run = (kind: string, t: string) => (kind === 'report' && log.push(t), echo(t));
+    const host = createRuntimeHost(async () => ({ ...fakePy(), pyimport: () => ({ call_json: run, call_json_steps: stepsOf((t: string) => run('report', t)) }) }), PULAB_FILES, { warmRuns: 3 });
+    const embed = host.connect(() => undefined);
+    embed({ type: 'init', indexURL: 'x/', warm: false });
+    await host.ready;
+    embed({ type: 'call', id: 1, kind: 'report', payload: '"e1"', channel: 'report' });
+    await new Promise((r) => setTimeout(r, 100));
+    expect(log).toEqual(['"e1"']);
+    const page = host.connect(() => undefined);
+    page({ type: 'init', indexURL: 'x/' });
+    page({ type: 'call', id: 1, kind: 'report', payload: '"p1"', channel: 'report' });
+    await new Promise((r) => setTimeout(r, 100));
+    expect(log).toEqual(['"e1"', '"p1"', '"p1"', '"p1"', '"p1"']);
+  });
+});
+
 describe('boot timeout counts time without progress', () => {
   const slowLoader = (steps: number, every: number): PyodideLoader => async (_url, progress) => {
     for (let i = 0; i < steps; i++) {

@@ -43,7 +43,11 @@ export const PRIORITY_CHANNEL = 'report';
 
 /** Main thread → worker. */
 export type MainToWorker =
-  | { type: 'init'; indexURL: string; timeoutMs?: number }
+  /**
+   * `warm: false`: the page has no form to type in (an embed), so its first report does not start
+   * the runtime's warm-up runs (web/src/worker-logic.ts); a page that has one does.
+   */
+  | { type: 'init'; indexURL: string; timeoutMs?: number; warm?: boolean }
   | {
       type: 'call';
       id: number;

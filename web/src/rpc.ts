@@ -65,8 +65,8 @@ export class PulabClient {
    * Start the boot. `timeoutMs` bounds the time without progress (the worker applies it to
    * Pyodide's start-up); a watchdog here, restarted by every progress message, bounds the worker itself.
    */
-  init(indexURL: string, timeoutMs = 60_000): void {
-    this.boot = { type: 'init', indexURL, timeoutMs };
+  init(indexURL: string, timeoutMs = 60_000, warm = true): void {
+    this.boot = { type: 'init', indexURL, timeoutMs, warm };
     this.worker.postMessage(this.boot);
     this.idleMs = timeoutMs + 5000;
     this.armWatchdog();

@@ -81,6 +81,7 @@ export function startRuntime(kind: RuntimeKind, generation = 0): PulabClient {
   const name = generation ? `pulab-${kind}-${generation}` : `pulab-${kind}`;
   document.documentElement.dataset.runtime = shared ? 'shared' : 'dedicated';
   const client = new PulabClient(shared ? sharedOrDedicated(name) : dedicatedWorker(name), {}, `pulab-alive-${name}`);
-  client.init(new URL('pyodide/', document.baseURI).href, BOOT_IDLE_MS);
+  // An embed (?embed=…) has no form to type in: its reports do not warm the runtime up.
+  client.init(new URL('pyodide/', document.baseURI).href, BOOT_IDLE_MS, !new URLSearchParams(location.search).has('embed'));
   return client;
 }

@@ -195,7 +195,9 @@ const PROGRESS_STEP = 0.01;
 const now = (): number => (typeof performance !== 'undefined' ? performance.now() : Date.now());
 
 /**
- * `warmRuns`: after the first report, compute it this many times more while the runtime is idle
+ * `warmRuns`: after the first report of a page with a form (an embed's does not count: on a docs
+ * page of twelve panels the runs took a core from the other panels' start, all live 1.78 → 2.14 s,
+ * side by side), compute it this many times more while the runtime is idle
  * (results dropped, one per macrotask, never ahead of a queued call). The engine optimizes the
  * Python interpreter's wasm code only once it has run for a while: the first keystrokes after a
  * boot took 10–25 ms in Python instead of 2–5 ms (with the engine told to optimize everything at
@@ -220,6 +222,8 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
   let scheduled = false;
   let draining = false;
   let warm: { payload: string; left: number } | null = null;
+  /** Clients whose first report may start the warm-up (their `init` did not say `warm: false`). */
+  const warmers = new Set<Post>();
   let warmTimer: ReturnType<typeof setTimeout> | undefined;
 
   const broadcast = (m: WorkerToMain): void => {
@@ -360,7 +364,7 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
         if (result === null) c.post({ type: 'superseded', id: c.call.id });
         else c.post({ type: 'result', id: c.call.id, kind, result, ms: now() - t0 });
         // The page's own report (not a simulation: same kind, another channel, seconds per run).
-        if (warm === null && c.call.channel === PRIORITY_CHANNEL && result?.ok) warm = { payload: c.call.payload, left: opts.warmRuns ?? 0 };
+        if (warm === null && c.call.channel === PRIORITY_CHANNEL && result?.ok && warmers.has(c.post)) warm = { payload: c.call.payload, left: opts.warmRuns ?? 0 };
       }
     } finally {
       draining = false;
@@ -395,6 +399,7 @@ export function createRuntimeHost(load: PyodideLoader, files: Record<string, str
       clientIds.set(post, client);
       return (msg) => {
         if (msg.type === 'init') {
+          if (msg.warm !== false) warmers.add(post);
           // A failed boot is tried again when a client asks again (a reload, a retry).
           if (state === 'idle' || state === 'failed') void boot(msg.indexURL, msg.timeoutMs ?? 60_000);
           else if (state === 'booting' && lastProgress) post(lastProgress);
