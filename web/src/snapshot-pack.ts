@@ -81,6 +81,11 @@ export class SnapshotUnpacker {
     }
   }
 
+  /** The runs that hold something, as [start, end) offsets in the heap (the rest is zero); empty before the run table is read. */
+  get runs(): readonly (readonly [number, number])[] {
+    return this.spans ?? [];
+  }
+
   /** Every byte was pushed: throws if the file ended early. */
   finish(): Uint8Array {
     if (!this.spans || this.run !== this.spans.length) throw new Error('snapshot: shorter than its run table');
@@ -110,4 +115,47 @@ export class SnapshotUnpacker {
     }
     this.spans = spans;
   }
+}
+
+/** Zero every 4-byte word of `mem` in [from, to) that is not zero already, without writing (so making resident) the pages that are. */
+function clearNonZero(mem: Int8Array, from: number, to: number): void {
+  const words = new Int32Array(mem.buffer, mem.byteOffset, mem.length >>> 2);
+  const w0 = Math.ceil(from / 4);
+  const w1 = Math.floor(to / 4);
+  for (let i = from; i < Math.min(to, w0 * 4); i++) if (mem[i] !== 0) mem[i] = 0;
+  for (let i = w0; i < w1; i++) if (words[i] !== 0) words[i] = 0;
+  for (let i = Math.max(from, w1 * 4); i < to; i++) if (mem[i] !== 0) mem[i] = 0;
+}
+
+/**
+ * Pyodide restores the heap with one `HEAP8.set(snapshot)`, which writes every page of the wasm
+ * memory — the 14 MB of all-zero pages (46 %) too, each of them resident from then on in the
+ * browser's memory. While Pyodide boots, that one call (known by its source: a view of this
+ * snapshot's buffer) copies the runs that hold something and leaves the fresh memory, zero
+ * already, untouched elsewhere, clearing only what the wasm's instantiation wrote there (its data
+ * segments). Returns the undo.
+ */
+export function restoreSparsely(snapshot: Uint8Array, runs: readonly (readonly [number, number])[]): () => void {
+  type Set = (this: ArrayLike<number>, src: ArrayLike<number>, offset?: number) => void;
+  const proto = Object.getPrototypeOf(Int8Array.prototype) as { set: Set };
+  const set = proto.set;
+  proto.set = function (this: ArrayLike<number>, src: ArrayLike<number>, offset = 0) {
+    const ours = src instanceof Uint8Array && src.buffer === snapshot.buffer && this instanceof Int8Array && offset === 0
+      && src.byteOffset >= snapshot.byteOffset && src.byteOffset + src.length === snapshot.byteOffset + snapshot.length && src.length <= this.length;
+    if (!ours) return set.call(this, src, offset);
+    const base = src.byteOffset - snapshot.byteOffset; // the heap's start in the snapshot (its header comes first)
+    let done = 0;
+    for (const [s, e] of runs) {
+      const a = Math.max(0, s - base);
+      const b = e - base;
+      if (b <= a) continue;
+      clearNonZero(this, done, a);
+      set.call(this, src.subarray(a, b), a);
+      done = b;
+    }
+    clearNonZero(this, done, src.length);
+  };
+  return () => {
+    proto.set = set;
+  };
 }

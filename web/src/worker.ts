@@ -3,7 +3,7 @@
 // Thin glue between ports, Pyodide and worker-logic.ts.
 import { loadPyodide, version } from 'pyodide';
 import { SNAPSHOT } from 'virtual:pulab-build';
-import { SnapshotUnpacker } from './snapshot-pack';
+import { SnapshotUnpacker, restoreSparsely } from './snapshot-pack';
 import { createRuntimeHost, describeError, fastOrFull, type BootProgress, type FsInit, type PyodideLike } from './worker-logic';
 import type { MainToWorker, WorkerToMain } from './protocol';
 
@@ -24,7 +24,7 @@ function release(buf: ArrayBufferLike): void {
  * once the server has answered (a refused snapshot rejects here, before Pyodide starts), `done`
  * when the last byte is in place.
  */
-function fetchSnapshot(url: string, snap: { size: number; bytes: number }, progress: BootProgress): { heap: Uint8Array; started: Promise<void>; done: Promise<void> } {
+function fetchSnapshot(url: string, snap: { size: number; bytes: number }, progress: BootProgress): { heap: Uint8Array; unpacker: SnapshotUnpacker; started: Promise<void>; done: Promise<void> } {
   const unpacker = new SnapshotUnpacker(new Uint8Array(snap.size));
   const response = fetch(url).then((res) => {
     if (!res.ok || !res.body) throw new Error(`${url}: HTTP ${res.status}`);
@@ -45,7 +45,7 @@ function fetchSnapshot(url: string, snap: { size: number; bytes: number }, progr
     progress('snapshot', 0.7);
   });
   done.catch(() => undefined);
-  return { heap: unpacker.heap, started: response.then(() => undefined), done };
+  return { heap: unpacker.heap, unpacker, started: response.then(() => undefined), done };
 }
 
 async function load(indexURL: string, progress: BootProgress, fsInit?: FsInit) {
@@ -58,7 +58,8 @@ async function load(indexURL: string, progress: BootProgress, fsInit?: FsInit) {
         // downloads, while the snapshot does. Its `fsInit` hook runs after the wasm is
         // instantiated and before the heap is restored; it waits for the last byte (and forever
         // if the download fails: then `done` rejects below and the normal boot takes over).
-        const { heap, started, done } = fetchSnapshot(`${indexURL}${snap.file}`, snap, progress);
+        const { heap, unpacker, started, done } = fetchSnapshot(`${indexURL}${snap.file}`, snap, progress);
+        let undo: (() => void) | null = null;
         const [py] = await Promise.all([
           loadPyodide({
             indexURL,
@@ -69,8 +70,9 @@ async function load(indexURL: string, progress: BootProgress, fsInit?: FsInit) {
               // the heap is never restored from a partial snapshot.
               await fsInit?.(fs).catch(() => undefined);
               await done.catch(() => new Promise<never>(() => undefined));
+              undo = restoreSparsely(heap, unpacker.runs);
             },
-          }),
+          }).finally(() => undo?.()),
           done,
         ]);
         // Pyodide keeps its config, and with it the 30 MB snapshot, for the runtime's lifetime; the
