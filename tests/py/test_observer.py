@@ -537,3 +537,25 @@ def test_pulab_header_with_mcat_json_prints_mcats_macros_in_its_order(name):
     ours = re.findall(r"^#define (M1_\w+) (.*?)\s*$",
                       header(pulab.report({"profiles": {"nxp": {"mcat": mcat}}}), "nxp"), re.M)
     assert ours == theirs
+
+
+@pytest.mark.parametrize("name", ["m1_pmsm_appconfig.h", *MCAT_ENC_HEADERS])
+def test_mcat_pasted_text_is_the_json_or_the_whole_header(name, tmp_path):
+    """``mcat`` as the text a reader pastes: the whole header, or its JSON as text, gives the
+    report the JSON object gives; text without MCAT's object is refused at the field (exit 2)."""
+    mcat, _ = _mcat_header(name)
+    header = (HERE / "data" / "headers" / "nxp" / name).read_text()
+    want = pulab.report({"observer": {}, "profiles": {"nxp": {"mcat": mcat}}})
+    for text in (header, json.dumps(mcat, indent=2)):
+        got = pulab.report({"observer": {}, "profiles": {"nxp": {"mcat": text}}})
+        assert got["profiles"]["nxp"]["constants"] == want["profiles"]["nxp"]["constants"]
+        assert got["input"] == want["input"]
+    for text in ("", "{not json", "/* a comment */ #define M1_I_MAX (8.0)", "/* {\"currentLoop\": {}} */"):
+        with pytest.raises(InputError) as e:
+            pulab.report({"profiles": {"nxp": {"mcat": text}}})
+        assert (e.value.field, e.value.code) == ("profiles.nxp.mcat", "mcat_not_found")
+    p = tmp_path / "in.json"
+    p.write_text(json.dumps({"profiles": {"nxp": {"mcat": "no json here"}}}))
+    run = subprocess.run([sys.executable, "-m", "pulab", "report", str(p)], capture_output=True,
+                         text=True, env={**__import__("os").environ, "PYTHONPATH": str(HERE.parent / "py")})
+    assert run.returncode == 2 and run.stderr.count("\n") == 1 and "profiles.nxp.mcat" in run.stderr

@@ -2,7 +2,8 @@
 
 MCAT writes its inputs as a JSON object in the first comment of a fixed-point
 ``m1_pmsm_appconfig.h``: sections ``parameters``, ``currentLoop``, ``speedLoop``, ``sensors``,
-``sensorless`` (a flat object with the same keys is accepted too).  :func:`expand` fills every
+``sensorless`` (a flat object with the same keys is accepted too), or the text a reader pastes:
+that JSON, or the whole header (:func:`from_text` finds the object).  :func:`expand` fills every
 motor, drive, current-loop, observer and NXP-profile field the object implies; a field typed in
 the input wins.  It runs before the input is checked (like the datasheet), so it lives here and
 not in :mod:`pulab.profiles.nxp`.
@@ -45,17 +46,21 @@ Examples
 >>> out = expand({"profiles": {"nxp": {"mcat": m}}})
 >>> out["motor"]["pole_pairs"], out["drive"]["base_freq_hz"]
 (4, 293.3333333333333)
+>>> from_text('/* generated */\n/* {"parameters": {"parametersPp": 4}} */')
+{'parameters': {'parametersPp': 4}}
 """
 
 from __future__ import annotations
 
 import copy
+import json
 import math
+import re
 
 from ..schema.errors import InputError
 from ..schema.validate import shown
 
-__all__ = ["expand", "flatten", "SECTIONS"]
+__all__ = ["expand", "flatten", "from_text", "mcat_json", "SECTIONS"]
 
 #: The sections MCAT writes.
 SECTIONS = ("parameters", "currentLoop", "speedLoop", "sensors", "sensorless")
@@ -125,6 +130,38 @@ def _fill(given, implied: dict) -> dict:
     return out
 
 
+_BLOCK = re.compile(r"/\*(.*?)\*/", re.S)
+
+
+def mcat_json(blocks) -> dict | None:
+    """MCAT's inputs among a header's comments: the first that is a JSON object with a
+    ``parameters`` object (``blocks``: the comments' texts, in order)."""
+    for b in blocks or ():
+        text = b.strip()
+        if not text.startswith("{"):
+            continue
+        try:
+            d = json.loads(text)
+        except ValueError:
+            continue
+        if isinstance(d, dict) and isinstance(d.get("parameters"), dict):
+            return d
+    return None
+
+
+def from_text(text: str) -> dict | None:
+    """The JSON object MCAT writes, in pasted text: the text itself when it is a JSON object,
+    else the first ``/* … */`` comment of a pasted ``m1_pmsm_appconfig.h`` that is one with a
+    ``parameters`` object (:func:`mcat_json`); None when there is neither."""
+    try:
+        d = json.loads(text)
+    except ValueError:
+        d = None
+    if isinstance(d, dict):
+        return d
+    return mcat_json(m[1] for m in _BLOCK.finditer(text))
+
+
 def expand(inp: dict) -> dict:
     """The input with what ``profiles.nxp.mcat`` implies filled in (typed fields win).
 
@@ -132,6 +169,7 @@ def expand(inp: dict) -> dict:
     ----------
     inp : dict
         The report input; unchanged (a copy is returned) when it has no ``profiles.nxp.mcat``.
+        ``mcat`` may be the pasted text (the JSON, or the whole header): :func:`from_text`.
 
     Returns
     -------
@@ -142,11 +180,18 @@ def expand(inp: dict) -> dict:
     Raises
     ------
     InputError
-        ``profiles.nxp.mcat`` (or one of its sections) is not a JSON object.
+        ``profiles.nxp.mcat`` (or one of its sections) is not a JSON object; pasted text in
+        which no MCAT object is found (``mcat_not_found``).
     """
     nxp = (inp.get("profiles") or {}).get("nxp") if isinstance(inp.get("profiles"), dict) else None
     if not isinstance(nxp, dict) or nxp.get("mcat") is None:
         return inp
+    if isinstance(nxp["mcat"], str):
+        found = from_text(nxp["mcat"])
+        if found is None:
+            raise InputError("profiles.nxp.mcat", code="mcat_not_found")
+        nxp = {**nxp, "mcat": found}
+        inp = {**inp, "profiles": {**inp["profiles"], "nxp": nxp}}
     if not isinstance(nxp["mcat"], dict):
         raise InputError("profiles.nxp.mcat", code="not_object", got=shown(nxp["mcat"]))
     imp = _implied(flatten(nxp["mcat"]))

@@ -414,6 +414,8 @@ MESSAGES = {
     "required_choice": ("is required (one of {choices})", "必填（以下之一：{choices}）"),
     "not_json_object": ("must be a JSON object", "必须是 JSON 对象"),
     "not_object": ("must be an object, got {got}", "必须是对象，当前为 {got}"),
+    "mcat_not_found": ("no MCAT JSON object found in the pasted text (paste MCAT's JSON, or the whole m1_pmsm_appconfig.h with the JSON in its first comment)",
+                       "粘贴的文本中没有找到 MCAT 的 JSON 对象（请粘贴 MCAT 的 JSON，或首个注释中带有该 JSON 的整个 m1_pmsm_appconfig.h）"),
     "unknown_field": ("unknown field (expected one of: {expected})",
                       "未知字段（应为以下之一：{expected}）"),
     "unknown_section": ("unknown section (expected one of: {expected})",

@@ -75,8 +75,10 @@ export default async function observer({ check, assert, newPage, subSrv, ready, 
     await waitValue(page, 'profiles.nxp.constants.M1_BEMF_DQ_KP_GAIN.value', 12589, 0, 60_000);
     await waitValue(page, 'profiles.st.constants.GAIN1.value', want.profiles.st.constants.GAIN1.value, 0, 60_000);
     assert(await page.$eval('#panel-observer [data-st-rule]', (e) => e.getAttribute('data-st-rule')) === 'workbench', 'ST rule note');
+    // pulab finds MCAT's JSON in the pasted text, or refuses it at the box (once, not also as an alert)
     await page.fill('textarea[name="profiles.nxp.mcat"]', '{not json');
-    await page.waitForFunction(() => (document.querySelector('[data-err-for="profiles.nxp.mcat"]')?.textContent ?? '').length > 0, null, { timeout: 30_000 });
+    await page.waitForFunction(() => (document.querySelector('[data-err-for="profiles.nxp.mcat"]')?.textContent ?? '').includes('MCAT'), null, { timeout: 30_000 });
+    assert(await page.$('#panel-observer .sim-error') === null, 'the MCAT refusal is shown twice');
     await page.fill('textarea[name="profiles.nxp.mcat"]', '');
     await page.waitForFunction(() => (document.querySelector('[data-err-for="profiles.nxp.mcat"]')?.textContent ?? '') === '', null, { timeout: 30_000 });
   });

@@ -4,7 +4,7 @@
 // the report's "observer" section and profiles for the page's motor and the form's observer
 // options (`{}` when none are typed), asked of pulab by this panel.
 import { h, num, patch, table } from '../dom';
-import { t } from '../i18n';
+import { errText, t } from '../i18n';
 import { effectiveInput } from '../fields';
 import { reportInput, type Input } from '../state';
 import type { Json } from '../protocol';
@@ -20,28 +20,9 @@ const VENDORS = ['nxp', 'st', 'microchip', 'ti'];
 type Obj = { [k: string]: Json };
 const obj = (v: unknown): Obj => (v && typeof v === 'object' && !Array.isArray(v) ? (v as Obj) : {});
 
-/** What the reader pasted into the MCAT box, and the JSON object found in it (null: none). */
-const mcatPaste: { text: string; json: Obj | null } = { text: '', json: null };
-
-/** The JSON object MCAT writes: the pasted text itself, or the first comment of a pasted
- * m1_pmsm_appconfig.h that is a JSON object with a "parameters" section. */
-export function mcatJson(text: string): Obj | null {
-  const tryParse = (s: string): Obj | null => {
-    try {
-      const v: unknown = JSON.parse(s);
-      return v && typeof v === 'object' && !Array.isArray(v) ? (v as Obj) : null;
-    } catch {
-      return null;
-    }
-  };
-  const whole = tryParse(text.trim());
-  if (whole) return whole;
-  for (const m of text.matchAll(/\/\*([\s\S]*?)\*\//g)) {
-    const j = m[1].trim().startsWith('{') ? tryParse(m[1]) : null;
-    if (j && j.parameters && typeof j.parameters === 'object') return j;
-  }
-  return null;
-}
+/** What the reader pasted into the MCAT box: MCAT's JSON or a whole m1_pmsm_appconfig.h, sent as
+ * it is (pulab finds the JSON in it, or names the field: pulab.model.mcat.from_text). */
+const mcatPaste = { text: '' };
 
 /** The input pulab computes the panel's numbers from: the report input, the observer section
  * (`{}` = defaults) and the vendors' profiles with the form's options. With pasted MCAT inputs
@@ -51,8 +32,8 @@ export function observerInput(inp: Input): Input {
   const eff = effectiveInput(inp);
   const prof = obj(eff.profiles);
   const profiles: Obj = { ...prof, ...Object.fromEntries(VENDORS.map((v) => [v, obj(prof[v])])) };
-  if (!mcatPaste.json) return { ...reportInput(eff), observer: obj(inp.observer), profiles };
-  profiles.nxp = { ...obj(profiles.nxp), mcat: mcatPaste.json };
+  if (!mcatPaste.text.trim()) return { ...reportInput(eff), observer: obj(inp.observer), profiles };
+  profiles.nxp = { ...obj(profiles.nxp), mcat: mcatPaste.text };
   return { observer: obj(inp.observer), profiles };
 }
 
@@ -103,7 +84,8 @@ export const observerPanel: Panel = {
     const b = o?.budget;
     patch(el,
       h('p', { class: 'note' }, t('obsIntro')),
-      v.error ? h('p', { class: 'sim-error', role: 'alert' }, v.error) : null,
+      // A refused MCAT paste is said at its box below.
+      v.error && !v.failed?.field.startsWith('profiles.nxp.mcat') ? h('p', { class: 'sim-error', role: 'alert' }, v.error) : null,
       o && s && b ? h('div', {},
         table([t('quantity'), t('value')], [
           [t('obsLowest'), b.min_speed_rpm === null
@@ -133,12 +115,11 @@ export const observerPanel: Panel = {
         h('textarea', { name: 'profiles.nxp.mcat', rows: '3', spellcheck: 'false',
           oninput: (ev: Event) => {
             mcatPaste.text = (ev.target as HTMLTextAreaElement).value;
-            mcatPaste.json = mcatJson(mcatPaste.text);
             v!.ask(ctx);
             observerPanel.render(el, ctx);
           } }, mcatPaste.text),
         h('span', { class: 'err', 'data-err-for': 'profiles.nxp.mcat' },
-          mcatPaste.text.trim() && !mcatPaste.json ? t('obsMcatBad') : '')),
+          mcatPaste.text.trim() && v.failed?.field.startsWith('profiles.nxp.mcat') ? errText(v.failed) : '')),
       ...VENDORS.map((name) => vendorTable(name, r?.profiles?.[name])),
       r?.profiles?.st?.observer_constants?.length ? h('p', { class: 'note', 'data-st-rule': r.profiles.st.inputs?.observer_design ? 'design' : 'workbench' },
         t(r.profiles.st.inputs?.observer_design ? 'obsStDesign' : 'obsStRule')) : null,

@@ -3,6 +3,7 @@
 // screen, the latest answer kept, an input error shown at the form's field and the earlier
 // numbers cleared beside it.
 import { errText } from '../i18n';
+import type { ApiErr } from '../protocol';
 import type { Input } from '../state';
 import type { Report } from '../generated/report-types';
 import type { PanelContext, PanelId } from './panel';
@@ -11,6 +12,8 @@ export class OwnRequest<T> {
   key = '';
   data: T | null = null;
   error: string | null = null;
+  /** pulab's refusal of the last request (its field, code and both languages' texts). */
+  failed: ApiErr | null = null;
   pending = false;
   /** Asked only while on screen: the other panels' reports must not wait behind this one on
    * every keystroke. */
@@ -45,9 +48,11 @@ export class OwnRequest<T> {
       if (result.ok) {
         this.data = this.pick(result.report);
         this.error = null;
+        this.failed = null;
         ctx.fieldError?.(this.id, null);
       } else {
         this.data = null;
+        this.failed = result;
         this.error = `${result.field}: ${errText(result)}`;
         ctx.fieldError?.(this.id, result);
       }

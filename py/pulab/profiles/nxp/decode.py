@@ -30,11 +30,10 @@ Examples
 
 from __future__ import annotations
 
-import json
 import math
 
 from ..common import SQRT3
-from ...model.mcat import flatten
+from ...model.mcat import flatten, mcat_json
 from ..decoding import check, current_loop, integrator_loop, macro, result
 from .appconfig import _encoder
 
@@ -71,21 +70,6 @@ _OTHER = ("M1_U_SCALE", "M1_E_SCALE", "M1_WI_SCALE", "M1_SCALAR_INTEG_GAIN",
           "M1_TO_KI_GAIN", "M1_TO_KI_SHIFT", "M1_SPEED_PI_PROP_GAIN", "M1_SPEED_PI_INTEG_GAIN",
           "M1_ALIGN_DURATION", "M1_BEMF_DQ_KP_GAIN", "M1_BEMF_DQ_KI_GAIN")
 READS = tuple(_SCALES) + tuple(_FRACTIONS) + _GAINS + _OTHER
-
-
-def _mcat_json(blocks) -> dict | None:
-    """The MCAT inputs: the first comment that is a JSON object with a ``parameters`` key."""
-    for b in blocks or ():
-        text = b.strip()
-        if not text.startswith("{"):
-            continue
-        try:
-            d = json.loads(text)
-        except ValueError:
-            continue
-        if isinstance(d, dict) and isinstance(d.get("parameters"), dict):
-            return d
-    return None
 
 
 def _frac16(x: float) -> int:
@@ -242,7 +226,7 @@ def decode_header(values: dict, notes: dict) -> dict:
         w_max = 2.0 * math.pi * v["M1_FREQ_MAX"]
     elif w_max is None and has("M1_N_MAX") and pp:
         w_max = v["M1_N_MAX"] if flt else 2.0 * math.pi * v["M1_N_MAX"] * pp / 60.0
-    j = _mcat_json(notes.get("", ()))
+    j = mcat_json(notes.get("", ()))
     design["mcat_inputs"] = j
     # the sample time: the tool's own input, else two constants that carry it
     ts, ts_from = None, None
