@@ -46,7 +46,7 @@ Examples
 >>> out = expand({"profiles": {"nxp": {"mcat": m}}})
 >>> out["motor"]["pole_pairs"], out["drive"]["base_freq_hz"]
 (4, 293.3333333333333)
->>> from_text('/* generated */\n/* {"parameters": {"parametersPp": 4}} */')
+>>> from_text('/* generated */ /* {"parameters": {"parametersPp": 4}} */')
 {'parameters': {'parametersPp': 4}}
 """
 
