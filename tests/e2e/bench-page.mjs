@@ -7,9 +7,10 @@
 //   input → all numbers updated (in page, dataset.updateMs), typed by Playwright fill and by keyboard events,
 //   typing: keystroke → numbers and answer strip current, Inovance and Microchip side by side (fresh profiles).
 // Each boot is printed in phases (ms since navigation) from <html data-t-…> marks.
+//   sim: the seed's simulations, 8 in a row, in the simulation runtime alone (the worker's time).
 //   floor: a blank page that only starts the report runtime from its snapshot (the build's own
 //   worker script, no page code) and asks it for the share link's report before it is ready.
-// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=floor,floordedicated,cold,warm,share,nosnap,embeds,panel,elements,input,typing
+// BENCH_NO_BUILD=1 reuses dist/ (BENCH_DIST=dir: another build); BENCH_SCENARIOS=floor,floordedicated,sim,cold,warm,share,nosnap,embeds,panel,elements,input,typing
 // picks scenarios (nosnap: cold with the snapshot refused, the fallback boot).
 import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
@@ -27,12 +28,12 @@ if (!existsSync(CHROMIUM)) {
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
 const SETTLE = process.env.BENCH_SETTLE !== '0'; // see settle()
-const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'floor,cold,warm,share,nosnap,embeds,panel,elements,input,typing').split(','));
+const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'floor,sim,cold,warm,share,nosnap,embeds,panel,elements,input,typing').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
 if (!process.env.BENCH_NO_BUILD) execFileSync('npx', ['vite', 'build', '--configLoader', 'runner', '--config', 'web/vite.config.ts', '--logLevel', 'error'], { cwd: ROOT, stdio: 'inherit' });
 const SHARE_INPUT = JSON.parse(readFileSync(join(ROOT, 'tests/golden/04_ind380_7k5.json'), 'utf8')).input;
-const { server, url } = await serve(DIST, '/bench/', 0, { extra: floorPage() });
+const { server, url } = await serve(DIST, '/bench/', 0, { extra: { ...floorPage(), ...simPage() } });
 // The fallback boot: the same build with its snapshot refused (404).
 const nosnap = await serve(DIST, '/bench/', 0, { refuse: /snapshot-.*\.bin$/ });
 const load0 = loadavg();
@@ -95,6 +96,41 @@ port.postMessage({ type: 'call', id: 1, kind: 'report', payload: ${JSON.stringif
     'floor.html': ['text/html; charset=utf-8', '<!doctype html><meta charset="utf-8"><title>floor</title><script type="module" src="./floor.js"></script>'],
     'floor.js': ['text/javascript', js],
   };
+}
+/**
+ * The simulation runtime alone: simsim.html starts the build's worker script as the page's
+ * simulation runtime and asks it, 8 times in a row, for the seed's current and PLL simulations
+ * (a report in slices, as the page's plots ask); the worker's own time of each answer.
+ */
+function simPage() {
+  const worker = readdirSync(join(DIST, 'assets')).find((f) => /^worker-.*\.js$/.test(f));
+  const seed = JSON.parse(readFileSync(join(ROOT, 'tests/golden/01_seed_motor.json'), 'utf8')).input;
+  const js = `const w = new SharedWorker(new URL('./assets/${worker}', document.baseURI), { type: 'module', name: 'pulab-sim' });
+const out = []; let id = 0;
+const ask = () => w.port.postMessage({ type: 'call', id: ++id, kind: 'report', payload: ${JSON.stringify(JSON.stringify({ ...seed, sim: { current: {}, pll: {} } }))}, channel: 'sim' });
+w.port.onmessage = ({ data: m }) => {
+  if (m.type === 'ready') ask();
+  if (m.type === 'result') { out.push(m.ms); if (out.length < 8) ask(); else document.documentElement.dataset.ms = JSON.stringify(out); }
+};
+w.port.postMessage({ type: 'init', indexURL: new URL('pyodide/', document.baseURI).href, timeoutMs: 60000, warm: false });
+`;
+  return {
+    'simsim.html': ['text/html; charset=utf-8', '<!doctype html><meta charset="utf-8"><title>sim</title><script type="module" src="./simsim.js"></script>'],
+    'simsim.js': ['text/javascript', js],
+  };
+}
+if (SCEN.has('sim')) {
+  const all = [];
+  for (let i = 0; i < RUNS; i++) {
+    const ctx = await newCtx();
+    const p = await ctx.newPage();
+    await settle('playwright_chromium');
+    await p.goto(`${url}simsim.html`, { waitUntil: 'commit' });
+    await p.waitForFunction(() => document.documentElement.dataset.ms, null, { timeout: 120_000, polling: 50 });
+    all.push(...JSON.parse(await p.evaluate(() => document.documentElement.dataset.ms)).slice(1)); // the first runs cold
+    await ctx.close();
+  }
+  console.log(`page: the seed's current + PLL simulation in the simulation runtime, warm (${all.length} answers): worker time ${stat(all)}`);
 }
 // The floor twice, interleaved run by run: with the SharedWorker the page uses, and with a
 // dedicated Worker (a SharedWorker is started in a process of its own).

@@ -4,6 +4,7 @@
 // data-numbers and the stale note while typing; sweep boundaries as typed decimals; one inductance
 // unit; a datasheet conflict marks both fields; a blank datasheet start.
 // Run alone: node tests/e2e/run.mjs screens   (E2E_NO_BUILD=1 to reuse dist/)
+import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 
@@ -91,13 +92,31 @@ export default async function screens(ctx) {
   await check('screens: the profile picker shows each firmware\'s integers (equal CPython); one that cannot hold the motor says why', async () => {
     const robot = golden('23_limit_robot_28krpm.json');
     const want = cpython({ ...robot.input, profiles: {} });
+    // The strip counts the review of the firmware picked and, once the simulation (the page's
+    // default "sim" section) has answered, the simulation's own findings (key "sim."): CPython's
+    // report of each, without and with that section.
+    const FW = ['ti', 'nxp', 'st', 'microchip'];
+    const SIM = { current: { axis: 'd', delay: false }, pll: {} };
+    const graded = (fw, sim) => ({ ...robot.input, conventions: { ...robot.input.conventions, firmware: fw }, ...(sim ? { sim: SIM } : {}) });
+    const reports = JSON.parse(execFileSync('python3', ['-c', 'import json,sys; from pulab import report; print(json.dumps([{"review": report(i)["review"]} for i in json.load(sys.stdin)]))'], {
+      cwd: ROOT, env: { ...process.env, PYTHONPATH: join(ROOT, 'py') }, input: JSON.stringify(FW.flatMap((fw) => [graded(fw, false), graded(fw, true)])),
+    }).toString());
+    const countsText = (findings) => {
+      const n = (s) => findings.filter((f) => f.severity === s).length;
+      return `${n('error')} errors, ${n('warning')} warnings, ${n('note')} notes`;
+    };
+    const strip = Object.fromEntries(FW.map((fw, k) => {
+      const [plain, simmed] = [reports[2 * k], reports[2 * k + 1]];
+      const sims = simmed.review.findings.filter((f) => f.key.startsWith('sim.'));
+      return [fw, [countsText(plain.review.findings), countsText([...plain.review.findings, ...sims])]];
+    }));
     const p = await newPage({ context: { viewport: { width: 390, height: 844 } } });
     await p.goto(link(robot.input));
     await ready(p);
     await p.waitForSelector('section.answer .firmware-limits [data-field="raw.FullFreq01"]', { timeout: 30_000 });
     assert(await p.isVisible('section.answer .firmware-limits'), 'Inovance limits not shown in the answer');
     await p.screenshot({ path: join(SHOTS, 'screens-profile-inovance-limit.png') });
-    for (const v of ['ti', 'nxp', 'st', 'microchip']) {
+    for (const v of FW) {
       await p.selectOption('select[name="answer.profile"]', v);
       const names = Object.keys(want.profiles[v].constants);
       const sel = `section.answer [data-key="profiles.${v}.constants.${names[0]}.value"][data-value]`;
@@ -112,9 +131,11 @@ export default async function screens(ctx) {
       assert((await p.$('section.answer .firmware-limits')) !== null === limited, `${v}: limits box ${limited ? 'missing' : 'shown'}`);
       // the pick is the input's conventions.firmware: the form follows, the review grades by it
       assert((await p.inputValue('select[name="conventions.firmware"]')) === v, `${v}: form field`);
-      const rv = cpython({ ...robot.input, conventions: { ...robot.input.conventions, firmware: v } }).review.counts;
-      await p.waitForFunction((c) => (document.querySelector('section.answer .counts')?.textContent ?? '').includes(`${c.error} errors, ${c.warning} warnings, ${c.note} notes`), rv, { timeout: 10_000 });
+      await p.waitForFunction((texts) => texts.some((c) => (document.querySelector('section.answer .counts')?.textContent ?? '').includes(c)), strip[v], { timeout: 10_000 });
     }
+    // once any simulation has answered, the strip counts its findings
+    const { done, text } = await p.evaluate(() => ({ done: Number(document.documentElement.dataset.simDone ?? 0), text: document.querySelector('section.answer .counts')?.textContent ?? '' }));
+    assert(text.includes(strip.microchip[done > 0 ? 1 : 0]), `strip "${text}" with ${done} simulations answered`);
     await p.screenshot({ path: join(SHOTS, 'screens-profile-microchip.png') });
     // the choice is remembered
     await p.reload();
