@@ -51,22 +51,30 @@ const isLive = () => {
 const waitLive = (p, timeout = 90_000) => p.waitForFunction(isLive, null, { timeout, polling: 20 });
 const waitFirst = (p) => p.waitForFunction(() => /^(build|cached|live)$/.test(document.documentElement.dataset.numbers ?? '') || !!document.querySelector('[data-key="vendor.Rpm.value"][data-value]'), null, { timeout: 90_000, polling: 10 });
 
-/** One navigation: wall-clock to first numbers and to live, and the page's own phase marks. */
-async function boot(p, target) {
+/**
+ * One navigation: wall-clock to first numbers and to live, and the page's own phase marks; with
+ * `mark` (the browser's profile marker), the CPU time its processes used until live — steadier
+ * than the wall clock on a machine whose speed drifts, so variants compare by it too.
+ */
+async function boot(p, target, mark = null) {
+  const c0 = mark ? cpuOfBrowser(mark) : 0;
   const t0 = Date.now();
   await p.goto(target, { waitUntil: 'commit' });
   await waitFirst(p);
   const first = Date.now() - t0;
   await waitLive(p);
   const live = Date.now() - t0;
+  const cpu = mark ? cpuOfBrowser(mark) - c0 : undefined;
   const d = await p.evaluate(() => ({ ...document.documentElement.dataset }));
   const phases = Object.fromEntries(PHASES.filter((k) => d[`t${k[0].toUpperCase()}${k.slice(1)}`] !== undefined).map((k) => [k, Number(d[`t${k[0].toUpperCase()}${k.slice(1)}`])]));
-  return { first, live, phases, from: d.pythonBoot, runtime: d.runtime, numbers0: d.numbers };
+  return { first, live, cpu, phases, from: d.pythonBoot, runtime: d.runtime, numbers0: d.numbers };
 }
 function report(name, runs) {
   console.log(`page: ${name.padEnd(30)} first numbers ${stat(runs.map((r) => r.first))}   live ${stat(runs.map((r) => r.live))}   [${runs[0]?.from ?? '?'} boot, ${runs[0]?.runtime ?? '?'} worker]`);
   const ph = PHASES.map((k) => [k, runs.map((r) => r.phases[k]).filter((v) => v !== undefined)]).filter(([, v]) => v.length);
   console.log(`      phases (median ms since navigation): ${ph.map(([k, v]) => `${k} ${q(v, 0.5).toFixed(0)}`).join(' → ')}`);
+  const cpu = runs.map((r) => r.cpu).filter((v) => v !== undefined);
+  if (cpu.length) console.log(`      CPU of all the browser's processes until live: ${stat(cpu)} (two cores)`);
 }
 const newCtx = () => browser.newContext({ viewport: { width: 1366, height: 768 } });
 
@@ -140,15 +148,17 @@ for (const variant of SCEN.has('floor') ? ['shared', ...(SCEN.has('floordedicate
     const ctx = await newCtx();
     const p = await ctx.newPage();
     await settle('playwright_chromium');
+    const c0 = cpuOfBrowser('playwright_chromium');
     const t0 = Date.now();
     await p.goto(`${url}floor.html${variant === 'dedicated' ? '?dedicated' : ''}`, { waitUntil: 'commit' });
     await p.waitForFunction(() => document.documentElement.dataset.numbers, null, { timeout: 90_000, polling: 10 });
     const wall = Date.now() - t0;
+    const cpu = cpuOfBrowser('playwright_chromium') - c0;
     const d = await p.evaluate(() => ({ ...document.documentElement.dataset }));
     if (d.numbers !== 'live') throw new Error(`floor page: ${d.numbers}`);
     const phases = Object.fromEntries(PHASES.filter((k) => d[`t${k[0].toUpperCase()}${k.slice(1)}`] !== undefined).map((k) => [k, Number(d[`t${k[0].toUpperCase()}${k.slice(1)}`])]));
     const worker = Object.fromEntries(['runtime', 'snapshot', 'files', 'import', 'ready'].map((k) => [k, Number(d[`w${k}`])]));
-    runs.push({ first: phases.bootReady, live: wall, phases, worker, from: d.pythonBoot, runtime: variant });
+    runs.push({ first: phases.bootReady, live: wall, cpu, phases, worker, from: d.pythonBoot, runtime: variant });
     await ctx.close();
   }
   console.log(`page: floor (blank page, runtime only, ${variant} worker)  ready ${stat(runs.map((r) => r.phases.bootReady))} in page   report answered ${stat(runs.map((r) => r.phases.live))} in page, ${stat(runs.map((r) => r.live))} wall   [${runs[0]?.from ?? '?'} boot]`);
@@ -156,6 +166,7 @@ for (const variant of SCEN.has('floor') ? ['shared', ...(SCEN.has('floordedicate
   console.log(`      phases (median ms since navigation): ${ph.map(([k, v]) => `${k} ${q(v, 0.5).toFixed(0)}`).join(' → ')}`);
   const w = ['runtime', 'snapshot', 'files', 'import', 'ready'].map((k) => [k, runs.map((r) => r.worker[k]).filter((v) => !Number.isNaN(v))]).filter(([, v]) => v.length);
   console.log(`      in the worker (median ms since its boot began): ${w.map(([k, v]) => `${k} ${q(v, 0.5).toFixed(0)}`).join(' → ')}`);
+  console.log(`      CPU of all the browser's processes until answered: ${stat(runs.map((r) => r.cpu))} (two cores)`);
 }
 if (SCEN.has('cold')) {
   const runs = [];
@@ -185,7 +196,7 @@ if (SCEN.has('share')) {
     const ctx = await newCtx();
     const p = await ctx.newPage();
     await settle('playwright_chromium');
-    runs.push(await boot(p, link));
+    runs.push(await boot(p, link, 'playwright_chromium'));
     await ctx.close();
   }
   report('share link (380 V), cold', runs);

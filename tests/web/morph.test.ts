@@ -2,7 +2,7 @@
 // dom.morph: a new report patches a pure panel in place. Named by what is rendered
 // before and after, and what must hold of the patched DOM.
 import { describe, expect, it } from 'vitest';
-import { h, morph, patch as show, tex } from '../../web/src/dom';
+import { h, holdFormulas, morph, patch as show, releaseFormulas, tex } from '../../web/src/dom';
 
 /** Render `before` into a host, then morph it to `after`; returns the host and its old first child. */
 function patch(before: () => HTMLElement[], after: () => HTMLElement[]): { host: HTMLElement; first: ChildNode | null } {
@@ -85,5 +85,26 @@ describe('patch: formulas (tex) filled where newly shown, kept where already sho
     show(host, ...after.map((src) => tex(src)));
     expect(host.querySelectorAll('[data-tex]:empty').length).toBe(0);
     check(host, was);
+  });
+});
+
+describe('formulas held until the first numbers are on screen', () => {
+  it('held: shown empty, typeset by none; released: every one filled in, and later ones at once', () => {
+    holdFormulas();
+    const host = h('div');
+    const root = h('div', {}, host);
+    try {
+      show(host, tex('a_{held}'), h('p', {}, tex('\\frac{b}{c}', true)));
+      expect(host.querySelectorAll('[data-tex]:empty').length).toBe(2);
+      expect(host.querySelector('.katex')).toBeNull();
+    } finally {
+      releaseFormulas(root);
+    }
+    expect(host.querySelectorAll('[data-tex]:empty').length).toBe(0);
+    expect(host.querySelectorAll('.katex').length).toBe(2);
+    expect(host.querySelector('.katex-display')).not.toBeNull();
+    show(host, tex('a_{held}'), h('p', {}, tex('\\frac{b}{c}', true)), tex('d_{after}'));
+    expect(host.querySelectorAll('[data-tex]:empty').length).toBe(0);
+    expect(host.textContent).toContain('after');
   });
 });

@@ -2,7 +2,7 @@
 // compute session to the form, the layout of panels, the header and the status line.
 import 'katex/dist/katex.min.css';
 import './style.css';
-import { h } from './dom';
+import { h, holdFormulas } from './dom';
 import { effectiveInput } from './fields';
 import { defaultLang, getLang, setLang, t, type Lang } from './i18n';
 import type { PulabClient } from './rpc';
@@ -123,6 +123,9 @@ export class App {
 
   /** Attach to a client that may already be booting (main.ts starts the worker first). */
   start(client: PulabClient, restart?: (generation: number) => PulabClient): void {
+    // The numbers first: the panels' formulas are typeset once the first answer is on screen.
+    holdFormulas();
+    this.session.afterFirstAnswer(() => this.layout.showFormulas());
     handleLinks(this.root, this.embed, () => this.renderPanels(['docs']), (id) => this.layout.showView(id));
     this.attach(client, restart, 0);
     this.renderAll();

@@ -129,14 +129,11 @@ function patchElement(o: Element, n: Element): void {
 }
 
 /** Show `children` in `el`, patched in place (morph) when `el` already shows something; the
- * formulas (`tex`) it newly shows are filled in. */
+ * formulas (`tex`) it newly shows are filled in (unless held: `holdFormulas`). */
 export function patch(el: HTMLElement, ...children: Child[]): void {
   if (!el.firstChild) append(el, children);
   else morph(el, h('div', {}, children));
-  for (const f of el.querySelectorAll('[data-tex]:empty')) {
-    const cached = texCache.get(f.getAttribute('data-tex') ?? '');
-    if (cached) f.append(...[...cached.childNodes].map((c) => c.cloneNode(true)));
-  }
+  if (!formulasHeld) fillFormulas(el);
 }
 
 /** The same items, each the same (===): what a panel drew with has not changed. */
@@ -188,20 +185,52 @@ export function flagChips(flags: unknown): HTMLElement {
   );
 }
 
+/** Each formula's KaTeX rendering, by its `data-tex` key, made the first time it is filled in. */
 const texCache = new Map<string, HTMLElement>();
+/** The TeX source and display mode of each `data-tex` key `tex` has handed out. */
+const texSource = new Map<string, [string, boolean]>();
+let formulasHeld = false;
+
 /**
- * KaTeX formula (display or inline), rendered once per source and cached. Returned empty: `patch`
+ * KaTeX formula (display or inline), typeset once per source and cached. Returned empty: `patch`
  * fills it in where it is newly shown and keeps a formula already shown (equal `data-tex`), so a
  * new report copies no formula (deep copies of KaTeX's markup were a fifth of a render).
  */
 export function tex(src: string, display = false): HTMLElement {
   const key = `${display ? 'D' : 'I'}${src}`;
-  if (!texCache.has(key)) {
-    const el = h('span');
-    el.innerHTML = katex.renderToString(src, { displayMode: display, throwOnError: false, output: 'html' });
-    texCache.set(key, el);
-  }
+  if (!texSource.has(key)) texSource.set(key, [src, display]);
   return h(display ? 'div' : 'span', { class: 'tex', 'data-tex': key });
+}
+
+/** Fill in the empty formulas under `root`, typesetting those not yet in the cache. */
+function fillFormulas(root: ParentNode): void {
+  for (const f of root.querySelectorAll('[data-tex]:empty')) {
+    const key = f.getAttribute('data-tex') ?? '';
+    let done = texCache.get(key);
+    const source = texSource.get(key);
+    if (!done && source) {
+      done = h('span');
+      done.innerHTML = katex.renderToString(source[0], { displayMode: source[1], throwOnError: false, output: 'html' });
+      texCache.set(key, done);
+    }
+    if (done) f.append(...[...done.childNodes].map((c) => c.cloneNode(true)));
+  }
+}
+
+/**
+ * Leave formulas empty until `releaseFormulas`: the page holds them until its first numbers are
+ * on screen. Typesetting the 37 formulas of the calculator's panels took ≈ 40 ms of the page's
+ * thread during a cold share link, while Python booted on the same two cores, and none of them
+ * is on its first screen.
+ */
+export function holdFormulas(): void {
+  formulasHeld = true;
+}
+
+/** Fill in every formula under `root` held so far; from now on `patch` fills them in at once. */
+export function releaseFormulas(root: ParentNode): void {
+  formulasHeld = false;
+  fillFormulas(root);
 }
 
 export function table(head: (string | Node)[], rows: (Child[] | HTMLElement)[], cls = ''): HTMLElement {

@@ -85,6 +85,21 @@ export default async function instantStart(ctx) {
     await page.context().close();
   });
 
+  await check('formulas: held while the first numbers come, then every one typeset (a share link)', async () => {
+    const page = await newPage();
+    const share = golden('04_ind380_7k5.json').input;
+    await page.goto(`${ctx.subSrv.url}#in=${encodeURIComponent(JSON.stringify(share))}`);
+    await numbersIs(page, 'live', 60_000);
+    await page.waitForFunction(() => document.querySelectorAll('[data-tex]').length > 20 && !document.querySelector('[data-tex]:empty'), null, { timeout: 5000 });
+    const { formulas, typeset, errors } = await page.evaluate(() => ({
+      formulas: document.querySelectorAll('[data-tex]').length,
+      typeset: document.querySelectorAll('[data-tex] > .katex, [data-tex] > .katex-display').length,
+      errors: document.querySelectorAll('[data-tex] .katex-error').length,
+    }));
+    assert(typeset === formulas && errors === 0, `${typeset} of ${formulas} formulas typeset, ${errors} KaTeX errors`);
+    await page.context().close();
+  });
+
   await check('a new report patches the pure panels in place: the same elements show the new numbers, the rest is untouched; once idle every panel is laid out', async () => {
     const page = await newPage();
     await page.goto(ctx.subSrv.url);

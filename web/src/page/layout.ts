@@ -1,6 +1,6 @@
 // The page's skeleton (full page or one embedded panel): the answer strip, the views (tabs) and
 // the panels rendered into them, and the stale marking of numbers that no longer match the form.
-import { h, keepFocus, patch } from '../dom';
+import { h, keepFocus, patch, releaseFormulas } from '../dom';
 import { errText, t, type Key } from '../i18n';
 import type { Panel, PanelContext, PanelId } from '../panels/panel';
 import { PANELS } from '../panels/registry';
@@ -159,6 +159,15 @@ export class Layout {
     this.markScrollersSoon();
     this.root.querySelector('nav.subtabs')?.replaceChildren(...(view.panels.length > 1
       ? view.panels.map((p) => h('a', { href: `#panel-${p}`, 'data-nav': p }, t(`nav_${p}` as Key))) : []));
+  }
+
+  /** Typeset the formulas held since the page started (dom.ts `holdFormulas`) once the page is
+   * idle, then look again at what scrolls sideways (a formula may be wider than its panel). */
+  showFormulas(): void {
+    idle(() => {
+      releaseFormulas(this.root);
+      this.markScrollersSoon();
+    }, 1000);
   }
 
   private scrollCheck = false;
