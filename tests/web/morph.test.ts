@@ -108,3 +108,27 @@ describe('formulas held until the first numbers are on screen', () => {
     expect(host.textContent).toContain('after');
   });
 });
+
+describe('h: a select is built outside the page\'s document', () => {
+  it('its options arrive there; inserted, it joins the page with its value and handlers', () => {
+    const changed: string[] = [];
+    const sel = h('select', { name: 'unit', onchange: (ev: Event) => changed.push((ev.target as HTMLSelectElement).value) },
+      h('option', { value: 'a' }, 'A'), h('option', { value: 'b', selected: true }, 'B')) as HTMLSelectElement;
+    expect(sel.ownerDocument).not.toBe(document);
+    expect(sel.value).toBe('b');
+    const host = h('div');
+    document.body.append(host);
+    try {
+      host.append(sel);
+      expect(sel.ownerDocument).toBe(document);
+      expect(sel instanceof HTMLSelectElement).toBe(true);
+      expect(sel.value).toBe('b');
+      sel.value = 'a';
+      sel.dispatchEvent(new Event('change'));
+      expect(changed).toEqual(['a']);
+      expect(document.querySelector('select[name="unit"]')).toBe(sel);
+    } finally {
+      host.remove();
+    }
+  });
+});
