@@ -13,6 +13,22 @@ export default async function fw({ check, assert, newPage, subSrv, ready, waitVa
     await page.$eval('#panel-fw', (e) => e.scrollIntoView());
   };
 
+  await check('fw: a panel opened before the simulations answer stays in view when the loop panel above it grows', async () => {
+    const p = await newPage();
+    await p.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(bly))}`);
+    await ready(p);
+    await p.click('nav.tabs a[data-view="loops"]');
+    await p.$eval('#panel-fw', (e) => e.scrollIntoView());
+    const top0 = await p.$eval('#panel-fw', (e) => e.getBoundingClientRect().top);
+    const loop0 = await p.$eval('#panel-loop', (e) => e.getBoundingClientRect().height);
+    // the loop panel's analysis comes with the simulations
+    await p.waitForFunction((h0) => document.querySelector('#panel-loop').getBoundingClientRect().height > h0 + 1000, loop0, { timeout: 60_000 });
+    await p.waitForTimeout(300);
+    const top1 = await p.$eval('#panel-fw', (e) => e.getBoundingClientRect().top);
+    assert(Math.abs(top1 - top0) <= 2, `the panel moved from ${top0} to ${top1} px`);
+    await p.context().close();
+  });
+
   await check('fw: base and maximum speed equal CPython pulab; 5393 rpm for the BLY171D', async () => {
     await page.goto(`${subSrv.url}#in=${encodeURIComponent(JSON.stringify(bly))}`);
     await ready(page);

@@ -14,6 +14,8 @@ import type { ComputeSession } from './session';
 
 /** Numbers later than this after an edit are faded as outdated (ms). */
 const OUTDATED_MS = 300;
+/** The sticky header and tabs cover this much of the view's top (style.css, scroll-margin-top). */
+const ANCHOR_BELOW_PX = 84;
 /** Renders of the pure panels while idle after the first live numbers (Layout.warmRenders). */
 const WARM_RENDERS = 20;
 
@@ -235,6 +237,30 @@ export class Layout {
   private waiting = new Set<PanelId>();
 
   renderPanels(ctx: PanelContext, only?: PanelId[], hiddenToo = false): void {
+    this.keepTopPanel(() => this.renderPanelsNow(ctx, only, hiddenToo));
+  }
+
+  /**
+   * Run `change` and keep the panel at the top of the view where it was. The browser anchors the
+   * view to the first thing in it — often the last lines of the panel above, under the sticky
+   * tabs — so when that panel grew (the loop panel once the simulations answer: 128 → 4685 px),
+   * the panel being read was pushed off screen (the field-weakening panel: 4.5k px down, its plot
+   * then never drawn).
+   */
+  private keepTopPanel(change: () => void): void {
+    // At the top of the page nothing is above the view to grow; and no layout is forced there,
+    // where a keystroke's render runs.
+    if (window.scrollY <= 0) return change();
+    const top = [...this.root.querySelectorAll<HTMLElement>('main.panels section.panel:not([hidden])')]
+      .find((sec) => sec.getBoundingClientRect().bottom > ANCHOR_BELOW_PX);
+    const before = top?.getBoundingClientRect().top;
+    change();
+    if (!top || before === undefined || !top.isConnected) return;
+    const moved = top.getBoundingClientRect().top - before;
+    if (moved !== 0) window.scrollBy(0, moved);
+  }
+
+  private renderPanelsNow(ctx: PanelContext, only?: PanelId[], hiddenToo = false): void {
     const took: [string, number][] = [];
     for (const p of PANELS) {
       if (only && !only.includes(p.id) && !(ctx.report && this.waiting.has(p.id))) continue;
@@ -268,7 +294,8 @@ export class Layout {
     this.settled = 'pending';
     const go = (): void => {
       this.settled = 'yes';
-      this.root.querySelector('main.panels')?.classList.add('settled');
+      // The panels off screen take their real heights now (600 px each until then).
+      this.keepTopPanel(() => this.root.querySelector('main.panels')?.classList.add('settled'));
       // Not in an embed: nobody types there (its form is hidden), and six of them held ≈ 11 MB more.
       if (!this.embed) this.warmRenders(ctx, WARM_RENDERS);
     };
