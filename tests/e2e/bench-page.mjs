@@ -28,6 +28,8 @@ if (!existsSync(CHROMIUM)) {
 }
 const RUNS = Number(process.env.BENCH_RUNS ?? 5);
 const SETTLE = process.env.BENCH_SETTLE !== '0'; // see settle()
+/** The profile marker in the command line of the Chromium this script launches (Playwright's). */
+const MARK = 'playwright_chromium';
 const SCEN = new Set((process.env.BENCH_SCENARIOS ?? 'floor,sim,cold,warm,share,nosnap,embeds,panel,elements,input,typing').split(','));
 const DIST = process.env.BENCH_DIST ?? join(ROOT, 'dist');
 const { chromium } = await import('playwright-core');
@@ -77,6 +79,17 @@ function report(name, runs) {
   if (cpu.length) console.log(`      CPU of all the browser's processes until live: ${stat(cpu)} (two cores)`);
 }
 const newCtx = () => browser.newContext({ viewport: { width: 1366, height: 768 } });
+/** A new context's page, once its window has settled (settle()). */
+async function freshPage() {
+  const ctx = await newCtx();
+  const p = await ctx.newPage();
+  await settle(MARK);
+  return { ctx, p };
+}
+/** The build's worker script (its hashed name). */
+function workerScript() {
+  return readdirSync(join(DIST, 'assets')).find((f) => /^worker-.*\.js$/.test(f));
+}
 
 /**
  * The floor: floor.html starts the build's worker script as the page does (a SharedWorker named
@@ -84,7 +97,7 @@ const newCtx = () => browser.newContext({ viewport: { width: 1366, height: 768 }
  * boot stage, ready and the report's answer (<html data-t-…>, ms since navigation).
  */
 function floorPage() {
-  const worker = readdirSync(join(DIST, 'assets')).find((f) => /^worker-.*\.js$/.test(f));
+  const worker = workerScript();
   const js = `const d = document.documentElement.dataset;
 const mark = (k) => { d[k] ??= performance.now().toFixed(0); };
 const dedicated = new URLSearchParams(location.search).has('dedicated');
@@ -111,7 +124,7 @@ port.postMessage({ type: 'call', id: 1, kind: 'report', payload: ${JSON.stringif
  * (a report in slices, as the page's plots ask); the worker's own time of each answer.
  */
 function simPage() {
-  const worker = readdirSync(join(DIST, 'assets')).find((f) => /^worker-.*\.js$/.test(f));
+  const worker = workerScript();
   const seed = JSON.parse(readFileSync(join(ROOT, 'tests/golden/01_seed_motor.json'), 'utf8')).input;
   const js = `const w = new SharedWorker(new URL('./assets/${worker}', document.baseURI), { type: 'module', name: 'pulab-sim' });
 const out = []; let id = 0;
@@ -130,9 +143,7 @@ w.port.postMessage({ type: 'init', indexURL: new URL('pyodide/', document.baseUR
 if (SCEN.has('sim')) {
   const all = [];
   for (let i = 0; i < RUNS; i++) {
-    const ctx = await newCtx();
-    const p = await ctx.newPage();
-    await settle('playwright_chromium');
+    const { ctx, p } = await freshPage();
     await p.goto(`${url}simsim.html`, { waitUntil: 'commit' });
     await p.waitForFunction(() => document.documentElement.dataset.ms, null, { timeout: 120_000, polling: 50 });
     all.push(...JSON.parse(await p.evaluate(() => document.documentElement.dataset.ms)).slice(1)); // the first runs cold
@@ -145,15 +156,13 @@ if (SCEN.has('sim')) {
 for (const variant of SCEN.has('floor') ? ['shared', ...(SCEN.has('floordedicated') ? ['dedicated'] : [])] : []) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
-    const ctx = await newCtx();
-    const p = await ctx.newPage();
-    await settle('playwright_chromium');
-    const c0 = cpuOfBrowser('playwright_chromium');
+    const { ctx, p } = await freshPage();
+    const c0 = cpuOfBrowser(MARK);
     const t0 = Date.now();
     await p.goto(`${url}floor.html${variant === 'dedicated' ? '?dedicated' : ''}`, { waitUntil: 'commit' });
     await p.waitForFunction(() => document.documentElement.dataset.numbers, null, { timeout: 90_000, polling: 10 });
     const wall = Date.now() - t0;
-    const cpu = cpuOfBrowser('playwright_chromium') - c0;
+    const cpu = cpuOfBrowser(MARK) - c0;
     const d = await p.evaluate(() => ({ ...document.documentElement.dataset }));
     if (d.numbers !== 'live') throw new Error(`floor page: ${d.numbers}`);
     const phases = Object.fromEntries(PHASES.filter((k) => d[`t${k[0].toUpperCase()}${k.slice(1)}`] !== undefined).map((k) => [k, Number(d[`t${k[0].toUpperCase()}${k.slice(1)}`])]));
@@ -171,9 +180,7 @@ for (const variant of SCEN.has('floor') ? ['shared', ...(SCEN.has('floordedicate
 if (SCEN.has('cold')) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
-    const ctx = await newCtx();
-    const p = await ctx.newPage();
-    await settle('playwright_chromium');
+    const { ctx, p } = await freshPage();
     runs.push(await boot(p, url));
     await ctx.close();
   }
@@ -193,10 +200,8 @@ if (SCEN.has('share')) {
   const link = `${url}#in=${encodeURIComponent(JSON.stringify(SHARE_INPUT))}`;
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
-    const ctx = await newCtx();
-    const p = await ctx.newPage();
-    await settle('playwright_chromium');
-    runs.push(await boot(p, link, 'playwright_chromium'));
+    const { ctx, p } = await freshPage();
+    runs.push(await boot(p, link, MARK));
     await ctx.close();
   }
   report('share link (380 V), cold', runs);
@@ -204,9 +209,7 @@ if (SCEN.has('share')) {
 if (SCEN.has('nosnap')) {
   const runs = [];
   for (let i = 0; i < RUNS; i++) {
-    const ctx = await newCtx();
-    const p = await ctx.newPage();
-    await settle('playwright_chromium');
+    const { ctx, p } = await freshPage();
     runs.push(await boot(p, nosnap.url));
     await ctx.close();
   }
@@ -371,7 +374,7 @@ if (SCEN.has('embeds')) {
   const otr = [];
   for (let i = 0; i < RUNS; i++) {
     const ctx = await newCtx();
-    otr.push(await embedsRun(ctx, await browser.newBrowserCDPSession(), 'playwright_chromium'));
+    otr.push(await embedsRun(ctx, await browser.newBrowserCDPSession(), MARK));
     await ctx.close();
   }
   reportEmbeds('incognito context', otr);

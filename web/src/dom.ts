@@ -195,10 +195,9 @@ export function flagChips(flags: unknown): HTMLElement {
   );
 }
 
-/** Each formula's KaTeX rendering, by its `data-tex` key, made the first time it is filled in. */
-const texCache = new Map<string, HTMLElement>();
-/** The TeX source and display mode of each `data-tex` key `tex` has handed out. */
-const texSource = new Map<string, [string, boolean]>();
+/** Each `data-tex` key `tex` has handed out: its TeX source, display mode and, once a formula
+ * of it has been filled in, KaTeX's markup. */
+const formulas = new Map<string, { src: string; display: boolean; markup?: HTMLElement }>();
 let formulasHeld = false;
 
 /**
@@ -208,22 +207,20 @@ let formulasHeld = false;
  */
 export function tex(src: string, display = false): HTMLElement {
   const key = `${display ? 'D' : 'I'}${src}`;
-  if (!texSource.has(key)) texSource.set(key, [src, display]);
+  if (!formulas.has(key)) formulas.set(key, { src, display });
   return h(display ? 'div' : 'span', { class: 'tex', 'data-tex': key });
 }
 
-/** Fill in the empty formulas under `root`, typesetting those not yet in the cache. */
+/** Fill in the empty formulas under `root`, typesetting those not typeset yet. */
 function fillFormulas(root: ParentNode): void {
   for (const f of root.querySelectorAll('[data-tex]:empty')) {
-    const key = f.getAttribute('data-tex') ?? '';
-    let done = texCache.get(key);
-    const source = texSource.get(key);
-    if (!done && source) {
-      done = h('span');
-      done.innerHTML = katex.renderToString(source[0], { displayMode: source[1], throwOnError: false, output: 'html' });
-      texCache.set(key, done);
+    const formula = formulas.get(f.getAttribute('data-tex') ?? '');
+    if (!formula) continue;
+    if (!formula.markup) {
+      formula.markup = h('span');
+      formula.markup.innerHTML = katex.renderToString(formula.src, { displayMode: formula.display, throwOnError: false, output: 'html' });
     }
-    if (done) f.append(...[...done.childNodes].map((c) => c.cloneNode(true)));
+    f.append(...[...formula.markup.childNodes].map((c) => c.cloneNode(true)));
   }
 }
 
